@@ -1,0 +1,287 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "app/cli_commands.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/camera.h"
+#include "core/image_write.h"
+#include "core/layers.h"
+#include "core/mesh_io.h"
+#include "render/gl_context.h"
+#include "render/gl_layer_capturer.h"
+
+namespace cli {
+
+namespace {
+using nlohmann::json;
+
+/** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
+int fail(const std::string& message) {
+    std::cerr << "layerpaint-cli: " << message << '\n';
+    return 1;
+}
+
+json vec(const glm::vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+core::Result<glm::mat4> readMatrix(const json& value, const std::string& file, const char* key) {
+    if (!value.contains(key) || !value[key].is_array() || value[key].size() != 16)
+        return core::Error{file + ": \"" + std::string(key) + "\" must be an array of 16 numbers"};
+    glm::mat4 m;
+    float* out = glm::value_ptr(m);
+    for (int i = 0; i < 16; ++i) {
+        const json& x = value[key][std::size_t(i)];
+        if (!x.is_number() || !std::isfinite(x.get<double>()))
+            return core::Error{file + ": \"" + std::string(key) + "\" has a non-finite entry"};
+        out[i] = x.get<float>();
+    }
+    return m;
+}
+
+/** The view of --orbit / --camera / --size for mesh (framed from the front by default). */
+core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh) {
+    int width = 0, height = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(args.size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
+        (x != 'x' && x != 'X') || width <= 0 || height <= 0 || width > 16384 || height > 16384)
+        return core::Error{"--size " + args.size + ": expected WIDTHxHEIGHT, each 1 to 16384"};
+    if (!args.cameraFile.empty()) {
+        std::ifstream in(args.cameraFile);
+        if (!in)
+            return core::Error{args.cameraFile + ": cannot be opened"};
+        const json value = json::parse(in, nullptr, false);
+        if (value.is_discarded() || !value.is_object())
+            return core::Error{args.cameraFile + ": not a JSON object"};
+        auto view = readMatrix(value, args.cameraFile, "view");
+        auto proj = readMatrix(value, args.cameraFile, "proj");
+        if (!view)
+            return core::Error{view.error()};
+        if (!proj)
+            return core::Error{proj.error()};
+        core::View v;
+        v.view = *view;
+        v.proj = *proj;
+        v.width = width;
+        v.height = height;
+        return v;
+    }
+    core::Camera camera;
+    camera.frame(mesh.bounds());
+    if (!args.orbit.empty()) {
+        float yaw = 0, pitch = 0, distance = 0;
+        char c1 = 0, c2 = 0, end = 0;
+        if (std::sscanf(args.orbit.c_str(), "%f%c%f%c%f%c", &yaw, &c1, &pitch, &c2, &distance,
+                        &end) != 5 ||
+            c1 != ',' || c2 != ',' || !(distance > 0.0f) || !std::isfinite(yaw) ||
+            !std::isfinite(pitch) || !std::isfinite(distance))
+            return core::Error{"--orbit " + args.orbit +
+                               ": expected yaw,pitch,distance (degrees, unit-cube units > 0)"};
+        camera = core::Camera::fromOrbit(mesh.bounds(), yaw, pitch, distance);
+    }
+    return camera.view(width, height);
+}
+
+/** Writes the flattened triangles in triangle-id order as binary little-endian PLY. */
+core::Status writePly(const std::string& path, const core::Mesh& mesh) {
+    std::ofstream out(path, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\ncomment LayerPaint flattened mesh\n"
+        << "element vertex " << mesh.vertexCount() << "\nproperty float x\nproperty float y\n"
+        << "property float z\nelement face " << mesh.triangleCount()
+        << "\nproperty list uchar uint vertex_indices\nend_header\n";
+    // x86-64 and the other supported targets are little-endian, so values are written as is.
+    static_assert(std::endian::native == std::endian::little);
+    out.write(reinterpret_cast<const char*>(mesh.positions.data()),
+              std::streamsize(mesh.positions.size() * sizeof(glm::vec3)));
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const std::uint8_t three = 3;
+        out.write(reinterpret_cast<const char*>(&three), 1);
+        out.write(reinterpret_cast<const char*>(&mesh.indices[3 * t]), 12);
+    }
+    out.close();
+    if (!out)
+        return core::Error{path + ": write failed"};
+    return {};
+}
+
+core::Status writeJson(const std::string& path, const json& value) {
+    std::ofstream out(path);
+    out << value.dump(1) << '\n';
+    out.close();
+    if (!out)
+        return core::Error{path + ": write failed"};
+    return {};
+}
+
+/** Writes the per-layer images of DESIGN.md §4 for layer (1-based). */
+core::Status writeLayerImages(const std::filesystem::path& dir, const core::Layers& layers,
+                              std::uint32_t layer) {
+    const core::LayerStack& stack = layers.stack;
+    const std::size_t pixels = stack.pixelCount();
+    std::vector<float> depth(pixels, 0.0f);
+    std::vector<std::uint32_t> triangle(pixels, 0), region(pixels, 0);
+    std::vector<std::uint8_t> links(pixels * 4, 0);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint32_t f = stack.fragment(p, layer);
+        if (f == core::kNone)
+            continue;
+        depth[p] = stack.depth[f];
+        triangle[p] = stack.triangle[f] + 1;
+        region[p] = layers.segmentation.region[f] + 1;
+        for (int d = 0; d < 4; ++d)
+            links[4 * p + std::size_t(d)] = layers.connectivity.link(f, d);
+    }
+    const std::string n = std::to_string(layer);
+    const int w = stack.width, h = stack.height;
+    for (const core::Status& s : {core::writeImage((dir / ("depth_" + n + ".exr")).string(), w, h,
+                                                   1, core::PixelType::Float32, depth.data()),
+                                  core::writeImage((dir / ("tri_" + n + ".tif")).string(), w, h, 1,
+                                                   core::PixelType::UInt32, triangle.data()),
+                                  core::writeImage((dir / ("conn_" + n + ".png")).string(), w, h, 4,
+                                                   core::PixelType::UInt8, links.data()),
+                                  core::writeImage((dir / ("region_" + n + ".tif")).string(), w, h,
+                                                   1, core::PixelType::UInt32, region.data())})
+        if (!s)
+            return s;
+    return {};
+}
+
+json regionsJson(const core::RegionGraph& graph) {
+    json regions = json::array();
+    for (const core::Region& r : graph.regions) {
+        json neighbours = json::array();
+        for (const core::RegionLink& link : graph.neighborsOf(r.id))
+            neighbours.push_back({{"id", link.region}, {"links", link.links}});
+        regions.push_back({{"id", r.id},
+                           {"layer", r.layer},
+                           {"pixels", r.pixels},
+                           {"bbox", {r.minX, r.minY, r.maxX, r.maxY}},
+                           {"neighbours", neighbours}});
+    }
+    return regions;
+}
+} // namespace
+
+int runInfo(const std::string& model) {
+    auto mesh = core::loadMesh(model);
+    if (!mesh)
+        return fail(mesh.error());
+    const core::Bounds bounds = mesh->bounds();
+    json materials = json::array();
+    for (const core::Material& m : mesh->materials) {
+        json entry = {
+            {"name", m.name},
+            {"base_color",
+             {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.baseColorFactor.a}},
+            {"base_color_texture", nullptr}};
+        if (m.baseColorTexture >= 0) {
+            const core::Image& image = mesh->textures[std::size_t(m.baseColorTexture)];
+            entry["base_color_texture"] = {{"width", image.width}, {"height", image.height}};
+        }
+        materials.push_back(std::move(entry));
+    }
+    const json out = {
+        {"file", model},
+        {"vertices", mesh->vertexCount()},
+        {"triangles", mesh->triangleCount()},
+        {"bounds", {{"min", vec(bounds.min)}, {"max", vec(bounds.max)}}},
+        {"has_uvs", mesh->hasUvs()},
+        {"has_vertex_colors", mesh->hasColors()},
+        {"materials", materials},
+        {"warnings", mesh->warnings},
+    };
+    std::cout << out.dump(2) << '\n';
+    return 0;
+}
+
+int runLayers(const LayersArgs& args) {
+    auto mesh = core::loadMesh(args.model);
+    if (!mesh)
+        return fail(mesh.error());
+    auto view = makeView(args.camera, *mesh);
+    if (!view)
+        return fail(view.error());
+    std::error_code ec;
+    std::filesystem::create_directories(args.outDir, ec);
+    if (ec)
+        return fail(args.outDir + ": " + ec.message());
+
+    std::unique_ptr<render::HeadlessContext> context;
+    std::unique_ptr<core::LayerCapturer> capturer;
+    if (args.cpuCapture) {
+        capturer = std::make_unique<core::CpuLayerCapturer>();
+    } else {
+        auto created = render::HeadlessContext::create();
+        if (!created)
+            return fail(created.error() + " (use --cpu to capture without OpenGL)");
+        context = std::move(created).value();
+        auto gl = std::make_unique<render::GlLayerCapturer>();
+        if (const core::Status s = gl->initialize(); !s)
+            return fail(s.error());
+        capturer = std::move(gl);
+    }
+    capturer->setMesh(*mesh);
+
+    core::LayerOptions options;
+    if (args.threshold) {
+        if (!(*args.threshold > 0.0f) || !std::isfinite(*args.threshold))
+            return fail("--threshold must be a positive number");
+        options.threshold = *args.threshold;
+    }
+    options.test = args.plainTest ? core::ConnectionTest::Plain : core::ConnectionTest::Surface;
+    options.cullBackFaces = !args.twoSided;
+    const core::MeshTopology topology = core::buildMeshTopology(*mesh);
+    auto layers = core::buildLayers(*capturer, *mesh, topology, *view, options);
+    if (!layers)
+        return fail(args.model + ": " + layers.error());
+
+    const std::filesystem::path dir(args.outDir);
+    const std::vector<std::uint32_t> perLayer = layers->stack.fragmentsPerLayer();
+    for (std::uint32_t layer = 1; layer <= perLayer.size(); ++layer)
+        if (const core::Status s = writeLayerImages(dir, *layers, layer); !s)
+            return fail(s.error());
+    if (const core::Status s =
+            writeJson((dir / "regions.json").string(), regionsJson(layers->segmentation.graph));
+        !s)
+        return fail(s.error());
+    if (const core::Status s = writePly((dir / "mesh.ply").string(), *mesh); !s)
+        return fail(s.error());
+
+    const core::LayerTimings& t = layers->timings;
+    const json summary = {
+        {"model", args.model},
+        {"width", view->width},
+        {"height", view->height},
+        {"triangles", mesh->triangleCount()},
+        {"test", args.plainTest ? "plain" : "surface"},
+        {"threshold", options.threshold},
+        {"two_sided", args.twoSided},
+        {"capture", args.cpuCapture ? "cpu" : "gl"},
+        {"layers", perLayer.size()},
+        {"fragments", layers->stack.fragmentCount()},
+        {"fragments_per_layer", perLayer},
+        {"regions", layers->segmentation.graph.regions.size()},
+        {"links_truncated", layers->connectivity.truncated},
+        {"view", std::vector<float>(glm::value_ptr(view->view), glm::value_ptr(view->view) + 16)},
+        {"proj", std::vector<float>(glm::value_ptr(view->proj), glm::value_ptr(view->proj) + 16)},
+        {"timings_ms",
+         {{"capture_gpu", t.capture.gpuMs},
+          {"capture_resolve", t.capture.resolveMs},
+          {"connectivity", t.connectivityMs},
+          {"segmentation_and_graph", t.segmentationMs},
+          {"build_layers", t.totalMs()}}},
+    };
+    if (const core::Status s = writeJson((dir / "summary.json").string(), summary); !s)
+        return fail(s.error());
+    std::cout << summary.dump(1) << '\n';
+    return 0;
+}
+
+} // namespace cli

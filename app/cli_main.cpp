@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// layerpaint-cli: the headless tool (DESIGN.md §4). Needs no Qt and no display.
+#include <CLI/CLI.hpp>
+
+#include "app/cli_commands.h"
+
+namespace {
+void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
+    auto* orbit = command->add_option(
+        "--orbit", camera.orbit,
+        "yaw,pitch,distance: degrees and unit-cube units about the bounding-box centre");
+    command
+        ->add_option("--camera", camera.cameraFile,
+                     "JSON file {\"view\":[16],\"proj\":[16]}, column-major matrices")
+        ->excludes(orbit)
+        ->check(CLI::ExistingFile);
+    command->add_option("--size", camera.size, "Image size WIDTHxHEIGHT")->capture_default_str();
+}
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"LayerPaint headless tool: inspect models, capture depth layers, replay painting "
+                 "scripts and benchmark.\nMODEL is a file (.gltf .glb .obj .ply .stl .off ...) or "
+                 "builtin:trefoil, builtin:hexring, builtin:row."};
+    app.set_version_flag("--version", std::string("layerpaint-cli ") + LAYERPAINT_VERSION);
+    app.require_subcommand(1);
+
+    std::string infoModel;
+    CLI::App* info = app.add_subcommand("info", "Print a model's summary as JSON");
+    info->add_option("MODEL", infoModel, "Model file or builtin:NAME")->required();
+
+    cli::LayersArgs layers;
+    CLI::App* layersCommand = app.add_subcommand(
+        "layers", "Capture a view's depth layers, connectivity and regions into files");
+    layersCommand->add_option("MODEL", layers.model, "Model file or builtin:NAME")->required();
+    addCameraOptions(layersCommand, layers.camera);
+    layersCommand->add_option("--threshold", layers.threshold,
+                              "Connectivity threshold in unit-cube units (default 0.001)");
+    layersCommand->add_flag("--plain", layers.plainTest,
+                            "Use the paper's plain depth-difference test");
+    layersCommand->add_flag("--two-sided", layers.twoSided, "Capture back faces too");
+    layersCommand->add_flag("--cpu", layers.cpuCapture,
+                            "Capture on the CPU instead of OpenGL (no EGL needed)");
+    layersCommand->add_option("--out", layers.outDir, "Output folder")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+    if (info->parsed())
+        return cli::runInfo(infoModel);
+    if (layersCommand->parsed())
+        return cli::runLayers(layers);
+    return 1;
+}

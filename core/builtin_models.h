@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/mesh.h"
+#include "core/result.h"
+
+namespace core {
+
+struct BuiltinModel {
+    std::string name;        // used as "builtin:NAME"
+    std::string description; // English; the GUI translates its own labels
+};
+
+/** The procedural models: trefoil (the default), hexring, row. */
+const std::vector<BuiltinModel>& builtinModels();
+
+/** Builds "NAME" (without the "builtin:" prefix); an Error for an unknown name. */
+Result<Mesh> makeBuiltinModel(const std::string& name);
+
+/**
+ * The trefoil-knot tube, UV-mapped as three strips (one per lobe) so texels are near square.
+ * The defaults (3 × 399 segments along, 119 around) give the paper's 144,000 vertices.
+ */
+Mesh makeTrefoil(int segmentsPerStrip = 399, int radialSegments = 119);
+/** A thick hexagonal ring: outer and inner walls and two caps ("Donuthexa"). */
+Mesh makeHexRing(int subdivisions = 48);
+/** Four identical bodies in a row along -Z, one behind the other, each on its own UV tile. */
+Mesh makeRow(int subdivisions = 64);
+
+inline constexpr const char* kBuiltinPrefix = "builtin:";
+inline constexpr const char* kDefaultModel = "builtin:trefoil";
+
+} // namespace core

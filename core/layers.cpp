@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/layers.h"
+
+#include <chrono>
+
+#include "core/cpu_capture.h"
+
+namespace core {
+
+namespace {
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+} // namespace
+
+Result<LayerStack> CpuLayerCapturer::capture(const View& view, bool cullBackFaces,
+                                             CaptureStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
+    CpuCaptureOptions options;
+    options.cullBackFaces = cullBackFaces;
+    LayerStack stack = captureLayersCpu(m_mesh, view, options);
+    if (stats)
+        *stats = {0.0, millisecondsSince(start), 0};
+    return stack;
+}
+
+Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
+                           const View& view, const LayerOptions& options) {
+    Layers layers;
+    layers.view = view;
+    layers.options = options;
+    auto stack = capturer.capture(view, options.cullBackFaces, &layers.timings.capture);
+    if (!stack)
+        return Error{stack.error()};
+    layers.stack = std::move(stack).value();
+    layers.geometry = makeSurfaceGeometry(mesh, topology, view);
+    resegmentLayers(layers, mesh, options);
+    return layers;
+}
+
+void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options) {
+    const bool cull = layers.options.cullBackFaces;
+    layers.options = options;
+    layers.options.cullBackFaces = cull;
+
+    ConnectivityOptions connectivity;
+    connectivity.test = options.test;
+    connectivity.threshold = options.threshold;
+    connectivity.unitScale = unitScale(mesh);
+    connectivity.threads = options.threads;
+    auto start = std::chrono::steady_clock::now();
+    layers.connectivity = computeConnectivity(layers.stack, connectivity, &layers.geometry);
+    layers.timings.connectivityMs = millisecondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    layers.segmentation = segmentLayers(layers.stack, layers.connectivity, options.threads);
+    layers.timings.segmentationMs = millisecondsSince(start);
+}
+
+} // namespace core

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <memory>
+
+#include "core/camera.h"
+#include "core/connectivity.h"
+#include "core/layer_stack.h"
+#include "core/mesh.h"
+#include "core/mesh_topology.h"
+#include "core/result.h"
+#include "core/segmentation.h"
+
+namespace core {
+
+/** What the capture step costs, as reported by a LayerCapturer. */
+struct CaptureStats {
+    double gpuMs = 0.0;     // drawing the fragments (0 for a CPU capturer)
+    double resolveMs = 0.0; // sorting them into the LayerStack
+    int recaptures = 0;     // extra draws because a buffer had to grow
+};
+
+/**
+ * The GPU part of build_layers (DESIGN.md §2): render implements it on OpenGL; tests and headless
+ * use without GL can use CpuLayerCapturer.
+ */
+class LayerCapturer {
+public:
+    virtual ~LayerCapturer() = default;
+    /** Makes mesh the one captured from now on. */
+    virtual void setMesh(const Mesh& mesh) = 0;
+    /** Every front-facing fragment of view (both sides when !cullBackFaces), or an Error. */
+    virtual Result<LayerStack> capture(const View& view, bool cullBackFaces,
+                                       CaptureStats* stats) = 0;
+};
+
+/** The CPU stand-in (core/cpu_capture.h). Keeps a copy of the mesh. */
+class CpuLayerCapturer : public LayerCapturer {
+public:
+    void setMesh(const Mesh& mesh) override { m_mesh = mesh; }
+    Result<LayerStack> capture(const View& view, bool cullBackFaces, CaptureStats* stats) override;
+
+private:
+    Mesh m_mesh;
+};
+
+struct LayerOptions {
+    ConnectionTest test = ConnectionTest::Surface;
+    float threshold = 0.001f; // unit-cube units
+    bool cullBackFaces = true;
+    unsigned threads = 0; // 0 = hardware concurrency
+};
+
+/** Milliseconds of the parts of build_layers (the paper's Table 2 splits them like this). */
+struct LayerTimings {
+    CaptureStats capture;
+    double connectivityMs = 0.0;
+    double segmentationMs = 0.0; // region labels and the region graph
+    double totalMs() const {
+        return capture.gpuMs + capture.resolveMs + connectivityMs + segmentationMs;
+    }
+};
+
+/** Everything build_layers derives from one view: layers, connectivity, regions, region graph. */
+struct Layers {
+    View view;
+    LayerOptions options;
+    LayerStack stack;
+    SurfaceGeometry geometry; // the Surface test's per-view planes, kept for re-segmenting
+    Connectivity connectivity;
+    Segmentation segmentation;
+    LayerTimings timings;
+};
+
+/**
+ * build_layers (DESIGN.md §3 step 2): capture, pixel connectivity, segmentation, region graph.
+ * topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
+ */
+Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
+                           const View& view, const LayerOptions& options);
+
+/**
+ * Recomputes connectivity and regions with new options (threshold, test) without capturing
+ * again, as the threshold slider does. The capture options (cullBackFaces) are kept.
+ */
+void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options);
+
+} // namespace core

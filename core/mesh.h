@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace core {
+
+/** An 8-bit RGBA image, rows top first. Base color textures hold sRGB-encoded values. */
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint8_t> rgba; // width * height * 4
+
+    bool empty() const { return width <= 0 || height <= 0; }
+};
+
+struct Material {
+    std::string name;
+    glm::vec4 baseColorFactor{1.0f}; // linear RGBA
+    int baseColorTexture = -1;       // index into Mesh::textures, -1 for none
+};
+
+struct Bounds {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+
+    glm::vec3 center() const { return (min + max) * 0.5f; }
+    glm::vec3 size() const { return max - min; }
+    /** Length of the longest side; the mesh's unit-cube scale is 1 / longestSide(). */
+    float longestSide() const;
+    bool valid() const { return min.x <= max.x && min.y <= max.y && min.z <= max.z; }
+};
+
+/**
+ * A flattened triangle mesh in the file's coordinates. Triangle t uses indices[3t .. 3t+2];
+ * triangles are numbered in the order of flattening the default scene (DESIGN.md §3).
+ */
+struct Mesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals; // same size as positions
+    std::vector<glm::vec2> uvs;     // empty, or same size as positions
+    std::vector<glm::vec4> colors;  // empty, or same size as positions (linear RGBA)
+    std::vector<std::uint32_t> indices;
+    std::vector<std::uint32_t> triangleMaterial; // one per triangle, index into materials
+    std::vector<Material> materials;             // at least one
+    std::vector<Image> textures;
+    std::vector<std::string> warnings; // non-fatal problems met while loading
+
+    std::size_t vertexCount() const { return positions.size(); }
+    std::size_t triangleCount() const { return indices.size() / 3; }
+    bool hasUvs() const { return !uvs.empty(); }
+    bool hasColors() const { return !colors.empty(); }
+
+    Bounds bounds() const;
+    /** Area-weighted vertex normals from the triangles (for files without normals). */
+    void computeNormals();
+    /** Checks internal consistency (sizes, index ranges, finite values); empty string if fine. */
+    std::string validate() const;
+};
+
+} // namespace core

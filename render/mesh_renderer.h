@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <memory>
+
+#include <glm/vec4.hpp>
+
+#include "core/camera.h"
+#include "core/mesh.h"
+#include "core/result.h"
+
+namespace render {
+
+struct DrawOptions {
+    glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded RGBA, as written
+    bool clear = true;
+    bool cullBackFaces = false; // shading shows both sides; capture culls (DESIGN §3)
+};
+
+/**
+ * Draws a core::Mesh shaded: base color factor × base color texture (sRGB) × vertex colors, with
+ * a headlight. Needs a current GL context for every call, the one it was initialized in.
+ */
+class MeshRenderer {
+public:
+    MeshRenderer();
+    ~MeshRenderer();
+    MeshRenderer(const MeshRenderer&) = delete;
+    MeshRenderer& operator=(const MeshRenderer&) = delete;
+
+    /** Compiles the shaders; returns an Error if they fail to build. */
+    core::Status initialize();
+    /** Uploads the mesh (replacing any previous one). */
+    void setMesh(const core::Mesh& mesh);
+    bool hasMesh() const;
+    /** Draws into the currently bound framebuffer, with view.width × view.height as viewport. */
+    void draw(const core::View& view, const DrawOptions& options = {});
+    /** Frees every GL object; the context must be current. Called by the destructor too. */
+    void release();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+} // namespace render

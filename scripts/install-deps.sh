@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# Installs LayerPaint's build, run and test dependencies from Debian's archive (Debian 12).
+# Usage: scripts/install-deps.sh [--test]   (--test adds what the headless test suite needs)
+# Idempotent: when everything is installed already it touches nothing.
+set -euo pipefail
+
+packages=(
+    build-essential cmake ninja-build pkg-config git
+    qt6-base-dev libqt6opengl6-dev qt6-l10n-tools qt6-tools-dev qt6-tools-dev-tools
+    libglm-dev libopenimageio-dev libtinygltf-dev libassimp-dev libepoxy-dev libegl-dev
+    libgl-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev
+    libegl1 libgl1-mesa-dri qt6-qpa-plugins
+)
+if [[ "${1:-}" == "--test" ]]; then
+    packages+=(xvfb xauth assimp-testmodels clang-format)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+    [[ "$status" == "installed" ]] || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+    exit 0
+fi
+
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+    sudo=(sudo)
+fi
+echo "Installing: ${missing[*]}"
+"${sudo[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
+    "${missing[@]}"

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
+# README command 2: install dependencies, build, and run the whole test suite headless: GL tests on
+# EGL (llvmpipe), widget tests under xvfb-run; then the core/render/CLI tests again under
+# ASan/UBSan. Exits non-zero on any failure. A second run reuses the builds.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/install-deps.sh --test
+jobs=$(nproc)
+
+echo "== format check"
+bash scripts/check-format.sh
+
+echo "== dev build (warnings are errors)"
+cmake --preset dev >/dev/null
+cmake --build --preset dev -j"$jobs"
+
+echo "== tests"
+xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset dev -j"$jobs"
+
+echo "== ASan/UBSan build and tests (no GUI)"
+cmake --preset asan >/dev/null
+cmake --build --preset asan -j"$jobs"
+ASAN_OPTIONS=detect_leaks=0 ctest --preset asan -j"$jobs"

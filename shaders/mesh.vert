@@ -1,0 +1,24 @@
+#version 450 core
+// Shaded mesh: positions in model (file) coordinates.
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+layout(location = 2) in vec2 aUv;
+layout(location = 3) in vec4 aColor;
+
+uniform mat4 uView;
+uniform mat4 uProj;
+
+out vec3 vViewNormal;
+out vec3 vViewPosition;
+out vec2 vUv;
+out vec4 vColor;
+
+void main() {
+    vec4 viewPosition = uView * vec4(aPosition, 1.0);
+    vViewPosition = viewPosition.xyz;
+    // The view matrix is a rigid motion, so it transforms normals as well.
+    vViewNormal = mat3(uView) * aNormal;
+    vUv = aUv;
+    vColor = aColor;
+    gl_Position = uProj * viewPosition;
+}

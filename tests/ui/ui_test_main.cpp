@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// GoogleTest main for the widget tests: a QApplication must exist before any QWidget.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QSurfaceFormat>
+#include <QTemporaryDir>
+
+#include "ui/viewport.h"
+
+int main(int argc, char* argv[]) {
+    ::testing::InitGoogleTest(&argc, argv);
+    // Listing tests (ctest's discovery) must work without a display.
+    if (GTEST_FLAG_GET(list_tests))
+        return RUN_ALL_TESTS();
+
+    QSurfaceFormat::setDefaultFormat(ui::Viewport::requiredFormat());
+    // Settings go to a test location, never the user's real configuration; a folder per
+    // process keeps tests that ctest runs in parallel from sharing one settings file.
+    QStandardPaths::setTestModeEnabled(true);
+    QApplication app(argc, argv);
+    const QTemporaryDir settingsDir;
+    if (!settingsDir.isValid())
+        return 1;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsDir.path());
+    QApplication::setOrganizationName(QStringLiteral("LayerPaintTest"));
+    QApplication::setApplicationName(QStringLiteral("ui_uitests"));
+    return RUN_ALL_TESTS();
+}

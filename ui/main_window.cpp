@@ -1,0 +1,329 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLocale>
+#include <QMenu>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QProgressDialog>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUrl>
+
+#include <utility>
+
+#include "core/builtin_models.h"
+#include "ui/model_loader.h"
+#include "ui/viewport.h"
+
+namespace ui {
+
+namespace {
+constexpr int kProgressSteps = 1000;
+constexpr int kProgressDelayMs = 400; // quick loads finish without a dialog flashing up
+constexpr int kStatusMessageMs = 10000;
+
+const QString kBuiltinPrefix = QString::fromLatin1(core::kBuiltinPrefix);
+const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
+const QString kStateKey = QStringLiteral("mainWindow/state");
+const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
+
+bool isBuiltin(const QString& source) {
+    return source.startsWith(kBuiltinPrefix);
+}
+
+/** The first local file among dragged URLs, or empty. */
+QString droppedFile(const QMimeData* mime) {
+    if (!mime || !mime->hasUrls())
+        return {};
+    for (const QUrl& url : mime->urls()) {
+        if (url.isLocalFile())
+            return url.toLocalFile();
+    }
+    return {};
+}
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+    setWindowTitle(tr("LayerPaint"));
+    setAcceptDrops(true);
+
+    m_viewport = new Viewport(this);
+    setCentralWidget(m_viewport);
+    m_loader = new ModelLoader(this);
+
+    m_modelInfo = new QLabel(this);
+    statusBar()->addPermanentWidget(m_modelInfo);
+
+    createMenus();
+
+    connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
+    connect(m_loader, &ModelLoader::failed, this, &MainWindow::onLoadFailed);
+    connect(m_loader, &ModelLoader::cancelled, this, &MainWindow::onLoadCancelled);
+    connect(m_viewport, &Viewport::glInitializationFailed, this, [this](const QString& message) {
+        showError(tr("OpenGL Error"), tr("The 3D view cannot be shown."), message);
+    });
+
+    // The worker only publishes a number; polling it keeps the event queue free of updates.
+    m_progressTimer.setInterval(50);
+    connect(&m_progressTimer, &QTimer::timeout, this, [this] {
+        if (m_progress)
+            m_progress->setValue(int(m_loader->progress() * kProgressSteps));
+    });
+
+    const QSettings settings;
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
+        resize(1280, 800);
+    restoreState(settings.value(kStateKey).toByteArray());
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::openFile(const QString& source) {
+    const QString resolved = isBuiltin(source) ? source : QFileInfo(source).absoluteFilePath();
+    startProgress(resolved);
+    m_loader->load(resolved);
+}
+
+void MainWindow::openFromCommandLine(const QStringList& files) {
+    openFile(files.isEmpty() ? QString::fromLatin1(core::kDefaultModel) : files.first());
+}
+
+bool MainWindow::isLoading() const {
+    return m_loader->isLoading();
+}
+
+QString MainWindow::builtinLabel(const QString& name) {
+    if (name == QLatin1String("trefoil"))
+        return tr("Trefoil knot");
+    if (name == QLatin1String("hexring"))
+        return tr("Hexagonal ring");
+    if (name == QLatin1String("row"))
+        return tr("Row of four");
+    // A model added to core before the GUI learnt its label: its English description.
+    for (const core::BuiltinModel& model : core::builtinModels()) {
+        if (QString::fromStdString(model.name) == name)
+            return QString::fromStdString(model.description);
+    }
+    return name;
+}
+
+QString MainWindow::displayName(const QString& source) {
+    if (isBuiltin(source))
+        return builtinLabel(source.mid(kBuiltinPrefix.size()));
+    return QFileInfo(source).fileName();
+}
+
+void MainWindow::createMenus() {
+    QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
+
+    QAction* openAction = fileMenu->addAction(tr("&Open…"), this, &MainWindow::showOpenDialog);
+    openAction->setObjectName(QStringLiteral("actionOpen"));
+    openAction->setShortcut(QKeySequence::Open);
+
+    QMenu* builtinMenu = fileMenu->addMenu(tr("New from &Built-in"));
+    builtinMenu->setObjectName(QStringLiteral("builtinMenu"));
+    for (const core::BuiltinModel& model : core::builtinModels()) {
+        const QString name = QString::fromStdString(model.name);
+        QAction* action = builtinMenu->addAction(builtinLabel(name));
+        action->setObjectName(QStringLiteral("actionBuiltin_") + name);
+        connect(action, &QAction::triggered, this,
+                [this, name] { openFile(kBuiltinPrefix + name); });
+    }
+
+    m_recentMenu = fileMenu->addMenu(tr("Open &Recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu"));
+    // Rebuilt on every show so files deleted meanwhile disappear.
+    connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
+    updateRecentMenu();
+
+    fileMenu->addSeparator();
+    QAction* quitAction = fileMenu->addAction(tr("&Quit"), this, &QWidget::close);
+    quitAction->setObjectName(QStringLiteral("actionQuit"));
+    quitAction->setShortcut(QKeySequence::Quit);
+    quitAction->setMenuRole(QAction::QuitRole);
+
+    QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
+    QAction* frameAction = viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
+    frameAction->setObjectName(QStringLiteral("actionFrameAll"));
+    frameAction->setShortcuts({QKeySequence(Qt::Key_F), QKeySequence(Qt::Key_Home)});
+
+    m_orthographicAction = viewMenu->addAction(tr("&Orthographic"));
+    m_orthographicAction->setObjectName(QStringLiteral("actionOrthographic"));
+    m_orthographicAction->setCheckable(true);
+    // 5 is the numpad key Blender users expect; Qt also matches it with the keypad modifier.
+    m_orthographicAction->setShortcuts({QKeySequence(Qt::Key_5), QKeySequence(Qt::Key_O)});
+    connect(m_orthographicAction, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
+    connect(m_viewport, &Viewport::orthographicChanged, m_orthographicAction, &QAction::setChecked);
+
+    QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
+    QAction* aboutAction =
+        helpMenu->addAction(tr("&About LayerPaint"), this, &MainWindow::showAbout);
+    aboutAction->setMenuRole(QAction::AboutRole);
+    QAction* aboutQtAction = helpMenu->addAction(tr("About &Qt"), qApp, &QApplication::aboutQt);
+    aboutQtAction->setMenuRole(QAction::AboutQtRole);
+}
+
+void MainWindow::updateRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = m_recent.files();
+    for (int i = 0; i < files.size(); ++i) {
+        const QString& path = files.at(i);
+        // The number gives keyboard access; && keeps an & in a file name literal.
+        const QString name =
+            QFileInfo(path).fileName().replace(QLatin1Char('&'), QStringLiteral("&&"));
+        const QString number = QString::number(i + 1);
+        QAction* action = m_recentMenu->addAction(i < 9 ? tr("&%1 %2").arg(number, name)
+                                                        : tr("%1 %2").arg(number, name));
+        action->setData(path);
+        action->setStatusTip(path);
+        action->setToolTip(path);
+        connect(action, &QAction::triggered, this, [this, path] { openFile(path); });
+    }
+    if (files.isEmpty()) {
+        m_recentMenu->addAction(tr("No Recent Files"))->setEnabled(false);
+        return;
+    }
+    m_recentMenu->addSeparator();
+    m_recentMenu->addAction(tr("&Clear Menu"), this, [this] {
+        m_recent.clear();
+        updateRecentMenu();
+    });
+}
+
+void MainWindow::showOpenDialog() {
+    QSettings settings;
+    const QString filters =
+        tr("3D models (*.gltf *.glb *.obj *.ply *.stl *.off)") + QStringLiteral(";;") +
+        tr("glTF 2.0 (*.gltf *.glb)") + QStringLiteral(";;") + tr("Wavefront OBJ (*.obj)") +
+        QStringLiteral(";;") + tr("Stanford PLY (*.ply)") + QStringLiteral(";;") +
+        tr("STL (*.stl)") + QStringLiteral(";;") + tr("Object File Format (*.off)") +
+        QStringLiteral(";;") + tr("All files (*)");
+    const QString path = QFileDialog::getOpenFileName(
+        this, tr("Open Model"), settings.value(kOpenDirectoryKey).toString(), filters);
+    if (path.isEmpty())
+        return;
+    settings.setValue(kOpenDirectoryKey, QFileInfo(path).absolutePath());
+    openFile(path);
+}
+
+void MainWindow::showAbout() {
+    QMessageBox::about(
+        this, tr("About LayerPaint"),
+        tr("<h3>LayerPaint %1</h3>"
+           "<p>Layer-aware 3D painting: paint surfaces hidden behind others in one stroke.</p>"
+           "<p>License: GNU GPL version 3 or later.</p>")
+            .arg(QApplication::applicationVersion().toHtmlEscaped()));
+}
+
+void MainWindow::showError(const QString& title, const QString& text, const QString& details) {
+    if (!m_errorDialogs)
+        return;
+    // Window-modal and opened, not exec()'d: no nested event loop.
+    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
+    box->setInformativeText(details);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setWindowModality(Qt::WindowModal);
+    box->open();
+}
+
+void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh) {
+    stopProgress();
+    m_source = source;
+    updateModelInfo(*mesh);
+    m_viewport->setMesh(std::move(mesh));
+    setWindowTitle(tr("%1 — LayerPaint").arg(displayName(source)));
+    if (!isBuiltin(source)) {
+        m_recent.add(source);
+        updateRecentMenu();
+    }
+    emit modelLoaded(source);
+}
+
+void MainWindow::onLoadFailed(const QString& source, const QString& message) {
+    stopProgress();
+    if (!isBuiltin(source) && !QFileInfo(source).exists())
+        m_recent.remove(source);
+    statusBar()->showMessage(tr("Could not open %1").arg(displayName(source)), kStatusMessageMs);
+    showError(tr("Open Failed"), tr("Could not open “%1”.").arg(displayName(source)), message);
+    emit loadFailed(message);
+}
+
+void MainWindow::onLoadCancelled(const QString& source) {
+    stopProgress();
+    statusBar()->showMessage(tr("Opening %1 cancelled").arg(displayName(source)), kStatusMessageMs);
+}
+
+void MainWindow::startProgress(const QString& source) {
+    stopProgress();
+    // Not modal: the current model stays usable, and setValue() never spins a nested loop.
+    auto* dialog = new QProgressDialog(tr("Opening %1…").arg(displayName(source)), tr("Cancel"), 0,
+                                       kProgressSteps, this);
+    dialog->setWindowTitle(tr("Opening Model"));
+    dialog->setAutoClose(false);
+    dialog->setAutoReset(false);
+    dialog->setMinimumDuration(kProgressDelayMs);
+    dialog->setValue(0);
+    connect(dialog, &QProgressDialog::canceled, m_loader, &ModelLoader::cancel);
+    m_progress = dialog;
+    m_progressTimer.start();
+    statusBar()->showMessage(tr("Opening %1…").arg(displayName(source)));
+}
+
+void MainWindow::stopProgress() {
+    m_progressTimer.stop();
+    // Deleted at once: a hidden dialog left for deleteLater could still be shown by its own
+    // minimum-duration timer. Never called from inside the dialog's methods.
+    delete m_progress.data();
+    m_progress = nullptr;
+}
+
+void MainWindow::updateModelInfo(const core::Mesh& mesh) {
+    const QLocale locale;
+    m_modelInfo->setText(tr("%1 — %2 vertices, %3 triangles")
+                             .arg(displayName(m_source),
+                                  locale.toString(qulonglong(mesh.vertexCount())),
+                                  locale.toString(qulonglong(mesh.triangleCount()))));
+    QStringList warnings;
+    for (const std::string& warning : mesh.warnings)
+        warnings.append(QString::fromStdString(warning));
+    m_modelInfo->setToolTip(warnings.join(QLatin1Char('\n')));
+    if (warnings.isEmpty())
+        statusBar()->clearMessage();
+    else
+        statusBar()->showMessage(
+            tr("%n warning(s) while loading: %1", nullptr, int(warnings.size()))
+                .arg(warnings.first()));
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    QSettings settings;
+    settings.setValue(kGeometryKey, saveGeometry());
+    settings.setValue(kStateKey, saveState());
+    QMainWindow::closeEvent(event);
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
+    if (!droppedFile(event->mimeData()).isEmpty())
+        event->acceptProposedAction();
+}
+
+void MainWindow::dropEvent(QDropEvent* event) {
+    const QString path = droppedFile(event->mimeData());
+    if (path.isEmpty())
+        return;
+    event->acceptProposedAction();
+    openFile(path);
+}
+
+} // namespace ui
