@@ -22,12 +22,6 @@ namespace cli {
 namespace {
 using nlohmann::json;
 
-/** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
-int fail(const std::string& message) {
-    std::cerr << "layerpaint-cli: " << message << '\n';
-    return 1;
-}
-
 json vec(const glm::vec3& v) {
     return {v.x, v.y, v.z};
 }
@@ -46,7 +40,13 @@ core::Result<glm::mat4> readMatrix(const json& value, const std::string& file, c
     return m;
 }
 
-/** The view of --orbit / --camera / --size for mesh (framed from the front by default). */
+} // namespace
+
+int fail(const std::string& message) {
+    std::cerr << "layerpaint-cli: " << message << '\n';
+    return 1;
+}
+
 core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh) {
     int width = 0, height = 0;
     char x = 0, extra = 0;
@@ -75,6 +75,7 @@ core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh
     }
     core::Camera camera;
     camera.frame(mesh.bounds());
+    camera.orbit(30.0f, 20.0f);
     if (!args.orbit.empty()) {
         float yaw = 0, pitch = 0, distance = 0;
         char c1 = 0, c2 = 0, end = 0;
@@ -88,6 +89,8 @@ core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh
     }
     return camera.view(width, height);
 }
+
+namespace {
 
 /** Writes the flattened triangles in triangle-id order as binary little-endian PLY. */
 core::Status writePly(const std::string& path, const core::Mesh& mesh) {

@@ -3,6 +3,11 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "core/camera.h"
+#include "core/mesh.h"
+#include "core/result.h"
 
 namespace cli {
 
@@ -23,9 +28,34 @@ struct LayersArgs {
     std::string outDir;
 };
 
+struct PaintArgs {
+    std::string model;
+    std::string script;
+    std::string out;
+    CameraArgs camera;
+    bool cpuCapture = false;
+};
+
+struct BenchArgs {
+    std::vector<std::string> models; // empty: builtin:trefoil
+    std::vector<std::string> sizes = {"1280x720"};
+    CameraArgs camera;
+    int runs = 7;
+    std::string jsonOut;
+};
+
+/** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
+int fail(const std::string& message);
+/** The view of --orbit / --camera / --size for mesh (framed, turned 30° and raised 20°). */
+core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh);
+
 /** `info MODEL`: prints the model's JSON summary on stdout; returns the exit code. */
 int runInfo(const std::string& model);
 /** `layers MODEL ...`: writes the files of DESIGN.md §4; returns the exit code. */
 int runLayers(const LayersArgs& args);
+/** `paint MODEL --script S.json --out RESULT.glb`: replays and saves; the exit code. */
+int runPaint(const PaintArgs& args);
+/** `bench [MODELS]`: Table 2 timings and the plain-pass baseline as JSON; the exit code. */
+int runBench(const BenchArgs& args);
 
 } // namespace cli

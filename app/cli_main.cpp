@@ -43,6 +43,34 @@ int main(int argc, char** argv) {
                             "Capture on the CPU instead of OpenGL (no EGL needed)");
     layersCommand->add_option("--out", layers.outDir, "Output folder")->required();
 
+    cli::PaintArgs paint;
+    CLI::App* paintCommand = app.add_subcommand(
+        "paint", "Replay a JSON script of painting operations and save the result as .glb");
+    paintCommand->add_option("MODEL", paint.model, "Model file or builtin:NAME")->required();
+    paintCommand->add_option("--script", paint.script, "The operations (see README)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    paintCommand->add_option("--out", paint.out, "The painted model (.glb)")->required();
+    addCameraOptions(paintCommand, paint.camera);
+    paintCommand->add_flag("--cpu", paint.cpuCapture,
+                           "Capture on the CPU instead of OpenGL (no EGL needed)");
+
+    cli::BenchArgs bench;
+    CLI::App* benchCommand = app.add_subcommand(
+        "bench", "Time build_layers and draw_layers against a plain z-buffer pass (medians)");
+    benchCommand->add_option("MODELS", bench.models, "Models (default builtin:trefoil)");
+    benchCommand->add_option("--size", bench.sizes, "Image size WIDTHxHEIGHT (repeatable)")
+        ->capture_default_str();
+    auto* benchOrbit = benchCommand->add_option("--orbit", bench.camera.orbit,
+                                                "yaw,pitch,distance (default: framed, 30°, 20°)");
+    benchCommand->add_option("--camera", bench.camera.cameraFile, "Camera JSON file")
+        ->excludes(benchOrbit)
+        ->check(CLI::ExistingFile);
+    benchCommand->add_option("--runs", bench.runs, "Measured runs per case")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    benchCommand->add_option("--json", bench.jsonOut, "Also write the results to this file");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -52,5 +80,9 @@ int main(int argc, char** argv) {
         return cli::runInfo(infoModel);
     if (layersCommand->parsed())
         return cli::runLayers(layers);
+    if (paintCommand->parsed())
+        return cli::runPaint(paint);
+    if (benchCommand->parsed())
+        return cli::runBench(bench);
     return 1;
 }

@@ -40,11 +40,18 @@ void finish(Mesh& mesh, const glm::vec4& color, const std::string& name) {
         mesh.computeNormals();
 }
 
-glm::vec3 trefoilPoint(float t) {
+} // namespace
+
+glm::vec3 trefoilCurve(float t) {
     return {std::sin(t) + 2.0f * std::sin(2.0f * t), std::cos(t) - 2.0f * std::cos(2.0f * t),
             -std::sin(3.0f * t)};
 }
-} // namespace
+
+int trefoilSegmentOfTriangle(std::size_t triangle, int radialSegments) {
+    // Triangles are emitted strip by strip, segment by segment, two per quad around the tube.
+    const std::size_t perSegment = std::size_t(radialSegments) * 2;
+    return int(triangle / perSegment);
+}
 
 const std::vector<BuiltinModel>& builtinModels() {
     static const std::vector<BuiltinModel> models = {
@@ -78,9 +85,9 @@ Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
     std::vector<glm::vec3> centers(segments + 1), tangents(segments + 1), normals(segments + 1);
     for (int i = 0; i <= segments; ++i) {
         const float t = 2.0f * kPi * float(i) / float(segments);
-        centers[i] = trefoilPoint(t);
+        centers[i] = trefoilCurve(t);
         const float h = 1e-3f;
-        tangents[i] = glm::normalize(trefoilPoint(t + h) - trefoilPoint(t - h));
+        tangents[i] = glm::normalize(trefoilCurve(t + h) - trefoilCurve(t - h));
     }
     normals[0] = glm::normalize(glm::cross(tangents[0], glm::vec3(0.0f, 0.0f, 1.0f)));
     for (int i = 0; i < segments; ++i) {

@@ -25,6 +25,12 @@ Result<Mesh> makeBuiltinModel(const std::string& name);
  * The defaults (3 × 399 segments along, 119 around) give the paper's 144,000 vertices.
  */
 Mesh makeTrefoil(int segmentsPerStrip = 399, int radialSegments = 119);
+/** The trefoil tube's centre line at t in [0, 2π) (model units); the tube's radius is 0.45. */
+glm::vec3 trefoilCurve(float t);
+/** The segment along the tube (0 .. 3 × segmentsPerStrip − 1) that triangle t of makeTrefoil is in.
+ */
+int trefoilSegmentOfTriangle(std::size_t triangle, int radialSegments = 119);
+
 /** A thick hexagonal ring: outer and inner walls and two caps ("Donuthexa"). */
 Mesh makeHexRing(int subdivisions = 48);
 /** Four identical bodies in a row along -Z, one behind the other, each on its own UV tile. */

@@ -27,13 +27,20 @@ Result<LayerStack> CpuLayerCapturer::capture(const View& view, bool cullBackFace
 
 Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
                            const View& view, const LayerOptions& options) {
+    CaptureStats stats;
+    auto stack = capturer.capture(view, options.cullBackFaces, &stats);
+    if (!stack)
+        return Error{stack.error()};
+    return finishLayers(std::move(stack).value(), stats, mesh, topology, view, options);
+}
+
+Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
+                    const MeshTopology& topology, const View& view, const LayerOptions& options) {
     Layers layers;
     layers.view = view;
     layers.options = options;
-    auto stack = capturer.capture(view, options.cullBackFaces, &layers.timings.capture);
-    if (!stack)
-        return Error{stack.error()};
-    layers.stack = std::move(stack).value();
+    layers.stack = std::move(stack);
+    layers.timings.capture = captureStats;
     layers.geometry = makeSurfaceGeometry(mesh, topology, view);
     resegmentLayers(layers, mesh, options);
     return layers;

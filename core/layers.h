@@ -80,6 +80,13 @@ Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const Mesh
                            const View& view, const LayerOptions& options);
 
 /**
+ * The CPU part of build_layers, for callers that capture themselves (the GUI captures on its GL
+ * thread and finishes on a worker thread): connectivity, segmentation and region graph of stack.
+ */
+Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
+                    const MeshTopology& topology, const View& view, const LayerOptions& options);
+
+/**
  * Recomputes connectivity and regions with new options (threshold, test) without capturing
  * again, as the threshold slider does. The capture options (cullBackFaces) are kept.
  */

@@ -6,6 +6,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 bash scripts/install-deps.sh
-cmake --preset release >/dev/null
+cmake --preset release
 cmake --build --preset release -j"$(nproc)"
 exec ./build/release/app/layerpaint "$@"

@@ -13,13 +13,13 @@ echo "== format check"
 bash scripts/check-format.sh
 
 echo "== dev build (warnings are errors)"
-cmake --preset dev >/dev/null
+cmake --preset dev
 cmake --build --preset dev -j"$jobs"
 
 echo "== tests"
 xvfb-run -a -s "-screen 0 1280x1024x24" ctest --preset dev -j"$jobs"
 
 echo "== ASan/UBSan build and tests (no GUI)"
-cmake --preset asan >/dev/null
+cmake --preset asan
 cmake --build --preset asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=0 ctest --preset asan -j"$jobs"

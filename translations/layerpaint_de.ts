@@ -2,7 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
-    <name>MainWindow</name>
+    <name>main</name>
+    <message>
+        <source>Layer-aware 3D painting of meshes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>[file]</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::LayersPanel</name>
+    <message>
+        <source>Layers appear when the view stays still.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a layer to see it alone; “All layers” shows the whole view.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All layers
+Layers: %1
+Regions: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The whole view, front to back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layer %1
+Fragments: %2
+Regions: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show layer %1 alone</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::MainWindow</name>
     <message>
         <source>LayerPaint</source>
         <translation type="unfinished"></translation>
@@ -16,6 +66,10 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
+        <source>Could not build the layers: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
         <source>Trefoil knot</source>
         <translation type="unfinished"></translation>
     </message>
@@ -25,6 +79,69 @@
     </message>
     <message>
         <source>Row of four</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segmentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region Graph</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region %1 selected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Shaded</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the model shaded, all layers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Single &amp;Layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show one depth layer alone (choose it in the Layers panel)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Se&amp;gmentation Map</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour every region of the visible layer differently</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region &amp;Boundaries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Outline where a surface is not connected to its neighbours on the same layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Building layers…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>build_layers of this view:
+capture %1 ms (drawing), %2 ms (sorting)
+connectivity %3 ms, regions %4 ms
+%5 ms from the capture to the picture</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -57,6 +174,10 @@
     </message>
     <message>
         <source>&amp;Orthographic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -172,7 +293,109 @@
     </message>
 </context>
 <context>
-    <name>Viewport</name>
+    <name>ui::RegionGraphPanel</name>
+    <message>
+        <source>No regions yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No regions in this view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Regions: %1, connections: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Small regions merged into grey nodes: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layer %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 small regions of layer %2
+%3 pixels together</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+%1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Region %1 on layer %2
+%3 pixels
+Connected regions: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 pixel links</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::SegmentationControls</name>
+    <message>
+        <source>Depth threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far apart in depth two neighbouring pixels may be and still count as one surface, as a fraction of the model&apos;s longest side.
+Smaller splits the view into more regions.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the default threshold (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plain depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follows each triangle&apos;s plane: sloped surfaces stay one region at any threshold</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The paper&apos;s test: depth difference below the threshold; steep surfaces break apart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How neighbouring pixels are judged to lie on one surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Capture back faces (two-sided)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Also split the inside of open or single-sided surfaces into layers. Changing it captures the view again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Threshold:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ui::Viewport</name>
+    <message>
+        <source>The layer capture is not available.</source>
+        <translation type="unfinished"></translation>
+    </message>
     <message>
         <source>LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.</source>
         <translation type="unfinished"></translation>
@@ -181,23 +404,12 @@
         <source>The renderer could not start: %1</source>
         <translation type="unfinished"></translation>
     </message>
-</context>
-<context>
-    <name>main</name>
     <message>
-        <source>Layer-aware 3D painting of meshes.</source>
+        <source>The layer views could not start: %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>file</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>[file]</source>
+        <source>The layers cannot be shown: %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2,8 +2,10 @@
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -23,7 +25,11 @@
 #include <utility>
 
 #include "core/builtin_models.h"
+#include "ui/layer_builder.h"
+#include "ui/layers_panel.h"
 #include "ui/model_loader.h"
+#include "ui/region_graph_panel.h"
+#include "ui/segmentation_controls.h"
 #include "ui/viewport.h"
 
 namespace ui {
@@ -37,6 +43,9 @@ const QString kBuiltinPrefix = QString::fromLatin1(core::kBuiltinPrefix);
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
+const QString kThresholdKey = QStringLiteral("segmentation/threshold");
+const QString kTestKey = QStringLiteral("segmentation/test");
+const QString kTwoSidedKey = QStringLiteral("segmentation/twoSided");
 
 bool isBuiltin(const QString& source) {
     return source.startsWith(kBuiltinPrefix);
@@ -54,17 +63,39 @@ QString droppedFile(const QMimeData* mime) {
 }
 } // namespace
 
-MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_document(std::make_unique<core::Document>()) {
     setWindowTitle(tr("LayerPaint"));
     setAcceptDrops(true);
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
 
-    m_viewport = new Viewport(this);
+    {
+        // The last session's segmentation options.
+        const QSettings settings;
+        core::LayerOptions options;
+        const float threshold = settings.value(kThresholdKey, options.threshold).toFloat();
+        if (threshold >= SegmentationControls::kMinThreshold &&
+            threshold <= SegmentationControls::kMaxThreshold)
+            options.threshold = threshold;
+        if (settings.value(kTestKey).toString() == QLatin1String("plain"))
+            options.test = core::ConnectionTest::Plain;
+        options.cullBackFaces = !settings.value(kTwoSidedKey, false).toBool();
+        m_document->setLayerOptions(options);
+    }
+
+    m_viewport = new Viewport(*m_document, this);
     setCentralWidget(m_viewport);
+    m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
 
     m_modelInfo = new QLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);
+    // Added after the model label (tests find that one first), but shown to its left.
+    m_layerInfo = new QLabel(this);
+    m_layerInfo->setObjectName(QStringLiteral("layerInfo"));
+    statusBar()->insertPermanentWidget(0, m_layerInfo);
 
+    createPanels();
     createMenus();
 
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
@@ -73,6 +104,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(m_viewport, &Viewport::glInitializationFailed, this, [this](const QString& message) {
         showError(tr("OpenGL Error"), tr("The 3D view cannot be shown."), message);
     });
+    connect(m_viewport, &Viewport::layerRenderingFailed, this, [this](const QString& message) {
+        statusBar()->showMessage(message, kStatusMessageMs);
+    });
+    connect(m_viewport, &Viewport::viewChanged, this, &MainWindow::updateLayerInfo);
+    connect(m_builder, &LayerBuilder::layersBuilt, this, &MainWindow::onLayersBuilt);
+    connect(m_builder, &LayerBuilder::segmentationChanged, this,
+            &MainWindow::onSegmentationChanged);
+    connect(m_builder, &LayerBuilder::layersCleared, this, &MainWindow::onLayersCleared);
+    connect(m_builder, &LayerBuilder::buildFailed, this, [this](const QString& message) {
+        statusBar()->showMessage(tr("Could not build the layers: %1").arg(message),
+                                 kStatusMessageMs);
+        updateLayerInfo();
+    });
+    updateLayerInfo();
 
     // The worker only publishes a number; polling it keeps the event queue free of updates.
     m_progressTimer.setInterval(50);
@@ -87,7 +132,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     restoreState(settings.value(kStateKey).toByteArray());
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // Children outlive the members: the ones that use the document go first.
+    delete m_builder;
+    m_builder = nullptr;
+    delete m_viewport;
+    m_viewport = nullptr;
+}
 
 void MainWindow::openFile(const QString& source) {
     const QString resolved = isBuiltin(source) ? source : QFileInfo(source).absoluteFilePath();
@@ -122,6 +173,176 @@ QString MainWindow::displayName(const QString& source) {
     if (isBuiltin(source))
         return builtinLabel(source.mid(kBuiltinPrefix.size()));
     return QFileInfo(source).fileName();
+}
+
+void MainWindow::createPanels() {
+    const auto makeDock = [this](const QString& title, const QString& name, QWidget* content) {
+        auto* dock = new QDockWidget(title, this);
+        dock->setObjectName(name); // saveState() knows docks by name
+        dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea |
+                              Qt::BottomDockWidgetArea);
+        dock->setWidget(content);
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        return dock;
+    };
+
+    m_segmentationControls = new SegmentationControls(this);
+    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_segmentationDock =
+        makeDock(tr("Segmentation"), QStringLiteral("segmentationDock"), m_segmentationControls);
+    connect(m_segmentationControls, &SegmentationControls::optionsChanged, this,
+            &MainWindow::setLayerOptions);
+
+    m_layersPanel = new LayersPanel(this);
+    m_layersDock = makeDock(tr("Layers"), QStringLiteral("layersDock"), m_layersPanel);
+    connect(m_layersPanel, &LayersPanel::layerActivated, this, [this](std::uint32_t layer) {
+        if (layer == 0)
+            setDisplay(m_allLayersDisplay);
+        else
+            setDisplay(render::LayerDisplay::SingleLayer, layer);
+    });
+
+    m_graphPanel = new RegionGraphPanel(this);
+    m_graphDock = makeDock(tr("Region Graph"), QStringLiteral("regionGraphDock"), m_graphPanel);
+    connect(m_graphPanel, &RegionGraphPanel::regionHovered, m_viewport,
+            &Viewport::setHighlightRegion);
+    connect(m_graphPanel, &RegionGraphPanel::regionActivated, this, [this](std::uint32_t region) {
+        statusBar()->showMessage(tr("Region %1 selected").arg(region), kStatusMessageMs);
+        emit regionActivated(region);
+    });
+
+    // Default layout (restoreState() may replace it): a column on the right.
+    resizeDocks({m_segmentationDock, m_layersDock, m_graphDock}, {300, 300, 300}, Qt::Horizontal);
+    resizeDocks({m_segmentationDock, m_layersDock, m_graphDock},
+                {m_segmentationControls->sizeHint().height(), 280, 420}, Qt::Vertical);
+}
+
+void MainWindow::createDisplayActions(QMenu* viewMenu) {
+    // Ctrl+digits: plain letters, [ ] and Alt are kept for the paint tools.
+    m_displayGroup = new QActionGroup(this);
+    m_displayGroup->setExclusive(true);
+    const auto addDisplay = [&](const QString& text, const QString& name, int digit,
+                                const QString& tip, render::LayerDisplay display) {
+        QAction* action = viewMenu->addAction(text);
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setShortcut(QKeySequence(Qt::CTRL | Qt::Key(Qt::Key_0 + digit)));
+        action->setStatusTip(tip);
+        m_displayGroup->addAction(action);
+        connect(action, &QAction::triggered, this, [this, display] { setDisplay(display); });
+        return action;
+    };
+    m_shadedAction =
+        addDisplay(tr("&Shaded"), QStringLiteral("actionDisplayShaded"), 1,
+                   tr("Show the model shaded, all layers"), render::LayerDisplay::Composite);
+    m_singleLayerAction =
+        addDisplay(tr("Single &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
+                   tr("Show one depth layer alone (choose it in the Layers panel)"),
+                   render::LayerDisplay::SingleLayer);
+    m_segmentationAction =
+        addDisplay(tr("Se&gmentation Map"), QStringLiteral("actionDisplaySegmentation"), 3,
+                   tr("Colour every region of the visible layer differently"),
+                   render::LayerDisplay::Segmentation);
+    m_shadedAction->setChecked(true);
+
+    m_boundariesAction = viewMenu->addAction(tr("Region &Boundaries"));
+    m_boundariesAction->setObjectName(QStringLiteral("actionShowBoundaries"));
+    m_boundariesAction->setCheckable(true);
+    m_boundariesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
+    m_boundariesAction->setStatusTip(tr("Outline where a surface is not connected to its "
+                                        "neighbours on the same layer"));
+    connect(m_boundariesAction, &QAction::toggled, m_viewport, &Viewport::setBoundariesVisible);
+}
+
+void MainWindow::setDisplay(render::LayerDisplay display, std::uint32_t layer) {
+    if (display == render::LayerDisplay::SingleLayer) {
+        if (layer != 0)
+            m_viewport->setDisplayLayer(layer);
+    } else {
+        m_allLayersDisplay = display;
+    }
+    m_viewport->setDisplay(display);
+    QAction* action = display == render::LayerDisplay::Composite     ? m_shadedAction
+                      : display == render::LayerDisplay::SingleLayer ? m_singleLayerAction
+                                                                     : m_segmentationAction;
+    action->setChecked(true);
+    m_layersPanel->setThumbnailStyle(display == render::LayerDisplay::Segmentation
+                                         ? LayersPanel::ThumbnailStyle::Regions
+                                         : LayersPanel::ThumbnailStyle::Shaded,
+                                     m_document->layers());
+    m_layersPanel->setCurrentLayer(
+        display == render::LayerDisplay::SingleLayer ? m_viewport->displayLayer() : 0);
+}
+
+void MainWindow::setLayerOptions(const core::LayerOptions& options) {
+    m_builder->setLayerOptions(options);
+    QSettings settings;
+    settings.setValue(kThresholdKey, double(options.threshold));
+    settings.setValue(kTestKey, options.test == core::ConnectionTest::Plain
+                                    ? QStringLiteral("plain")
+                                    : QStringLiteral("surface"));
+    settings.setValue(kTwoSidedKey, !options.cullBackFaces);
+}
+
+void MainWindow::onLayersBuilt() {
+    const core::Layers* layers = m_document->layers();
+    if (!layers)
+        return;
+    // A layer shown alone that this view does not have: show its deepest one.
+    const std::uint32_t deepest = std::max(1u, layers->stack.maxLayers());
+    if (m_viewport->displayLayer() > deepest)
+        m_viewport->setDisplayLayer(deepest);
+    m_layersPanel->setLayers(layers);
+    m_layersPanel->setCurrentLayer(m_viewport->display() == render::LayerDisplay::SingleLayer
+                                       ? m_viewport->displayLayer()
+                                       : 0);
+    m_graphPanel->setLayers(layers);
+    updateLayerInfo();
+}
+
+void MainWindow::onSegmentationChanged() {
+    const core::Layers* layers = m_document->layers();
+    if (!layers)
+        return;
+    m_graphPanel->setLayers(layers);
+    m_layersPanel->setLayers(layers); // region counts (and colours) per layer
+    updateLayerInfo();
+}
+
+void MainWindow::onLayersCleared() {
+    m_viewport->setHighlightRegion(core::kNone);
+    m_layersPanel->setLayers(nullptr);
+    m_graphPanel->setLayers(nullptr);
+    updateLayerInfo();
+}
+
+void MainWindow::updateLayerInfo() {
+    const core::Layers* layers = m_document->layers();
+    if (!layers) {
+        m_layerInfo->setText(m_builder->isBuilding() && m_viewport->canCapture()
+                                 ? tr("Building layers…")
+                                 : QString());
+        m_layerInfo->setToolTip(QString());
+        return;
+    }
+    const QLocale locale;
+    const core::LayerTimings& t = layers->timings;
+    // Label style ("Regions: 1") reads right in English for any count without plural forms.
+    m_layerInfo->setText(
+        tr("Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms")
+            .arg(locale.toString(layers->stack.maxLayers()),
+                 locale.toString(qulonglong(layers->stack.fragmentCount())),
+                 locale.toString(qulonglong(layers->segmentation.graph.regions.size())),
+                 locale.toString(m_builder->lastBuildMs(), 'f', 0)));
+    m_layerInfo->setToolTip(tr("build_layers of this view:\n"
+                               "capture %1 ms (drawing), %2 ms (sorting)\n"
+                               "connectivity %3 ms, regions %4 ms\n"
+                               "%5 ms from the capture to the picture")
+                                .arg(locale.toString(t.capture.gpuMs, 'f', 1),
+                                     locale.toString(t.capture.resolveMs, 'f', 1),
+                                     locale.toString(t.connectivityMs, 'f', 1),
+                                     locale.toString(t.segmentationMs, 'f', 1),
+                                     locale.toString(m_builder->lastBuildMs(), 'f', 1)));
 }
 
 void MainWindow::createMenus() {
@@ -165,6 +386,15 @@ void MainWindow::createMenus() {
     m_orthographicAction->setShortcuts({QKeySequence(Qt::Key_5), QKeySequence(Qt::Key_O)});
     connect(m_orthographicAction, &QAction::toggled, m_viewport, &Viewport::setOrthographic);
     connect(m_viewport, &Viewport::orthographicChanged, m_orthographicAction, &QAction::setChecked);
+
+    viewMenu->addSeparator();
+    createDisplayActions(viewMenu);
+
+    viewMenu->addSeparator();
+    QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
+    panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
+    for (QDockWidget* dock : {m_segmentationDock, m_layersDock, m_graphDock})
+        panelsMenu->addAction(dock->toggleViewAction());
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =
@@ -241,7 +471,9 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     stopProgress();
     m_source = source;
     updateModelInfo(*mesh);
-    m_viewport->setMesh(std::move(mesh));
+    // This window is the loader's only listener: the mesh moves into the document.
+    m_document->setMesh(std::move(*mesh), source.toStdString());
+    m_viewport->meshChanged();
     setWindowTitle(tr("%1 — LayerPaint").arg(displayName(source)));
     if (!isBuiltin(source)) {
         m_recent.add(source);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include <QMainWindow>
@@ -9,22 +10,32 @@
 #include <QStringList>
 #include <QTimer>
 
+#include "core/document.h"
 #include "core/mesh.h"
+#include "render/layer_compositor.h"
 #include "ui/recent_files.h"
 
 class QAction;
+class QActionGroup;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressDialog;
 
 namespace ui {
 
+class LayerBuilder;
+class LayersPanel;
 class ModelLoader;
+class RegionGraphPanel;
+class SegmentationControls;
 class Viewport;
 
 /**
- * The application window: the viewport, the File/View/Help menus, the status bar and the
- * background loading of models. The open model only changes when a load succeeds.
+ * The application window: owns the core::Document (model, camera, layers) and shows it in the
+ * viewport and the Segmentation, Layers and Region Graph panels; the File/View/Help menus, the
+ * status bar and the background loading of models. The open model only changes when a load
+ * succeeds.
  */
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -42,6 +53,18 @@ public:
     void openFromCommandLine(const QStringList& files);
 
     Viewport* viewport() const { return m_viewport; }
+    core::Document& document() { return *m_document; }
+    const core::Document& document() const { return *m_document; }
+    LayerBuilder* layerBuilder() const { return m_builder; }
+    LayersPanel* layersPanel() const { return m_layersPanel; }
+    RegionGraphPanel* regionGraphPanel() const { return m_graphPanel; }
+    SegmentationControls* segmentationControls() const { return m_segmentationControls; }
+
+    /**
+     * Shows the layers as display; for SingleLayer, layer (1-based) is the one shown alone, 0
+     * keeps the current one.
+     */
+    void setDisplay(render::LayerDisplay display, std::uint32_t layer = 0);
     /** The open model's source (absolute path or "builtin:NAME"); empty before the first load. */
     QString currentSource() const { return m_source; }
     bool isLoading() const;
@@ -59,6 +82,8 @@ signals:
     void modelLoaded(const QString& source);
     /** message is core's error text; it names the file. */
     void loadFailed(const QString& message);
+    /** A region was chosen (a click in the region graph). */
+    void regionActivated(std::uint32_t region);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -66,7 +91,14 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    void createPanels();
     void createMenus();
+    void createDisplayActions(QMenu* viewMenu);
+    void setLayerOptions(const core::LayerOptions& options);
+    void onLayersBuilt();
+    void onSegmentationChanged();
+    void onLayersCleared();
+    void updateLayerInfo();
     void updateRecentMenu();
     void showOpenDialog();
     void showAbout();
@@ -79,8 +111,25 @@ private:
     void stopProgress();
     void updateModelInfo(const core::Mesh& mesh);
 
+    // ~MainWindow deletes the widgets that refer to it before it goes.
+    std::unique_ptr<core::Document> m_document;
     Viewport* m_viewport = nullptr;
+    LayerBuilder* m_builder = nullptr;
     ModelLoader* m_loader = nullptr;
+    SegmentationControls* m_segmentationControls = nullptr;
+    LayersPanel* m_layersPanel = nullptr;
+    RegionGraphPanel* m_graphPanel = nullptr;
+    QDockWidget* m_segmentationDock = nullptr;
+    QDockWidget* m_layersDock = nullptr;
+    QDockWidget* m_graphDock = nullptr;
+    QActionGroup* m_displayGroup = nullptr;
+    QAction* m_shadedAction = nullptr;
+    QAction* m_singleLayerAction = nullptr;
+    QAction* m_segmentationAction = nullptr;
+    QAction* m_boundariesAction = nullptr;
+    /** What "All layers" returns to: Composite or Segmentation. */
+    render::LayerDisplay m_allLayersDisplay = render::LayerDisplay::Composite;
+    QLabel* m_layerInfo = nullptr;
     RecentFiles m_recent;
     QMenu* m_recentMenu = nullptr;
     QAction* m_orthographicAction = nullptr;

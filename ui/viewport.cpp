@@ -7,9 +7,12 @@
 #include <QOpenGLFunctions>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
+#include "core/document.h"
+#include "render/gl_layer_capturer.h"
 #include "render/mesh_renderer.h"
 
 namespace ui {
@@ -25,7 +28,8 @@ qreal pressureOf(const QMouseEvent* event) {
 }
 } // namespace
 
-Viewport::Viewport(QWidget* parent) : QOpenGLWidget(parent) {
+Viewport::Viewport(core::Document& document, QWidget* parent)
+    : QOpenGLWidget(parent), m_document(document) {
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
@@ -48,34 +52,134 @@ QSurfaceFormat Viewport::requiredFormat() {
     return format;
 }
 
-void Viewport::setMesh(std::shared_ptr<const core::Mesh> mesh) {
-    m_mesh = std::move(mesh);
-    m_meshDirty = true; // uploaded in paintGL, where the context is current
-    if (m_mesh)
-        m_camera.frame(m_mesh->bounds());
-    emit cameraChanged();
-    update();
+void Viewport::meshChanged() {
+    m_meshDirty = true; // uploaded where the context is current
+    cameraMoved();
+}
+
+std::shared_ptr<const core::Mesh> Viewport::mesh() const {
+    return m_document.meshSerial() != 0 ? m_document.sharedMesh() : nullptr;
+}
+
+const core::Camera& Viewport::camera() const {
+    return m_document.camera();
 }
 
 core::View Viewport::view() const {
     const qreal ratio = devicePixelRatioF();
-    return m_camera.view(qRound(width() * ratio), qRound(height() * ratio));
+    return camera().view(qRound(width() * ratio), qRound(height() * ratio));
+}
+
+bool Viewport::isNavigating() const {
+    return m_drag == Drag::Orbit || m_drag == Drag::Pan || m_drag == Drag::Zoom;
+}
+
+bool Viewport::isOrthographic() const {
+    return camera().orthographic;
 }
 
 void Viewport::frameAll() {
-    if (!m_mesh)
+    if (!mesh())
         return;
-    m_camera.frame(m_mesh->bounds());
-    emit cameraChanged();
-    update();
+    m_document.camera().frame(m_document.mesh().bounds());
+    cameraMoved();
 }
 
 void Viewport::setOrthographic(bool orthographic) {
-    if (m_camera.orthographic == orthographic)
+    if (camera().orthographic == orthographic)
         return;
-    m_camera.orthographic = orthographic;
+    m_document.camera().orthographic = orthographic;
     emit orthographicChanged(orthographic);
+    cameraMoved();
+}
+
+void Viewport::setDisplay(render::LayerDisplay display) {
+    if (m_composite.display == display)
+        return;
+    m_composite.display = display;
+    update();
+}
+
+void Viewport::setDisplayLayer(std::uint32_t layer) {
+    layer = std::max(layer, 1u);
+    if (m_composite.layer == layer)
+        return;
+    m_composite.layer = layer;
+    update();
+}
+
+void Viewport::setBoundariesVisible(bool visible) {
+    if (m_composite.boundaries == visible)
+        return;
+    m_composite.boundaries = visible;
+    update();
+}
+
+void Viewport::setHighlightRegion(std::uint32_t region) {
+    if (m_composite.highlightRegion == region)
+        return;
+    m_composite.highlightRegion = region;
+    update();
+}
+
+bool Viewport::canCapture() const {
+    return m_capturer && mesh() && m_document.mesh().triangleCount() > 0;
+}
+
+core::Result<core::LayerStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
+                                                       core::CaptureStats* stats) {
+    if (!canCapture())
+        return core::Error{tr("The layer capture is not available.").toStdString()};
+    makeCurrent();
+    uploadMeshIfDirty();
+    auto stack = m_capturer->capture(view, cullBackFaces, stats);
+    doneCurrent();
+    return stack;
+}
+
+void Viewport::showLayers() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_compositor || !layers)
+        return;
+    makeCurrent();
+    uploadMeshIfDirty();
+    const core::Status status =
+        m_compositorHasMesh ? m_compositor->setLayers(*layers) : core::Status::success();
+    doneCurrent();
+    // Without them the mesh renderer goes on drawing the shaded view.
+    m_layersShown = m_compositorHasMesh && status.ok();
+    if (!status)
+        reportLayerError(status);
+    update();
+}
+
+void Viewport::showSegmentation() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_compositor || !layers || !m_layersShown)
+        return;
+    makeCurrent();
+    const core::Status status = m_compositor->updateSegmentation(*layers);
+    doneCurrent();
+    if (!status) {
+        m_layersShown = false;
+        reportLayerError(status);
+    }
+    update();
+}
+
+bool Viewport::isShowingLayers() const {
+    return m_layersShown && m_compositor && m_document.layers();
+}
+
+void Viewport::cameraMoved() {
+    invalidateView();
     emit cameraChanged();
+}
+
+void Viewport::invalidateView() {
+    ++m_viewSerial;
+    m_layersShown = false;
+    emit viewChanged();
     update();
 }
 
@@ -100,36 +204,91 @@ void Viewport::initializeGL() {
             m_glError =
                 tr("The renderer could not start: %1").arg(QString::fromStdString(status.error()));
     }
+    QString layerError;
+    if (m_renderer) {
+        // Without these the mesh still shows; only the layer views are missing.
+        auto capturer = std::make_unique<render::GlLayerCapturer>();
+        auto compositor = std::make_unique<render::LayerCompositor>();
+        const core::Status captureStatus = capturer->initialize();
+        const core::Status compositeStatus = compositor->initialize();
+        if (captureStatus && compositeStatus) {
+            m_capturer = std::move(capturer);
+            m_compositor = std::move(compositor);
+        } else {
+            layerError = tr("The layer views could not start: %1")
+                             .arg(QString::fromStdString(captureStatus ? compositeStatus.error()
+                                                                       : captureStatus.error()));
+            capturer->layerCapture().release();
+            compositor->release();
+        }
+    }
+    // Reported from the event loop: a modal dialog inside initializeGL would re-enter it.
     if (!m_glError.isEmpty()) {
-        // Reported from the event loop: a modal dialog inside initializeGL would re-enter it.
         QMetaObject::invokeMethod(
             this, [this] { emit glInitializationFailed(m_glError); }, Qt::QueuedConnection);
+    } else if (!layerError.isEmpty()) {
+        QMetaObject::invokeMethod(
+            this, [this, layerError] { emit layerRenderingFailed(layerError); },
+            Qt::QueuedConnection);
     }
     m_meshDirty = true;
+    invalidateView(); // the GL objects are new: so are the layers they will hold
+}
+
+void Viewport::resizeGL(int, int) {
+    invalidateView();
+}
+
+void Viewport::uploadMeshIfDirty() {
+    if (!m_meshDirty || !m_renderer)
+        return;
+    const core::Mesh& mesh = m_document.mesh();
+    m_renderer->setMesh(mesh);
+    if (m_capturer)
+        m_capturer->setMesh(mesh);
+    m_compositorHasMesh = false;
+    if (m_compositor) {
+        const core::Status status = m_compositor->setMesh(mesh);
+        m_compositorHasMesh = status.ok();
+        if (!status)
+            reportLayerError(status);
+    }
+    m_meshDirty = false;
+}
+
+void Viewport::reportLayerError(const core::Status& status) {
+    // Queued: this may run inside paintGL or with the context current.
+    const QString message =
+        tr("The layers cannot be shown: %1").arg(QString::fromStdString(status.error()));
+    QMetaObject::invokeMethod(
+        this, [this, message] { emit layerRenderingFailed(message); }, Qt::QueuedConnection);
 }
 
 void Viewport::paintGL() {
-    const render::DrawOptions options;
-    if (!m_renderer || !m_mesh) {
-        QOpenGLFunctions* gl = context()->functions();
-        gl->glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
-        gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    render::DrawOptions options;
+    options.background = m_composite.background;
+    QOpenGLFunctions* gl = context()->functions();
+    gl->glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_renderer || !mesh())
         return;
-    }
-    if (m_meshDirty) {
-        m_renderer->setMesh(*m_mesh);
-        m_meshDirty = false;
-    }
-    // QOpenGLWidget has bound its own framebuffer; the renderer draws into whatever is bound.
-    m_renderer->draw(view(), options);
+    uploadMeshIfDirty();
+    // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
+    if (isShowingLayers())
+        m_compositor->draw(m_composite);
+    else
+        m_renderer->draw(view(), options);
 }
 
 void Viewport::releaseGl() {
-    if (!m_renderer)
+    if (!m_renderer && !m_capturer && !m_compositor)
         return;
     makeCurrent();
+    m_compositor.reset();
+    m_capturer.reset();
     m_renderer.reset();
     doneCurrent();
+    m_layersShown = false;
 }
 
 Viewport::Drag Viewport::dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
@@ -185,16 +344,16 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     switch (m_drag) {
     case Drag::Orbit:
         // Dragging right turns the model right; dragging down shows more of its top.
-        m_camera.orbit(float(-delta.x()) * kOrbitDegreesPerPixel,
-                       float(delta.y()) * kOrbitDegreesPerPixel);
+        m_document.camera().orbit(float(-delta.x()) * kOrbitDegreesPerPixel,
+                                  float(delta.y()) * kOrbitDegreesPerPixel);
         break;
     case Drag::Pan:
         // Logical delta against logical height: the model follows the cursor at any DPI.
-        m_camera.pan(float(delta.x()), float(delta.y()), height());
+        m_document.camera().pan(float(delta.x()), float(delta.y()), height());
         break;
     case Drag::Zoom:
         // Right or up moves closer.
-        m_camera.zoom(std::exp(float(delta.y() - delta.x()) * kZoomPerDragPixel));
+        m_document.camera().zoom(std::exp(float(delta.y() - delta.x()) * kZoomPerDragPixel));
         break;
     case Drag::Paint:
         emit paintMoved(toDevicePixels(event->position()), pressureOf(event));
@@ -203,8 +362,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     case Drag::None:
         break;
     }
-    emit cameraChanged();
-    update();
+    cameraMoved();
     event->accept();
 }
 
@@ -228,9 +386,8 @@ void Viewport::wheelEvent(QWheelEvent* event) {
         event->ignore();
         return;
     }
-    m_camera.zoom(std::pow(kZoomPerWheelStep, float(eighths) / 120.0f));
-    emit cameraChanged();
-    update();
+    m_document.camera().zoom(std::pow(kZoomPerWheelStep, float(eighths) / 120.0f));
+    cameraMoved();
     event->accept();
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
 #include <memory>
 
 #include <QOpenGLWidget>
@@ -8,51 +9,95 @@
 #include <QSurfaceFormat>
 
 #include "core/camera.h"
+#include "core/layer_stack.h"
+#include "core/layers.h"
 #include "core/mesh.h"
+#include "core/result.h"
+#include "render/layer_compositor.h"
+
+namespace core {
+class Document;
+}
 
 namespace render {
+class GlLayerCapturer;
 class MeshRenderer;
-}
+} // namespace render
 
 namespace ui {
 
 /**
- * The 3D view: draws the mesh with render::MeshRenderer and turns mouse input into core::Camera
- * moves. Middle drag orbits, Shift+middle pans, the wheel zooms; Alt+left/right/middle orbit,
- * zoom and pan for tablets. The plain left button belongs to painting (the paint* signals).
+ * The 3D view of a core::Document: turns mouse input into moves of the document's camera and
+ * draws the model. While the view moves, or before the layers of the current view exist, it
+ * draws the mesh with render::MeshRenderer; once they exist, it draws them with
+ * render::LayerCompositor in the chosen display. Middle drag orbits, Shift+middle pans, the wheel
+ * zooms; Alt+left/right/middle orbit, zoom and pan for tablets. The plain left button belongs to
+ * painting (the paint* signals).
  */
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
 
 public:
-    explicit Viewport(QWidget* parent = nullptr);
+    explicit Viewport(core::Document& document, QWidget* parent = nullptr);
     ~Viewport() override;
 
     /** OpenGL 4.5 core with a depth buffer: what render needs. Set it as the default format. */
     static QSurfaceFormat requiredFormat();
 
-    /** Shows mesh (may be null) and frames it. */
-    void setMesh(std::shared_ptr<const core::Mesh> mesh);
-    const std::shared_ptr<const core::Mesh>& mesh() const { return m_mesh; }
+    /** Call after replacing the document's mesh: uploads it at the next draw. */
+    void meshChanged();
+    /** The document's mesh, or null before the first model. */
+    std::shared_ptr<const core::Mesh> mesh() const;
 
-    const core::Camera& camera() const { return m_camera; }
+    const core::Camera& camera() const;
     /** The current view in device pixels (what is drawn and what paint coordinates refer to). */
     core::View view() const;
+    /** Changes with every change of camera, size or mesh: layers made before describe another. */
+    std::uint64_t viewSerial() const { return m_viewSerial; }
+    /** True during an orbit, pan or zoom drag. */
+    bool isNavigating() const;
 
-    bool isOrthographic() const { return m_camera.orthographic; }
+    bool isOrthographic() const;
 
     /** The GL error met in initializeGL, or empty. */
     QString glError() const { return m_glError; }
 
+    // Layers, driven by ui::LayerBuilder (the GL work it needs happens in this widget's context).
+    /** True once the context is up and a model is loaded: captureLayers() can run. */
+    bool canCapture() const;
+    /** The GPU part of build_layers for view, with this widget's context current. */
+    core::Result<core::LayerStack> captureLayers(const core::View& view, bool cullBackFaces,
+                                                 core::CaptureStats* stats);
+    /** Shows the document's layers with the compositor (they must be of the current view). */
+    void showLayers();
+    /** The document's layers were re-segmented: updates the compositor's regions. */
+    void showSegmentation();
+    /** True while the picture comes from the layers (the compositor), not from the mesh. */
+    bool isShowingLayers() const;
+
+    const render::CompositeOptions& compositeOptions() const { return m_composite; }
+    render::LayerDisplay display() const { return m_composite.display; }
+    std::uint32_t displayLayer() const { return m_composite.layer; }
+
 public slots:
     void frameAll();
     void setOrthographic(bool orthographic);
+    void setDisplay(render::LayerDisplay display);
+    /** The layer the SingleLayer display shows (1-based). */
+    void setDisplayLayer(std::uint32_t layer);
+    void setBoundariesVisible(bool visible);
+    /** A region drawn highlighted, or core::kNone. */
+    void setHighlightRegion(std::uint32_t region);
 
 signals:
     void orthographicChanged(bool orthographic);
     void cameraChanged();
+    /** Camera, size or mesh changed: viewSerial() moved on and the layers are out of date. */
+    void viewChanged();
     /** Emitted once, from the event loop, if the renderer cannot start (message for the user). */
     void glInitializationFailed(const QString& message);
+    /** A render part other than the mesh renderer failed to start (layers will not show). */
+    void layerRenderingFailed(const QString& message);
 
     // The painting hook: positions in device pixels, origin top-left (DESIGN.md §4).
     void paintPressed(QPointF pixel, qreal pressure);
@@ -61,6 +106,7 @@ signals:
 
 protected:
     void initializeGL() override;
+    void resizeGL(int w, int h) override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -72,12 +118,23 @@ private:
     static Drag dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
 
     QPointF toDevicePixels(QPointF logical) const;
+    void cameraMoved();
+    void invalidateView();
+    void uploadMeshIfDirty();
+    void reportLayerError(const core::Status& status);
     void releaseGl();
 
-    std::unique_ptr<render::MeshRenderer> m_renderer; // lives only while the context does
-    std::shared_ptr<const core::Mesh> m_mesh;
+    core::Document& m_document;
+    // These live only while the context does.
+    std::unique_ptr<render::MeshRenderer> m_renderer;
+    std::unique_ptr<render::GlLayerCapturer> m_capturer;
+    std::unique_ptr<render::LayerCompositor> m_compositor;
     bool m_meshDirty = false;
-    core::Camera m_camera;
+    bool m_compositorHasMesh = false;
+    /** The compositor holds the document's layers of the current view. */
+    bool m_layersShown = false;
+    std::uint64_t m_viewSerial = 1;
+    render::CompositeOptions m_composite;
     QString m_glError;
 
     Drag m_drag = Drag::None;

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `bench`: the paper's Table 2 figures on this machine, next to a plain z-buffer pass of the same
+// mesh and view measured in the same run (DESIGN.md §4, §5).
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <thread>
+
+#include <epoxy/gl.h>
+#include <nlohmann/json.hpp>
+
+#include "app/cli_commands.h"
+#include "core/layers.h"
+#include "core/mesh_io.h"
+#include "render/gl_context.h"
+#include "render/gl_layer_capturer.h"
+#include "render/layer_compositor.h"
+#include "render/mesh_renderer.h"
+#include "render/offscreen_target.h"
+
+namespace cli {
+
+namespace {
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+double median(std::vector<double> values) {
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/** Medians of every timed part over the runs of one model at one size. */
+struct Samples {
+    std::vector<double> plain, captureGpu, captureResolve, connectivity, segmentation, buildLayers,
+        drawLayers, firstDraw;
+};
+} // namespace
+
+int runBench(const BenchArgs& args) {
+    auto context = render::HeadlessContext::create();
+    if (!context)
+        return fail(context.error());
+    const int runs = std::max(args.runs, 1);
+    json results = json::array();
+    std::vector<std::string> models = args.models;
+    if (models.empty())
+        models = {"builtin:trefoil"};
+
+    for (const std::string& model : models) {
+        auto mesh = core::loadMesh(model);
+        if (!mesh)
+            return fail(mesh.error());
+        const core::MeshTopology topology = core::buildMeshTopology(*mesh);
+        render::MeshRenderer renderer;
+        render::GlLayerCapturer capturer;
+        render::LayerCompositor compositor;
+        for (const core::Status& s :
+             {renderer.initialize(), capturer.initialize(), compositor.initialize()})
+            if (!s)
+                return fail(s.error());
+        renderer.setMesh(*mesh);
+        capturer.setMesh(*mesh);
+        if (const core::Status s = compositor.setMesh(*mesh); !s)
+            return fail(model + ": " + s.error());
+
+        for (const std::string& size : args.sizes) {
+            CameraArgs cameraArgs = args.camera;
+            cameraArgs.size = size;
+            auto view = makeView(cameraArgs, *mesh);
+            if (!view)
+                return fail(view.error());
+            render::OffscreenTarget target;
+            if (const core::Status s = target.create(view->width, view->height); !s)
+                return fail(s.error());
+
+            Samples samples;
+            core::LayerOptions options;
+            std::size_t fragments = 0, regions = 0, layerCount = 0;
+            // One warm-up round (shader compilation, buffer growth), then the measured runs,
+            // alternating the baseline with the measured work so load affects both alike.
+            for (int run = -1; run < runs; ++run) {
+                render::DrawOptions plainOptions;
+                plainOptions.cullBackFaces = true;
+                const double plain = render::timePlainPass(renderer, target, *view, plainOptions);
+                const auto start = Clock::now();
+                auto layers = core::buildLayers(capturer, *mesh, topology, *view, options);
+                const double build = msSince(start);
+                if (!layers)
+                    return fail(model + ": " + layers.error());
+                if (const core::Status s = compositor.setLayers(*layers); !s)
+                    return fail(model + ": " + s.error());
+                target.bind();
+                // The first draw after a build also shades every fragment once; later draws
+                // (paint, pop-up, hover) only pick and compose. Both are reported.
+                const auto timedDraw = [&] {
+                    glFinish();
+                    const auto drawStart = Clock::now();
+                    compositor.draw({});
+                    glFinish();
+                    return msSince(drawStart);
+                };
+                const double firstDraw = timedDraw();
+                const double draw = timedDraw();
+                if (run < 0)
+                    continue;
+                const core::LayerTimings& t = layers->timings;
+                samples.plain.push_back(plain);
+                samples.captureGpu.push_back(t.capture.gpuMs);
+                samples.captureResolve.push_back(t.capture.resolveMs);
+                samples.connectivity.push_back(t.connectivityMs);
+                samples.segmentation.push_back(t.segmentationMs);
+                samples.buildLayers.push_back(build);
+                samples.drawLayers.push_back(draw);
+                samples.firstDraw.push_back(firstDraw);
+                fragments = layers->stack.fragmentCount();
+                regions = layers->segmentation.graph.regions.size();
+                layerCount = layers->stack.maxLayers();
+            }
+            const double plain = median(samples.plain), build = median(samples.buildLayers);
+            json row = {
+                {"model", model},
+                {"vertices", mesh->vertexCount()},
+                {"triangles", mesh->triangleCount()},
+                {"size", size},
+                {"runs", runs},
+                {"layers", layerCount},
+                {"fragments", fragments},
+                {"regions", regions},
+                {"plain_pass_ms", plain},
+                {"build_layers_ms", build},
+                {"build_layers_over_plain", plain > 0 ? build / plain : 0.0},
+                {"capture_gpu_ms", median(samples.captureGpu)},
+                {"capture_resolve_ms", median(samples.captureResolve)},
+                {"connectivity_ms", median(samples.connectivity)},
+                {"segmentation_and_graph_ms", median(samples.segmentation)},
+                {"draw_layers_ms", median(samples.drawLayers)},
+                {"first_draw_after_build_ms", median(samples.firstDraw)},
+            };
+            std::cerr << model << ' ' << size << ": build_layers " << build
+                      << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain
+                      << " ms), draw_layers " << median(samples.drawLayers) << " ms\n";
+            results.push_back(std::move(row));
+        }
+        compositor.release();
+        renderer.release();
+    }
+    const json out = {{"renderer", render::HeadlessContext::rendererName()},
+                      {"threads", std::thread::hardware_concurrency()},
+                      {"results", results}};
+    if (!args.jsonOut.empty()) {
+        std::ofstream file(args.jsonOut);
+        file << out.dump(2) << '\n';
+        if (!file)
+            return fail(args.jsonOut + ": write failed");
+    }
+    std::cout << out.dump(2) << '\n';
+    return 0;
+}
+
+} // namespace cli

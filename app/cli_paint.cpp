@@ -1,0 +1,234 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `paint`: replays a JSON script of operations through the controller (core::Document) — the
+// code path of the GUI's clicks — and saves the result as a binary glTF.
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_commands.h"
+#include "core/document.h"
+#include "core/gltf_export.h"
+#include "core/mesh_io.h"
+#include "render/gl_context.h"
+#include "render/gl_layer_capturer.h"
+
+namespace cli {
+
+namespace {
+using nlohmann::json;
+
+/** A script error: names the script, the operation's index and the problem. */
+struct ScriptError {
+    std::string message;
+};
+
+float number(const json& op, const char* key, float fallback, float lo, float hi) {
+    if (!op.contains(key))
+        return fallback;
+    if (!op[key].is_number())
+        throw ScriptError{std::string("\"") + key + "\" must be a number"};
+    const float v = op[key].get<float>();
+    if (!std::isfinite(v) || v < lo || v > hi)
+        throw ScriptError{std::string("\"") + key + "\" must be between " + std::to_string(lo) +
+                          " and " + std::to_string(hi)};
+    return v;
+}
+
+bool boolean(const json& op, const char* key, bool fallback) {
+    if (!op.contains(key))
+        return fallback;
+    if (!op[key].is_boolean())
+        throw ScriptError{std::string("\"") + key + "\" must be true or false"};
+    return op[key].get<bool>();
+}
+
+float srgbToLinear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+/** "#rrggbb", "#rrggbbaa" or [r, g, b(, a)] in sRGB 0..1, to linear RGBA. */
+glm::vec4 color(const json& value) {
+    glm::vec4 c(1.0f);
+    if (value.is_string()) {
+        const std::string s = value.get<std::string>();
+        unsigned r = 0, g = 0, b = 0, a = 255;
+        const bool ok =
+            (s.size() == 7 && std::sscanf(s.c_str(), "#%2x%2x%2x", &r, &g, &b) == 3) ||
+            (s.size() == 9 && std::sscanf(s.c_str(), "#%2x%2x%2x%2x", &r, &g, &b, &a) == 4);
+        if (!ok)
+            throw ScriptError{"\"color\" must be #rrggbb or #rrggbbaa"};
+        c = glm::vec4(r, g, b, a) / 255.0f;
+    } else if (value.is_array() && (value.size() == 3 || value.size() == 4)) {
+        for (std::size_t i = 0; i < value.size(); ++i) {
+            if (!value[i].is_number() || value[i].get<float>() < 0.0f ||
+                value[i].get<float>() > 1.0f)
+                throw ScriptError{"\"color\" entries must be numbers from 0 to 1"};
+            c[int(i)] = value[i].get<float>();
+        }
+    } else {
+        throw ScriptError{"\"color\" must be #rrggbb or [r, g, b] (sRGB, 0 to 1)"};
+    }
+    return {srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b), c.a};
+}
+
+std::vector<core::StrokePoint> strokePoints(const json& op) {
+    if (!op.contains("points") || !op["points"].is_array() || op["points"].empty())
+        throw ScriptError{"\"points\" must be a non-empty array of [x, y] or [x, y, pressure]"};
+    std::vector<core::StrokePoint> points;
+    for (const json& p : op["points"]) {
+        if (!p.is_array() || p.size() < 2 || p.size() > 3 || !p[0].is_number() ||
+            !p[1].is_number() || (p.size() == 3 && !p[2].is_number()))
+            throw ScriptError{"each point must be [x, y] or [x, y, pressure]"};
+        core::StrokePoint point;
+        point.position = {p[0].get<float>(), p[1].get<float>()};
+        point.pressure = p.size() == 3 ? p[2].get<float>() : 1.0f;
+        if (!std::isfinite(point.position.x) || !std::isfinite(point.position.y) ||
+            !(point.pressure >= 0.0f && point.pressure <= 1.0f))
+            throw ScriptError{"a point is not finite or its pressure is outside 0..1"};
+        points.push_back(point);
+    }
+    return points;
+}
+
+/** Runs the operations on doc; layers are built (by capturer) whenever a stroke needs them. */
+void replay(const json& operations, core::Document& doc, core::LayerCapturer& capturer,
+            CameraArgs camera, core::View& view) {
+    const auto ensureLayers = [&] {
+        if (doc.layers())
+            return;
+        if (const core::Status s = doc.buildLayers(capturer, view); !s)
+            throw ScriptError{s.error()};
+    };
+    core::PaintChanges changes; // the GPU copy is not needed headless
+    for (std::size_t i = 0; i < operations.size(); ++i) {
+        const json& op = operations[i];
+        try {
+            if (!op.is_object() || !op.contains("op") || !op["op"].is_string())
+                throw ScriptError{"an operation must be an object with an \"op\" name"};
+            const std::string name = op["op"].get<std::string>();
+            if (name == "set-mode") {
+                doc.setLayerAware(boolean(op, "layer_aware", doc.layerAware()));
+            } else if (name == "set-brush") {
+                core::Brush& b = doc.brush();
+                if (op.contains("color"))
+                    b.color = color(op["color"]);
+                b.radius = number(op, "radius", b.radius, 0.5f, 2048.0f);
+                b.hardness = number(op, "hardness", b.hardness, 0.0f, 1.0f);
+                b.opacity = number(op, "opacity", b.opacity, 0.0f, 1.0f);
+                b.flow = number(op, "flow", b.flow, 0.0f, 1.0f);
+                b.spacing = number(op, "spacing", b.spacing, 0.01f, 4.0f);
+                b.trackRadius = number(op, "track_radius", b.trackRadius, 0.0f, 1e5f);
+                b.eraser = boolean(op, "eraser", b.eraser);
+                b.pressureRadius = boolean(op, "pressure_radius", b.pressureRadius);
+                b.pressureOpacity = boolean(op, "pressure_opacity", b.pressureOpacity);
+            } else if (name == "stroke") {
+                const std::vector<core::StrokePoint> points = strokePoints(op);
+                ensureLayers();
+                if (const core::Status s = doc.beginStroke(points.front(), changes); !s)
+                    throw ScriptError{s.error()};
+                for (std::size_t k = 1; k < points.size(); ++k)
+                    doc.moveStroke(points[k], changes);
+                doc.endStroke();
+            } else if (name == "undo") {
+                doc.undo(changes);
+            } else if (name == "redo") {
+                doc.redo(changes);
+            } else if (name == "orbit") {
+                if (!op.contains("orbit") || !op["orbit"].is_string())
+                    throw ScriptError{"\"orbit\" must be a string yaw,pitch,distance"};
+                camera.orbit = op["orbit"].get<std::string>();
+                camera.cameraFile.clear();
+                auto v = makeView(camera, doc.mesh());
+                if (!v)
+                    throw ScriptError{v.error()};
+                view = *v;
+                doc.clearLayers();
+            } else if (name == "build-layers") {
+                doc.clearLayers();
+                ensureLayers();
+            } else {
+                throw ScriptError{"unknown operation \"" + name + "\""};
+            }
+        } catch (const ScriptError& e) {
+            throw ScriptError{"operation " + std::to_string(i + 1) + ": " + e.message};
+        }
+    }
+}
+} // namespace
+
+int runPaint(const PaintArgs& args) {
+    std::ifstream in(args.script);
+    if (!in)
+        return fail(args.script + ": cannot be opened");
+    const json script = json::parse(in, nullptr, false);
+    if (script.is_discarded())
+        return fail(args.script + ": not valid JSON");
+    const json* operations = &script;
+    if (script.is_object()) {
+        if (!script.contains("operations") || !script["operations"].is_array())
+            return fail(args.script + ": expected an \"operations\" array");
+        operations = &script["operations"];
+    } else if (!script.is_array()) {
+        return fail(args.script + ": expected an array of operations or an object");
+    }
+
+    auto mesh = core::loadMesh(args.model);
+    if (!mesh)
+        return fail(mesh.error());
+    core::Document doc;
+    doc.setMesh(std::move(mesh).value(), args.model);
+
+    CameraArgs camera = args.camera;
+    if (script.is_object()) {
+        if (script.contains("size") && script["size"].is_string())
+            camera.size = script["size"].get<std::string>();
+        if (script.contains("orbit") && script["orbit"].is_string() && camera.cameraFile.empty())
+            camera.orbit = script["orbit"].get<std::string>();
+        if (script.contains("target") && script["target"].is_object()) {
+            const json& t = script["target"];
+            core::PaintTargetOptions options;
+            if (t.contains("kind") && t["kind"] == "vertex-colors")
+                options.kind = core::PaintTargetKind::VertexColors;
+            else if (t.contains("kind") && t["kind"] == "texture")
+                options.kind = core::PaintTargetKind::Texture;
+            if (t.contains("resolution") && t["resolution"].is_number_integer())
+                options.resolution = t["resolution"].get<int>();
+            if (const core::Status s = doc.resetPaintTarget(options); !s)
+                return fail(args.script + ": " + s.error());
+        }
+    }
+    auto view = makeView(camera, doc.mesh());
+    if (!view)
+        return fail(view.error());
+
+    std::unique_ptr<render::HeadlessContext> context;
+    std::unique_ptr<core::LayerCapturer> capturer;
+    if (args.cpuCapture) {
+        capturer = std::make_unique<core::CpuLayerCapturer>();
+    } else {
+        auto created = render::HeadlessContext::create();
+        if (!created)
+            return fail(created.error() + " (use --cpu to capture without OpenGL)");
+        context = std::move(created).value();
+        auto gl = std::make_unique<render::GlLayerCapturer>();
+        if (const core::Status s = gl->initialize(); !s)
+            return fail(s.error());
+        capturer = std::move(gl);
+    }
+    capturer->setMesh(doc.mesh());
+
+    try {
+        replay(*operations, doc, *capturer, camera, *view);
+    } catch (const ScriptError& e) {
+        return fail(args.script + ": " + e.message);
+    }
+    const json extras = {{"layerpaint", {{"script", args.script}, {"model", args.model}}}};
+    if (const core::Status s = core::saveGlb(args.out, doc.paintedMesh(), extras); !s)
+        return fail(s.error());
+    return 0;
+}
+
+} // namespace cli

@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+namespace core {
+
+/** One pixel of a paintable map Mp: the fragment (of the view's LayerStack) painted there. */
+struct MapPixel {
+    std::uint32_t pixel = 0;    // y * width + x
+    std::uint32_t fragment = 0; // index into LayerStack arrays; its layer is the Mp layer
+    float distance = 0.0f;      // screen distance from the dab centre to the pixel centre, px
+};
+
+/**
+ * One brush footprint ready to paint (the paper's paint_object(object, Mp)): the paintable map of
+ * a dab centre reached by the stroke tracking, and the brush state at that point.
+ */
+struct Dab {
+    glm::vec2 center{0.0f}; // pixels, y down
+    float radius = 0.0f;    // screen radius R in pixels (after pressure)
+    float opacity = 1.0f;   // after pressure
+    std::uint32_t layer = 0; // 1-based layer of the centre's fragment
+    std::vector<MapPixel> paintable;
+};
+
+/** Brush settings an artist sets (DESIGN.md §3 step 6). Colours are linear RGBA. */
+struct Brush {
+    glm::vec4 color{0.8f, 0.1f, 0.1f, 1.0f};
+    float radius = 32.0f;   // pixels
+    float hardness = 0.5f;  // 0 soft (falloff from the centre) .. 1 hard edge
+    float opacity = 1.0f;   // the most a stroke can reach
+    float flow = 1.0f;      // how much one dab adds towards it
+    float spacing = 0.15f;  // dab distance as a fraction of the radius
+    bool eraser = false;    // restores the original surface colour
+    bool pressureRadius = true;
+    bool pressureOpacity = false;
+    float trackRadius = 0.0f; // R_max in pixels; 0 = max(4R, 64)
+
+    float effectiveTrackRadius() const {
+        return trackRadius > 0.0f ? trackRadius : (4.0f * radius > 64.0f ? 4.0f * radius : 64.0f);
+    }
+    /** Falloff weight in [0, 1] at distance d (pixels) from a dab of radius r. */
+    float falloff(float d, float r) const;
+};
+
+} // namespace core

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/document.h"
+
+namespace core {
+
+Document::Document()
+    : m_mesh(std::make_shared<const Mesh>()), m_topology(std::make_shared<const MeshTopology>()) {}
+
+void Document::setMesh(Mesh mesh, std::string name) {
+    auto topology = std::make_shared<const MeshTopology>(buildMeshTopology(mesh));
+    m_mesh = std::make_shared<const Mesh>(std::move(mesh));
+    m_topology = std::move(topology);
+    m_name = std::move(name);
+    ++m_meshSerial;
+    clearLayers();
+    m_paintTarget.reset();
+    m_history.clear();
+    m_camera.frame(m_mesh->bounds());
+}
+
+void Document::clearLayers() {
+    if (m_tracker.inStroke())
+        endStroke();
+    m_tracker.clearLayers();
+    m_layers.reset();
+}
+
+void Document::setLayerOptions(const LayerOptions& options) {
+    const bool recapture = options.cullBackFaces != m_layerOptions.cullBackFaces;
+    m_layerOptions = options;
+    if (recapture) {
+        clearLayers();
+    } else if (m_layers) {
+        if (m_tracker.inStroke())
+            endStroke();
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions);
+        m_tracker.setLayers(*m_layers);
+    }
+}
+
+Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
+    auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions);
+    if (!layers)
+        return Error{layers.error()};
+    clearLayers();
+    m_layers = std::make_unique<Layers>(std::move(layers).value());
+    m_tracker.setLayers(*m_layers);
+    return {};
+}
+
+bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
+    const LayerOptions& o = layers.options;
+    if (meshSerial != m_meshSerial || o.cullBackFaces != m_layerOptions.cullBackFaces)
+        return false;
+    const bool resegment = o.threshold != m_layerOptions.threshold || o.test != m_layerOptions.test;
+    clearLayers();
+    m_layers = std::make_unique<Layers>(std::move(layers));
+    // The threshold may have moved while the worker ran: bring the result up to date.
+    if (resegment)
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions);
+    m_tracker.setLayers(*m_layers);
+    return true;
+}
+
+PaintTarget* Document::paintTarget(std::string* error) {
+    if (!m_paintTarget) {
+        auto target = makePaintTarget(m_mesh, m_topology, m_paintOptions);
+        if (!target) {
+            if (error)
+                *error = target.error();
+            return nullptr;
+        }
+        m_paintTarget = std::move(target).value();
+    }
+    return m_paintTarget.get();
+}
+
+Status Document::resetPaintTarget(const PaintTargetOptions& options) {
+    auto target = makePaintTarget(m_mesh, m_topology, options);
+    if (!target)
+        return Error{target.error()};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_paintOptions = options;
+    m_paintTarget = std::move(target).value();
+    m_history.clear();
+    return {};
+}
+
+Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    std::string error;
+    PaintTarget* target = paintTarget(&error);
+    if (!target)
+        return Error{error};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_dabs.clear();
+    m_tracker.startStroke(point, m_brush, m_dabs);
+    target->beginStroke(m_brush);
+    paintDabs(changes);
+    return {};
+}
+
+void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    if (!m_tracker.inStroke() || !m_paintTarget)
+        return;
+    m_dabs.clear();
+    m_tracker.moveStroke(point, m_dabs);
+    paintDabs(changes);
+}
+
+void Document::paintDabs(PaintChanges& changes) {
+    for (const Dab& dab : m_dabs) {
+        const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
+        changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
+                              dabChanges.texels.end());
+        changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
+                                dabChanges.vertices.end());
+    }
+}
+
+void Document::endStroke() {
+    m_tracker.endStroke();
+    if (m_paintTarget && m_paintTarget->inStroke())
+        m_history.push(m_paintTarget->endStroke());
+}
+
+bool Document::undo(PaintChanges& changes) {
+    changes.clear();
+    if (m_tracker.inStroke())
+        endStroke();
+    const TileUndoRecord* record = m_paintTarget ? m_history.undo(*m_paintTarget) : nullptr;
+    if (record)
+        changes = m_paintTarget->changes(*record);
+    return record != nullptr;
+}
+
+bool Document::redo(PaintChanges& changes) {
+    changes.clear();
+    if (m_tracker.inStroke())
+        endStroke();
+    const TileUndoRecord* record = m_paintTarget ? m_history.redo(*m_paintTarget) : nullptr;
+    if (record)
+        changes = m_paintTarget->changes(*record);
+    return record != nullptr;
+}
+
+Mesh Document::paintedMesh() const {
+    Mesh mesh = *m_mesh;
+    if (!m_paintTarget)
+        return mesh;
+    mesh.materials = m_paintTarget->drawMaterials();
+    if (const auto* texture = dynamic_cast<const TextureTarget*>(m_paintTarget.get())) {
+        mesh.textures.clear();
+        for (std::size_t i = 0; i < texture->pageCount(); ++i)
+            mesh.textures.push_back(texture->page(i));
+        mesh.colors.clear(); // baked into the pages
+    } else if (const auto* colors = dynamic_cast<const VertexColorTarget*>(m_paintTarget.get())) {
+        mesh.colors = colors->colors();
+    }
+    return mesh;
+}
+
+} // namespace core

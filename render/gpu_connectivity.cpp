@@ -1,0 +1,362 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "render/gpu_connectivity.h"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include <epoxy/gl.h>
+#include <glm/trigonometric.hpp>
+
+#include "render/shader_library.h"
+
+namespace render {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+// The shader reads core::SurfaceTriangle as std430 { vec4 plane; uvec4 corners_component; }, so
+// the geometry goes up in one copy.
+static_assert(sizeof(core::SurfaceTriangle) == 32);
+static_assert(offsetof(core::SurfaceTriangle, plane) == 0);
+static_assert(offsetof(core::SurfaceTriangle, corners) == 16);
+static_assert(offsetof(core::SurfaceTriangle, component) == 28);
+static_assert(sizeof(float) == 4 && std::numeric_limits<float>::is_iec559);
+// The shader packs a fragment's four link bytes into one word, lowest byte first.
+static_assert(std::endian::native == std::endian::little);
+
+constexpr std::size_t kGroupSize = 64; // local_size_x of connectivity.comp
+// From core/connectivity.cpp's Linker: the grazing limit, |cos| between ray and normal.
+constexpr float kMinRayCosine = 0.01f;
+
+enum Binding : GLuint {
+    kOffsets = 0,
+    kDepths = 1,
+    kFragmentTriangles = 2,
+    kTriangles = 3,
+    kLinks = 4,
+    kFragmentPixels = 5,
+    kBindingCount = 6,
+};
+
+/**
+ * A shader storage buffer that only grows. Inputs the shader gathers from live in GPU memory and
+ * are uploaded with glNamedBufferSubData; the two streamed in order (the fragments' pixels, which
+ * the CPU writes as it checks the offsets, and the links it reads back) are persistently and
+ * coherently mapped, so neither needs a copy of its own.
+ */
+struct Buffer {
+    GLuint id = 0;
+    void* data = nullptr; // the mapping, for a mapped buffer
+    std::size_t bytes = 0;
+
+    bool reserve(std::size_t size, GLbitfield mapping) {
+        if (size <= bytes && id)
+            return true;
+        free();
+        // A little headroom, so a view with a few more fragments does not reallocate.
+        const std::size_t wanted = std::max<std::size_t>(size + size / 8, 64);
+        const GLbitfield flags = mapping ? mapping | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT
+                                         : GL_DYNAMIC_STORAGE_BIT;
+        while (glGetError() != GL_NO_ERROR) {
+        }
+        glCreateBuffers(1, &id);
+        glNamedBufferStorage(id, GLsizeiptr(wanted), nullptr, flags);
+        if (glGetError() != GL_NO_ERROR ||
+            (mapping && !(data = glMapNamedBufferRange(id, 0, GLsizeiptr(wanted), flags)))) {
+            free();
+            return false;
+        }
+        bytes = wanted;
+        return true;
+    }
+    void free() {
+        if (id) {
+            if (data)
+                glUnmapNamedBuffer(id);
+            glDeleteBuffers(1, &id);
+        }
+        id = 0;
+        data = nullptr;
+        bytes = 0;
+    }
+};
+
+std::string lowered(std::string_view text) {
+    std::string out(text);
+    for (char& c : out)
+        c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return out;
+}
+} // namespace
+
+const char* connectivityBackendName(ConnectivityBackend backend) {
+    switch (backend) {
+    case ConnectivityBackend::Cpu:
+        return "cpu";
+    case ConnectivityBackend::Gpu:
+        return "gpu";
+    case ConnectivityBackend::Auto:
+        break;
+    }
+    return "auto";
+}
+
+std::optional<ConnectivityBackend> parseConnectivityBackend(std::string_view name) {
+    const std::string key = lowered(name);
+    for (ConnectivityBackend backend :
+         {ConnectivityBackend::Auto, ConnectivityBackend::Cpu, ConnectivityBackend::Gpu})
+        if (key == connectivityBackendName(backend))
+            return backend;
+    return std::nullopt;
+}
+
+bool isSoftwareRenderer(std::string_view rendererName) {
+    const std::string name = lowered(rendererName);
+    for (const char* software : {"llvmpipe", "softpipe", "swiftshader", "software rasterizer"})
+        if (name.find(software) != std::string::npos)
+            return true;
+    return false;
+}
+
+bool isSoftwareRenderer() {
+    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    return name && isSoftwareRenderer(std::string_view(name));
+}
+
+ConnectivityBackend resolveConnectivityBackend(ConnectivityBackend requested,
+                                               bool softwareRenderer) {
+    if (requested != ConnectivityBackend::Auto)
+        return requested;
+    return softwareRenderer ? ConnectivityBackend::Cpu : ConnectivityBackend::Gpu;
+}
+
+struct GpuConnectivity::Impl {
+    ShaderProgram program;
+    GLint size = -1, fragmentCount = -1, rowInvocations = -1, triangleCount = -1, limit = -1,
+          contactLimit = -1, creaseCos = -1, smoothCos = -1, minRayCosine2 = -1, fail = -1;
+    std::array<GLint, 6> rays{}; // origin0, originDx, originDy, direction0, directionDx, ...Dy
+    std::size_t maxBufferBytes = 0;
+    GLint maxGroups[2] = {0, 0};
+    std::array<Buffer, kBindingCount> buffers;
+
+    void freeBuffers() {
+        for (Buffer& buffer : buffers)
+            buffer.free();
+    }
+};
+
+GpuConnectivity::GpuConnectivity() : m_impl(std::make_unique<Impl>()) {}
+
+GpuConnectivity::~GpuConnectivity() {
+    release();
+}
+
+core::Status GpuConnectivity::initialize() {
+    Impl& d = *m_impl;
+    auto program = ShaderProgram::build({"connectivity.comp"});
+    if (!program)
+        return core::Error{program.error()};
+    d.program = std::move(program).value();
+    d.size = d.program.uniform("uSize");
+    d.fragmentCount = d.program.uniform("uFragmentCount");
+    d.rowInvocations = d.program.uniform("uRowInvocations");
+    d.triangleCount = d.program.uniform("uTriangleCount");
+    d.limit = d.program.uniform("uLimit");
+    d.contactLimit = d.program.uniform("uContactLimit");
+    d.creaseCos = d.program.uniform("uCreaseCos");
+    d.smoothCos = d.program.uniform("uSmoothCos");
+    d.minRayCosine2 = d.program.uniform("uMinRayCosine2");
+    d.fail = d.program.uniform("uFail");
+    const char* rayNames[6] = {"uOrigin0",    "uOriginDx",    "uOriginDy",
+                               "uDirection0", "uDirectionDx", "uDirectionDy"};
+    for (std::size_t i = 0; i < d.rays.size(); ++i)
+        d.rays[i] = d.program.uniform(rayNames[i]);
+
+    GLint64 maxBlock = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 0, &d.maxGroups[0]);
+    glGetIntegeri_v(GL_MAX_COMPUTE_WORK_GROUP_COUNT, 1, &d.maxGroups[1]);
+    // Indices in the shader are 32-bit.
+    d.maxBufferBytes = std::size_t(std::clamp<GLint64>(maxBlock, 0, GLint64(0xffffffffu)));
+    if (d.maxBufferBytes == 0 || d.maxGroups[0] <= 0 || d.maxGroups[1] <= 0) {
+        d.program = ShaderProgram();
+        return core::Error{"gpu connectivity: OpenGL reports no shader storage or compute groups"};
+    }
+    return {};
+}
+
+bool GpuConnectivity::initialized() const {
+    return m_impl->program.valid();
+}
+
+core::Result<core::Connectivity> GpuConnectivity::compute(const core::LayerStack& stack,
+                                                          const core::ConnectivityOptions& options,
+                                                          const core::SurfaceGeometry* geometry,
+                                                          double* ms) {
+    Impl& d = *m_impl;
+    if (ms)
+        *ms = 0.0;
+    if (!d.program.valid())
+        return core::Error{"gpu connectivity: not initialized"};
+    core::Connectivity out;
+    out.width = stack.width;
+    out.height = stack.height;
+    const std::size_t fragments = stack.fragmentCount();
+    // The reference's answer to a stack without a pixel grid: every link 0.
+    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1) {
+        out.links.assign(4 * fragments, 0);
+        return out;
+    }
+    if (stack.triangle.size() != fragments || stack.offsets.front() != 0 ||
+        stack.offsets.back() != fragments)
+        return core::Error{"gpu connectivity: the layer stack's offsets do not match its "
+                           "fragments"};
+    if (fragments == 0)
+        return out;
+
+    const bool surface = options.test == core::ConnectionTest::Surface && geometry;
+    const std::size_t triangles = surface ? geometry->triangles.size() : 0;
+    const std::size_t pixels = stack.pixelCount();
+    // One invocation per fragment, in rows of at most maxGroups[0] groups.
+    const std::size_t groups = (fragments + kGroupSize - 1) / kGroupSize;
+    const std::size_t groupsX = std::min(groups, std::size_t(d.maxGroups[0]));
+    const std::size_t groupsY = groupsX ? (groups + groupsX - 1) / groupsX : 0;
+    if (groupsY > std::size_t(d.maxGroups[1]))
+        return core::Error{"gpu connectivity: " + std::to_string(fragments) +
+                           " fragments need too many compute groups"};
+    const std::array<std::size_t, kBindingCount> bytes = {(pixels + 1) * sizeof(std::uint32_t),
+                                                          fragments * sizeof(float),
+                                                          fragments * sizeof(std::uint32_t),
+                                                          std::max<std::size_t>(triangles, 1) *
+                                                              sizeof(core::SurfaceTriangle),
+                                                          fragments * sizeof(std::uint32_t),
+                                                          fragments * sizeof(std::uint32_t)};
+    for (std::size_t b = 0; b < bytes.size(); ++b)
+        if (bytes[b] > d.maxBufferBytes)
+            return core::Error{"gpu connectivity: the view's " +
+                               std::to_string(b == kTriangles ? triangles : fragments) +
+                               (b == kTriangles ? " triangles" : " fragments") +
+                               " exceed this OpenGL's buffer size"};
+
+    glFinish();
+    const Clock::time_point start = Clock::now();
+    for (std::size_t b = 0; b < bytes.size(); ++b) {
+        const GLbitfield mapping = b == kFragmentPixels ? GL_MAP_WRITE_BIT
+                                   : b == kLinks        ? GL_MAP_READ_BIT
+                                                        : 0;
+        if (!d.buffers[b].reserve(bytes[b], mapping)) {
+            d.freeBuffers();
+            return core::Error{"gpu connectivity: out of GPU memory"};
+        }
+    }
+    // The GPU is idle (glFinish above), so the mapping can be written in place. One pass
+    // checks that the offsets ascend within the fragments (so every fragment belongs to one
+    // pixel and gets its link word written), finds the deepest pixel and gives each fragment
+    // its pixel.
+    auto* pixelOf = static_cast<std::uint32_t*>(d.buffers[kFragmentPixels].data);
+    std::uint32_t deepest = 0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+        const std::uint32_t begin = stack.offsets[p], end = stack.offsets[p + 1];
+        if (end < begin || end > fragments)
+            return core::Error{"gpu connectivity: the layer stack's offsets do not ascend"};
+        deepest = std::max(deepest, end - begin);
+        std::fill(pixelOf + begin, pixelOf + end, std::uint32_t(p));
+    }
+    out.truncated = deepest > core::kMaxLinkedLayers;
+    const auto upload = [&](Binding b, const void* data, std::size_t size) {
+        glNamedBufferSubData(d.buffers[b].id, 0, GLsizeiptr(size), data);
+    };
+    upload(kOffsets, stack.offsets.data(), bytes[kOffsets]);
+    upload(kDepths, stack.depth.data(), bytes[kDepths]);
+    upload(kFragmentTriangles, stack.triangle.data(), bytes[kFragmentTriangles]);
+    if (triangles)
+        upload(kTriangles, geometry->triangles.data(), triangles * sizeof(core::SurfaceTriangle));
+
+    // The Linker's limits, with the reference's own float arithmetic.
+    const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
+    const float limit = options.threshold / scale;
+    const float contactLimit = limit * std::max(options.contactFactor, 0.0f);
+    const float creaseCos =
+        std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
+    const float smoothCos =
+        std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
+    const GLuint id = d.program.id();
+    glProgramUniform2i(id, d.size, stack.width, stack.height);
+    glProgramUniform1ui(id, d.fragmentCount, GLuint(fragments));
+    glProgramUniform1ui(id, d.rowInvocations, GLuint(groupsX * kGroupSize));
+    glProgramUniform1ui(id, d.triangleCount, GLuint(triangles));
+    glProgramUniform1f(id, d.limit, limit);
+    glProgramUniform1f(id, d.contactLimit, contactLimit);
+    glProgramUniform1f(id, d.creaseCos, creaseCos);
+    glProgramUniform1f(id, d.smoothCos, smoothCos);
+    glProgramUniform1f(id, d.minRayCosine2, kMinRayCosine * kMinRayCosine);
+    glProgramUniform1f(id, d.fail, std::numeric_limits<float>::infinity());
+    const core::PixelRays rays = surface ? geometry->rays : core::PixelRays{};
+    const glm::vec3* rayVectors[6] = {&rays.origin0,    &rays.originDx,    &rays.originDy,
+                                      &rays.direction0, &rays.directionDx, &rays.directionDy};
+    for (std::size_t i = 0; i < d.rays.size(); ++i)
+        glProgramUniform3fv(id, d.rays[i], 1, &rayVectors[i]->x);
+
+    GLint previousProgram = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    d.program.use();
+    for (GLuint b = 0; b < kBindingCount; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, d.buffers[b].id);
+    glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
+    for (GLuint b = 0; b < kBindingCount; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
+    glUseProgram(GLuint(previousProgram));
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR)
+        return core::Error{"gpu connectivity: the compute pass failed (GL error " +
+                           std::to_string(error) + ")"};
+
+    // Shader writes reach the persistent mapping once the fence has signalled.
+    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    while (glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
+           GL_TIMEOUT_EXPIRED) {
+    }
+    glDeleteSync(fence);
+
+    const auto* links = static_cast<const std::uint8_t*>(d.buffers[kLinks].data);
+    out.links.assign(links, links + bytes[kLinks]);
+    if (ms)
+        *ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    return out;
+}
+
+void GpuConnectivity::release() {
+    if (!m_impl)
+        return;
+    m_impl->freeBuffers();
+    m_impl->program = ShaderProgram();
+}
+
+core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectivity* gpu,
+                                       const core::LayerStack& stack,
+                                       const core::ConnectivityOptions& options,
+                                       const core::SurfaceGeometry* geometry,
+                                       ConnectivityBackend* used) {
+    if (gpu && gpu->initialized() &&
+        resolveConnectivityBackend(backend, isSoftwareRenderer()) == ConnectivityBackend::Gpu) {
+        if (auto links = gpu->compute(stack, options, geometry)) {
+            if (used)
+                *used = ConnectivityBackend::Gpu;
+            return std::move(links).value();
+        }
+    }
+    if (used)
+        *used = ConnectivityBackend::Cpu;
+    return core::computeConnectivity(stack, options, geometry);
+}
+
+} // namespace render

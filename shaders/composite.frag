@@ -1,0 +1,225 @@
+#version 450 core
+// draw_layers: the view drawn from the captured per-pixel fragment lists instead of the mesh,
+// from fragment shading that composite_shade.comp computed once per capture. The compositor
+// inserts the defines of the features a draw needs:
+// - RESOLVE picks each pixel's visible fragment by region rank (SINGLE_LAYER: layer uLayer)
+//   into Visible, with BOUNDARIES whether it ends its region there. Only draws after the
+//   order, the picked layer or the capture changed do this; others read Visible.
+// - the picture: shaded colour, texture (TEXTURED, one pass per texture), SEGMENTATION colours
+//   (SHADE_SEGMENTATION: lit lightly), BOUNDARIES and HIGHLIGHT overlays, so repainting the
+//   texture or the overlays costs no picking.
+// llvmpipe executes both sides of every branch, uniform or not, which is why features are
+// compiled in only when used instead of being switched by uniforms.
+
+const uint kNone = 0xffffffffu;
+const uint kUnranked = 0xfffffffeu; // a fragment without a region: behind every ranked one
+
+uniform int uWidth;
+uniform int uHeight;
+
+// Storage bindings are shared with composite_shade.comp, which reads the mesh (1, 2, 6-11, 13).
+// core::LayerStack: pixel p's fragments are [offsets[p], offsets[p + 1]), front to back.
+layout(std430, binding = 0) readonly buffer Offsets {
+    uint offsets[];
+};
+layout(std430, binding = 3) readonly buffer FragmentRegions {
+    uint fragmentRegion[];
+};
+// core::Connectivity: byte d (right, left, up, down) = the linked neighbour's layer, 0 = none.
+layout(std430, binding = 4) readonly buffer FragmentLinks {
+    uint fragmentLinks[];
+};
+// [region] its rank (kNone = hidden), then [uRegionCount + layer - 1] the lowest rank of any
+// region deeper than that layer: once a pixel's best rank is below it, the rest cannot win.
+layout(std430, binding = 5) readonly buffer Ranks {
+    uint ranks[];
+};
+// Per pixel (rows top first): the visible fragment in bits 0-30 (kNoFragment: background) and
+// in bit 31 whether it ends its region there (BOUNDARIES).
+layout(std430, binding = 12) buffer Visible {
+    uint visible[];
+};
+const uint kNoFragment = 0x7fffffffu;
+const uint kBoundaryBit = 0x80000000u;
+// composite_shade.comp's output, 3 words a fragment.
+layout(std430, binding = 14) readonly buffer Shading {
+    uint shading[];
+};
+
+// Pixel centres in LayerStack coordinates (y down).
+vec2 pixelCentre() {
+    return vec2(gl_FragCoord.x, float(uHeight) - gl_FragCoord.y);
+}
+
+vec3 linearToSrgb(vec3 c) {
+    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+#ifdef RESOLVE
+
+uniform uint uLayer; // SINGLE_LAYER, 1-based
+uniform uint uRegionCount;
+uniform uint uMaxLayers;
+
+/**
+ * The visible fragment of a pixel, kNone for none: the one of lowest region rank (front-most
+ * on ties), skipping hidden regions; with SINGLE_LAYER the layer-uLayer one.
+ */
+uint pickFragment(uint first, uint end) {
+#ifdef SINGLE_LAYER
+    return uLayer >= 1u && uLayer <= end - first ? first + uLayer - 1u : kNone;
+#else
+    // Issue 5 (transparency) hooks in here: keep the best two ranks instead of one and let the
+    // composite blend the popped-up fragment over the one below it.
+    uint chosen = kNone;
+    uint best = kNone;
+    for (uint f = first; f < end; ++f) {
+        uint region = fragmentRegion[f];
+        uint rank = region < uRegionCount ? ranks[region] : kUnranked;
+        if (rank < best) {
+            best = rank;
+            chosen = f;
+        }
+        uint layer = f - first + 1u;
+        if (layer <= uMaxLayers && best < ranks[uRegionCount + layer - 1u])
+            break;
+    }
+    return chosen;
+#endif
+}
+
+#ifdef BOUNDARIES
+// Whether fragment f (on layer, at pix) ends its region towards a neighbour that shows a surface:
+// no same-layer link either way, as segmentLayers() joins fragments (the paper's Figure 3 lines).
+bool onBoundary(uint f, uint layer, ivec2 pix) {
+    const ivec2 steps[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, -1), ivec2(0, 1));
+    uint links = fragmentLinks[f];
+    for (int d = 0; d < 4; ++d) {
+        ivec2 q = pix + steps[d];
+        if (q.x < 0 || q.y < 0 || q.x >= uWidth || q.y >= uHeight)
+            continue;
+        uint neighbour = uint(q.y) * uint(uWidth) + uint(q.x);
+        uint first = offsets[neighbour];
+        uint count = offsets[neighbour + 1u] - first;
+        if (count == 0u || ((links >> (8 * d)) & 0xffu) == layer)
+            continue;
+        // Right/left and up/down are pairs: d ^ 1 is the direction back.
+        uint back = layer <= count ? fragmentLinks[first + layer - 1u] >> (8 * (d ^ 1)) : 0u;
+        if ((back & 0xffu) == layer)
+            continue;
+        return true;
+    }
+    return false;
+}
+#endif
+
+/** Visible's word for a pixel: its visible fragment and whether it ends its region there. */
+uint resolvePixel(uint pixel, ivec2 pix) {
+    uint first = offsets[pixel];
+    uint chosen = pickFragment(first, offsets[pixel + 1u]);
+    uint word = chosen == kNone ? kNoFragment : chosen;
+#ifdef BOUNDARIES
+    if (chosen != kNone && onBoundary(chosen, chosen - first + 1u, pix))
+        word |= kBoundaryBit;
+#endif
+    return word;
+}
+
+#endif
+
+layout(location = 0) out vec4 fragColor;
+
+uniform vec4 uBackground; // sRGB
+uniform uint uHighlight;  // HIGHLIGHT: region id
+uniform ivec4 uHighlightBox; // HIGHLIGHT: its pixels' bounding box, min x, min y, max x, max y
+uniform int uPass;        // TEXTURED: the pass; its texture is uTexture
+uniform sampler2D uTexture; // GL_SRGB8_ALPHA8: sampled as linear
+
+vec3 srgbToLinear(vec3 c) {
+    return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
+}
+
+// The same formula as render::regionColor() (layer_compositor.cpp): keep the two in step.
+vec3 regionColor(uint region) {
+    uint h = region * 0x9e3779b9u;
+    float hue = float(h >> 8) / 16777216.0;
+    uint m = region;
+    m ^= m >> 16;
+    m *= 0x7feb352du;
+    m ^= m >> 15;
+    m *= 0x846ca68bu;
+    m ^= m >> 16;
+    float saturation = 0.5 + 0.2 * float(m % 3u);
+    float value = 0.75 + 0.125 * float((m >> 8) % 3u);
+    vec3 k = clamp(abs(fract(vec3(hue) + vec3(1.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0) - 1.0,
+                   0.0, 1.0);
+    return value * mix(vec3(1.0), k, saturation);
+}
+
+void main() {
+    ivec2 pix = ivec2(pixelCentre());
+    uint pixel = uint(pix.y) * uint(uWidth) + uint(pix.x);
+#ifdef RESOLVE
+    uint word = resolvePixel(pixel, pix);
+    visible[pixel] = word;
+#else
+    uint word = visible[pixel];
+#endif
+    uint chosen = word & kNoFragment;
+
+    vec4 color = uBackground;
+    uint region = kNone;
+    if (chosen != kNoFragment) {
+        uint shade = shading[3u * chosen];
+#if defined(SEGMENTATION) || defined(HIGHLIGHT)
+        region = fragmentRegion[chosen];
+#endif
+#ifdef SEGMENTATION
+        vec3 c = region == kNone ? vec3(0.5) : regionColor(region);
+#ifdef SHADE_SEGMENTATION
+        // Light shading keeps the shape readable without drowning the hue.
+        c *= 0.6 + 0.4 * float((shading[3u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+#endif
+        color = vec4(c, 1.0);
+#else
+        color = vec4(unpackUnorm4x8(shade).rgb, 1.0);
+#ifdef TEXTURED
+        // The first pass takes the untextured pixels too, later passes only their texture's.
+        uint slot = shade >> 24;
+        if (slot == 0u ? uPass != 0 : int(slot) - 1 != uPass)
+            discard;
+        if (slot != 0u) {
+            vec2 uv = unpackUnorm2x16(shading[3u * chosen + 1u]);
+            float lod = (float(shading[3u * chosen + 2u] & 0xffffu) - 32768.0) / 1024.0;
+            vec3 texel = textureLod(uTexture, uv, lod).rgb;
+            color.rgb = linearToSrgb(clamp(srgbToLinear(color.rgb) * texel, 0.0, 1.0));
+        }
+#endif
+#endif
+#ifdef BOUNDARIES
+        if ((word & kBoundaryBit) != 0u)
+            color.rgb = mix(color.rgb, vec3(0.02), 0.8);
+#endif
+    }
+#ifdef TEXTURED
+    else if (uPass != 0)
+        discard; // the first pass drew the background
+#endif
+
+#ifdef HIGHLIGHT
+    // The region tinted where shown, striped where something else covers it.
+    const vec3 kHighlight = vec3(1.0, 0.78, 0.15);
+    bool behind = false;
+    // Outside the region's box the loop ends at once, which llvmpipe skips (unlike an if).
+    bool inBox = all(greaterThanEqual(pix, uHighlightBox.xy)) &&
+                 all(lessThanEqual(pix, uHighlightBox.zw));
+    uint end = inBox ? offsets[pixel + 1u] : 0u;
+    for (uint f = inBox ? offsets[pixel] : 0u; f < end; ++f)
+        behind = behind || (fragmentRegion[f] == uHighlight && f != chosen);
+    if (region == uHighlight)
+        color.rgb = mix(color.rgb, kHighlight, 0.5);
+    else if (behind && ((pix.x + pix.y) & 4) == 0)
+        color = vec4(mix(color.rgb, kHighlight, 0.45), 1.0);
+#endif
+    fragColor = color;
+}

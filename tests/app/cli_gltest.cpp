@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The headless tool's contract (DESIGN.md §4), checked by running the real binary.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/cpu_capture.h"
+#include "core/layers.h"
+#include "core/mesh_io.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliRun {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/** Runs layerpaint-cli with arguments (no shell expansion happens in them: they are quoted). */
+CliRun runCli(const std::vector<std::string>& args) {
+    const fs::path dir = fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::string command = std::string("'") + LAYERPAINT_CLI + "'";
+    for (const std::string& a : args)
+        command += " '" + a + "'";
+    command += " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
+    CliRun run;
+    const int status = std::system(command.c_str());
+    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    run.out = readFile(dir / "out");
+    run.err = readFile(dir / "err");
+    return run;
+}
+
+std::vector<std::uint32_t> readUInt32Image(const fs::path& path, int& width, int& height) {
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in)
+        return {};
+    width = in->spec().width;
+    height = in->spec().height;
+    std::vector<std::uint32_t> pixels(std::size_t(width) * height);
+    in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT32, pixels.data());
+    return pixels;
+}
+
+const std::string kBox =
+    std::string(LAYERPAINT_ASSIMP_MODELS) + "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+
+TEST(Cli, InfoPrintsTheModelSummary) {
+    const CliRun run = runCli({"info", "builtin:trefoil"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json info = json::parse(run.out);
+    EXPECT_EQ(info["vertices"], 144000);
+    EXPECT_EQ(info["triangles"], 284886);
+    EXPECT_EQ(info["has_uvs"], true);
+    EXPECT_EQ(info["materials"].size(), 1u);
+    EXPECT_LT(info["bounds"]["min"][0].get<double>(), -2.5);
+}
+
+TEST(Cli, InfoOfATexturedGltf) {
+    if (!fs::exists(kBox))
+        GTEST_SKIP() << "assimp-testmodels not installed";
+    const CliRun run = runCli({"info", kBox});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json info = json::parse(run.out);
+    EXPECT_EQ(info["vertices"], 24);
+    EXPECT_EQ(info["triangles"], 12);
+    EXPECT_EQ(info["materials"][0]["base_color_texture"]["width"], 211); // CesiumLogoFlat.png
+}
+
+TEST(Cli, BadInputIsOneLineOnStderrAndAFailureCode) {
+    const fs::path empty = fs::temp_directory_path() / "layerpaint cli empty.obj";
+    std::ofstream(empty).close();
+    for (const std::string& model :
+         {empty.string(), std::string("/no/such/model.glb"), std::string("builtin:teapot")}) {
+        const CliRun run = runCli({"info", model});
+        EXPECT_NE(run.exitCode, 0) << model;
+        EXPECT_TRUE(run.out.empty()) << model;
+        ASSERT_FALSE(run.err.empty()) << model;
+        EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
+        EXPECT_NE(run.err.find(model), std::string::npos) << run.err;
+    }
+    const CliRun badSize = runCli({"layers", "builtin:row", "--size", "12by7", "--out", "/tmp/x"});
+    EXPECT_NE(badSize.exitCode, 0);
+    EXPECT_NE(badSize.err.find("--size"), std::string::npos);
+}
+
+/** layers --cpu writes exactly what the controller computes in process. */
+TEST(Cli, LayersWritesTheFilesOfTheContract) {
+    const fs::path out = fs::temp_directory_path() / "layerpaint_cli_layers";
+    fs::remove_all(out);
+    const CliRun run = runCli({"layers", "builtin:hexring", "--orbit", "20,35,2.5", "--size",
+                               "160x120", "--cpu", "--out", out.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+
+    auto mesh = core::loadMesh("builtin:hexring");
+    ASSERT_TRUE(mesh);
+    core::Camera camera = core::Camera::fromOrbit(mesh->bounds(), 20, 35, 2.5f);
+    core::CpuLayerCapturer capturer;
+    capturer.setMesh(*mesh);
+    const core::MeshTopology topology = core::buildMeshTopology(*mesh);
+    auto layers = core::buildLayers(capturer, *mesh, topology, camera.view(160, 120), {});
+    ASSERT_TRUE(layers);
+
+    const json summary = json::parse(readFile(out / "summary.json"));
+    const auto perLayer = layers->stack.fragmentsPerLayer();
+    ASSERT_GE(perLayer.size(), 2u); // the inner wall lies behind the outer one
+    EXPECT_EQ(summary["layers"], perLayer.size());
+    EXPECT_EQ(summary["regions"], layers->segmentation.graph.regions.size());
+    const json regions = json::parse(readFile(out / "regions.json"));
+    ASSERT_EQ(regions.size(), layers->segmentation.graph.regions.size());
+    std::uint64_t regionPixels = 0;
+    for (const json& r : regions)
+        regionPixels += r["pixels"].get<std::uint64_t>();
+    EXPECT_EQ(regionPixels, layers->stack.fragmentCount());
+
+    for (std::uint32_t layer = 1; layer <= perLayer.size(); ++layer) {
+        const std::string n = std::to_string(layer);
+        for (const char* name : {"depth_", "conn_"})
+            EXPECT_TRUE(fs::exists(out / (name + n + (name[0] == 'd' ? ".exr" : ".png"))));
+        int w = 0, h = 0;
+        const auto tri = readUInt32Image(out / ("tri_" + n + ".tif"), w, h);
+        const auto region = readUInt32Image(out / ("region_" + n + ".tif"), w, h);
+        ASSERT_EQ(w, 160);
+        ASSERT_EQ(h, 120);
+        for (std::size_t p = 0; p < tri.size(); ++p) {
+            const std::uint32_t f = layers->stack.fragment(p, layer);
+            ASSERT_EQ(tri[p], f == core::kNone ? 0 : layers->stack.triangle[f] + 1);
+            ASSERT_EQ(region[p], f == core::kNone ? 0 : layers->segmentation.region[f] + 1);
+        }
+    }
+    EXPECT_FALSE(fs::exists(out / ("tri_" + std::to_string(perLayer.size() + 1) + ".tif")));
+    // mesh.ply: the header announces the flattened triangles in id order.
+    const std::string ply = readFile(out / "mesh.ply");
+    EXPECT_NE(ply.find("element face " + std::to_string(mesh->triangleCount())), std::string::npos);
+}
+
+TEST(Cli, LayersOnOpenGlMatchesTheCpuCapture) {
+    const fs::path gl = fs::temp_directory_path() / "layerpaint_cli_gl";
+    const fs::path cpu = fs::temp_directory_path() / "layerpaint_cli_cpu";
+    const std::vector<std::string> common = {"layers",    "builtin:trefoil", "--orbit",
+                                             "20,15,1.6", "--size",          "320x240"};
+    auto withOut = [&](const fs::path& dir, bool useCpu) {
+        std::vector<std::string> args = common;
+        if (useCpu)
+            args.push_back("--cpu");
+        args.insert(args.end(), {"--out", dir.string()});
+        return args;
+    };
+    const CliRun glRun = runCli(withOut(gl, false));
+    ASSERT_EQ(glRun.exitCode, 0) << glRun.err;
+    const CliRun cpuRun = runCli(withOut(cpu, true));
+    ASSERT_EQ(cpuRun.exitCode, 0) << cpuRun.err;
+    const json a = json::parse(readFile(gl / "summary.json"));
+    const json b = json::parse(readFile(cpu / "summary.json"));
+    EXPECT_EQ(a["capture"], "gl");
+    EXPECT_EQ(a["layers"], b["layers"]);
+    EXPECT_EQ(a["fragments_per_layer"], b["fragments_per_layer"]);
+    EXPECT_EQ(a["regions"], b["regions"]);
+}
+
+TEST(Cli, CameraFileGivesTheSameViewAsOrbit) {
+    const fs::path a = fs::temp_directory_path() / "layerpaint_cli_orbit";
+    const fs::path b = fs::temp_directory_path() / "layerpaint_cli_camera";
+    ASSERT_EQ(runCli({"layers", "builtin:row", "--orbit", "30,10,3", "--size", "200x100", "--cpu",
+                      "--out", a.string()})
+                  .exitCode,
+              0);
+    const json summary = json::parse(readFile(a / "summary.json"));
+    const fs::path cameraFile = fs::temp_directory_path() / "layerpaint_camera.json";
+    std::ofstream(cameraFile) << json{{"view", summary["view"]}, {"proj", summary["proj"]}}.dump();
+    const CliRun run = runCli({"layers", "builtin:row", "--camera", cameraFile.string(), "--size",
+                               "200x100", "--cpu", "--out", b.string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json other = json::parse(readFile(b / "summary.json"));
+    EXPECT_EQ(other["fragments_per_layer"], summary["fragments_per_layer"]);
+    EXPECT_EQ(other["regions"], summary["regions"]);
+}
+
+} // namespace

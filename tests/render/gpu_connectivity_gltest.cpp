@@ -1,0 +1,557 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The connectivity compute pass on a headless EGL context (llvmpipe on CI): its links must be
+// byte-identical to core::computeConnectivity on built-in models, synthetic scenes and malformed
+// stacks; plus the backend policy and, disabled, the timing against the C++ reference.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/builtin_models.h"
+#include "core/camera.h"
+#include "core/connectivity.h"
+#include "core/cpu_capture.h"
+#include "core/layer_stack.h"
+#include "core/mesh_topology.h"
+#include "render/gl_context.h"
+#include "render/gpu_connectivity.h"
+#include "render/layer_capture.h"
+
+namespace {
+
+using core::ConnectionTest;
+
+class GpuConnectivityGlTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() {
+        auto context = render::HeadlessContext::create();
+        ASSERT_TRUE(context) << context.error();
+        s_context = std::move(context).value();
+    }
+    static void TearDownTestSuite() { s_context.reset(); }
+
+    void SetUp() override {
+        ASSERT_TRUE(s_context);
+        const core::Status status = m_gpu.initialize();
+        ASSERT_TRUE(status) << status.error();
+    }
+    void TearDown() override { m_gpu.release(); }
+
+    static std::unique_ptr<render::HeadlessContext> s_context;
+    render::GpuConnectivity m_gpu;
+};
+std::unique_ptr<render::HeadlessContext> GpuConnectivityGlTest::s_context;
+
+struct Scene {
+    std::string name;
+    core::Mesh mesh;
+    core::MeshTopology topology;
+    core::View view;
+    core::LayerStack stack;
+    core::SurfaceGeometry geometry;
+};
+
+Scene makeScene(std::string name, core::Mesh mesh, const core::View& view, bool cull = true) {
+    Scene s;
+    s.name = std::move(name);
+    s.mesh = std::move(mesh);
+    s.topology = core::buildMeshTopology(s.mesh);
+    s.view = view;
+    s.stack = core::captureLayersCpu(s.mesh, view, {cull, 2});
+    s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, view);
+    return s;
+}
+
+core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, float distance, int width,
+                     int height, bool orthographic) {
+    core::Camera camera = core::Camera::fromOrbit(mesh.bounds(), yaw, pitch, distance);
+    camera.orthographic = orthographic;
+    return camera.view(width, height);
+}
+
+/**
+ * Byte-compares the GPU's links with the reference's; describes the first mismatches. On a
+ * software renderer (llvmpipe on CI) they must be identical. Hardware may round division and
+ * square roots differently in the last bit (GLSL allows it), which flips a rare decision that
+ * hinges on it: there up to 1 byte in 10,000 may differ.
+ */
+void expectSameLinks(const core::Connectivity& cpu, const core::Connectivity& gpu,
+                     const core::LayerStack& stack, const std::string& what) {
+    EXPECT_EQ(gpu.width, cpu.width) << what;
+    EXPECT_EQ(gpu.height, cpu.height) << what;
+    EXPECT_EQ(gpu.truncated, cpu.truncated) << what;
+    ASSERT_EQ(gpu.links.size(), cpu.links.size()) << what;
+    if (gpu.links == cpu.links)
+        return;
+    std::size_t mismatches = 0;
+    std::string first;
+    for (std::size_t i = 0; i < cpu.links.size(); ++i) {
+        if (gpu.links[i] == cpu.links[i])
+            continue;
+        if (++mismatches <= 8) {
+            const std::size_t fragment = i / 4;
+            const auto pixel =
+                std::size_t(std::upper_bound(stack.offsets.begin(), stack.offsets.end(), fragment) -
+                            stack.offsets.begin() - 1);
+            first += "\n  pixel (" + std::to_string(pixel % std::size_t(stack.width)) + ", " +
+                     std::to_string(pixel / std::size_t(stack.width)) + ") layer " +
+                     std::to_string(fragment - stack.offsets[pixel] + 1) + " direction " +
+                     std::to_string(i % 4) + ": cpu " + std::to_string(cpu.links[i]) + ", gpu " +
+                     std::to_string(gpu.links[i]);
+        }
+    }
+    const std::string message = what + ": " + std::to_string(mismatches) + " of " +
+                                std::to_string(cpu.links.size()) + " link bytes differ" + first;
+    if (render::isSoftwareRenderer() || mismatches > cpu.links.size() / 10000)
+        ADD_FAILURE() << message;
+    else
+        std::printf("[ note     ] %s\n", message.c_str());
+}
+
+/** Both tests at several thresholds: GPU links against the reference's. */
+void expectSameAsReference(render::GpuConnectivity& gpu, const Scene& s,
+                           std::vector<float> thresholds = {0.0003f, 0.001f, 0.004f, 0.02f}) {
+    ASSERT_GT(s.stack.fragmentCount(), 0u) << s.name;
+    for (ConnectionTest test : {ConnectionTest::Surface, ConnectionTest::Plain})
+        for (float threshold : thresholds) {
+            const std::string what = s.name +
+                                     (test == ConnectionTest::Surface ? " surface" : " plain") +
+                                     " threshold " + std::to_string(threshold);
+            core::ConnectivityOptions options;
+            options.test = test;
+            options.threshold = threshold;
+            options.unitScale = core::unitScale(s.mesh);
+            options.threads = 2;
+            const core::Connectivity cpu = core::computeConnectivity(s.stack, options, &s.geometry);
+            auto result = gpu.compute(s.stack, options, &s.geometry);
+            ASSERT_TRUE(result) << what << ": " << result.error();
+            expectSameLinks(cpu, *result, s.stack, what);
+        }
+}
+
+/** How many link bytes are set and how deep the stack goes: the comparisons are not vacuous. */
+void expectNontrivial(const Scene& s, std::uint32_t minLayers) {
+    EXPECT_GE(s.stack.maxLayers(), minLayers) << s.name;
+    core::ConnectivityOptions options;
+    options.unitScale = core::unitScale(s.mesh);
+    const core::Connectivity cpu = core::computeConnectivity(s.stack, options, &s.geometry);
+    const auto linked =
+        std::count_if(cpu.links.begin(), cpu.links.end(), [](std::uint8_t l) { return l != 0; });
+    EXPECT_GT(std::size_t(linked), cpu.links.size() / 2) << s.name;
+}
+
+/** An n × n grid quad spanning corners o, o + u, o + v (counter-clockwise from u × v). */
+void addGrid(core::Mesh& mesh, glm::vec3 o, glm::vec3 u, glm::vec3 v, int n) {
+    const auto base = std::uint32_t(mesh.positions.size());
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+            mesh.positions.push_back(o + u * (float(i) / float(n)) + v * (float(j) / float(n)));
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1,
+                                d = a + std::uint32_t(n + 1), e = d + 1;
+            mesh.indices.insert(mesh.indices.end(), {a, b, e, a, e, d});
+        }
+}
+
+void finish(core::Mesh& mesh) {
+    mesh.materials = {core::Material{}};
+    mesh.triangleMaterial.assign(mesh.triangleCount(), 0);
+    mesh.computeNormals();
+}
+
+core::View frontView(int width, int height, bool orthographic) {
+    core::Camera camera;
+    camera.sceneRadius = 1.0f;
+    camera.distance = 2.0f;
+    camera.orthographic = orthographic;
+    return camera.view(width, height);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TEST_F(GpuConnectivityGlTest, BuiltinModelsMatchReferenceFromSeveralViews) {
+    struct Model {
+        const char* name;
+        core::Mesh mesh;
+    };
+    std::vector<Model> models;
+    models.push_back({"trefoil", core::makeTrefoil()});
+    models.push_back({"trefoil-coarse", core::makeTrefoil(100, 30)});
+    models.push_back({"hexring", core::makeHexRing()});
+    models.push_back({"row", core::makeRow()});
+    const float views[][3] = {{0.0f, 0.0f, 2.0f}, {35.0f, 25.0f, 1.8f}, {120.0f, -40.0f, 2.5f}};
+    for (Model& model : models) {
+        const core::MeshTopology topology = core::buildMeshTopology(model.mesh);
+        for (const auto& v : views)
+            for (bool orthographic : {false, true}) {
+                Scene s;
+                s.name = std::string(model.name) + " yaw " + std::to_string(int(v[0])) +
+                         (orthographic ? " ortho" : " persp");
+                s.mesh = model.mesh;
+                s.topology = topology;
+                s.view = orbitView(s.mesh, v[0], v[1], v[2], 320, 240, orthographic);
+                s.stack = core::captureLayersCpu(s.mesh, s.view, {true, 2});
+                s.geometry = core::makeSurfaceGeometry(s.mesh, topology, s.view);
+                expectSameAsReference(m_gpu, s);
+            }
+    }
+}
+
+TEST_F(GpuConnectivityGlTest, TwoSidedCapturesMatchReference) {
+    for (const char* name : {"trefoil", "hexring", "row"}) {
+        auto mesh = core::makeBuiltinModel(name);
+        ASSERT_TRUE(mesh) << mesh.error();
+        for (bool orthographic : {false, true}) {
+            const core::View view = orbitView(*mesh, 10.0f, 5.0f, 1.7f, 320, 240, orthographic);
+            const Scene s =
+                makeScene(std::string(name) + " two-sided" + (orthographic ? " ortho" : " persp"),
+                          *mesh, view, false);
+            expectNontrivial(s, 4);
+            expectSameAsReference(m_gpu, s, {0.001f, 0.004f});
+        }
+    }
+}
+
+TEST_F(GpuConnectivityGlTest, Trefoil1280x720MatchesReference) {
+    const Scene s = makeScene("trefoil 1280x720", core::makeTrefoil(),
+                              orbitView(core::makeTrefoil(), 30.0f, 20.0f, 1.6f, 1280, 720, false));
+    expectNontrivial(s, 3);
+    expectSameAsReference(m_gpu, s, {0.001f, 0.005f});
+}
+
+TEST_F(GpuConnectivityGlTest, GlCaptureMatchesReference) {
+    // Stacks from the GL capture (a different rasterizer than the CPU stand-in).
+    render::LayerCapture capture;
+    ASSERT_TRUE(capture.initialize());
+    for (const char* name : {"trefoil", "row"}) {
+        auto mesh = core::makeBuiltinModel(name);
+        ASSERT_TRUE(mesh) << mesh.error();
+        capture.setMesh(*mesh);
+        for (bool twoSided : {false, true}) {
+            Scene s;
+            s.name = std::string(name) + " gl capture" + (twoSided ? " two-sided" : "");
+            s.mesh = *mesh;
+            s.topology = core::buildMeshTopology(s.mesh);
+            s.view = orbitView(s.mesh, -70.0f, 15.0f, 1.7f, 400, 300, false);
+            render::LayerCaptureOptions options;
+            options.cullBackFaces = !twoSided;
+            auto stack = capture.capture(s.view, options);
+            ASSERT_TRUE(stack) << stack.error();
+            s.stack = std::move(stack).value();
+            s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, s.view);
+            expectSameAsReference(m_gpu, s, {0.001f});
+        }
+    }
+    capture.release();
+}
+
+TEST_F(GpuConnectivityGlTest, SyntheticScenesMatchReference) {
+    // The core tests' hard cases: slopes up to grazing (the Plain fallback and its arc test),
+    // parts closer than the threshold, coplanar parts touching, a coarse mesh (facets).
+    for (float degrees : {0.0f, 45.0f, 80.0f, 85.0f, 88.0f, 89.0f})
+        for (bool orthographic : {false, true}) {
+            core::Mesh mesh;
+            const glm::mat4 turn =
+                glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0));
+            const glm::vec3 u = glm::vec3(turn * glm::vec4(1, 0, 0, 0)), v(0, 1, 0);
+            addGrid(mesh, -0.5f * u - 0.5f * v, u, v, 8);
+            finish(mesh);
+            expectSameAsReference(
+                m_gpu,
+                makeScene("plane " + std::to_string(degrees) + (orthographic ? " ortho" : " persp"),
+                          std::move(mesh), frontView(200, 160, orthographic)));
+        }
+    {
+        core::Mesh mesh;
+        addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
+        addGrid(mesh, {-0.2f, -0.5f, -0.0005f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
+        finish(mesh);
+        expectSameAsReference(
+            m_gpu, makeScene("parallel parts", std::move(mesh), frontView(200, 200, false)));
+    }
+    {
+        core::Mesh mesh;
+        addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.5f, 0, 0}, {0, 1.0f, 0}, 3);
+        addGrid(mesh, {0.0f, -0.4f, 0.0f}, {0.5f, 0, 0}, {0, 0.8f, 0}, 2);
+        finish(mesh);
+        expectSameAsReference(
+            m_gpu, makeScene("touching parts", std::move(mesh), frontView(160, 160, true)));
+    }
+    // Yaw 77 is captured two-sided.
+    const core::Mesh coarse = core::makeTrefoil(24, 8);
+    for (float yaw : {0.0f, 77.0f, 200.0f})
+        expectSameAsReference(m_gpu, makeScene("coarse trefoil " + std::to_string(yaw), coarse,
+                                               orbitView(coarse, yaw, 40.0f, 1.4f, 240, 200, false),
+                                               yaw != 77.0f));
+}
+
+TEST_F(GpuConnectivityGlTest, NonDefaultAnglesAndUnknownTrianglesMatchReference) {
+    const core::Mesh mesh = core::makeHexRing(12);
+    Scene s = makeScene("hexring", mesh, orbitView(mesh, 20.0f, 50.0f, 1.5f, 256, 192, false));
+    // Drop the last third of the triangles from the geometry: their fragments are unknown and
+    // take the plain test; mark some corners and components unknown too.
+    s.geometry.triangles.resize(s.geometry.triangles.size() * 2 / 3);
+    for (std::size_t t = 0; t < s.geometry.triangles.size(); t += 7)
+        s.geometry.triangles[t].corners = {core::kNone, core::kNone, core::kNone};
+    for (std::size_t t = 3; t < s.geometry.triangles.size(); t += 11)
+        s.geometry.triangles[t].component = 5;
+    for (std::size_t t = 5; t < s.geometry.triangles.size(); t += 13)
+        s.geometry.triangles[t].plane = glm::vec4(0.0f); // degenerate
+    for (float crease : {0.0f, 30.0f, 180.0f})
+        for (float smooth : {0.0f, 20.0f, 90.0f})
+            for (float contact : {0.0f, 0.1f, 3.0f}) {
+                core::ConnectivityOptions options;
+                options.unitScale = core::unitScale(mesh);
+                options.creaseAngleDegrees = crease;
+                options.smoothAngleDegrees = smooth;
+                options.contactFactor = contact;
+                const core::Connectivity cpu =
+                    core::computeConnectivity(s.stack, options, &s.geometry);
+                auto gpu = m_gpu.compute(s.stack, options, &s.geometry);
+                ASSERT_TRUE(gpu) << gpu.error();
+                expectSameLinks(cpu, *gpu, s.stack,
+                                "angles " + std::to_string(crease) + " " + std::to_string(smooth) +
+                                    " contact " + std::to_string(contact));
+            }
+    // Surface without geometry falls back to Plain, as in the reference; a unit scale of 0 counts
+    // as 1.
+    core::ConnectivityOptions options;
+    options.unitScale = 0.0f;
+    auto gpu = m_gpu.compute(s.stack, options, nullptr);
+    ASSERT_TRUE(gpu) << gpu.error();
+    expectSameLinks(core::computeConnectivity(s.stack, options, nullptr), *gpu, s.stack,
+                    "no geometry");
+}
+
+TEST_F(GpuConnectivityGlTest, FragmentsBeyondLayer255AreTruncatedAsInReference) {
+    // Three pixels in an L with 300 fragments each (more layers than a capture of a real mesh
+    // reaches), coincident and on stacked planes, for both tests.
+    core::LayerStack stack;
+    stack.width = 2;
+    stack.height = 2;
+    const std::uint32_t n = 300;
+    stack.offsets = {0, n, 2 * n, 3 * n, 3 * n};
+    for (int p = 0; p < 3; ++p)
+        for (std::uint32_t k = 0; k < n; ++k) {
+            stack.depth.push_back(1.0f + 0.01f * float(k) +
+                                  (p == 2 ? 0.0004f * float(k % 3) : 0.0f));
+            stack.triangle.push_back(k % 150);
+        }
+    core::SurfaceGeometry geometry;
+    geometry.rays = core::PixelRays::fromView(frontView(2, 2, false));
+    geometry.triangles.resize(100); // ids 100..149 are unknown
+    for (std::uint32_t t = 0; t < 100; ++t) {
+        geometry.triangles[t].plane = glm::vec4(0.0f, 0.0f, 1.0f, 1.0f + 0.01f * float(t));
+        geometry.triangles[t].corners = {t, t + 1, t + 2};
+        geometry.triangles[t].component = t / 50;
+    }
+    for (ConnectionTest test : {ConnectionTest::Plain, ConnectionTest::Surface}) {
+        core::ConnectivityOptions options;
+        options.test = test;
+        options.threshold = 0.002f;
+        const core::Connectivity cpu = core::computeConnectivity(stack, options, &geometry);
+        auto gpu = m_gpu.compute(stack, options, &geometry);
+        ASSERT_TRUE(gpu) << gpu.error();
+        EXPECT_TRUE(gpu->truncated);
+        EXPECT_EQ(gpu->link(255, core::kRight), 0);
+        EXPECT_NE(gpu->link(0, core::kRight), 0);
+        expectSameLinks(cpu, *gpu, stack, test == ConnectionTest::Plain ? "plain" : "surface");
+    }
+}
+
+TEST_F(GpuConnectivityGlTest, MalformedAndEmptyStacks) {
+    core::ConnectivityOptions options;
+    // No fragments at all.
+    core::LayerStack empty;
+    empty.width = 5;
+    empty.height = 3;
+    empty.offsets.assign(16, 0);
+    auto result = m_gpu.compute(empty, options, nullptr);
+    ASSERT_TRUE(result) << result.error();
+    EXPECT_TRUE(result->links.empty());
+    EXPECT_FALSE(result->truncated);
+    // Wrong offsets size: the reference's all-zero links.
+    core::LayerStack wrongSize;
+    wrongSize.width = 2;
+    wrongSize.height = 1;
+    wrongSize.offsets = {0, 1};
+    wrongSize.depth = {1.0f};
+    wrongSize.triangle = {0};
+    result = m_gpu.compute(wrongSize, options, nullptr);
+    ASSERT_TRUE(result) << result.error();
+    EXPECT_EQ(result->links, core::computeConnectivity(wrongSize, options).links);
+    // Offsets that do not describe the fragments: an error, not a read out of bounds.
+    core::LayerStack descending;
+    descending.width = 2;
+    descending.height = 1;
+    descending.offsets = {0, 2, 1};
+    descending.depth = {1.0f};
+    descending.triangle = {0};
+    EXPECT_FALSE(m_gpu.compute(descending, options, nullptr));
+    descending.offsets = {0, 1, 2};
+    EXPECT_FALSE(m_gpu.compute(descending, options, nullptr));
+    // Not initialized.
+    render::GpuConnectivity uninitialized;
+    EXPECT_FALSE(uninitialized.initialized());
+    EXPECT_FALSE(uninitialized.compute(empty, options, nullptr));
+}
+
+TEST_F(GpuConnectivityGlTest, BuffersShrinkAndGrowBetweenCalls) {
+    // A large view, a small one, then the large one again: stale words of the large view must not
+    // leak into the small one's result.
+    const core::Mesh mesh = core::makeTrefoil(100, 30);
+    for (int size : {480, 96, 480, 160}) {
+        const Scene s = makeScene("trefoil " + std::to_string(size), mesh,
+                                  orbitView(mesh, 10.0f, 5.0f, 1.7f, size, size * 3 / 4, false));
+        expectSameAsReference(m_gpu, s, {0.001f});
+    }
+}
+
+TEST_F(GpuConnectivityGlTest, ManyFragmentsDispatchInRowsOfGroups) {
+    // More fragments than one row of work groups holds on llvmpipe (65535 × 64): the dispatch
+    // becomes two-dimensional. One fragment a pixel, depths in steps around the threshold.
+    core::LayerStack stack;
+    stack.width = 2100;
+    stack.height = 2100;
+    const std::size_t pixels = stack.pixelCount();
+    stack.offsets.resize(pixels + 1);
+    stack.depth.resize(pixels);
+    stack.triangle.resize(pixels);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        stack.offsets[p] = std::uint32_t(p);
+        stack.depth[p] = 1.0f + 0.0004f * float((p % 2100 * 7 + p / 2100 * 13) % 5);
+        stack.triangle[p] = std::uint32_t(p % 3);
+    }
+    stack.offsets[pixels] = std::uint32_t(pixels);
+    ASSERT_GT(pixels, std::size_t(65535) * 64);
+    core::ConnectivityOptions options;
+    options.test = ConnectionTest::Plain;
+    auto gpu = m_gpu.compute(stack, options, nullptr);
+    ASSERT_TRUE(gpu) << gpu.error();
+    expectSameLinks(core::computeConnectivity(stack, options), *gpu, stack, "2100x2100");
+}
+
+TEST_F(GpuConnectivityGlTest, BackendPolicy) {
+    using render::ConnectivityBackend;
+    EXPECT_TRUE(render::isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(render::isSoftwareRenderer("softpipe"));
+    EXPECT_TRUE(render::isSoftwareRenderer("Google SwiftShader"));
+    EXPECT_FALSE(render::isSoftwareRenderer("NVIDIA GeForce RTX 3060/PCIe/SSE2"));
+    EXPECT_FALSE(render::isSoftwareRenderer("AMD Radeon RX 6600 (radeonsi, navi23, LLVM 15.0.6)"));
+    EXPECT_FALSE(render::isSoftwareRenderer("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+    EXPECT_EQ(render::isSoftwareRenderer(),
+              render::isSoftwareRenderer(render::HeadlessContext::rendererName()));
+
+    EXPECT_EQ(render::resolveConnectivityBackend(ConnectivityBackend::Auto, true),
+              ConnectivityBackend::Cpu);
+    EXPECT_EQ(render::resolveConnectivityBackend(ConnectivityBackend::Auto, false),
+              ConnectivityBackend::Gpu);
+    for (bool software : {false, true}) {
+        EXPECT_EQ(render::resolveConnectivityBackend(ConnectivityBackend::Cpu, software),
+                  ConnectivityBackend::Cpu);
+        EXPECT_EQ(render::resolveConnectivityBackend(ConnectivityBackend::Gpu, software),
+                  ConnectivityBackend::Gpu);
+    }
+    for (ConnectivityBackend b :
+         {ConnectivityBackend::Auto, ConnectivityBackend::Cpu, ConnectivityBackend::Gpu})
+        EXPECT_EQ(render::parseConnectivityBackend(render::connectivityBackendName(b)), b);
+    EXPECT_EQ(render::parseConnectivityBackend("GPU"), ConnectivityBackend::Gpu);
+    EXPECT_FALSE(render::parseConnectivityBackend("cuda"));
+    EXPECT_FALSE(render::parseConnectivityBackend(""));
+
+    // The dispatcher: the same links whichever backend runs; Gpu falls back without a pass.
+    const core::Mesh mesh = core::makeRow(16);
+    const Scene s = makeScene("row", mesh, orbitView(mesh, 30.0f, 10.0f, 2.0f, 160, 120, false));
+    core::ConnectivityOptions options;
+    options.unitScale = core::unitScale(mesh);
+    const core::Connectivity reference = core::computeConnectivity(s.stack, options, &s.geometry);
+    const bool software = render::isSoftwareRenderer();
+    struct Case {
+        ConnectivityBackend requested;
+        render::GpuConnectivity* gpu;
+        ConnectivityBackend expected;
+    };
+    const Case cases[] = {
+        {ConnectivityBackend::Cpu, &m_gpu, ConnectivityBackend::Cpu},
+        {ConnectivityBackend::Gpu, &m_gpu, ConnectivityBackend::Gpu},
+        {ConnectivityBackend::Gpu, nullptr, ConnectivityBackend::Cpu},
+        {ConnectivityBackend::Auto, &m_gpu,
+         software ? ConnectivityBackend::Cpu : ConnectivityBackend::Gpu},
+    };
+    for (const Case& c : cases) {
+        ConnectivityBackend used = ConnectivityBackend::Auto;
+        const core::Connectivity links =
+            render::computeConnectivity(c.requested, c.gpu, s.stack, options, &s.geometry, &used);
+        EXPECT_EQ(used, c.expected) << render::connectivityBackendName(c.requested);
+        EXPECT_EQ(links.links, reference.links);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Timing for the README and the backend choice (run with --gtest_also_run_disabled_tests): the
+// built-in trefoil (144K vertices) at 1280×720, from the core timing test's view and from close
+// up (the knot fills the view), medians of 7 runs. GPU: fragment-to-pixel map, upload, dispatch
+// and readback from an idle GPU; CPU: core::computeConnectivity with 1 and 2 threads.
+TEST_F(GpuConnectivityGlTest, DISABLED_TimingTrefoil1280x720) {
+    const core::Mesh mesh = core::makeTrefoil();
+    const core::MeshTopology topology = core::buildMeshTopology(mesh);
+    using Clock = std::chrono::steady_clock;
+    for (float distance : {1.6f, 0.9f}) {
+        Scene s;
+        s.mesh = mesh;
+        s.view = orbitView(mesh, 30.0f, 20.0f, distance, 1280, 720, false);
+        s.stack = core::captureLayersCpu(mesh, s.view);
+        s.geometry = core::makeSurfaceGeometry(mesh, topology, s.view);
+        std::printf("[ timing   ] %s, distance %.1f: %zu fragments, %u layers\n",
+                    render::HeadlessContext::rendererName().c_str(), distance,
+                    s.stack.fragmentCount(), s.stack.maxLayers());
+        for (ConnectionTest test : {ConnectionTest::Surface, ConnectionTest::Plain}) {
+            core::ConnectivityOptions options;
+            options.test = test;
+            options.unitScale = core::unitScale(mesh);
+            std::vector<double> gpuMs;
+            double firstMs = 0.0;
+            for (int run = 0; run < 8; ++run) {
+                double ms = 0.0;
+                auto links = m_gpu.compute(s.stack, options, &s.geometry, &ms);
+                ASSERT_TRUE(links) << links.error();
+                if (run == 0)
+                    firstMs = ms; // includes allocating the buffers
+                else
+                    gpuMs.push_back(ms);
+            }
+            double cpuMs[2] = {};
+            for (unsigned threads : {1u, 2u}) {
+                options.threads = threads;
+                std::vector<double> runs;
+                for (int run = 0; run < 7; ++run) {
+                    const auto start = Clock::now();
+                    const core::Connectivity links =
+                        core::computeConnectivity(s.stack, options, &s.geometry);
+                    runs.push_back(
+                        std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+                    ASSERT_FALSE(links.links.empty());
+                }
+                cpuMs[threads - 1] = median(runs);
+            }
+            std::printf("[ timing   ] %-7s gpu %.2f ms (first call %.2f ms) | cpu 1 thread "
+                        "%.2f ms, 2 threads %.2f ms | gpu / cpu(2 threads) = %.2f\n",
+                        test == ConnectionTest::Surface ? "surface" : "plain", median(gpuMs),
+                        firstMs, cpuMs[0], cpuMs[1], median(gpuMs) / cpuMs[1]);
+        }
+    }
+}
+
+} // namespace

@@ -1,0 +1,483 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Multi-layer segmentation in the GUI through real Qt event delivery: layers built when the view
+// settles, the view modes, the Layers and Region Graph panels and the threshold slider.
+// Needs a display with OpenGL 4.5 (run under xvfb-run; Mesa llvmpipe is enough).
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QGraphicsItem>
+#include <QGraphicsView>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenu>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QStatusBar>
+#include <QTest>
+#include <QWheelEvent>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <set>
+
+#include "core/document.h"
+#include "render/layer_compositor.h"
+#include "ui/layer_builder.h"
+#include "ui/layers_panel.h"
+#include "ui/main_window.h"
+#include "ui/region_graph_panel.h"
+#include "ui/segmentation_controls.h"
+#include "ui/viewport.h"
+
+namespace {
+
+constexpr int kLoadTimeoutMs = 60000;
+constexpr int kBuildTimeoutMs = 30000;
+
+int channelDifference(QRgb a, QRgb b) {
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                     std::abs(qBlue(a) - qBlue(b))});
+}
+
+double differingFraction(const QImage& a, const QImage& b) {
+    const QImage ra = a.convertToFormat(QImage::Format_RGB32);
+    const QImage rb = b.convertToFormat(QImage::Format_RGB32);
+    if (ra.size() != rb.size())
+        return 1.0;
+    qint64 count = 0;
+    for (int y = 0; y < ra.height(); ++y)
+        for (int x = 0; x < ra.width(); ++x)
+            count += channelDifference(ra.pixel(x, y), rb.pixel(x, y)) > 8 ? 1 : 0;
+    return double(count) / double(qint64(ra.width()) * ra.height());
+}
+
+QRgb backgroundRgb() {
+    const glm::vec4 c = render::CompositeOptions{}.background;
+    return qRgb(qRound(c.r * 255.0f), qRound(c.g * 255.0f), qRound(c.b * 255.0f));
+}
+
+/** Hues (degrees) of clearly coloured pixels, in 10° buckets with their pixel counts. */
+std::map<int, qint64> hueHistogram(const QImage& image) {
+    std::map<int, qint64> buckets;
+    const QImage rgb = image.convertToFormat(QImage::Format_RGB32);
+    for (int y = 0; y < rgb.height(); ++y) {
+        for (int x = 0; x < rgb.width(); ++x) {
+            const QColor color = QColor::fromRgb(rgb.pixel(x, y));
+            if (color.hsvSaturation() > 90 && color.value() > 60)
+                ++buckets[color.hsvHue() / 10];
+        }
+    }
+    return buckets;
+}
+
+int hueOf(std::uint32_t region) {
+    const glm::vec4 c = render::regionColor(region);
+    return QColor::fromRgbF(c.r, c.g, c.b).hsvHue();
+}
+
+class SegmentationTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(1100, 720);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        // Window shortcuts only fire in the active window.
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        // Every adopted build must describe the view on screen at that moment.
+        QObject::connect(builder(), &ui::LayerBuilder::layersBuilt, [this] {
+            const core::Layers* layers = document().layers();
+            ASSERT_NE(layers, nullptr);
+            const core::View view = viewport()->view();
+            EXPECT_EQ(layers->view.view, view.view);
+            EXPECT_EQ(layers->view.proj, view.proj);
+            EXPECT_EQ(layers->view.width, view.width);
+            EXPECT_EQ(layers->view.height, view.height);
+        });
+    }
+
+    void TearDown() override {
+        m_window.reset();
+        QSettings().clear();
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
+    core::Document& document() const { return m_window->document(); }
+    ui::RegionGraphPanel* graph() const { return m_window->regionGraphPanel(); }
+    QImage grab() const { return viewport()->grabFramebuffer(); }
+
+    /** Opens the trefoil and waits until the layers of its first view are shown. */
+    void openTrefoil() {
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+        m_window->openFile(QStringLiteral("builtin:trefoil"));
+        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+        ASSERT_TRUE(viewport()->isShowingLayers());
+    }
+
+    void orbitDrag(QPoint delta) {
+        const QPoint start = viewport()->rect().center();
+        QTest::mousePress(viewport(), Qt::MiddleButton, Qt::NoModifier, start);
+        for (int i = 1; i <= 5; ++i)
+            QTest::mouseMove(viewport(), start + delta * i / 5);
+        QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, start + delta);
+    }
+
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+TEST_F(SegmentationTest, BuildsLayersWhenTheViewSettles) {
+    QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    m_window->openFile(QStringLiteral("builtin:trefoil"));
+    ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+    // Until the view has settled the mesh renderer draws.
+    EXPECT_EQ(document().layers(), nullptr);
+    EXPECT_FALSE(viewport()->isShowingLayers());
+    EXPECT_TRUE(builder()->isBuilding());
+    const QImage fromMesh = grab();
+
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+    const core::Layers* layers = document().layers();
+    ASSERT_NE(layers, nullptr);
+    EXPECT_GE(layers->stack.maxLayers(), 2u);
+    EXPECT_GT(layers->segmentation.graph.regions.size(), 1u);
+    EXPECT_EQ(builder()->captureCount(), 1);
+    EXPECT_FALSE(builder()->isBuilding());
+    EXPECT_GT(builder()->lastBuildMs(), 0.0);
+
+    // Shaded from the layers looks like shaded from the mesh.
+    ASSERT_TRUE(viewport()->isShowingLayers());
+    EXPECT_LT(differingFraction(fromMesh, grab()), 0.001);
+
+    // The status bar and the panels report the build.
+    auto* info = m_window->statusBar()->findChild<QLabel*>(QStringLiteral("layerInfo"));
+    ASSERT_NE(info, nullptr);
+    EXPECT_TRUE(info->text().contains(
+        QStringLiteral("Regions: %1").arg(layers->segmentation.graph.regions.size())))
+        << info->text().toStdString();
+    EXPECT_TRUE(info->text().contains(QStringLiteral(" ms"))) << info->text().toStdString();
+    EXPECT_EQ(m_window->layersPanel()->layerCount(), int(layers->stack.maxLayers()));
+    EXPECT_EQ(graph()->regionCount(), int(layers->segmentation.graph.regions.size()));
+}
+
+TEST_F(SegmentationTest, SegmentationViewThroughTheMenuShortcut) {
+    openTrefoil();
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionDisplaySegmentation"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_FALSE(action->isChecked());
+    const QImage shaded = grab();
+    EXPECT_LT(hueHistogram(shaded).size(), 2u); // the default material is grey
+
+    QTest::keyClick(m_window.get(), Qt::Key_3, Qt::ControlModifier);
+    EXPECT_TRUE(action->isChecked());
+    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Segmentation);
+
+    const QImage map = grab();
+    EXPECT_GT(differingFraction(shaded, map), 0.05);
+    // The front layer's regions show in their own colours.
+    const std::map<int, qint64> hues = hueHistogram(map);
+    const core::RegionGraph& regions = document().layers()->segmentation.graph;
+    std::set<int> found;
+    for (const core::Region& region : regions.regions) {
+        if (region.layer != 1 || region.pixels < 500)
+            continue;
+        const int bucket = hueOf(region.id) / 10;
+        for (int b : {bucket - 1, bucket, bucket + 1}) {
+            const auto it = hues.find((b + 36) % 36);
+            if (it != hues.end() && it->second > 100)
+                found.insert(region.id);
+        }
+    }
+    EXPECT_GE(found.size(), 3u);
+
+    // Ctrl+1 goes back to shaded; Ctrl+4 toggles the boundary overlay.
+    QTest::keyClick(m_window.get(), Qt::Key_1, Qt::ControlModifier);
+    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Composite);
+    QTest::keyClick(m_window.get(), Qt::Key_4, Qt::ControlModifier);
+    EXPECT_TRUE(viewport()->compositeOptions().boundaries);
+    EXPECT_GT(differingFraction(shaded, grab()), 0.0005);
+    QTest::keyClick(m_window.get(), Qt::Key_4, Qt::ControlModifier);
+    EXPECT_FALSE(viewport()->compositeOptions().boundaries);
+}
+
+TEST_F(SegmentationTest, ThresholdSliderResegmentsWithoutCapturing) {
+    openTrefoil();
+    const int captures = builder()->captureCount();
+    const int before = graph()->regionCount();
+    auto* summary = graph()->findChild<QLabel*>(QStringLiteral("regionSummary"));
+    ASSERT_NE(summary, nullptr);
+    EXPECT_TRUE(summary->text().contains(QString::number(before))) << summary->text().toStdString();
+    QSignalSpy resegmented(builder(), &ui::LayerBuilder::segmentationChanged);
+
+    // The paper's plain depth test, chosen with the keyboard.
+    auto* test = m_window->findChild<QComboBox*>(QStringLiteral("connectionTest"));
+    ASSERT_NE(test, nullptr);
+    test->setFocus();
+    QTest::keyClick(test, Qt::Key_Down);
+    EXPECT_EQ(document().layerOptions().test, core::ConnectionTest::Plain);
+
+    // The smallest threshold: a plain depth test breaks the tube into many small pieces.
+    auto* slider = m_window->findChild<QSlider*>(QStringLiteral("thresholdSlider"));
+    ASSERT_NE(slider, nullptr);
+    slider->setFocus();
+    QTest::keyClick(slider, Qt::Key_Home);
+    EXPECT_NEAR(document().layerOptions().threshold, 1e-5f, 1e-9f);
+    auto* value = m_window->findChild<QLabel*>(QStringLiteral("thresholdValue"));
+    ASSERT_NE(value, nullptr);
+    EXPECT_EQ(value->text(), QStringLiteral("0.000010"));
+    ASSERT_NE(document().layers(), nullptr);
+    const int fine = graph()->regionCount();
+    EXPECT_GT(fine, 10 * before);
+    EXPECT_EQ(fine, int(document().layers()->segmentation.graph.regions.size()));
+    EXPECT_TRUE(summary->text().contains(QLocale().toString(fine)))
+        << summary->text().toStdString();
+
+    // Back up a few steps at a time: fewer regions again. Each step re-segments at once.
+    QElapsedTimer clock;
+    double slowestMs = 0.0;
+    for (int i = 0; i < 6; ++i) {
+        clock.start();
+        QTest::keyClick(slider, Qt::Key_PageUp);
+        slowestMs = std::max(slowestMs, double(clock.nsecsElapsed()) / 1e6);
+    }
+    std::printf("slowest threshold step: %.1f ms\n", slowestMs);
+    EXPECT_GT(document().layerOptions().threshold, 1e-4f);
+    EXPECT_LT(graph()->regionCount(), fine);
+
+    // The largest threshold joins everything that touches.
+    QTest::keyClick(slider, Qt::Key_End);
+    EXPECT_NEAR(document().layerOptions().threshold, 0.1f, 1e-6f);
+    EXPECT_LE(graph()->regionCount(), before);
+
+    EXPECT_GE(resegmented.size(), 4);
+    EXPECT_EQ(builder()->captureCount(), captures); // no new capture
+    EXPECT_FALSE(builder()->isBuilding());
+    ASSERT_NE(document().layers(), nullptr);
+    EXPECT_TRUE(viewport()->isShowingLayers());
+}
+
+TEST_F(SegmentationTest, TwoSidedCaptureRecaptures) {
+    openTrefoil();
+    const int captures = builder()->captureCount();
+    const std::size_t fragments = document().layers()->stack.fragmentCount();
+    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+
+    auto* twoSided = m_window->findChild<QCheckBox*>(QStringLiteral("twoSidedCapture"));
+    ASSERT_NE(twoSided, nullptr);
+    QTest::mouseClick(twoSided, Qt::LeftButton, Qt::NoModifier, QPoint(8, twoSided->height() / 2));
+    EXPECT_FALSE(document().layerOptions().cullBackFaces);
+    EXPECT_EQ(document().layers(), nullptr); // dropped at once
+
+    ASSERT_TRUE(built.wait(kBuildTimeoutMs));
+    EXPECT_EQ(builder()->captureCount(), captures + 1);
+    ASSERT_NE(document().layers(), nullptr);
+    EXPECT_FALSE(document().layers()->options.cullBackFaces);
+    // A closed tube seen from both sides: each pixel meets it twice as often.
+    EXPECT_GT(document().layers()->stack.fragmentCount(), fragments * 3 / 2);
+}
+
+TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
+    openTrefoil();
+    auto* list = m_window->layersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
+    ASSERT_NE(list, nullptr);
+    const core::Layers& layers = *document().layers();
+    ASSERT_EQ(list->count(), int(layers.stack.maxLayers()) + 1); // "All layers" first
+    EXPECT_EQ(m_window->layersPanel()->layerCount(), int(layers.stack.maxLayers()));
+    const QImage all = grab();
+
+    QListWidgetItem* second = list->item(2);
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      list->visualItemRect(second).center());
+    EXPECT_EQ(viewport()->display(), render::LayerDisplay::SingleLayer);
+    EXPECT_EQ(viewport()->displayLayer(), 2u);
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionDisplaySingleLayer"));
+    ASSERT_NE(action, nullptr);
+    EXPECT_TRUE(action->isChecked());
+
+    const QImage image = grab().convertToFormat(QImage::Format_RGB32);
+    ASSERT_EQ(image.width(), layers.stack.width);
+    ASSERT_EQ(image.height(), layers.stack.height);
+    EXPECT_GT(differingFraction(all, image), 0.05);
+    // Pixels without a second fragment show the background; most others do not.
+    const QRgb background = backgroundRgb();
+    qint64 without = 0, withoutBackground = 0, with = 0, withForeground = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const std::size_t pixel = std::size_t(y) * std::size_t(image.width()) + std::size_t(x);
+            const bool isBackground = channelDifference(image.pixel(x, y), background) <= 3;
+            if (layers.stack.layerCount(pixel) < 2) {
+                ++without;
+                withoutBackground += isBackground ? 1 : 0;
+            } else {
+                ++with;
+                withForeground += isBackground ? 0 : 1;
+            }
+        }
+    }
+    ASSERT_GT(with, 1000);
+    EXPECT_GE(double(withoutBackground), 0.999 * double(without));
+    EXPECT_GE(double(withForeground), 0.95 * double(with));
+
+    // "All layers" goes back.
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      list->visualItemRect(list->item(0)).center());
+    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Composite);
+    EXPECT_LT(differingFraction(all, grab()), 0.001);
+}
+
+TEST_F(SegmentationTest, HoveringAGraphNodeHighlightsItsRegion) {
+    openTrefoil();
+    QGraphicsView* view = graph()->graphicsView();
+    ASSERT_NE(view, nullptr);
+    // The largest region's node.
+    QGraphicsItem* node = nullptr;
+    std::uint32_t region = core::kNone;
+    std::uint32_t largest = 0;
+    for (QGraphicsItem* item : view->scene()->items()) {
+        if (!item->data(0).isValid())
+            continue;
+        const auto id = std::uint32_t(item->data(0).toUInt());
+        const std::uint32_t pixels = document().layers()->segmentation.graph.regions[id].pixels;
+        if (pixels > largest) {
+            largest = pixels;
+            node = item;
+            region = id;
+        }
+    }
+    ASSERT_NE(node, nullptr);
+    EXPECT_EQ(viewport()->compositeOptions().highlightRegion, core::kNone);
+    const QImage plain = grab();
+
+    const QPoint centre = view->mapFromScene(node->scenePos());
+    QTest::mouseMove(view->viewport(), centre);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return viewport()->compositeOptions().highlightRegion == region; }, 2000));
+    EXPECT_GT(differingFraction(plain, grab()), 0.01);
+
+    QSignalSpy activated(m_window.get(), &ui::MainWindow::regionActivated);
+    QSignalSpy panelActivated(graph(), &ui::RegionGraphPanel::regionActivated);
+    QTest::mouseClick(view->viewport(), Qt::LeftButton, Qt::NoModifier, centre);
+    ASSERT_EQ(panelActivated.size(), 1);
+    EXPECT_EQ(panelActivated.first().first().value<std::uint32_t>(), region);
+    ASSERT_EQ(activated.size(), 1);
+    EXPECT_EQ(graph()->selectedRegion(), region);
+
+    // Leaving the node ends the highlight.
+    QTest::mouseMove(view->viewport(), QPoint(2, 2));
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return viewport()->compositeOptions().highlightRegion == core::kNone; }, 2000));
+}
+
+TEST_F(SegmentationTest, CameraChangeDropsTheLayersAndRebuildsAfterSettling) {
+    openTrefoil();
+    const int captures = builder()->captureCount();
+    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy cleared(builder(), &ui::LayerBuilder::layersCleared);
+    const std::uint64_t serial = viewport()->viewSerial();
+
+    const QPoint start = viewport()->rect().center();
+    QTest::mousePress(viewport(), Qt::MiddleButton, Qt::NoModifier, start);
+    QTest::mouseMove(viewport(), start + QPoint(20, 0));
+    // Dropped at the first move: painting never sees layers of another view.
+    EXPECT_EQ(document().layers(), nullptr);
+    EXPECT_FALSE(viewport()->isShowingLayers());
+    EXPECT_EQ(cleared.size(), 1);
+    EXPECT_GT(viewport()->viewSerial(), serial);
+    EXPECT_TRUE(builder()->isBuilding());
+    // Held still mid-drag for longer than the settle delay: no capture under the cursor.
+    QTest::qWait(builder()->settleDelay() * 2);
+    EXPECT_EQ(builder()->captureCount(), captures);
+    for (int i = 2; i <= 6; ++i)
+        QTest::mouseMove(viewport(), start + QPoint(20 * i, 0));
+    QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, start + QPoint(120, 0));
+    EXPECT_EQ(builder()->captureCount(), captures);
+
+    ASSERT_TRUE(built.wait(kBuildTimeoutMs));
+    EXPECT_EQ(builder()->captureCount(), captures + 1);
+    ASSERT_NE(document().layers(), nullptr);
+    EXPECT_TRUE(viewport()->isShowingLayers());
+    EXPECT_FALSE(builder()->isBuilding());
+}
+
+TEST_F(SegmentationTest, ResultOfAViewThatMovedOnIsDropped) {
+    openTrefoil();
+    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    // Orbit, then wait for the capture (the worker then finishes it for ~50 ms) and zoom at once.
+    orbitDrag(QPoint(60, 0));
+    const int captures = builder()->captureCount();
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return builder()->captureCount() > captures; }, kBuildTimeoutMs));
+    if (!built.isEmpty())
+        GTEST_SKIP() << "the worker finished before the test could move the view";
+    const QPointF pos = viewport()->rect().center();
+    QWheelEvent wheel(pos, viewport()->mapToGlobal(pos), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+
+    // The stale result is not adopted; the one after the zoom is (the fixture checks its view).
+    ASSERT_TRUE(built.wait(kBuildTimeoutMs));
+    EXPECT_EQ(built.size(), 1);
+    EXPECT_EQ(builder()->captureCount(), captures + 2);
+}
+
+TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
+    for (const char* name : {"actionDisplayShaded", "actionDisplaySingleLayer",
+                             "actionDisplaySegmentation", "actionShowBoundaries"}) {
+        auto* action = m_window->findChild<QAction*>(QString::fromLatin1(name));
+        ASSERT_NE(action, nullptr) << name;
+        EXPECT_TRUE(action->isCheckable());
+        EXPECT_FALSE(action->shortcut().isEmpty()) << name;
+    }
+    auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
+    ASSERT_NE(panels, nullptr);
+    EXPECT_EQ(panels->actions().size(), 3);
+    for (const char* name : {"segmentationDock", "layersDock", "regionGraphDock"}) {
+        auto* dock = m_window->findChild<QDockWidget*>(QString::fromLatin1(name));
+        ASSERT_NE(dock, nullptr) << name;
+        EXPECT_TRUE(panels->actions().contains(dock->toggleViewAction())) << name;
+        EXPECT_TRUE(dock->isVisible()) << name;
+    }
+
+    // A closed panel stays closed in the next session.
+    auto* graphDock = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
+    graphDock->toggleViewAction()->trigger();
+    EXPECT_FALSE(graphDock->isVisible());
+    m_window->close();
+    m_window.reset();
+    ui::MainWindow window;
+    window.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&window));
+    EXPECT_FALSE(window.findChild<QDockWidget*>(QStringLiteral("regionGraphDock"))->isVisible());
+    EXPECT_TRUE(window.findChild<QDockWidget*>(QStringLiteral("layersDock"))->isVisible());
+}
+
+TEST_F(SegmentationTest, ThresholdSliderIsLogarithmic) {
+    using Controls = ui::SegmentationControls;
+    EXPECT_NEAR(Controls::thresholdAt(0), 1e-5f, 1e-10f);
+    EXPECT_NEAR(Controls::thresholdAt(Controls::sliderPositionFor(0.001f)), 0.001f, 1e-7f);
+    EXPECT_NEAR(Controls::thresholdAt(4 * Controls::kStepsPerDecade), 0.1f, 1e-6f);
+    EXPECT_EQ(Controls::sliderPositionFor(1.0f), 4 * Controls::kStepsPerDecade); // clamped
+    EXPECT_EQ(Controls::formatThreshold(0.001f), QLocale().toString(0.001, 'f', 4));
+    // The default shows at start.
+    auto* value = m_window->findChild<QLabel*>(QStringLiteral("thresholdValue"));
+    ASSERT_NE(value, nullptr);
+    EXPECT_EQ(value->text(), Controls::formatThreshold(0.001f));
+}
+
+} // namespace
