@@ -11,10 +11,12 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "core/document.h"
 #include "core/layers.h"
 #include "core/mesh_io.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
+#include "render/gpu_connectivity.h"
 #include "render/layer_compositor.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
@@ -33,6 +35,13 @@ double median(std::vector<double> values) {
     return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
+double percentile(std::vector<double> values, double p) {
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    return values[std::min(values.size() - 1, std::size_t(p * double(values.size())))];
+}
+
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -40,8 +49,54 @@ double msSince(Clock::time_point start) {
 /** Medians of every timed part over the runs of one model at one size. */
 struct Samples {
     std::vector<double> plain, captureGpu, captureResolve, connectivity, segmentation, buildLayers,
-        drawLayers, firstDraw;
+        drawLayers, firstDraw, startStroke, moveStroke, connectivityCpu, connectivityGpu;
 };
+
+struct StrokeTimes {
+    std::vector<double> starts;
+    std::vector<double> moves;
+};
+
+/**
+ * A fixed long stroke at R = 32 px: left to right across the middle row of the view in 4 px
+ * steps. Where the row leaves the surface the stroke ends, and it starts again where the row
+ * meets the surface next. Moves that paint are timed (including the dabs on the target).
+ */
+StrokeTimes timeStroke(core::Document& doc, const core::View& view) {
+    StrokeTimes times;
+    const core::LayerStack& stack = doc.layers()->stack;
+    const int y = view.height / 2;
+    doc.brush().radius = 32.0f;
+    core::PaintChanges changes;
+    int strokes = 0;
+    for (int x = view.width / 10; x < view.width * 9 / 10; x += 4) {
+        const core::StrokePoint point{{float(x) + 0.5f, float(y) + 0.5f}, 1.0f};
+        const bool onSurface = stack.layerCount(std::size_t(y) * view.width + x) > 0;
+        if (!onSurface) {
+            if (doc.inStroke())
+                doc.endStroke();
+            continue;
+        }
+        const auto start = Clock::now();
+        if (!doc.inStroke()) {
+            if (!doc.beginStroke(point, changes))
+                return times;
+            times.starts.push_back(msSince(start));
+            ++strokes;
+            continue;
+        }
+        doc.moveStroke(point, changes);
+        const double ms = msSince(start);
+        if (!changes.empty()) // a move shorter than the dab spacing only updates the path
+            times.moves.push_back(ms);
+    }
+    if (doc.inStroke())
+        doc.endStroke();
+    // Leave the target as it was for the next run.
+    for (int i = 0; i < strokes; ++i)
+        doc.undo(changes);
+    return times;
+}
 } // namespace
 
 int runBench(const BenchArgs& args) {
@@ -58,7 +113,6 @@ int runBench(const BenchArgs& args) {
         auto mesh = core::loadMesh(model);
         if (!mesh)
             return fail(mesh.error());
-        const core::MeshTopology topology = core::buildMeshTopology(*mesh);
         render::MeshRenderer renderer;
         render::GlLayerCapturer capturer;
         render::LayerCompositor compositor;
@@ -70,6 +124,15 @@ int runBench(const BenchArgs& args) {
         capturer.setMesh(*mesh);
         if (const core::Status s = compositor.setMesh(*mesh); !s)
             return fail(model + ": " + s.error());
+        // The controller, as the GUI drives it: build_layers and strokes go through it.
+        core::Document doc;
+        doc.setMesh(*mesh, model);
+        render::GlConnectivityEngine engine(render::parseConnectivityBackend(args.connectivity)
+                                                .value_or(render::ConnectivityBackend::Auto));
+        doc.setConnectivityEngine(&engine);
+        render::GpuConnectivity gpuConnectivity;
+        if (const core::Status s = gpuConnectivity.initialize(); !s)
+            return fail(s.error());
 
         for (const std::string& size : args.sizes) {
             CameraArgs cameraArgs = args.camera;
@@ -82,7 +145,6 @@ int runBench(const BenchArgs& args) {
                 return fail(s.error());
 
             Samples samples;
-            core::LayerOptions options;
             std::size_t fragments = 0, regions = 0, layerCount = 0;
             // One warm-up round (shader compilation, buffer growth), then the measured runs,
             // alternating the baseline with the measured work so load affects both alike.
@@ -91,10 +153,10 @@ int runBench(const BenchArgs& args) {
                 plainOptions.cullBackFaces = true;
                 const double plain = render::timePlainPass(renderer, target, *view, plainOptions);
                 const auto start = Clock::now();
-                auto layers = core::buildLayers(capturer, *mesh, topology, *view, options);
+                if (const core::Status s = doc.buildLayers(capturer, *view); !s)
+                    return fail(model + ": " + s.error());
                 const double build = msSince(start);
-                if (!layers)
-                    return fail(model + ": " + layers.error());
+                const core::Layers* layers = doc.layers();
                 if (const core::Status s = compositor.setLayers(*layers); !s)
                     return fail(model + ": " + s.error());
                 target.bind();
@@ -109,8 +171,23 @@ int runBench(const BenchArgs& args) {
                 };
                 const double firstDraw = timedDraw();
                 const double draw = timedDraw();
+                // Both connectivity engines on the same stack, so the choice can be checked.
+                core::ConnectivityOptions connectivityOptions;
+                connectivityOptions.unitScale = core::unitScale(*mesh);
+                const auto cpuStart = Clock::now();
+                core::computeConnectivity(layers->stack, connectivityOptions, &layers->geometry);
+                const double cpuConnectivity = msSince(cpuStart);
+                double gpuConnectivityMs = 0.0;
+                if (!gpuConnectivity.compute(layers->stack, connectivityOptions, &layers->geometry,
+                                             &gpuConnectivityMs))
+                    gpuConnectivityMs = -1.0;
+                const StrokeTimes stroke = timeStroke(doc, *view);
                 if (run < 0)
                     continue;
+                samples.startStroke.insert(samples.startStroke.end(), stroke.starts.begin(),
+                                           stroke.starts.end());
+                samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
+                                          stroke.moves.end());
                 const core::LayerTimings& t = layers->timings;
                 samples.plain.push_back(plain);
                 samples.captureGpu.push_back(t.capture.gpuMs);
@@ -120,6 +197,8 @@ int runBench(const BenchArgs& args) {
                 samples.buildLayers.push_back(build);
                 samples.drawLayers.push_back(draw);
                 samples.firstDraw.push_back(firstDraw);
+                samples.connectivityCpu.push_back(cpuConnectivity);
+                samples.connectivityGpu.push_back(gpuConnectivityMs);
                 fragments = layers->stack.fragmentCount();
                 regions = layers->segmentation.graph.regions.size();
                 layerCount = layers->stack.maxLayers();
@@ -140,13 +219,21 @@ int runBench(const BenchArgs& args) {
                 {"capture_gpu_ms", median(samples.captureGpu)},
                 {"capture_resolve_ms", median(samples.captureResolve)},
                 {"connectivity_ms", median(samples.connectivity)},
+                {"connectivity_engine", render::connectivityBackendName(engine.backend())},
+                {"connectivity_cpu_ms", median(samples.connectivityCpu)},
+                {"connectivity_gpu_ms", median(samples.connectivityGpu)},
                 {"segmentation_and_graph_ms", median(samples.segmentation)},
                 {"draw_layers_ms", median(samples.drawLayers)},
                 {"first_draw_after_build_ms", median(samples.firstDraw)},
+                {"start_stroke_ms", median(samples.startStroke)},
+                {"move_stroke_ms", median(samples.moveStroke)},
+                {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
             };
             std::cerr << model << ' ' << size << ": build_layers " << build
                       << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain
-                      << " ms), draw_layers " << median(samples.drawLayers) << " ms\n";
+                      << " ms), draw_layers " << median(samples.drawLayers) << " ms, start_stroke "
+                      << median(samples.startStroke) << " ms, move_stroke "
+                      << median(samples.moveStroke) << " ms\n";
             results.push_back(std::move(row));
         }
         compositor.release();

@@ -16,6 +16,7 @@
 #include "core/mesh_io.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
+#include "render/gpu_connectivity.h"
 
 namespace cli {
 
@@ -218,6 +219,10 @@ int runLayers(const LayersArgs& args) {
 
     std::unique_ptr<render::HeadlessContext> context;
     std::unique_ptr<core::LayerCapturer> capturer;
+    std::unique_ptr<render::GlConnectivityEngine> engine;
+    const auto backend = render::parseConnectivityBackend(args.connectivity);
+    if (args.cpuCapture && backend == render::ConnectivityBackend::Gpu)
+        return fail("--connectivity gpu needs OpenGL: drop --cpu");
     if (args.cpuCapture) {
         capturer = std::make_unique<core::CpuLayerCapturer>();
     } else {
@@ -229,6 +234,8 @@ int runLayers(const LayersArgs& args) {
         if (const core::Status s = gl->initialize(); !s)
             return fail(s.error());
         capturer = std::move(gl);
+        engine = std::make_unique<render::GlConnectivityEngine>(
+            backend.value_or(render::ConnectivityBackend::Auto));
     }
     capturer->setMesh(*mesh);
 
@@ -241,7 +248,7 @@ int runLayers(const LayersArgs& args) {
     options.test = args.plainTest ? core::ConnectionTest::Plain : core::ConnectionTest::Surface;
     options.cullBackFaces = !args.twoSided;
     const core::MeshTopology topology = core::buildMeshTopology(*mesh);
-    auto layers = core::buildLayers(*capturer, *mesh, topology, *view, options);
+    auto layers = core::buildLayers(*capturer, *mesh, topology, *view, options, engine.get());
     if (!layers)
         return fail(args.model + ": " + layers.error());
 
@@ -257,6 +264,26 @@ int runLayers(const LayersArgs& args) {
     if (const core::Status s = writePly((dir / "mesh.ply").string(), *mesh); !s)
         return fail(s.error());
 
+    // How well each connection test follows the mesh (DESIGN.md §3 step 2's two properties).
+    json quality;
+    for (const core::ConnectionTest test :
+         {core::ConnectionTest::Plain, core::ConnectionTest::Surface}) {
+        core::ConnectivityOptions connectivity;
+        connectivity.test = test;
+        connectivity.threshold = options.threshold;
+        connectivity.unitScale = core::unitScale(*mesh);
+        const core::ConnectivityQuality q = core::measureConnectivity(
+            layers->stack,
+            core::computeConnectivity(layers->stack, connectivity, &layers->geometry), topology);
+        quality[test == core::ConnectionTest::Plain ? "plain" : "surface"] = {
+            {"same_triangle_pairs", q.sameTrianglePairs},
+            {"same_triangle_disconnected_share", q.sameTriangleDisconnectedShare()},
+            {"adjacent_triangle_pairs", q.adjacentTrianglePairs},
+            {"adjacent_triangle_disconnected_share", q.adjacentTriangleDisconnectedShare()},
+            {"connected_pairs", q.connectedPairs},
+            {"cross_component_share", q.crossComponentShare()}};
+    }
+
     const core::LayerTimings& t = layers->timings;
     const json summary = {
         {"model", args.model},
@@ -267,11 +294,14 @@ int runLayers(const LayersArgs& args) {
         {"threshold", options.threshold},
         {"two_sided", args.twoSided},
         {"capture", args.cpuCapture ? "cpu" : "gl"},
+        {"connectivity_engine",
+         engine ? render::connectivityBackendName(engine->backend()) : "cpu"},
         {"layers", perLayer.size()},
         {"fragments", layers->stack.fragmentCount()},
         {"fragments_per_layer", perLayer},
         {"regions", layers->segmentation.graph.regions.size()},
         {"links_truncated", layers->connectivity.truncated},
+        {"connectivity_quality", quality},
         {"view", std::vector<float>(glm::value_ptr(view->view), glm::value_ptr(view->view) + 16)},
         {"proj", std::vector<float>(glm::value_ptr(view->proj), glm::value_ptr(view->proj) + 16)},
         {"timings_ms",

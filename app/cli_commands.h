@@ -25,6 +25,7 @@ struct LayersArgs {
     bool plainTest = false;
     bool twoSided = false;
     bool cpuCapture = false;
+    std::string connectivity = "auto"; // auto | cpu | gpu
     std::string outDir;
 };
 
@@ -41,6 +42,7 @@ struct BenchArgs {
     std::vector<std::string> sizes = {"1280x720"};
     CameraArgs camera;
     int runs = 7;
+    std::string connectivity = "auto"; // the engine build_layers uses; both are timed anyway
     std::string jsonOut;
 };
 

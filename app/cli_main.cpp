@@ -41,6 +41,11 @@ int main(int argc, char** argv) {
     layersCommand->add_flag("--two-sided", layers.twoSided, "Capture back faces too");
     layersCommand->add_flag("--cpu", layers.cpuCapture,
                             "Capture on the CPU instead of OpenGL (no EGL needed)");
+    layersCommand
+        ->add_option("--connectivity", layers.connectivity,
+                     "Connectivity engine: auto (the faster here), cpu or gpu")
+        ->check(CLI::IsMember({"auto", "cpu", "gpu"}))
+        ->capture_default_str();
     layersCommand->add_option("--out", layers.outDir, "Output folder")->required();
 
     cli::PaintArgs paint;
@@ -69,6 +74,11 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--runs", bench.runs, "Measured runs per case")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
+    benchCommand
+        ->add_option("--connectivity", bench.connectivity,
+                     "Engine inside build_layers: auto, cpu or gpu (both are timed alone too)")
+        ->check(CLI::IsMember({"auto", "cpu", "gpu"}))
+        ->capture_default_str();
     benchCommand->add_option("--json", bench.jsonOut, "Also write the results to this file");
 
     try {

@@ -33,13 +33,13 @@ void Document::setLayerOptions(const LayerOptions& options) {
     } else if (m_layers) {
         if (m_tracker.inStroke())
             endStroke();
-        resegmentLayers(*m_layers, *m_mesh, m_layerOptions);
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
         m_tracker.setLayers(*m_layers);
     }
 }
 
 Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
-    auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions);
+    auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions, m_engine);
     if (!layers)
         return Error{layers.error()};
     clearLayers();
@@ -57,7 +57,7 @@ bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
     m_layers = std::make_unique<Layers>(std::move(layers));
     // The threshold may have moved while the worker ran: bring the result up to date.
     if (resegment)
-        resegmentLayers(*m_layers, *m_mesh, m_layerOptions);
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
     m_tracker.setLayers(*m_layers);
     return true;
 }

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 
 #include "core/camera.h"
@@ -46,6 +47,11 @@ public:
      */
     void setLayerOptions(const LayerOptions& options);
 
+    /**
+     * The connectivity engine used by buildLayers() and re-segmentation on this thread (nullptr:
+     * the CPU reference). Not owned; it must outlive its use here.
+     */
+    void setConnectivityEngine(ConnectivityEngine* engine) { m_engine = engine; }
     /** build_layers for view, synchronously. Keeps the old layers if the capture fails. */
     Status buildLayers(LayerCapturer& capturer, const View& view);
     /**
@@ -85,6 +91,13 @@ public:
     void endStroke();
     bool inStroke() const { return m_tracker.inStroke(); }
     const StrokeTracker& strokeTracker() const { return m_tracker; }
+    /**
+     * The paper's Figure 4 overlay of the last dab's maps (StrokeTracker::fillOverlay: Mp red,
+     * the rest of Mt blue); false if rgba is not 4 bytes a pixel of the layers' view.
+     */
+    bool fillBrushMaps(std::span<std::uint8_t> rgba, std::uint8_t alpha = 128) {
+        return m_tracker.fillOverlay(rgba, alpha);
+    }
     /** Undo / redo of paint; false when there is nothing to undo / redo. */
     bool undo(PaintChanges& changes);
     bool redo(PaintChanges& changes);
@@ -101,6 +114,7 @@ private:
     std::uint64_t m_meshSerial = 0;
     Camera m_camera;
     LayerOptions m_layerOptions;
+    ConnectivityEngine* m_engine = nullptr;
     std::unique_ptr<Layers> m_layers;
 
     Brush m_brush;

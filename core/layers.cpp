@@ -26,27 +26,30 @@ Result<LayerStack> CpuLayerCapturer::capture(const View& view, bool cullBackFace
 }
 
 Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
-                           const View& view, const LayerOptions& options) {
+                           const View& view, const LayerOptions& options,
+                           ConnectivityEngine* engine) {
     CaptureStats stats;
     auto stack = capturer.capture(view, options.cullBackFaces, &stats);
     if (!stack)
         return Error{stack.error()};
-    return finishLayers(std::move(stack).value(), stats, mesh, topology, view, options);
+    return finishLayers(std::move(stack).value(), stats, mesh, topology, view, options, engine);
 }
 
 Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
-                    const MeshTopology& topology, const View& view, const LayerOptions& options) {
+                    const MeshTopology& topology, const View& view, const LayerOptions& options,
+                    ConnectivityEngine* engine) {
     Layers layers;
     layers.view = view;
     layers.options = options;
     layers.stack = std::move(stack);
     layers.timings.capture = captureStats;
     layers.geometry = makeSurfaceGeometry(mesh, topology, view);
-    resegmentLayers(layers, mesh, options);
+    resegmentLayers(layers, mesh, options, engine);
     return layers;
 }
 
-void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options) {
+void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options,
+                     ConnectivityEngine* engine) {
     const bool cull = layers.options.cullBackFaces;
     layers.options = options;
     layers.options.cullBackFaces = cull;
@@ -57,7 +60,9 @@ void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& optio
     connectivity.unitScale = unitScale(mesh);
     connectivity.threads = options.threads;
     auto start = std::chrono::steady_clock::now();
-    layers.connectivity = computeConnectivity(layers.stack, connectivity, &layers.geometry);
+    layers.connectivity = engine
+                              ? engine->compute(layers.stack, connectivity, &layers.geometry)
+                              : computeConnectivity(layers.stack, connectivity, &layers.geometry);
     layers.timings.connectivityMs = millisecondsSince(start);
 
     start = std::chrono::steady_clock::now();

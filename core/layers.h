@@ -44,6 +44,17 @@ private:
     Mesh m_mesh;
 };
 
+/**
+ * Computes pixel connectivity for build_layers. Without one, core's CPU reference
+ * (computeConnectivity) is used; render offers an OpenGL compute pass with the same output.
+ */
+class ConnectivityEngine {
+public:
+    virtual ~ConnectivityEngine() = default;
+    virtual Connectivity compute(const LayerStack& stack, const ConnectivityOptions& options,
+                                 const SurfaceGeometry* geometry) = 0;
+};
+
 struct LayerOptions {
     ConnectionTest test = ConnectionTest::Surface;
     float threshold = 0.001f; // unit-cube units
@@ -77,19 +88,22 @@ struct Layers {
  * topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
  */
 Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
-                           const View& view, const LayerOptions& options);
+                           const View& view, const LayerOptions& options,
+                           ConnectivityEngine* engine = nullptr);
 
 /**
  * The CPU part of build_layers, for callers that capture themselves (the GUI captures on its GL
  * thread and finishes on a worker thread): connectivity, segmentation and region graph of stack.
  */
 Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
-                    const MeshTopology& topology, const View& view, const LayerOptions& options);
+                    const MeshTopology& topology, const View& view, const LayerOptions& options,
+                    ConnectivityEngine* engine = nullptr);
 
 /**
  * Recomputes connectivity and regions with new options (threshold, test) without capturing
  * again, as the threshold slider does. The capture options (cullBackFaces) are kept.
  */
-void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options);
+void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options,
+                     ConnectivityEngine* engine = nullptr);
 
 } // namespace core

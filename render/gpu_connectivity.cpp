@@ -359,4 +359,23 @@ core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectiv
     return core::computeConnectivity(stack, options, geometry);
 }
 
+GlConnectivityEngine::GlConnectivityEngine(ConnectivityBackend requested)
+    : m_backend(resolveConnectivityBackend(requested, isSoftwareRenderer())) {
+    if (m_backend == ConnectivityBackend::Gpu) {
+        m_gpu = std::make_unique<GpuConnectivity>();
+        if (!m_gpu->initialize()) {
+            m_gpu.reset();
+            m_backend = ConnectivityBackend::Cpu;
+        }
+    }
+}
+
+GlConnectivityEngine::~GlConnectivityEngine() = default;
+
+core::Connectivity GlConnectivityEngine::compute(const core::LayerStack& stack,
+                                                 const core::ConnectivityOptions& options,
+                                                 const core::SurfaceGeometry* geometry) {
+    return computeConnectivity(m_backend, m_gpu.get(), stack, options, geometry);
+}
+
 } // namespace render

@@ -7,6 +7,7 @@
 
 #include "core/connectivity.h"
 #include "core/layer_stack.h"
+#include "core/layers.h"
 #include "core/result.h"
 
 namespace render {
@@ -83,5 +84,25 @@ core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectiv
                                        const core::ConnectivityOptions& options,
                                        const core::SurfaceGeometry* geometry,
                                        ConnectivityBackend* used = nullptr);
+
+/**
+ * build_layers' connectivity step on the backend chosen for this machine (DESIGN.md §2: the
+ * faster of the two). Needs the current GL context at construction and for every compute().
+ */
+class GlConnectivityEngine : public core::ConnectivityEngine {
+public:
+    /** Resolves Auto by the current renderer; a GPU pass that fails to build falls back to CPU. */
+    explicit GlConnectivityEngine(ConnectivityBackend requested = ConnectivityBackend::Auto);
+    ~GlConnectivityEngine() override;
+    core::Connectivity compute(const core::LayerStack& stack,
+                               const core::ConnectivityOptions& options,
+                               const core::SurfaceGeometry* geometry) override;
+    /** Cpu or Gpu: what runs now. */
+    ConnectivityBackend backend() const { return m_backend; }
+
+private:
+    ConnectivityBackend m_backend = ConnectivityBackend::Cpu;
+    std::unique_ptr<GpuConnectivity> m_gpu;
+};
 
 } // namespace render
