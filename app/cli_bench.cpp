@@ -49,12 +49,13 @@ double msSince(Clock::time_point start) {
 /** Medians of every timed part over the runs of one model at one size. */
 struct Samples {
     std::vector<double> plain, captureGpu, captureResolve, connectivity, segmentation, buildLayers,
-        drawLayers, firstDraw, startStroke, moveStroke, connectivityCpu, connectivityGpu;
+        drawLayers, firstDraw, startStroke, moveStroke, dab, connectivityCpu, connectivityGpu;
 };
 
 struct StrokeTimes {
     std::vector<double> starts;
     std::vector<double> moves;
+    std::vector<double> dabs; // the paint target's share, per dab
 };
 
 /**
@@ -87,8 +88,12 @@ StrokeTimes timeStroke(core::Document& doc, const core::View& view) {
         }
         doc.moveStroke(point, changes);
         const double ms = msSince(start);
-        if (!changes.empty()) // a move shorter than the dab spacing only updates the path
+        if (!changes.empty()) { // a move shorter than the dab spacing only updates the path
             times.moves.push_back(ms);
+            const core::Document::DabStats& dabs = doc.lastDabStats();
+            if (dabs.dabs > 0)
+                times.dabs.push_back(dabs.targetMs / double(dabs.dabs));
+        }
     }
     if (doc.inStroke())
         doc.endStroke();
@@ -188,6 +193,7 @@ int runBench(const BenchArgs& args) {
                                            stroke.starts.end());
                 samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
                                           stroke.moves.end());
+                samples.dab.insert(samples.dab.end(), stroke.dabs.begin(), stroke.dabs.end());
                 const core::LayerTimings& t = layers->timings;
                 samples.plain.push_back(plain);
                 samples.captureGpu.push_back(t.capture.gpuMs);
@@ -228,6 +234,7 @@ int runBench(const BenchArgs& args) {
                 {"start_stroke_ms", median(samples.startStroke)},
                 {"move_stroke_ms", median(samples.moveStroke)},
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
+                {"dab_on_target_ms", median(samples.dab)},
             };
             std::cerr << model << ' ' << size << ": build_layers " << build
                       << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain

@@ -21,9 +21,9 @@ struct MapPixel {
  * a dab centre reached by the stroke tracking, and the brush state at that point.
  */
 struct Dab {
-    glm::vec2 center{0.0f}; // pixels, y down
-    float radius = 0.0f;    // screen radius R in pixels (after pressure)
-    float opacity = 1.0f;   // after pressure
+    glm::vec2 center{0.0f};  // pixels, y down
+    float radius = 0.0f;     // screen radius R in pixels (after pressure)
+    float opacity = 1.0f;    // after pressure
     std::uint32_t layer = 0; // 1-based layer of the centre's fragment
     std::vector<MapPixel> paintable;
 };
@@ -31,12 +31,12 @@ struct Dab {
 /** Brush settings an artist sets (DESIGN.md §3 step 6). Colours are linear RGBA. */
 struct Brush {
     glm::vec4 color{0.8f, 0.1f, 0.1f, 1.0f};
-    float radius = 32.0f;   // pixels
-    float hardness = 0.5f;  // 0 soft (falloff from the centre) .. 1 hard edge
-    float opacity = 1.0f;   // the most a stroke can reach
-    float flow = 1.0f;      // how much one dab adds towards it
-    float spacing = 0.15f;  // dab distance as a fraction of the radius
-    bool eraser = false;    // restores the original surface colour
+    float radius = 32.0f;  // pixels
+    float hardness = 0.5f; // 0 soft (falloff from the centre) .. 1 hard edge
+    float opacity = 1.0f;  // the most a stroke can reach
+    float flow = 1.0f;     // how much one dab adds towards it
+    float spacing = 0.15f; // dab distance as a fraction of the radius
+    bool eraser = false;   // restores the original surface colour
     bool pressureRadius = true;
     bool pressureOpacity = false;
     float trackRadius = 0.0f; // R_max in pixels; 0 = max(4R, 64)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/document.h"
 
+#include <chrono>
+
 namespace core {
 
 Document::Document()
@@ -114,6 +116,7 @@ void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
 }
 
 void Document::paintDabs(PaintChanges& changes) {
+    const auto start = std::chrono::steady_clock::now();
     for (const Dab& dab : m_dabs) {
         const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
         changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
@@ -121,6 +124,9 @@ void Document::paintDabs(PaintChanges& changes) {
         changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
                                 dabChanges.vertices.end());
     }
+    m_dabStats = {m_dabs.size(), std::chrono::duration<double, std::milli>(
+                                     std::chrono::steady_clock::now() - start)
+                                     .count()};
 }
 
 void Document::endStroke() {

@@ -90,6 +90,12 @@ public:
     /** Ends the stroke and records it for undo. */
     void endStroke();
     bool inStroke() const { return m_tracker.inStroke(); }
+    /** Dabs painted by the last beginStroke()/moveStroke() and the time spent on the target. */
+    struct DabStats {
+        std::size_t dabs = 0;
+        double targetMs = 0.0;
+    };
+    const DabStats& lastDabStats() const { return m_dabStats; }
     const StrokeTracker& strokeTracker() const { return m_tracker; }
     /**
      * The paper's Figure 4 overlay of the last dab's maps (StrokeTracker::fillOverlay: Mp red,
@@ -120,6 +126,7 @@ private:
     Brush m_brush;
     StrokeTracker m_tracker;
     std::vector<Dab> m_dabs; // reused between calls
+    DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;
     UndoHistory m_history;

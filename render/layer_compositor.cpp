@@ -17,6 +17,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/connectivity.h"
+#include "render/paint_texture.h"
 #include "render/shader_library.h"
 
 namespace render {
@@ -281,7 +282,9 @@ struct LayerCompositor::Impl {
     bool hasUvs = false;
     bool hasColors = false;
     std::uint32_t triangleCount = 0;
-    std::vector<GLuint> passTextures; // the textures materials sample: one pass each
+    std::size_t vertexCount = 0;
+    std::vector<PaintTexture> passTextures; // the textures materials sample: one pass each
+    std::vector<int> passOfTexture;         // per mesh texture: its pass, -1 for none
 
     // Layers
     bool hasLayers = false;
@@ -305,9 +308,8 @@ struct LayerCompositor::Impl {
     std::uint32_t resolvedLayer = 0;
 
     void releaseTextures() {
-        if (!passTextures.empty())
-            glDeleteTextures(GLsizei(passTextures.size()), passTextures.data());
         passTextures.clear();
+        passOfTexture.clear();
     }
 
     bool fits(std::size_t count, std::size_t elementBytes) const {
@@ -495,23 +497,11 @@ core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
 
     // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
     for (int texture : passImages) {
-        const core::Image& image = mesh.textures[std::size_t(texture)];
-        GLuint id = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &id);
-        int levels = 1;
-        for (int size = std::max(image.width, image.height); size > 1; size /= 2)
-            ++levels;
-        glTextureStorage2D(id, levels, GL_SRGB8_ALPHA8, image.width, image.height);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTextureSubImage2D(id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                            image.rgba.data());
-        glGenerateTextureMipmap(id);
-        glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        d.passTextures.push_back(id);
+        d.passTextures.emplace_back();
+        d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
     }
+    d.passOfTexture = std::move(passOf);
+    d.vertexCount = vertices;
     d.triangleCount = std::uint32_t(triangles);
     d.hasMesh = true;
     return {};
@@ -576,6 +566,25 @@ core::Status LayerCompositor::updateSegmentation(const core::Layers& layers) {
     const core::Status status = d.uploadSegmentation(layers);
     d.hasLayers = status.ok();
     return status;
+}
+
+void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                                   const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
+        return;
+    d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
+}
+
+void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
+        return;
+    const std::size_t count = std::min(colors.size(), d.vertexCount - first);
+    glNamedBufferSubData(d.buffers[kColors].id, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
+                         GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
+    // The shading holds the colours; the visible fragments stay as picked.
+    ++d.geometryVersion;
 }
 
 bool LayerCompositor::hasLayers() const {
@@ -702,7 +711,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         glUniform1i(p.texture, 0);
         glUniform1i(p.pass, int(pass));
         if (composeVariant & kTextured)
-            glBindTextureUnit(0, d.passTextures[pass]);
+            glBindTextureUnit(0, d.passTextures[pass].id());
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(d.tiles.size()));
         if (pass == 0 && resolve) {
             d.resolvedVersion = d.version;

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -72,6 +73,19 @@ public:
      * runs out. Buffers are reused while the data fits.
      */
     core::Status setMesh(const core::Mesh& mesh);
+    /**
+     * Painting: replaces texels [x, x + width) × [y, y + height) of mesh texture `texture` with
+     * those of image (its painted copy, same size), mip levels included. Textures are sampled
+     * when composing, so nothing else runs again. Ignored for a texture no material samples.
+     */
+    void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                      const core::Image& image);
+    /**
+     * Painting: replaces the colours of vertices [first, first + colors.size()) (clamped to the
+     * mesh; ignored if setMesh() had no vertex colours). Fragments are shaded with them, so the
+     * next draw shades every fragment again.
+     */
+    void updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors);
     /**
      * Uploads one build's fragments, links and regions; resets the region order. Returns an
      * Error (and keeps no layers) if the stack is inconsistent or exceeds the GL's limits.

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "render/mesh_renderer.h"
 
+#include <algorithm>
 #include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/paint_texture.h"
 #include "render/shader_library.h"
 
 namespace render {
@@ -15,7 +17,6 @@ struct Vertex {
     glm::vec3 position;
     glm::vec3 normal;
     glm::vec2 uv;
-    glm::vec4 color;
 };
 
 /** A range of consecutive triangles sharing one material (triangle order is kept). */
@@ -29,7 +30,9 @@ struct MaterialRun {
 struct MeshRenderer::Impl {
     ShaderProgram program;
     GLuint vao = 0, vbo = 0, ibo = 0;
-    std::vector<GLuint> textures;
+    GLuint colorBuffer = 0; // its own buffer, so painting updates it in place
+    std::size_t vertexCount = 0;
+    std::vector<PaintTexture> textures;
     std::vector<core::Material> materials;
     std::vector<MaterialRun> runs;
     bool hasMesh = false;
@@ -41,9 +44,10 @@ struct MeshRenderer::Impl {
             glDeleteBuffers(1, &vbo);
         if (ibo)
             glDeleteBuffers(1, &ibo);
-        if (!textures.empty())
-            glDeleteTextures(GLsizei(textures.size()), textures.data());
-        vao = vbo = ibo = 0;
+        if (colorBuffer)
+            glDeleteBuffers(1, &colorBuffer);
+        vao = vbo = ibo = colorBuffer = 0;
+        vertexCount = 0;
         textures.clear();
         runs.clear();
         hasMesh = false;
@@ -71,9 +75,14 @@ void MeshRenderer::setMesh(const core::Mesh& mesh) {
     std::vector<Vertex> vertices(mesh.vertexCount());
     for (std::size_t i = 0; i < vertices.size(); ++i) {
         vertices[i] = {mesh.positions[i], mesh.normals[i],
-                       mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f),
-                       mesh.hasColors() ? mesh.colors[i] : glm::vec4(1.0f)};
+                       mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
     }
+    d.vertexCount = vertices.size();
+    const std::vector<glm::vec4> colors =
+        mesh.hasColors() ? mesh.colors : std::vector<glm::vec4>(vertices.size(), glm::vec4(1.0f));
+    glCreateBuffers(1, &d.colorBuffer);
+    glNamedBufferStorage(d.colorBuffer, GLsizeiptr(std::max<std::size_t>(colors.size(), 1) * 16),
+                         colors.empty() ? nullptr : colors.data(), GL_DYNAMIC_STORAGE_BIT);
     glCreateBuffers(1, &d.vbo);
     glNamedBufferStorage(d.vbo, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
     glCreateBuffers(1, &d.ibo);
@@ -82,33 +91,21 @@ void MeshRenderer::setMesh(const core::Mesh& mesh) {
 
     glCreateVertexArrays(1, &d.vao);
     glVertexArrayVertexBuffer(d.vao, 0, d.vbo, 0, sizeof(Vertex));
+    glVertexArrayVertexBuffer(d.vao, 1, d.colorBuffer, 0, sizeof(glm::vec4));
     glVertexArrayElementBuffer(d.vao, d.ibo);
-    const auto attribute = [&](GLuint location, GLint size, GLuint offset) {
+    const auto attribute = [&](GLuint location, GLint size, GLuint offset, GLuint binding) {
         glEnableVertexArrayAttrib(d.vao, location);
         glVertexArrayAttribFormat(d.vao, location, size, GL_FLOAT, GL_FALSE, offset);
-        glVertexArrayAttribBinding(d.vao, location, 0);
+        glVertexArrayAttribBinding(d.vao, location, binding);
     };
-    attribute(0, 3, offsetof(Vertex, position));
-    attribute(1, 3, offsetof(Vertex, normal));
-    attribute(2, 2, offsetof(Vertex, uv));
-    attribute(3, 4, offsetof(Vertex, color));
+    attribute(0, 3, offsetof(Vertex, position), 0);
+    attribute(1, 3, offsetof(Vertex, normal), 0);
+    attribute(2, 2, offsetof(Vertex, uv), 0);
+    attribute(3, 4, 0, 1);
 
     for (const core::Image& image : mesh.textures) {
-        GLuint texture = 0;
-        glCreateTextures(GL_TEXTURE_2D, 1, &texture);
-        int levels = 1;
-        for (int size = std::max(image.width, image.height); size > 1; size /= 2)
-            ++levels;
-        glTextureStorage2D(texture, levels, GL_SRGB8_ALPHA8, image.width, image.height);
-        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        glTextureSubImage2D(texture, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
-                            image.rgba.data());
-        glGenerateTextureMipmap(texture);
-        glTextureParameteri(texture, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-        glTextureParameteri(texture, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(texture, GL_TEXTURE_WRAP_S, GL_REPEAT);
-        glTextureParameteri(texture, GL_TEXTURE_WRAP_T, GL_REPEAT);
-        d.textures.push_back(texture);
+        d.textures.emplace_back();
+        d.textures.back().create(image);
     }
     d.materials = mesh.materials;
 
@@ -123,6 +120,22 @@ void MeshRenderer::setMesh(const core::Mesh& mesh) {
 
 bool MeshRenderer::hasMesh() const {
     return m_impl->hasMesh;
+}
+
+void MeshRenderer::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                                const core::Image& image) {
+    Impl& d = *m_impl;
+    if (texture < d.textures.size())
+        d.textures[texture].update(image, x, y, width, height);
+}
+
+void MeshRenderer::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
+    Impl& d = *m_impl;
+    if (!d.colorBuffer || first >= d.vertexCount)
+        return;
+    const std::size_t count = std::min(colors.size(), d.vertexCount - first);
+    glNamedBufferSubData(d.colorBuffer, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
+                         GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
 }
 
 void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
@@ -155,7 +168,7 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         const bool textured = material.baseColorTexture >= 0;
         glUniform1i(hasTextureLocation, textured);
         if (textured)
-            glBindTextureUnit(0, d.textures[std::size_t(material.baseColorTexture)]);
+            glBindTextureUnit(0, d.textures[std::size_t(material.baseColorTexture)].id());
         glDrawElements(GL_TRIANGLES, GLsizei(run.triangleCount * 3), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(run.firstTriangle) * 12));
     }

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <span>
 
 #include <glm/vec4.hpp>
 
@@ -33,6 +35,14 @@ public:
     /** Uploads the mesh (replacing any previous one). */
     void setMesh(const core::Mesh& mesh);
     bool hasMesh() const;
+    /**
+     * Replaces texels [x, x + width) × [y, y + height) of mesh texture `texture` with those of
+     * image (its painted copy, same size), mip levels included; ignored for an unknown texture.
+     */
+    void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                      const core::Image& image);
+    /** Replaces the colours of vertices [first, first + colors.size()) (clamped to the mesh). */
+    void updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors);
     /** Draws into the currently bound framebuffer, with view.width × view.height as viewport. */
     void draw(const core::View& view, const DrawOptions& options = {});
     /** Frees every GL object; the context must be current. Called by the destructor too. */

@@ -21,6 +21,69 @@
     </message>
 </context>
 <context>
+    <name>ui::BrushToolBar</name>
+    <message>
+        <source>Brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush radius on screen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Hardness</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0: soft falloff from the centre, 100: a hard edge</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>O&amp;pacity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The most one stroke covers</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint &amp;into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where paint goes: a texture (meshes with UVs) or vertex colours. Changing it starts the painting afresh.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Texture %1 × %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Vertex colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Brush Colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
@@ -290,6 +353,82 @@ connectivity %3 ms, regions %4 ms
             <numerusform></numerusform>
             <numerusform></numerusform>
         </translation>
+    </message>
+    <message>
+        <source>&amp;Layer-Aware Painting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layer-aware painting (L): strokes follow a surface behind whatever covers it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint across depth layers; off: only the front-most surface is paintable</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Layer-aware painting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Conventional painting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show &amp;Brush Maps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>While painting, show the paintable (red) and trackable (blue) pixels around the brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot paint this model: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot paint: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint Stroke</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change Paint Target</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Painting into another target starts afresh: the painting so far and its undo history are discarded.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot paint into that target: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Paint</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

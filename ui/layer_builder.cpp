@@ -109,6 +109,7 @@ void LayerBuilder::capture() {
     // The CPU part on a worker. Mesh and topology are immutable and shared, so the document may
     // move on (even to another model) while it runs.
     m_workerBusy = true;
+    m_job = job;
     m_worker = std::thread([this, job, stack = std::move(stack).value(), stats,
                             mesh = m_document.sharedMesh(), topology = m_document.sharedTopology(),
                             view, options]() mutable {
@@ -127,7 +128,67 @@ void LayerBuilder::capture() {
     });
 }
 
+bool LayerBuilder::buildNow() {
+    if (!m_wanted && m_document.layers())
+        return true;
+    if (!m_viewport.canCapture())
+        return false;
+    m_settle.stop();
+    m_wanted = true;
+    // A worker's result for this view is as good as a new one and nearly done.
+    if (m_worker.joinable())
+        m_worker.join();
+    std::shared_ptr<Job> job = std::move(m_job);
+    m_workerBusy = false;
+    m_captureWhenIdle = false;
+    if (job && job->layers && adopt(*job))
+        return true;
+
+    job = std::make_shared<Job>();
+    job->clock.start();
+    job->viewSerial = m_viewport.viewSerial();
+    job->meshSerial = m_document.meshSerial();
+    const core::View view = m_viewport.view();
+    const core::LayerOptions options = m_document.layerOptions();
+    core::CaptureStats stats;
+    core::Result<core::LayerStack> stack =
+        m_viewport.captureLayers(view, options.cullBackFaces, &stats);
+    ++m_captures;
+    if (stack) {
+        try {
+            job->layers.emplace(core::finishLayers(std::move(stack).value(), stats,
+                                                   m_document.mesh(), m_document.topology(), view,
+                                                   options));
+        } catch (const std::bad_alloc&) {
+            job->error = "not enough memory for the layers of this view";
+        } catch (const std::exception& e) {
+            job->error = e.what();
+        }
+    } else {
+        job->error = stack.error();
+    }
+    if (job->layers && adopt(*job))
+        return true;
+    m_wanted = false; // tried again at the next view change
+    emit buildFailed(QString::fromStdString(job->error));
+    return false;
+}
+
+bool LayerBuilder::adopt(Job& job) {
+    if (job.viewSerial != m_viewport.viewSerial() || !m_wanted ||
+        !m_document.adoptLayers(std::move(*job.layers), job.meshSerial))
+        return false;
+    m_wanted = false;
+    m_lastBuildMs = double(job.clock.nsecsElapsed()) / 1e6;
+    m_viewport.showLayers();
+    emit layersBuilt();
+    return true;
+}
+
 void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
+    if (job != m_job)
+        return; // buildNow() already joined and settled it
+    m_job.reset();
     // Posted as the worker's last step: the join returns at once.
     if (m_worker.joinable())
         m_worker.join();
@@ -137,12 +198,7 @@ void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
     if (current && !job->layers) {
         m_wanted = false;
         emit buildFailed(QString::fromStdString(job->error));
-    } else if (current && m_wanted &&
-               m_document.adoptLayers(std::move(*job->layers), job->meshSerial)) {
-        m_wanted = false;
-        m_lastBuildMs = double(job->clock.nsecsElapsed()) / 1e6;
-        m_viewport.showLayers();
-        emit layersBuilt();
+    } else if (current && job->layers && adopt(*job)) {
         return;
     }
     // Stale: the view, the mesh or a capture option changed meanwhile.

@@ -52,6 +52,14 @@ public:
     /** Wall-clock milliseconds of the last adopted build, from capture start to adoption. */
     double lastBuildMs() const { return m_lastBuildMs; }
 
+    /**
+     * Makes sure the document has the layers of the current view now, building them on this
+     * thread if needed (a press must never paint with stale layers): adopts a running worker's
+     * result when it is for this view, else captures and finishes here. False if they cannot
+     * be built (no model or context, or the capture failed: buildFailed()).
+     */
+    bool buildNow();
+
 public slots:
     /** The view changed: drops the layers and builds again once the view has settled. */
     void invalidate();
@@ -72,11 +80,15 @@ private:
     void onSettled();
     void capture();
     void finish(const std::shared_ptr<Job>& job);
+    /** Adopts a finished job's layers if still current; true when adopted. */
+    bool adopt(Job& job);
 
     core::Document& m_document;
     Viewport& m_viewport;
     QTimer m_settle;
     std::thread m_worker;
+    /** The worker's job; a finish() for any other was settled by buildNow(). */
+    std::shared_ptr<Job> m_job;
     bool m_workerBusy = false;
     /** Layers of the current view are wanted and not yet there. */
     bool m_wanted = false;

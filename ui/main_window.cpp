@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -18,18 +19,23 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QScopedValueRollback>
 #include <QSettings>
 #include <QStatusBar>
+#include <QUndoStack>
 #include <QUrl>
 
+#include <algorithm>
 #include <utility>
 
 #include "core/builtin_models.h"
+#include "ui/brush_toolbar.h"
 #include "ui/layer_builder.h"
 #include "ui/layers_panel.h"
 #include "ui/model_loader.h"
 #include "ui/region_graph_panel.h"
 #include "ui/segmentation_controls.h"
+#include "ui/stroke_command.h"
 #include "ui/viewport.h"
 
 namespace ui {
@@ -46,6 +52,13 @@ const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
 const QString kThresholdKey = QStringLiteral("segmentation/threshold");
 const QString kTestKey = QStringLiteral("segmentation/test");
 const QString kTwoSidedKey = QStringLiteral("segmentation/twoSided");
+const QString kUndoBudgetKey = QStringLiteral("paint/undoBudgetMiB");
+constexpr int kDefaultUndoBudgetMiB = 512; // strokes are tiles of 64² texels: hundreds fit
+constexpr int kPaintMessageMs = 3000;
+
+double elapsedMs(const QElapsedTimer& clock) {
+    return double(clock.nsecsElapsed()) / 1e6;
+}
 
 bool isBuiltin(const QString& source) {
     return source.startsWith(kBuiltinPrefix);
@@ -96,6 +109,7 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->insertPermanentWidget(0, m_layerInfo);
 
     createPanels();
+    createPaintActions();
     createMenus();
 
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
@@ -252,6 +266,7 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
     m_boundariesAction->setStatusTip(tr("Outline where a surface is not connected to its "
                                         "neighbours on the same layer"));
     connect(m_boundariesAction, &QAction::toggled, m_viewport, &Viewport::setBoundariesVisible);
+    viewMenu->addAction(m_brushMapsAction);
 }
 
 void MainWindow::setDisplay(render::LayerDisplay display, std::uint32_t layer) {
@@ -345,6 +360,206 @@ void MainWindow::updateLayerInfo() {
                                      locale.toString(m_builder->lastBuildMs(), 'f', 1)));
 }
 
+void MainWindow::createPaintActions() {
+    m_undoStack = new QUndoStack(this);
+    {
+        const QSettings settings;
+        const int budget = settings.value(kUndoBudgetKey, kDefaultUndoBudgetMiB).toInt();
+        m_document->history().setBudget(std::size_t(std::clamp(budget, 16, 65536)) << 20);
+    }
+
+    m_brushBar = new BrushToolBar(this);
+    addToolBar(Qt::TopToolBarArea, m_brushBar);
+    m_brushBar->setBrush(m_document->brush());
+    m_viewport->setBrushRadius(m_document->brush().radius);
+    connect(m_brushBar, &BrushToolBar::brushChanged, this, [this](const core::Brush& brush) {
+        m_document->brush() = brush; // the next stroke uses it
+        m_viewport->setBrushRadius(brush.radius);
+    });
+    connect(m_brushBar, &BrushToolBar::targetRequested, this, &MainWindow::setPaintTarget);
+
+    // The paper's study checkbox: layer-aware or conventional painting, switchable any time.
+    m_layerAwareAction = new QAction(tr("&Layer-Aware Painting"), this);
+    m_layerAwareAction->setObjectName(QStringLiteral("actionLayerAware"));
+    m_layerAwareAction->setCheckable(true);
+    m_layerAwareAction->setChecked(m_document->layerAware());
+    m_layerAwareAction->setShortcut(QKeySequence(Qt::Key_L));
+    m_layerAwareAction->setToolTip(tr("Layer-aware painting (L): strokes follow a surface "
+                                      "behind whatever covers it"));
+    m_layerAwareAction->setStatusTip(tr("Paint across depth layers; off: only the front-most "
+                                        "surface is paintable"));
+    connect(m_layerAwareAction, &QAction::toggled, this, [this](bool on) {
+        m_document->setLayerAware(on);
+        statusBar()->showMessage(on ? tr("Layer-aware painting") : tr("Conventional painting"),
+                                 kPaintMessageMs);
+    });
+    QAction* first = m_brushBar->actions().value(0);
+    m_brushBar->insertAction(first, m_layerAwareAction);
+    m_brushBar->insertSeparator(first);
+
+    m_brushMapsAction = new QAction(tr("Show &Brush Maps"), this);
+    m_brushMapsAction->setObjectName(QStringLiteral("actionShowBrushMaps"));
+    m_brushMapsAction->setCheckable(true);
+    m_brushMapsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_5));
+    m_brushMapsAction->setStatusTip(tr("While painting, show the paintable (red) and trackable "
+                                       "(blue) pixels around the brush"));
+    connect(m_brushMapsAction, &QAction::toggled, m_viewport, &Viewport::setBrushMapsVisible);
+
+    m_undoAction = new QAction(tr("&Undo"), this);
+    m_undoAction->setObjectName(QStringLiteral("actionUndo"));
+    m_undoAction->setShortcut(QKeySequence::Undo);
+    m_undoAction->setEnabled(false);
+    connect(m_undoAction, &QAction::triggered, this, [this] {
+        finishStroke();
+        m_undoStack->undo();
+    });
+    connect(m_undoStack, &QUndoStack::canUndoChanged, m_undoAction, &QAction::setEnabled);
+    connect(m_undoStack, &QUndoStack::undoTextChanged, this, [this](const QString& text) {
+        m_undoAction->setText(text.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(text));
+    });
+    m_redoAction = new QAction(tr("&Redo"), this);
+    m_redoAction->setObjectName(QStringLiteral("actionRedo"));
+    m_redoAction->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)});
+    m_redoAction->setEnabled(false);
+    connect(m_redoAction, &QAction::triggered, this, [this] {
+        finishStroke();
+        m_undoStack->redo();
+    });
+    connect(m_undoStack, &QUndoStack::canRedoChanged, m_redoAction, &QAction::setEnabled);
+    connect(m_undoStack, &QUndoStack::redoTextChanged, this, [this](const QString& text) {
+        m_redoAction->setText(text.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(text));
+    });
+
+    connect(m_viewport, &Viewport::paintPressed, this, &MainWindow::onPaintPressed);
+    connect(m_viewport, &Viewport::paintMoved, this, &MainWindow::onPaintMoved);
+    connect(m_viewport, &Viewport::paintReleased, this, &MainWindow::onPaintReleased);
+    updateBrushBar();
+}
+
+void MainWindow::onPaintPressed(QPointF pixel, qreal pressure) {
+    finishStroke();
+    if (m_document->meshSerial() == 0 || m_document->mesh().triangleCount() == 0)
+        return;
+    QElapsedTimer clock;
+    clock.start();
+    m_strokeStats = {};
+    // Never paint with the layers of another view: build them now if they are not there.
+    if (!m_builder->buildNow())
+        return; // buildFailed() reported why
+    const bool hadTarget = m_document->hasPaintTarget();
+    std::string error;
+    if (!m_document->paintTarget(&error)) {
+        statusBar()->showMessage(
+            tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
+        return;
+    }
+    if (!hadTarget)
+        m_viewport->paintTargetChanged();
+    const core::UndoHistory& history = m_document->history();
+    m_historyMark = history.undoCount() + history.droppedCount();
+    core::PaintChanges changes;
+    const core::Status status =
+        m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
+    if (!status) {
+        statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+        return;
+    }
+    m_painting = true;
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->brushMapsChanged();
+    m_strokeStats.pressMs = elapsedMs(clock);
+}
+
+void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
+    if (!m_painting)
+        return;
+    QElapsedTimer clock;
+    clock.start();
+    core::PaintChanges changes;
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->brushMapsChanged();
+    const double ms = elapsedMs(clock);
+    ++m_strokeStats.moves;
+    m_strokeStats.totalMs += ms;
+    m_strokeStats.maxMs = std::max(m_strokeStats.maxMs, ms);
+}
+
+void MainWindow::onPaintReleased(QPointF pixel) {
+    if (!m_painting)
+        return;
+    core::PaintChanges changes;
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, 1.0f}, changes);
+    m_viewport->applyPaintChanges(changes);
+    finishStroke();
+}
+
+void MainWindow::finishStroke() {
+    if (!m_painting)
+        return;
+    m_painting = false;
+    m_document->endStroke();
+    const core::UndoHistory& history = m_document->history();
+    if (history.undoCount() + history.droppedCount() > m_historyMark)
+        m_undoStack->push(
+            new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
+    syncUndoStack();
+}
+
+void MainWindow::syncUndoStack() {
+    const core::UndoHistory& history = m_document->history();
+    const int undo = int(history.undoCount());
+    const int total = int(history.undoCount() + history.redoCount());
+    if (m_undoStack->index() == undo && m_undoStack->count() == total)
+        return;
+    // The core dropped steps (budget) or forgot them (new target): offer only what exists. The
+    // commands hold no data, so new ones stand in for the steps that are left.
+    const QScopedValueRollback guard(m_undoSuspended, true);
+    m_undoStack->clear();
+    for (int i = 0; i < total; ++i)
+        m_undoStack->push(
+            new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
+    m_undoStack->setIndex(undo);
+}
+
+void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
+    finishStroke();
+    if (m_document->meshSerial() == 0) {
+        m_paintOptions = options;
+        updateBrushBar();
+        return;
+    }
+    if (m_document->history().undoCount() > 0 && m_errorDialogs) {
+        const auto answer = QMessageBox::question(
+            this, tr("Change Paint Target"),
+            tr("Painting into another target starts afresh: the painting so far and its undo "
+               "history are discarded."),
+            QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
+        if (answer != QMessageBox::Discard) {
+            updateBrushBar();
+            return;
+        }
+    }
+    const core::Status status = m_document->resetPaintTarget(options);
+    if (!status) {
+        statusBar()->showMessage(
+            tr("Cannot paint into that target: %1").arg(QString::fromStdString(status.error())),
+            kStatusMessageMs);
+    } else {
+        m_paintOptions = options;
+        m_viewport->paintTargetChanged();
+    }
+    syncUndoStack();
+    updateBrushBar();
+}
+
+void MainWindow::updateBrushBar() {
+    const bool hasUvs = m_document->meshSerial() == 0 || m_document->mesh().hasUvs();
+    m_brushBar->setTarget(m_paintOptions, hasUvs);
+}
+
 void MainWindow::createMenus() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
 
@@ -374,6 +589,10 @@ void MainWindow::createMenus() {
     quitAction->setShortcut(QKeySequence::Quit);
     quitAction->setMenuRole(QAction::QuitRole);
 
+    QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
+    editMenu->addAction(m_undoAction);
+    editMenu->addAction(m_redoAction);
+
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* frameAction = viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
     frameAction->setObjectName(QStringLiteral("actionFrameAll"));
@@ -395,6 +614,9 @@ void MainWindow::createMenus() {
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock : {m_segmentationDock, m_layersDock, m_graphDock})
         panelsMenu->addAction(dock->toggleViewAction());
+
+    QMenu* paintMenu = menuBar()->addMenu(tr("&Paint"));
+    paintMenu->addAction(m_layerAwareAction);
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =
@@ -471,9 +693,19 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     stopProgress();
     m_source = source;
     updateModelInfo(*mesh);
+    finishStroke();
     // This window is the loader's only listener: the mesh moves into the document.
     m_document->setMesh(std::move(*mesh), source.toStdString());
     m_viewport->meshChanged();
+    if (m_paintOptions.kind == core::PaintTargetKind::Texture && !m_document->mesh().hasUvs()) {
+        // The document keeps its target options: vertex colours for this model, and the
+        // default (a texture when there are UVs) for the next.
+        m_paintOptions.kind.reset();
+        if (m_document->resetPaintTarget(m_paintOptions))
+            m_viewport->paintTargetChanged();
+    }
+    syncUndoStack();
+    updateBrushBar();
     setWindowTitle(tr("%1 — LayerPaint").arg(displayName(source)));
     if (!isBuiltin(source)) {
         m_recent.add(source);

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include <QMainWindow>
+#include <QPointF>
 #include <QPointer>
 #include <QString>
 #include <QStringList>
@@ -21,9 +22,11 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressDialog;
+class QUndoStack;
 
 namespace ui {
 
+class BrushToolBar;
 class LayerBuilder;
 class LayersPanel;
 class ModelLoader;
@@ -33,8 +36,10 @@ class Viewport;
 
 /**
  * The application window: owns the core::Document (model, camera, layers) and shows it in the
- * viewport and the Segmentation, Layers and Region Graph panels; the File/View/Help menus, the
- * status bar and the background loading of models. The open model only changes when a load
+ * viewport and the Segmentation, Layers and Region Graph panels; the File/Edit/View/Help menus,
+ * the brush bar, the status bar and the background loading of models. Painting: the viewport's
+ * left button drives the document's strokes, each stroke a StrokeCommand on the undo stack,
+ * which mirrors the document's (budgeted) undo history. The open model only changes when a load
  * succeeds.
  */
 class MainWindow : public QMainWindow {
@@ -59,6 +64,18 @@ public:
     LayersPanel* layersPanel() const { return m_layersPanel; }
     RegionGraphPanel* regionGraphPanel() const { return m_graphPanel; }
     SegmentationControls* segmentationControls() const { return m_segmentationControls; }
+    BrushToolBar* brushToolBar() const { return m_brushBar; }
+    QUndoStack* undoStack() const { return m_undoStack; }
+
+    /** What the last stroke's mouse moves cost on the GUI thread (tracking and painting). */
+    struct StrokeStats {
+        int moves = 0;
+        double totalMs = 0.0;
+        double maxMs = 0.0;
+        double pressMs = 0.0; // the press, including a layer build it needed
+    };
+    const StrokeStats& lastStrokeStats() const { return m_strokeStats; }
+    bool isPainting() const { return m_painting; }
 
     /**
      * Shows the layers as display; for SingleLayer, layer (1-based) is the one shown alone, 0
@@ -94,6 +111,16 @@ private:
     void createPanels();
     void createMenus();
     void createDisplayActions(QMenu* viewMenu);
+    void createPaintActions();
+    void onPaintPressed(QPointF pixel, qreal pressure);
+    void onPaintMoved(QPointF pixel, qreal pressure);
+    void onPaintReleased(QPointF pixel);
+    /** Ends a stroke in progress and puts it on the undo stack. */
+    void finishStroke();
+    /** Makes the undo stack offer exactly the document's undo and redo steps. */
+    void syncUndoStack();
+    void setPaintTarget(const core::PaintTargetOptions& options);
+    void updateBrushBar();
     void setLayerOptions(const core::LayerOptions& options);
     void onLayersBuilt();
     void onSegmentationChanged();
@@ -130,6 +157,21 @@ private:
     /** What "All layers" returns to: Composite or Segmentation. */
     render::LayerDisplay m_allLayersDisplay = render::LayerDisplay::Composite;
     QLabel* m_layerInfo = nullptr;
+
+    BrushToolBar* m_brushBar = nullptr;
+    QAction* m_layerAwareAction = nullptr;
+    QAction* m_brushMapsAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QUndoStack* m_undoStack = nullptr;
+    /** The undo stack is being rebuilt: its commands must not touch the document. */
+    bool m_undoSuspended = false;
+    bool m_painting = false;
+    /** undoCount() + droppedCount() of the history at the press: the stroke added a step. */
+    std::size_t m_historyMark = 0;
+    StrokeStats m_strokeStats;
+    core::PaintTargetOptions m_paintOptions;
+
     RecentFiles m_recent;
     QMenu* m_recentMenu = nullptr;
     QAction* m_orthographicAction = nullptr;

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "core/document.h"
+#include "render/brush_overlay.h"
 #include "render/gl_layer_capturer.h"
 #include "render/mesh_renderer.h"
 
@@ -21,6 +22,17 @@ namespace {
 constexpr float kOrbitDegreesPerPixel = 0.4f;
 constexpr float kZoomPerWheelStep = 0.85f; // one 15° notch moves 15% closer
 constexpr float kZoomPerDragPixel = 0.005f;
+
+render::PixelRect unite(const render::PixelRect& a, const render::PixelRect& b) {
+    if (a.empty())
+        return b;
+    if (b.empty())
+        return a;
+    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    const int x1 = std::max(a.x + a.width, b.x + b.width);
+    const int y1 = std::max(a.y + a.height, b.y + b.height);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
 
 qreal pressureOf(const QMouseEvent* event) {
     // Mice report 1 while a button is down; tablets their pen pressure.
@@ -33,6 +45,9 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
+    // Hover moves draw the brush outline.
+    setMouseTracking(true);
+    setCursor(Qt::CrossCursor);
 }
 
 Viewport::~Viewport() {
@@ -115,6 +130,127 @@ void Viewport::setBoundariesVisible(bool visible) {
     update();
 }
 
+void Viewport::setBrushMapsVisible(bool visible) {
+    if (m_brushMapsVisible == visible)
+        return;
+    m_brushMapsVisible = visible;
+    m_mapsRect = {};
+    if (visible)
+        brushMapsChanged();
+    update();
+}
+
+void Viewport::setBrushRadius(float radius) {
+    if (m_brushRadius == radius)
+        return;
+    m_brushRadius = radius;
+    if (m_cursorInside)
+        update();
+}
+
+void Viewport::paintTargetChanged() {
+    m_paintedMeshDirty = true; // uploaded where the context is current
+    m_compositorPaint.clear();
+    m_rendererPaint.clear();
+    update();
+}
+
+void Viewport::PendingPaint::add(const core::PaintChanges& changes) {
+    for (const core::TexelRect& rect : changes.texels) {
+        if (rect.width <= 0 || rect.height <= 0)
+            continue;
+        if (pages.size() <= rect.page)
+            pages.resize(std::size_t(rect.page) + 1);
+        core::TexelRect& box = pages[rect.page];
+        if (box.width <= 0) {
+            box = rect;
+            continue;
+        }
+        const int x1 = std::max(box.x + box.width, rect.x + rect.width);
+        const int y1 = std::max(box.y + box.height, rect.y + rect.height);
+        box.x = std::min(box.x, rect.x);
+        box.y = std::min(box.y, rect.y);
+        box.width = x1 - box.x;
+        box.height = y1 - box.y;
+    }
+    for (const core::VertexRange& range : changes.vertices) {
+        if (range.begin >= range.end)
+            continue;
+        if (vertices.begin >= vertices.end) {
+            vertices = range;
+        } else {
+            vertices.begin = std::min(vertices.begin, range.begin);
+            vertices.end = std::max(vertices.end, range.end);
+        }
+    }
+}
+
+void Viewport::applyPaintChanges(const core::PaintChanges& changes) {
+    if (changes.empty())
+        return;
+    m_compositorPaint.add(changes);
+    m_rendererPaint.add(changes);
+    update();
+}
+
+void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
+    if (!m_document.hasPaintTarget() || m_document.paintTarget() != m_shownTarget) {
+        pending.clear();
+        return;
+    }
+    const core::PaintTarget* target = m_document.paintTarget();
+    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target)) {
+        for (std::size_t page = 0; page < pending.pages.size(); ++page) {
+            const core::TexelRect& r = pending.pages[page];
+            if (r.width <= 0 || page >= texture->pageCount())
+                continue;
+            if (compositor)
+                m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                           texture->page(page));
+            else
+                m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                         texture->page(page));
+        }
+    } else if (const auto* colors = dynamic_cast<const core::VertexColorTarget*>(target)) {
+        const core::VertexRange range = pending.vertices;
+        const std::vector<glm::vec4>& all = colors->colors();
+        if (range.begin < range.end && range.end <= all.size()) {
+            const std::span<const glm::vec4> changed(all.data() + range.begin,
+                                                     range.end - range.begin);
+            if (compositor)
+                m_compositor->updateVertexColors(range.begin, changed);
+            else
+                m_renderer->updateVertexColors(range.begin, changed);
+        }
+    }
+    pending.clear();
+}
+
+void Viewport::brushMapsChanged() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_brushMapsVisible || !layers)
+        return;
+    const int width = layers->stack.width, height = layers->stack.height;
+    m_brushMaps.resize(std::size_t(width) * std::size_t(height) * 4);
+    if (!m_document.fillBrushMaps(m_brushMaps))
+        return;
+    // Mt (Mp included) is all the overlay shows: draw and upload only its bounding box.
+    int x0 = width, y0 = height, x1 = 0, y1 = 0;
+    for (const std::uint32_t pixel : m_document.strokeTracker().trackablePixels()) {
+        const int x = int(pixel % std::uint32_t(width)), y = int(pixel / std::uint32_t(width));
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y);
+        x1 = std::max(x1, x + 1);
+        y1 = std::max(y1, y + 1);
+    }
+    const render::PixelRect rect =
+        x0 < x1 ? render::PixelRect{x0, y0, x1 - x0, y1 - y0} : render::PixelRect{};
+    // The previous box is uploaded too, so what the maps left is cleared.
+    m_mapsUpload = unite(m_mapsUpload, unite(m_mapsRect, rect));
+    m_mapsRect = rect;
+    update();
+}
+
 void Viewport::setHighlightRegion(std::uint32_t region) {
     if (m_composite.highlightRegion == region)
         return;
@@ -179,6 +315,7 @@ void Viewport::cameraMoved() {
 void Viewport::invalidateView() {
     ++m_viewSerial;
     m_layersShown = false;
+    m_mapsRect = {}; // they describe the old view
     emit viewChanged();
     update();
 }
@@ -221,6 +358,12 @@ void Viewport::initializeGL() {
             capturer->layerCapture().release();
             compositor->release();
         }
+        // Without it painting works, only the brush outline and maps are missing.
+        auto overlay = std::make_unique<render::BrushOverlay>();
+        if (overlay->initialize())
+            m_overlay = std::move(overlay);
+        else
+            overlay->release();
     }
     // Reported from the event loop: a modal dialog inside initializeGL would re-enter it.
     if (!m_glError.isEmpty()) {
@@ -232,6 +375,9 @@ void Viewport::initializeGL() {
             Qt::QueuedConnection);
     }
     m_meshDirty = true;
+    m_compositorPaint.clear();
+    m_rendererPaint.clear();
+    m_mapsUpload = {};
     invalidateView(); // the GL objects are new: so are the layers they will hold
 }
 
@@ -240,12 +386,25 @@ void Viewport::resizeGL(int, int) {
 }
 
 void Viewport::uploadMeshIfDirty() {
-    if (!m_meshDirty || !m_renderer)
+    // A target made or replaced without paintTargetChanged() is caught here too.
+    const core::PaintTarget* target =
+        m_document.hasPaintTarget() ? m_document.paintTarget() : nullptr;
+    if (target != m_shownTarget)
+        m_paintedMeshDirty = true;
+    if ((!m_meshDirty && !m_paintedMeshDirty) || !m_renderer)
         return;
-    const core::Mesh& mesh = m_document.mesh();
+    // Once painted, the renderers draw the paint target's pages or colours; the capture needs
+    // only the geometry, which painting never changes.
+    if (m_meshDirty && m_capturer)
+        m_capturer->setMesh(m_document.mesh());
+    core::Mesh painted;
+    if (target)
+        painted = m_document.paintedMesh();
+    const core::Mesh& mesh = target ? painted : m_document.mesh();
+    m_shownTarget = target;
     m_renderer->setMesh(mesh);
-    if (m_capturer)
-        m_capturer->setMesh(mesh);
+    m_rendererPaint.clear();
+    m_compositorPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor) {
         const core::Status status = m_compositor->setMesh(mesh);
@@ -253,7 +412,9 @@ void Viewport::uploadMeshIfDirty() {
         if (!status)
             reportLayerError(status);
     }
+    m_layersShown = m_layersShown && m_compositorHasMesh;
     m_meshDirty = false;
+    m_paintedMeshDirty = false;
 }
 
 void Viewport::reportLayerError(const core::Status& status) {
@@ -274,16 +435,39 @@ void Viewport::paintGL() {
         return;
     uploadMeshIfDirty();
     // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
-    if (isShowingLayers())
+    const core::View current = view();
+    if (isShowingLayers()) {
+        flushPaint(m_compositorPaint, true);
         m_compositor->draw(m_composite);
-    else
-        m_renderer->draw(view(), options);
+    } else {
+        flushPaint(m_rendererPaint, false);
+        m_renderer->draw(current, options);
+    }
+    if (!m_overlay)
+        return;
+    render::BrushOverlayOptions overlay;
+    overlay.viewWidth = current.width;
+    overlay.viewHeight = current.height;
+    const core::Layers* layers = m_document.layers();
+    if (m_brushMapsVisible && layers && !m_mapsUpload.empty()) {
+        m_overlay->setMaps(layers->stack.width, layers->stack.height, m_brushMaps, m_mapsUpload);
+        m_mapsUpload = {};
+    }
+    if (m_brushMapsVisible && layers && isShowingLayers())
+        overlay.maps = m_mapsRect;
+    if (m_cursorInside && !isNavigating()) {
+        overlay.center = {float(m_cursor.x()), float(m_cursor.y())};
+        overlay.radius = m_brushRadius;
+    }
+    m_overlay->draw(overlay);
 }
 
 void Viewport::releaseGl() {
-    if (!m_renderer && !m_capturer && !m_compositor)
+    if (!m_renderer && !m_capturer && !m_compositor && !m_overlay)
         return;
     makeCurrent();
+    m_overlay.reset();
+    m_shownTarget = nullptr;
     m_compositor.reset();
     m_capturer.reset();
     m_renderer.reset();
@@ -329,13 +513,20 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_drag = drag;
     m_dragButton = event->button();
     m_lastPos = event->position();
+    m_cursor = toDevicePixels(event->position());
+    m_cursorInside = true;
     if (drag == Drag::Paint)
         emit paintPressed(toDevicePixels(event->position()), pressureOf(event));
     event->accept();
 }
 
 void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    m_cursor = toDevicePixels(event->position());
+    m_cursorInside = true;
     if (m_drag == Drag::None) {
+        if (m_brushRadius > 0.0f)
+            update(); // the outline follows
+
         QOpenGLWidget::mouseMoveEvent(event);
         return;
     }
@@ -376,6 +567,12 @@ void Viewport::mouseReleaseEvent(QMouseEvent* event) {
     m_drag = Drag::None;
     m_dragButton = Qt::NoButton;
     event->accept();
+}
+
+void Viewport::leaveEvent(QEvent* event) {
+    m_cursorInside = false;
+    update();
+    QOpenGLWidget::leaveEvent(event);
 }
 
 void Viewport::wheelEvent(QWheelEvent* event) {

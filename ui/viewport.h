@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include <QOpenGLWidget>
 #include <QPointF>
@@ -12,7 +13,9 @@
 #include "core/layer_stack.h"
 #include "core/layers.h"
 #include "core/mesh.h"
+#include "core/paint_target.h"
 #include "core/result.h"
+#include "render/brush_overlay.h"
 #include "render/layer_compositor.h"
 
 namespace core {
@@ -20,6 +23,7 @@ class Document;
 }
 
 namespace render {
+class BrushOverlay;
 class GlLayerCapturer;
 class MeshRenderer;
 } // namespace render
@@ -32,7 +36,9 @@ namespace ui {
  * draws the mesh with render::MeshRenderer; once they exist, it draws them with
  * render::LayerCompositor in the chosen display. Middle drag orbits, Shift+middle pans, the wheel
  * zooms; Alt+left/right/middle orbit, zoom and pan for tablets. The plain left button belongs to
- * painting (the paint* signals).
+ * painting (the paint* signals). Painting shows without a recapture: once the document has a
+ * paint target the renderers draw its painted mesh, and applyPaintChanges() updates only what
+ * a dab changed, at the next frame. The brush outline follows the mouse.
  */
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -75,6 +81,18 @@ public:
     /** True while the picture comes from the layers (the compositor), not from the mesh. */
     bool isShowingLayers() const;
 
+    // Painting.
+    /** The document's paint target was created or replaced: draw its painted mesh from now on. */
+    void paintTargetChanged();
+    /** Paint changed these texels or vertices of the paint target: shown at the next frame. */
+    void applyPaintChanges(const core::PaintChanges& changes);
+    /** The stroke moved: refreshes the Mp/Mt overlay when it is shown. */
+    void brushMapsChanged();
+    bool brushMapsVisible() const { return m_brushMapsVisible; }
+    /** The radius of the brush outline, in device pixels (0 hides it). */
+    void setBrushRadius(float radius);
+    float brushRadius() const { return m_brushRadius; }
+
     const render::CompositeOptions& compositeOptions() const { return m_composite; }
     render::LayerDisplay display() const { return m_composite.display; }
     std::uint32_t displayLayer() const { return m_composite.layer; }
@@ -88,6 +106,8 @@ public slots:
     void setBoundariesVisible(bool visible);
     /** A region drawn highlighted, or core::kNone. */
     void setHighlightRegion(std::uint32_t region);
+    /** Shows the paintable (red) and trackable (blue) maps of the last dab (the paper's Fig. 4). */
+    void setBrushMapsVisible(bool visible);
 
 signals:
     void orthographicChanged(bool orthographic);
@@ -112,6 +132,7 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void leaveEvent(QEvent* event) override;
 
 private:
     enum class Drag { None, Orbit, Pan, Zoom, Paint };
@@ -123,19 +144,46 @@ private:
     void uploadMeshIfDirty();
     void reportLayerError(const core::Status& status);
     void releaseGl();
+    /** What paint changed since a renderer last got it: a bounding rectangle per page. */
+    struct PendingPaint {
+        std::vector<core::TexelRect> pages; // width 0: clean
+        core::VertexRange vertices;         // begin == end: clean
+        void add(const core::PaintChanges& changes);
+        void clear() {
+            pages.clear();
+            vertices = {};
+        }
+    };
+    void flushPaint(PendingPaint& pending, bool compositor);
 
     core::Document& m_document;
     // These live only while the context does.
     std::unique_ptr<render::MeshRenderer> m_renderer;
     std::unique_ptr<render::GlLayerCapturer> m_capturer;
     std::unique_ptr<render::LayerCompositor> m_compositor;
+    std::unique_ptr<render::BrushOverlay> m_overlay;
     bool m_meshDirty = false;
+    bool m_paintedMeshDirty = false; // only the paint target's textures or colours are new
+    /** The paint target whose painted mesh the renderers hold (nullptr: the plain mesh). */
+    const core::PaintTarget* m_shownTarget = nullptr;
     bool m_compositorHasMesh = false;
     /** The compositor holds the document's layers of the current view. */
     bool m_layersShown = false;
     std::uint64_t m_viewSerial = 1;
     render::CompositeOptions m_composite;
     QString m_glError;
+
+    // Painting: each renderer catches up when it draws next (the mesh renderer only after the
+    // view moves), so a stroke costs the compositor's compose pass per frame.
+    PendingPaint m_compositorPaint;
+    PendingPaint m_rendererPaint;
+    bool m_brushMapsVisible = false;
+    std::vector<std::uint8_t> m_brushMaps; // view-sized RGBA, as Document::fillBrushMaps fills it
+    render::PixelRect m_mapsRect;          // what the maps cover now
+    render::PixelRect m_mapsUpload;        // what changed since the last upload
+    float m_brushRadius = 0.0f;
+    QPointF m_cursor; // device pixels
+    bool m_cursorInside = false;
 
     Drag m_drag = Drag::None;
     Qt::MouseButton m_dragButton = Qt::NoButton;

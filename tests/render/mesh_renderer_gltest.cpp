@@ -2,6 +2,7 @@
 // Renders through a headless EGL context (llvmpipe on CI) and compares with a CPU rasterization.
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <gtest/gtest.h>
 
@@ -110,6 +111,91 @@ TEST_F(GlTest, TrefoilSilhouetteMatchesCpuRasterization) {
         }
     EXPECT_GT(maxGreen - minGreen, 60);
     EXPECT_LT(maxGreen, 255);
+}
+
+/** Draws mesh into a fresh offscreen target, optionally changing the renderer before the draw. */
+template <typename Change>
+core::Image drawMesh(const core::Mesh& mesh, const core::View& view, Change change) {
+    render::OffscreenTarget target;
+    EXPECT_TRUE(target.create(view.width, view.height));
+    render::MeshRenderer renderer;
+    EXPECT_TRUE(renderer.initialize());
+    renderer.setMesh(mesh);
+    change(renderer);
+    target.bind();
+    renderer.draw(view);
+    core::Image image = target.readColor();
+    renderer.release();
+    return image;
+}
+
+int largeDifferences(const core::Image& a, const core::Image& b, int tolerance) {
+    int count = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i)
+        count += std::abs(int(a.rgba[i]) - int(b.rgba[i])) > tolerance;
+    return count;
+}
+
+TEST_F(GlTest, TexelUpdatesLookLikeAFreshUpload) {
+    core::Mesh mesh = core::makeTrefoil();
+    core::Image texture;
+    texture.width = 300; // odd mip sizes on the way down
+    texture.height = 200;
+    texture.rgba.resize(std::size_t(texture.width) * texture.height * 4);
+    for (int y = 0; y < texture.height; ++y)
+        for (int x = 0; x < texture.width; ++x) {
+            std::uint8_t* px = &texture.rgba[(std::size_t(y) * texture.width + x) * 4];
+            px[0] = std::uint8_t(x * 255 / texture.width);
+            px[1] = std::uint8_t(y * 255 / texture.height);
+            px[2] = 128;
+            px[3] = 255;
+        }
+    mesh.textures = {texture};
+    for (core::Material& material : mesh.materials)
+        material.baseColorTexture = 0;
+    core::Camera camera;
+    camera.frame(mesh.bounds());
+    const core::View view = camera.view(160, 120); // minified: the mip levels show
+
+    core::Image painted = texture;
+    for (int y = 40; y < 150; ++y)
+        for (int x = 33; x < 217; ++x) {
+            std::uint8_t* px = &painted.rgba[(std::size_t(y) * painted.width + x) * 4];
+            px[0] = 230;
+            px[1] = 20;
+            px[2] = 10;
+        }
+    core::Mesh paintedMesh = mesh;
+    paintedMesh.textures = {painted};
+    const core::Image fresh = drawMesh(paintedMesh, view, [](render::MeshRenderer&) {});
+    const core::Image updated = drawMesh(mesh, view, [&](render::MeshRenderer& renderer) {
+        renderer.updateTexels(0, 33, 40, 184, 110, painted);
+    });
+    const core::Image unchanged = drawMesh(mesh, view, [](render::MeshRenderer&) {});
+    // The update shows, and like an upload of the whole painted texture (the GL's mipmap
+    // filter and the linear-space one may round apart).
+    EXPECT_GT(largeDifferences(unchanged, fresh, 24), 500);
+    EXPECT_LT(largeDifferences(updated, fresh, 6), int(fresh.rgba.size() / 200));
+}
+
+TEST_F(GlTest, VertexColourUpdatesLookLikeAFreshUpload) {
+    core::Mesh mesh = core::makeTrefoil();
+    mesh.colors.assign(mesh.vertexCount(), glm::vec4(1.0f));
+    core::Camera camera;
+    camera.frame(mesh.bounds());
+    const core::View view = camera.view(160, 120);
+    core::Mesh painted = mesh;
+    const std::uint32_t first = 1000, count = 30000;
+    for (std::uint32_t i = first; i < first + count; ++i)
+        painted.colors[i] = {0.9f, 0.1f, 0.1f, 1.0f};
+    const core::Image fresh = drawMesh(painted, view, [](render::MeshRenderer&) {});
+    const core::Image updated = drawMesh(mesh, view, [&](render::MeshRenderer& renderer) {
+        renderer.updateVertexColors(
+            first, std::span<const glm::vec4>(painted.colors.data() + first, count));
+    });
+    const core::Image unchanged = drawMesh(mesh, view, [](render::MeshRenderer&) {});
+    EXPECT_GT(largeDifferences(unchanged, fresh, 24), 100);
+    EXPECT_EQ(largeDifferences(updated, fresh, 1), 0);
 }
 
 } // namespace
