@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The LayerPaint GUI: command line, translations, and the main window.
 #include <QApplication>
+#include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QLibraryInfo>
@@ -32,6 +33,11 @@ void describeOptions(QCommandLineParser& parser) {
         QCoreApplication::translate("main", "The model to open (glTF, OBJ, PLY, STL, OFF, ... or "
                                             "builtin:NAME). Without it the trefoil knot opens."),
         QCoreApplication::translate("main", "[file]"));
+    parser.addOption(QCommandLineOption(
+        QStringLiteral("connectivity"),
+        QCoreApplication::translate("main", "Where pixel connectivity is computed: auto (the "
+                                            "faster here), cpu or gpu."),
+        QStringLiteral("engine")));
 }
 
 } // namespace
@@ -79,6 +85,11 @@ int main(int argc, char* argv[]) {
     parser.process(app);
 
     ui::MainWindow window;
+    if (parser.isSet(QStringLiteral("connectivity")) &&
+        !window.setConnectivityBackend(parser.value(QStringLiteral("connectivity")))) {
+        qCritical("layerpaint: --connectivity must be auto, cpu or gpu");
+        return 2;
+    }
     window.show();
     window.openFromCommandLine(parser.positionalArguments());
     return QApplication::exec();

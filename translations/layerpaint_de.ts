@@ -19,6 +19,10 @@
         <source>[file]</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Where pixel connectivity is computed: auto (the faster here), cpu or gpu.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ui::BrushToolBar</name>
@@ -430,6 +434,14 @@ connectivity %3 ms, regions %4 ms
         <source>&amp;Paint</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>compute shader</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C++</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>
@@ -526,6 +538,30 @@ Smaller splits the view into more regions.</source>
     </message>
     <message>
         <source>Test:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>C++ (processor)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute shader (graphics card)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Where pixel connectivity is computed; both give the same result, Automatic picks the faster for this computer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connectivity:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic (%1)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

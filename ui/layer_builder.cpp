@@ -106,6 +106,18 @@ void LayerBuilder::capture() {
         return;
     }
 
+    // With the GL compute pass chosen, connectivity needs this thread's context: finish here
+    // (a choice made where the GPU is fast).
+    if (core::ConnectivityEngine* engine = m_viewport.connectivityEngine()) {
+        m_document.setConnectivityEngine(engine);
+        job->layers.emplace(core::finishLayers(std::move(stack).value(), stats, m_document.mesh(),
+                                               m_document.topology(), view, options, engine));
+        m_job = job;
+        finish(job);
+        return;
+    }
+    m_document.setConnectivityEngine(nullptr);
+
     // The CPU part on a worker. Mesh and topology are immutable and shared, so the document may
     // move on (even to another model) while it runs.
     m_workerBusy = true;
@@ -156,9 +168,11 @@ bool LayerBuilder::buildNow() {
     ++m_captures;
     if (stack) {
         try {
+            core::ConnectivityEngine* engine = m_viewport.connectivityEngine();
+            m_document.setConnectivityEngine(engine);
             job->layers.emplace(core::finishLayers(std::move(stack).value(), stats,
                                                    m_document.mesh(), m_document.topology(), view,
-                                                   options));
+                                                   options, engine));
         } catch (const std::bad_alloc&) {
             job->error = "not enough memory for the layers of this view";
         } catch (const std::exception& e) {

@@ -206,6 +206,15 @@ void MainWindow::createPanels() {
         makeDock(tr("Segmentation"), QStringLiteral("segmentationDock"), m_segmentationControls);
     connect(m_segmentationControls, &SegmentationControls::optionsChanged, this,
             &MainWindow::setLayerOptions);
+    connect(m_segmentationControls, &SegmentationControls::connectivityBackendChanged, this,
+            [this](int backend) {
+                setConnectivityBackend(QString::fromLatin1(render::connectivityBackendName(
+                                           render::ConnectivityBackend(backend))),
+                                       true);
+            });
+    setConnectivityBackend(QSettings()
+                               .value(QStringLiteral("layers/connectivity"), QStringLiteral("auto"))
+                               .toString());
 
     m_layersPanel = new LayersPanel(this);
     m_layersDock = makeDock(tr("Layers"), QStringLiteral("layersDock"), m_layersPanel);
@@ -303,6 +312,9 @@ void MainWindow::onLayersBuilt() {
     const core::Layers* layers = m_document->layers();
     if (!layers)
         return;
+    m_segmentationControls->setConnectivityInUse(
+        m_viewport->connectivityBackend() == render::ConnectivityBackend::Gpu ? tr("compute shader")
+                                                                              : tr("C++"));
     // A layer shown alone that this view does not have: show its deepest one.
     const std::uint32_t deepest = std::max(1u, layers->stack.maxLayers());
     if (m_viewport->displayLayer() > deepest)
@@ -788,6 +800,19 @@ void MainWindow::dropEvent(QDropEvent* event) {
         return;
     event->acceptProposedAction();
     openFile(path);
+}
+
+bool MainWindow::setConnectivityBackend(const QString& name, bool remember) {
+    const auto backend = render::parseConnectivityBackend(name.toStdString());
+    if (!backend)
+        return false;
+    m_viewport->setConnectivityBackend(*backend);
+    m_segmentationControls->setConnectivityBackend(int(*backend));
+    if (remember)
+        QSettings().setValue(QStringLiteral("layers/connectivity"),
+                             QString::fromLatin1(render::connectivityBackendName(*backend)));
+    m_builder->invalidate(); // rebuilt with the new engine once the view settles
+    return true;
 }
 
 } // namespace ui

@@ -56,6 +56,11 @@ public:
     void openFile(const QString& source);
     /** What the command line asks for: the first file, or the default model when there is none. */
     void openFromCommandLine(const QStringList& files);
+    /**
+     * Where build_layers computes connectivity: "auto", "cpu" or "gpu" (the --connectivity
+     * option; the Segmentation panel's choice is saved in the settings). False for other names.
+     */
+    bool setConnectivityBackend(const QString& name, bool remember = false);
 
     Viewport* viewport() const { return m_viewport; }
     core::Document& document() { return *m_document; }

@@ -10,6 +10,7 @@
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLocale>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QToolButton>
 
@@ -83,6 +84,19 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Threshold:"), thresholdRow);
     form->addRow(tr("Test:"), m_test);
     form->addRow(m_twoSided);
+    // DESIGN.md §2: the C++ path and the GL compute pass give the same links; Auto takes the
+    // faster for this renderer (C++ on software OpenGL).
+    m_connectivity = new QComboBox(this);
+    m_connectivity->setObjectName(QStringLiteral("connectivityBackend"));
+    m_connectivity->addItem(tr("Automatic"), 0);
+    m_connectivity->addItem(tr("C++ (processor)"), 1);
+    m_connectivity->addItem(tr("Compute shader (graphics card)"), 2);
+    m_connectivity->setToolTip(tr("Where pixel connectivity is computed; both give the same "
+                                  "result, Automatic picks the faster for this computer"));
+    form->addRow(tr("Connectivity:"), m_connectivity);
+    connect(m_connectivity, &QComboBox::currentIndexChanged, this, [this](int index) {
+        emit connectivityBackendChanged(m_connectivity->itemData(index).toInt());
+    });
 
     connect(m_threshold, &QSlider::valueChanged, this, [this](int position) {
         if (m_updating)
@@ -168,6 +182,16 @@ QString SegmentationControls::formatThreshold(float threshold) {
 
 void SegmentationControls::updateLabels() {
     m_thresholdValue->setText(formatThreshold(m_options.threshold));
+}
+
+void SegmentationControls::setConnectivityBackend(int backend) {
+    const QSignalBlocker block(m_connectivity);
+    m_connectivity->setCurrentIndex(std::max(0, m_connectivity->findData(backend)));
+}
+
+void SegmentationControls::setConnectivityInUse(const QString& name) {
+    m_connectivity->setItemText(0,
+                                name.isEmpty() ? tr("Automatic") : tr("Automatic (%1)").arg(name));
 }
 
 } // namespace ui

@@ -37,8 +37,14 @@ public:
     /** The threshold as shown next to the slider: two significant digits, no exponent. */
     static QString formatThreshold(float threshold);
 
+    /** The connectivity engine choice: render::ConnectivityBackend as int (Auto, Cpu, Gpu). */
+    void setConnectivityBackend(int backend);
+    /** Says which engine Auto resolved to, next to the choice. */
+    void setConnectivityInUse(const QString& name);
+
 signals:
     void optionsChanged(const core::LayerOptions& options);
+    void connectivityBackendChanged(int backend);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -51,6 +57,7 @@ private:
     QLabel* m_thresholdValue = nullptr;
     QComboBox* m_test = nullptr;
     QCheckBox* m_twoSided = nullptr;
+    QComboBox* m_connectivity = nullptr;
     bool m_updating = false;
 };
 

@@ -462,6 +462,51 @@ void Viewport::paintGL() {
     m_overlay->draw(overlay);
 }
 
+/** The compute pass in the viewport's context, for build_layers on the GUI thread. */
+class Viewport::ContextConnectivity : public core::ConnectivityEngine {
+public:
+    explicit ContextConnectivity(Viewport& viewport) : m_viewport(viewport) {}
+    core::Connectivity compute(const core::LayerStack& stack,
+                               const core::ConnectivityOptions& options,
+                               const core::SurfaceGeometry* geometry) override {
+        m_viewport.makeCurrent();
+        core::Connectivity result = m_viewport.m_connectivity->compute(stack, options, geometry);
+        m_viewport.doneCurrent();
+        return result;
+    }
+
+private:
+    Viewport& m_viewport;
+};
+
+void Viewport::setConnectivityBackend(render::ConnectivityBackend backend) {
+    if (backend == m_connectivityRequest)
+        return;
+    m_connectivityRequest = backend;
+    if (m_connectivity) {
+        makeCurrent();
+        m_connectivity.reset(); // made again, with the new choice, at the next use
+        doneCurrent();
+    }
+}
+
+core::ConnectivityEngine* Viewport::connectivityEngine() {
+    if (!m_connectivity && m_capturer) {
+        makeCurrent();
+        m_connectivity = std::make_unique<render::GlConnectivityEngine>(m_connectivityRequest);
+        doneCurrent();
+    }
+    if (!m_connectivity || m_connectivity->backend() != render::ConnectivityBackend::Gpu)
+        return nullptr;
+    if (!m_contextConnectivity)
+        m_contextConnectivity = std::make_unique<ContextConnectivity>(*this);
+    return m_contextConnectivity.get();
+}
+
+render::ConnectivityBackend Viewport::connectivityBackend() const {
+    return m_connectivity ? m_connectivity->backend() : render::ConnectivityBackend::Cpu;
+}
+
 void Viewport::releaseGl() {
     if (!m_renderer && !m_capturer && !m_compositor && !m_overlay)
         return;
@@ -470,6 +515,7 @@ void Viewport::releaseGl() {
     m_shownTarget = nullptr;
     m_compositor.reset();
     m_capturer.reset();
+    m_connectivity.reset();
     m_renderer.reset();
     doneCurrent();
     m_layersShown = false;

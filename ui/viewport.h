@@ -16,6 +16,7 @@
 #include "core/paint_target.h"
 #include "core/result.h"
 #include "render/brush_overlay.h"
+#include "render/gpu_connectivity.h"
 #include "render/layer_compositor.h"
 
 namespace core {
@@ -71,6 +72,18 @@ public:
     // Layers, driven by ui::LayerBuilder (the GL work it needs happens in this widget's context).
     /** True once the context is up and a model is loaded: captureLayers() can run. */
     bool canCapture() const;
+    /**
+     * Where build_layers computes pixel connectivity (DESIGN.md §2: the faster of the C++ path
+     * and the GL compute pass; Auto picks by renderer). Takes effect at the next build.
+     */
+    void setConnectivityBackend(render::ConnectivityBackend backend);
+    /**
+     * The engine for core::finishLayers / resegmentLayers: nullptr for the C++ reference (safe on
+     * any thread), or the compute pass in this widget's context (GUI thread only).
+     */
+    core::ConnectivityEngine* connectivityEngine();
+    /** The backend in use once resolved for this renderer (Cpu before the first use). */
+    render::ConnectivityBackend connectivityBackend() const;
     /** The GPU part of build_layers for view, with this widget's context current. */
     core::Result<core::LayerStack> captureLayers(const core::View& view, bool cullBackFaces,
                                                  core::CaptureStats* stats);
@@ -160,6 +173,10 @@ private:
     // These live only while the context does.
     std::unique_ptr<render::MeshRenderer> m_renderer;
     std::unique_ptr<render::GlLayerCapturer> m_capturer;
+    class ContextConnectivity;
+    render::ConnectivityBackend m_connectivityRequest = render::ConnectivityBackend::Auto;
+    std::unique_ptr<render::GlConnectivityEngine> m_connectivity;
+    std::unique_ptr<ContextConnectivity> m_contextConnectivity;
     std::unique_ptr<render::LayerCompositor> m_compositor;
     std::unique_ptr<render::BrushOverlay> m_overlay;
     bool m_meshDirty = false;

@@ -481,3 +481,29 @@ TEST_F(SegmentationTest, ThresholdSliderIsLogarithmic) {
 }
 
 } // namespace
+
+namespace {
+
+TEST_F(SegmentationTest, ConnectivityEngineChoiceGivesTheSameRegions) {
+    openTrefoil();
+    // On a software renderer Automatic means the C++ path.
+    EXPECT_EQ(viewport()->connectivityBackend(), render::ConnectivityBackend::Cpu);
+    const std::vector<std::uint8_t> cpuLinks = document().layers()->connectivity.links;
+    const std::size_t cpuRegions = document().layers()->segmentation.graph.regions.size();
+
+    auto* choice = m_window->findChild<QComboBox*>(QStringLiteral("connectivityBackend"));
+    ASSERT_NE(choice, nullptr);
+    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    choice->setFocus();
+    QTest::keyClick(choice, Qt::Key_End); // "Compute shader (graphics card)"
+    EXPECT_EQ(choice->currentIndex(), 2);
+    ASSERT_TRUE(built.wait(kBuildTimeoutMs));
+    ASSERT_NE(document().layers(), nullptr);
+    EXPECT_EQ(viewport()->connectivityBackend(), render::ConnectivityBackend::Gpu);
+    EXPECT_EQ(document().layers()->connectivity.links, cpuLinks);
+    EXPECT_EQ(document().layers()->segmentation.graph.regions.size(), cpuRegions);
+    EXPECT_EQ(QSettings().value(QStringLiteral("layers/connectivity")).toString(),
+              QStringLiteral("gpu"));
+}
+
+} // namespace
