@@ -308,7 +308,9 @@ int runLayers(const LayersArgs& args) {
          {{"capture_gpu", t.capture.gpuMs},
           {"capture_resolve", t.capture.resolveMs},
           {"connectivity", t.connectivityMs},
-          {"segmentation_and_graph", t.segmentationMs},
+          {"surface_planes", t.surfaceMs},
+          {"segmentation", t.segmentationMs - t.graphMs},
+          {"graph", t.graphMs},
           {"build_layers", t.totalMs()}}},
     };
     if (const core::Status s = writeJson((dir / "summary.json").string(), summary); !s)

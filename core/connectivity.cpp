@@ -329,31 +329,34 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     geometry.triangles.resize(count);
     const glm::dmat4 toView(view.view);
     const bool haveTopology = topology.triangleCount() == count;
-    for (std::size_t t = 0; t < count; ++t) {
-        SurfaceTriangle& tri = geometry.triangles[t];
-        if (haveTopology) {
-            tri.corners = topology.corners[t];
-            tri.component = topology.component[t];
+    // Independent per triangle: split over threads (this runs on every view change).
+    parallelRanges(int(count), 0, [&](int, int begin, int end) {
+        for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t) {
+            SurfaceTriangle& tri = geometry.triangles[t];
+            if (haveTopology) {
+                tri.corners = topology.corners[t];
+                tri.component = topology.component[t];
+            }
+            glm::dvec3 v[3];
+            bool valid = true;
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
+                valid = valid && index < mesh.positions.size();
+                if (valid)
+                    v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+            }
+            if (!valid)
+                continue;
+            const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+            const double length = glm::length(n);
+            if (!(length > 0.0) || !std::isfinite(length))
+                continue;
+            const glm::dvec3 unit = n / length;
+            // Offset from the centroid: the least rounding error over the whole triangle.
+            const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
+            tri.plane = glm::vec4(glm::vec3(unit), float(w));
         }
-        glm::dvec3 v[3];
-        bool valid = true;
-        for (int c = 0; c < 3; ++c) {
-            const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
-            valid = valid && index < mesh.positions.size();
-            if (valid)
-                v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
-        }
-        if (!valid)
-            continue;
-        const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
-        const double length = glm::length(n);
-        if (!(length > 0.0) || !std::isfinite(length))
-            continue;
-        const glm::dvec3 unit = n / length;
-        // Offset from the centroid: the least rounding error over the whole triangle.
-        const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
-        tri.plane = glm::vec4(glm::vec3(unit), float(w));
-    }
+    });
     return geometry;
 }
 

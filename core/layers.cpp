@@ -43,7 +43,9 @@ Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Me
     layers.options = options;
     layers.stack = std::move(stack);
     layers.timings.capture = captureStats;
+    const auto start = std::chrono::steady_clock::now();
     layers.geometry = makeSurfaceGeometry(mesh, topology, view);
+    layers.timings.surfaceMs = millisecondsSince(start);
     resegmentLayers(layers, mesh, options, engine);
     return layers;
 }
@@ -66,8 +68,11 @@ void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& optio
     layers.timings.connectivityMs = millisecondsSince(start);
 
     start = std::chrono::steady_clock::now();
-    layers.segmentation = segmentLayers(layers.stack, layers.connectivity, options.threads);
+    SegmentationTimings segmentation;
+    layers.segmentation =
+        segmentLayers(layers.stack, layers.connectivity, options.threads, &segmentation);
     layers.timings.segmentationMs = millisecondsSince(start);
+    layers.timings.graphMs = segmentation.graphMs;
 }
 
 } // namespace core

@@ -66,9 +66,11 @@ struct LayerOptions {
 struct LayerTimings {
     CaptureStats capture;
     double connectivityMs = 0.0;
+    double surfaceMs = 0.0;      // the Surface test's per-triangle planes for this view
     double segmentationMs = 0.0; // region labels and the region graph
+    double graphMs = 0.0;        // ... of which assembling the region graph
     double totalMs() const {
-        return capture.gpuMs + capture.resolveMs + connectivityMs + segmentationMs;
+        return capture.gpuMs + capture.resolveMs + surfaceMs + connectivityMs + segmentationMs;
     }
 };
 

@@ -2,6 +2,7 @@
 #include "core/segmentation.h"
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <numeric>
 
@@ -93,7 +94,9 @@ void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t
 
 } // namespace
 
-Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, unsigned threads) {
+Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, unsigned threads,
+                           SegmentationTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
     Segmentation out;
     const std::size_t fragments = stack.fragmentCount();
     if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1 ||
@@ -214,6 +217,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
             }
     });
 
+    const auto graphStart = std::chrono::steady_clock::now();
     // 5. Region nodes: merge the bands' partial nodes.
     RegionGraph& graph = out.graph;
     graph.regions = std::move(part[0].regions);
@@ -263,6 +267,13 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         const std::uint32_t r = std::uint32_t(key >> 32), s = std::uint32_t(key & 0xffffffffu);
         graph.neighbors[fill[r]++] = {s, count};
         graph.neighbors[fill[s]++] = {r, count};
+    }
+    if (timings) {
+        const auto ms = [](auto a, auto b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        const auto end = std::chrono::steady_clock::now();
+        *timings = {ms(start, graphStart), ms(graphStart, end)};
     }
     return out;
 }

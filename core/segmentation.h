@@ -58,7 +58,13 @@ struct Segmentation {
  * outside the neighbour's fragment list are ignored. Returns an empty Segmentation when the
  * connectivity does not match the stack.
  */
+/** Where segmentLayers() spends its time (milliseconds). */
+struct SegmentationTimings {
+    double labelsMs = 0.0; // union-find, region ids and per-band link lists
+    double graphMs = 0.0;  // region nodes and edges assembled from them
+};
+
 Segmentation segmentLayers(const LayerStack& stack, const Connectivity& connectivity,
-                           unsigned threads = 0);
+                           unsigned threads = 0, SegmentationTimings* timings = nullptr);
 
 } // namespace core
