@@ -32,6 +32,8 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "core/json_depth.h"
+
 static_assert(std::endian::native == std::endian::little,
               "glTF buffers are little-endian and are written with memcpy");
 
@@ -51,7 +53,6 @@ constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
-constexpr int kMaxJsonDepth = 128;
 constexpr std::uint64_t kMaxJsonBytes = 256ull << 20;
 
 std::string errnoText(int err) {
@@ -588,29 +589,6 @@ Status writeAtomically(const std::string& path,
 // ---------------------------------------------------------------------------------------------
 // Reading extras
 
-/** Whether [ / { nest deeper than kMaxJsonDepth outside strings. */
-bool nestingTooDeep(std::string_view text) {
-    int depth = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth)
-                return true;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return false;
-}
-
 Result<Json> readExtras(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
@@ -651,7 +629,7 @@ Result<Json> readExtras(const std::string& path) {
     in.seekg(static_cast<std::streamoff>(jsonOffset));
     if (!in.read(text.data(), static_cast<std::streamsize>(jsonLength)))
         return Error{"cannot be read"};
-    if (nestingTooDeep(text))
+    if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
     Json root = Json::parse(text, nullptr, false);
     if (root.is_discarded())

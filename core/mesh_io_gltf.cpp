@@ -40,6 +40,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "core/json_depth.h"
 #include "core/mesh_io.h"
 
 static_assert(std::endian::native == std::endian::little,
@@ -57,7 +58,6 @@ using Json = nlohmann::json;
 
 constexpr std::uint64_t kMaxIndex = std::numeric_limits<std::int32_t>::max();
 constexpr std::uint64_t kMaxByteSize = std::numeric_limits<std::uint32_t>::max();
-constexpr int kMaxJsonDepth = 128;
 
 constexpr int kByte = TINYGLTF_COMPONENT_TYPE_BYTE;
 constexpr int kUByte = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
@@ -127,29 +127,6 @@ std::string checkGlb(const std::vector<std::uint8_t>& bytes, GlbParts& parts) {
 
 // ---------------------------------------------------------------------------------------------
 // JSON checks
-
-/** Whether [ / { nest deeper than kMaxJsonDepth outside strings. */
-bool nestingTooDeep(std::string_view text) {
-    int depth = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '[' || c == '{') {
-            if (++depth > kMaxJsonDepth)
-                return true;
-        } else if (c == ']' || c == '}') {
-            --depth;
-        }
-    }
-    return false;
-}
 
 /** The types the glTF 2.0 schema gives the properties; the first violation is reported. */
 class SchemaCheck {
@@ -1468,7 +1445,7 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     }
     const std::string_view jsonText(reinterpret_cast<const char*>(bytes.data()) + parts.jsonOffset,
                                     static_cast<std::size_t>(parts.jsonLength));
-    if (nestingTooDeep(jsonText))
+    if (jsonNestingTooDeep(jsonText))
         return Error{"the JSON is nested too deeply"};
     Json json;
     try {
