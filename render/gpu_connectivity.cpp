@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 #include <glm/trigonometric.hpp>
 
+#include "render/gl_buffer.h"
 #include "render/shader_library.h"
 
 namespace render {
@@ -51,40 +52,12 @@ enum Binding : GLuint {
  * the CPU writes as it checks the offsets, and the links it reads back) are persistently and
  * coherently mapped, so neither needs a copy of its own.
  */
-struct Buffer {
-    GLuint id = 0;
-    void* data = nullptr; // the mapping, for a mapped buffer
-    std::size_t bytes = 0;
-
+struct Buffer : GlStorageBuffer {
     bool reserve(std::size_t size, GLbitfield mapping) {
         if (size <= bytes && id)
             return true;
-        free();
         // A little headroom, so a view with a few more fragments does not reallocate.
-        const std::size_t wanted = std::max<std::size_t>(size + size / 8, 64);
-        const GLbitfield flags = mapping ? mapping | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT
-                                         : GL_DYNAMIC_STORAGE_BIT;
-        while (glGetError() != GL_NO_ERROR) {
-        }
-        glCreateBuffers(1, &id);
-        glNamedBufferStorage(id, GLsizeiptr(wanted), nullptr, flags);
-        if (glGetError() != GL_NO_ERROR ||
-            (mapping && !(data = glMapNamedBufferRange(id, 0, GLsizeiptr(wanted), flags)))) {
-            free();
-            return false;
-        }
-        bytes = wanted;
-        return true;
-    }
-    void free() {
-        if (id) {
-            if (data)
-                glUnmapNamedBuffer(id);
-            glDeleteBuffers(1, &id);
-        }
-        id = 0;
-        data = nullptr;
-        bytes = 0;
+        return allocate(std::max<std::size_t>(size + size / 8, 64), mapping);
     }
 };
 

@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl_buffer.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 #include "render/shader_library.h"
@@ -57,38 +58,10 @@ struct alignas(64) Band {
     std::vector<std::uint32_t> perLayer;
 };
 
-/** A persistently, coherently mapped buffer: the CPU reads the GPU's lists in place. */
-struct MappedBuffer {
-    GLuint id = 0;
-    void* data = nullptr;
-    std::size_t bytes = 0;
-
+/** The CPU reads the GPU's lists in place. */
+struct MappedBuffer : GlStorageBuffer {
     bool allocate(std::size_t size) {
-        free();
-        const GLbitfield flags =
-            GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-        while (glGetError() != GL_NO_ERROR) {
-        }
-        glCreateBuffers(1, &id);
-        glNamedBufferStorage(id, GLsizeiptr(size), nullptr, flags);
-        if (glGetError() == GL_NO_ERROR)
-            data = glMapNamedBufferRange(id, 0, GLsizeiptr(size), flags);
-        if (!data) {
-            free();
-            return false;
-        }
-        bytes = size;
-        return true;
-    }
-    void free() {
-        if (id) {
-            if (data)
-                glUnmapNamedBuffer(id);
-            glDeleteBuffers(1, &id);
-        }
-        id = 0;
-        data = nullptr;
-        bytes = 0;
+        return GlStorageBuffer::allocate(size, GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
     }
 };
 
