@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/render/gl_test.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/builtin_models.h"
@@ -26,15 +28,8 @@ namespace {
 
 using core::ConnectionTest;
 
-class GpuConnectivityGlTest : public ::testing::Test {
+class GpuConnectivityGlTest : public render_test::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto context = render::HeadlessContext::create();
-        ASSERT_TRUE(context) << context.error();
-        s_context = std::move(context).value();
-    }
-    static void TearDownTestSuite() { s_context.reset(); }
-
     void SetUp() override {
         ASSERT_TRUE(s_context);
         const core::Status status = m_gpu.initialize();
@@ -42,10 +37,8 @@ protected:
     }
     void TearDown() override { m_gpu.release(); }
 
-    static std::unique_ptr<render::HeadlessContext> s_context;
     render::GpuConnectivity m_gpu;
 };
-std::unique_ptr<render::HeadlessContext> GpuConnectivityGlTest::s_context;
 
 struct Scene {
     std::string name;

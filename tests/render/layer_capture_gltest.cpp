@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/render/gl_test.h"
+
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -24,15 +26,8 @@
 
 namespace {
 
-class LayerCaptureGlTest : public ::testing::Test {
+class LayerCaptureGlTest : public render_test::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto context = render::HeadlessContext::create();
-        ASSERT_TRUE(context) << context.error();
-        s_context = std::move(context).value();
-    }
-    static void TearDownTestSuite() { s_context.reset(); }
-
     void SetUp() override {
         ASSERT_TRUE(s_context);
         const core::Status status = m_capture.initialize();
@@ -49,10 +44,8 @@ protected:
         return result ? std::move(result).value() : core::LayerStack{};
     }
 
-    static std::unique_ptr<render::HeadlessContext> s_context;
     render::LayerCapture m_capture;
 };
-std::unique_ptr<render::HeadlessContext> LayerCaptureGlTest::s_context;
 
 /** A parallelogram: corners o, o + u, o + u + v, o + v; front-facing where u × v faces the eye. */
 struct Quad {

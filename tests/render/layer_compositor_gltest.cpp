@@ -15,6 +15,8 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include "tests/render/gl_test.h"
+
 #include "core/builtin_models.h"
 #include "core/camera.h"
 #include "core/image_write.h"
@@ -33,15 +35,8 @@ using core::kNone;
 
 constexpr std::uint32_t kUnranked = 0xfffffffeu;
 
-class LayerCompositorGlTest : public ::testing::Test {
+class LayerCompositorGlTest : public render_test::GlTest {
 protected:
-    static void SetUpTestSuite() {
-        auto context = render::HeadlessContext::create();
-        ASSERT_TRUE(context) << context.error();
-        s_context = std::move(context).value();
-    }
-    static void TearDownTestSuite() { s_context.reset(); }
-
     void SetUp() override {
         ASSERT_TRUE(s_context);
         core::Status status = m_compositor.initialize();
@@ -90,12 +85,10 @@ protected:
         return target.readColor();
     }
 
-    static std::unique_ptr<render::HeadlessContext> s_context;
     render::LayerCompositor m_compositor;
     render::GlLayerCapturer m_capturer;
     render::MeshRenderer m_renderer;
 };
-std::unique_ptr<render::HeadlessContext> LayerCompositorGlTest::s_context;
 
 void saveImage(const core::Image& image, const std::string& name) {
     const char* dir = std::getenv("LAYERPAINT_TEST_IMAGES");

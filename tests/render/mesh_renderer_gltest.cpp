@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/render/gl_test.h"
+
 #include "core/builtin_models.h"
 #include "core/camera.h"
 #include "render/gl_context.h"
@@ -15,17 +17,7 @@
 
 namespace {
 
-class GlTest : public ::testing::Test {
-protected:
-    static void SetUpTestSuite() {
-        auto context = render::HeadlessContext::create();
-        ASSERT_TRUE(context) << context.error();
-        s_context = std::move(context).value();
-    }
-    static void TearDownTestSuite() { s_context.reset(); }
-    static std::unique_ptr<render::HeadlessContext> s_context;
-};
-std::unique_ptr<render::HeadlessContext> GlTest::s_context;
+using render_test::GlTest;
 
 /** Pixel-centre coverage of the mesh's triangles, rows top first (the CPU reference). */
 std::vector<std::uint8_t> cpuCoverage(const core::Mesh& mesh, const core::View& view) {
