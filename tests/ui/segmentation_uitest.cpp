@@ -31,6 +31,7 @@
 
 #include "core/document.h"
 #include "render/layer_compositor.h"
+#include "tests/ui/ui_test_util.h"
 #include "ui/layer_builder.h"
 #include "ui/layers_panel.h"
 #include "ui/main_window.h"
@@ -40,25 +41,7 @@
 
 namespace {
 
-constexpr int kLoadTimeoutMs = 60000;
-constexpr int kBuildTimeoutMs = 30000;
-
-int channelDifference(QRgb a, QRgb b) {
-    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                     std::abs(qBlue(a) - qBlue(b))});
-}
-
-double differingFraction(const QImage& a, const QImage& b) {
-    const QImage ra = a.convertToFormat(QImage::Format_RGB32);
-    const QImage rb = b.convertToFormat(QImage::Format_RGB32);
-    if (ra.size() != rb.size())
-        return 1.0;
-    qint64 count = 0;
-    for (int y = 0; y < ra.height(); ++y)
-        for (int x = 0; x < ra.width(); ++x)
-            count += channelDifference(ra.pixel(x, y), rb.pixel(x, y)) > 8 ? 1 : 0;
-    return double(count) / double(qint64(ra.width()) * ra.height());
-}
+using namespace ui_test;
 
 QRgb backgroundRgb() {
     const glm::vec4 c = render::CompositeOptions{}.background;

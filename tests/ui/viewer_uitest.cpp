@@ -30,6 +30,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/builtin_models.h"
+#include "tests/ui/ui_test_util.h"
 #include "ui/main_window.h"
 #include "ui/model_loader.h"
 #include "ui/recent_files.h"
@@ -37,16 +38,11 @@
 
 namespace {
 
-constexpr int kLoadTimeoutMs = 60000;
+using namespace ui_test;
 
 QString boxPath() {
     return QStringLiteral(LAYERPAINT_ASSIMP_MODELS
                           "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb");
-}
-
-int channelDifference(QRgb a, QRgb b) {
-    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                     std::abs(qBlue(a) - qBlue(b))});
 }
 
 /** Fraction of pixels that differ from the top-left (background) pixel. */
@@ -58,19 +54,6 @@ double foregroundFraction(const QImage& image) {
         for (int x = 0; x < rgb.width(); ++x)
             count += channelDifference(rgb.pixel(x, y), background) > 8 ? 1 : 0;
     return double(count) / double(qint64(rgb.width()) * rgb.height());
-}
-
-/** Fraction of pixels that differ between two images of the same size. */
-double differingFraction(const QImage& a, const QImage& b) {
-    const QImage ra = a.convertToFormat(QImage::Format_RGB32);
-    const QImage rb = b.convertToFormat(QImage::Format_RGB32);
-    if (ra.size() != rb.size())
-        return 1.0;
-    qint64 count = 0;
-    for (int y = 0; y < ra.height(); ++y)
-        for (int x = 0; x < ra.width(); ++x)
-            count += channelDifference(ra.pixel(x, y), rb.pixel(x, y)) > 8 ? 1 : 0;
-    return double(count) / double(qint64(ra.width()) * ra.height());
 }
 
 class ViewerTest : public ::testing::Test {

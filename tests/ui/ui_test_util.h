@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <algorithm>
+#include <cstdlib>
+
+#include <QImage>
+#include <QRgb>
+
+namespace ui_test {
+
+// Generous: llvmpipe under a loaded CI machine is slow, and a test waits only as long as needed.
+inline constexpr int kLoadTimeoutMs = 60000;
+inline constexpr int kBuildTimeoutMs = 30000;
+
+/** The largest difference of the red, green and blue channels. */
+inline int channelDifference(QRgb a, QRgb b) {
+    return std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                     std::abs(qBlue(a) - qBlue(b))});
+}
+
+/** Fraction of pixels that differ (by more than 8 in a channel); 1 for different sizes. */
+inline double differingFraction(const QImage& a, const QImage& b) {
+    const QImage ra = a.convertToFormat(QImage::Format_RGB32);
+    const QImage rb = b.convertToFormat(QImage::Format_RGB32);
+    if (ra.size() != rb.size())
+        return 1.0;
+    qint64 count = 0;
+    for (int y = 0; y < ra.height(); ++y)
+        for (int x = 0; x < ra.width(); ++x)
+            count += channelDifference(ra.pixel(x, y), rb.pixel(x, y)) > 8 ? 1 : 0;
+    return double(count) / double(qint64(ra.width()) * ra.height());
+}
+
+} // namespace ui_test
