@@ -25,6 +25,28 @@ void Document::clearLayers() {
         endStroke();
     m_tracker.clearLayers();
     m_layers.reset();
+    m_order = {};
+    m_ranks.clear();
+}
+
+void Document::layersChanged() {
+    m_tracker.setLayers(*m_layers);
+    m_order = RegionOrder(m_layers->segmentation.graph);
+    m_ranks = m_order.ranks();
+    m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
+}
+
+void Document::setRegionOrder(RegionOrder order) {
+    if (!m_layers || order.regionCount() != m_layers->segmentation.graph.regions.size())
+        return;
+    m_order = std::move(order);
+    m_ranks = m_order.ranks();
+}
+
+std::uint32_t Document::visibleFragment(std::size_t pixel) const {
+    if (!m_layers)
+        return kNone;
+    return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
 }
 
 void Document::setLayerOptions(const LayerOptions& options) {
@@ -36,7 +58,7 @@ void Document::setLayerOptions(const LayerOptions& options) {
         if (m_tracker.inStroke())
             endStroke();
         resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
-        m_tracker.setLayers(*m_layers);
+        layersChanged();
     }
 }
 
@@ -46,7 +68,7 @@ Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
         return Error{layers.error()};
     clearLayers();
     m_layers = std::make_unique<Layers>(std::move(layers).value());
-    m_tracker.setLayers(*m_layers);
+    layersChanged();
     return {};
 }
 
@@ -60,7 +82,7 @@ bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
     // The threshold may have moved while the worker ran: bring the result up to date.
     if (resegment)
         resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
-    m_tracker.setLayers(*m_layers);
+    layersChanged();
     return true;
 }
 

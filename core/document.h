@@ -12,6 +12,7 @@
 #include "core/mesh.h"
 #include "core/mesh_topology.h"
 #include "core/paint_target.h"
+#include "core/region_order.h"
 #include "core/stroke_tracker.h"
 #include "core/undo_tiles.h"
 
@@ -26,6 +27,9 @@ namespace core {
 class Document {
 public:
     Document();
+    // The stroke tracker refers back to this object.
+    Document(const Document&) = delete;
+    Document& operator=(const Document&) = delete;
 
     /** Replaces the model (its topology is computed here); drops the layers, frames the camera. */
     void setMesh(Mesh mesh, std::string name);
@@ -63,6 +67,21 @@ public:
     const Layers* layers() const { return m_layers.get(); }
     /** Drops the layers, e.g. when the view changes (they describe the old view). */
     void clearLayers();
+
+    // Region order (DESIGN.md §3 step 3), of the current layers; a new build or re-segmentation
+    // starts from the initial order (region ids change).
+
+    const RegionOrder& regionOrder() const { return m_order; }
+    /** Replaces the order (pop-up, hiding, undo); ignored unless it has the layers' regions. */
+    void setRegionOrder(RegionOrder order);
+    /** The order's ranks (RegionOrder::ranks()), kept up to date. */
+    const std::vector<std::uint32_t>& regionRanks() const { return m_ranks; }
+    /**
+     * The fragment drawn at pixel (y * width + x of the layers' view): the one whose region comes
+     * first in the order, skipping hidden regions. kNone on background, outside the view or
+     * without layers.
+     */
+    std::uint32_t visibleFragment(std::size_t pixel) const;
 
     // Painting (DESIGN.md §3 steps 5-6).
 
@@ -113,6 +132,8 @@ public:
 
 private:
     void paintDabs(PaintChanges& changes);
+    /** The layers were replaced or re-segmented: a fresh order, the tracker told. */
+    void layersChanged();
 
     std::shared_ptr<const Mesh> m_mesh;
     std::shared_ptr<const MeshTopology> m_topology;
@@ -122,6 +143,8 @@ private:
     LayerOptions m_layerOptions;
     ConnectivityEngine* m_engine = nullptr;
     std::unique_ptr<Layers> m_layers;
+    RegionOrder m_order;
+    std::vector<std::uint32_t> m_ranks;
 
     Brush m_brush;
     StrokeTracker m_tracker;

@@ -22,6 +22,7 @@
 #include <QScopedValueRollback>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QUrl>
 
@@ -110,6 +111,7 @@ MainWindow::MainWindow(QWidget* parent)
 
     createPanels();
     createPaintActions();
+    createToolActions();
     createMenus();
 
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
@@ -449,10 +451,84 @@ void MainWindow::createPaintActions() {
     updateBrushBar();
 }
 
-void MainWindow::onPaintPressed(QPointF pixel, qreal pressure) {
+void MainWindow::createToolActions() {
+    m_toolBar = addToolBar(tr("Tools"));
+    m_toolBar->setObjectName(QStringLiteral("toolsToolBar"));
+    m_toolGroup = new QActionGroup(this);
+    m_toolGroup->setExclusive(true);
+    struct ToolInfo {
+        Tool tool;
+        QString name;
+        QString text;
+        QKeySequence key;
+        QString tip;
+    };
+    const ToolInfo tools[] = {
+        {Tool::Brush, QStringLiteral("Brush"), tr("&Brush"), QKeySequence(Qt::Key_B),
+         tr("Paint strokes with the brush")},
+        {Tool::Eraser, QStringLiteral("Eraser"), tr("&Eraser"), QKeySequence(Qt::Key_E),
+         tr("Erase paint back to the model's original colours")},
+        {Tool::Fill, QStringLiteral("Fill"), tr("&Fill"), QKeySequence(Qt::Key_G),
+         tr("Flood fill with the brush colour")},
+        {Tool::Eyedropper, QStringLiteral("Eyedropper"), tr("E&yedropper"), QKeySequence(Qt::Key_I),
+         tr("Pick the surface colour under the cursor (or Ctrl+click)")},
+        {Tool::Hide, QStringLiteral("Hide"), tr("Paint to &Hide"), QKeySequence(Qt::Key_H),
+         tr("Hide every region the brush touches, revealing what lies behind")},
+        {Tool::PopUp, QStringLiteral("PopUp"), tr("&Pop Up"), QKeySequence(Qt::Key_P),
+         tr("Bring the region below the visible one to the front (or Shift+click); click again "
+            "to cycle")},
+    };
+    for (const ToolInfo& info : tools) {
+        QAction* action = new QAction(info.text, m_toolGroup);
+        action->setObjectName(QStringLiteral("actionTool") + info.name);
+        action->setCheckable(true);
+        action->setShortcut(info.key);
+        action->setToolTip(
+            QStringLiteral("%1 (%2)").arg(info.tip, info.key.toString(QKeySequence::NativeText)));
+        action->setStatusTip(info.tip);
+        connect(action, &QAction::triggered, this, [this, tool = info.tool] { setTool(tool); });
+        m_toolActions[std::size_t(info.tool)] = action;
+        m_toolBar->addAction(action);
+    }
+    // Not implemented yet: enabled by the changes that add them.
+    for (const Tool tool : {Tool::Fill, Tool::Eyedropper, Tool::Hide, Tool::PopUp})
+        toolAction(tool)->setEnabled(false);
+    toolAction(Tool::Brush)->setChecked(true);
+}
+
+void MainWindow::setTool(Tool tool) {
+    QAction* action = toolAction(tool);
+    if (!action->isEnabled())
+        return;
+    finishStroke();
+    action->setChecked(true);
+    if (tool == m_tool)
+        return;
+    m_tool = tool;
+    emit toolChanged(tool);
+}
+
+void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers) {
     finishStroke();
     if (m_document->meshSerial() == 0 || m_document->mesh().triangleCount() == 0)
         return;
+    const Tool tool = toolForPress(m_tool, modifiers);
+    if (!toolAction(tool)->isEnabled())
+        return;
+    switch (tool) {
+    case Tool::Brush:
+    case Tool::Eraser:
+        beginPaintStroke(pixel, pressure, tool == Tool::Eraser);
+        return;
+    case Tool::Fill:
+    case Tool::Eyedropper:
+    case Tool::Hide:
+    case Tool::PopUp:
+        return;
+    }
+}
+
+void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     QElapsedTimer clock;
     clock.start();
     m_strokeStats = {};
@@ -470,6 +546,7 @@ void MainWindow::onPaintPressed(QPointF pixel, qreal pressure) {
         m_viewport->paintTargetChanged();
     const core::UndoHistory& history = m_document->history();
     m_historyMark = history.undoCount() + history.droppedCount();
+    m_document->brush().eraser = eraser;
     core::PaintChanges changes;
     const core::Status status =
         m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
@@ -629,6 +706,8 @@ void MainWindow::createMenus() {
 
     QMenu* paintMenu = menuBar()->addMenu(tr("&Paint"));
     paintMenu->addAction(m_layerAwareAction);
+    paintMenu->addSeparator();
+    paintMenu->addActions(m_toolGroup->actions());
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 
@@ -15,6 +16,7 @@
 #include "core/mesh.h"
 #include "render/layer_compositor.h"
 #include "ui/recent_files.h"
+#include "ui/tool.h"
 
 class QAction;
 class QActionGroup;
@@ -22,6 +24,7 @@ class QDockWidget;
 class QLabel;
 class QMenu;
 class QProgressDialog;
+class QToolBar;
 class QUndoStack;
 
 namespace ui {
@@ -72,6 +75,12 @@ public:
     BrushToolBar* brushToolBar() const { return m_brushBar; }
     QUndoStack* undoStack() const { return m_undoStack; }
 
+    /** The tool of the left button (the Tools toolbar and menu). */
+    Tool tool() const { return m_tool; }
+    void setTool(Tool tool);
+    /** The checkable action that chooses tool (disabled while the tool cannot be used). */
+    QAction* toolAction(Tool tool) const { return m_toolActions[std::size_t(tool)]; }
+
     /** What the last stroke's mouse moves cost on the GUI thread (tracking and painting). */
     struct StrokeStats {
         int moves = 0;
@@ -106,6 +115,7 @@ signals:
     void loadFailed(const QString& message);
     /** A region was chosen (a click in the region graph). */
     void regionActivated(std::uint32_t region);
+    void toolChanged(ui::Tool tool);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -117,7 +127,10 @@ private:
     void createMenus();
     void createDisplayActions(QMenu* viewMenu);
     void createPaintActions();
-    void onPaintPressed(QPointF pixel, qreal pressure);
+    void createToolActions();
+    void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
+    /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
+    void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
     void onPaintMoved(QPointF pixel, qreal pressure);
     void onPaintReleased(QPointF pixel);
     /** Ends a stroke in progress and puts it on the undo stack. */
@@ -164,6 +177,10 @@ private:
     QLabel* m_layerInfo = nullptr;
 
     BrushToolBar* m_brushBar = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    QActionGroup* m_toolGroup = nullptr;
+    std::array<QAction*, 6> m_toolActions{};
+    Tool m_tool = Tool::Brush;
     QAction* m_layerAwareAction = nullptr;
     QAction* m_brushMapsAction = nullptr;
     QAction* m_undoAction = nullptr;

@@ -562,7 +562,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_cursor = toDevicePixels(event->position());
     m_cursorInside = true;
     if (drag == Drag::Paint)
-        emit paintPressed(toDevicePixels(event->position()), pressureOf(event));
+        emit paintPressed(toDevicePixels(event->position()), pressureOf(event), event->modifiers());
     event->accept();
 }
 

@@ -133,7 +133,8 @@ signals:
     void layerRenderingFailed(const QString& message);
 
     // The painting hook: positions in device pixels, origin top-left (DESIGN.md §4).
-    void paintPressed(QPointF pixel, qreal pressure);
+    // modifiers are those held at the press (ui::toolForPress).
+    void paintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
     void paintMoved(QPointF pixel, qreal pressure);
     void paintReleased(QPointF pixel);
 
