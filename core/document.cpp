@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/document.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace core {
@@ -27,12 +28,14 @@ void Document::clearLayers() {
     m_layers.reset();
     m_order = {};
     m_ranks.clear();
+    m_fragmentHidden.clear();
+    m_tracker.setHiddenFragments({});
 }
 
 void Document::layersChanged() {
     m_tracker.setLayers(*m_layers);
     m_order = RegionOrder(m_layers->segmentation.graph);
-    m_ranks = m_order.ranks();
+    orderChanged();
     m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
 }
 
@@ -40,7 +43,84 @@ void Document::setRegionOrder(RegionOrder order) {
     if (!m_layers || order.regionCount() != m_layers->segmentation.graph.regions.size())
         return;
     m_order = std::move(order);
+    orderChanged();
+}
+
+void Document::orderChanged() {
     m_ranks = m_order.ranks();
+    ++m_orderSerial;
+    // Hidden regions take no paint: the tracker skips their fragments.
+    const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+    const bool anyHidden = std::any_of(m_ranks.begin(), m_ranks.end(),
+                                       [](std::uint32_t rank) { return rank == kNone; });
+    m_fragmentHidden.clear();
+    if (anyHidden) {
+        m_fragmentHidden.resize(region.size());
+        for (std::size_t f = 0; f < region.size(); ++f)
+            m_fragmentHidden[f] = std::uint8_t(m_order.isHidden(region[f]));
+    }
+    m_tracker.setHiddenFragments(m_fragmentHidden);
+}
+
+std::optional<std::size_t> Document::pixelIndex(glm::vec2 pixel) const {
+    if (!m_layers || !(pixel.x >= 0.0f && pixel.y >= 0.0f))
+        return std::nullopt;
+    const LayerStack& stack = m_layers->stack;
+    const auto x = std::size_t(pixel.x), y = std::size_t(pixel.y);
+    if (x >= std::size_t(stack.width) || y >= std::size_t(stack.height))
+        return std::nullopt;
+    return y * std::size_t(stack.width) + x;
+}
+
+std::uint32_t Document::popUpAt(glm::vec2 pixel) {
+    const auto index = pixelIndex(pixel);
+    if (!index)
+        return kNone;
+    const std::vector<std::uint32_t> regions =
+        regionsAtPixel(m_layers->stack, m_layers->segmentation.region, *index);
+    const std::uint32_t region = m_order.cycleAt(regions);
+    if (region != kNone)
+        orderChanged();
+    return region;
+}
+
+bool Document::popUpRegion(std::uint32_t region) {
+    if (region >= m_order.regionCount())
+        return false;
+    m_order.popUpWithNeighbours(region);
+    orderChanged();
+    return true;
+}
+
+std::size_t Document::hideAlong(glm::vec2 a, glm::vec2 b, float radius,
+                                std::span<const std::uint32_t> ranks) {
+    if (!m_layers || !(radius >= 0.0f))
+        return 0;
+    const std::vector<std::uint32_t> regions =
+        visibleRegionsAlong(m_layers->stack, m_layers->segmentation.region, ranks, a, b, radius);
+    std::size_t hidden = 0;
+    for (const std::uint32_t region : regions) {
+        if (!m_order.isHidden(region)) {
+            m_order.hide(region);
+            ++hidden;
+        }
+    }
+    if (hidden > 0)
+        orderChanged();
+    return hidden;
+}
+
+std::optional<glm::vec3> Document::surfacePoint(glm::vec2 pixel) const {
+    const auto index = pixelIndex(pixel);
+    if (!index)
+        return std::nullopt;
+    const std::uint32_t fragment = visibleFragment(*index);
+    if (fragment == kNone)
+        return std::nullopt;
+    const LayerStack& stack = m_layers->stack;
+    const glm::vec2 centre(float(*index % std::size_t(stack.width)) + 0.5f,
+                           float(*index / std::size_t(stack.width)) + 0.5f);
+    return m_layers->view.unproject(centre, stack.depth[fragment]);
 }
 
 std::uint32_t Document::visibleFragment(std::size_t pixel) const {
@@ -140,6 +220,8 @@ void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
 void Document::paintDabs(PaintChanges& changes) {
     const auto start = std::chrono::steady_clock::now();
     for (const Dab& dab : m_dabs) {
+        if (m_autoPopUp && m_tracker.layerAware())
+            popUpUnder(dab);
         const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
         changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
                               dabChanges.texels.end());
@@ -149,6 +231,20 @@ void Document::paintDabs(PaintChanges& changes) {
     m_dabStats = {m_dabs.size(), std::chrono::duration<double, std::milli>(
                                      std::chrono::steady_clock::now() - start)
                                      .count()};
+}
+
+void Document::popUpUnder(const Dab& dab) {
+    const auto index = pixelIndex(dab.center);
+    if (!index || dab.layer == 0)
+        return;
+    const std::uint32_t fragment = m_layers->stack.fragment(*index, dab.layer);
+    if (fragment == kNone || fragment == visibleFragment(*index))
+        return;
+    const std::uint32_t region = m_layers->segmentation.region[fragment];
+    if (region >= m_order.regionCount() || m_order.isHidden(region))
+        return;
+    m_order.popUp(region);
+    orderChanged();
 }
 
 void Document::endStroke() {

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 
@@ -82,6 +83,35 @@ public:
      * without layers.
      */
     std::uint32_t visibleFragment(std::size_t pixel) const;
+    /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
+    std::uint64_t regionOrderSerial() const { return m_orderSerial; }
+    /**
+     * Intentional pop-up at a window pixel (the paper's click): the region below the visible
+     * fragment comes to the front with its neighbours; repeated clicks cycle through the pixel's
+     * regions. Returns the region popped up, kNone on background or without layers.
+     */
+    std::uint32_t popUpAt(glm::vec2 pixel);
+    /** Intentional pop-up of a region (a click in the region graph); false if unknown. */
+    bool popUpRegion(std::uint32_t region);
+    /**
+     * Automatic pop-up while painting (default on): a layer-aware dab whose centre is on a
+     * fragment that is not the visible one pops that fragment's region up.
+     */
+    void setAutoPopUp(bool on) { m_autoPopUp = on; }
+    bool autoPopUp() const { return m_autoPopUp; }
+    /**
+     * Paint-to-hide: hides every region visible (in the order given by ranks, e.g. the order at
+     * the start of the hiding stroke, so a stroke does not drill through what it reveals) at a
+     * pixel whose centre lies within radius of the segment from a to b. Returns how many
+     * regions were hidden.
+     */
+    std::size_t hideAlong(glm::vec2 a, glm::vec2 b, float radius,
+                          std::span<const std::uint32_t> ranks);
+    /**
+     * The world point of the visible fragment at a window pixel (the pivot of layer-aware
+     * rotation), from its view depth; nullopt on background or without layers.
+     */
+    std::optional<glm::vec3> surfacePoint(glm::vec2 pixel) const;
 
     // Painting (DESIGN.md §3 steps 5-6).
 
@@ -134,6 +164,11 @@ private:
     void paintDabs(PaintChanges& changes);
     /** The layers were replaced or re-segmented: a fresh order, the tracker told. */
     void layersChanged();
+    void orderChanged();
+    /** Automatic pop-up of the region under a dab's centre when it is not the visible one. */
+    void popUpUnder(const Dab& dab);
+    /** y * width + x of a window pixel of the layers' view, or nullopt outside it. */
+    std::optional<std::size_t> pixelIndex(glm::vec2 pixel) const;
 
     std::shared_ptr<const Mesh> m_mesh;
     std::shared_ptr<const MeshTopology> m_topology;
@@ -145,6 +180,9 @@ private:
     std::unique_ptr<Layers> m_layers;
     RegionOrder m_order;
     std::vector<std::uint32_t> m_ranks;
+    std::vector<std::uint8_t> m_fragmentHidden; // per fragment, empty when nothing is hidden
+    std::uint64_t m_orderSerial = 0;
+    bool m_autoPopUp = true;
 
     Brush m_brush;
     StrokeTracker m_tracker;

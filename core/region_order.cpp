@@ -2,6 +2,11 @@
 #include "core/region_order.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/stroke_tracker.h"
 
 namespace core {
 
@@ -191,6 +196,49 @@ std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
         return out;
     for (std::uint32_t f = stack.offsets[pixel]; f < stack.offsets[pixel + 1]; ++f)
         out.push_back(f < fragmentRegion.size() ? fragmentRegion[f] : kNone);
+    return out;
+}
+
+std::vector<std::uint32_t> visibleRegionsAlong(const LayerStack& stack,
+                                               std::span<const std::uint32_t> fragmentRegion,
+                                               std::span<const std::uint32_t> ranks, glm::vec2 a,
+                                               glm::vec2 b, float radius) {
+    std::vector<std::uint32_t> out;
+    const int w = stack.width, h = stack.height;
+    if (w <= 0 || h <= 0 || stack.offsets.size() != stack.pixelCount() + 1 || !std::isfinite(a.x) ||
+        !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y) ||
+        !(radius >= 0.0f && radius < 1e5f))
+        return out;
+    const auto add = [&](int x, int y) {
+        const std::uint32_t f = visibleFragmentByRank(
+            stack, fragmentRegion, ranks, std::size_t(y) * std::size_t(w) + std::size_t(x));
+        if (f != kNone && f < fragmentRegion.size() && fragmentRegion[f] != kNone)
+            out.push_back(fragmentRegion[f]);
+    };
+    if (a.x >= 0.0f && a.y >= 0.0f && a.x < float(w) && a.y < float(h))
+        add(int(a.x), int(a.y));
+    const glm::vec2 ab = b - a;
+    const float length2 = glm::dot(ab, ab);
+    const auto clampTo = [](float v, int size) {
+        return std::clamp(int(std::floor(v)), 0, size - 1);
+    };
+    const int x0 = clampTo(std::min(a.x, b.x) - radius, w),
+              x1 = clampTo(std::max(a.x, b.x) + radius, w);
+    const int y0 = clampTo(std::min(a.y, b.y) - radius, h),
+              y1 = clampTo(std::max(a.y, b.y) + radius, h);
+    const float r2 = radius * radius;
+    for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+            const glm::vec2 p(float(x) + 0.5f, float(y) + 0.5f);
+            const float t =
+                length2 > 0.0f ? std::clamp(glm::dot(p - a, ab) / length2, 0.0f, 1.0f) : 0.0f;
+            const glm::vec2 d = p - (a + t * ab);
+            if (glm::dot(d, d) <= r2)
+                add(x, y);
+        }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
 }
 

@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include <glm/vec2.hpp>
+
 #include "core/layer_stack.h"
 #include "core/segmentation.h"
 
@@ -100,5 +102,15 @@ private:
 std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
                                           std::span<const std::uint32_t> fragmentRegion,
                                           std::size_t pixel);
+
+/**
+ * Paint-to-hide's footprint: the regions of the fragments visible (visibleFragmentByRank with
+ * ranks) at pixels whose centre lies within radius of the segment from a to b, plus the pixel
+ * under a itself; ascending, each once. Window pixels, y down.
+ */
+std::vector<std::uint32_t> visibleRegionsAlong(const LayerStack& stack,
+                                               std::span<const std::uint32_t> fragmentRegion,
+                                               std::span<const std::uint32_t> ranks, glm::vec2 a,
+                                               glm::vec2 b, float radius);
 
 } // namespace core

@@ -277,7 +277,7 @@ void StrokeTracker::searchPaintable(std::uint32_t pixel, std::uint32_t fragment,
             if (l > offsets[q + 1] - begin)
                 continue; // a link past the neighbour's fragments: ignored, as segmentLayers does
             const std::uint32_t g = begin + l - 1;
-            if (m_fragments[g].mp == gen)
+            if (m_fragments[g].mp == gen || isHidden(g))
                 continue;
             m_fragments[g].mp = gen;
             const float dx = float(nx) + 0.5f - c.x, dy = float(ny) + 0.5f - c.y;
@@ -313,7 +313,7 @@ bool StrokeTracker::growTrackable() {
         if (l > offsets[q + 1] - begin)
             continue;
         const std::uint32_t g = begin + l - 1;
-        if (m_fragments[g].mt == gen)
+        if (m_fragments[g].mt == gen || isHidden(g))
             continue;
         m_fragments[g].mt = gen;
         const float dx = float(nx) + 0.5f - m_center.x, dy = float(ny) + 0.5f - m_center.y;

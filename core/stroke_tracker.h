@@ -73,6 +73,12 @@ public:
 
     /** The region order's visible fragment; an empty function means layer 1 (the default order). */
     void setVisibleFragment(VisibleFragmentFn visible) { m_visible = std::move(visible); }
+    /**
+     * Fragments no dab may paint or track through (hidden regions, paint-to-hide): non-zero
+     * entries, per fragment of the stack; empty for none. Referenced, not copied: it must stay
+     * alive and unchanged while in use.
+     */
+    void setHiddenFragments(std::span<const std::uint8_t> hidden) { m_hidden = hidden; }
 
     /**
      * Layer-aware (true, the default) or conventional WYSIWYG painting. Safe mid-stroke: the
@@ -151,6 +157,10 @@ private:
     const LayerStack* m_stack = nullptr;
     const Connectivity* m_connectivity = nullptr;
     VisibleFragmentFn m_visible;
+    std::span<const std::uint8_t> m_hidden;
+    bool isHidden(std::uint32_t fragment) const {
+        return fragment < m_hidden.size() && m_hidden[fragment] != 0;
+    }
     bool m_layerAware = true;
     bool m_antiBleeding = true;
 
