@@ -188,6 +188,14 @@ void RegionOrder::reset() {
                      [this](std::uint32_t a, std::uint32_t b) { return m_layer[a] < m_layer[b]; });
 }
 
+std::vector<std::uint32_t> RegionOrder::prunedRanks(bool transparency) const {
+    std::vector<std::uint32_t> rank(m_layer.size(), kNone);
+    const std::vector<std::uint32_t> list = pruned(transparency);
+    for (std::size_t i = 0; i < list.size(); ++i)
+        rank[list[i]] = std::uint32_t(i);
+    return rank;
+}
+
 std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
                                           std::span<const std::uint32_t> fragmentRegion,
                                           std::size_t pixel) {

@@ -66,6 +66,11 @@ public:
      * layer 1 is complete and unhidden, as everything after it is covered.
      */
     std::vector<std::uint32_t> pruned(bool transparency) const;
+    /**
+     * ranks() restricted to pruned(transparency): the regions that cannot show get kNone too.
+     * The visible fragment of every pixel is the same with either; drawing is cheaper with these.
+     */
+    std::vector<std::uint32_t> prunedRanks(bool transparency) const;
 
     /** Paint-to-hide. */
     void hide(std::uint32_t region);

@@ -64,6 +64,8 @@ enum Variant : unsigned {
     kShadeSegmentation = 1u << 7,
     kBoundaries = 1u << 8,
     kHighlight = 1u << 9,
+    kTransparency = 1u << 10,
+    kUnder = 1u << 11,
 };
 constexpr std::pair<Variant, const char*> kDefines[] = {
     {kResolve, "RESOLVE"},
@@ -75,6 +77,8 @@ constexpr std::pair<Variant, const char*> kDefines[] = {
     {kShadeSegmentation, "SHADE_SEGMENTATION"},
     {kBoundaries, "BOUNDARIES"},
     {kHighlight, "HIGHLIGHT"},
+    {kTransparency, "TRANSPARENCY"},
+    {kUnder, "UNDER"},
 };
 
 /** composite.frag's Material (std430). */
@@ -134,7 +138,7 @@ struct Program {
     GLint width, height, tileSize, layer, regionCount, maxLayers, fragmentCount, triangleCount,
         view;
     GLint rayOrigin0, rayOriginDx, rayOriginDy, rayDirection0, rayDirectionDx, rayDirectionDy;
-    GLint background, highlight, highlightBox, pass, texture;
+    GLint background, highlight, highlightBox, pass, texture, opacity;
 };
 
 std::string shaderLog(GLuint object, bool program) {
@@ -225,7 +229,8 @@ core::Result<Program> buildProgram(unsigned variant) {
                    at("uHighlight"),
                    at("uHighlightBox"),
                    at("uPass"),
-                   at("uTexture")};
+                   at("uTexture"),
+                   at("uOpacity")};
 }
 
 /** lowbias32 (C. Wellons): a cheap integer hash with good avalanche, the same in GLSL. */
@@ -538,10 +543,16 @@ core::Status LayerCompositor::setLayers(const core::Layers& layers) {
         d.buffers[kFragmentDepths].upload(stack.depth, limit, true) &&
         d.buffers[kFragmentPixels].upload(fragmentPixel, limit, true) &&
         d.buffers[kShading].upload(nullptr, fragments * kShadingWords * 4, limit, true) &&
-        d.buffers[kVisible].upload(nullptr, pixels * sizeof(std::uint32_t), limit, true) &&
+        // The visible fragments, then the under ones (transparency).
+        d.buffers[kVisible].upload(nullptr, 2 * pixels * sizeof(std::uint32_t), limit, true) &&
         d.buffers[kTiles].upload(d.tiles, limit, true);
     if (!ok)
         return outOfMemory("the layer stack");
+    // Pixels outside the drawn tiles are never written: they read as background.
+    const std::uint32_t noFragment = 0x7fffffffu;
+    glClearNamedBufferSubData(d.buffers[kVisible].id, GL_R32UI, 0,
+                              GLsizeiptr(pixels * sizeof(std::uint32_t)), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &noFragment);
 
     d.width = stack.width;
     d.height = stack.height;
@@ -643,15 +654,36 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     if (options.highlightRegion != core::kNone)
         composeVariant |= kHighlight;
     const std::uint32_t layer = options.display == LayerDisplay::SingleLayer ? options.layer : 0;
+    const bool transparent =
+        options.popUpOpacity < 1.0f && options.display != LayerDisplay::SingleLayer;
+    if (transparent) {
+        resolveVariant |= kTransparency;
+        composeVariant |= kTransparency;
+    }
     const bool shade = d.shadedVersion != d.geometryVersion;
     const bool resolve = d.resolvedVersion != d.version || d.resolvedVariant != resolveVariant ||
                          d.resolvedLayer != layer;
-    // The first pass picks again when needed; further texture passes read what it picked.
+    // One pass per texture (the first also draws background and untextured pixels); with
+    // transparency the fragments under see-through ones first, then the visible ones blended
+    // over them. The first pass picks again when needed; the others read what it picked.
+    struct Step {
+        unsigned variant;
+        std::size_t pass;
+        bool blend;
+    };
+    std::vector<Step> steps;
+    const std::size_t passes = composeVariant & kTextured ? d.passTextures.size() : 1;
+    if (transparent)
+        for (std::size_t pass = 0; pass < passes; ++pass)
+            steps.push_back({(composeVariant & ~(kHighlight | kBoundaries)) | kUnder, pass, false});
+    for (std::size_t pass = 0; pass < passes; ++pass)
+        steps.push_back({composeVariant, pass, transparent});
+    if (resolve)
+        steps.front().variant |= resolveVariant | kResolve;
     auto shader = d.program(shadeVariant);
-    auto first = d.program(resolve ? composeVariant | resolveVariant | kResolve : composeVariant);
-    auto composer = d.program(composeVariant);
-    if (!shader || !first || !composer)
-        return; // every variant compiles when the defaults do; left as the background
+    for (const Step& step : steps)
+        if (!shader || !d.program(step.variant))
+            return; // every variant compiles when the defaults do; left as the background
 
     // With one binding unbound, llvmpipe lost the blocks after it: any buffer a failed upload
     // left empty gets a little storage.
@@ -688,14 +720,16 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glDisable(GL_STENCIL_TEST);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glVertexArrayVertexBuffer(d.vao, 0, d.buffers[kTiles].id, 0, sizeof(std::uint32_t));
     glBindVertexArray(d.vao);
 
-    // One pass per texture; the first also draws background and untextured pixels.
-    const std::size_t passes = composeVariant & kTextured ? d.passTextures.size() : 1;
-    for (std::size_t pass = 0; pass < passes; ++pass) {
-        const Program& p = pass == 0 ? **first : **composer;
+    for (std::size_t i = 0; i < steps.size(); ++i) {
+        const Step& step = steps[i];
+        const Program& p = **d.program(step.variant);
         glUseProgram(p.id);
+        if (step.blend)
+            glEnable(GL_BLEND);
         glUniform1i(p.width, d.width);
         glUniform1i(p.height, d.height);
         glUniform1i(p.tileSize, kTileSize);
@@ -709,23 +743,41 @@ void LayerCompositor::draw(const CompositeOptions& options) {
                                    : glm::ivec4(0, 0, -1, -1);
         glUniform4iv(p.highlightBox, 1, glm::value_ptr(box));
         glUniform1i(p.texture, 0);
-        glUniform1i(p.pass, int(pass));
+        glUniform1i(p.pass, int(step.pass));
+        glUniform1f(p.opacity, std::clamp(options.popUpOpacity, 0.0f, 1.0f));
         if (composeVariant & kTextured)
-            glBindTextureUnit(0, d.passTextures[pass].id());
+            glBindTextureUnit(0, d.passTextures[step.pass].id());
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(d.tiles.size()));
-        if (pass == 0 && resolve) {
+        if (i == 0 && resolve) {
             d.resolvedVersion = d.version;
             d.resolvedVariant = resolveVariant;
             d.resolvedLayer = layer;
-            if (passes > 1)
+            if (steps.size() > 1)
                 glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         }
     }
+    glDisable(GL_BLEND);
 
     glBindVertexArray(0);
     for (GLuint binding = 0; binding < kStorageBindings; ++binding)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
     glUseProgram(0);
+}
+
+std::vector<std::uint32_t> LayerCompositor::readVisible() const {
+    const Impl& d = *m_impl;
+    if (!d.hasLayers || d.resolvedVersion != d.version)
+        return {};
+    std::vector<std::uint32_t> visible(std::size_t(d.width) * std::size_t(d.height));
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(d.buffers[kVisible].id, 0,
+                            GLsizeiptr(visible.size() * sizeof(std::uint32_t)), visible.data());
+    for (std::uint32_t& word : visible) {
+        word &= 0x7fffffffu; // the boundary bit
+        if (word == 0x7fffffffu)
+            word = core::kNone;
+    }
+    return visible;
 }
 
 void LayerCompositor::release() {

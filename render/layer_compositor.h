@@ -37,6 +37,12 @@ struct CompositeOptions {
      * is visible, striped where another region covers it.
      */
     std::uint32_t highlightRegion = core::kNone;
+    /**
+     * Below 1: transparency (the paper's exploded view). Where the visible fragment is not on
+     * layer 1 (a popped-up or revealed region), it is drawn with this opacity over the next
+     * fragment in the order, so its surroundings stay visible. Layer 1 is always opaque.
+     */
+    float popUpOpacity = 1.0f;
     /** Segmentation: shade region colours lightly by the normal; false gives flat regionColor(). */
     bool shadeSegmentation = true;
     glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded, as MeshRenderer
@@ -113,6 +119,12 @@ public:
      * blending, face culling and stencil test disabled.
      */
     void draw(const CompositeOptions& options);
+    /**
+     * What the last draw showed: per pixel of the layers' view (rows top first) the index of the
+     * fragment drawn (on top, with transparency), core::kNone for background; empty before a
+     * draw of these layers and order. Reads back from the GPU: for tests and tools.
+     */
+    std::vector<std::uint32_t> readVisible() const;
     /** Frees every GL object; the context must be current. Called by the destructor too. */
     void release();
 

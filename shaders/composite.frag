@@ -5,6 +5,10 @@
 // - RESOLVE picks each pixel's visible fragment by region rank (SINGLE_LAYER: layer uLayer)
 //   into Visible, with BOUNDARIES whether it ends its region there. Only draws after the
 //   order, the picked layer or the capture changed do this; others read Visible.
+// - TRANSPARENCY (popped-up regions seen through, the paper's exploded view): RESOLVE also
+//   keeps, where the visible fragment is not on layer 1, the next one in the order ("under") in
+//   the second half of Visible. UNDER passes draw those opaque; the normal passes then blend
+//   the visible fragment over them with uOpacity.
 // - the picture: shaded colour, texture (TEXTURED, one pass per texture), SEGMENTATION colours
 //   (SHADE_SEGMENTATION: lit lightly), BOUNDARIES and HIGHLIGHT overlays, so repainting the
 //   texture or the overlays costs no picking.
@@ -35,7 +39,8 @@ layout(std430, binding = 5) readonly buffer Ranks {
     uint ranks[];
 };
 // Per pixel (rows top first): the visible fragment in bits 0-30 (kNoFragment: background) and
-// in bit 31 whether it ends its region there (BOUNDARIES).
+// in bit 31 whether it ends its region there (BOUNDARIES); then, at uWidth * uHeight + pixel,
+// the under fragment (TRANSPARENCY; kNoFragment where the visible one is opaque).
 layout(std430, binding = 12) buffer Visible {
     uint visible[];
 };
@@ -63,27 +68,44 @@ uniform uint uMaxLayers;
 
 /**
  * The visible fragment of a pixel, kNone for none: the one of lowest region rank (front-most
- * on ties), skipping hidden regions; with SINGLE_LAYER the layer-uLayer one.
+ * on ties), skipping hidden regions; with SINGLE_LAYER the layer-uLayer one. With TRANSPARENCY
+ * under gets the next one in rank where the visible one is not on layer 1 (layer 1 is opaque).
  */
-uint pickFragment(uint first, uint end) {
+uint pickFragment(uint first, uint end, out uint under) {
+    under = kNone;
 #ifdef SINGLE_LAYER
     return uLayer >= 1u && uLayer <= end - first ? first + uLayer - 1u : kNone;
 #else
-    // Issue 5 (transparency) hooks in here: keep the best two ranks instead of one and let the
-    // composite blend the popped-up fragment over the one below it.
     uint chosen = kNone;
     uint best = kNone;
+    uint second = kNone;
     for (uint f = first; f < end; ++f) {
         uint region = fragmentRegion[f];
         uint rank = region < uRegionCount ? ranks[region] : kUnranked;
         if (rank < best) {
+            second = best;
+            under = chosen;
             best = rank;
             chosen = f;
+        } else if (rank < second) {
+            second = rank;
+            under = f;
         }
         uint layer = f - first + 1u;
-        if (layer <= uMaxLayers && best < ranks[uRegionCount + layer - 1u])
-            break;
+        if (layer <= uMaxLayers) {
+            // Nothing deeper can beat what is kept: stop.
+            uint cutoff = ranks[uRegionCount + layer - 1u];
+#ifdef TRANSPARENCY
+            if ((chosen == first ? best : second) < cutoff)
+                break;
+#else
+            if (best < cutoff)
+                break;
+#endif
+        }
     }
+    if (chosen == first)
+        under = kNone;
     return chosen;
 #endif
 }
@@ -113,16 +135,24 @@ bool onBoundary(uint f, uint layer, ivec2 pix) {
 }
 #endif
 
-/** Visible's word for a pixel: its visible fragment and whether it ends its region there. */
-uint resolvePixel(uint pixel, ivec2 pix) {
+/**
+ * Visible's words for a pixel: its visible fragment and whether it ends its region there, and
+ * the under fragment.
+ */
+uvec2 resolvePixel(uint pixel, ivec2 pix) {
     uint first = offsets[pixel];
-    uint chosen = pickFragment(first, offsets[pixel + 1u]);
+    uint under;
+    uint chosen = pickFragment(first, offsets[pixel + 1u], under);
     uint word = chosen == kNone ? kNoFragment : chosen;
 #ifdef BOUNDARIES
     if (chosen != kNone && onBoundary(chosen, chosen - first + 1u, pix))
         word |= kBoundaryBit;
 #endif
-    return word;
+#ifdef TRANSPARENCY
+    return uvec2(word, under == kNone ? kNoFragment : under);
+#else
+    return uvec2(word, kNoFragment);
+#endif
 }
 
 #endif
@@ -133,6 +163,7 @@ uniform vec4 uBackground; // sRGB
 uniform uint uHighlight;  // HIGHLIGHT: region id
 uniform ivec4 uHighlightBox; // HIGHLIGHT: its pixels' bounding box, min x, min y, max x, max y
 uniform int uPass;        // TEXTURED: the pass; its texture is uTexture
+uniform float uOpacity;   // TRANSPARENCY: of visible fragments drawn over an under one
 uniform sampler2D uTexture; // GL_SRGB8_ALPHA8: sampled as linear
 
 vec3 srgbToLinear(vec3 c) {
@@ -159,13 +190,31 @@ vec3 regionColor(uint region) {
 void main() {
     ivec2 pix = ivec2(pixelCentre());
     uint pixel = uint(pix.y) * uint(uWidth) + uint(pix.x);
+    uint pixels = uint(uWidth) * uint(uHeight);
 #ifdef RESOLVE
-    uint word = resolvePixel(pixel, pix);
-    visible[pixel] = word;
+    uvec2 words = resolvePixel(pixel, pix);
+    visible[pixel] = words.x;
+    visible[pixels + pixel] = words.y;
 #else
-    uint word = visible[pixel];
+    uvec2 words = uvec2(visible[pixel], kNoFragment);
+#if defined(TRANSPARENCY) || defined(UNDER)
+    words.y = visible[pixels + pixel];
+#endif
+#endif
+#ifdef UNDER
+    // The fragment behind a see-through one, drawn first and opaque; nothing elsewhere.
+    uint word = words.y;
+    if (word == kNoFragment)
+        discard;
+#else
+    uint word = words.x;
 #endif
     uint chosen = word & kNoFragment;
+    float alpha = 1.0;
+#if defined(TRANSPARENCY) && !defined(UNDER)
+    if (words.y != kNoFragment)
+        alpha = uOpacity;
+#endif
 
     vec4 color = uBackground;
     uint region = kNone;
@@ -221,5 +270,5 @@ void main() {
     else if (behind && ((pix.x + pix.y) & 4) == 0)
         color = vec4(mix(color.rgb, kHighlight, 0.45), 1.0);
 #endif
-    fragColor = color;
+    fragColor = vec4(color.rgb, color.a * alpha);
 }

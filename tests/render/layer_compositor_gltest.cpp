@@ -23,6 +23,8 @@
 #include "core/layers.h"
 #include "core/mesh_io.h"
 #include "core/mesh_topology.h"
+#include "core/region_order.h"
+#include "core/stroke_tracker.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 #include "render/layer_compositor.h"
@@ -414,6 +416,79 @@ TEST_F(LayerCompositorGlTest, RegionRanksChangeThePictureWithoutRecapture) {
     EXPECT_EQ(wrongLines, 0u);
     EXPECT_GT(lines, 100u);
     EXPECT_LT(lines, stack.pixelCount() / 5);
+}
+
+/**
+ * The region order in use (pop-ups, cycling, hiding) through pruned ranks: the drawn visible
+ * map equals the CPU lookup with the full ranks, pixel for pixel; with transparency the
+ * see-through fragments blend over the next one in the order.
+ */
+TEST_F(LayerCompositorGlTest, DrawnVisibleMapEqualsTheCpuLookupAfterPopUpsAndHiding) {
+    const core::Mesh mesh = core::makeTrefoil(120, 40);
+    const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
+    const core::Layers layers = build(mesh, view);
+    const core::LayerStack& stack = layers.stack;
+    const std::vector<std::uint32_t>& region = layers.segmentation.region;
+    core::RegionOrder order(layers.segmentation.graph);
+
+    // Pixels with the most layers, where the order matters most.
+    std::vector<std::size_t> deep;
+    for (std::size_t p = 0; p < stack.pixelCount(); ++p)
+        if (stack.layerCount(p) >= 3)
+            deep.push_back(p);
+    ASSERT_GT(deep.size(), 20u);
+
+    render::CompositeOptions options;
+    options.display = render::LayerDisplay::Segmentation;
+    options.shadeSegmentation = false;
+    const auto check = [&](const char* step) {
+        for (const bool transparency : {false, true}) {
+            ASSERT_TRUE(m_compositor.setRegionRanks(order.prunedRanks(transparency)));
+            options.popUpOpacity = transparency ? 0.0f : 1.0f;
+            const core::Image image = composite(layers, options);
+            const std::vector<std::uint32_t> drawn = m_compositor.readVisible();
+            ASSERT_EQ(drawn.size(), stack.pixelCount());
+            const std::vector<std::uint32_t> rank = order.ranks();
+            std::size_t wrong = 0, wrongColour = 0, seeThrough = 0;
+            for (std::size_t p = 0; p < stack.pixelCount(); ++p) {
+                const std::uint32_t f = core::visibleFragmentByRank(stack, region, rank, p);
+                wrong += drawn[p] != f;
+                // Opacity 0 shows what lies under a see-through fragment: the next in order.
+                std::uint32_t shown = f;
+                if (transparency && f != kNone && f != stack.offsets[p]) {
+                    std::uint32_t under = kNone;
+                    for (std::uint32_t g = stack.offsets[p]; g < stack.offsets[p + 1]; ++g)
+                        if (g != f && rank[region[g]] != kNone &&
+                            (under == kNone || rank[region[g]] < rank[region[under]]))
+                            under = g;
+                    if (under != kNone) {
+                        shown = under;
+                        ++seeThrough;
+                    }
+                }
+                const glm::vec4 expected =
+                    shown == kNone ? options.background : render::regionColor(region[shown]);
+                wrongColour += !near(image, p, expected, 2);
+            }
+            EXPECT_EQ(wrong, 0u) << step << (transparency ? " (transparency)" : "");
+            EXPECT_EQ(wrongColour, 0u) << step << (transparency ? " (transparency)" : "");
+            if (transparency && std::string(step) != "initial") {
+                EXPECT_GT(seeThrough, 0u) << step;
+            }
+        }
+    };
+    check("initial");
+    // Click-to-cycle at one deep pixel twice, a pop-up with neighbours elsewhere, then hiding.
+    const std::size_t a = deep[deep.size() / 3], b = deep[2 * deep.size() / 3];
+    ASSERT_NE(order.cycleAt(core::regionsAtPixel(stack, region, a)), kNone);
+    check("first click");
+    ASSERT_NE(order.cycleAt(core::regionsAtPixel(stack, region, a)), kNone);
+    check("second click");
+    order.popUpWithNeighbours(region[stack.fragment(b, 3)]);
+    check("pop-up with neighbours");
+    order.hide(region[stack.fragment(b, 1)]);
+    order.hide(region[stack.fragment(a, 1)]);
+    check("hidden");
 }
 
 TEST_F(LayerCompositorGlTest, UpdateSegmentationFollowsNewRegions) {
