@@ -35,6 +35,7 @@ void Document::clearLayers() {
 void Document::layersChanged() {
     m_tracker.setLayers(*m_layers);
     m_order = RegionOrder(m_layers->segmentation.graph);
+    ++m_layersSerial;
     orderChanged();
     m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
 }

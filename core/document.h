@@ -83,6 +83,8 @@ public:
      * without layers.
      */
     std::uint32_t visibleFragment(std::size_t pixel) const;
+    /** Changes whenever the layers are replaced or re-segmented (region ids change). */
+    std::uint64_t layersSerial() const { return m_layersSerial; }
     /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
     std::uint64_t regionOrderSerial() const { return m_orderSerial; }
     /**
@@ -182,6 +184,7 @@ private:
     std::vector<std::uint32_t> m_ranks;
     std::vector<std::uint8_t> m_fragmentHidden; // per fragment, empty when nothing is hidden
     std::uint64_t m_orderSerial = 0;
+    std::uint64_t m_layersSerial = 0;
     bool m_autoPopUp = true;
 
     Brush m_brush;

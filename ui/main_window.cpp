@@ -31,10 +31,13 @@
 
 #include "core/builtin_models.h"
 #include "ui/brush_toolbar.h"
+#include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
 #include "ui/layers_panel.h"
 #include "ui/model_loader.h"
+#include "ui/order_command.h"
 #include "ui/region_graph_panel.h"
+#include "ui/region_tools.h"
 #include "ui/segmentation_controls.h"
 #include "ui/stroke_command.h"
 #include "ui/viewport.h"
@@ -191,16 +194,17 @@ QString MainWindow::displayName(const QString& source) {
     return QFileInfo(source).fileName();
 }
 
+QDockWidget* MainWindow::makeDock(const QString& title, const QString& name, QWidget* content) {
+    auto* dock = new QDockWidget(title, this);
+    dock->setObjectName(name); // saveState() knows docks by name
+    dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea |
+                          Qt::BottomDockWidgetArea);
+    dock->setWidget(content);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    return dock;
+}
+
 void MainWindow::createPanels() {
-    const auto makeDock = [this](const QString& title, const QString& name, QWidget* content) {
-        auto* dock = new QDockWidget(title, this);
-        dock->setObjectName(name); // saveState() knows docks by name
-        dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea |
-                              Qt::BottomDockWidgetArea);
-        dock->setWidget(content);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        return dock;
-    };
 
     m_segmentationControls = new SegmentationControls(this);
     m_segmentationControls->setOptions(m_document->layerOptions());
@@ -232,7 +236,8 @@ void MainWindow::createPanels() {
     connect(m_graphPanel, &RegionGraphPanel::regionHovered, m_viewport,
             &Viewport::setHighlightRegion);
     connect(m_graphPanel, &RegionGraphPanel::regionActivated, this, [this](std::uint32_t region) {
-        statusBar()->showMessage(tr("Region %1 selected").arg(region), kStatusMessageMs);
+        statusBar()->showMessage(tr("Region %1 popped up").arg(region), kStatusMessageMs);
+        m_regionTools->popUpRegion(region);
         emit regionActivated(region);
     });
 
@@ -325,7 +330,15 @@ void MainWindow::onLayersBuilt() {
     m_layersPanel->setCurrentLayer(m_viewport->display() == render::LayerDisplay::SingleLayer
                                        ? m_viewport->displayLayer()
                                        : 0);
+    // Filling a panel can change the window's layout, and a resized view drops its layers
+    // (onLayersCleared() has run then).
+    if (m_document->layers() != layers)
+        return;
     m_graphPanel->setLayers(layers);
+    if (m_document->layers() != layers)
+        return;
+    m_regionTools->layersChanged();
+    syncUndoStack(); // order steps of the old regions go
     updateLayerInfo();
 }
 
@@ -334,7 +347,13 @@ void MainWindow::onSegmentationChanged() {
     if (!layers)
         return;
     m_graphPanel->setLayers(layers);
+    if (m_document->layers() != layers)
+        return; // see onLayersBuilt()
     m_layersPanel->setLayers(layers); // region counts (and colours) per layer
+    if (m_document->layers() != layers)
+        return;
+    m_regionTools->layersChanged();
+    syncUndoStack();
     updateLayerInfo();
 }
 
@@ -342,6 +361,8 @@ void MainWindow::onLayersCleared() {
     m_viewport->setHighlightRegion(core::kNone);
     m_layersPanel->setLayers(nullptr);
     m_graphPanel->setLayers(nullptr);
+    m_regionTools->layersChanged();
+    syncUndoStack();
     updateLayerInfo();
 }
 
@@ -381,6 +402,17 @@ void MainWindow::createPaintActions() {
         const int budget = settings.value(kUndoBudgetKey, kDefaultUndoBudgetMiB).toInt();
         m_document->history().setBudget(std::size_t(std::clamp(budget, 16, 65536)) << 20);
     }
+
+    m_regionTools = new RegionTools(
+        *m_document, *m_viewport, *m_undoStack, m_undoSuspended,
+        [this] { return m_builder->buildNow(); }, this);
+    connect(m_regionTools, &RegionTools::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, kPaintMessageMs); });
+    m_hiddenDock = makeDock(tr("Paint to Hide"), QStringLiteral("hiddenRegionsDock"),
+                            m_regionTools->createPanel(this));
+    // A tab behind the region graph: the column keeps its height.
+    tabifyDockWidget(m_graphDock, m_hiddenDock);
+    m_graphDock->raise();
 
     m_brushBar = new BrushToolBar(this);
     addToolBar(Qt::TopToolBarArea, m_brushBar);
@@ -491,7 +523,7 @@ void MainWindow::createToolActions() {
         m_toolBar->addAction(action);
     }
     // Not implemented yet: enabled by the changes that add them.
-    for (const Tool tool : {Tool::Fill, Tool::Eyedropper, Tool::Hide, Tool::PopUp})
+    for (const Tool tool : {Tool::Fill, Tool::Eyedropper})
         toolAction(tool)->setEnabled(false);
     toolAction(Tool::Brush)->setChecked(true);
 }
@@ -504,7 +536,16 @@ void MainWindow::setTool(Tool tool) {
     action->setChecked(true);
     if (tool == m_tool)
         return;
+    // Paint-to-hide works on the segmentation map; leaving it brings the display back.
+    if (tool == Tool::Hide) {
+        m_displayBeforeHide = m_viewport->display();
+        setDisplay(render::LayerDisplay::Segmentation);
+    } else if (m_tool == Tool::Hide &&
+               m_viewport->display() == render::LayerDisplay::Segmentation) {
+        setDisplay(m_displayBeforeHide);
+    }
     m_tool = tool;
+    m_viewport->setHoverHighlight(tool == Tool::Hide || tool == Tool::PopUp);
     emit toolChanged(tool);
 }
 
@@ -520,10 +561,14 @@ void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModif
     case Tool::Eraser:
         beginPaintStroke(pixel, pressure, tool == Tool::Eraser);
         return;
+    case Tool::Hide:
+        m_regionTools->beginHide(pixel, m_document->brush().radius);
+        return;
+    case Tool::PopUp:
+        m_regionTools->popUpAt(pixel);
+        return;
     case Tool::Fill:
     case Tool::Eyedropper:
-    case Tool::Hide:
-    case Tool::PopUp:
         return;
     }
 }
@@ -548,20 +593,25 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     m_historyMark = history.undoCount() + history.droppedCount();
     m_document->brush().eraser = eraser;
     core::PaintChanges changes;
+    m_regionTools->beginStroke();
     const core::Status status =
         m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
     if (!status) {
+        m_regionTools->endStroke();
         statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
                                  kStatusMessageMs);
         return;
     }
     m_painting = true;
+    m_regionTools->strokeMoved(); // the first dab may have popped a region up
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
     m_strokeStats.pressMs = elapsedMs(clock);
 }
 
 void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
+    if (m_regionTools->isHiding())
+        m_regionTools->moveHide(pixel);
     if (!m_painting)
         return;
     QElapsedTimer clock;
@@ -570,6 +620,7 @@ void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
     m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
+    m_regionTools->strokeMoved(); // automatic pop-up
     const double ms = elapsedMs(clock);
     ++m_strokeStats.moves;
     m_strokeStats.totalMs += ms;
@@ -577,6 +628,10 @@ void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
 }
 
 void MainWindow::onPaintReleased(QPointF pixel) {
+    if (m_regionTools->isHiding()) {
+        m_regionTools->moveHide(pixel);
+        m_regionTools->endHide();
+    }
     if (!m_painting)
         return;
     core::PaintChanges changes;
@@ -590,6 +645,8 @@ void MainWindow::finishStroke() {
         return;
     m_painting = false;
     m_document->endStroke();
+    // Pop-ups the stroke made go first: one undo takes the paint away, the next the pop-up.
+    m_regionTools->endStroke();
     const core::UndoHistory& history = m_document->history();
     if (history.undoCount() + history.droppedCount() > m_historyMark)
         m_undoStack->push(
@@ -601,16 +658,58 @@ void MainWindow::syncUndoStack() {
     const core::UndoHistory& history = m_document->history();
     const int undo = int(history.undoCount());
     const int total = int(history.undoCount() + history.redoCount());
-    if (m_undoStack->index() == undo && m_undoStack->count() == total)
+    // Paint steps on the stack (all, and those done) and order steps of other layers' regions.
+    int strokes = 0, strokesDone = 0;
+    bool stale = false;
+    for (int i = 0; i < m_undoStack->count(); ++i) {
+        if (const auto* order = dynamic_cast<const OrderCommand*>(m_undoStack->command(i))) {
+            stale = stale || order->layersSerial() != m_document->layersSerial();
+            continue;
+        }
+        ++strokes;
+        strokesDone += i < m_undoStack->index();
+    }
+    if (!stale && strokes == total && strokesDone == undo)
         return;
-    // The core dropped steps (budget) or forgot them (new target): offer only what exists. The
+    // The core dropped its oldest paint steps (budget) or all of them (new target), or the
+    // layers changed (order steps name regions that are gone): offer only what exists. Paint
     // commands hold no data, so new ones stand in for the steps that are left.
+    const int drop = strokes - total;
+    const bool oldestDropped = drop >= 0 && strokesDone - drop == undo;
+    struct Entry {
+        OrderCommand* order; // nullptr: a paint step
+        bool done;
+    };
+    std::vector<Entry> kept;
+    if (oldestDropped) {
+        int dropped = 0;
+        for (int i = 0; i < m_undoStack->count(); ++i) {
+            const bool done = i < m_undoStack->index();
+            if (const auto* order = dynamic_cast<const OrderCommand*>(m_undoStack->command(i))) {
+                if (order->layersSerial() == m_document->layersSerial())
+                    kept.push_back({order->clone(), done});
+            } else if (dropped < drop) {
+                ++dropped;
+            } else {
+                kept.push_back({nullptr, done});
+            }
+        }
+    } else {
+        for (int i = 0; i < total; ++i)
+            kept.push_back({nullptr, i < undo});
+    }
     const QScopedValueRollback guard(m_undoSuspended, true);
     m_undoStack->clear();
-    for (int i = 0; i < total; ++i)
-        m_undoStack->push(
-            new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
-    m_undoStack->setIndex(undo);
+    int index = 0;
+    for (const Entry& entry : kept) {
+        if (entry.order)
+            m_undoStack->push(entry.order);
+        else
+            m_undoStack->push(
+                new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
+        index += entry.done;
+    }
+    m_undoStack->setIndex(index);
 }
 
 void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
@@ -701,13 +800,20 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock : {m_segmentationDock, m_layersDock, m_graphDock})
+    for (QDockWidget* dock : {m_segmentationDock, m_layersDock, m_graphDock, m_hiddenDock})
         panelsMenu->addAction(dock->toggleViewAction());
+    viewMenu->addSeparator();
+    viewMenu->addAction(m_regionTools->transparencyAction());
+    viewMenu->addAction(m_regionTools->orbitAboutSurfaceAction());
 
     QMenu* paintMenu = menuBar()->addMenu(tr("&Paint"));
     paintMenu->addAction(m_layerAwareAction);
     paintMenu->addSeparator();
     paintMenu->addActions(m_toolGroup->actions());
+    paintMenu->addSeparator();
+    paintMenu->addAction(m_regionTools->autoPopUpAction());
+    paintMenu->addAction(m_regionTools->resetOrderAction());
+    paintMenu->addAction(m_regionTools->unhideAllAction());
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =

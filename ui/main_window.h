@@ -30,6 +30,7 @@ class QUndoStack;
 namespace ui {
 
 class BrushToolBar;
+class RegionTools;
 class LayerBuilder;
 class LayersPanel;
 class ModelLoader;
@@ -71,6 +72,7 @@ public:
     LayerBuilder* layerBuilder() const { return m_builder; }
     LayersPanel* layersPanel() const { return m_layersPanel; }
     RegionGraphPanel* regionGraphPanel() const { return m_graphPanel; }
+    RegionTools* regionTools() const { return m_regionTools; }
     SegmentationControls* segmentationControls() const { return m_segmentationControls; }
     BrushToolBar* brushToolBar() const { return m_brushBar; }
     QUndoStack* undoStack() const { return m_undoStack; }
@@ -124,6 +126,8 @@ protected:
 
 private:
     void createPanels();
+    /** A dock (on the right by default) named for saveState(). */
+    QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content);
     void createMenus();
     void createDisplayActions(QMenu* viewMenu);
     void createPaintActions();
@@ -135,7 +139,10 @@ private:
     void onPaintReleased(QPointF pixel);
     /** Ends a stroke in progress and puts it on the undo stack. */
     void finishStroke();
-    /** Makes the undo stack offer exactly the document's undo and redo steps. */
+    /**
+     * Makes the undo stack offer exactly the document's paint steps and the order steps of the
+     * current layers (those of earlier layers go).
+     */
     void syncUndoStack();
     void setPaintTarget(const core::PaintTargetOptions& options);
     void updateBrushBar();
@@ -167,6 +174,10 @@ private:
     QDockWidget* m_segmentationDock = nullptr;
     QDockWidget* m_layersDock = nullptr;
     QDockWidget* m_graphDock = nullptr;
+    QDockWidget* m_hiddenDock = nullptr;
+    RegionTools* m_regionTools = nullptr;
+    /** What leaving the hide tool (which shows the segmentation map) shows again. */
+    render::LayerDisplay m_displayBeforeHide = render::LayerDisplay::Composite;
     QActionGroup* m_displayGroup = nullptr;
     QAction* m_shadedAction = nullptr;
     QAction* m_singleLayerAction = nullptr;

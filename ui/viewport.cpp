@@ -20,6 +20,7 @@ namespace ui {
 
 namespace {
 constexpr float kOrbitDegreesPerPixel = 0.4f;
+constexpr float kPopUpOpacity = 0.55f;     // see-through pop-ups: the surroundings stay readable
 constexpr float kZoomPerWheelStep = 0.85f; // one 15° notch moves 15% closer
 constexpr float kZoomPerDragPixel = 0.005f;
 
@@ -303,6 +304,49 @@ void Viewport::showSegmentation() {
     update();
 }
 
+void Viewport::regionOrderChanged() {
+    if (!m_compositor || !m_layersShown || !m_document.layers())
+        return;
+    makeCurrent();
+    // Pruned: the same picture, fewer regions to test per pixel.
+    m_compositor->setRegionRanks(m_document.regionOrder().prunedRanks(popUpTransparency()));
+    doneCurrent();
+    updateHoverHighlight();
+    update();
+}
+
+void Viewport::setPopUpTransparency(bool on) {
+    if (on == popUpTransparency())
+        return;
+    m_composite.popUpOpacity = on ? kPopUpOpacity : 1.0f;
+    regionOrderChanged();
+    update();
+}
+
+void Viewport::setHoverHighlight(bool on) {
+    m_hoverHighlight = on;
+    if (!on)
+        setHighlightRegion(core::kNone);
+    else
+        updateHoverHighlight();
+}
+
+void Viewport::updateHoverHighlight() {
+    if (!m_hoverHighlight)
+        return;
+    std::uint32_t region = core::kNone;
+    const core::Layers* layers = m_document.layers();
+    if (m_cursorInside && isShowingLayers() && layers && m_cursor.x() >= 0 && m_cursor.y() >= 0 &&
+        m_cursor.x() < layers->stack.width && m_cursor.y() < layers->stack.height) {
+        const std::size_t pixel = std::size_t(m_cursor.y()) * std::size_t(layers->stack.width) +
+                                  std::size_t(m_cursor.x());
+        const std::uint32_t f = m_document.visibleFragment(pixel);
+        if (f != core::kNone)
+            region = layers->segmentation.region[f];
+    }
+    setHighlightRegion(region);
+}
+
 bool Viewport::isShowingLayers() const {
     return m_layersShown && m_compositor && m_document.layers();
 }
@@ -561,6 +605,10 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     m_lastPos = event->position();
     m_cursor = toDevicePixels(event->position());
     m_cursorInside = true;
+    // Layer-aware rotation: about the visible surface point under the cursor, on any layer.
+    m_orbitPivot.reset();
+    if (drag == Drag::Orbit && m_orbitAboutSurface && isShowingLayers())
+        m_orbitPivot = m_document.surfacePoint({float(m_cursor.x()), float(m_cursor.y())});
     if (drag == Drag::Paint)
         emit paintPressed(toDevicePixels(event->position()), pressureOf(event), event->modifiers());
     event->accept();
@@ -572,6 +620,7 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     if (m_drag == Drag::None) {
         if (m_brushRadius > 0.0f)
             update(); // the outline follows
+        updateHoverHighlight();
 
         QOpenGLWidget::mouseMoveEvent(event);
         return;
@@ -581,8 +630,12 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
     switch (m_drag) {
     case Drag::Orbit:
         // Dragging right turns the model right; dragging down shows more of its top.
-        m_document.camera().orbit(float(-delta.x()) * kOrbitDegreesPerPixel,
-                                  float(delta.y()) * kOrbitDegreesPerPixel);
+        if (m_orbitPivot)
+            m_document.camera().orbitAbout(*m_orbitPivot, float(-delta.x()) * kOrbitDegreesPerPixel,
+                                           float(delta.y()) * kOrbitDegreesPerPixel);
+        else
+            m_document.camera().orbit(float(-delta.x()) * kOrbitDegreesPerPixel,
+                                      float(delta.y()) * kOrbitDegreesPerPixel);
         break;
     case Drag::Pan:
         // Logical delta against logical height: the model follows the cursor at any DPI.

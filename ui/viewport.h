@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <QOpenGLWidget>
@@ -93,6 +94,24 @@ public:
     void showSegmentation();
     /** True while the picture comes from the layers (the compositor), not from the mesh. */
     bool isShowingLayers() const;
+    /** The document's region order changed (pop-up, hiding, undo): redraws with it. */
+    void regionOrderChanged();
+    /**
+     * See-through pop-ups (the paper's exploded view): regions not on layer 1 that are shown
+     * are drawn half transparent over what lies under them in the order.
+     */
+    void setPopUpTransparency(bool on);
+    bool popUpTransparency() const { return m_composite.popUpOpacity < 1.0f; }
+    /**
+     * Layer-aware rotation (default on): an orbit that starts on a surface point of the shown
+     * layers (any layer: what is visible there, popped-up or revealed) turns about that point.
+     */
+    void setOrbitAboutSurface(bool on) { m_orbitAboutSurface = on; }
+    bool orbitAboutSurface() const { return m_orbitAboutSurface; }
+    /** The pivot of the current or last orbit drag, if it was a surface point. */
+    std::optional<glm::vec3> orbitPivot() const { return m_orbitPivot; }
+    /** Highlights the region under the cursor while the layers are shown (pop-up, hide tools). */
+    void setHoverHighlight(bool on);
 
     // Painting.
     /** The document's paint target was created or replaced: draw its painted mesh from now on. */
@@ -154,6 +173,7 @@ private:
 
     QPointF toDevicePixels(QPointF logical) const;
     void cameraMoved();
+    void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();
     void reportLayerError(const core::Status& status);
@@ -202,6 +222,9 @@ private:
     float m_brushRadius = 0.0f;
     QPointF m_cursor; // device pixels
     bool m_cursorInside = false;
+    bool m_hoverHighlight = false;
+    bool m_orbitAboutSurface = true;
+    std::optional<glm::vec3> m_orbitPivot;
 
     Drag m_drag = Drag::None;
     Qt::MouseButton m_dragButton = Qt::NoButton;

@@ -20,6 +20,7 @@
 #include <QSlider>
 #include <QStatusBar>
 #include <QTest>
+#include <QUndoStack>
 #include <QWheelEvent>
 
 #include <cmath>
@@ -360,6 +361,9 @@ TEST_F(SegmentationTest, HoveringAGraphNodeHighlightsItsRegion) {
     EXPECT_EQ(panelActivated.first().first().value<std::uint32_t>(), region);
     ASSERT_EQ(activated.size(), 1);
     EXPECT_EQ(graph()->selectedRegion(), region);
+    // The click popped the region up (with its neighbours), as one undoable step.
+    EXPECT_EQ(document().regionOrder().order().front(), region);
+    EXPECT_EQ(m_window->undoStack()->count(), 1);
 
     // Leaving the node ends the highlight.
     QTest::mouseMove(view->viewport(), QPoint(2, 2));
@@ -429,12 +433,13 @@ TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
     }
     auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
     ASSERT_NE(panels, nullptr);
-    EXPECT_EQ(panels->actions().size(), 3);
-    for (const char* name : {"segmentationDock", "layersDock", "regionGraphDock"}) {
+    EXPECT_EQ(panels->actions().size(), 4);
+    for (const char* name :
+         {"segmentationDock", "layersDock", "regionGraphDock", "hiddenRegionsDock"}) {
         auto* dock = m_window->findChild<QDockWidget*>(QString::fromLatin1(name));
         ASSERT_NE(dock, nullptr) << name;
         EXPECT_TRUE(panels->actions().contains(dock->toggleViewAction())) << name;
-        EXPECT_TRUE(dock->isVisible()) << name;
+        EXPECT_FALSE(dock->isHidden()) << name; // the paint-to-hide panel is a tab behind
     }
 
     // A closed panel stays closed in the next session.
