@@ -348,7 +348,7 @@ void MainWindow::onSegmentationChanged() {
         return;
     m_graphPanel->setLayers(layers);
     if (m_document->layers() != layers)
-        return; // see onLayersBuilt()
+        return;                       // see onLayersBuilt()
     m_layersPanel->setLayers(layers); // region counts (and colours) per layer
     if (m_document->layers() != layers)
         return;
