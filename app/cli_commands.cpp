@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/camera.h"
+#include "core/document.h"
 #include "core/image_write.h"
 #include "core/layers.h"
 #include "core/mesh_io.h"
@@ -205,7 +206,47 @@ int runInfo(const std::string& model) {
     return 0;
 }
 
+/**
+ * visible.tif: per pixel the layer (uint32, 0 = none) of the visible fragment in the region order
+ * after the script's operations (the initial order without a script), looked up as the Document
+ * does for the GUI, whose drawing matches it (tested). Operations that turn the camera leave the
+ * map of the view they end in.
+ */
+core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& args,
+                          const core::Mesh& mesh, core::LayerCapturer& capturer,
+                          core::ConnectivityEngine* engine, const core::LayerOptions& options,
+                          core::Layers layers, core::View view) {
+    core::Document doc;
+    doc.setMesh(mesh, args.model);
+    doc.setLayerOptions(options);
+    doc.setConnectivityEngine(engine);
+    doc.adoptLayers(std::move(layers), doc.meshSerial());
+    if (!args.script.empty()) {
+        auto script = readScript(args.script);
+        if (!script)
+            return core::Error{script.error()};
+        if (const core::Status s =
+                replayScript(*script, args.script, doc, capturer, args.camera, view);
+            !s)
+            return s;
+    }
+    if (!doc.layers())
+        if (const core::Status s = doc.buildLayers(capturer, view); !s)
+            return s;
+    const core::LayerStack& stack = doc.layers()->stack;
+    std::vector<std::uint32_t> visible(stack.pixelCount(), 0);
+    for (std::size_t p = 0; p < visible.size(); ++p) {
+        const std::uint32_t f = doc.visibleFragment(p);
+        visible[p] = f == core::kNone ? 0 : f - stack.offsets[p] + 1;
+    }
+    return core::writeImage((dir / "visible.tif").string(), stack.width, stack.height, 1,
+                            core::PixelType::UInt32, visible.data());
+}
+
 int runLayers(const LayersArgs& args) {
+    if (!args.script.empty())
+        if (auto script = readScript(args.script); !script)
+            return fail(script.error()); // before any work
     auto mesh = core::loadMesh(args.model);
     if (!mesh)
         return fail(mesh.error());
@@ -313,6 +354,10 @@ int runLayers(const LayersArgs& args) {
           {"graph", t.graphMs},
           {"build_layers", t.totalMs()}}},
     };
+    if (const core::Status s = writeVisible(dir, args, *mesh, *capturer, engine.get(), options,
+                                            std::move(layers).value(), *view);
+        !s)
+        return fail(s.error());
     if (const core::Status s = writeJson((dir / "summary.json").string(), summary); !s)
         return fail(s.error());
     std::cout << summary.dump(1) << '\n';

@@ -5,9 +5,16 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/camera.h"
+#include "core/layers.h"
 #include "core/mesh.h"
 #include "core/result.h"
+
+namespace core {
+class Document;
+}
 
 namespace cli {
 
@@ -27,6 +34,7 @@ struct LayersArgs {
     bool cpuCapture = false;
     std::string connectivity = "auto"; // auto | cpu | gpu
     std::string outDir;
+    std::string script; // operations to replay before visible.tif is written
 };
 
 struct PaintArgs {
@@ -50,6 +58,24 @@ struct BenchArgs {
 int fail(const std::string& message);
 /** The view of --orbit / --camera / --size for mesh (framed, turned 30° and raised 20°). */
 core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh);
+
+/**
+ * A `paint` script (README): an array of operations or an object with "operations" and the
+ * settings "size", "orbit", "target". An Error naming the file if it cannot be read or is not
+ * such a script.
+ */
+core::Result<nlohmann::json> readScript(const std::string& path);
+/** Applies the script's settings to camera and doc; an Error naming the file. */
+core::Status applyScriptSettings(const nlohmann::json& script, const std::string& path,
+                                 core::Document& doc, CameraArgs& camera);
+/**
+ * Replays the script's operations on doc through the controller (the GUI's code path), building
+ * layers with capturer for view whenever an operation needs them; operations that move the
+ * camera change view. An Error naming the file, the operation's number and the problem.
+ */
+core::Status replayScript(const nlohmann::json& script, const std::string& path,
+                          core::Document& doc, core::LayerCapturer& capturer,
+                          const CameraArgs& camera, core::View& view);
 
 /** `info MODEL`: prints the model's JSON summary on stdout; returns the exit code. */
 int runInfo(const std::string& model);

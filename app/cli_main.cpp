@@ -47,6 +47,9 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}))
         ->capture_default_str();
     layersCommand->add_option("--out", layers.outDir, "Output folder")->required();
+    layersCommand->add_option("--script", layers.script,
+                              "Paint script whose operations (pop-up, hide, ...) run before "
+                              "visible.tif is written");
 
     cli::PaintArgs paint;
     CLI::App* paintCommand = app.add_subcommand(

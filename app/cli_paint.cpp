@@ -93,7 +93,17 @@ std::vector<core::StrokePoint> strokePoints(const json& op) {
     return points;
 }
 
-/** Runs the operations on doc; layers are built (by capturer) whenever a stroke needs them. */
+/** An [x, y] pixel of the view (origin top-left). */
+glm::vec2 pixelAt(const json& value, const char* what) {
+    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
+        throw ScriptError{std::string("\"") + what + "\" must be [x, y]"};
+    const glm::vec2 p(value[0].get<float>(), value[1].get<float>());
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        throw ScriptError{std::string("\"") + what + "\" must be finite"};
+    return p;
+}
+
+/** Runs the operations on doc; layers are built (by capturer) whenever an operation needs them. */
 void replay(const json& operations, core::Document& doc, core::LayerCapturer& capturer,
             CameraArgs camera, core::View& view) {
     const auto ensureLayers = [&] {
@@ -149,6 +159,45 @@ void replay(const json& operations, core::Document& doc, core::LayerCapturer& ca
             } else if (name == "build-layers") {
                 doc.clearLayers();
                 ensureLayers();
+            } else if (name == "popup") {
+                // The paper's intentional pop-up: a click at a pixel, cycling on repeats.
+                const glm::vec2 at = pixelAt(op.value("at", json()), "at");
+                ensureLayers();
+                if (doc.popUpAt(at) == core::kNone)
+                    throw ScriptError{"nothing to pop up at [" + std::to_string(int(at.x)) + ", " +
+                                      std::to_string(int(at.y)) + "]"};
+            } else if (name == "hide") {
+                // Paint-to-hide at points (a brush of radius pixels), in the order of the op's
+                // start: what one op reveals, it does not hide.
+                if (!op.contains("at") || !op["at"].is_array() || op["at"].empty())
+                    throw ScriptError{"\"at\" must be a non-empty array of [x, y]"};
+                const float radius = number(op, "radius", 0.0f, 0.0f, 4096.0f);
+                ensureLayers();
+                const std::vector<std::uint32_t> ranks = doc.regionRanks();
+                for (const json& point : op["at"]) {
+                    const glm::vec2 at = pixelAt(point, "at");
+                    doc.hideAlong(at, at, radius, ranks);
+                }
+            } else if (name == "unhide-all" || name == "reset-order") {
+                ensureLayers();
+                core::RegionOrder order = doc.regionOrder();
+                if (name == "unhide-all")
+                    order.unhideAll();
+                else
+                    order.reset();
+                doc.setRegionOrder(std::move(order));
+            } else if (name == "orbit-about") {
+                // Layer-aware rotation about the visible surface point at a pixel.
+                const glm::vec2 at = pixelAt(op.value("at", json()), "at");
+                const float yaw = number(op, "yaw", 0.0f, -3600.0f, 3600.0f);
+                const float pitch = number(op, "pitch", 0.0f, -3600.0f, 3600.0f);
+                ensureLayers();
+                const std::optional<glm::vec3> pivot = doc.surfacePoint(at);
+                if (!pivot)
+                    throw ScriptError{"no surface to orbit about at [" + std::to_string(int(at.x)) +
+                                      ", " + std::to_string(int(at.y)) + "]"};
+                view = view.orbitedAbout(*pivot, yaw, pitch);
+                doc.clearLayers();
             } else {
                 throw ScriptError{"unknown operation \"" + name + "\""};
             }
@@ -159,22 +208,60 @@ void replay(const json& operations, core::Document& doc, core::LayerCapturer& ca
 }
 } // namespace
 
-int runPaint(const PaintArgs& args) {
-    std::ifstream in(args.script);
+core::Result<json> readScript(const std::string& path) {
+    std::ifstream in(path);
     if (!in)
-        return fail(args.script + ": cannot be opened");
-    const json script = json::parse(in, nullptr, false);
+        return core::Error{path + ": cannot be opened"};
+    json script = json::parse(in, nullptr, false);
     if (script.is_discarded())
-        return fail(args.script + ": not valid JSON");
-    const json* operations = &script;
+        return core::Error{path + ": not valid JSON"};
     if (script.is_object()) {
         if (!script.contains("operations") || !script["operations"].is_array())
-            return fail(args.script + ": expected an \"operations\" array");
-        operations = &script["operations"];
+            return core::Error{path + ": expected an \"operations\" array"};
     } else if (!script.is_array()) {
-        return fail(args.script + ": expected an array of operations or an object");
+        return core::Error{path + ": expected an array of operations or an object"};
     }
+    return script;
+}
 
+core::Status applyScriptSettings(const json& script, const std::string& path, core::Document& doc,
+                                 CameraArgs& camera) {
+    if (!script.is_object())
+        return {};
+    if (script.contains("size") && script["size"].is_string())
+        camera.size = script["size"].get<std::string>();
+    if (script.contains("orbit") && script["orbit"].is_string() && camera.cameraFile.empty())
+        camera.orbit = script["orbit"].get<std::string>();
+    if (script.contains("target") && script["target"].is_object()) {
+        const json& t = script["target"];
+        core::PaintTargetOptions options;
+        if (t.contains("kind") && t["kind"] == "vertex-colors")
+            options.kind = core::PaintTargetKind::VertexColors;
+        else if (t.contains("kind") && t["kind"] == "texture")
+            options.kind = core::PaintTargetKind::Texture;
+        if (t.contains("resolution") && t["resolution"].is_number_integer())
+            options.resolution = t["resolution"].get<int>();
+        if (const core::Status s = doc.resetPaintTarget(options); !s)
+            return core::Error{path + ": " + s.error()};
+    }
+    return {};
+}
+
+core::Status replayScript(const json& script, const std::string& path, core::Document& doc,
+                          core::LayerCapturer& capturer, const CameraArgs& camera,
+                          core::View& view) {
+    try {
+        replay(script.is_object() ? script["operations"] : script, doc, capturer, camera, view);
+    } catch (const ScriptError& e) {
+        return core::Error{path + ": " + e.message};
+    }
+    return {};
+}
+
+int runPaint(const PaintArgs& args) {
+    auto script = readScript(args.script);
+    if (!script)
+        return fail(script.error());
     auto mesh = core::loadMesh(args.model);
     if (!mesh)
         return fail(mesh.error());
@@ -182,24 +269,8 @@ int runPaint(const PaintArgs& args) {
     doc.setMesh(std::move(mesh).value(), args.model);
 
     CameraArgs camera = args.camera;
-    if (script.is_object()) {
-        if (script.contains("size") && script["size"].is_string())
-            camera.size = script["size"].get<std::string>();
-        if (script.contains("orbit") && script["orbit"].is_string() && camera.cameraFile.empty())
-            camera.orbit = script["orbit"].get<std::string>();
-        if (script.contains("target") && script["target"].is_object()) {
-            const json& t = script["target"];
-            core::PaintTargetOptions options;
-            if (t.contains("kind") && t["kind"] == "vertex-colors")
-                options.kind = core::PaintTargetKind::VertexColors;
-            else if (t.contains("kind") && t["kind"] == "texture")
-                options.kind = core::PaintTargetKind::Texture;
-            if (t.contains("resolution") && t["resolution"].is_number_integer())
-                options.resolution = t["resolution"].get<int>();
-            if (const core::Status s = doc.resetPaintTarget(options); !s)
-                return fail(args.script + ": " + s.error());
-        }
-    }
+    if (const core::Status s = applyScriptSettings(*script, args.script, doc, camera); !s)
+        return fail(s.error());
     auto view = makeView(camera, doc.mesh());
     if (!view)
         return fail(view.error());
@@ -220,11 +291,9 @@ int runPaint(const PaintArgs& args) {
     }
     capturer->setMesh(doc.mesh());
 
-    try {
-        replay(*operations, doc, *capturer, camera, *view);
-    } catch (const ScriptError& e) {
-        return fail(args.script + ": " + e.message);
-    }
+    if (const core::Status s = replayScript(*script, args.script, doc, *capturer, camera, *view);
+        !s)
+        return fail(s.error());
     const json extras = {{"layerpaint", {{"script", args.script}, {"model", args.model}}}};
     if (const core::Status s = core::saveGlb(args.out, doc.paintedMesh(), extras); !s)
         return fail(s.error());

@@ -101,6 +101,19 @@ void Camera::frame(const Bounds& bounds) {
     distance = sceneRadius / std::sin(glm::radians(fovYDegrees) * 0.5f);
 }
 
+View View::orbitedAbout(const glm::vec3& pivot, float dYawDegrees, float dPitchDegrees) const {
+    const glm::mat4 identity(1.0f);
+    const glm::vec3 right = glm::normalize(glm::vec3(glm::inverse(view)[0]));
+    // The camera-to-world transform turns about the pivot; the view is its inverse.
+    const glm::mat4 turn = glm::translate(identity, pivot) *
+                           glm::rotate(identity, glm::radians(dYawDegrees), {0.0f, 1.0f, 0.0f}) *
+                           glm::rotate(identity, glm::radians(-dPitchDegrees), right) *
+                           glm::translate(identity, -pivot);
+    View turned = *this;
+    turned.view = view * glm::inverse(turn);
+    return turned;
+}
+
 void Camera::orbitAbout(const glm::vec3& pivot, float dYawDegrees, float dPitchDegrees) {
     const float oldYaw = yawDegrees, oldPitch = pitchDegrees;
     orbit(dYawDegrees, dPitchDegrees);

@@ -22,6 +22,12 @@ struct View {
     glm::vec3 project(const glm::vec3& world) const;
     /** The world point seen at a pixel at a positive view-space depth. */
     glm::vec3 unproject(glm::vec2 pixel, float viewDepth) const;
+    /**
+     * Layer-aware rotation of any view: the camera turns about a world pivot by dYaw about the
+     * world Y axis and dPitch about its own right axis (positive raises it); the pivot keeps
+     * its place on screen exactly.
+     */
+    View orbitedAbout(const glm::vec3& pivot, float dYawDegrees, float dPitchDegrees) const;
 };
 
 /**

@@ -149,6 +149,93 @@ TEST(Cli, LayersWritesTheFilesOfTheContract) {
     EXPECT_NE(ply.find("element face " + std::to_string(mesh->triangleCount())), std::string::npos);
 }
 
+TEST(Cli, LayersScriptPopsUpAndHidesBeforeWritingTheVisibleMap) {
+    const fs::path out = fs::temp_directory_path() / "layerpaint_cli_visible";
+    fs::remove_all(out);
+    const std::vector<std::string> common = {"layers", "builtin:hexring", "--orbit", "20,35,2.5",
+                                             "--size", "160x120",         "--cpu"};
+    auto args = common;
+    args.insert(args.end(), {"--out", (out / "plain").string()});
+    CliRun run = runCli(args);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    int w = 0, h = 0;
+    const auto tri1 = readUInt32Image(out / "plain" / "tri_1.tif", w, h);
+    const auto tri2 = readUInt32Image(out / "plain" / "tri_2.tif", w, h);
+    const auto plain = readUInt32Image(out / "plain" / "visible.tif", w, h);
+    ASSERT_EQ(plain.size(), std::size_t(160 * 120));
+    // Without a script: layer 1 wherever there is a surface.
+    std::size_t deep = tri2.size();
+    for (std::size_t p = 0; p < plain.size(); ++p) {
+        ASSERT_EQ(plain[p], tri1[p] ? 1u : 0u) << p;
+        if (tri2[p] && deep == tri2.size() && p % 160 > 2 && p % 160 < 157)
+            deep = p;
+    }
+    ASSERT_LT(deep, tri2.size()) << "no pixel with two layers";
+    const int x = int(deep % 160), y = int(deep / 160);
+
+    // Pop up at a two-layer pixel: layer 2 shows there; then hide what shows at a layer-1-only
+    // pixel.
+    std::size_t single = 0;
+    while (single < tri1.size() && !(tri1[single] && !tri2[single]))
+        ++single;
+    ASSERT_LT(single, tri1.size());
+    const json script = {{"operations",
+                          {{{"op", "popup"}, {"at", {x, y}}},
+                           {{"op", "hide"}, {"at", {{int(single % 160), int(single / 160)}}}}}}};
+    fs::create_directories(out);
+    std::ofstream(out / "script.json") << script.dump();
+    args = common;
+    args.insert(args.end(),
+                {"--out", (out / "script").string(), "--script", (out / "script.json").string()});
+    run = runCli(args);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto visible = readUInt32Image(out / "script" / "visible.tif", w, h);
+    ASSERT_EQ(visible.size(), plain.size());
+    EXPECT_EQ(visible[deep], 2u);
+    EXPECT_EQ(visible[single], 0u); // hidden, nothing behind it
+    std::size_t second = 0;
+    for (std::size_t p = 0; p < visible.size(); ++p) {
+        ASSERT_LE(visible[p], tri2[p] ? 2u : 1u);
+        second += visible[p] == 2;
+    }
+    EXPECT_GT(second, 20u); // the whole popped-up region, not one pixel
+
+    // A pop-up on background is a clear error naming the script and the operation.
+    std::ofstream(out / "bad.json") << json::array({{{"op", "popup"}, {"at", {0, 0}}}}).dump();
+    args = common;
+    args.insert(args.end(),
+                {"--out", (out / "bad").string(), "--script", (out / "bad.json").string()});
+    run = runCli(args);
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.err.find("bad.json: operation 1: nothing to pop up"), std::string::npos)
+        << run.err;
+}
+
+TEST(Cli, OrbitAboutKeepsThePickedPointUnderThePixel) {
+    const fs::path out = fs::temp_directory_path() / "layerpaint_cli_orbit_about";
+    fs::remove_all(out);
+    fs::create_directories(out);
+    // Turning about the surface point under a pixel keeps a surface there (the same point).
+    const json script = {
+        {"operations", {{{"op", "orbit-about"}, {"at", {84, 62}}, {"yaw", 50}, {"pitch", 20}}}}};
+    std::ofstream(out / "script.json") << script.dump();
+    const CliRun run =
+        runCli({"layers", "builtin:row", "--orbit", "0,0,1.2", "--size", "160x120", "--cpu",
+                "--out", out.string(), "--script", (out / "script.json").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    int w = 0, h = 0;
+    const auto visible = readUInt32Image(out / "visible.tif", w, h);
+    const auto before = readUInt32Image(out / "tri_1.tif", w, h);
+    ASSERT_EQ(visible.size(), std::size_t(160 * 120));
+    EXPECT_NE(before[62 * 160 + 84], 0u);
+    EXPECT_EQ(visible[62 * 160 + 84], 1u);
+    // The view did turn: the surface covers other pixels now.
+    std::size_t changed = 0;
+    for (std::size_t p = 0; p < visible.size(); ++p)
+        changed += (visible[p] != 0) != (before[p] != 0);
+    EXPECT_GT(changed, 50u);
+}
+
 TEST(Cli, LayersOnOpenGlMatchesTheCpuCapture) {
     const fs::path gl = fs::temp_directory_path() / "layerpaint_cli_gl";
     const fs::path cpu = fs::temp_directory_path() / "layerpaint_cli_cpu";

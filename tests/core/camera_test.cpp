@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 #include <gtest/gtest.h>
 
 #include "core/camera.h"
@@ -62,6 +63,29 @@ TEST(Camera, OrbitAboutKeepsThePivotOnScreen) {
     EXPECT_NEAR(before.y, after.y, 1e-2f);
     EXPECT_NEAR(before.z, after.z, 1e-3f);
     EXPECT_NEAR(camera.yawDegrees, 35.0f, 1e-4f);
+}
+
+TEST(Camera, ViewOrbitedAboutAPivotKeepsItOnScreenAndMovesTheEye) {
+    core::Camera camera;
+    camera.frame(unitBox());
+    camera.orbit(20.0f, 10.0f);
+    const core::View view = camera.view(640, 480);
+    const glm::vec3 pivot(0.3f, 0.1f, -0.2f);
+    const core::View turned = view.orbitedAbout(pivot, 40.0f, 15.0f);
+    const glm::vec3 before = view.project(pivot), after = turned.project(pivot);
+    EXPECT_NEAR(before.x, after.x, 1e-3f);
+    EXPECT_NEAR(before.y, after.y, 1e-3f);
+    EXPECT_NEAR(before.z, after.z, 1e-4f);
+    // The eye keeps its distance to the pivot and goes up for a positive pitch.
+    const glm::vec3 eye = glm::vec3(glm::inverse(view.view)[3]);
+    const glm::vec3 turnedEye = glm::vec3(glm::inverse(turned.view)[3]);
+    EXPECT_NEAR(glm::distance(eye, pivot), glm::distance(turnedEye, pivot), 1e-4f);
+    EXPECT_GT(glm::distance(eye, turnedEye), 0.5f);
+    EXPECT_GT(turnedEye.y, eye.y);
+    // The centre of the box moved on screen: the view did turn.
+    EXPECT_GT(
+        glm::distance(glm::vec2(view.project({0, 0, 0})), glm::vec2(turned.project({0, 0, 0}))),
+        5.0f);
 }
 
 TEST(Camera, FromOrbitUsesUnitCubeDistance) {
