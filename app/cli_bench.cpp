@@ -50,7 +50,7 @@ double msSince(Clock::time_point start) {
 struct Samples {
     std::vector<double> plain, captureGpu, captureResolve, surface, connectivity, segmentation,
         graph, buildLayers, drawLayers, firstDraw, startStroke, moveStroke, dab, connectivityCpu,
-        connectivityGpu;
+        connectivityGpu, popUp, seeThroughDraw;
 };
 
 struct StrokeTimes {
@@ -168,15 +168,32 @@ int runBench(const BenchArgs& args) {
                 target.bind();
                 // The first draw after a build also shades every fragment once; later draws
                 // (paint, pop-up, hover) only pick and compose. Both are reported.
-                const auto timedDraw = [&] {
+                const auto timedDraw = [&](const render::CompositeOptions& options) {
                     glFinish();
                     const auto drawStart = Clock::now();
-                    compositor.draw({});
+                    compositor.draw(options);
                     glFinish();
                     return msSince(drawStart);
                 };
-                const double firstDraw = timedDraw();
-                const double draw = timedDraw();
+                const double firstDraw = timedDraw({});
+                const double draw = timedDraw({});
+                // A click-to-pop-up at the centre until the picture shows it: the order, the
+                // ranks and a draw that picks again. Then a draw with see-through pop-ups.
+                glFinish();
+                const auto popStart = Clock::now();
+                doc.popUpAt({float(view->width) / 2.0f, float(view->height) / 2.0f});
+                compositor.setRegionRanks(doc.regionOrder().prunedRanks(false));
+                compositor.draw({});
+                glFinish();
+                const double popUp = msSince(popStart);
+                render::CompositeOptions seeThrough;
+                seeThrough.popUpOpacity = 0.55f;
+                compositor.setRegionRanks(doc.regionOrder().prunedRanks(true));
+                timedDraw(seeThrough); // picks again, keeping the fragments under see-through ones
+                const double seeThroughDraw = timedDraw(seeThrough);
+                core::RegionOrder initial = doc.regionOrder();
+                initial.reset();
+                doc.setRegionOrder(std::move(initial)); // strokes start as they always did
                 // Both connectivity engines on the same stack, so the choice can be checked.
                 core::ConnectivityOptions connectivityOptions;
                 connectivityOptions.unitScale = core::unitScale(*mesh);
@@ -206,6 +223,8 @@ int runBench(const BenchArgs& args) {
                 samples.buildLayers.push_back(build);
                 samples.drawLayers.push_back(draw);
                 samples.firstDraw.push_back(firstDraw);
+                samples.popUp.push_back(popUp);
+                samples.seeThroughDraw.push_back(seeThroughDraw);
                 samples.connectivityCpu.push_back(cpuConnectivity);
                 samples.connectivityGpu.push_back(gpuConnectivityMs);
                 fragments = layers->stack.fragmentCount();
@@ -236,6 +255,8 @@ int runBench(const BenchArgs& args) {
                 {"graph_ms", median(samples.graph)},
                 {"draw_layers_ms", median(samples.drawLayers)},
                 {"first_draw_after_build_ms", median(samples.firstDraw)},
+                {"pop_up_ms", median(samples.popUp)},
+                {"draw_layers_see_through_ms", median(samples.seeThroughDraw)},
                 {"start_stroke_ms", median(samples.startStroke)},
                 {"move_stroke_ms", median(samples.moveStroke)},
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
