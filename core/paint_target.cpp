@@ -13,8 +13,14 @@
 
 #include "core/connectivity.h"
 #include "core/layers.h"
+#include "core/uv_raster.h"
 
 namespace core {
+
+using uv::scanUv;
+using uv::setUpUv;
+using uv::UvTriangle;
+using uv::wrapIndex;
 
 // ---------------------------------------------------------------------------------------------
 // sRGB
@@ -73,6 +79,27 @@ inline std::uint8_t encodeUnorm(float x) {
     return std::uint8_t(x * 255.0f + 0.5f);
 }
 
+/**
+ * Sets the texel at dst to lerp(before, target, cover) in linear colour (alpha linear as
+ * stored). The target is given as bytes (sRGB colour, unorm alpha) and, when targetLinear is not
+ * nullptr, as the exact linear values the bytes round; coverage 1 gives the target bytes exactly.
+ */
+inline void blendTexel(const SrgbTables& srgb, std::uint8_t* dst, const std::uint8_t* before,
+                       const std::uint8_t* targetBytes, const float* targetLinear, float cover) {
+    if (cover >= 1.0f) {
+        std::memcpy(dst, targetBytes, 4);
+        return;
+    }
+    for (int k = 0; k < 3; ++k) {
+        const float from = srgb.decode[before[k]];
+        const float to = targetLinear ? targetLinear[k] : srgb.decode[targetBytes[k]];
+        dst[k] = encodeSrgb(srgb, from + (to - from) * cover);
+    }
+    const float from = float(before[3]) / 255.0f;
+    const float to = targetLinear ? targetLinear[3] : float(targetBytes[3]) / 255.0f;
+    dst[3] = encodeUnorm(from + (to - from) * cover);
+}
+
 } // namespace
 
 float srgbToLinear(std::uint8_t value) {
@@ -84,110 +111,11 @@ std::uint8_t linearToSrgb(float value) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// UV-space rasterization
+// UV-space rasterization: core/uv_raster.h
 
 namespace {
 
-constexpr int kSubBits = 8; // texel positions snapped to 1/256 texel, as the capture does
-constexpr std::int64_t kSub = std::int64_t(1) << kSubBits;
-constexpr double kMaxTexelCoord = double(1 << 20); // keeps edge products inside int64
 constexpr float kMinW = 1e-6f;
-
-inline std::int64_t edgeFunction(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by,
-                                 std::int64_t px, std::int64_t py) {
-    return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
-}
-
-/** Fill rule tie-break for a point exactly on edge a→b: exactly one of a→b and b→a owns it. */
-inline bool ownsEdge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int64_t by) {
-    return by < ay || (by == ay && bx > ax);
-}
-
-inline std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
-    return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
-
-/**
- * One triangle in a page's texel space, ordered to positive area. A texel (x, y) is covered when
- * its centre (x + 0.5, y + 0.5) is inside, with a fill rule that covers a centre on an edge
- * shared by two triangles exactly once: the texels of a UV chart are all visited, none twice.
- */
-struct UvTriangle {
-    std::int64_t x[3], y[3];
-    int corner[3]; // the triangle's corner (0..2) in each slot
-    std::int64_t area;
-    std::int64_t bias[3];       // per edge k (opposite slot k): 0 if it owns its points, else -1
-    int minX, maxX, minY, maxY; // texels whose centres may be inside (not wrapped)
-};
-
-bool setUpUv(const glm::vec2 uv[3], int width, int height, UvTriangle& r) {
-    for (int c = 0; c < 3; ++c) {
-        const double tx = double(uv[c].x) * width, ty = double(uv[c].y) * height;
-        if (!(std::fabs(tx) < kMaxTexelCoord) || !(std::fabs(ty) < kMaxTexelCoord))
-            return false;
-        // Rounded half away from zero, as llround would (without the library call).
-        r.x[c] = std::int64_t(tx * double(kSub) + (tx < 0.0 ? -0.5 : 0.5));
-        r.y[c] = std::int64_t(ty * double(kSub) + (ty < 0.0 ? -0.5 : 0.5));
-        r.corner[c] = c;
-    }
-    r.area = edgeFunction(r.x[0], r.y[0], r.x[1], r.y[1], r.x[2], r.y[2]);
-    if (r.area == 0)
-        return false;
-    if (r.area < 0) {
-        // A mirrored chart: order the corners so the edge functions are positive inside.
-        std::swap(r.x[1], r.x[2]);
-        std::swap(r.y[1], r.y[2]);
-        std::swap(r.corner[1], r.corner[2]);
-        r.area = -r.area;
-    }
-    for (int k = 0; k < 3; ++k) {
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        r.bias[k] = ownsEdge(r.x[a], r.y[a], r.x[b], r.y[b]) ? 0 : -1;
-    }
-    const std::int64_t minX = std::min({r.x[0], r.x[1], r.x[2]});
-    const std::int64_t maxX = std::max({r.x[0], r.x[1], r.x[2]});
-    const std::int64_t minY = std::min({r.y[0], r.y[1], r.y[2]});
-    const std::int64_t maxY = std::max({r.y[0], r.y[1], r.y[2]});
-    // Texel x has its centre at x * kSub + kSub / 2.
-    r.minX = int(-floorDiv(-(minX - kSub / 2), kSub));
-    r.maxX = int(floorDiv(maxX - kSub / 2, kSub));
-    r.minY = int(-floorDiv(-(minY - kSub / 2), kSub));
-    r.maxY = int(floorDiv(maxY - kSub / 2, kSub));
-    return r.minX <= r.maxX && r.minY <= r.maxY;
-}
-
-/**
- * Calls fn(x, y, e0, e1, e2) for every covered texel (x, y) of r in [x0, x1] × [y0, y1]
- * (unwrapped indices); e_k / r.area is the barycentric weight of slot k.
- */
-template <typename Fn> void scanUv(const UvTriangle& r, int x0, int x1, int y0, int y1, Fn&& fn) {
-    std::int64_t stepX[3];
-    for (int k = 0; k < 3; ++k) {
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        stepX[k] = -(r.y[b] - r.y[a]) * kSub;
-    }
-    for (int y = y0; y <= y1; ++y) {
-        const std::int64_t py = std::int64_t(y) * kSub + kSub / 2;
-        const std::int64_t px = std::int64_t(x0) * kSub + kSub / 2;
-        std::int64_t e[3];
-        for (int k = 0; k < 3; ++k) {
-            const int a = (k + 1) % 3, b = (k + 2) % 3;
-            e[k] = edgeFunction(r.x[a], r.y[a], r.x[b], r.y[b], px, py);
-        }
-        for (int x = x0; x <= x1; ++x) {
-            if (e[0] + r.bias[0] >= 0 && e[1] + r.bias[1] >= 0 && e[2] + r.bias[2] >= 0)
-                fn(x, y, e[0], e[1], e[2]);
-            e[0] += stepX[0];
-            e[1] += stepX[1];
-            e[2] += stepX[2];
-        }
-    }
-}
-
-inline int wrapIndex(int i, int size) {
-    const int m = i % size;
-    return m < 0 ? m + size : m;
-}
 
 /** Tiles of kTextureTile texels → merged rectangles along tile rows (keys sorted). */
 void texelRectsFromTiles(std::vector<TileKey>& keys, const std::vector<TextureTarget::Page>& pages,
@@ -304,7 +232,28 @@ struct PaintTarget::Context {
     void updateView(const View& v);
     const ProjectedVertex& vertex(std::uint32_t v);
     bool setUpTriangle(std::uint32_t t, TriangleSetup& s);
+    /** A new dab number (the per-triangle and per-tile marks compare with it). */
+    void nextDab() {
+        if (++dab == 0) {
+            std::fill(triangleDab.begin(), triangleDab.end(), 0u);
+            for (StrokeTile& s : slots)
+                s.dab = 0;
+            dab = 1;
+        }
+    }
     bool beginDab(const Layers& layers, const Dab& d);
+    /**
+     * Starts a paintElements() call: a new dab number, nothing touched yet. Returns the coverage
+     * the elements get, the stroke's opacity (0 when there is nothing to paint).
+     */
+    float beginElements() {
+        changes.clear();
+        touched.clear();
+        if (!inStroke)
+            return 0.0f;
+        nextDab();
+        return std::isfinite(brush.opacity) ? std::clamp(brush.opacity, 0.0f, 1.0f) : 0.0f;
+    }
     bool overlapsMap(const TriangleSetup& s) const;
     /**
      * The setup of the map's fragment at window position (px, py), or kNone. Truncating the
@@ -424,12 +373,7 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
     const LayerStack& st = layers.stack;
     cullBackFaces = layers.options.cullBackFaces;
     updateView(layers.view);
-    if (++dab == 0) {
-        std::fill(triangleDab.begin(), triangleDab.end(), 0u);
-        for (StrokeTile& s : slots)
-            s.dab = 0;
-        dab = 1;
-    }
+    nextDab();
     center = d.center;
     radius = d.radius;
     dabOpacity = std::clamp(d.opacity, 0.0f, 1.0f);
@@ -992,6 +936,95 @@ PaintChanges TextureTarget::changes(const TileUndoRecord& record) const {
     return result;
 }
 
+void TextureTarget::padTouched() {
+    Context& c = *m_context;
+    const SrgbTables& srgb = srgbTables();
+    const bool eraser = c.brush.eraser;
+    // Seam padding: uncovered texels next to charts take the coverage of the texel they copy,
+    // blended over their own stroke-start value, so the eraser restores them exactly too.
+    const std::size_t paintedTiles = c.touched.size(); // padding adds to the list
+    for (std::size_t i = 0; i < paintedTiles; ++i) {
+        const TileKey key = c.slots[c.touched[i]].key;
+        Page& page = m_pages[key.page];
+        const int width = page.image.width;
+        const std::uint32_t begin = page.padOffsets[key.tile], end = page.padOffsets[key.tile + 1];
+        if (begin == end)
+            continue;
+        const std::size_t sourceSlot = c.touched[i];
+        const int sourceTileX = int(key.tile % std::uint32_t(page.tilesX)) * kTextureTile;
+        const int sourceTileY = int(key.tile / std::uint32_t(page.tilesX)) * kTextureTile;
+        const int sourceWidth = std::min(kTextureTile, width - sourceTileX);
+        for (std::uint32_t j = begin; j < end; ++j) {
+            const PadPair pair = page.padPairs[j];
+            const int sx = int(pair.source % std::uint32_t(width)) - sourceTileX;
+            const int sy = int(pair.source / std::uint32_t(width)) - sourceTileY;
+            const float sourceCover =
+                c.slots[sourceSlot]
+                    .alpha[std::size_t(sy) * std::size_t(sourceWidth) + std::size_t(sx)];
+            if (!(sourceCover > 0.0f))
+                continue;
+            const int px = int(pair.padded % std::uint32_t(width));
+            const int py = int(pair.padded / std::uint32_t(width));
+            const std::uint32_t tile =
+                std::uint32_t(py / kTextureTile) * std::uint32_t(page.tilesX) +
+                std::uint32_t(px / kTextureTile);
+            const std::int32_t slot = c.slotFor(*this, key.page, tile);
+            StrokeTile& st = c.slots[std::size_t(slot)];
+            const int tileWidth =
+                std::min(kTextureTile, width - (px / kTextureTile) * kTextureTile);
+            const std::size_t local = std::size_t(py % kTextureTile) * std::size_t(tileWidth) +
+                                      std::size_t(px % kTextureTile);
+            if (!(sourceCover > st.alpha[local]))
+                continue;
+            st.alpha[local] = sourceCover;
+            c.touch(slot);
+            const std::size_t at = std::size_t(pair.padded) * 4;
+            blendTexel(srgb, &page.image.rgba[at], &st.before[local * 4],
+                       eraser ? &page.original.rgba[at] : c.colorBytes.data(),
+                       eraser ? nullptr : &c.colorLinear[0], sourceCover);
+        }
+    }
+}
+
+const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> elements) {
+    Context& c = *m_context;
+    const float cover = c.beginElements();
+    if (!(cover > 0.0f))
+        return c.changes;
+    const SrgbTables& srgb = srgbTables();
+    const bool eraser = c.brush.eraser;
+    for (const PaintElement& e : elements) {
+        if (e.page >= m_pages.size())
+            continue;
+        Page& page = m_pages[e.page];
+        const int width = page.image.width;
+        if (std::size_t(e.index) >= std::size_t(width) * std::size_t(page.image.height))
+            continue;
+        const int x = int(e.index % std::uint32_t(width)), y = int(e.index / std::uint32_t(width));
+        const std::uint32_t tile = std::uint32_t(y / kTextureTile) * std::uint32_t(page.tilesX) +
+                                   std::uint32_t(x / kTextureTile);
+        const std::int32_t slot = c.slotFor(*this, e.page, tile);
+        StrokeTile& st = c.slots[std::size_t(slot)];
+        const int tileWidth = std::min(kTextureTile, width - (x / kTextureTile) * kTextureTile);
+        const std::size_t local =
+            std::size_t(y % kTextureTile) * std::size_t(tileWidth) + std::size_t(x % kTextureTile);
+        if (!(cover > st.alpha[local]))
+            continue;
+        st.alpha[local] = cover;
+        c.touch(slot);
+        const std::size_t at = std::size_t(e.index) * 4;
+        blendTexel(srgb, &page.image.rgba[at], &st.before[local * 4],
+                   eraser ? &page.original.rgba[at] : c.colorBytes.data(),
+                   eraser ? nullptr : &c.colorLinear[0], cover);
+    }
+    padTouched();
+    c.keys.clear();
+    for (const std::uint32_t slot : c.touched)
+        c.keys.push_back(c.slots[slot].key);
+    texelRectsFromTiles(c.keys, m_pages, c.changes.texels);
+    return c.changes;
+}
+
 const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     Context& c = *m_context;
     c.changes.clear();
@@ -1003,25 +1036,13 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const bool eraser = brush.eraser;
 
     // Sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush colour, or the
-    // original for the eraser. Coverage 1 gives the target bytes exactly.
+    // original for the eraser.
     const Page* blendPage = nullptr; // the page blend() writes to
     const auto blend = [&](std::uint8_t* pixels, std::size_t texel, const std::uint8_t* before,
                            float cover) {
-        std::uint8_t* dst = pixels + texel * 4;
-        const std::uint8_t* targetBytes =
-            eraser ? &blendPage->original.rgba[texel * 4] : c.colorBytes.data();
-        if (cover >= 1.0f) {
-            std::memcpy(dst, targetBytes, 4);
-            return;
-        }
-        for (int k = 0; k < 3; ++k) {
-            const float from = srgb.decode[before[k]];
-            const float to = eraser ? srgb.decode[targetBytes[k]] : c.colorLinear[k];
-            dst[k] = encodeSrgb(srgb, from + (to - from) * cover);
-        }
-        const float from = float(before[3]) / 255.0f;
-        const float to = eraser ? float(targetBytes[3]) / 255.0f : c.colorLinear[3];
-        dst[3] = encodeUnorm(from + (to - from) * cover);
+        blendTexel(srgb, pixels + texel * 4, before,
+                   eraser ? &blendPage->original.rgba[texel * 4] : c.colorBytes.data(),
+                   eraser ? nullptr : &c.colorLinear[0], cover);
     };
 
     // The dab's constants as locals, which the compiler can keep in registers across the
@@ -1146,49 +1167,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             });
     }
 
-    // Seam padding: uncovered texels next to charts take the coverage of the texel they copy,
-    // blended over their own stroke-start value, so the eraser restores them exactly too.
-    const std::size_t paintedTiles = c.touched.size();
-    for (std::size_t i = 0; i < paintedTiles; ++i) {
-        const TileKey key = c.slots[c.touched[i]].key;
-        Page& page = m_pages[key.page];
-        const int width = page.image.width;
-        const std::uint32_t begin = page.padOffsets[key.tile], end = page.padOffsets[key.tile + 1];
-        if (begin == end)
-            continue;
-        const std::size_t sourceSlot = c.touched[i];
-        const int sourceTileX = int(key.tile % std::uint32_t(page.tilesX)) * kTextureTile;
-        const int sourceTileY = int(key.tile / std::uint32_t(page.tilesX)) * kTextureTile;
-        const int sourceWidth = std::min(kTextureTile, width - sourceTileX);
-        for (std::uint32_t j = begin; j < end; ++j) {
-            const PadPair pair = page.padPairs[j];
-            const int sx = int(pair.source % std::uint32_t(width)) - sourceTileX;
-            const int sy = int(pair.source / std::uint32_t(width)) - sourceTileY;
-            const float sourceCover =
-                c.slots[sourceSlot]
-                    .alpha[std::size_t(sy) * std::size_t(sourceWidth) + std::size_t(sx)];
-            if (!(sourceCover > 0.0f))
-                continue;
-            const int px = int(pair.padded % std::uint32_t(width));
-            const int py = int(pair.padded / std::uint32_t(width));
-            const std::uint32_t tile =
-                std::uint32_t(py / kTextureTile) * std::uint32_t(page.tilesX) +
-                std::uint32_t(px / kTextureTile);
-            const std::int32_t slot = c.slotFor(*this, key.page, tile);
-            StrokeTile& st = c.slots[std::size_t(slot)];
-            const int tileWidth =
-                std::min(kTextureTile, width - (px / kTextureTile) * kTextureTile);
-            const std::size_t local = std::size_t(py % kTextureTile) * std::size_t(tileWidth) +
-                                      std::size_t(px % kTextureTile);
-            if (!(sourceCover > st.alpha[local]))
-                continue;
-            st.alpha[local] = sourceCover;
-            c.touch(slot);
-            blendPage = &page;
-            blend(page.image.rgba.data(), pair.padded, &st.before[local * 4], sourceCover);
-        }
-    }
-
+    padTouched();
     c.keys.clear();
     for (const std::uint32_t slot : c.touched)
         c.keys.push_back(c.slots[slot].key);
@@ -1287,6 +1266,34 @@ PaintChanges VertexColorTarget::changes(const TileUndoRecord& record) const {
             keys.push_back(record.tile(i));
     vertexRangesFromBlocks(keys, std::uint32_t(m_colors.size()), result.vertices);
     return result;
+}
+
+const PaintChanges& VertexColorTarget::paintElements(std::span<const PaintElement> elements) {
+    Context& c = *m_context;
+    const float cover = c.beginElements();
+    if (!(cover > 0.0f))
+        return c.changes;
+    for (const PaintElement& e : elements) {
+        const std::uint32_t v = e.index;
+        if (e.page != 0 || v >= m_colors.size())
+            continue;
+        const std::int32_t slot = c.slotFor(*this, 0, v / kVertexBlock);
+        StrokeTile& st = c.slots[std::size_t(slot)];
+        const std::size_t local = v % kVertexBlock;
+        if (!(cover > st.alpha[local]))
+            continue;
+        st.alpha[local] = cover;
+        c.touch(slot);
+        glm::vec4 before;
+        std::memcpy(&before, &st.before[local * sizeof(glm::vec4)], sizeof(glm::vec4));
+        const glm::vec4 target = c.brush.eraser ? m_original[v] : c.colorLinear;
+        m_colors[v] = cover >= 1.0f ? target : before + (target - before) * cover;
+    }
+    c.keys.clear();
+    for (const std::uint32_t slot : c.touched)
+        c.keys.push_back(c.slots[slot].key);
+    vertexRangesFromBlocks(c.keys, std::uint32_t(m_colors.size()), c.changes.vertices);
+    return c.changes;
 }
 
 const PaintChanges& VertexColorTarget::paint(const Layers& layers, const Dab& dab) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -47,6 +48,18 @@ struct PaintChanges {
         texels.clear();
         vertices.clear();
     }
+};
+
+/**
+ * One element of a paint target: texel y * width + x of a texture page, or a vertex (page 0) of
+ * a vertex colour target.
+ */
+struct PaintElement {
+    std::uint32_t page = 0;
+    std::uint32_t index = 0;
+
+    friend bool operator==(const PaintElement&, const PaintElement&) = default;
+    friend auto operator<=>(const PaintElement&, const PaintElement&) = default;
 };
 
 enum class PaintTargetKind : std::uint8_t { Texture, VertexColors };
@@ -103,6 +116,13 @@ public:
      * next call); empty outside a stroke. Map entries outside the stack are ignored.
      */
     virtual const PaintChanges& paint(const Layers& layers, const Dab& dab) = 0;
+    /**
+     * Paints elements at full weight, as a dab covering them would (flood fill): each gets the
+     * stroke's opacity of the brush colour; texture pages pad the seams around painted texels.
+     * Elements out of range are ignored. Returns what changed (valid until the next call);
+     * empty outside a stroke.
+     */
+    virtual const PaintChanges& paintElements(std::span<const PaintElement> elements) = 0;
     /** Ends the stroke: the record of the tiles it changed (empty if none, or no stroke). */
     TileUndoRecord endStroke();
 
@@ -152,6 +172,7 @@ public:
 
     PaintTargetKind kind() const override { return PaintTargetKind::Texture; }
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     PaintChanges changes(const TileUndoRecord& record) const override;
     std::size_t bytes() const override;
 
@@ -190,6 +211,8 @@ public:
 private:
     TextureTarget(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
                   const PaintTargetOptions& options);
+    /** Pads the seams around the tiles the current dab touched (see PaintTargetOptions). */
+    void padTouched();
 
     std::vector<Page> m_pages;
     std::vector<std::uint32_t> m_materialPage;
@@ -212,6 +235,7 @@ public:
 
     PaintTargetKind kind() const override { return PaintTargetKind::VertexColors; }
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     PaintChanges changes(const TileUndoRecord& record) const override;
     std::size_t bytes() const override;
 
