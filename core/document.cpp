@@ -254,6 +254,55 @@ void Document::endStroke() {
         m_history.push(m_paintTarget->endStroke());
 }
 
+Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    std::string error;
+    PaintTarget* target = paintTarget(&error);
+    if (!target)
+        return Error{error};
+    if (m_tracker.inStroke())
+        endStroke();
+    const LayerStack& stack = m_layers->stack;
+    if (!(position.x >= 0.0f && position.y >= 0.0f && position.x < float(stack.width) &&
+          position.y < float(stack.height)))
+        return {};
+    const std::size_t pixel =
+        std::size_t(position.y) * std::size_t(stack.width) + std::size_t(position.x);
+    const std::uint32_t fragment = visibleFragment(pixel);
+    if (fragment == kNone || fragment >= stack.fragmentCount())
+        return {};
+    const std::uint32_t triangle = stack.triangle[fragment];
+
+    // The brush's colour and opacity at full weight everywhere it fills.
+    Brush brush = m_brush;
+    brush.hardness = 1.0f;
+    brush.flow = 1.0f;
+    brush.eraser = false;
+    target->beginStroke(brush);
+    switch (mode) {
+    case FillMode::Region: {
+        const std::uint32_t region = fragment < m_layers->segmentation.region.size()
+                                         ? m_layers->segmentation.region[fragment]
+                                         : kNone;
+        changes = target->paint(*m_layers, regionFillDab(*m_layers, region, brush.opacity));
+        break;
+    }
+    case FillMode::Surface:
+        changes = target->paintElements(
+            triangleElements(*target, componentTriangles(*m_topology, triangle)));
+        break;
+    case FillMode::Color:
+        if (const auto point = surfacePointAt(*m_mesh, m_layers->view, triangle, position))
+            changes = target->paintElements(
+                similarColorElements(*target, *m_topology, triangle, *point, tolerance));
+        break;
+    }
+    m_history.push(target->endStroke());
+    return {};
+}
+
 bool Document::undo(PaintChanges& changes) {
     changes.clear();
     if (m_tracker.inStroke())

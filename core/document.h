@@ -9,6 +9,7 @@
 
 #include "core/camera.h"
 #include "core/dab.h"
+#include "core/flood_fill.h"
 #include "core/layers.h"
 #include "core/mesh.h"
 #include "core/mesh_topology.h"
@@ -155,6 +156,14 @@ public:
     bool fillBrushMaps(std::span<std::uint8_t> rgba, std::uint8_t alpha = 128) {
         return m_tracker.fillOverlay(rgba, alpha);
     }
+    /**
+     * Flood fill (the Fill tool) at a window position of the current layers' view with the brush
+     * colour and opacity, as one undo step. mode says what is filled (FillMode), starting from
+     * the visible fragment there; tolerance (0..1) is FillMode::Color's. Needs layers (an Error
+     * otherwise); background or a position outside the view fills nothing. changes receives
+     * what was painted.
+     */
+    Status fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes);
     /** Undo / redo of paint; false when there is nothing to undo / redo. */
     bool undo(PaintChanges& changes);
     bool redo(PaintChanges& changes);
