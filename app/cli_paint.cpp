@@ -10,6 +10,7 @@
 
 #include "app/cli_commands.h"
 #include "core/document.h"
+#include "core/flood_fill.h"
 #include "core/gltf_export.h"
 #include "core/mesh_io.h"
 #include "render/gl_context.h"
@@ -142,6 +143,26 @@ void replay(const json& operations, core::Document& doc, core::LayerCapturer& ca
                 for (std::size_t k = 1; k < points.size(); ++k)
                     doc.moveStroke(points[k], changes);
                 doc.endStroke();
+            } else if (name == "fill") {
+                if (!op.contains("at") || !op["at"].is_array() || op["at"].size() != 2 ||
+                    !op["at"][0].is_number() || !op["at"][1].is_number())
+                    throw ScriptError{"\"at\" must be [x, y] (pixels from the top-left)"};
+                const glm::vec2 at(op["at"][0].get<float>(), op["at"][1].get<float>());
+                if (!std::isfinite(at.x) || !std::isfinite(at.y))
+                    throw ScriptError{"\"at\" must be finite"};
+                core::FillMode mode = core::FillMode::Region;
+                if (op.contains("mode")) {
+                    const auto parsed = op["mode"].is_string()
+                                            ? core::parseFillMode(op["mode"].get<std::string>())
+                                            : std::nullopt;
+                    if (!parsed)
+                        throw ScriptError{"\"mode\" must be \"region\", \"surface\" or \"color\""};
+                    mode = *parsed;
+                }
+                const float tolerance = number(op, "tolerance", 0.1f, 0.0f, 1.0f);
+                ensureLayers();
+                if (const core::Status s = doc.fill(at, mode, tolerance, changes); !s)
+                    throw ScriptError{s.error()};
             } else if (name == "undo") {
                 doc.undo(changes);
             } else if (name == "redo") {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The headless tool's contract (DESIGN.md §4), checked by running the real binary.
+#include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <OpenImageIO/imageio.h>
+#include <glm/vec2.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -276,6 +279,101 @@ TEST(Cli, CameraFileGivesTheSameViewAsOrbit) {
     const json other = json::parse(readFile(b / "summary.json"));
     EXPECT_EQ(other["fragments_per_layer"], summary["fragments_per_layer"]);
     EXPECT_EQ(other["regions"], summary["regions"]);
+}
+
+/** builtin:row's four bodies: per body, how many triangles have rgb (±3) at their centre texel. */
+std::array<int, 4> rowTrianglesOfColor(const core::Mesh& mesh, std::array<int, 3> rgb) {
+    std::array<int, 4> count{};
+    const core::Image& texture = mesh.textures.at(0);
+    const std::size_t perBody = mesh.triangleCount() / 4;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        glm::vec2 uv(0.0f);
+        for (int k = 0; k < 3; ++k)
+            uv += mesh.uvs[mesh.indices[3 * t + std::size_t(k)]] / 3.0f;
+        const int x = std::clamp(int(uv.x * float(texture.width)), 0, texture.width - 1);
+        const int y = std::clamp(int(uv.y * float(texture.height)), 0, texture.height - 1);
+        const std::uint8_t* px = &texture.rgba[(std::size_t(y) * texture.width + x) * 4];
+        if (std::abs(px[0] - rgb[0]) <= 3 && std::abs(px[1] - rgb[1]) <= 3 &&
+            std::abs(px[2] - rgb[2]) <= 3)
+            ++count[std::min<std::size_t>(t / perBody, 3)];
+    }
+    return count;
+}
+
+/** Replays script on builtin:row and loads the saved .glb. */
+core::Mesh paintRow(const json& script, const std::string& tag) {
+    const fs::path dir = fs::temp_directory_path() / ("layerpaint_cli_fill_" + tag);
+    fs::create_directories(dir);
+    std::ofstream(dir / "script.json") << script.dump();
+    const CliRun run = runCli({"paint", "builtin:row", "--script", (dir / "script.json").string(),
+                               "--out", (dir / "result.glb").string()});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    auto mesh = core::loadMesh((dir / "result.glb").string());
+    EXPECT_TRUE(mesh) << mesh.error();
+    return mesh ? std::move(mesh).value() : core::Mesh{};
+}
+
+TEST(Cli, PaintFillModesFillWhatTheySayOnTheSavedModel) {
+    // At orbit 25,10,1.2 and 320x240, the front body (0) covers x 53..141, y 114..173 and the
+    // others peek out behind it to the right.
+    const json view = {{"size", "320x240"}, {"orbit", "25,10,1.2"}};
+    const auto script = [&](json operations) {
+        json s = view;
+        s["operations"] = std::move(operations);
+        return s;
+    };
+    const std::array<int, 3> green{0, 255, 0}, red{255, 0, 0};
+    constexpr int kPerBody = 3968;
+    const json setGreen = {{"op", "set-brush"}, {"color", "#00ff00"}};
+
+    // surface: all of body 0, nothing else; undone: nothing.
+    auto counts = rowTrianglesOfColor(
+        paintRow(script({setGreen, {{"op", "fill"}, {"at", {80, 140}}, {"mode", "surface"}}}),
+                 "surface"),
+        green);
+    EXPECT_EQ(counts, (std::array<int, 4>{kPerBody, 0, 0, 0}));
+    counts = rowTrianglesOfColor(
+        paintRow(script({setGreen,
+                         {{"op", "fill"}, {"at", {80, 140}}, {"mode", "surface"}},
+                         {{"op", "undo"}}}),
+                 "undo"),
+        green);
+    EXPECT_EQ(counts, (std::array<int, 4>{0, 0, 0, 0}));
+
+    // region: body 0's side facing the view, not its back, nothing else.
+    counts = rowTrianglesOfColor(
+        paintRow(script({setGreen, {{"op", "fill"}, {"at", {80, 140}}, {"mode", "region"}}}),
+                 "region"),
+        green);
+    EXPECT_GT(counts[0], kPerBody / 4);
+    EXPECT_LT(counts[0], kPerBody * 3 / 4);
+    EXPECT_EQ(counts[1] + counts[2] + counts[3], 0);
+
+    // color: a hard red band across body 0, then a fill on the body's colour: the rest of body 0
+    // turns green around the back, the band stays red.
+    const core::Mesh painted = paintRow(
+        script({{{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 5}, {"hardness", 1.0}},
+                {{"op", "stroke"}, {"points", {{40, 145}, {160, 145}}}},
+                setGreen,
+                {{"op", "fill"}, {"at", {80, 125}}, {"mode", "color"}, {"tolerance", 0.1}}}),
+        "color");
+    const auto greens = rowTrianglesOfColor(painted, green);
+    const auto reds = rowTrianglesOfColor(painted, red);
+    EXPECT_GT(reds[0], 20);
+    EXPECT_GT(greens[0], kPerBody / 2);
+    EXPECT_EQ(reds[0] + greens[0], kPerBody);
+    EXPECT_EQ(greens[1] + greens[2] + greens[3], 0);
+    EXPECT_EQ(reds[1] + reds[2] + reds[3], 0);
+
+    // A bad mode: one line naming the script and the operation.
+    const fs::path bad = fs::temp_directory_path() / "layerpaint_cli_fill_bad.json";
+    std::ofstream(bad) << script({{{"op", "fill"}, {"at", {80, 140}}, {"mode", "bucket"}}}).dump();
+    const CliRun run =
+        runCli({"paint", "builtin:row", "--script", bad.string(), "--out",
+                (fs::temp_directory_path() / "layerpaint_cli_fill_bad.glb").string()});
+    EXPECT_NE(run.exitCode, 0);
+    EXPECT_NE(run.err.find("operation 1: \"mode\" must be"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(bad.string()), std::string::npos) << run.err;
 }
 
 } // namespace
