@@ -2,7 +2,9 @@
 #include "core/flood_fill.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <utility>
 
@@ -72,10 +74,6 @@ float encodeSrgb(float linear) {
 }
 
 /** A colour as compared: sRGB-encoded red, green, blue and alpha, 0..1. */
-glm::vec4 encodedColor(const std::uint8_t* rgba) {
-    return glm::vec4(rgba[0], rgba[1], rgba[2], rgba[3]) / 255.0f;
-}
-
 glm::vec4 encodedColor(const glm::vec4& linear) {
     return {encodeSrgb(linear.r), encodeSrgb(linear.g), encodeSrgb(linear.b),
             std::isfinite(linear.a) ? std::clamp(linear.a, 0.0f, 1.0f) : 0.0f};
@@ -226,10 +224,16 @@ std::vector<PaintElement> textureColorFill(const TextureTarget& target,
         links.erase(std::unique(links.begin(), links.end()), links.end());
     }
 
-    const auto colorOf = [&](std::uint32_t page, std::uint32_t texel) {
-        return encodedColor(&target.page(page).rgba[std::size_t(texel) * 4]);
+    // Bytes are sRGB-encoded already: compare them as integers (|difference| / 255 within
+    // the tolerance, as similar() would).
+    const int limit = int(std::floor(tolerance * 255.0f + 255.0f * 1e-6f));
+    const std::uint8_t* seedBytes = &target.page(seedPage).rgba[std::size_t(seedTexel) * 4];
+    const std::array<int, 4> seedColor{seedBytes[0], seedBytes[1], seedBytes[2], seedBytes[3]};
+    const auto similarTexel = [&](std::uint32_t page, std::uint32_t texel) {
+        const std::uint8_t* c = &target.page(page).rgba[std::size_t(texel) * 4];
+        return std::abs(c[0] - seedColor[0]) <= limit && std::abs(c[1] - seedColor[1]) <= limit &&
+               std::abs(c[2] - seedColor[2]) <= limit && std::abs(c[3] - seedColor[3]) <= limit;
     };
-    const glm::vec4 seedColor = colorOf(seedPage, seedTexel);
     std::vector<PaintElement> result;
     std::vector<std::uint64_t> queue{node(seedPage, seedTexel)};
     pages[seedPage].visited[seedTexel] = 1;
@@ -237,7 +241,7 @@ std::vector<PaintElement> textureColorFill(const TextureTarget& target,
     for (std::size_t head = 0; head < queue.size(); ++head) {
         const std::uint64_t id = queue[head];
         const auto p = std::uint32_t(id >> 32), texel = std::uint32_t(id);
-        if (!similar(colorOf(p, texel), seedColor, tolerance))
+        if (!similarTexel(p, texel))
             continue;
         result.push_back({p, texel});
         PageState& page = pages[p];

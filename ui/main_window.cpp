@@ -31,6 +31,7 @@
 
 #include "core/builtin_models.h"
 #include "ui/brush_toolbar.h"
+#include "ui/fill_panel.h"
 #include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
 #include "ui/layers_panel.h"
@@ -239,6 +240,15 @@ void MainWindow::createPanels() {
         statusBar()->showMessage(tr("Region %1 popped up").arg(region), kStatusMessageMs);
         m_regionTools->popUpRegion(region);
         emit regionActivated(region);
+    });
+
+    m_fillPanel = new FillPanel(this);
+    m_fillDock = makeDock(tr("Fill"), QStringLiteral("fillDock"), m_fillPanel);
+    // Fill's options belong with the tool: the panel shows once the tool is chosen.
+    m_fillDock->hide();
+    connect(this, &MainWindow::toolChanged, this, [this](Tool tool) {
+        if (tool == Tool::Fill)
+            m_fillDock->show();
     });
 
     // Default layout (restoreState() may replace it): a column on the right.
@@ -523,7 +533,7 @@ void MainWindow::createToolActions() {
         m_toolBar->addAction(action);
     }
     // Not implemented yet: enabled by the changes that add them.
-    for (const Tool tool : {Tool::Fill, Tool::Eyedropper})
+    for (const Tool tool : {Tool::Eyedropper})
         toolAction(tool)->setEnabled(false);
     toolAction(Tool::Brush)->setChecked(true);
 }
@@ -568,6 +578,8 @@ void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModif
         m_regionTools->popUpAt(pixel);
         return;
     case Tool::Fill:
+        fillAt(pixel);
+        return;
     case Tool::Eyedropper:
         return;
     }
@@ -607,6 +619,44 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
     m_strokeStats.pressMs = elapsedMs(clock);
+}
+
+void MainWindow::fillAt(QPointF pixel) {
+    QElapsedTimer clock;
+    clock.start();
+    // As a stroke: never with the layers of another view.
+    if (!m_builder->buildNow())
+        return; // buildFailed() reported why
+    const bool hadTarget = m_document->hasPaintTarget();
+    std::string error;
+    if (!m_document->paintTarget(&error)) {
+        statusBar()->showMessage(
+            tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
+        return;
+    }
+    if (!hadTarget)
+        m_viewport->paintTargetChanged();
+    const core::UndoHistory& history = m_document->history();
+    const std::size_t mark = history.undoCount() + history.droppedCount();
+    core::PaintChanges changes;
+    const core::Status status =
+        m_document->fill({float(pixel.x()), float(pixel.y())}, m_fillPanel->mode(),
+                         m_fillPanel->tolerance(), changes);
+    if (!status) {
+        statusBar()->showMessage(tr("Cannot fill: %1").arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+        return;
+    }
+    m_viewport->applyPaintChanges(changes);
+    if (history.undoCount() + history.droppedCount() > mark) {
+        m_undoStack->push(new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Fill")));
+        statusBar()->showMessage(
+            tr("Filled in %1 ms").arg(QLocale().toString(elapsedMs(clock), 'f', 0)),
+            kPaintMessageMs);
+    } else {
+        statusBar()->showMessage(tr("Nothing to fill there"), kPaintMessageMs);
+    }
+    syncUndoStack();
 }
 
 void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
@@ -673,12 +723,14 @@ void MainWindow::syncUndoStack() {
         return;
     // The core dropped its oldest paint steps (budget) or all of them (new target), or the
     // layers changed (order steps name regions that are gone): offer only what exists. Paint
-    // commands hold no data, so new ones stand in for the steps that are left.
+    // commands hold no data, so new ones stand in for the steps that are left, keeping their
+    // names ("Paint Stroke", "Fill").
     const int drop = strokes - total;
     const bool oldestDropped = drop >= 0 && strokesDone - drop == undo;
     struct Entry {
         OrderCommand* order; // nullptr: a paint step
         bool done;
+        QString text; // of a paint step
     };
     std::vector<Entry> kept;
     if (oldestDropped) {
@@ -687,16 +739,16 @@ void MainWindow::syncUndoStack() {
             const bool done = i < m_undoStack->index();
             if (const auto* order = dynamic_cast<const OrderCommand*>(m_undoStack->command(i))) {
                 if (order->layersSerial() == m_document->layersSerial())
-                    kept.push_back({order->clone(), done});
+                    kept.push_back({order->clone(), done, {}});
             } else if (dropped < drop) {
                 ++dropped;
             } else {
-                kept.push_back({nullptr, done});
+                kept.push_back({nullptr, done, m_undoStack->text(i)});
             }
         }
     } else {
         for (int i = 0; i < total; ++i)
-            kept.push_back({nullptr, i < undo});
+            kept.push_back({nullptr, i < undo, tr("Paint Stroke")});
     }
     const QScopedValueRollback guard(m_undoSuspended, true);
     m_undoStack->clear();
@@ -706,7 +758,7 @@ void MainWindow::syncUndoStack() {
             m_undoStack->push(entry.order);
         else
             m_undoStack->push(
-                new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
+                new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, entry.text));
         index += entry.done;
     }
     m_undoStack->setIndex(index);
@@ -800,7 +852,8 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock : {m_segmentationDock, m_layersDock, m_graphDock, m_hiddenDock})
+    for (QDockWidget* dock :
+         {m_segmentationDock, m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
     viewMenu->addSeparator();
     viewMenu->addAction(m_regionTools->transparencyAction());

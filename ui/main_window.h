@@ -30,6 +30,7 @@ class QUndoStack;
 namespace ui {
 
 class BrushToolBar;
+class FillPanel;
 class RegionTools;
 class LayerBuilder;
 class LayersPanel;
@@ -40,11 +41,11 @@ class Viewport;
 
 /**
  * The application window: owns the core::Document (model, camera, layers) and shows it in the
- * viewport and the Segmentation, Layers and Region Graph panels; the File/Edit/View/Help menus,
- * the brush bar, the status bar and the background loading of models. Painting: the viewport's
- * left button drives the document's strokes, each stroke a StrokeCommand on the undo stack,
- * which mirrors the document's (budgeted) undo history. The open model only changes when a load
- * succeeds.
+ * viewport and the Segmentation, Layers, Region Graph and Fill panels; the File/Edit/View/Help
+ * menus, the brush bar, the status bar and the background loading of models. Painting: the
+ * viewport's left button drives the document's strokes and fills, each a StrokeCommand on the undo
+ * stack, which mirrors the document's (budgeted) undo history. The open model only changes when a
+ * load succeeds.
  */
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -75,6 +76,7 @@ public:
     RegionTools* regionTools() const { return m_regionTools; }
     SegmentationControls* segmentationControls() const { return m_segmentationControls; }
     BrushToolBar* brushToolBar() const { return m_brushBar; }
+    FillPanel* fillPanel() const { return m_fillPanel; }
     QUndoStack* undoStack() const { return m_undoStack; }
 
     /** The tool of the left button (the Tools toolbar and menu). */
@@ -135,6 +137,8 @@ private:
     void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
     /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
+    /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
+    void fillAt(QPointF pixel);
     void onPaintMoved(QPointF pixel, qreal pressure);
     void onPaintReleased(QPointF pixel);
     /** Ends a stroke in progress and puts it on the undo stack. */
@@ -178,6 +182,8 @@ private:
     RegionTools* m_regionTools = nullptr;
     /** What leaving the hide tool (which shows the segmentation map) shows again. */
     render::LayerDisplay m_displayBeforeHide = render::LayerDisplay::Composite;
+    FillPanel* m_fillPanel = nullptr;
+    QDockWidget* m_fillDock = nullptr;
     QActionGroup* m_displayGroup = nullptr;
     QAction* m_shadedAction = nullptr;
     QAction* m_singleLayerAction = nullptr;

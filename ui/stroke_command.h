@@ -12,8 +12,8 @@ namespace ui {
 class Viewport;
 
 /**
- * A paint stroke on the QUndoStack: a thin wrapper around the document's undo record (the core
- * keeps the tiles in Document::history()). The stroke is already painted when it is pushed, so
+ * A paint stroke or fill on the QUndoStack: a thin wrapper around the document's undo record (the
+ * core keeps the tiles in Document::history()). The paint is already there when it is pushed, so
  * the first redo(), which QUndoStack::push() calls, does nothing. While suspended is true
  * (the stack being rebuilt to match the core's history) undo() and redo() touch nothing.
  */
