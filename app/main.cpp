@@ -4,8 +4,10 @@
 #include <QCommandLineOption>
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QIcon>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QSettings>
 #include <QStringList>
 #include <QSurfaceFormat>
 #include <QTranslator>
@@ -15,12 +17,37 @@
 
 namespace {
 
+/** The reverse-DNS id: the .desktop file, the AppStream metainfo and the icon are named so. */
+const QString kAppId = QStringLiteral("io.github.layerpaint.LayerPaint");
+/** The preferred language: "" (the system's), "en", "de", "zh_CN", ... */
+const QString kLanguageKey = QStringLiteral("ui/language");
+
 void setApplicationInfo() {
     // Organization and application name are the QSettings location.
     QCoreApplication::setOrganizationName(QStringLiteral("LayerPaint"));
-    QCoreApplication::setOrganizationDomain(QStringLiteral("layerpaint.org"));
+    QCoreApplication::setOrganizationDomain(QStringLiteral("layerpaint.github.io"));
     QCoreApplication::setApplicationName(QStringLiteral("LayerPaint"));
     QCoreApplication::setApplicationVersion(QStringLiteral(LAYERPAINT_VERSION));
+}
+
+/**
+ * Installs LayerPaint's translation (embedded by qt_add_translations under :/i18n) and Qt's own
+ * for the language of the preferences, or the system's. A language without a translation
+ * (English) leaves the source strings. Needs setApplicationInfo() first (for the settings).
+ */
+void installTranslators(QCoreApplication& app) {
+    const QString language = QSettings().value(kLanguageKey).toString();
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    if (!language.isEmpty())
+        QLocale::setDefault(locale); // numbers follow the chosen language too
+    auto* qt = new QTranslator(&app);
+    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                 QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
+        QCoreApplication::installTranslator(qt);
+    auto* own = new QTranslator(&app);
+    if (own->load(locale, QStringLiteral("layerpaint"), QStringLiteral("_"),
+                  QStringLiteral(":/i18n")))
+        QCoreApplication::installTranslator(own);
 }
 
 void describeOptions(QCommandLineParser& parser) {
@@ -50,14 +77,18 @@ int main(int argc, char* argv[]) {
         // --help and --version print and exit without needing a display. Qt's own options
         // (-platform, -reverse, ...) are still in argv here: read single-dash words as long
         // options so they are not taken for -v, and leave errors to the full parse below.
-        QCommandLineParser parser;
-        describeOptions(parser);
-        parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-        parser.parse(arguments);
-        if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("version")) ||
-            parser.isSet(QStringLiteral("help-all"))) {
+        QCommandLineParser probe;
+        describeOptions(probe);
+        probe.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+        probe.parse(arguments);
+        if (probe.isSet(QStringLiteral("help")) || probe.isSet(QStringLiteral("version")) ||
+            probe.isSet(QStringLiteral("help-all"))) {
             QCoreApplication textOnly(argc, argv);
             setApplicationInfo();
+            installTranslators(textOnly);
+            QCommandLineParser parser; // described again, now translated
+            describeOptions(parser);
+            parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
             parser.process(textOnly); // exits
             return 1;
         }
@@ -70,15 +101,10 @@ int main(int argc, char* argv[]) {
     QApplication app(argc, argv);
     setApplicationInfo();
     QApplication::setApplicationDisplayName(QStringLiteral("LayerPaint"));
-
-    QTranslator qtTranslator;
-    if (qtTranslator.load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
-                          QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        QApplication::installTranslator(&qtTranslator);
-    QTranslator appTranslator;
-    if (appTranslator.load(QLocale(), QStringLiteral("layerpaint"), QStringLiteral("_"),
-                           QStringLiteral(":/i18n")))
-        QApplication::installTranslator(&appTranslator);
+    QGuiApplication::setDesktopFileName(kAppId);
+    QApplication::setWindowIcon(
+        QIcon::fromTheme(kAppId, QIcon(QStringLiteral(":/icons/%1.svg").arg(kAppId))));
+    installTranslators(app);
 
     QCommandLineParser parser;
     describeOptions(parser);
