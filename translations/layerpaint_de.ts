@@ -88,6 +88,57 @@
     </message>
 </context>
 <context>
+    <name>ui::FillPanel</name>
+    <message>
+        <source>Region under the cursor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connected surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Similar colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The segmented region clicked in this view, including the part of it hidden behind other surfaces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Everything connected to the clicked surface in the mesh, seen or not, from any side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The surface around the clicked point whose colour is within the tolerance of the colour there</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>What a click with the Fill tool fills</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour tolerance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far a colour may differ from the clicked one and still be filled (in any channel): 0 % takes only the very same colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Fill:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tolerance:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
@@ -440,6 +491,74 @@ connectivity %3 ms, regions %4 ms
     </message>
     <message>
         <source>C++</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint strokes with the brush</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Eraser</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Erase paint back to the model&apos;s original colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Fill</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flood fill with the brush colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>E&amp;yedropper</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pick the surface colour under the cursor (or Ctrl+click)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Paint to &amp;Hide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide every region the brush touches, revealing what lies behind</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Pop Up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bring the region below the visible one to the front (or Shift+click); click again to cycle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot fill: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Filled in %1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Nothing to fill there</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
