@@ -5,706 +5,717 @@
     <name>main</name>
     <message>
         <source>Layer-aware 3D painting of meshes.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenenbewusstes 3D-Malen auf Netzen.</translation>
     </message>
     <message>
         <source>file</source>
-        <translation type="unfinished"></translation>
+        <translation>Datei</translation>
     </message>
     <message>
         <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das zu öffnende Modell (glTF, OBJ, PLY, STL, OFF, … oder builtin:NAME). Ohne Angabe öffnet sich der Kleeblattknoten.</translation>
     </message>
     <message>
         <source>[file]</source>
-        <translation type="unfinished"></translation>
+        <translation>[Datei]</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed: auto (the faster here), cpu or gpu.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo die Pixel-Konnektivität berechnet wird: auto (das hier Schnellere), cpu oder gpu.</translation>
     </message>
 </context>
 <context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinsel</translation>
     </message>
     <message>
         <source>Brush colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinselfarbe</translation>
     </message>
     <message>
         <source>&amp;Radius</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Radius</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> px</translation>
     </message>
     <message>
         <source>Brush radius on screen</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinselradius auf dem Bildschirm</translation>
     </message>
     <message>
         <source>&amp;Hardness</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Härte</translation>
     </message>
     <message>
         <source> %</source>
-        <translation type="unfinished"></translation>
+        <translation> %</translation>
     </message>
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge</source>
-        <translation type="unfinished"></translation>
+        <translation>0: weicher Abfall ab der Mitte, 100: harter Rand</translation>
     </message>
     <message>
         <source>O&amp;pacity</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Deckkraft</translation>
     </message>
     <message>
         <source>The most one stroke covers</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie stark ein Strich höchstens deckt</translation>
     </message>
     <message>
         <source>Paint &amp;into</source>
-        <translation type="unfinished"></translation>
+        <translation>Malen &amp;in</translation>
     </message>
     <message>
         <source>Where paint goes: a texture (meshes with UVs) or vertex colours. Changing it starts the painting afresh.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wohin die Farbe geht: in eine Textur (Netze mit UVs) oder in Vertexfarben. Ein Wechsel beginnt das Bemalen von vorn.</translation>
     </message>
     <message>
         <source>Texture %1 × %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Textur %1 × %1</translation>
     </message>
     <message>
         <source>Vertex colours</source>
-        <translation type="unfinished"></translation>
+        <translation>Vertexfarben</translation>
     </message>
     <message>
         <source>Brush Colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinselfarbe</translation>
     </message>
 </context>
 <context>
     <name>ui::FillPanel</name>
     <message>
         <source>Region under the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>Region unter dem Zeiger</translation>
     </message>
     <message>
         <source>Connected surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Zusammenhängende Fläche</translation>
     </message>
     <message>
         <source>Similar colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Ähnliche Farbe</translation>
     </message>
     <message>
         <source>The segmented region clicked in this view, including the part of it hidden behind other surfaces</source>
-        <translation type="unfinished"></translation>
+        <translation>Die angeklickte Region der Segmentierung dieser Ansicht, einschließlich ihres hinter anderen Flächen verborgenen Teils</translation>
     </message>
     <message>
         <source>Everything connected to the clicked surface in the mesh, seen or not, from any side</source>
-        <translation type="unfinished"></translation>
+        <translation>Alles, was im Netz mit der angeklickten Fläche verbunden ist, ob sichtbar oder nicht, von jeder Seite</translation>
     </message>
     <message>
         <source>The surface around the clicked point whose colour is within the tolerance of the colour there</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Fläche um den angeklickten Punkt, deren Farbe innerhalb der Toleranz der Farbe dort liegt</translation>
     </message>
     <message>
         <source>What a click with the Fill tool fills</source>
-        <translation type="unfinished"></translation>
+        <translation>Was ein Klick mit dem Füllwerkzeug füllt</translation>
     </message>
     <message>
         <source>Colour tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbtoleranz</translation>
     </message>
     <message>
         <source>How far a colour may differ from the clicked one and still be filled (in any channel): 0 % takes only the very same colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie weit eine Farbe von der angeklickten abweichen darf und trotzdem gefüllt wird (in jedem Kanal): 0 % nimmt nur genau dieselbe Farbe</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %</translation>
     </message>
     <message>
         <source>&amp;Fill:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Füllen:</translation>
     </message>
     <message>
         <source>&amp;Tolerance:</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Toleranz:</translation>
     </message>
 </context>
 <context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ebenen erscheinen, sobald die Ansicht stillsteht.</translation>
     </message>
     <message>
         <source>Click a layer to see it alone; “All layers” shows the whole view.</source>
-        <translation type="unfinished"></translation>
+        <translation>Klicken Sie auf eine Ebene, um sie allein zu sehen; „Alle Ebenen“ zeigt die ganze Ansicht.</translation>
     </message>
     <message>
         <source>All layers
 Layers: %1
 Regions: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Ebenen
+Ebenen: %1
+Regionen: %2</translation>
     </message>
     <message>
         <source>The whole view, front to back</source>
-        <translation type="unfinished"></translation>
+        <translation>Die ganze Ansicht, von vorn nach hinten</translation>
     </message>
     <message>
         <source>Layer %1
 Fragments: %2
 Regions: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebene %1
+Fragmente: %2
+Regionen: %3</translation>
     </message>
     <message>
         <source>Show layer %1 alone</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebene %1 allein zeigen</translation>
     </message>
 </context>
 <context>
     <name>ui::MainWindow</name>
     <message>
         <source>LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>LayerPaint</translation>
     </message>
     <message>
         <source>OpenGL Error</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenGL-Fehler</translation>
     </message>
     <message>
         <source>The 3D view cannot be shown.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die 3D-Ansicht kann nicht angezeigt werden.</translation>
     </message>
     <message>
         <source>Could not build the layers: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ebenen konnten nicht erstellt werden: %1</translation>
     </message>
     <message>
         <source>Trefoil knot</source>
-        <translation type="unfinished"></translation>
+        <translation>Kleeblattknoten</translation>
     </message>
     <message>
         <source>Hexagonal ring</source>
-        <translation type="unfinished"></translation>
+        <translation>Sechseckiger Ring</translation>
     </message>
     <message>
         <source>Row of four</source>
-        <translation type="unfinished"></translation>
+        <translation>Viererreihe</translation>
     </message>
     <message>
         <source>Segmentation</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmentierung</translation>
     </message>
     <message>
         <source>Layers</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenen</translation>
     </message>
     <message>
         <source>Region Graph</source>
-        <translation type="unfinished"></translation>
+        <translation>Regionsgraph</translation>
     </message>
     <message>
         <source>Region %1 selected</source>
-        <translation type="unfinished"></translation>
+        <translation>Region %1 ausgewählt</translation>
     </message>
     <message>
         <source>&amp;Shaded</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Schattiert</translation>
     </message>
     <message>
         <source>Show the model shaded, all layers</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Modell schattiert zeigen, alle Ebenen</translation>
     </message>
     <message>
         <source>Single &amp;Layer</source>
-        <translation type="unfinished"></translation>
+        <translation>Einzelne &amp;Ebene</translation>
     </message>
     <message>
         <source>Show one depth layer alone (choose it in the Layers panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Tiefenebene allein zeigen (im Bedienfeld Ebenen wählen)</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
-        <translation type="unfinished"></translation>
+        <translation>Se&amp;gmentierungskarte</translation>
     </message>
     <message>
         <source>Colour every region of the visible layer differently</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Region der sichtbaren Ebene anders einfärben</translation>
     </message>
     <message>
         <source>Region &amp;Boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Regionsgrenzen</translation>
     </message>
     <message>
         <source>Outline where a surface is not connected to its neighbours on the same layer</source>
-        <translation type="unfinished"></translation>
+        <translation>Umrissen zeigen, wo eine Fläche nicht mit ihren Nachbarn auf derselben Ebene verbunden ist</translation>
     </message>
     <message>
         <source>Building layers…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenen werden erstellt …</translation>
     </message>
     <message>
         <source>Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenen: %1 · Fragmente: %2 · Regionen: %3 · Erstellt in %4 ms</translation>
     </message>
     <message>
         <source>build_layers of this view:
 capture %1 ms (drawing), %2 ms (sorting)
 connectivity %3 ms, regions %4 ms
 %5 ms from the capture to the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>build_layers dieser Ansicht:
+Erfassung %1 ms (Zeichnen), %2 ms (Sortieren)
+Konnektivität %3 ms, Regionen %4 ms
+%5 ms von der Erfassung bis zum Bild</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Datei</translation>
     </message>
     <message>
         <source>&amp;Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>Ö&amp;ffnen …</translation>
     </message>
     <message>
         <source>New from &amp;Built-in</source>
-        <translation type="unfinished"></translation>
+        <translation>Neu aus &amp;eingebautem Modell</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zuletzt geöffnet</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Beenden</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ansicht</translation>
     </message>
     <message>
         <source>&amp;Frame All</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Alles einpassen</translation>
     </message>
     <message>
         <source>&amp;Orthographic</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Orthografisch</translation>
     </message>
     <message>
         <source>&amp;Panels</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bedienfelder</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hilfe</translation>
     </message>
     <message>
         <source>&amp;About LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>Über &amp;LayerPaint</translation>
     </message>
     <message>
         <source>About &amp;Qt</source>
-        <translation type="unfinished"></translation>
+        <translation>Über &amp;Qt</translation>
     </message>
     <message>
         <source>&amp;%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;%1 %2</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>No Recent Files</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine zuletzt geöffneten Dateien</translation>
     </message>
     <message>
         <source>&amp;Clear Menu</source>
-        <translation type="unfinished"></translation>
+        <translation>Liste &amp;leeren</translation>
     </message>
     <message>
         <source>3D models (*.gltf *.glb *.obj *.ply *.stl *.off)</source>
-        <translation type="unfinished"></translation>
+        <translation>3D-Modelle (*.gltf *.glb *.obj *.ply *.stl *.off)</translation>
     </message>
     <message>
         <source>glTF 2.0 (*.gltf *.glb)</source>
-        <translation type="unfinished"></translation>
+        <translation>glTF 2.0 (*.gltf *.glb)</translation>
     </message>
     <message>
         <source>Wavefront OBJ (*.obj)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wavefront OBJ (*.obj)</translation>
     </message>
     <message>
         <source>Stanford PLY (*.ply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stanford PLY (*.ply)</translation>
     </message>
     <message>
         <source>STL (*.stl)</source>
-        <translation type="unfinished"></translation>
+        <translation>STL (*.stl)</translation>
     </message>
     <message>
         <source>Object File Format (*.off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Object File Format (*.off)</translation>
     </message>
     <message>
         <source>All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle Dateien (*)</translation>
     </message>
     <message>
         <source>Open Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell öffnen</translation>
     </message>
     <message>
         <source>About LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>Über LayerPaint</translation>
     </message>
     <message>
         <source>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Layer-aware 3D painting: paint surfaces hidden behind others in one stroke.&lt;/p&gt;&lt;p&gt;License: GNU GPL version 3 or later.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Ebenenbewusstes 3D-Malen: Flächen, die hinter anderen verborgen liegen, in einem Strich bemalen.&lt;/p&gt;&lt;p&gt;Lizenz: GNU GPL Version 3 oder neuer.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>%1 — LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – LayerPaint</translation>
     </message>
     <message>
         <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 konnte nicht geöffnet werden</translation>
     </message>
     <message>
         <source>Open Failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen fehlgeschlagen</translation>
     </message>
     <message>
         <source>Could not open “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ konnte nicht geöffnet werden.</translation>
     </message>
     <message>
         <source>Opening %1 cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>Öffnen von %1 abgebrochen</translation>
     </message>
     <message>
         <source>Opening %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wird geöffnet …</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Abbrechen</translation>
     </message>
     <message>
         <source>Opening Model</source>
-        <translation type="unfinished"></translation>
+        <translation>Modell wird geöffnet</translation>
     </message>
     <message>
         <source>%1 — %2 vertices, %3 triangles</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – %2 Eckpunkte, %3 Dreiecke</translation>
     </message>
     <message numerus="yes">
         <source>%n warning(s) while loading: %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Warnung beim Laden: %1</numerusform>
+            <numerusform>%n Warnungen beim Laden: %1</numerusform>
         </translation>
     </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ebenenbewusstes Malen</translation>
     </message>
     <message>
         <source>Layer-aware painting (L): strokes follow a surface behind whatever covers it</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenenbewusstes Malen (L): Striche folgen einer Fläche auch hinter dem, was sie verdeckt</translation>
     </message>
     <message>
         <source>Paint across depth layers; off: only the front-most surface is paintable</source>
-        <translation type="unfinished"></translation>
+        <translation>Über Tiefenebenen hinweg malen; aus: nur die vorderste Fläche ist bemalbar</translation>
     </message>
     <message>
         <source>Layer-aware painting</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebenenbewusstes Malen</translation>
     </message>
     <message>
         <source>Conventional painting</source>
-        <translation type="unfinished"></translation>
+        <translation>Herkömmliches Malen</translation>
     </message>
     <message>
         <source>Show &amp;Brush Maps</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinsel&amp;karten anzeigen</translation>
     </message>
     <message>
         <source>While painting, show the paintable (red) and trackable (blue) pixels around the brush</source>
-        <translation type="unfinished"></translation>
+        <translation>Beim Malen die bemalbaren (rot) und verfolgbaren (blau) Pixel um den Pinsel zeigen</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Rückgängig: %1</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederherstellen</translation>
     </message>
     <message>
         <source>&amp;Redo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Wiederherstellen: %1</translation>
     </message>
     <message>
         <source>Cannot paint this model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Dieses Modell kann nicht bemalt werden: %1</translation>
     </message>
     <message>
         <source>Cannot paint: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Malen nicht möglich: %1</translation>
     </message>
     <message>
         <source>Paint Stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>Pinselstrich</translation>
     </message>
     <message>
         <source>Change Paint Target</source>
-        <translation type="unfinished"></translation>
+        <translation>Malziel wechseln</translation>
     </message>
     <message>
         <source>Painting into another target starts afresh: the painting so far and its undo history are discarded.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Malen in ein anderes Ziel beginnt von vorn: das bisher Gemalte und sein Rückgängig-Verlauf werden verworfen.</translation>
     </message>
     <message>
         <source>Cannot paint into that target: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>In dieses Ziel kann nicht gemalt werden: %1</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Bearbeiten</translation>
     </message>
     <message>
         <source>&amp;Paint</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Malen</translation>
     </message>
     <message>
         <source>compute shader</source>
-        <translation type="unfinished"></translation>
+        <translation>Compute-Shader</translation>
     </message>
     <message>
         <source>C++</source>
-        <translation type="unfinished"></translation>
+        <translation>C++</translation>
     </message>
     <message>
         <source>Fill</source>
-        <translation type="unfinished"></translation>
+        <translation>Füllen</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>Werkzeuge</translation>
     </message>
     <message>
         <source>&amp;Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Pinsel</translation>
     </message>
     <message>
         <source>Paint strokes with the brush</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit dem Pinsel Striche malen</translation>
     </message>
     <message>
         <source>&amp;Eraser</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Radierer</translation>
     </message>
     <message>
         <source>Erase paint back to the model&apos;s original colours</source>
-        <translation type="unfinished"></translation>
+        <translation>Farbe bis auf die ursprünglichen Farben des Modells wegradieren</translation>
     </message>
     <message>
         <source>&amp;Fill</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Füllen</translation>
     </message>
     <message>
         <source>Flood fill with the brush colour</source>
-        <translation type="unfinished"></translation>
+        <translation>Mit der Pinselfarbe flächig füllen</translation>
     </message>
     <message>
         <source>E&amp;yedropper</source>
-        <translation type="unfinished"></translation>
+        <translation>Pipe&amp;tte</translation>
     </message>
     <message>
         <source>Pick the surface colour under the cursor (or Ctrl+click)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Oberflächenfarbe unter dem Zeiger aufnehmen (oder Strg+Klick)</translation>
     </message>
     <message>
         <source>Paint to &amp;Hide</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Verbergen durch Malen</translation>
     </message>
     <message>
         <source>Hide every region the brush touches, revealing what lies behind</source>
-        <translation type="unfinished"></translation>
+        <translation>Jede Region ausblenden, die der Pinsel berührt, und freilegen, was dahinter liegt</translation>
     </message>
     <message>
         <source>&amp;Pop Up</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Hervorholen</translation>
     </message>
     <message>
         <source>Bring the region below the visible one to the front (or Shift+click); click again to cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Region unter der sichtbaren nach vorn holen (oder Umschalt+Klick); erneut klicken, um durchzuschalten</translation>
     </message>
     <message>
         <source>Cannot fill: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Füllen nicht möglich: %1</translation>
     </message>
     <message>
         <source>Filled in %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>In %1 ms gefüllt</translation>
     </message>
     <message>
         <source>Nothing to fill there</source>
-        <translation type="unfinished"></translation>
+        <translation>Dort gibt es nichts zu füllen</translation>
     </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>
     <message>
         <source>No regions yet</source>
-        <translation type="unfinished"></translation>
+        <translation>Noch keine Regionen</translation>
     </message>
     <message>
         <source>No regions in this view</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Regionen in dieser Ansicht</translation>
     </message>
     <message>
         <source>Regions: %1, connections: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Regionen: %1, Verbindungen: %2</translation>
     </message>
     <message>
         <source>Small regions merged into grey nodes: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zu grauen Knoten zusammengefasste kleine Regionen: %1</translation>
     </message>
     <message>
         <source>Layer %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ebene %1</translation>
     </message>
     <message>
         <source>%1 small regions of layer %2
 %3 pixels together</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kleine Regionen der Ebene %2
+zusammen %3 Pixel</translation>
     </message>
     <message>
         <source>+%1</source>
-        <translation type="unfinished"></translation>
+        <translation>+%1</translation>
     </message>
     <message>
         <source>Region %1 on layer %2
 %3 pixels
 Connected regions: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Region %1 auf Ebene %2
+%3 Pixel
+Verbundene Regionen: %4</translation>
     </message>
     <message>
         <source>%1 pixel links</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Pixelverbindungen</translation>
     </message>
 </context>
 <context>
     <name>ui::SegmentationControls</name>
     <message>
         <source>Depth threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiefenschwelle</translation>
     </message>
     <message>
         <source>How far apart in depth two neighbouring pixels may be and still count as one surface, as a fraction of the model&apos;s longest side.
 Smaller splits the view into more regions.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie weit zwei benachbarte Pixel in der Tiefe auseinanderliegen dürfen und noch als eine Fläche gelten, als Anteil der längsten Seite des Modells.
+Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurücksetzen</translation>
     </message>
     <message>
         <source>Back to the default threshold (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zurück zur Standardschwelle (%1)</translation>
     </message>
     <message>
         <source>Surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Fläche</translation>
     </message>
     <message>
         <source>Plain depth</source>
-        <translation type="unfinished"></translation>
+        <translation>Reine Tiefe</translation>
     </message>
     <message>
         <source>Follows each triangle&apos;s plane: sloped surfaces stay one region at any threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>Folgt der Ebene jedes Dreiecks: geneigte Flächen bleiben bei jeder Schwelle eine Region</translation>
     </message>
     <message>
         <source>The paper&apos;s test: depth difference below the threshold; steep surfaces break apart</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Test aus dem Artikel: Tiefenunterschied unter der Schwelle; steile Flächen zerfallen</translation>
     </message>
     <message>
         <source>How neighbouring pixels are judged to lie on one surface</source>
-        <translation type="unfinished"></translation>
+        <translation>Wie entschieden wird, ob benachbarte Pixel auf einer Fläche liegen</translation>
     </message>
     <message>
         <source>Capture back faces (two-sided)</source>
-        <translation type="unfinished"></translation>
+        <translation>Rückseiten erfassen (zweiseitig)</translation>
     </message>
     <message>
         <source>Also split the inside of open or single-sided surfaces into layers. Changing it captures the view again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Auch die Innenseite offener oder einseitiger Flächen in Ebenen zerlegen. Eine Änderung erfasst die Ansicht neu.</translation>
     </message>
     <message>
         <source>Threshold:</source>
-        <translation type="unfinished"></translation>
+        <translation>Schwelle:</translation>
     </message>
     <message>
         <source>Test:</source>
-        <translation type="unfinished"></translation>
+        <translation>Test:</translation>
     </message>
     <message>
         <source>Automatic</source>
-        <translation type="unfinished"></translation>
+        <translation>Automatisch</translation>
     </message>
     <message>
         <source>C++ (processor)</source>
-        <translation type="unfinished"></translation>
+        <translation>C++ (Prozessor)</translation>
     </message>
     <message>
         <source>Compute shader (graphics card)</source>
-        <translation type="unfinished"></translation>
+        <translation>Compute-Shader (Grafikkarte)</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed; both give the same result, Automatic picks the faster for this computer</source>
-        <translation type="unfinished"></translation>
+        <translation>Wo die Pixel-Konnektivität berechnet wird; beide liefern dasselbe Ergebnis, Automatisch wählt das auf diesem Rechner Schnellere</translation>
     </message>
     <message>
         <source>Connectivity:</source>
-        <translation type="unfinished"></translation>
+        <translation>Konnektivität:</translation>
     </message>
     <message>
         <source>Automatic (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Automatisch (%1)</translation>
     </message>
 </context>
 <context>
     <name>ui::Viewport</name>
     <message>
         <source>The layer capture is not available.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ebenenerfassung ist nicht verfügbar.</translation>
     </message>
     <message>
         <source>LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.</source>
-        <translation type="unfinished"></translation>
+        <translation>LayerPaint benötigt OpenGL 4.5, dieses System bietet aber OpenGL %1.%2.</translation>
     </message>
     <message>
         <source>The renderer could not start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Renderer konnte nicht starten: %1</translation>
     </message>
     <message>
         <source>The layer views could not start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ebenenansichten konnten nicht starten: %1</translation>
     </message>
     <message>
         <source>The layers cannot be shown: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Ebenen können nicht angezeigt werden: %1</translation>
     </message>
 </context>
 </TS>

@@ -5,705 +5,716 @@
     <name>main</name>
     <message>
         <source>Layer-aware 3D painting of meshes.</source>
-        <translation type="unfinished"></translation>
+        <translation>对网格进行图层感知的三维绘画。</translation>
     </message>
     <message>
         <source>file</source>
-        <translation type="unfinished"></translation>
+        <translation>文件</translation>
     </message>
     <message>
         <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
-        <translation type="unfinished"></translation>
+        <translation>要打开的模型（glTF、OBJ、PLY、STL、OFF……或 builtin:NAME）。不指定时打开三叶结。</translation>
     </message>
     <message>
         <source>[file]</source>
-        <translation type="unfinished"></translation>
+        <translation>[文件]</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed: auto (the faster here), cpu or gpu.</source>
-        <translation type="unfinished"></translation>
+        <translation>像素连通性的计算位置：auto（在本机上更快的一种）、cpu 或 gpu。</translation>
     </message>
 </context>
 <context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔</translation>
     </message>
     <message>
         <source>Brush colour</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔颜色</translation>
     </message>
     <message>
         <source>&amp;Radius</source>
-        <translation type="unfinished"></translation>
+        <translation>半径(&amp;R)</translation>
     </message>
     <message>
         <source> px</source>
-        <translation type="unfinished"></translation>
+        <translation> 像素</translation>
     </message>
     <message>
         <source>Brush radius on screen</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔在屏幕上的半径</translation>
     </message>
     <message>
         <source>&amp;Hardness</source>
-        <translation type="unfinished"></translation>
+        <translation>硬度(&amp;H)</translation>
     </message>
     <message>
         <source> %</source>
-        <translation type="unfinished"></translation>
+        <translation>%</translation>
     </message>
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge</source>
-        <translation type="unfinished"></translation>
+        <translation>0：从中心柔和衰减，100：硬边</translation>
     </message>
     <message>
         <source>O&amp;pacity</source>
-        <translation type="unfinished"></translation>
+        <translation>不透明度(&amp;P)</translation>
     </message>
     <message>
         <source>The most one stroke covers</source>
-        <translation type="unfinished"></translation>
+        <translation>一笔最多能覆盖的程度</translation>
     </message>
     <message>
         <source>Paint &amp;into</source>
-        <translation type="unfinished"></translation>
+        <translation>绘制到(&amp;I)</translation>
     </message>
     <message>
         <source>Where paint goes: a texture (meshes with UVs) or vertex colours. Changing it starts the painting afresh.</source>
-        <translation type="unfinished"></translation>
+        <translation>颜料绘制的位置：纹理（带 UV 的网格）或顶点颜色。更改后将重新开始绘画。</translation>
     </message>
     <message>
         <source>Texture %1 × %1</source>
-        <translation type="unfinished"></translation>
+        <translation>纹理 %1 × %1</translation>
     </message>
     <message>
         <source>Vertex colours</source>
-        <translation type="unfinished"></translation>
+        <translation>顶点颜色</translation>
     </message>
     <message>
         <source>Brush Colour</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔颜色</translation>
     </message>
 </context>
 <context>
     <name>ui::FillPanel</name>
     <message>
         <source>Region under the cursor</source>
-        <translation type="unfinished"></translation>
+        <translation>光标下的区域</translation>
     </message>
     <message>
         <source>Connected surface</source>
-        <translation type="unfinished"></translation>
+        <translation>相连的表面</translation>
     </message>
     <message>
         <source>Similar colour</source>
-        <translation type="unfinished"></translation>
+        <translation>相近的颜色</translation>
     </message>
     <message>
         <source>The segmented region clicked in this view, including the part of it hidden behind other surfaces</source>
-        <translation type="unfinished"></translation>
+        <translation>在此视图中点击的分割区域，包括其被其他表面遮挡的部分</translation>
     </message>
     <message>
         <source>Everything connected to the clicked surface in the mesh, seen or not, from any side</source>
-        <translation type="unfinished"></translation>
+        <translation>网格中与所点击表面相连的一切，无论是否可见，无论从哪一侧</translation>
     </message>
     <message>
         <source>The surface around the clicked point whose colour is within the tolerance of the colour there</source>
-        <translation type="unfinished"></translation>
+        <translation>所点击位置周围颜色与该处颜色之差在容差之内的表面</translation>
     </message>
     <message>
         <source>What a click with the Fill tool fills</source>
-        <translation type="unfinished"></translation>
+        <translation>使用填充工具点击时填充的范围</translation>
     </message>
     <message>
         <source>Colour tolerance</source>
-        <translation type="unfinished"></translation>
+        <translation>颜色容差</translation>
     </message>
     <message>
         <source>How far a colour may differ from the clicked one and still be filled (in any channel): 0 % takes only the very same colour</source>
-        <translation type="unfinished"></translation>
+        <translation>颜色与所点击颜色（在任一通道上）相差多少仍会被填充：0% 只填充完全相同的颜色</translation>
     </message>
     <message>
         <source>%1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>%1%</translation>
     </message>
     <message>
         <source>&amp;Fill:</source>
-        <translation type="unfinished"></translation>
+        <translation>填充(&amp;F)：</translation>
     </message>
     <message>
         <source>&amp;Tolerance:</source>
-        <translation type="unfinished"></translation>
+        <translation>容差(&amp;T)：</translation>
     </message>
 </context>
 <context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
-        <translation type="unfinished"></translation>
+        <translation>视图静止后将显示图层。</translation>
     </message>
     <message>
         <source>Click a layer to see it alone; “All layers” shows the whole view.</source>
-        <translation type="unfinished"></translation>
+        <translation>点击某个图层可单独查看；“所有图层”显示整个视图。</translation>
     </message>
     <message>
         <source>All layers
 Layers: %1
 Regions: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>所有图层
+图层：%1
+区域：%2</translation>
     </message>
     <message>
         <source>The whole view, front to back</source>
-        <translation type="unfinished"></translation>
+        <translation>整个视图，由前到后</translation>
     </message>
     <message>
         <source>Layer %1
 Fragments: %2
 Regions: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>图层 %1
+片元：%2
+区域：%3</translation>
     </message>
     <message>
         <source>Show layer %1 alone</source>
-        <translation type="unfinished"></translation>
+        <translation>单独显示图层 %1</translation>
     </message>
 </context>
 <context>
     <name>ui::MainWindow</name>
     <message>
         <source>LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>LayerPaint</translation>
     </message>
     <message>
         <source>OpenGL Error</source>
-        <translation type="unfinished"></translation>
+        <translation>OpenGL 错误</translation>
     </message>
     <message>
         <source>The 3D view cannot be shown.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法显示三维视图。</translation>
     </message>
     <message>
         <source>Could not build the layers: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法构建图层：%1</translation>
     </message>
     <message>
         <source>Trefoil knot</source>
-        <translation type="unfinished"></translation>
+        <translation>三叶结</translation>
     </message>
     <message>
         <source>Hexagonal ring</source>
-        <translation type="unfinished"></translation>
+        <translation>六边形环</translation>
     </message>
     <message>
         <source>Row of four</source>
-        <translation type="unfinished"></translation>
+        <translation>四个一排</translation>
     </message>
     <message>
         <source>Segmentation</source>
-        <translation type="unfinished"></translation>
+        <translation>分割</translation>
     </message>
     <message>
         <source>Layers</source>
-        <translation type="unfinished"></translation>
+        <translation>图层</translation>
     </message>
     <message>
         <source>Region Graph</source>
-        <translation type="unfinished"></translation>
+        <translation>区域图</translation>
     </message>
     <message>
         <source>Region %1 selected</source>
-        <translation type="unfinished"></translation>
+        <translation>已选择区域 %1</translation>
     </message>
     <message>
         <source>&amp;Shaded</source>
-        <translation type="unfinished"></translation>
+        <translation>着色(&amp;S)</translation>
     </message>
     <message>
         <source>Show the model shaded, all layers</source>
-        <translation type="unfinished"></translation>
+        <translation>以着色方式显示模型的所有图层</translation>
     </message>
     <message>
         <source>Single &amp;Layer</source>
-        <translation type="unfinished"></translation>
+        <translation>单个图层(&amp;L)</translation>
     </message>
     <message>
         <source>Show one depth layer alone (choose it in the Layers panel)</source>
-        <translation type="unfinished"></translation>
+        <translation>单独显示一个深度图层（在“图层”面板中选择）</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
-        <translation type="unfinished"></translation>
+        <translation>分割图(&amp;G)</translation>
     </message>
     <message>
         <source>Colour every region of the visible layer differently</source>
-        <translation type="unfinished"></translation>
+        <translation>用不同颜色显示可见图层的每个区域</translation>
     </message>
     <message>
         <source>Region &amp;Boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>区域边界(&amp;B)</translation>
     </message>
     <message>
         <source>Outline where a surface is not connected to its neighbours on the same layer</source>
-        <translation type="unfinished"></translation>
+        <translation>勾勒出表面与同一图层上相邻部分不相连的地方</translation>
     </message>
     <message>
         <source>Building layers…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在构建图层…</translation>
     </message>
     <message>
         <source>Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>图层：%1 · 片元：%2 · 区域：%3 · 用时 %4 毫秒</translation>
     </message>
     <message>
         <source>build_layers of this view:
 capture %1 ms (drawing), %2 ms (sorting)
 connectivity %3 ms, regions %4 ms
 %5 ms from the capture to the picture</source>
-        <translation type="unfinished"></translation>
+        <translation>此视图的 build_layers：
+捕获 %1 毫秒（绘制），%2 毫秒（排序）
+连通性 %3 毫秒，区域 %4 毫秒
+从捕获到画面 %5 毫秒</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>文件(&amp;F)</translation>
     </message>
     <message>
         <source>&amp;Open…</source>
-        <translation type="unfinished"></translation>
+        <translation>打开(&amp;O)…</translation>
     </message>
     <message>
         <source>New from &amp;Built-in</source>
-        <translation type="unfinished"></translation>
+        <translation>从内置模型新建(&amp;B)</translation>
     </message>
     <message>
         <source>Open &amp;Recent</source>
-        <translation type="unfinished"></translation>
+        <translation>最近打开(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>退出(&amp;Q)</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>视图(&amp;V)</translation>
     </message>
     <message>
         <source>&amp;Frame All</source>
-        <translation type="unfinished"></translation>
+        <translation>全部显示(&amp;F)</translation>
     </message>
     <message>
         <source>&amp;Orthographic</source>
-        <translation type="unfinished"></translation>
+        <translation>正交投影(&amp;O)</translation>
     </message>
     <message>
         <source>&amp;Panels</source>
-        <translation type="unfinished"></translation>
+        <translation>面板(&amp;P)</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>帮助(&amp;H)</translation>
     </message>
     <message>
         <source>&amp;About LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>关于 LayerPaint(&amp;A)</translation>
     </message>
     <message>
         <source>About &amp;Qt</source>
-        <translation type="unfinished"></translation>
+        <translation>关于 Qt(&amp;Q)</translation>
     </message>
     <message>
         <source>&amp;%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;%1 %2</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>No Recent Files</source>
-        <translation type="unfinished"></translation>
+        <translation>没有最近打开的文件</translation>
     </message>
     <message>
         <source>&amp;Clear Menu</source>
-        <translation type="unfinished"></translation>
+        <translation>清除列表(&amp;C)</translation>
     </message>
     <message>
         <source>3D models (*.gltf *.glb *.obj *.ply *.stl *.off)</source>
-        <translation type="unfinished"></translation>
+        <translation>三维模型 (*.gltf *.glb *.obj *.ply *.stl *.off)</translation>
     </message>
     <message>
         <source>glTF 2.0 (*.gltf *.glb)</source>
-        <translation type="unfinished"></translation>
+        <translation>glTF 2.0 (*.gltf *.glb)</translation>
     </message>
     <message>
         <source>Wavefront OBJ (*.obj)</source>
-        <translation type="unfinished"></translation>
+        <translation>Wavefront OBJ (*.obj)</translation>
     </message>
     <message>
         <source>Stanford PLY (*.ply)</source>
-        <translation type="unfinished"></translation>
+        <translation>Stanford PLY (*.ply)</translation>
     </message>
     <message>
         <source>STL (*.stl)</source>
-        <translation type="unfinished"></translation>
+        <translation>STL (*.stl)</translation>
     </message>
     <message>
         <source>Object File Format (*.off)</source>
-        <translation type="unfinished"></translation>
+        <translation>Object File Format (*.off)</translation>
     </message>
     <message>
         <source>All files (*)</source>
-        <translation type="unfinished"></translation>
+        <translation>所有文件 (*)</translation>
     </message>
     <message>
         <source>Open Model</source>
-        <translation type="unfinished"></translation>
+        <translation>打开模型</translation>
     </message>
     <message>
         <source>About LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>关于 LayerPaint</translation>
     </message>
     <message>
         <source>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Layer-aware 3D painting: paint surfaces hidden behind others in one stroke.&lt;/p&gt;&lt;p&gt;License: GNU GPL version 3 or later.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;图层感知的三维绘画：一笔画到被其他表面遮挡的表面上。&lt;/p&gt;&lt;p&gt;许可证：GNU GPL 第 3 版或更高版本。&lt;/p&gt;</translation>
     </message>
     <message>
         <source>%1 — LayerPaint</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — LayerPaint</translation>
     </message>
     <message>
         <source>Could not open %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开 %1</translation>
     </message>
     <message>
         <source>Open Failed</source>
-        <translation type="unfinished"></translation>
+        <translation>打开失败</translation>
     </message>
     <message>
         <source>Could not open “%1”.</source>
-        <translation type="unfinished"></translation>
+        <translation>无法打开“%1”。</translation>
     </message>
     <message>
         <source>Opening %1 cancelled</source>
-        <translation type="unfinished"></translation>
+        <translation>已取消打开 %1</translation>
     </message>
     <message>
         <source>Opening %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>正在打开 %1…</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>取消</translation>
     </message>
     <message>
         <source>Opening Model</source>
-        <translation type="unfinished"></translation>
+        <translation>正在打开模型</translation>
     </message>
     <message>
         <source>%1 — %2 vertices, %3 triangles</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — %2 个顶点，%3 个三角形</translation>
     </message>
     <message numerus="yes">
         <source>%n warning(s) while loading: %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>加载时有 %n 条警告：%1</numerusform>
         </translation>
     </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
-        <translation type="unfinished"></translation>
+        <translation>图层感知绘画(&amp;L)</translation>
     </message>
     <message>
         <source>Layer-aware painting (L): strokes follow a surface behind whatever covers it</source>
-        <translation type="unfinished"></translation>
+        <translation>图层感知绘画 (L)：笔画沿着表面延伸到遮挡它的物体后面</translation>
     </message>
     <message>
         <source>Paint across depth layers; off: only the front-most surface is paintable</source>
-        <translation type="unfinished"></translation>
+        <translation>跨深度图层绘画；关闭时只能在最前面的表面上绘画</translation>
     </message>
     <message>
         <source>Layer-aware painting</source>
-        <translation type="unfinished"></translation>
+        <translation>图层感知绘画</translation>
     </message>
     <message>
         <source>Conventional painting</source>
-        <translation type="unfinished"></translation>
+        <translation>常规绘画</translation>
     </message>
     <message>
         <source>Show &amp;Brush Maps</source>
-        <translation type="unfinished"></translation>
+        <translation>显示画笔映射图(&amp;B)</translation>
     </message>
     <message>
         <source>While painting, show the paintable (red) and trackable (blue) pixels around the brush</source>
-        <translation type="unfinished"></translation>
+        <translation>绘画时显示画笔周围可绘制（红色）和可跟踪（蓝色）的像素</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
-        <translation type="unfinished"></translation>
+        <translation>撤销(&amp;U)</translation>
     </message>
     <message>
         <source>&amp;Undo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>撤销 %1(&amp;U)</translation>
     </message>
     <message>
         <source>&amp;Redo</source>
-        <translation type="unfinished"></translation>
+        <translation>重做(&amp;R)</translation>
     </message>
     <message>
         <source>&amp;Redo %1</source>
-        <translation type="unfinished"></translation>
+        <translation>重做 %1(&amp;R)</translation>
     </message>
     <message>
         <source>Cannot paint this model: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法在此模型上绘画：%1</translation>
     </message>
     <message>
         <source>Cannot paint: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法绘画：%1</translation>
     </message>
     <message>
         <source>Paint Stroke</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔笔画</translation>
     </message>
     <message>
         <source>Change Paint Target</source>
-        <translation type="unfinished"></translation>
+        <translation>更改绘制目标</translation>
     </message>
     <message>
         <source>Painting into another target starts afresh: the painting so far and its undo history are discarded.</source>
-        <translation type="unfinished"></translation>
+        <translation>绘制到其他目标将重新开始：到目前为止的绘画及其撤销历史都会被丢弃。</translation>
     </message>
     <message>
         <source>Cannot paint into that target: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法绘制到该目标：%1</translation>
     </message>
     <message>
         <source>&amp;Edit</source>
-        <translation type="unfinished"></translation>
+        <translation>编辑(&amp;E)</translation>
     </message>
     <message>
         <source>&amp;Paint</source>
-        <translation type="unfinished"></translation>
+        <translation>绘画(&amp;P)</translation>
     </message>
     <message>
         <source>compute shader</source>
-        <translation type="unfinished"></translation>
+        <translation>计算着色器</translation>
     </message>
     <message>
         <source>C++</source>
-        <translation type="unfinished"></translation>
+        <translation>C++</translation>
     </message>
     <message>
         <source>Fill</source>
-        <translation type="unfinished"></translation>
+        <translation>填充</translation>
     </message>
     <message>
         <source>Tools</source>
-        <translation type="unfinished"></translation>
+        <translation>工具</translation>
     </message>
     <message>
         <source>&amp;Brush</source>
-        <translation type="unfinished"></translation>
+        <translation>画笔(&amp;B)</translation>
     </message>
     <message>
         <source>Paint strokes with the brush</source>
-        <translation type="unfinished"></translation>
+        <translation>用画笔画出笔画</translation>
     </message>
     <message>
         <source>&amp;Eraser</source>
-        <translation type="unfinished"></translation>
+        <translation>橡皮擦(&amp;E)</translation>
     </message>
     <message>
         <source>Erase paint back to the model&apos;s original colours</source>
-        <translation type="unfinished"></translation>
+        <translation>擦除颜料，恢复模型原来的颜色</translation>
     </message>
     <message>
         <source>&amp;Fill</source>
-        <translation type="unfinished"></translation>
+        <translation>填充(&amp;F)</translation>
     </message>
     <message>
         <source>Flood fill with the brush colour</source>
-        <translation type="unfinished"></translation>
+        <translation>用画笔颜色进行填充</translation>
     </message>
     <message>
         <source>E&amp;yedropper</source>
-        <translation type="unfinished"></translation>
+        <translation>吸管(&amp;Y)</translation>
     </message>
     <message>
         <source>Pick the surface colour under the cursor (or Ctrl+click)</source>
-        <translation type="unfinished"></translation>
+        <translation>拾取光标下的表面颜色（或按住 Ctrl 点击）</translation>
     </message>
     <message>
         <source>Paint to &amp;Hide</source>
-        <translation type="unfinished"></translation>
+        <translation>涂抹隐藏(&amp;H)</translation>
     </message>
     <message>
         <source>Hide every region the brush touches, revealing what lies behind</source>
-        <translation type="unfinished"></translation>
+        <translation>隐藏画笔触及的每个区域，露出其后面的内容</translation>
     </message>
     <message>
         <source>&amp;Pop Up</source>
-        <translation type="unfinished"></translation>
+        <translation>弹出(&amp;P)</translation>
     </message>
     <message>
         <source>Bring the region below the visible one to the front (or Shift+click); click again to cycle</source>
-        <translation type="unfinished"></translation>
+        <translation>将可见区域下面的区域提到最前（或按住 Shift 点击）；再次点击可依次切换</translation>
     </message>
     <message>
         <source>Cannot fill: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法填充：%1</translation>
     </message>
     <message>
         <source>Filled in %1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>填充用时 %1 毫秒</translation>
     </message>
     <message>
         <source>Nothing to fill there</source>
-        <translation type="unfinished"></translation>
+        <translation>那里没有可填充的内容</translation>
     </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>
     <message>
         <source>No regions yet</source>
-        <translation type="unfinished"></translation>
+        <translation>尚无区域</translation>
     </message>
     <message>
         <source>No regions in this view</source>
-        <translation type="unfinished"></translation>
+        <translation>此视图中没有区域</translation>
     </message>
     <message>
         <source>Regions: %1, connections: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>区域：%1，连接：%2</translation>
     </message>
     <message>
         <source>Small regions merged into grey nodes: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>合并为灰色节点的小区域：%1</translation>
     </message>
     <message>
         <source>Layer %1</source>
-        <translation type="unfinished"></translation>
+        <translation>图层 %1</translation>
     </message>
     <message>
         <source>%1 small regions of layer %2
 %3 pixels together</source>
-        <translation type="unfinished"></translation>
+        <translation>图层 %2 上的 %1 个小区域
+共 %3 个像素</translation>
     </message>
     <message>
         <source>+%1</source>
-        <translation type="unfinished"></translation>
+        <translation>+%1</translation>
     </message>
     <message>
         <source>Region %1 on layer %2
 %3 pixels
 Connected regions: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>区域 %1，位于图层 %2
+%3 个像素
+相连区域：%4</translation>
     </message>
     <message>
         <source>%1 pixel links</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 条像素连接</translation>
     </message>
 </context>
 <context>
     <name>ui::SegmentationControls</name>
     <message>
         <source>Depth threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>深度阈值</translation>
     </message>
     <message>
         <source>How far apart in depth two neighbouring pixels may be and still count as one surface, as a fraction of the model&apos;s longest side.
 Smaller splits the view into more regions.</source>
-        <translation type="unfinished"></translation>
+        <translation>两个相邻像素在深度上最多相差多少仍被视为同一表面，以模型最长边的比例表示。
+数值越小，视图被分成的区域越多。</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>重置</translation>
     </message>
     <message>
         <source>Back to the default threshold (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>恢复默认阈值（%1）</translation>
     </message>
     <message>
         <source>Surface</source>
-        <translation type="unfinished"></translation>
+        <translation>表面</translation>
     </message>
     <message>
         <source>Plain depth</source>
-        <translation type="unfinished"></translation>
+        <translation>纯深度</translation>
     </message>
     <message>
         <source>Follows each triangle&apos;s plane: sloped surfaces stay one region at any threshold</source>
-        <translation type="unfinished"></translation>
+        <translation>沿每个三角形的平面判断：倾斜的表面在任何阈值下都保持为一个区域</translation>
     </message>
     <message>
         <source>The paper&apos;s test: depth difference below the threshold; steep surfaces break apart</source>
-        <translation type="unfinished"></translation>
+        <translation>论文中的测试：深度差低于阈值；陡峭的表面会被分开</translation>
     </message>
     <message>
         <source>How neighbouring pixels are judged to lie on one surface</source>
-        <translation type="unfinished"></translation>
+        <translation>如何判断相邻像素位于同一表面</translation>
     </message>
     <message>
         <source>Capture back faces (two-sided)</source>
-        <translation type="unfinished"></translation>
+        <translation>捕获背面（双面）</translation>
     </message>
     <message>
         <source>Also split the inside of open or single-sided surfaces into layers. Changing it captures the view again.</source>
-        <translation type="unfinished"></translation>
+        <translation>也将开放或单面表面的内侧分成图层。更改后会重新捕获视图。</translation>
     </message>
     <message>
         <source>Threshold:</source>
-        <translation type="unfinished"></translation>
+        <translation>阈值：</translation>
     </message>
     <message>
         <source>Test:</source>
-        <translation type="unfinished"></translation>
+        <translation>测试：</translation>
     </message>
     <message>
         <source>Automatic</source>
-        <translation type="unfinished"></translation>
+        <translation>自动</translation>
     </message>
     <message>
         <source>C++ (processor)</source>
-        <translation type="unfinished"></translation>
+        <translation>C++（处理器）</translation>
     </message>
     <message>
         <source>Compute shader (graphics card)</source>
-        <translation type="unfinished"></translation>
+        <translation>计算着色器（显卡）</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed; both give the same result, Automatic picks the faster for this computer</source>
-        <translation type="unfinished"></translation>
+        <translation>像素连通性的计算位置；两者结果相同，“自动”会选择在本机上更快的一种</translation>
     </message>
     <message>
         <source>Connectivity:</source>
-        <translation type="unfinished"></translation>
+        <translation>连通性：</translation>
     </message>
     <message>
         <source>Automatic (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>自动（%1）</translation>
     </message>
 </context>
 <context>
     <name>ui::Viewport</name>
     <message>
         <source>The layer capture is not available.</source>
-        <translation type="unfinished"></translation>
+        <translation>图层捕获不可用。</translation>
     </message>
     <message>
         <source>LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.</source>
-        <translation type="unfinished"></translation>
+        <translation>LayerPaint 需要 OpenGL 4.5，但本系统只提供 OpenGL %1.%2。</translation>
     </message>
     <message>
         <source>The renderer could not start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>渲染器无法启动：%1</translation>
     </message>
     <message>
         <source>The layer views could not start: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>图层视图无法启动：%1</translation>
     </message>
     <message>
         <source>The layers cannot be shown: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>无法显示图层：%1</translation>
     </message>
 </context>
 </TS>
