@@ -64,9 +64,13 @@ void Document::orderChanged() {
 }
 
 std::optional<std::size_t> Document::pixelIndex(glm::vec2 pixel) const {
-    if (!m_layers || !(pixel.x >= 0.0f && pixel.y >= 0.0f))
+    if (!m_layers)
         return std::nullopt;
     const LayerStack& stack = m_layers->stack;
+    // Compared as floats first: converting a huge or NaN float to an integer is undefined.
+    if (!(pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < float(stack.width) &&
+          pixel.y < float(stack.height)))
+        return std::nullopt;
     const auto x = std::size_t(pixel.x), y = std::size_t(pixel.y);
     if (x >= std::size_t(stack.width) || y >= std::size_t(stack.height))
         return std::nullopt;
@@ -265,12 +269,10 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
     if (m_tracker.inStroke())
         endStroke();
     const LayerStack& stack = m_layers->stack;
-    if (!(position.x >= 0.0f && position.y >= 0.0f && position.x < float(stack.width) &&
-          position.y < float(stack.height)))
+    const auto pixel = pixelIndex(position);
+    if (!pixel)
         return {};
-    const std::size_t pixel =
-        std::size_t(position.y) * std::size_t(stack.width) + std::size_t(position.x);
-    const std::uint32_t fragment = visibleFragment(pixel);
+    const std::uint32_t fragment = visibleFragment(*pixel);
     if (fragment == kNone || fragment >= stack.fragmentCount())
         return {};
     const std::uint32_t triangle = stack.triangle[fragment];

@@ -221,8 +221,9 @@ TEST(FloodFill, NeedsLayersAndFillsNothingOnBackground) {
     core::CpuLayerCapturer capturer;
     capturer.setMesh(doc.mesh());
     ASSERT_TRUE(doc.buildLayers(capturer, pixelView(64, 64)).ok());
-    for (const glm::vec2 p : {glm::vec2(2.0f, 2.0f), glm::vec2(-5.0f, 30.0f),
-                              glm::vec2(30.0f, 64.0f), glm::vec2(NAN, 3.0f)}) {
+    for (const glm::vec2 p :
+         {glm::vec2(2.0f, 2.0f), glm::vec2(-5.0f, 30.0f), glm::vec2(30.0f, 64.0f),
+          glm::vec2(NAN, 3.0f), glm::vec2(1e30f, 30.0f)}) {
         for (const FillMode mode : {FillMode::Region, FillMode::Surface, FillMode::Color}) {
             EXPECT_TRUE(doc.fill(p, mode, 0.5f, changes).ok());
             EXPECT_TRUE(changes.empty());
