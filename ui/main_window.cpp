@@ -242,15 +242,6 @@ void MainWindow::createPanels() {
         emit regionActivated(region);
     });
 
-    m_fillPanel = new FillPanel(this);
-    m_fillDock = makeDock(tr("Fill"), QStringLiteral("fillDock"), m_fillPanel);
-    // Fill's options belong with the tool: the panel shows once the tool is chosen.
-    m_fillDock->hide();
-    connect(this, &MainWindow::toolChanged, this, [this](Tool tool) {
-        if (tool == Tool::Fill)
-            m_fillDock->show();
-    });
-
     // Default layout (restoreState() may replace it): a column on the right.
     resizeDocks({m_segmentationDock, m_layersDock, m_graphDock}, {300, 300, 300}, Qt::Horizontal);
     resizeDocks({m_segmentationDock, m_layersDock, m_graphDock},
@@ -422,7 +413,17 @@ void MainWindow::createPaintActions() {
                             m_regionTools->createPanel(this));
     // A tab behind the region graph: the column keeps its height.
     tabifyDockWidget(m_graphDock, m_hiddenDock);
+    m_fillPanel = new FillPanel(this);
+    m_fillDock = makeDock(tr("Fill"), QStringLiteral("fillDock"), m_fillPanel);
+    tabifyDockWidget(m_graphDock, m_fillDock);
     m_graphDock->raise();
+    // Fill's options come to the front with the tool.
+    connect(this, &MainWindow::toolChanged, this, [this](Tool tool) {
+        if (tool == Tool::Fill) {
+            m_fillDock->show();
+            m_fillDock->raise();
+        }
+    });
 
     m_brushBar = new BrushToolBar(this);
     addToolBar(Qt::TopToolBarArea, m_brushBar);

@@ -38,6 +38,7 @@
 #include "ui/main_window.h"
 #include "ui/region_graph_panel.h"
 #include "ui/segmentation_controls.h"
+#include "ui/tool.h"
 #include "ui/viewport.h"
 
 namespace {
@@ -433,14 +434,23 @@ TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
     }
     auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
     ASSERT_NE(panels, nullptr);
-    EXPECT_EQ(panels->actions().size(), 4);
+    // Every panel, and nothing else.
+    const QList<QDockWidget*> docks = m_window->findChildren<QDockWidget*>();
+    EXPECT_EQ(panels->actions().size(), docks.size());
+    for (QDockWidget* dock : docks)
+        EXPECT_TRUE(panels->actions().contains(dock->toggleViewAction()))
+            << dock->objectName().toStdString();
     for (const char* name :
-         {"segmentationDock", "layersDock", "regionGraphDock", "hiddenRegionsDock"}) {
+         {"segmentationDock", "layersDock", "regionGraphDock", "hiddenRegionsDock", "fillDock"}) {
         auto* dock = m_window->findChild<QDockWidget*>(QString::fromLatin1(name));
         ASSERT_NE(dock, nullptr) << name;
-        EXPECT_TRUE(panels->actions().contains(dock->toggleViewAction())) << name;
-        EXPECT_FALSE(dock->isHidden()) << name; // the paint-to-hide panel is a tab behind
+        EXPECT_FALSE(dock->isHidden()) << name; // paint-to-hide and fill are tabs behind
     }
+    // The Fill tool's panel comes to the front with the tool.
+    auto* fillDock = m_window->findChild<QDockWidget*>(QStringLiteral("fillDock"));
+    EXPECT_FALSE(fillDock->isVisible());
+    m_window->setTool(ui::Tool::Fill);
+    EXPECT_TRUE(fillDock->isVisible());
 
     // A closed panel stays closed in the next session.
     auto* graphDock = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
