@@ -139,6 +139,32 @@
     </message>
 </context>
 <context>
+    <name>ui::HiddenRegionsPanel</name>
+    <message>
+        <source>Paint with the Hide tool (H) to hide regions and see behind them.</source>
+        <translation>Malen Sie mit dem Ausblenden-Werkzeug (H), um Regionen auszublenden und dahinter zu sehen.</translation>
+    </message>
+    <message>
+        <source>&amp;Unhide</source>
+        <translation>&amp;Einblenden</translation>
+    </message>
+    <message>
+        <source>Show the selected regions again</source>
+        <translation>Die ausgewählten Regionen wieder zeigen</translation>
+    </message>
+    <message>
+        <source>Unhide &amp;All</source>
+        <translation>&amp;Alle einblenden</translation>
+    </message>
+    <message numerus="yes">
+        <source>Region %1 · layer %2 · %n pixel(s)</source>
+        <translation>
+            <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
+            <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
@@ -214,10 +240,6 @@ Regionen: %3</translation>
     <message>
         <source>Region Graph</source>
         <translation>Regionsgraph</translation>
-    </message>
-    <message>
-        <source>Region %1 selected</source>
-        <translation>Region %1 ausgewählt</translation>
     </message>
     <message>
         <source>&amp;Shaded</source>
@@ -542,7 +564,7 @@ Konnektivität %3 ms, Regionen %4 ms
     </message>
     <message>
         <source>Paint to &amp;Hide</source>
-        <translation>&amp;Verbergen durch Malen</translation>
+        <translation>Durch Malen aus&amp;blenden</translation>
     </message>
     <message>
         <source>Hide every region the brush touches, revealing what lies behind</source>
@@ -567,6 +589,14 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Nothing to fill there</source>
         <translation>Dort gibt es nichts zu füllen</translation>
+    </message>
+    <message>
+        <source>Region %1 popped up</source>
+        <translation>Region %1 hervorgeholt</translation>
+    </message>
+    <message>
+        <source>Paint to Hide</source>
+        <translation>Durch Malen ausblenden</translation>
     </message>
 </context>
 <context>
@@ -612,6 +642,95 @@ Verbundene Regionen: %4</translation>
     <message>
         <source>%1 pixel links</source>
         <translation>%1 Pixelverbindungen</translation>
+    </message>
+</context>
+<context>
+    <name>ui::RegionTools</name>
+    <message>
+        <source>&amp;Automatic Pop-up</source>
+        <translation>&amp;Automatisch hervorholen</translation>
+    </message>
+    <message>
+        <source>While painting layer-aware, bring the surface under the brush to the front when it goes behind another</source>
+        <translation>Beim ebenenbewussten Malen die Fläche unter dem Pinsel nach vorn holen, wenn sie hinter eine andere gerät</translation>
+    </message>
+    <message>
+        <source>&amp;See-Through Pop-ups</source>
+        <translation>Hervorgeholte Regionen &amp;durchscheinend</translation>
+    </message>
+    <message>
+        <source>Draw popped-up and revealed regions half transparent, so what surrounds them stays visible</source>
+        <translation>Hervorgeholte und freigelegte Regionen halb durchsichtig zeichnen, damit ihre Umgebung sichtbar bleibt</translation>
+    </message>
+    <message>
+        <source>Orbit About &amp;Surface Point</source>
+        <translation>Um Oberflächen&amp;punkt drehen</translation>
+    </message>
+    <message>
+        <source>Start an orbit on the model to turn about that point, on whatever layer is shown there</source>
+        <translation>Eine auf dem Modell begonnene Drehung kreist um diesen Punkt, auf welcher Ebene er auch gezeigt wird</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Region Order</source>
+        <translation>Regionsreihenfolge &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Show the regions in their original order (layer 1 in front)</source>
+        <translation>Die Regionen in ihrer ursprünglichen Reihenfolge zeigen (Ebene 1 vorn)</translation>
+    </message>
+    <message>
+        <source>Reset the region order (R)</source>
+        <translation>Die Regionsreihenfolge zurücksetzen (R)</translation>
+    </message>
+    <message>
+        <source>Reset Region Order</source>
+        <translation>Regionsreihenfolge zurücksetzen</translation>
+    </message>
+    <message>
+        <source>U&amp;nhide All Regions</source>
+        <translation>Alle Regionen ei&amp;nblenden</translation>
+    </message>
+    <message>
+        <source>Show every hidden region again (Shift+H)</source>
+        <translation>Alle ausgeblendeten Regionen wieder zeigen (Umschalt+H)</translation>
+    </message>
+    <message>
+        <source>Unhide All</source>
+        <translation>Alle einblenden</translation>
+    </message>
+    <message>
+        <source>Unhide</source>
+        <translation>Einblenden</translation>
+    </message>
+    <message>
+        <source>Nothing to pop up here</source>
+        <translation>Hier gibt es nichts hervorzuholen</translation>
+    </message>
+    <message>
+        <source>Pop Up Region %1</source>
+        <translation>Region %1 hervorholen</translation>
+    </message>
+    <message>
+        <source>Region %1 (layer %2) in front; click again to go deeper</source>
+        <translation>Region %1 (Ebene %2) vorn; erneut klicken, um tiefer zu gehen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Hide %n Region(s)</source>
+        <translation>
+            <numerusform>%n Region ausblenden</numerusform>
+            <numerusform>%n Regionen ausblenden</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n region(s) hidden</source>
+        <translation>
+            <numerusform>%n Region ausgeblendet</numerusform>
+            <numerusform>%n Regionen ausgeblendet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Automatic Pop-up</source>
+        <translation>Automatisch hervorholen</translation>
     </message>
 </context>
 <context>

@@ -139,6 +139,31 @@
     </message>
 </context>
 <context>
+    <name>ui::HiddenRegionsPanel</name>
+    <message>
+        <source>Paint with the Hide tool (H) to hide regions and see behind them.</source>
+        <translation>用隐藏工具 (H) 涂抹，可隐藏区域并看到其后面的内容。</translation>
+    </message>
+    <message>
+        <source>&amp;Unhide</source>
+        <translation>取消隐藏(&amp;U)</translation>
+    </message>
+    <message>
+        <source>Show the selected regions again</source>
+        <translation>重新显示所选区域</translation>
+    </message>
+    <message>
+        <source>Unhide &amp;All</source>
+        <translation>全部取消隐藏(&amp;A)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Region %1 · layer %2 · %n pixel(s)</source>
+        <translation>
+            <numerusform>区域 %1 · 图层 %2 · %n 个像素</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>Layers appear when the view stays still.</source>
@@ -214,10 +239,6 @@ Regions: %3</source>
     <message>
         <source>Region Graph</source>
         <translation>区域图</translation>
-    </message>
-    <message>
-        <source>Region %1 selected</source>
-        <translation>已选择区域 %1</translation>
     </message>
     <message>
         <source>&amp;Shaded</source>
@@ -437,7 +458,7 @@ connectivity %3 ms, regions %4 ms
     </message>
     <message>
         <source>Show &amp;Brush Maps</source>
-        <translation>显示画笔映射图(&amp;B)</translation>
+        <translation>显示画笔映射图(&amp;M)</translation>
     </message>
     <message>
         <source>While painting, show the paintable (red) and trackable (blue) pixels around the brush</source>
@@ -567,6 +588,14 @@ connectivity %3 ms, regions %4 ms
         <source>Nothing to fill there</source>
         <translation>那里没有可填充的内容</translation>
     </message>
+    <message>
+        <source>Region %1 popped up</source>
+        <translation>已弹出区域 %1</translation>
+    </message>
+    <message>
+        <source>Paint to Hide</source>
+        <translation>涂抹隐藏</translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>
@@ -611,6 +640,93 @@ Connected regions: %4</source>
     <message>
         <source>%1 pixel links</source>
         <translation>%1 条像素连接</translation>
+    </message>
+</context>
+<context>
+    <name>ui::RegionTools</name>
+    <message>
+        <source>&amp;Automatic Pop-up</source>
+        <translation>自动弹出(&amp;A)</translation>
+    </message>
+    <message>
+        <source>While painting layer-aware, bring the surface under the brush to the front when it goes behind another</source>
+        <translation>图层感知绘画时，画笔下的表面进入其他表面后方时将其提到最前</translation>
+    </message>
+    <message>
+        <source>&amp;See-Through Pop-ups</source>
+        <translation>半透明弹出区域(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Draw popped-up and revealed regions half transparent, so what surrounds them stays visible</source>
+        <translation>以半透明方式绘制弹出和显露的区域，使其周围的内容仍然可见</translation>
+    </message>
+    <message>
+        <source>Orbit About &amp;Surface Point</source>
+        <translation>绕表面点旋转(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Start an orbit on the model to turn about that point, on whatever layer is shown there</source>
+        <translation>在模型上开始旋转时将绕该点旋转，无论该处显示的是哪个图层</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Region Order</source>
+        <translation>重置区域顺序(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Show the regions in their original order (layer 1 in front)</source>
+        <translation>按原始顺序显示区域（图层 1 在最前）</translation>
+    </message>
+    <message>
+        <source>Reset the region order (R)</source>
+        <translation>重置区域顺序 (R)</translation>
+    </message>
+    <message>
+        <source>Reset Region Order</source>
+        <translation>重置区域顺序</translation>
+    </message>
+    <message>
+        <source>U&amp;nhide All Regions</source>
+        <translation>取消隐藏所有区域(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Show every hidden region again (Shift+H)</source>
+        <translation>重新显示所有隐藏的区域 (Shift+H)</translation>
+    </message>
+    <message>
+        <source>Unhide All</source>
+        <translation>全部取消隐藏</translation>
+    </message>
+    <message>
+        <source>Unhide</source>
+        <translation>取消隐藏</translation>
+    </message>
+    <message>
+        <source>Nothing to pop up here</source>
+        <translation>这里没有可弹出的区域</translation>
+    </message>
+    <message>
+        <source>Pop Up Region %1</source>
+        <translation>弹出区域 %1</translation>
+    </message>
+    <message>
+        <source>Region %1 (layer %2) in front; click again to go deeper</source>
+        <translation>区域 %1（图层 %2）已在最前；再次点击可继续深入</translation>
+    </message>
+    <message numerus="yes">
+        <source>Hide %n Region(s)</source>
+        <translation>
+            <numerusform>隐藏 %n 个区域</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n region(s) hidden</source>
+        <translation>
+            <numerusform>已隐藏 %n 个区域</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Automatic Pop-up</source>
+        <translation>自动弹出</translation>
     </message>
 </context>
 <context>
