@@ -446,11 +446,17 @@ TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
         ASSERT_NE(dock, nullptr) << name;
         EXPECT_FALSE(dock->isHidden()) << name; // paint-to-hide and fill are tabs behind
     }
-    // The Fill tool's panel comes to the front with the tool.
+    // The Fill tool's panel is a tab behind the region graph until the tool is chosen (a tab
+    // behind stays "visible", moved out of sight).
     auto* fillDock = m_window->findChild<QDockWidget*>(QStringLiteral("fillDock"));
-    EXPECT_FALSE(fillDock->isVisible());
+    auto* graph = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
+    EXPECT_TRUE(m_window->tabifiedDockWidgets(graph).contains(fillDock));
+    QApplication::processEvents();
+    EXPECT_TRUE(fillDock->visibleRegion().isEmpty());
+    EXPECT_FALSE(graph->visibleRegion().isEmpty());
     m_window->setTool(ui::Tool::Fill);
-    EXPECT_TRUE(fillDock->isVisible());
+    QApplication::processEvents();
+    EXPECT_FALSE(fillDock->visibleRegion().isEmpty());
 
     // A closed panel stays closed in the next session.
     auto* graphDock = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
