@@ -48,4 +48,17 @@ struct Brush {
     float falloff(float d, float r) const;
 };
 
+/**
+ * How pen pressure maps to the pressure a stroke uses (StrokePoint::pressure): p^gamma. Below 1 a
+ * light touch already gives much, above 1 it takes a firm press; 1 is the identity, so a mouse
+ * (pressure 1) is unaffected by any curve. Out-of-range gamma is clamped, pressure to 0..1.
+ */
+struct PressureCurve {
+    static constexpr float kMinGamma = 0.2f;
+    static constexpr float kMaxGamma = 5.0f;
+    float gamma = 1.0f;
+
+    float apply(float pressure) const;
+};
+
 } // namespace core

@@ -4,6 +4,10 @@
 #include <algorithm>
 #include <chrono>
 
+#include <glm/geometric.hpp>
+
+#include "core/connectivity.h"
+
 namespace core {
 
 Document::Document()
@@ -132,6 +136,49 @@ std::uint32_t Document::visibleFragment(std::size_t pixel) const {
     if (!m_layers)
         return kNone;
     return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
+}
+
+std::optional<glm::vec4> Document::pickColor(std::size_t pixel) {
+    if (!m_layers || pixel >= m_layers->stack.pixelCount())
+        return std::nullopt;
+    const std::uint32_t fragment = visibleFragment(pixel);
+    if (fragment == kNone)
+        return std::nullopt;
+    const std::uint32_t triangle = m_layers->stack.triangle[fragment];
+    if (triangle >= m_mesh->triangleCount())
+        return std::nullopt;
+    PaintTarget* target = paintTarget();
+    if (!target)
+        return std::nullopt;
+    // Where the ray through the pixel centre meets the triangle's plane, in view space, as
+    // barycentric weights. The capture covered this pixel centre with this triangle, so the
+    // point lies on it (up to rounding; colorAt drops small negative weights).
+    const View& view = m_layers->view;
+    const int width = m_layers->stack.width;
+    const float px = float(pixel % std::size_t(width)) + 0.5f;
+    const float py = float(pixel / std::size_t(width)) + 0.5f;
+    const PixelRays rays = PixelRays::fromView(view);
+    const glm::dvec3 origin(rays.origin(px, py)), direction(rays.direction(px, py));
+    glm::dvec3 corner[3];
+    for (int c = 0; c < 3; ++c) {
+        const glm::vec3& p =
+            m_mesh->positions[m_mesh->indices[3 * std::size_t(triangle) + std::size_t(c)]];
+        corner[c] = glm::dvec3(view.view * glm::vec4(p, 1.0f));
+    }
+    const glm::dvec3 e1 = corner[1] - corner[0], e2 = corner[2] - corner[0];
+    const glm::dvec3 normal = glm::cross(e1, e2);
+    const double area2 = glm::dot(normal, normal);
+    const double along = glm::dot(normal, direction);
+    glm::vec3 weights(1.0f / 3.0f);
+    if (area2 > 0.0 && along != 0.0) {
+        const double t = glm::dot(normal, corner[0] - origin) / along;
+        const glm::dvec3 hit = origin + t * direction;
+        const glm::dvec3 d = hit - corner[0];
+        const double w1 = glm::dot(glm::cross(d, e2), normal) / area2;
+        const double w2 = glm::dot(glm::cross(e1, d), normal) / area2;
+        weights = glm::vec3(float(1.0 - w1 - w2), float(w1), float(w2));
+    }
+    return target->colorAt(triangle, weights);
 }
 
 void Document::setLayerOptions(const LayerOptions& options) {

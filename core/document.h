@@ -115,6 +115,13 @@ public:
      * rotation), from its view depth; nullopt on background or without layers.
      */
     std::optional<glm::vec3> surfacePoint(glm::vec2 pixel) const;
+    /**
+     * The eyedropper: the unlit surface colour (linear RGBA) of the visible fragment at pixel, as
+     * the paint target holds it (painted texel or vertex colour) where the pixel centre's ray
+     * meets the fragment's triangle. Creates the paint target if there is none yet. nullopt on
+     * background, outside the view, without layers, or when the target cannot be made.
+     */
+    std::optional<glm::vec4> pickColor(std::size_t pixel);
 
     // Painting (DESIGN.md §3 steps 5-6).
 

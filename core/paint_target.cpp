@@ -8,6 +8,7 @@
 #include <limits>
 #include <utility>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
@@ -859,6 +860,44 @@ std::uint32_t TextureTarget::trianglePage(std::size_t t) const {
     return m_materialPage[mesh().triangleMaterial[t]];
 }
 
+namespace {
+/** Weights for colorAt: negative ones dropped, normalised; false if none are usable. */
+bool normalizedWeights(const Mesh& mesh, std::uint32_t triangle, glm::vec3 w, glm::vec3& out) {
+    if (triangle >= mesh.triangleCount() || !std::isfinite(w.x) || !std::isfinite(w.y) ||
+        !std::isfinite(w.z))
+        return false;
+    w = glm::max(w, glm::vec3(0.0f));
+    const float sum = w.x + w.y + w.z;
+    if (!(sum > 0.0f) || !std::isfinite(sum))
+        return false;
+    out = w / sum;
+    return true;
+}
+} // namespace
+
+std::optional<glm::vec4> TextureTarget::colorAt(std::uint32_t triangle,
+                                                const glm::vec3& weights) const {
+    const Mesh& m = mesh();
+    glm::vec3 w;
+    if (!normalizedWeights(m, triangle, weights, w))
+        return std::nullopt;
+    glm::vec2 uv(0.0f);
+    for (int c = 0; c < 3; ++c)
+        uv += w[c] * m.uvs[m.indices[3 * std::size_t(triangle) + std::size_t(c)]];
+    const Image& image = m_pages[trianglePage(triangle)].image;
+    if (image.empty())
+        return std::nullopt;
+    // The texel whose square holds the point (UVs repeat, as when painting).
+    const double u = double(uv.x) - std::floor(double(uv.x));
+    const double v = double(uv.y) - std::floor(double(uv.y));
+    const int x = std::clamp(int(u * image.width), 0, image.width - 1);
+    const int y = std::clamp(int(v * image.height), 0, image.height - 1);
+    const std::uint8_t* texel =
+        &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+    return glm::vec4(srgbToLinear(texel[0]), srgbToLinear(texel[1]), srgbToLinear(texel[2]),
+                     float(texel[3]) / 255.0f);
+}
+
 std::size_t TextureTarget::bytes() const {
     std::size_t total = sizeof(*this);
     for (const Page& p : m_pages)
@@ -1221,6 +1260,18 @@ VertexColorTarget::create(std::shared_ptr<const Mesh> mesh,
     const std::uint32_t blocks = std::uint32_t((n + kVertexBlock - 1) / kVertexBlock);
     target->setUpStrokeTiles({blocks}, kVertexBlock, kVertexBlock * sizeof(glm::vec4));
     return Result<std::unique_ptr<VertexColorTarget>>(std::move(target));
+}
+
+std::optional<glm::vec4> VertexColorTarget::colorAt(std::uint32_t triangle,
+                                                    const glm::vec3& weights) const {
+    const Mesh& m = mesh();
+    glm::vec3 w;
+    if (!normalizedWeights(m, triangle, weights, w))
+        return std::nullopt;
+    glm::vec4 color(0.0f);
+    for (int c = 0; c < 3; ++c)
+        color += w[c] * m_colors[m.indices[3 * std::size_t(triangle) + std::size_t(c)]];
+    return color;
 }
 
 std::size_t VertexColorTarget::bytes() const {

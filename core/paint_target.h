@@ -128,6 +128,14 @@ public:
 
     /** What undoing or redoing record changes (the tiles it holds), for updating a GPU copy. */
     virtual PaintChanges changes(const TileUndoRecord& record) const = 0;
+    /**
+     * The target's current, unlit colour (linear RGBA) at a point of triangle given by weights of
+     * its three corners (negative ones are taken as 0, the rest normalised): the texel of its page
+     * under the interpolated uv, or the interpolated vertex colour. nullopt for a triangle out of
+     * range or weights that are not finite or all zero.
+     */
+    virtual std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                             const glm::vec3& weights) const = 0;
     /** The mesh's materials as the painted mesh is to be drawn (see the derived classes). */
     const std::vector<Material>& drawMaterials() const { return m_drawMaterials; }
     /** Memory held by the painted data, originals and scratch, in bytes (approximate). */
@@ -174,6 +182,8 @@ public:
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     PaintChanges changes(const TileUndoRecord& record) const override;
+    std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                     const glm::vec3& weights) const override;
     std::size_t bytes() const override;
 
     std::size_t pageCount() const { return m_pages.size(); }
@@ -237,6 +247,8 @@ public:
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     PaintChanges changes(const TileUndoRecord& record) const override;
+    std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                     const glm::vec3& weights) const override;
     std::size_t bytes() const override;
 
     const std::vector<glm::vec4>& colors() const { return m_colors; }
