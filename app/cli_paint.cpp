@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -163,6 +164,23 @@ void replay(const json& operations, core::Document& doc, core::LayerCapturer& ca
                 ensureLayers();
                 if (const core::Status s = doc.fill(at, mode, tolerance, changes); !s)
                     throw ScriptError{s.error()};
+            } else if (name == "pick") {
+                // The eyedropper: the brush takes the surface colour of the visible fragment.
+                const json& at = op.contains("at") ? op["at"] : json();
+                if (!at.is_array() || at.size() != 2 || !at[0].is_number() || !at[1].is_number())
+                    throw ScriptError{"\"at\" must be [x, y] in pixels"};
+                const double x = at[0].get<double>(), y = at[1].get<double>();
+                ensureLayers();
+                const core::LayerStack& stack = doc.layers()->stack;
+                if (!(x >= 0.0 && y >= 0.0 && x < stack.width && y < stack.height))
+                    throw ScriptError{"pick position " + at.dump() + " is outside the view"};
+                const std::size_t pixel =
+                    std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+                const std::optional<glm::vec4> picked = doc.pickColor(pixel);
+                if (!picked)
+                    throw ScriptError{"nothing to pick at " + at.dump() +
+                                      ": no surface is visible there"};
+                doc.brush().color = *picked;
             } else if (name == "undo") {
                 doc.undo(changes);
             } else if (name == "redo") {
