@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/viewport.h"
 
+#include <QCoreApplication>
 #include <QMetaObject>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPointingDevice>
+#include <QTabletEvent>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -34,11 +37,6 @@ render::PixelRect unite(const render::PixelRect& a, const render::PixelRect& b) 
     const int y1 = std::max(a.y + a.height, b.y + b.height);
     return {x0, y0, x1 - x0, y1 - y0};
 }
-
-qreal pressureOf(const QMouseEvent* event) {
-    // Mice report 1 while a button is down; tablets their pen pressure.
-    return event->points().isEmpty() ? 1.0 : event->points().first().pressure();
-}
 } // namespace
 
 Viewport::Viewport(core::Document& document, QWidget* parent)
@@ -46,9 +44,16 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
-    // Hover moves draw the brush outline.
+    // Hover moves draw the brush outline, a pen's too.
     setMouseTracking(true);
+    setAttribute(Qt::WA_TabletTracking);
     setCursor(Qt::CrossCursor);
+    // Every pen sample is a point of the stroke: a 200 Hz tablet must lose none to merging.
+    // (Off by default in Qt 6; made sure of, as the stroke depends on it.)
+    QCoreApplication::setAttribute(Qt::AA_CompressTabletEvents, false);
+    // Qt sends proximity events to the application object, not to a widget.
+    if (QCoreApplication* app = QCoreApplication::instance())
+        app->installEventFilter(this);
 }
 
 Viewport::~Viewport() {
@@ -565,8 +570,13 @@ void Viewport::releaseGl() {
     m_layersShown = false;
 }
 
-Viewport::Drag Viewport::dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) {
+Viewport::Drag Viewport::dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const {
+    const bool altMapping = m_mapping != CameraMapping::Blender;
+    const bool middleMapping = m_mapping != CameraMapping::AltBased;
     if (modifiers & Qt::AltModifier) {
+        // Alt belongs to the camera even where it moves nothing: an Alt+click never paints.
+        if (!altMapping)
+            return Drag::None;
         switch (button) {
         case Qt::LeftButton:
             return Drag::Orbit;
@@ -578,8 +588,15 @@ Viewport::Drag Viewport::dragFor(Qt::MouseButton button, Qt::KeyboardModifiers m
             return Drag::None;
         }
     }
-    if (button == Qt::MiddleButton)
-        return (modifiers & Qt::ShiftModifier) ? Drag::Pan : Drag::Orbit;
+    if (button == Qt::MiddleButton) {
+        if (!middleMapping)
+            return Drag::None;
+        if (modifiers & Qt::ShiftModifier)
+            return Drag::Pan;
+        if (modifiers & Qt::ControlModifier)
+            return Drag::Zoom;
+        return Drag::Orbit;
+    }
     if (button == Qt::LeftButton)
         return Drag::Paint;
     return Drag::None;
@@ -589,44 +606,40 @@ QPointF Viewport::toDevicePixels(QPointF logical) const {
     return logical * devicePixelRatioF();
 }
 
-void Viewport::mousePressEvent(QMouseEvent* event) {
-    if (m_drag != Drag::None) {
-        event->accept(); // a second button during a drag is ignored
-        return;
-    }
-    const Drag drag = dragFor(event->button(), event->modifiers());
-    if (drag == Drag::None) {
-        QOpenGLWidget::mousePressEvent(event);
-        return;
-    }
+bool Viewport::pointerPress(Qt::MouseButton button, Qt::KeyboardModifiers modifiers,
+                            QPointF position, qreal pressure, PointerKind pointer) {
+    if (m_drag != Drag::None)
+        return true; // a second button during a drag is ignored
+    const Drag drag = dragFor(button, modifiers);
+    if (drag == Drag::None)
+        return false;
     // The mode is fixed at the press, so releasing a modifier mid-drag does not switch it.
     m_drag = drag;
-    m_dragButton = event->button();
-    m_lastPos = event->position();
-    m_cursor = toDevicePixels(event->position());
+    m_dragButton = button;
+    m_lastPos = position;
+    m_cursor = toDevicePixels(position);
     m_cursorInside = true;
+    m_pressPointer = pointer;
     // Layer-aware rotation: about the visible surface point under the cursor, on any layer.
     m_orbitPivot.reset();
     if (drag == Drag::Orbit && m_orbitAboutSurface && isShowingLayers())
         m_orbitPivot = m_document.surfacePoint({float(m_cursor.x()), float(m_cursor.y())});
     if (drag == Drag::Paint)
-        emit paintPressed(toDevicePixels(event->position()), pressureOf(event), event->modifiers());
-    event->accept();
+        emit paintPressed(toDevicePixels(position), pressure, modifiers);
+    return true;
 }
 
-void Viewport::mouseMoveEvent(QMouseEvent* event) {
-    m_cursor = toDevicePixels(event->position());
+bool Viewport::pointerMove(QPointF position, qreal pressure) {
+    m_cursor = toDevicePixels(position);
     m_cursorInside = true;
     if (m_drag == Drag::None) {
         if (m_brushRadius > 0.0f)
             update(); // the outline follows
         updateHoverHighlight();
-
-        QOpenGLWidget::mouseMoveEvent(event);
-        return;
+        return false;
     }
-    const QPointF delta = event->position() - m_lastPos;
-    m_lastPos = event->position();
+    const QPointF delta = position - m_lastPos;
+    m_lastPos = position;
     switch (m_drag) {
     case Drag::Orbit:
         // Dragging right turns the model right; dragging down shows more of its top.
@@ -646,26 +659,92 @@ void Viewport::mouseMoveEvent(QMouseEvent* event) {
         m_document.camera().zoom(std::exp(float(delta.y() - delta.x()) * kZoomPerDragPixel));
         break;
     case Drag::Paint:
-        emit paintMoved(toDevicePixels(event->position()), pressureOf(event));
-        event->accept();
-        return;
+        emit paintMoved(toDevicePixels(position), pressure);
+        return true;
     case Drag::None:
         break;
     }
     cameraMoved();
-    event->accept();
+    return true;
+}
+
+bool Viewport::pointerRelease(Qt::MouseButton button, QPointF position) {
+    if (m_drag == Drag::None || button != m_dragButton)
+        return false;
+    if (m_drag == Drag::Paint)
+        emit paintReleased(toDevicePixels(position));
+    m_drag = Drag::None;
+    m_dragButton = Qt::NoButton;
+    return true;
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    // A mouse paints at full pressure (the pen comes through tabletEvent).
+    if (pointerPress(event->button(), event->modifiers(), event->position(), 1.0,
+                     PointerKind::Mouse))
+        event->accept();
+    else
+        QOpenGLWidget::mousePressEvent(event);
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    if (pointerMove(event->position(), 1.0))
+        event->accept();
+    else
+        QOpenGLWidget::mouseMoveEvent(event);
 }
 
 void Viewport::mouseReleaseEvent(QMouseEvent* event) {
-    if (m_drag == Drag::None || event->button() != m_dragButton) {
+    if (pointerRelease(event->button(), event->position()))
+        event->accept();
+    else
         QOpenGLWidget::mouseReleaseEvent(event);
-        return;
+}
+
+void Viewport::tabletEvent(QTabletEvent* event) {
+    m_tilt = {event->xTilt(), event->yTilt()};
+    m_penInProximity = true;
+    const PointerKind pointer = event->pointerType() == QPointingDevice::PointerType::Eraser
+                                    ? PointerKind::Eraser
+                                    : PointerKind::Pen;
+    switch (event->type()) {
+    case QEvent::TabletPress:
+        pointerPress(event->button(), event->modifiers(), event->position(), event->pressure(),
+                     pointer);
+        break;
+    case QEvent::TabletMove:
+        pointerMove(event->position(), event->pressure());
+        break;
+    case QEvent::TabletRelease:
+        pointerRelease(event->button(), event->position());
+        break;
+    default:
+        break;
     }
-    if (m_drag == Drag::Paint)
-        emit paintReleased(toDevicePixels(event->position()));
-    m_drag = Drag::None;
-    m_dragButton = Qt::NoButton;
+    // Always accepted: a mouse event synthesized from it would repeat the sample (or, for a
+    // button no drag uses, do nothing either).
     event->accept();
+}
+
+bool Viewport::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::TabletEnterProximity)
+        proximityChanged(true);
+    else if (event->type() == QEvent::TabletLeaveProximity)
+        proximityChanged(false);
+    return QOpenGLWidget::eventFilter(watched, event);
+}
+
+void Viewport::proximityChanged(bool inProximity) {
+    m_penInProximity = inProximity;
+    if (!inProximity && m_drag == Drag::None && m_cursorInside) {
+        // The pen is lifted away: no outline until a pointer moves over the view again.
+        m_cursorInside = false;
+        update();
+    } else if (inProximity && underMouse() && !m_cursorInside) {
+        // Back over the view: the outline shows where the pointer was last seen until it moves.
+        m_cursorInside = true;
+        update();
+    }
 }
 
 void Viewport::leaveEvent(QEvent* event) {

@@ -33,14 +33,34 @@ class MeshRenderer;
 namespace ui {
 
 /**
+ * Which buttons move the camera (Preferences). Both, the default, offers the Blender-like and
+ * the Alt-based mapping at once; the other two keep only theirs, so Alt or the middle button is
+ * free for other uses. The wheel zooms in all of them.
+ */
+enum class CameraMapping {
+    Both,     // the two below together
+    Blender,  // middle drag orbits, Shift+middle pans, Ctrl+middle zooms
+    AltBased, // Alt+left orbits, Alt+middle pans, Alt+right zooms (tablets, laptops)
+};
+
+/** What pressed the button of the current (or last) stroke. */
+enum class PointerKind { Mouse, Pen, Eraser };
+
+/**
  * The 3D view of a core::Document: turns mouse input into moves of the document's camera and
  * draws the model. While the view moves, or before the layers of the current view exist, it
  * draws the mesh with render::MeshRenderer; once they exist, it draws them with
- * render::LayerCompositor in the chosen display. Middle drag orbits, Shift+middle pans, the wheel
- * zooms; Alt+left/right/middle orbit, zoom and pan for tablets. The plain left button belongs to
- * painting (the paint* signals). Painting shows without a recapture: once the document has a
- * paint target the renderers draw its painted mesh, and applyPaintChanges() updates only what
- * a dab changed, at the next frame. The brush outline follows the mouse.
+ * render::LayerCompositor in the chosen display. The camera buttons follow the CameraMapping
+ * (by default middle drag orbits, Shift+middle pans, the wheel zooms, and Alt+left/right/middle
+ * orbit, zoom and pan for tablets). The plain left button belongs to painting (the paint*
+ * signals). Painting shows without a recapture: once the document has a paint target the
+ * renderers draw its painted mesh, and applyPaintChanges() updates only what a dab changed, at
+ * the next frame. The brush outline follows the mouse or the pen.
+ *
+ * Tablets: every QTabletEvent is handled and accepted (so Qt synthesizes no mouse events from
+ * it) and each sample is passed on, none merged; the pen tip paints with its pressure, the
+ * eraser end reports PointerKind::Eraser, leaving proximity hides the outline. Mouse input is
+ * handled the same way with pressure 1.
  */
 class Viewport : public QOpenGLWidget {
     Q_OBJECT
@@ -124,6 +144,22 @@ public:
     /** The radius of the brush outline, in device pixels (0 hides it). */
     void setBrushRadius(float radius);
     float brushRadius() const { return m_brushRadius; }
+    /** Whether the brush outline is drawn now (pointer over the view, not navigating). */
+    bool brushOutlineVisible() const {
+        return m_brushRadius > 0.0f && m_cursorInside && !isNavigating();
+    }
+    /** Where the brush outline is, in device pixels. */
+    QPointF cursorPosition() const { return m_cursor; }
+
+    // Input.
+    void setCameraMapping(CameraMapping mapping) { m_mapping = mapping; }
+    CameraMapping cameraMapping() const { return m_mapping; }
+    /** The pointer of the current or last press (the pen's eraser end erases). */
+    PointerKind pressPointer() const { return m_pressPointer; }
+    /** True between a pen's enter and leave proximity events. */
+    bool penInProximity() const { return m_penInProximity; }
+    /** The last tablet tilt in degrees (x, y); read for later brush shapes, unused for now. */
+    QPointF penTilt() const { return m_tilt; }
 
     const render::CompositeOptions& compositeOptions() const { return m_composite; }
     render::LayerDisplay display() const { return m_composite.display; }
@@ -166,10 +202,19 @@ protected:
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void leaveEvent(QEvent* event) override;
+    void tabletEvent(QTabletEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     enum class Drag { None, Orbit, Pan, Zoom, Paint };
-    static Drag dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers);
+    Drag dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const;
+    // Mouse and pen share these; positions are logical widget pixels. They return whether the
+    // event was used.
+    bool pointerPress(Qt::MouseButton button, Qt::KeyboardModifiers modifiers, QPointF position,
+                      qreal pressure, PointerKind pointer);
+    bool pointerMove(QPointF position, qreal pressure);
+    bool pointerRelease(Qt::MouseButton button, QPointF position);
+    void proximityChanged(bool inProximity);
 
     QPointF toDevicePixels(QPointF logical) const;
     void cameraMoved();
@@ -229,6 +274,10 @@ private:
     Drag m_drag = Drag::None;
     Qt::MouseButton m_dragButton = Qt::NoButton;
     QPointF m_lastPos;
+    CameraMapping m_mapping = CameraMapping::Both;
+    PointerKind m_pressPointer = PointerKind::Mouse;
+    bool m_penInProximity = false;
+    QPointF m_tilt;
 };
 
 } // namespace ui
