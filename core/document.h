@@ -137,6 +137,12 @@ public:
     PaintTarget* paintTarget(std::string* error = nullptr);
     /** Replaces the paint target with one made with options (drops the undo history). */
     Status resetPaintTarget(const PaintTargetOptions& options);
+    /**
+     * The options the next paint target is made with. setPaintOptions() keeps the current
+     * target; the options apply when one is made next (after setMesh(), or on first use).
+     */
+    const PaintTargetOptions& paintOptions() const { return m_paintOptions; }
+    void setPaintOptions(const PaintTargetOptions& options) { m_paintOptions = options; }
     bool hasPaintTarget() const { return m_paintTarget != nullptr; }
     /**
      * Starts a stroke (On-Mouse-Down) at a pixel of the current layers' view and paints its first

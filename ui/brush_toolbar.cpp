@@ -46,9 +46,11 @@ BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
         return spin;
     };
     m_radius = addSpin(tr("&Radius"), QStringLiteral("brushRadius"), 1, 500, tr(" px"),
-                       tr("Brush radius on screen"));
-    m_hardness = addSpin(tr("&Hardness"), QStringLiteral("brushHardness"), 0, 100, tr(" %"),
-                         tr("0: soft falloff from the centre, 100: a hard edge"));
+                       tr("Brush radius on screen ([ smaller, ] larger)"));
+    m_hardness =
+        addSpin(tr("&Hardness"), QStringLiteral("brushHardness"), 0, 100, tr(" %"),
+                tr("0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] "
+                   "harder)"));
     m_opacity = addSpin(tr("O&pacity"), QStringLiteral("brushOpacity"), 1, 100, tr(" %"),
                         tr("The most one stroke covers"));
     const auto changed = [this] {

@@ -4,6 +4,7 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
+#include <QCheckBox>
 #include <QCloseEvent>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -27,10 +28,14 @@
 #include <QUrl>
 
 #include <algorithm>
+#include <cmath>
+#include <optional>
 #include <utility>
 
 #include "core/builtin_models.h"
+#include "ui/brush_panel.h"
 #include "ui/brush_toolbar.h"
+#include "ui/color_panel.h"
 #include "ui/fill_panel.h"
 #include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
@@ -57,9 +62,9 @@ const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
 const QString kThresholdKey = QStringLiteral("segmentation/threshold");
 const QString kTestKey = QStringLiteral("segmentation/test");
 const QString kTwoSidedKey = QStringLiteral("segmentation/twoSided");
-const QString kUndoBudgetKey = QStringLiteral("paint/undoBudgetMiB");
-constexpr int kDefaultUndoBudgetMiB = 512; // strokes are tiles of 64² texels: hundreds fit
 constexpr int kPaintMessageMs = 3000;
+constexpr float kMinBrushRadius = 1.0f;
+constexpr float kMaxBrushRadius = 500.0f; // as the brush bar and panel offer
 
 double elapsedMs(const QElapsedTimer& clock) {
     return double(clock.nsecsElapsed()) / 1e6;
@@ -101,7 +106,13 @@ MainWindow::MainWindow(QWidget* parent)
         m_document->setLayerOptions(options);
     }
 
+    m_preferences = Preferences::load();
+    m_pressureCurve.gamma = m_preferences.pressureGamma;
+    m_paintOptions.resolution = m_preferences.textureSize;
+    m_document->setPaintOptions(m_paintOptions);
+
     m_viewport = new Viewport(*m_document, this);
+    m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
@@ -112,6 +123,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_layerInfo = new QLabel(this);
     m_layerInfo->setObjectName(QStringLiteral("layerInfo"));
     statusBar()->insertPermanentWidget(0, m_layerInfo);
+    m_brushInfo = new QLabel(this);
+    m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
+    statusBar()->insertPermanentWidget(1, m_brushInfo);
 
     createPanels();
     createPaintActions();
@@ -195,18 +209,18 @@ QString MainWindow::displayName(const QString& source) {
     return QFileInfo(source).fileName();
 }
 
-QDockWidget* MainWindow::makeDock(const QString& title, const QString& name, QWidget* content) {
+QDockWidget* MainWindow::makeDock(const QString& title, const QString& name, QWidget* content,
+                                  Qt::DockWidgetArea area) {
     auto* dock = new QDockWidget(title, this);
     dock->setObjectName(name); // saveState() knows docks by name
     dock->setAllowedAreas(Qt::LeftDockWidgetArea | Qt::RightDockWidgetArea |
                           Qt::BottomDockWidgetArea);
     dock->setWidget(content);
-    addDockWidget(Qt::RightDockWidgetArea, dock);
+    addDockWidget(area, dock);
     return dock;
 }
 
 void MainWindow::createPanels() {
-
     m_segmentationControls = new SegmentationControls(this);
     m_segmentationControls->setOptions(m_document->layerOptions());
     m_segmentationDock =
@@ -398,11 +412,7 @@ void MainWindow::updateLayerInfo() {
 
 void MainWindow::createPaintActions() {
     m_undoStack = new QUndoStack(this);
-    {
-        const QSettings settings;
-        const int budget = settings.value(kUndoBudgetKey, kDefaultUndoBudgetMiB).toInt();
-        m_document->history().setBudget(std::size_t(std::clamp(budget, 16, 65536)) << 20);
-    }
+    m_document->history().setBudget(std::size_t(m_preferences.undoBudgetMiB) << 20);
 
     m_regionTools = new RegionTools(
         *m_document, *m_viewport, *m_undoStack, m_undoSuspended,
@@ -427,13 +437,31 @@ void MainWindow::createPaintActions() {
 
     m_brushBar = new BrushToolBar(this);
     addToolBar(Qt::TopToolBarArea, m_brushBar);
-    m_brushBar->setBrush(m_document->brush());
-    m_viewport->setBrushRadius(m_document->brush().radius);
-    connect(m_brushBar, &BrushToolBar::brushChanged, this, [this](const core::Brush& brush) {
-        m_document->brush() = brush; // the next stroke uses it
-        m_viewport->setBrushRadius(brush.radius);
-    });
+    connect(m_brushBar, &BrushToolBar::brushChanged, this, &MainWindow::setBrush);
     connect(m_brushBar, &BrushToolBar::targetRequested, this, &MainWindow::setPaintTarget);
+
+    // The panels: the full brush settings and the colours, on the left of the view.
+    m_brushPanel = new BrushPanel(this);
+    m_brushPanel->setPressureCurve(m_pressureCurve);
+    m_brushDock =
+        makeDock(tr("Brush"), QStringLiteral("brushDock"), m_brushPanel, Qt::LeftDockWidgetArea);
+    connect(m_brushPanel, &BrushPanel::brushChanged, this, &MainWindow::setBrush);
+    connect(m_brushPanel, &BrushPanel::pressureCurveChanged, this, &MainWindow::setPressureCurve);
+    m_colorPanel = new ColorPanel(this);
+    m_colorDock =
+        makeDock(tr("Colour"), QStringLiteral("colorDock"), m_colorPanel, Qt::LeftDockWidgetArea);
+    connect(m_colorPanel, &ColorPanel::foregroundChanged, this, [this](const QColor& color) {
+        core::Brush brush = m_document->brush();
+        brush.color = BrushToolBar::toLinear(color);
+        setBrush(brush);
+    });
+    // The colour panel's own colour, rounded to what it shows, is the brush's from the start.
+    m_colorPanel->setForeground(BrushToolBar::toQColor(m_document->brush().color));
+    {
+        core::Brush brush = m_document->brush();
+        brush.color = BrushToolBar::toLinear(m_colorPanel->foreground());
+        setBrush(brush);
+    }
 
     // The paper's study checkbox: layer-aware or conventional painting, switchable any time.
     m_layerAwareAction = new QAction(tr("&Layer-Aware Painting"), this);
@@ -450,9 +478,77 @@ void MainWindow::createPaintActions() {
         statusBar()->showMessage(on ? tr("Layer-aware painting") : tr("Conventional painting"),
                                  kPaintMessageMs);
     });
+    // Shown as a check box, as in the paper's study; the action (L, Paint menu) backs it.
+    m_layerAwareCheck = new QCheckBox(tr("Layer-aware"), this);
+    m_layerAwareCheck->setObjectName(QStringLiteral("layerAwareCheckBox"));
+    m_layerAwareCheck->setChecked(m_layerAwareAction->isChecked());
+    m_layerAwareCheck->setToolTip(m_layerAwareAction->toolTip());
+    m_layerAwareCheck->setFocusPolicy(Qt::NoFocus); // keys stay with the view and shortcuts
+    connect(m_layerAwareCheck, &QCheckBox::toggled, m_layerAwareAction, &QAction::setChecked);
+    connect(m_layerAwareAction, &QAction::toggled, m_layerAwareCheck, &QCheckBox::setChecked);
     QAction* first = m_brushBar->actions().value(0);
-    m_brushBar->insertAction(first, m_layerAwareAction);
+    m_brushBar->insertWidget(first, m_layerAwareCheck);
     m_brushBar->insertSeparator(first);
+
+    // Painters' keys for the brush. Shift+[ arrives as { on many layouts: both are bound.
+    struct StepInfo {
+        QString name;
+        QString text;
+        QList<QKeySequence> keys;
+        QString tip;
+        bool radius;
+        int direction;
+    };
+    const StepInfo steps[] = {
+        {QStringLiteral("actionBrushSmaller"),
+         tr("S&maller Brush"),
+         {QKeySequence(Qt::Key_BracketLeft)},
+         tr("Make the brush smaller"),
+         true,
+         -1},
+        {QStringLiteral("actionBrushLarger"),
+         tr("La&rger Brush"),
+         {QKeySequence(Qt::Key_BracketRight)},
+         tr("Make the brush larger"),
+         true,
+         1},
+        {QStringLiteral("actionBrushSofter"),
+         tr("So&fter Brush"),
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketLeft), QKeySequence(Qt::Key_BraceLeft)},
+         tr("Lower the brush hardness"),
+         false,
+         -1},
+        {QStringLiteral("actionBrushHarder"),
+         tr("Har&der Brush"),
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketRight), QKeySequence(Qt::Key_BraceRight)},
+         tr("Raise the brush hardness"),
+         false,
+         1},
+    };
+    for (const StepInfo& step : steps) {
+        auto* action = new QAction(step.text, this);
+        action->setObjectName(step.name);
+        action->setShortcuts(step.keys);
+        action->setToolTip(QStringLiteral("%1 (%2)").arg(
+            step.tip, step.keys.first().toString(QKeySequence::NativeText)));
+        action->setStatusTip(step.tip);
+        connect(action, &QAction::triggered, this,
+                [this, radius = step.radius, direction = step.direction] {
+                    if (radius)
+                        stepBrushRadius(direction);
+                    else
+                        stepBrushHardness(direction);
+                });
+        addAction(action); // active while the menu bar is hidden too
+        m_brushStepActions.append(action);
+    }
+    m_swapColorsAction = new QAction(tr("S&wap Colours"), this);
+    m_swapColorsAction->setObjectName(QStringLiteral("actionSwapColors"));
+    m_swapColorsAction->setShortcut(QKeySequence(Qt::Key_X));
+    m_swapColorsAction->setToolTip(tr("Swap the foreground and background colours (X)"));
+    m_swapColorsAction->setStatusTip(tr("Swap the foreground and background colours"));
+    connect(m_swapColorsAction, &QAction::triggered, m_colorPanel, &ColorPanel::swapColors);
+    addAction(m_swapColorsAction);
 
     m_brushMapsAction = new QAction(tr("Show &Brush Maps"), this);
     m_brushMapsAction->setObjectName(QStringLiteral("actionShowBrushMaps"));
@@ -533,9 +629,6 @@ void MainWindow::createToolActions() {
         m_toolActions[std::size_t(info.tool)] = action;
         m_toolBar->addAction(action);
     }
-    // Not implemented yet: enabled by the changes that add them.
-    for (const Tool tool : {Tool::Eyedropper})
-        toolAction(tool)->setEnabled(false);
     toolAction(Tool::Brush)->setChecked(true);
 }
 
@@ -562,9 +655,13 @@ void MainWindow::setTool(Tool tool) {
 
 void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers) {
     finishStroke();
+    m_picking = false;
     if (m_document->meshSerial() == 0 || m_document->mesh().triangleCount() == 0)
         return;
-    const Tool tool = toolForPress(m_tool, modifiers);
+    // The pen's eraser end erases, whatever tool is chosen.
+    const Tool tool = m_viewport->pressPointer() == PointerKind::Eraser
+                          ? Tool::Eraser
+                          : toolForPress(m_tool, modifiers);
     if (!toolAction(tool)->isEnabled())
         return;
     switch (tool) {
@@ -582,8 +679,38 @@ void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModif
         fillAt(pixel);
         return;
     case Tool::Eyedropper:
+        m_picking = true;
+        pickColor(pixel);
         return;
     }
+}
+
+void MainWindow::pickColor(QPointF pixel) {
+    // Never pick from the layers of another view: build them now if they are not there.
+    if (!m_builder->buildNow())
+        return; // buildFailed() reported why
+    const core::Layers* layers = m_document->layers();
+    if (!layers)
+        return;
+    const double x = std::floor(pixel.x()), y = std::floor(pixel.y());
+    std::optional<glm::vec4> color;
+    if (x >= 0.0 && y >= 0.0 && x < layers->stack.width && y < layers->stack.height) {
+        const bool hadTarget = m_document->hasPaintTarget();
+        color = m_document->pickColor(std::size_t(y) * std::size_t(layers->stack.width) +
+                                      std::size_t(x));
+        if (!hadTarget && m_document->hasPaintTarget())
+            m_viewport->paintTargetChanged();
+    }
+    if (!color) {
+        statusBar()->showMessage(tr("No surface here to pick a colour from"), kPaintMessageMs);
+        return;
+    }
+    // As the colour panel shows it (sRGB bytes): a painted texel comes back exactly.
+    const QColor picked = BrushToolBar::toQColor(*color);
+    core::Brush brush = m_document->brush();
+    brush.color = BrushToolBar::toLinear(picked);
+    setBrush(brush);
+    statusBar()->showMessage(tr("Picked %1").arg(ColorPanel::hexName(picked)), kPaintMessageMs);
 }
 
 void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
@@ -605,10 +732,11 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     const core::UndoHistory& history = m_document->history();
     m_historyMark = history.undoCount() + history.droppedCount();
     m_document->brush().eraser = eraser;
+    m_lastPressure = m_pressureCurve.apply(float(pressure));
     core::PaintChanges changes;
     m_regionTools->beginStroke();
     const core::Status status =
-        m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
+        m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
     if (!status) {
         m_regionTools->endStroke();
         statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
@@ -617,6 +745,8 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     }
     m_painting = true;
     m_regionTools->strokeMoved(); // the first dab may have popped a region up
+    if (!eraser)
+        m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
     m_strokeStats.pressMs = elapsedMs(clock);
@@ -650,6 +780,7 @@ void MainWindow::fillAt(QPointF pixel) {
     }
     m_viewport->applyPaintChanges(changes);
     if (history.undoCount() + history.droppedCount() > mark) {
+        m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
         m_undoStack->push(new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Fill")));
         statusBar()->showMessage(
             tr("Filled in %1 ms").arg(QLocale().toString(elapsedMs(clock), 'f', 0)),
@@ -663,12 +794,17 @@ void MainWindow::fillAt(QPointF pixel) {
 void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
     if (m_regionTools->isHiding())
         m_regionTools->moveHide(pixel);
+    if (m_picking) {
+        pickColor(pixel); // the eyedropper follows while held
+        return;
+    }
     if (!m_painting)
         return;
     QElapsedTimer clock;
     clock.start();
     core::PaintChanges changes;
-    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
+    m_lastPressure = m_pressureCurve.apply(float(pressure));
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
     m_regionTools->strokeMoved(); // automatic pop-up
@@ -679,6 +815,7 @@ void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
 }
 
 void MainWindow::onPaintReleased(QPointF pixel) {
+    m_picking = false;
     if (m_regionTools->isHiding()) {
         m_regionTools->moveHide(pixel);
         m_regionTools->endHide();
@@ -686,7 +823,9 @@ void MainWindow::onPaintReleased(QPointF pixel) {
     if (!m_painting)
         return;
     core::PaintChanges changes;
-    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, 1.0f}, changes);
+    // A release carries no pressure: the end keeps the last sample's, so a pen stroke's tail
+    // does not swell.
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
     m_viewport->applyPaintChanges(changes);
     finishStroke();
 }
@@ -801,6 +940,73 @@ void MainWindow::updateBrushBar() {
     m_brushBar->setTarget(m_paintOptions, hasUvs);
 }
 
+void MainWindow::setBrush(const core::Brush& brush) {
+    m_document->brush() = brush; // the next stroke uses it
+    m_brushBar->setBrush(brush);
+    m_brushPanel->setBrush(brush);
+    const QColor color = BrushToolBar::toQColor(brush.color);
+    if (color != m_colorPanel->foreground())
+        m_colorPanel->setForeground(color);
+    m_viewport->setBrushRadius(brush.radius);
+    updateBrushInfo();
+}
+
+void MainWindow::updateBrushInfo() {
+    const core::Brush& brush = m_document->brush();
+    const QLocale locale;
+    m_brushInfo->setText(tr("Brush %1 px · %2 % hard")
+                             .arg(locale.toString(std::lround(brush.radius)),
+                                  locale.toString(std::lround(brush.hardness * 100.0f))));
+    m_brushInfo->setToolTip(tr("Brush radius and hardness ([ ] and Shift+[ ] change them)"));
+}
+
+void MainWindow::stepBrushRadius(int direction) {
+    core::Brush brush = m_document->brush();
+    // Steps of 15 %, at least a pixel, on whole pixels as the spin boxes show; a step up and
+    // one down come back to the same size.
+    constexpr float kFactor = 1.15f;
+    const float radius = std::round(brush.radius);
+    const float next = direction > 0 ? std::max(radius + 1.0f, std::round(radius * kFactor))
+                                     : std::min(radius - 1.0f, std::round(radius / kFactor));
+    brush.radius = std::clamp(next, kMinBrushRadius, kMaxBrushRadius);
+    setBrush(brush);
+}
+
+void MainWindow::stepBrushHardness(int direction) {
+    core::Brush brush = m_document->brush();
+    brush.hardness =
+        std::clamp(std::round(brush.hardness * 10.0f + float(direction)) / 10.0f, 0.0f, 1.0f);
+    setBrush(brush);
+}
+
+void MainWindow::setPressureCurve(const core::PressureCurve& curve) {
+    m_pressureCurve = curve;
+    m_brushPanel->setPressureCurve(curve);
+    if (m_preferences.pressureGamma != curve.gamma) {
+        m_preferences.pressureGamma = curve.gamma;
+        QSettings().setValue(Preferences::kPressureGammaKey, double(curve.gamma));
+    }
+}
+
+void MainWindow::setPreferences(const Preferences& preferences) {
+    preferences.save();
+    m_preferences = preferences;
+    m_document->history().setBudget(std::size_t(preferences.undoBudgetMiB) << 20);
+    syncUndoStack(); // the budget may have dropped steps
+    setPressureCurve(core::PressureCurve{preferences.pressureGamma});
+    m_viewport->setCameraMapping(preferences.cameraMapping);
+    // The texture size is the default for the next model; the open one keeps its painting.
+    // Language and autosave are read from the settings where they are used.
+}
+
+void MainWindow::showPreferences() {
+    auto* dialog = new PreferencesDialog(m_preferences, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog] { setPreferences(dialog->preferences()); });
+    dialog->open();
+}
+
 void MainWindow::createMenus() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
 
@@ -833,6 +1039,12 @@ void MainWindow::createMenus() {
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     editMenu->addAction(m_undoAction);
     editMenu->addAction(m_redoAction);
+    editMenu->addSeparator();
+    m_preferencesAction =
+        editMenu->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
+    m_preferencesAction->setObjectName(QStringLiteral("actionPreferences"));
+    m_preferencesAction->setShortcut(QKeySequence::Preferences);
+    m_preferencesAction->setMenuRole(QAction::PreferencesRole);
 
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* frameAction = viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
@@ -853,9 +1065,12 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock :
-         {m_segmentationDock, m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
+    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_segmentationDock, m_layersDock,
+                              m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
+    panelsMenu->addSeparator();
+    panelsMenu->addAction(m_brushBar->toggleViewAction());
+    panelsMenu->addAction(m_toolBar->toggleViewAction());
     viewMenu->addSeparator();
     viewMenu->addAction(m_regionTools->transparencyAction());
     viewMenu->addAction(m_regionTools->orbitAboutSurfaceAction());
@@ -868,6 +1083,9 @@ void MainWindow::createMenus() {
     paintMenu->addAction(m_regionTools->autoPopUpAction());
     paintMenu->addAction(m_regionTools->resetOrderAction());
     paintMenu->addAction(m_regionTools->unhideAllAction());
+    paintMenu->addSeparator();
+    paintMenu->addActions(m_brushStepActions);
+    paintMenu->addAction(m_swapColorsAction);
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =
@@ -945,6 +1163,9 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     m_source = source;
     updateModelInfo(*mesh);
     finishStroke();
+    // A new model starts with the preferred size for a new texture.
+    m_paintOptions.resolution = m_preferences.textureSize;
+    m_document->setPaintOptions(m_paintOptions);
     // This window is the loader's only listener: the mesh moves into the document.
     m_document->setMesh(std::move(*mesh), source.toStdString());
     m_viewport->meshChanged();

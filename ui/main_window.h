@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 
+#include <QList>
 #include <QMainWindow>
 #include <QPointF>
 #include <QPointer>
@@ -15,11 +16,13 @@
 #include "core/document.h"
 #include "core/mesh.h"
 #include "render/layer_compositor.h"
+#include "ui/preferences.h"
 #include "ui/recent_files.h"
 #include "ui/tool.h"
 
 class QAction;
 class QActionGroup;
+class QCheckBox;
 class QDockWidget;
 class QLabel;
 class QMenu;
@@ -29,23 +32,27 @@ class QUndoStack;
 
 namespace ui {
 
+class BrushPanel;
 class BrushToolBar;
+class ColorPanel;
 class FillPanel;
-class RegionTools;
 class LayerBuilder;
 class LayersPanel;
 class ModelLoader;
 class RegionGraphPanel;
+class RegionTools;
 class SegmentationControls;
 class Viewport;
 
 /**
  * The application window: owns the core::Document (model, camera, layers) and shows it in the
- * viewport and the Segmentation, Layers, Region Graph and Fill panels; the File/Edit/View/Help
- * menus, the brush bar, the status bar and the background loading of models. Painting: the
- * viewport's left button drives the document's strokes and fills, each a StrokeCommand on the undo
- * stack, which mirrors the document's (budgeted) undo history. The open model only changes when a
- * load succeeds.
+ * viewport and the Segmentation, Layers, Region Graph, Paint to Hide, Fill, Brush and Colour
+ * panels (all dockable, the layout kept in QSettings); the File/Edit/View/Paint/Help menus, the
+ * brush and tool bars, the status bar, the Preferences and the background loading of models.
+ * Painting: the viewport's left button (or pen) drives the document's strokes (with the pressure
+ * curve applied) and fills, each a StrokeCommand on the undo stack, which mirrors the document's
+ * (budgeted) undo history. The brush bar, the Brush and Colour panels and the document's brush
+ * are kept in step by setBrush(). The open model only changes when a load succeeds.
  */
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -77,7 +84,20 @@ public:
     SegmentationControls* segmentationControls() const { return m_segmentationControls; }
     BrushToolBar* brushToolBar() const { return m_brushBar; }
     FillPanel* fillPanel() const { return m_fillPanel; }
+    BrushPanel* brushPanel() const { return m_brushPanel; }
+    ColorPanel* colorPanel() const { return m_colorPanel; }
     QUndoStack* undoStack() const { return m_undoStack; }
+
+    /** The brush everywhere: the document's, the brush bar's and the panels'. */
+    void setBrush(const core::Brush& brush);
+    /** What pen pressure goes through before it reaches a stroke. */
+    const core::PressureCurve& pressureCurve() const { return m_pressureCurve; }
+    /** The preferences in use (Edit ▸ Preferences). */
+    const Preferences& preferences() const { return m_preferences; }
+    /** Saves preferences to the settings and applies them. */
+    void setPreferences(const Preferences& preferences);
+    /** Opens the Preferences dialog (window-modal, returns at once). */
+    void showPreferences();
 
     /** The tool of the left button (the Tools toolbar and menu). */
     Tool tool() const { return m_tool; }
@@ -129,7 +149,8 @@ protected:
 private:
     void createPanels();
     /** A dock (on the right by default) named for saveState(). */
-    QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content);
+    QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
+                          Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
     void createMenus();
     void createDisplayActions(QMenu* viewMenu);
     void createPaintActions();
@@ -139,6 +160,8 @@ private:
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
     /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
     void fillAt(QPointF pixel);
+    /** The eyedropper: the brush takes the surface colour under pixel. */
+    void pickColor(QPointF pixel);
     void onPaintMoved(QPointF pixel, qreal pressure);
     void onPaintReleased(QPointF pixel);
     /** Ends a stroke in progress and puts it on the undo stack. */
@@ -150,6 +173,12 @@ private:
     void syncUndoStack();
     void setPaintTarget(const core::PaintTargetOptions& options);
     void updateBrushBar();
+    void updateBrushInfo();
+    /** [ and ]: the radius a step (about 15 %) smaller or larger. */
+    void stepBrushRadius(int direction);
+    /** Shift+[ and Shift+]: the hardness 10 % down or up. */
+    void stepBrushHardness(int direction);
+    void setPressureCurve(const core::PressureCurve& curve);
     void setLayerOptions(const core::LayerOptions& options);
     void onLayersBuilt();
     void onSegmentationChanged();
@@ -184,6 +213,10 @@ private:
     render::LayerDisplay m_displayBeforeHide = render::LayerDisplay::Composite;
     FillPanel* m_fillPanel = nullptr;
     QDockWidget* m_fillDock = nullptr;
+    BrushPanel* m_brushPanel = nullptr;
+    ColorPanel* m_colorPanel = nullptr;
+    QDockWidget* m_brushDock = nullptr;
+    QDockWidget* m_colorDock = nullptr;
     QActionGroup* m_displayGroup = nullptr;
     QAction* m_shadedAction = nullptr;
     QAction* m_singleLayerAction = nullptr;
@@ -192,6 +225,7 @@ private:
     /** What "All layers" returns to: Composite or Segmentation. */
     render::LayerDisplay m_allLayersDisplay = render::LayerDisplay::Composite;
     QLabel* m_layerInfo = nullptr;
+    QLabel* m_brushInfo = nullptr;
 
     BrushToolBar* m_brushBar = nullptr;
     QToolBar* m_toolBar = nullptr;
@@ -199,6 +233,10 @@ private:
     std::array<QAction*, 6> m_toolActions{};
     Tool m_tool = Tool::Brush;
     QAction* m_layerAwareAction = nullptr;
+    QCheckBox* m_layerAwareCheck = nullptr;
+    QAction* m_swapColorsAction = nullptr;
+    QAction* m_preferencesAction = nullptr;
+    QList<QAction*> m_brushStepActions; // [ ] Shift+[ Shift+]
     QAction* m_brushMapsAction = nullptr;
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
@@ -206,10 +244,14 @@ private:
     /** The undo stack is being rebuilt: its commands must not touch the document. */
     bool m_undoSuspended = false;
     bool m_painting = false;
+    bool m_picking = false;      // the eyedropper is held down
+    float m_lastPressure = 1.0f; // of the stroke's last sample, for its end
     /** undoCount() + droppedCount() of the history at the press: the stroke added a step. */
     std::size_t m_historyMark = 0;
     StrokeStats m_strokeStats;
     core::PaintTargetOptions m_paintOptions;
+    core::PressureCurve m_pressureCurve;
+    Preferences m_preferences;
 
     RecentFiles m_recent;
     QMenu* m_recentMenu = nullptr;
