@@ -20,6 +20,7 @@
 #include <QSlider>
 #include <QStatusBar>
 #include <QTest>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QWheelEvent>
 
@@ -434,12 +435,19 @@ TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
     }
     auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
     ASSERT_NE(panels, nullptr);
-    // Every panel, and nothing else.
+    // Every panel and tool bar, and nothing else.
     const QList<QDockWidget*> docks = m_window->findChildren<QDockWidget*>();
-    EXPECT_EQ(panels->actions().size(), docks.size());
+    const QList<QToolBar*> bars = m_window->findChildren<QToolBar*>();
+    qsizetype entries = 0;
+    for (const QAction* action : panels->actions())
+        entries += action->isSeparator() ? 0 : 1;
+    EXPECT_EQ(entries, docks.size() + bars.size());
     for (QDockWidget* dock : docks)
         EXPECT_TRUE(panels->actions().contains(dock->toggleViewAction()))
             << dock->objectName().toStdString();
+    for (QToolBar* bar : bars)
+        EXPECT_TRUE(panels->actions().contains(bar->toggleViewAction()))
+            << bar->objectName().toStdString();
     for (const char* name :
          {"segmentationDock", "layersDock", "regionGraphDock", "hiddenRegionsDock", "fillDock"}) {
         auto* dock = m_window->findChild<QDockWidget*>(QString::fromLatin1(name));
