@@ -122,6 +122,8 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     curveRow->addWidget(m_gammaText);
     curveRow->addWidget(m_curveView);
     m_form->addRow(tr("Pressure c&urve"), curveRow);
+    if (auto* text = qobject_cast<QLabel*>(m_form->labelForField(curveRow)))
+        text->setBuddy(m_gamma);
     connect(m_gamma, &QSlider::valueChanged, this, [this](int value) {
         if (m_updating)
             return;

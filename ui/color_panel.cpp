@@ -317,7 +317,8 @@ void ColorPanel::showRecent() {
         QToolButton* button = m_recentButtons.at(i);
         const bool used = i < m_recent.size();
         button->setEnabled(used);
-        button->setIcon(used ? swatchIcon(m_recent.at(i), 18, frame) : QIcon());
+        // An empty slot shows as an outline, so the palette is seen before it fills.
+        button->setIcon(swatchIcon(used ? m_recent.at(i) : QColor(Qt::transparent), 18, frame));
         button->setToolTip(used ? hexName(m_recent.at(i)) : QString());
     }
 }

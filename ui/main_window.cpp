@@ -125,6 +125,7 @@ MainWindow::MainWindow(QWidget* parent)
     statusBar()->insertPermanentWidget(0, m_layerInfo);
     m_brushInfo = new QLabel(this);
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
+    m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
     statusBar()->insertPermanentWidget(1, m_brushInfo);
 
     createPanels();

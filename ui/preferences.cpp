@@ -121,7 +121,8 @@ PreferencesDialog::PreferencesDialog(const Preferences& preferences, QWidget* pa
 
     m_cameraMapping = new QComboBox(this);
     m_cameraMapping->setObjectName(QStringLiteral("cameraMapping"));
-    m_cameraMapping->addItem(tr("Both"), int(CameraMapping::Both));
+    m_cameraMapping->addItem(tr("Both: the middle button and Alt with any button"),
+                             int(CameraMapping::Both));
     m_cameraMapping->addItem(tr("Blender-like: middle drag orbits, Shift+middle pans"),
                              int(CameraMapping::Blender));
     m_cameraMapping->addItem(tr("Alt-based: Alt+left orbits, Alt+middle pans, Alt+right zooms"),

@@ -19,6 +19,7 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QSpinBox>
 #include <QTest>
 #include <QToolBar>
@@ -457,6 +458,42 @@ TEST_F(ArtistTest, PaintersKeysChangeTheBrushAndSwapColours) {
                     ->toolTip()
                     .contains(QStringLiteral("(L)")));
     EXPECT_TRUE(barRadius->toolTip().contains(QStringLiteral("[")));
+}
+
+TEST_F(ArtistTest, TheBrushPanelSetsEveryBrushSetting) {
+    ui::BrushPanel* panel = m_window->brushPanel();
+    const auto spin = [&](const char* name) {
+        return panel->findChild<QSpinBox*>(QString::fromLatin1(name));
+    };
+    spin("brushPanelOpacity")->setValue(70);
+    spin("brushPanelFlow")->setValue(40);
+    spin("brushPanelSpacing")->setValue(25);
+    spin("brushPanelTrackRadius")->setValue(150);
+    panel->findChild<QCheckBox*>(QStringLiteral("brushPanelPressureRadius"))->click();
+    panel->findChild<QCheckBox*>(QStringLiteral("brushPanelPressureOpacity"))->click();
+    const core::Brush& brush = document().brush();
+    EXPECT_FLOAT_EQ(brush.opacity, 0.7f);
+    EXPECT_FLOAT_EQ(brush.flow, 0.4f);
+    EXPECT_FLOAT_EQ(brush.spacing, 0.25f);
+    EXPECT_FLOAT_EQ(brush.trackRadius, 150.0f);
+    EXPECT_FALSE(brush.pressureRadius);
+    EXPECT_TRUE(brush.pressureOpacity);
+    // The brush bar shows the same brush.
+    EXPECT_EQ(
+        m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushOpacity"))->value(),
+        70);
+    EXPECT_FLOAT_EQ(m_window->brushToolBar()->brush().flow, 0.4f);
+    // R_max 0 is automatic: max(4R, 64).
+    spin("brushPanelTrackRadius")->setValue(0);
+    EXPECT_EQ(brush.trackRadius, 0.0f);
+    EXPECT_TRUE(spin("brushPanelTrackRadius")->text().contains(QStringLiteral("128")));
+    // The pressure curve slider: to the right, a firmer press is needed.
+    auto* curve = panel->findChild<QSlider*>(QStringLiteral("brushPanelPressureCurve"));
+    ASSERT_NE(curve, nullptr);
+    curve->setValue(curve->maximum());
+    EXPECT_FLOAT_EQ(m_window->pressureCurve().gamma, core::PressureCurve::kMaxGamma);
+    EXPECT_NEAR(QSettings().value(QStringLiteral("paint/pressureGamma")).toDouble(),
+                core::PressureCurve::kMaxGamma, 1e-6);
 }
 
 TEST_F(ArtistTest, TheLayerAwareCheckBoxFollowsTheKey) {
