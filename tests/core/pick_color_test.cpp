@@ -111,6 +111,18 @@ TEST_F(PickColorTest, PicksTheTextureColourOfTheVisibleSurface) {
     expectColor(m_doc.pickColor(pixelAt(40, 30)), quantized(kBack), 1e-6f, "behind hidden");
 }
 
+TEST_F(PickColorTest, PicksAPoppedUpSurface) {
+    build(twoQuads());
+    const std::size_t pixel = pixelAt(40, 30);
+    const core::LayerStack& stack = m_doc.layers()->stack;
+    ASSERT_EQ(stack.layerCount(pixel), 2u);
+    // Pop up the back quad's region where the front quad covers it: the pick follows.
+    const std::uint32_t back = stack.fragment(pixel, 2);
+    ASSERT_TRUE(m_doc.popUpRegion(m_doc.layers()->segmentation.region[back]));
+    ASSERT_EQ(m_doc.visibleFragment(pixel), back);
+    expectColor(m_doc.pickColor(pixel), quantized(kBack), 1e-6f, "popped up");
+}
+
 TEST_F(PickColorTest, PicksWhatWasJustPainted) {
     build(twoQuads());
     m_doc.brush().color = {0.9f, 0.7f, 0.02f, 1.0f};
