@@ -376,77 +376,77 @@ TEST(Cli, PaintFillModesFillWhatTheySayOnTheSavedModel) {
     EXPECT_NE(run.exitCode, 0);
     EXPECT_NE(run.err.find("operation 1: \"mode\" must be"), std::string::npos) << run.err;
     EXPECT_NE(run.err.find(bad.string()), std::string::npos) << run.err;
-    TEST(Cli, PickSetsTheBrushToTheSurfaceColourUnderThePoint) {
-        // Paint red at a, switch the brush to blue, pick at a, paint at b: b must come out red.
-        // Conventional painting: the stroke paints what is visible (a may be near a crossing).
-        auto trefoil = core::makeBuiltinModel("trefoil");
-        ASSERT_TRUE(trefoil);
-        const core::View view =
-            core::Camera::fromOrbit(trefoil->bounds(), 20.0f, 15.0f, 1.6f).view(320, 240);
-        const glm::vec3 a = view.project(core::trefoilCurve(0.3f));
-        const glm::vec3 b = view.project(core::trefoilCurve(3.5f));
-        const auto point = [](const glm::vec3& p, float dx) {
-            return json::array({p.x + dx, p.y});
-        };
-        const json script = {
-            {"size", "320x240"},
-            {"orbit", "20,15,1.6"},
-            {"target", {{"kind", "texture"}, {"resolution", 512}}},
-            {"operations",
-             {{{"op", "set-mode"}, {"layer_aware", false}},
-              {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 5}, {"hardness", 1.0}},
-              {{"op", "stroke"}, {"points", {point(a, -2.0f), point(a, 2.0f)}}},
-              {{"op", "set-brush"}, {"color", "#0000ff"}},
-              {{"op", "pick"}, {"at", point(a, 0.0f)}},
-              {{"op", "stroke"}, {"points", {point(b, -2.0f), point(b, 2.0f)}}}}}};
-        const fs::path dir = fs::temp_directory_path() / "layerpaint_cli_pick";
-        fs::create_directories(dir);
-        std::ofstream(dir / "script.json") << script.dump();
-        const CliRun run =
-            runCli({"paint", "builtin:trefoil", "--script", (dir / "script.json").string(), "--out",
-                    (dir / "result.glb").string()});
-        ASSERT_EQ(run.exitCode, 0) << run.err;
-        auto mesh = core::loadMesh((dir / "result.glb").string());
-        ASSERT_TRUE(mesh) << mesh.error();
-        ASSERT_FALSE(mesh->textures.empty());
-        int red = 0, blue = 0;
-        const std::vector<std::uint8_t>& rgba = mesh->textures[0].rgba;
-        for (std::size_t i = 0; i + 3 < rgba.size(); i += 4) {
-            red += rgba[i] > 200 && rgba[i + 1] < 60 && rgba[i + 2] < 60;
-            blue += rgba[i] < 60 && rgba[i + 1] < 60 && rgba[i + 2] > 200;
-        }
-        EXPECT_EQ(blue, 0);
-        // Two strokes' worth of red: the second one is not missing.
-        json first = script;
-        while (first["operations"].size() > 3) // up to the first stroke
-            first["operations"].erase(first["operations"].size() - 1);
-        std::ofstream(dir / "first.json") << first.dump();
-        const CliRun once =
-            runCli({"paint", "builtin:trefoil", "--script", (dir / "first.json").string(), "--out",
-                    (dir / "first.glb").string()});
-        ASSERT_EQ(once.exitCode, 0) << once.err;
-        auto firstMesh = core::loadMesh((dir / "first.glb").string());
-        ASSERT_TRUE(firstMesh) << firstMesh.error();
-        int firstRed = 0;
-        const std::vector<std::uint8_t>& firstRgba = firstMesh->textures[0].rgba;
-        for (std::size_t i = 0; i + 3 < firstRgba.size(); i += 4)
-            firstRed += firstRgba[i] > 200 && firstRgba[i + 1] < 60 && firstRgba[i + 2] < 60;
-        EXPECT_GT(firstRed, 0);
-        EXPECT_GT(red, firstRed + firstRed / 2) << red << " red texels, " << firstRed << " after a";
+}
 
-        // Background: a clear error naming the operation, and no output.
-        const json miss = {{"size", "320x240"},
-                           {"orbit", "20,15,1.6"},
-                           {"operations", {{{"op", "pick"}, {"at", {1, 1}}}}}};
-        std::ofstream(dir / "miss.json") << miss.dump();
-        fs::remove(dir / "miss.glb");
-        const CliRun failed =
-            runCli({"paint", "builtin:trefoil", "--script", (dir / "miss.json").string(), "--out",
-                    (dir / "miss.glb").string()});
-        EXPECT_NE(failed.exitCode, 0);
-        EXPECT_NE(failed.err.find("operation 1: nothing to pick at [1,1]"), std::string::npos)
-            << failed.err;
-        EXPECT_FALSE(fs::exists(dir / "miss.glb"));
+TEST(Cli, PickSetsTheBrushToTheSurfaceColourUnderThePoint) {
+    // Paint red at a, switch the brush to blue, pick at a, paint at b: b must come out red.
+    // Conventional painting: the stroke paints what is visible (a may be near a crossing).
+    auto trefoil = core::makeBuiltinModel("trefoil");
+    ASSERT_TRUE(trefoil);
+    const core::View view =
+        core::Camera::fromOrbit(trefoil->bounds(), 20.0f, 15.0f, 1.6f).view(320, 240);
+    const glm::vec3 a = view.project(core::trefoilCurve(0.3f));
+    const glm::vec3 b = view.project(core::trefoilCurve(3.5f));
+    const auto point = [](const glm::vec3& p, float dx) { return json::array({p.x + dx, p.y}); };
+    const json script = {
+        {"size", "320x240"},
+        {"orbit", "20,15,1.6"},
+        {"target", {{"kind", "texture"}, {"resolution", 512}}},
+        {"operations",
+         {{{"op", "set-mode"}, {"layer_aware", false}},
+          {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 5}, {"hardness", 1.0}},
+          {{"op", "stroke"}, {"points", {point(a, -2.0f), point(a, 2.0f)}}},
+          {{"op", "set-brush"}, {"color", "#0000ff"}},
+          {{"op", "pick"}, {"at", point(a, 0.0f)}},
+          {{"op", "stroke"}, {"points", {point(b, -2.0f), point(b, 2.0f)}}}}}};
+    const fs::path dir = fs::temp_directory_path() / "layerpaint_cli_pick";
+    fs::create_directories(dir);
+    std::ofstream(dir / "script.json") << script.dump();
+    const CliRun run =
+        runCli({"paint", "builtin:trefoil", "--script", (dir / "script.json").string(), "--out",
+                (dir / "result.glb").string()});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    auto mesh = core::loadMesh((dir / "result.glb").string());
+    ASSERT_TRUE(mesh) << mesh.error();
+    ASSERT_FALSE(mesh->textures.empty());
+    int red = 0, blue = 0;
+    const std::vector<std::uint8_t>& rgba = mesh->textures[0].rgba;
+    for (std::size_t i = 0; i + 3 < rgba.size(); i += 4) {
+        red += rgba[i] > 200 && rgba[i + 1] < 60 && rgba[i + 2] < 60;
+        blue += rgba[i] < 60 && rgba[i + 1] < 60 && rgba[i + 2] > 200;
     }
+    EXPECT_EQ(blue, 0);
+    // Two strokes' worth of red: the second one is not missing.
+    json first = script;
+    while (first["operations"].size() > 3) // up to the first stroke
+        first["operations"].erase(first["operations"].size() - 1);
+    std::ofstream(dir / "first.json") << first.dump();
+    const CliRun once =
+        runCli({"paint", "builtin:trefoil", "--script", (dir / "first.json").string(), "--out",
+                (dir / "first.glb").string()});
+    ASSERT_EQ(once.exitCode, 0) << once.err;
+    auto firstMesh = core::loadMesh((dir / "first.glb").string());
+    ASSERT_TRUE(firstMesh) << firstMesh.error();
+    int firstRed = 0;
+    const std::vector<std::uint8_t>& firstRgba = firstMesh->textures[0].rgba;
+    for (std::size_t i = 0; i + 3 < firstRgba.size(); i += 4)
+        firstRed += firstRgba[i] > 200 && firstRgba[i + 1] < 60 && firstRgba[i + 2] < 60;
+    EXPECT_GT(firstRed, 0);
+    EXPECT_GT(red, firstRed + firstRed / 2) << red << " red texels, " << firstRed << " after a";
+
+    // Background: a clear error naming the operation, and no output.
+    const json miss = {{"size", "320x240"},
+                       {"orbit", "20,15,1.6"},
+                       {"operations", {{{"op", "pick"}, {"at", {1, 1}}}}}};
+    std::ofstream(dir / "miss.json") << miss.dump();
+    fs::remove(dir / "miss.glb");
+    const CliRun failed =
+        runCli({"paint", "builtin:trefoil", "--script", (dir / "miss.json").string(), "--out",
+                (dir / "miss.glb").string()});
+    EXPECT_NE(failed.exitCode, 0);
+    EXPECT_NE(failed.err.find("operation 1: nothing to pick at [1,1]"), std::string::npos)
+        << failed.err;
+    EXPECT_FALSE(fs::exists(dir / "miss.glb"));
+}
 
 } // namespace
