@@ -25,6 +25,101 @@
     </message>
 </context>
 <context>
+    <name>ui::BrushPanel</name>
+    <message>
+        <source>&amp;Radius</source>
+        <translation>&amp;Radius</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Brush radius on screen ([ and ] change it)</source>
+        <translation>Pinselradius auf dem Bildschirm ([ und ] ändern ihn)</translation>
+    </message>
+    <message>
+        <source>&amp;Hardness</source>
+        <translation>&amp;Härte</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ and Shift+])</source>
+        <translation>0: weicher Verlauf von der Mitte, 100: harte Kante (Umschalt+[ und Umschalt+])</translation>
+    </message>
+    <message>
+        <source>O&amp;pacity</source>
+        <translation>&amp;Deckkraft</translation>
+    </message>
+    <message>
+        <source>The most one stroke covers</source>
+        <translation>Wie stark ein Strich höchstens deckt</translation>
+    </message>
+    <message>
+        <source>&amp;Flow</source>
+        <translation>&amp;Fluss</translation>
+    </message>
+    <message>
+        <source>How much one dab adds towards the opacity</source>
+        <translation>Wie viel ein einzelner Tupfer zur Deckkraft beiträgt</translation>
+    </message>
+    <message>
+        <source>&amp;Spacing</source>
+        <translation>&amp;Abstand</translation>
+    </message>
+    <message>
+        <source>Distance between dabs, in per cent of the radius</source>
+        <translation>Abstand zwischen den Tupfern, in Prozent des Radius</translation>
+    </message>
+    <message>
+        <source>R_max: how far a layer-aware stroke looks for the surface it follows from one dab to the next; 0 chooses it from the radius</source>
+        <translation>R_max: wie weit ein ebenenbewusster Strich von einem Tupfer zum nächsten nach der Fläche sucht, der er folgt; 0 leitet den Wert aus dem Radius ab</translation>
+    </message>
+    <message>
+        <source>&amp;Tracking (R_max)</source>
+        <translation>&amp;Verfolgung (R_max)</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze</source>
+        <translation>&amp;Größe</translation>
+    </message>
+    <message>
+        <source>Pen pressure scales the radius</source>
+        <translation>Der Stiftdruck skaliert den Radius</translation>
+    </message>
+    <message>
+        <source>Opa&amp;city</source>
+        <translation>Dec&amp;kkraft</translation>
+    </message>
+    <message>
+        <source>Pen pressure scales the opacity</source>
+        <translation>Der Stiftdruck skaliert die Deckkraft</translation>
+    </message>
+    <message>
+        <source>Pressure changes</source>
+        <translation>Druck ändert</translation>
+    </message>
+    <message>
+        <source>Pressure curve: left, a light touch gives much; right, it takes a firm press</source>
+        <translation>Druckkurve: links bewirkt schon leichtes Aufsetzen viel, rechts braucht es festen Druck</translation>
+    </message>
+    <message>
+        <source>Pressure c&amp;urve</source>
+        <translation>Druckk&amp;urve</translation>
+    </message>
+    <message>
+        <source>γ %1</source>
+        <translation>γ %1</translation>
+    </message>
+    <message>
+        <source>Automatic (%1 px)</source>
+        <translation>Automatisch (%1 px)</translation>
+    </message>
+</context>
+<context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush</source>
@@ -43,20 +138,12 @@
         <translation> px</translation>
     </message>
     <message>
-        <source>Brush radius on screen</source>
-        <translation>Pinselradius auf dem Bildschirm</translation>
-    </message>
-    <message>
         <source>&amp;Hardness</source>
         <translation>&amp;Härte</translation>
     </message>
     <message>
         <source> %</source>
         <translation> %</translation>
-    </message>
-    <message>
-        <source>0: soft falloff from the centre, 100: a hard edge</source>
-        <translation>0: weicher Abfall ab der Mitte, 100: harter Rand</translation>
     </message>
     <message>
         <source>O&amp;pacity</source>
@@ -85,6 +172,49 @@
     <message>
         <source>Brush Colour</source>
         <translation>Pinselfarbe</translation>
+    </message>
+    <message>
+        <source>Brush radius on screen ([ smaller, ] larger)</source>
+        <translation>Pinselradius auf dem Bildschirm ([ kleiner, ] größer)</translation>
+    </message>
+    <message>
+        <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
+        <translation>0: weicher Verlauf von der Mitte, 100: harte Kante (Umschalt+[ weicher, Umschalt+] härter)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ColorPanel</name>
+    <message>
+        <source>Foreground colour: the brush paints with it</source>
+        <translation>Vordergrundfarbe: mit ihr malt der Pinsel</translation>
+    </message>
+    <message>
+        <source>Foreground Colour</source>
+        <translation>Vordergrundfarbe</translation>
+    </message>
+    <message>
+        <source>Background colour (X swaps it with the foreground)</source>
+        <translation>Hintergrundfarbe (X tauscht sie mit der Vordergrundfarbe)</translation>
+    </message>
+    <message>
+        <source>Swap foreground and background colours (X)</source>
+        <translation>Vorder- und Hintergrundfarbe tauschen (X)</translation>
+    </message>
+    <message>
+        <source>&amp;Hex</source>
+        <translation>&amp;Hex</translation>
+    </message>
+    <message>
+        <source>The foreground colour as #rrggbb (sRGB)</source>
+        <translation>Die Vordergrundfarbe als #rrggbb (sRGB)</translation>
+    </message>
+    <message>
+        <source>Recent colours</source>
+        <translation>Zuletzt verwendete Farben</translation>
+    </message>
+    <message>
+        <source>Background Colour</source>
+        <translation>Hintergrundfarbe</translation>
     </message>
 </context>
 <context>
@@ -162,6 +292,13 @@
             <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
             <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::HsvPicker</name>
+    <message>
+        <source>Saturation and value (square) and hue (bar)</source>
+        <translation>Sättigung und Helligkeit (Quadrat) und Farbton (Leiste)</translation>
     </message>
 </context>
 <context>
@@ -597,6 +734,176 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Paint to Hide</source>
         <translation>Durch Malen ausblenden</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinsel</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <source>Layer-aware</source>
+        <translation>Ebenenbewusst</translation>
+    </message>
+    <message>
+        <source>S&amp;maller Brush</source>
+        <translation>&amp;Kleinerer Pinsel</translation>
+    </message>
+    <message>
+        <source>Make the brush smaller</source>
+        <translation>Den Pinsel verkleinern</translation>
+    </message>
+    <message>
+        <source>Make the brush larger</source>
+        <translation>Den Pinsel vergrößern</translation>
+    </message>
+    <message>
+        <source>Lower the brush hardness</source>
+        <translation>Die Pinselhärte verringern</translation>
+    </message>
+    <message>
+        <source>Har&amp;der Brush</source>
+        <translation>Härterer Pin&amp;sel</translation>
+    </message>
+    <message>
+        <source>Raise the brush hardness</source>
+        <translation>Die Pinselhärte erhöhen</translation>
+    </message>
+    <message>
+        <source>S&amp;wap Colours</source>
+        <translation>Farben &amp;vertauschen</translation>
+    </message>
+    <message>
+        <source>Swap the foreground and background colours (X)</source>
+        <translation>Vorder- und Hintergrundfarbe tauschen (X)</translation>
+    </message>
+    <message>
+        <source>Swap the foreground and background colours</source>
+        <translation>Vorder- und Hintergrundfarbe tauschen</translation>
+    </message>
+    <message>
+        <source>No surface here to pick a colour from</source>
+        <translation>Hier ist keine Fläche, deren Farbe aufgenommen werden kann</translation>
+    </message>
+    <message>
+        <source>Picked %1</source>
+        <translation>%1 aufgenommen</translation>
+    </message>
+    <message>
+        <source>Brush %1 px · %2 % hard</source>
+        <translation>Pinsel %1 px · %2 % hart</translation>
+    </message>
+    <message>
+        <source>Brush radius and hardness ([ ] and Shift+[ ] change them)</source>
+        <translation>Pinselradius und -härte ([ ] und Umschalt+[ ] ändern sie)</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>Lar&amp;ger Brush</source>
+        <translation>&amp;Größerer Pinsel</translation>
+    </message>
+    <message>
+        <source>Sof&amp;ter Brush</source>
+        <translation>&amp;Weicherer Pinsel</translation>
+    </message>
+</context>
+<context>
+    <name>ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <source>The most memory undo keeps; the oldest strokes are forgotten beyond it</source>
+        <translation>Wie viel Speicher das Rückgängigmachen höchstens belegt; darüber hinaus werden die ältesten Striche vergessen</translation>
+    </message>
+    <message>
+        <source>&amp;Undo memory:</source>
+        <translation>Speicher für &amp;Rückgängig:</translation>
+    </message>
+    <message>
+        <source>%1 × %1</source>
+        <translation>%1 × %1</translation>
+    </message>
+    <message>
+        <source>The size of a new texture for models without one to paint (used from the next model on)</source>
+        <translation>Die Größe einer neuen Textur für Modelle ohne bemalbare Textur (ab dem nächsten Modell)</translation>
+    </message>
+    <message>
+        <source>New &amp;texture size:</source>
+        <translation>Größe neuer &amp;Texturen:</translation>
+    </message>
+    <message>
+        <source>Pen pressure curve (pressure to the power of this): below 1 a light touch gives more, above 1 it takes a firm press</source>
+        <translation>Stiftdruckkurve (Druck hoch diesem Wert): unter 1 bewirkt leichtes Aufsetzen mehr, über 1 braucht es festen Druck</translation>
+    </message>
+    <message>
+        <source>&amp;Pressure curve:</source>
+        <translation>&amp;Druckkurve:</translation>
+    </message>
+    <message>
+        <source>Both: the middle button and Alt with any button</source>
+        <translation>Beide: mittlere Taste und Alt mit jeder Taste</translation>
+    </message>
+    <message>
+        <source>Blender-like: middle drag orbits, Shift+middle pans</source>
+        <translation>Wie Blender: Ziehen mit der mittleren Taste dreht, Umschalt+Mitte verschiebt</translation>
+    </message>
+    <message>
+        <source>Alt-based: Alt+left orbits, Alt+middle pans, Alt+right zooms</source>
+        <translation>Mit Alt: Alt+links dreht, Alt+Mitte verschiebt, Alt+rechts zoomt</translation>
+    </message>
+    <message>
+        <source>Which buttons move the camera; the wheel always zooms</source>
+        <translation>Welche Tasten die Kamera bewegen; das Mausrad zoomt immer</translation>
+    </message>
+    <message>
+        <source>&amp;Camera buttons:</source>
+        <translation>&amp;Kameratasten:</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>System</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>A new language applies after a restart.</source>
+        <translation>Eine neue Sprache gilt nach einem Neustart.</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> min</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>How often a recovery copy of the work is saved; 0 turns it off</source>
+        <translation>Wie oft eine Wiederherstellungskopie der Arbeit gespeichert wird; 0 schaltet es aus</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>&amp;Automatisch speichern alle:</translation>
+    </message>
+</context>
+<context>
+    <name>ui::PressureCurveView</name>
+    <message>
+        <source>Pen pressure (right) to stroke pressure (up)</source>
+        <translation>Stiftdruck (rechts) zu Strichdruck (oben)</translation>
     </message>
 </context>
 <context>

@@ -25,6 +25,101 @@
     </message>
 </context>
 <context>
+    <name>ui::BrushPanel</name>
+    <message>
+        <source>&amp;Radius</source>
+        <translation>半径(&amp;R)</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> 像素</translation>
+    </message>
+    <message>
+        <source>Brush radius on screen ([ and ] change it)</source>
+        <translation>画笔在屏幕上的半径（[ 和 ] 可调整）</translation>
+    </message>
+    <message>
+        <source>&amp;Hardness</source>
+        <translation>硬度(&amp;H)</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ and Shift+])</source>
+        <translation>0：从中心柔和衰减，100：硬边（Shift+[ 和 Shift+]）</translation>
+    </message>
+    <message>
+        <source>O&amp;pacity</source>
+        <translation>不透明度(&amp;P)</translation>
+    </message>
+    <message>
+        <source>The most one stroke covers</source>
+        <translation>一笔最多能达到的覆盖程度</translation>
+    </message>
+    <message>
+        <source>&amp;Flow</source>
+        <translation>流量(&amp;F)</translation>
+    </message>
+    <message>
+        <source>How much one dab adds towards the opacity</source>
+        <translation>每个笔触点向不透明度增加的量</translation>
+    </message>
+    <message>
+        <source>&amp;Spacing</source>
+        <translation>间距(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Distance between dabs, in per cent of the radius</source>
+        <translation>笔触点之间的距离，以半径的百分比表示</translation>
+    </message>
+    <message>
+        <source>R_max: how far a layer-aware stroke looks for the surface it follows from one dab to the next; 0 chooses it from the radius</source>
+        <translation>R_max：图层感知笔画从一个笔触点到下一个笔触点时查找所跟随表面的范围；0 表示根据半径自动选择</translation>
+    </message>
+    <message>
+        <source>&amp;Tracking (R_max)</source>
+        <translation>跟踪范围 (R_max)(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Si&amp;ze</source>
+        <translation>大小(&amp;Z)</translation>
+    </message>
+    <message>
+        <source>Pen pressure scales the radius</source>
+        <translation>笔压缩放半径</translation>
+    </message>
+    <message>
+        <source>Opa&amp;city</source>
+        <translation>不透明度(&amp;C)</translation>
+    </message>
+    <message>
+        <source>Pen pressure scales the opacity</source>
+        <translation>笔压缩放不透明度</translation>
+    </message>
+    <message>
+        <source>Pressure changes</source>
+        <translation>压力影响</translation>
+    </message>
+    <message>
+        <source>Pressure curve: left, a light touch gives much; right, it takes a firm press</source>
+        <translation>压力曲线：向左轻触即可产生较大效果；向右需要用力按压</translation>
+    </message>
+    <message>
+        <source>Pressure c&amp;urve</source>
+        <translation>压力曲线(&amp;U)</translation>
+    </message>
+    <message>
+        <source>γ %1</source>
+        <translation>γ %1</translation>
+    </message>
+    <message>
+        <source>Automatic (%1 px)</source>
+        <translation>自动（%1 像素）</translation>
+    </message>
+</context>
+<context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush</source>
@@ -43,20 +138,12 @@
         <translation> 像素</translation>
     </message>
     <message>
-        <source>Brush radius on screen</source>
-        <translation>画笔在屏幕上的半径</translation>
-    </message>
-    <message>
         <source>&amp;Hardness</source>
         <translation>硬度(&amp;H)</translation>
     </message>
     <message>
         <source> %</source>
         <translation>%</translation>
-    </message>
-    <message>
-        <source>0: soft falloff from the centre, 100: a hard edge</source>
-        <translation>0：从中心柔和衰减，100：硬边</translation>
     </message>
     <message>
         <source>O&amp;pacity</source>
@@ -85,6 +172,49 @@
     <message>
         <source>Brush Colour</source>
         <translation>画笔颜色</translation>
+    </message>
+    <message>
+        <source>Brush radius on screen ([ smaller, ] larger)</source>
+        <translation>画笔在屏幕上的半径（[ 缩小，] 放大）</translation>
+    </message>
+    <message>
+        <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
+        <translation>0：从中心柔和衰减，100：硬边（Shift+[ 更软，Shift+] 更硬）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ColorPanel</name>
+    <message>
+        <source>Foreground colour: the brush paints with it</source>
+        <translation>前景色：画笔使用此颜色绘画</translation>
+    </message>
+    <message>
+        <source>Foreground Colour</source>
+        <translation>前景色</translation>
+    </message>
+    <message>
+        <source>Background colour (X swaps it with the foreground)</source>
+        <translation>背景色（按 X 与前景色互换）</translation>
+    </message>
+    <message>
+        <source>Swap foreground and background colours (X)</source>
+        <translation>互换前景色和背景色 (X)</translation>
+    </message>
+    <message>
+        <source>&amp;Hex</source>
+        <translation>十六进制(&amp;H)</translation>
+    </message>
+    <message>
+        <source>The foreground colour as #rrggbb (sRGB)</source>
+        <translation>以 #rrggbb (sRGB) 表示的前景色</translation>
+    </message>
+    <message>
+        <source>Recent colours</source>
+        <translation>最近使用的颜色</translation>
+    </message>
+    <message>
+        <source>Background Colour</source>
+        <translation>背景色</translation>
     </message>
 </context>
 <context>
@@ -161,6 +291,13 @@
         <translation>
             <numerusform>区域 %1 · 图层 %2 · %n 个像素</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::HsvPicker</name>
+    <message>
+        <source>Saturation and value (square) and hue (bar)</source>
+        <translation>饱和度和明度（方块）以及色相（色条）</translation>
     </message>
 </context>
 <context>
@@ -595,6 +732,176 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Paint to Hide</source>
         <translation>涂抹隐藏</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>画笔</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>颜色</translation>
+    </message>
+    <message>
+        <source>Layer-aware</source>
+        <translation>图层感知</translation>
+    </message>
+    <message>
+        <source>S&amp;maller Brush</source>
+        <translation>缩小画笔(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Make the brush smaller</source>
+        <translation>缩小画笔</translation>
+    </message>
+    <message>
+        <source>Make the brush larger</source>
+        <translation>放大画笔</translation>
+    </message>
+    <message>
+        <source>Lower the brush hardness</source>
+        <translation>降低画笔硬度</translation>
+    </message>
+    <message>
+        <source>Har&amp;der Brush</source>
+        <translation>更硬的画笔(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Raise the brush hardness</source>
+        <translation>提高画笔硬度</translation>
+    </message>
+    <message>
+        <source>S&amp;wap Colours</source>
+        <translation>互换颜色(&amp;W)</translation>
+    </message>
+    <message>
+        <source>Swap the foreground and background colours (X)</source>
+        <translation>互换前景色和背景色 (X)</translation>
+    </message>
+    <message>
+        <source>Swap the foreground and background colours</source>
+        <translation>互换前景色和背景色</translation>
+    </message>
+    <message>
+        <source>No surface here to pick a colour from</source>
+        <translation>此处没有可拾取颜色的表面</translation>
+    </message>
+    <message>
+        <source>Picked %1</source>
+        <translation>已拾取 %1</translation>
+    </message>
+    <message>
+        <source>Brush %1 px · %2 % hard</source>
+        <translation>画笔 %1 像素 · 硬度 %2 %</translation>
+    </message>
+    <message>
+        <source>Brush radius and hardness ([ ] and Shift+[ ] change them)</source>
+        <translation>画笔半径和硬度（[ ] 和 Shift+[ ] 可调整）</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>首选项(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Lar&amp;ger Brush</source>
+        <translation>放大画笔(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Sof&amp;ter Brush</source>
+        <translation>更软的画笔(&amp;T)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::PreferencesDialog</name>
+    <message>
+        <source>Preferences</source>
+        <translation>首选项</translation>
+    </message>
+    <message>
+        <source> MiB</source>
+        <translation> MiB</translation>
+    </message>
+    <message>
+        <source>The most memory undo keeps; the oldest strokes are forgotten beyond it</source>
+        <translation>撤销最多占用的内存；超出时最早的笔画将被舍弃</translation>
+    </message>
+    <message>
+        <source>&amp;Undo memory:</source>
+        <translation>撤销内存(&amp;U)：</translation>
+    </message>
+    <message>
+        <source>%1 × %1</source>
+        <translation>%1 × %1</translation>
+    </message>
+    <message>
+        <source>The size of a new texture for models without one to paint (used from the next model on)</source>
+        <translation>没有可绘制纹理的模型所使用的新纹理大小（从下一个模型开始生效）</translation>
+    </message>
+    <message>
+        <source>New &amp;texture size:</source>
+        <translation>新纹理大小(&amp;T)：</translation>
+    </message>
+    <message>
+        <source>Pen pressure curve (pressure to the power of this): below 1 a light touch gives more, above 1 it takes a firm press</source>
+        <translation>笔压曲线（压力的该值次幂）：小于 1 时轻触效果更强，大于 1 时需要用力按压</translation>
+    </message>
+    <message>
+        <source>&amp;Pressure curve:</source>
+        <translation>压力曲线(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>Both: the middle button and Alt with any button</source>
+        <translation>两者：中键以及 Alt 加任意键</translation>
+    </message>
+    <message>
+        <source>Blender-like: middle drag orbits, Shift+middle pans</source>
+        <translation>类似 Blender：中键拖动旋转，Shift+中键平移</translation>
+    </message>
+    <message>
+        <source>Alt-based: Alt+left orbits, Alt+middle pans, Alt+right zooms</source>
+        <translation>基于 Alt：Alt+左键旋转，Alt+中键平移，Alt+右键缩放</translation>
+    </message>
+    <message>
+        <source>Which buttons move the camera; the wheel always zooms</source>
+        <translation>哪些按键移动相机；滚轮始终用于缩放</translation>
+    </message>
+    <message>
+        <source>&amp;Camera buttons:</source>
+        <translation>相机按键(&amp;C)：</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>系统</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>语言(&amp;L)：</translation>
+    </message>
+    <message>
+        <source>A new language applies after a restart.</source>
+        <translation>新的语言将在重新启动后生效。</translation>
+    </message>
+    <message>
+        <source> min</source>
+        <translation> 分钟</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>How often a recovery copy of the work is saved; 0 turns it off</source>
+        <translation>保存工作恢复副本的频率；0 表示关闭</translation>
+    </message>
+    <message>
+        <source>&amp;Autosave every:</source>
+        <translation>自动保存间隔(&amp;A)：</translation>
+    </message>
+</context>
+<context>
+    <name>ui::PressureCurveView</name>
+    <message>
+        <source>Pen pressure (right) to stroke pressure (up)</source>
+        <translation>笔压（向右）到笔画压力（向上）</translation>
     </message>
 </context>
 <context>
