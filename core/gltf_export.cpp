@@ -596,6 +596,8 @@ Result<Json> readExtras(const std::string& path) {
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec)
         return Error{"cannot be read (" + ec.message() + ")"};
+    if (size == 0)
+        return Error{"is empty"};
     std::ifstream in(path, std::ios::binary);
     if (!in)
         return Error{"cannot be read"};
@@ -631,9 +633,15 @@ Result<Json> readExtras(const std::string& path) {
         return Error{"cannot be read"};
     if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
-    Json root = Json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{"is not valid glTF JSON"};
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::exception& e) {
+        std::string what = e.what();
+        if (const std::size_t p = what.find("] "); p != std::string::npos)
+            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
+        return Error{"is not valid glTF JSON (" + what + ")"};
+    }
     if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
         return Error{"is not a glTF file (no asset)"};
     const Json& asset = root["asset"];
