@@ -10,6 +10,8 @@
 #include <bit>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -471,6 +473,40 @@ int createTemporary(const fs::path& target, const char* suffix, int mode, std::s
     });
 }
 
+/**
+ * Removes the temporary files that saves of target (or of its backup) by processes that no
+ * longer run left behind: a save killed mid-write leaves its hidden ".NAME.PID-N.tmp". Files of
+ * running processes, and anything that does not parse as such a name, are left alone.
+ */
+void removeStaleTemporaries(const fs::path& target) {
+    std::error_code ec;
+    for (const std::string& base : {target.filename().string().substr(0, 160),
+                                    (target.filename().string() + ".bak").substr(0, 160)}) {
+        const std::string prefix = "." + base + ".";
+        for (fs::directory_iterator it(target.parent_path(), ec), end; !ec && it != end;
+             it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.size() <= prefix.size() + 4 || name.rfind(prefix, 0) != 0 ||
+                !name.ends_with(".tmp"))
+                continue;
+            const std::string middle =
+                name.substr(prefix.size(), name.size() - prefix.size() - 4); // "PID-N"
+            const std::size_t dash = middle.find('-');
+            if (dash == std::string::npos || dash == 0 || dash + 1 == middle.size() ||
+                !std::all_of(middle.begin(), middle.end(),
+                             [](char c) { return c == '-' || (c >= '0' && c <= '9'); }))
+                continue;
+            const long pid = std::strtol(middle.substr(0, dash).c_str(), nullptr, 10);
+            if (pid <= 0 || pid == ::getpid())
+                continue;
+            // Running (its save may be under way), or not ours to tell (EPERM): keep.
+            if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+                continue;
+            ::unlink(it->path().c_str());
+        }
+    }
+}
+
 /** fsync's a folder so a rename in it survives a crash; failures are not fatal. */
 void syncFolder(const fs::path& folder) {
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -583,6 +619,7 @@ Status writeAtomically(const std::string& path,
         return fail("the file cannot be replaced (" + errnoText(errno) + ")");
     cleanup.release();
     syncFolder(target.parent_path());
+    removeStaleTemporaries(target);
     return {};
 }
 
