@@ -371,12 +371,15 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
     return s;
 }
 
-ProjectState captureProjectState(const Document& doc) {
-    ProjectState s;
-    s.source = doc.name();
+ProjectState captureProjectState(const Document& doc, ProjectState base) {
+    ProjectState s = std::move(base);
+    s.formatVersion = kProjectFormatVersion;
+    s.recoveryFor.clear(); // autosaves set it after
+    if (s.source.empty())
+        s.source = doc.name();
     s.camera = doc.camera();
     s.brush = doc.brush();
-    s.foreground = doc.brush().color;
+    s.foreground = doc.brush().color; // the colour panel, where there is one, sets its own
     s.layers = doc.layerOptions();
     s.target = doc.paintTargetOptions();
     // The target in use is what the file holds: an automatic choice is saved as what it chose.

@@ -76,8 +76,12 @@ Result<ProjectState> projectStateFromJson(const nlohmann::json& layerpaint,
  */
 nlohmann::json upgradeProjectJson(nlohmann::json layerpaint, int from);
 
-/** The document's share of a project's state: camera, brush, layers, paint target, mode. */
-ProjectState captureProjectState(const Document& doc);
+/**
+ * base with the document's share of a project's state filled in: camera, brush, layer options,
+ * paint target, layer-aware mode, and the source (the document's name) if base has none. What the
+ * document does not hold (colours, palette, pop-up settings) stays as in base.
+ */
+ProjectState captureProjectState(const Document& doc, ProjectState base = {});
 
 /**
  * Applies state to a document that holds the project's mesh: layer options, brush, mode, camera
