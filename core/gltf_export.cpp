@@ -709,13 +709,13 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
 }
 
 Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras,
-               const ProgressFn& progress) {
+               const ProgressFn& progress, bool keepBackup) {
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
             return Status(Error{path + ": " + parts.error()});
         const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
-        Status status = writeAtomically(path, spans, true);
+        Status status = writeAtomically(path, spans, keepBackup);
         if (status)
             reportProgress(progress, 1.0); // too late to cancel: the file is saved
         return status;

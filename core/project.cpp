@@ -431,14 +431,14 @@ Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
-                   const ProgressFn& progress) {
+                   const ProgressFn& progress, bool keepBackup) {
     Json extras;
     try {
         extras = {{kKey, projectStateToJson(state)}};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be saved (" + std::string(e.what()) + ")"};
     }
-    return saveGlb(path, paintedMesh, extras, progress);
+    return saveGlb(path, paintedMesh, extras, progress, keepBackup);
 }
 
 Status saveProject(const std::string& path, const Document& doc, const ProjectState& state,
