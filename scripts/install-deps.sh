@@ -13,7 +13,9 @@ packages=(
     libegl1 libgl1-mesa-dri qt6-qpa-plugins libqt6svg6 qt6-translations-l10n
 )
 if [[ "${1:-}" == "--test" ]]; then
-    packages+=(xvfb xauth assimp-testmodels clang-format appstream desktop-file-utils)
+    # clang and its runtime (libFuzzer, sanitizers) for the fuzz targets (scripts/fuzz.sh).
+    packages+=(xvfb xauth assimp-testmodels clang-format appstream desktop-file-utils
+        clang libclang-rt-14-dev)
 fi
 
 missing=()
