@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <filesystem>
 #include <limits>
@@ -26,8 +28,22 @@ constexpr const char* kKey = "layerpaint";
 constexpr float kMinThreshold = 1e-6f; // the GUI's slider spans 1e-5..1e-1; files may say more
 constexpr float kMaxThreshold = 1.0f;
 
+/**
+ * f as the double with the shortest decimal form that reads back as f, so the file says 0.8, not
+ * 0.800000011920929 (the JSON library prints doubles with 17 digits).
+ */
+double num(float f) {
+    char text[32];
+    const auto written = std::to_chars(text, text + sizeof text, f);
+    double d = static_cast<double>(f);
+    // from_chars, not strtod: the GUI runs in the user's locale (decimal commas).
+    if (written.ec == std::errc())
+        std::from_chars(text, written.ptr, d);
+    return d;
+}
+
 Json vec4Json(const glm::vec4& v) {
-    return Json::array({v.r, v.g, v.b, v.a});
+    return Json::array({num(v.r), num(v.g), num(v.b), num(v.a)});
 }
 
 const char* testName(ConnectionTest test) {
@@ -233,31 +249,31 @@ Json projectStateToJson(const ProjectState& s) {
         j["source"] = s.source;
     if (s.camera) {
         const Camera& c = *s.camera;
-        j["camera"] = {{"target", Json::array({c.target.x, c.target.y, c.target.z})},
-                       {"yaw", c.yawDegrees},
-                       {"pitch", c.pitchDegrees},
-                       {"distance", c.distance},
-                       {"fov_y", c.fovYDegrees},
+        j["camera"] = {{"target", Json::array({num(c.target.x), num(c.target.y), num(c.target.z)})},
+                       {"yaw", num(c.yawDegrees)},
+                       {"pitch", num(c.pitchDegrees)},
+                       {"distance", num(c.distance)},
+                       {"fov_y", num(c.fovYDegrees)},
                        {"orthographic", c.orthographic}};
     }
     const Brush& b = s.brush;
     j["brush"] = {{"color", vec4Json(b.color)},
-                  {"radius", b.radius},
-                  {"hardness", b.hardness},
-                  {"opacity", b.opacity},
-                  {"flow", b.flow},
-                  {"spacing", b.spacing},
+                  {"radius", num(b.radius)},
+                  {"hardness", num(b.hardness)},
+                  {"opacity", num(b.opacity)},
+                  {"flow", num(b.flow)},
+                  {"spacing", num(b.spacing)},
                   {"eraser", b.eraser},
                   {"pressure_radius", b.pressureRadius},
                   {"pressure_opacity", b.pressureOpacity},
-                  {"track_radius", b.trackRadius}};
+                  {"track_radius", num(b.trackRadius)}};
     Json palette = Json::array();
     for (std::size_t i = 0; i < s.palette.size() && i < ProjectState::kMaxPaletteColors; ++i)
         palette.push_back(vec4Json(s.palette[i]));
     j["colors"] = {{"foreground", vec4Json(s.foreground)},
                    {"background", vec4Json(s.background)},
                    {"palette", std::move(palette)}};
-    j["segmentation"] = {{"threshold", s.layers.threshold},
+    j["segmentation"] = {{"threshold", num(s.layers.threshold)},
                          {"test", testName(s.layers.test)},
                          {"two_sided", !s.layers.cullBackFaces}};
     j["paint_target"] = {{"kind", !s.target.kind ? "auto"
