@@ -402,6 +402,7 @@ ProjectState captureProjectState(const Document& doc, ProjectState base) {
     if (doc.hasPaintTarget())
         s.target.kind = doc.paintTargetKind();
     s.layerAware = doc.layerAware();
+    s.autoPopUp = doc.autoPopUp();
     return s;
 }
 
@@ -413,6 +414,7 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
     doc.setLayerOptions(layers);
     doc.brush() = state.brush;
     doc.setLayerAware(state.layerAware);
+    doc.setAutoPopUp(state.autoPopUp);
     if (state.camera) {
         Camera& c = doc.camera(); // framed by setMesh: keeps the scene's extent for clipping
         c.target = state.camera->target;

@@ -50,7 +50,7 @@ struct ProjectState {
     /** Paint target kind (empty: automatic) and the resolution of a new texture. */
     PaintTargetOptions target;
     bool layerAware = true;
-    bool autoPopUp = false;
+    bool autoPopUp = true;
     bool popUpTransparency = false;
     /** Autosaves only: the project file the recovered work belongs to (empty: never saved). */
     std::string recoveryFor;
@@ -78,13 +78,15 @@ nlohmann::json upgradeProjectJson(nlohmann::json layerpaint, int from);
 
 /**
  * base with the document's share of a project's state filled in: camera, brush, layer options,
- * paint target, layer-aware mode, and the source (the document's name) if base has none. What the
- * document does not hold (colours, palette, pop-up settings) stays as in base.
+ * paint target, layer-aware mode, automatic pop-up, and the source (the document's name) if base
+ * has none. What the document does not hold (colours, palette, see-through pop-ups) stays as in
+ * base.
  */
 ProjectState captureProjectState(const Document& doc, ProjectState base = {});
 
 /**
- * Applies state to a document that holds the project's mesh: layer options, brush, mode, camera
+ * Applies state to a document that holds the project's mesh: layer options, brush, mode,
+ * automatic pop-up, camera
  * (kept framed when the state has none) and the paint target. If the target cannot be made as
  * asked (e.g. a texture on a mesh without UVs), the automatic one is made and the returned
  * Status says why; the rest is applied either way.

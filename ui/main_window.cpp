@@ -125,6 +125,9 @@ MainWindow::MainWindow(QWidget* parent)
         m_recent.add(path);
         updateRecentMenu();
     });
+    // Project settings that live in other widgets.
+    for (QAction* action : {m_regionTools->autoPopUpAction(), m_regionTools->transparencyAction()})
+        connect(action, &QAction::toggled, m_project, &ProjectController::markModified);
     createToolActions();
     createMenus();
 
@@ -1009,7 +1012,8 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
 core::ProjectState MainWindow::projectState() const {
     core::ProjectState state = core::captureProjectState(*m_document, m_projectBase);
     // Panels with state of their own add it here (colour panel: foreground, background,
-    // palette; pop-up: automatic pop-up and transparency), and read it in applyProjectState().
+    // palette), and read it in applyProjectState().
+    state.popUpTransparency = m_viewport->popUpTransparency();
     return state;
 }
 
@@ -1031,6 +1035,9 @@ void MainWindow::applyProjectState(const core::ProjectState& state) {
         const QSignalBlocker blocker(m_orthographicAction);
         m_orthographicAction->setChecked(m_document->camera().orthographic);
     }
+    // The pop-up toggles are remembered settings too: the project's become the current ones.
+    m_regionTools->autoPopUpAction()->setChecked(state.autoPopUp);
+    m_regionTools->transparencyAction()->setChecked(state.popUpTransparency);
     updateBrushBar();
 }
 

@@ -354,7 +354,7 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
             .toString();
     const QString suffix = QString::fromLatin1(core::exportExtension(format));
     const QString suggestion = QDir(folder).filePath(
-        (core::isTextureFormat(format) ? stem + tr("-paint") : stem) + suffix);
+        (core::isTextureFormat(format) ? stem + QStringLiteral("-paint") : stem) + suffix);
     QString path = QFileDialog::getSaveFileName(
         &m_window, tr("Export"), suggestion, filter + QStringLiteral(";;") + tr("All files (*)"));
     if (path.isEmpty())

@@ -119,7 +119,7 @@ core::ProjectState unusualState() {
     s.target.kind = core::PaintTargetKind::VertexColors;
     s.target.resolution = 1024;
     s.layerAware = false;
-    s.autoPopUp = true;
+    s.autoPopUp = false;
     s.popUpTransparency = true;
     s.recoveryFor = "/home/artist/cup.glb";
     return s;
@@ -360,7 +360,8 @@ TEST(Project, TextureSaveLoadKeepsPaintCameraAndSettings) {
     EXPECT_EQ(state.source, "builtin:trefoil");
     ASSERT_EQ(state.target.kind, core::PaintTargetKind::Texture);
     state.palette = {{0.1f, 0.7f, 0.2f, 1.0f}, {0.8f, 0.1f, 0.1f, 1.0f}};
-    state.autoPopUp = true;
+    state.autoPopUp = false;
+    state.popUpTransparency = true;
     const std::vector<std::vector<std::uint8_t>> painted = pages(doc);
     ASSERT_EQ(painted.size(), 1u);
     const std::string path = dir.file("knot.glb");
@@ -376,6 +377,7 @@ TEST(Project, TextureSaveLoadKeepsPaintCameraAndSettings) {
     EXPECT_EQ(reopened.brush().radius, 21.0f);
     EXPECT_EQ(reopened.brush().hardness, 0.9f);
     EXPECT_FALSE(reopened.layerAware());
+    EXPECT_FALSE(reopened.autoPopUp());
     EXPECT_EQ(reopened.layerOptions().threshold, 0.004f);
     EXPECT_EQ(reopened.layerOptions().test, core::ConnectionTest::Plain);
     // The same geometry, triangle for triangle.
