@@ -49,32 +49,43 @@ int fail(const std::string& message) {
     return 1;
 }
 
-core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh) {
+core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh,
+                                  const core::Camera* fallback) {
     int width = 0, height = 0;
     char x = 0, extra = 0;
     if (std::sscanf(args.size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
         (x != 'x' && x != 'X') || width <= 0 || height <= 0 || width > 16384 || height > 16384)
         return core::Error{"--size " + args.size + ": expected WIDTHxHEIGHT, each 1 to 16384"};
-    if (!args.cameraFile.empty()) {
-        std::ifstream in(args.cameraFile);
-        if (!in)
-            return core::Error{args.cameraFile + ": cannot be opened"};
-        const json value = json::parse(in, nullptr, false);
-        if (value.is_discarded() || !value.is_object())
-            return core::Error{args.cameraFile + ": not a JSON object"};
-        auto view = readMatrix(value, args.cameraFile, "view");
-        auto proj = readMatrix(value, args.cameraFile, "proj");
-        if (!view)
-            return core::Error{view.error()};
-        if (!proj)
-            return core::Error{proj.error()};
-        core::View v;
-        v.view = *view;
-        v.proj = *proj;
-        v.width = width;
-        v.height = height;
-        return v;
+    if (args.cameraFile.empty()) {
+        auto camera = makeCamera(args, mesh, fallback);
+        if (!camera)
+            return core::Error{camera.error()};
+        return camera->view(width, height);
     }
+    std::ifstream in(args.cameraFile);
+    if (!in)
+        return core::Error{args.cameraFile + ": cannot be opened"};
+    const json value = json::parse(in, nullptr, false);
+    if (value.is_discarded() || !value.is_object())
+        return core::Error{args.cameraFile + ": not a JSON object"};
+    auto view = readMatrix(value, args.cameraFile, "view");
+    auto proj = readMatrix(value, args.cameraFile, "proj");
+    if (!view)
+        return core::Error{view.error()};
+    if (!proj)
+        return core::Error{proj.error()};
+    core::View v;
+    v.view = *view;
+    v.proj = *proj;
+    v.width = width;
+    v.height = height;
+    return v;
+}
+
+core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& mesh,
+                                      const core::Camera* fallback) {
+    if (args.orbit.empty() && fallback)
+        return *fallback;
     core::Camera camera;
     camera.frame(mesh.bounds());
     camera.orbit(30.0f, 20.0f);
@@ -89,7 +100,7 @@ core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh
                                ": expected yaw,pitch,distance (degrees, unit-cube units > 0)"};
         camera = core::Camera::fromOrbit(mesh.bounds(), yaw, pitch, distance);
     }
-    return camera.view(width, height);
+    return camera;
 }
 
 namespace {

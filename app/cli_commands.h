@@ -45,6 +45,14 @@ struct PaintArgs {
     bool cpuCapture = false;
 };
 
+struct ExportArgs {
+    std::string input; // a model, a project or builtin:NAME
+    std::string out;
+    std::string format; // empty: from the extension of out
+    std::string target; // "", "texture" or "vertex-colors": paint target of a plain model
+    int resolution = 0; // > 0: size of a new paint texture
+};
+
 struct BenchArgs {
     std::vector<std::string> models; // empty: builtin:trefoil
     std::vector<std::string> sizes = {"1280x720"};
@@ -56,8 +64,15 @@ struct BenchArgs {
 
 /** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
 int fail(const std::string& message);
-/** The view of --orbit / --camera / --size for mesh (framed, turned 30° and raised 20°). */
-core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh);
+/**
+ * The view of --orbit / --camera / --size for mesh; without either, fallback if given, else the
+ * mesh framed, turned 30° and raised 20°.
+ */
+core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh,
+                                  const core::Camera* fallback = nullptr);
+/** The orbit camera makeView() uses when there is no --camera file. */
+core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& mesh,
+                                      const core::Camera* fallback = nullptr);
 
 /**
  * A `paint` script (README): an array of operations or an object with "operations" and the
@@ -83,6 +98,8 @@ int runInfo(const std::string& model);
 int runLayers(const LayersArgs& args);
 /** `paint MODEL --script S.json --out RESULT.glb`: replays and saves; the exit code. */
 int runPaint(const PaintArgs& args);
+/** `export INPUT --out FILE`: writes a model or paint texture format; the exit code. */
+int runExport(const ExportArgs& args);
 /** `bench [MODELS]`: Table 2 timings and the plain-pass baseline as JSON; the exit code. */
 int runBench(const BenchArgs& args);
 

@@ -53,15 +53,36 @@ int main(int argc, char** argv) {
 
     cli::PaintArgs paint;
     CLI::App* paintCommand = app.add_subcommand(
-        "paint", "Replay a JSON script of painting operations and save the result as .glb");
-    paintCommand->add_option("MODEL", paint.model, "Model file or builtin:NAME")->required();
+        "paint", "Replay a JSON script of painting operations and save the result as a project");
+    paintCommand->add_option("MODEL", paint.model, "Model file, project or builtin:NAME")
+        ->required();
     paintCommand->add_option("--script", paint.script, "The operations (see README)")
         ->required()
         ->check(CLI::ExistingFile);
-    paintCommand->add_option("--out", paint.out, "The painted model (.glb)")->required();
+    paintCommand->add_option("--out", paint.out, "The project to write (.glb)")->required();
     addCameraOptions(paintCommand, paint.camera);
     paintCommand->add_flag("--cpu", paint.cpuCapture,
                            "Capture on the CPU instead of OpenGL (no EGL needed)");
+
+    cli::ExportArgs exportArgs;
+    CLI::App* exportCommand = app.add_subcommand(
+        "export", "Export a project or model as glb, obj (+ mtl + png), ply, or its paint "
+                  "texture as png, png16, tiff, exr");
+    exportCommand->add_option("INPUT", exportArgs.input, "Project, model file or builtin:NAME")
+        ->required();
+    exportCommand->add_option("--out", exportArgs.out, "The file to write")->required();
+    exportCommand
+        ->add_option("--format", exportArgs.format,
+                     "glb, obj, ply, png, png16, tiff or exr (default: from the extension)")
+        ->check(CLI::IsMember({"glb", "obj", "ply", "png", "png16", "tiff", "exr"}));
+    exportCommand
+        ->add_option("--target", exportArgs.target,
+                     "Paint target to make for a plain model: texture or vertex-colors")
+        ->check(CLI::IsMember({"texture", "vertex-colors"}));
+    exportCommand
+        ->add_option("--resolution", exportArgs.resolution,
+                     "Size of a new paint texture (512 to 8192)")
+        ->check(CLI::Range(512, 8192));
 
     cli::BenchArgs bench;
     CLI::App* benchCommand = app.add_subcommand(
@@ -95,6 +116,8 @@ int main(int argc, char** argv) {
         return cli::runLayers(layers);
     if (paintCommand->parsed())
         return cli::runPaint(paint);
+    if (exportCommand->parsed())
+        return cli::runExport(exportArgs);
     if (benchCommand->parsed())
         return cli::runBench(bench);
     return 1;

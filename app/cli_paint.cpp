@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `paint`: replays a JSON script of operations through the controller (core::Document) — the
-// code path of the GUI's clicks — and saves the result as a binary glTF.
+// code path of the GUI's clicks — and saves the result as a project (core/project.h), as the
+// GUI's File ▸ Save does. A project as MODEL continues with its paint, settings and view.
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "core/flood_fill.h"
 #include "core/gltf_export.h"
 #include "core/mesh_io.h"
+#include "core/project.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 
@@ -190,9 +192,11 @@ void replay(const json& operations, core::Document& doc, core::LayerCapturer& ca
                     throw ScriptError{"\"orbit\" must be a string yaw,pitch,distance"};
                 camera.orbit = op["orbit"].get<std::string>();
                 camera.cameraFile.clear();
+                auto c = makeCamera(camera, doc.mesh());
                 auto v = makeView(camera, doc.mesh());
-                if (!v)
-                    throw ScriptError{v.error()};
+                if (!c || !v)
+                    throw ScriptError{c ? v.error() : c.error()};
+                doc.camera() = *c; // the project keeps the last orbit view
                 view = *v;
                 doc.clearLayers();
             } else if (name == "build-layers") {
@@ -301,18 +305,32 @@ int runPaint(const PaintArgs& args) {
     auto script = readScript(args.script);
     if (!script)
         return fail(script.error());
-    auto mesh = core::loadMesh(args.model);
-    if (!mesh)
-        return fail(mesh.error());
+    // A project continues with its paint and settings; a plain model starts afresh.
+    auto project = core::loadProject(args.model);
+    if (!project)
+        return fail(project.error());
     core::Document doc;
-    doc.setMesh(std::move(mesh).value(), args.model);
+    doc.setMesh(std::move(project->mesh), args.model);
+    core::ProjectState base;
+    if (project->state) {
+        base = *project->state;
+        if (const core::Status s = core::applyProjectState(doc, base); !s)
+            std::cerr << "layerpaint-cli: " << args.model << ": " << s.error() << '\n';
+    }
 
     CameraArgs camera = args.camera;
     if (const core::Status s = applyScriptSettings(*script, args.script, doc, camera); !s)
         return fail(s.error());
-    auto view = makeView(camera, doc.mesh());
+    // Without --orbit or --camera a project is painted from its saved view.
+    const core::Camera* saved = project->state && project->state->camera ? &doc.camera() : nullptr;
+    auto view = makeView(camera, doc.mesh(), saved);
     if (!view)
         return fail(view.error());
+    if (camera.cameraFile.empty()) {
+        auto orbitCamera = makeCamera(camera, doc.mesh(), saved);
+        if (orbitCamera)
+            doc.camera() = *orbitCamera;
+    }
 
     std::unique_ptr<render::HeadlessContext> context;
     std::unique_ptr<core::LayerCapturer> capturer;
@@ -333,8 +351,9 @@ int runPaint(const PaintArgs& args) {
     if (const core::Status s = replayScript(*script, args.script, doc, *capturer, camera, *view);
         !s)
         return fail(s.error());
-    const json extras = {{"layerpaint", {{"script", args.script}, {"model", args.model}}}};
-    if (const core::Status s = core::saveGlb(args.out, doc.paintedMesh(), extras); !s)
+    // The same save as the GUI's: a project with the script's end state.
+    const core::ProjectState state = core::captureProjectState(doc, base);
+    if (const core::Status s = core::saveProject(args.out, doc, state); !s)
         return fail(s.error());
     return 0;
 }

@@ -13,6 +13,7 @@
 #include <QTranslator>
 
 #include "ui/main_window.h"
+#include "ui/project_controller.h"
 #include "ui/viewport.h"
 
 namespace {
@@ -57,8 +58,9 @@ void describeOptions(QCommandLineParser& parser) {
     parser.addVersionOption();
     parser.addPositionalArgument(
         QCoreApplication::translate("main", "file"),
-        QCoreApplication::translate("main", "The model to open (glTF, OBJ, PLY, STL, OFF, ... or "
-                                            "builtin:NAME). Without it the trefoil knot opens."),
+        QCoreApplication::translate("main", "The project or model to open (glTF, OBJ, PLY, STL, "
+                                            "OFF, ... or builtin:NAME). Without it the trefoil "
+                                            "knot opens."),
         QCoreApplication::translate("main", "[file]"));
     parser.addOption(QCommandLineOption(
         QStringLiteral("connectivity"),
@@ -117,6 +119,8 @@ int main(int argc, char* argv[]) {
         return 2;
     }
     window.show();
-    window.openFromCommandLine(parser.positionalArguments());
+    // After a crash, the autosaved work comes first.
+    if (!window.projectController()->offerRecovery())
+        window.openFromCommandLine(parser.positionalArguments());
     return QApplication::exec();
 }

@@ -11,4 +11,8 @@ function(layerpaint_set_flags target)
             -fno-omit-frame-pointer -fno-sanitize-recover=undefined)
         target_link_options(${target} PRIVATE -fsanitize=address,undefined)
     endif()
+    if(LAYERPAINT_FUZZ)
+        # Coverage for libFuzzer in every library; the fuzz targets link the fuzzer itself.
+        target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link)
+    endif()
 endfunction()

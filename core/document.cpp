@@ -231,6 +231,14 @@ PaintTarget* Document::paintTarget(std::string* error) {
     return m_paintTarget.get();
 }
 
+PaintTargetKind Document::paintTargetKind() const {
+    if (m_paintTarget)
+        return m_paintTarget->kind();
+    if (m_paintOptions.kind)
+        return *m_paintOptions.kind;
+    return m_mesh->hasUvs() ? PaintTargetKind::Texture : PaintTargetKind::VertexColors;
+}
+
 Status Document::resetPaintTarget(const PaintTargetOptions& options) {
     auto target = makePaintTarget(m_mesh, m_topology, options);
     if (!target)

@@ -144,6 +144,10 @@ public:
     const PaintTargetOptions& paintOptions() const { return m_paintOptions; }
     void setPaintOptions(const PaintTargetOptions& options) { m_paintOptions = options; }
     bool hasPaintTarget() const { return m_paintTarget != nullptr; }
+    /** The options the paint target is (or will be) made with. */
+    const PaintTargetOptions& paintTargetOptions() const { return m_paintOptions; }
+    /** The current paint target's kind; before one exists, the kind it will have. */
+    PaintTargetKind paintTargetKind() const;
     /**
      * Starts a stroke (On-Mouse-Down) at a pixel of the current layers' view and paints its first
      * dab. Needs layers (an Error otherwise); a point on background starts nothing. changes

@@ -10,6 +10,8 @@
 #include <bit>
 #include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -471,6 +473,40 @@ int createTemporary(const fs::path& target, const char* suffix, int mode, std::s
     });
 }
 
+/**
+ * Removes the temporary files that saves of target (or of its backup) by processes that no
+ * longer run left behind: a save killed mid-write leaves its hidden ".NAME.PID-N.tmp". Files of
+ * running processes, and anything that does not parse as such a name, are left alone.
+ */
+void removeStaleTemporaries(const fs::path& target) {
+    std::error_code ec;
+    for (const std::string& base : {target.filename().string().substr(0, 160),
+                                    (target.filename().string() + ".bak").substr(0, 160)}) {
+        const std::string prefix = "." + base + ".";
+        for (fs::directory_iterator it(target.parent_path(), ec), end; !ec && it != end;
+             it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.size() <= prefix.size() + 4 || name.rfind(prefix, 0) != 0 ||
+                !name.ends_with(".tmp"))
+                continue;
+            const std::string middle =
+                name.substr(prefix.size(), name.size() - prefix.size() - 4); // "PID-N"
+            const std::size_t dash = middle.find('-');
+            if (dash == std::string::npos || dash == 0 || dash + 1 == middle.size() ||
+                !std::all_of(middle.begin(), middle.end(),
+                             [](char c) { return c == '-' || (c >= '0' && c <= '9'); }))
+                continue;
+            const long pid = std::strtol(middle.substr(0, dash).c_str(), nullptr, 10);
+            if (pid <= 0 || pid == ::getpid())
+                continue;
+            // Running (its save may be under way), or not ours to tell (EPERM): keep.
+            if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+                continue;
+            ::unlink(it->path().c_str());
+        }
+    }
+}
+
 /** fsync's a folder so a rename in it survives a crash; failures are not fatal. */
 void syncFolder(const fs::path& folder) {
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -583,6 +619,7 @@ Status writeAtomically(const std::string& path,
         return fail("the file cannot be replaced (" + errnoText(errno) + ")");
     cleanup.release();
     syncFolder(target.parent_path());
+    removeStaleTemporaries(target);
     return {};
 }
 
@@ -596,6 +633,8 @@ Result<Json> readExtras(const std::string& path) {
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec)
         return Error{"cannot be read (" + ec.message() + ")"};
+    if (size == 0)
+        return Error{"is empty"};
     std::ifstream in(path, std::ios::binary);
     if (!in)
         return Error{"cannot be read"};
@@ -631,9 +670,15 @@ Result<Json> readExtras(const std::string& path) {
         return Error{"cannot be read"};
     if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
-    Json root = Json::parse(text, nullptr, false);
-    if (root.is_discarded())
-        return Error{"is not valid glTF JSON"};
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::exception& e) {
+        std::string what = e.what();
+        if (const std::size_t p = what.find("] "); p != std::string::npos)
+            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
+        return Error{"is not valid glTF JSON (" + what + ")"};
+    }
     if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
         return Error{"is not a glTF file (no asset)"};
     const Json& asset = root["asset"];
@@ -664,13 +709,13 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
 }
 
 Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras,
-               const ProgressFn& progress) {
+               const ProgressFn& progress, bool keepBackup) {
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
             return Status(Error{path + ": " + parts.error()});
         const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
-        Status status = writeAtomically(path, spans, true);
+        Status status = writeAtomically(path, spans, keepBackup);
         if (status)
             reportProgress(progress, 1.0); // too late to cancel: the file is saved
         return status;

@@ -35,11 +35,11 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
 
 /**
  * Saves mesh as a binary glTF file at path (see encodeGlb), atomically (writeFileAtomically),
- * keeping the previous file as path + ".bak". On failure the old file is intact and the Error
- * names path and the problem.
+ * keeping the previous file as path + ".bak" unless keepBackup is false. On failure the old file
+ * is intact and the Error names path and the problem.
  */
 Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras = {},
-               const ProgressFn& progress = {});
+               const ProgressFn& progress = {}, bool keepBackup = true);
 
 /**
  * The asset.extras object of a glTF file (binary or JSON); reads only the JSON. An empty object

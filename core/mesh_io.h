@@ -11,12 +11,17 @@
 
 namespace core {
 
-/** Size caps that keep a hostile file from exhausting memory. */
+/** Size caps that keep a hostile file from exhausting memory, and how strict loading is. */
 struct LoadLimits {
     std::uint64_t maxFileBytes = 2ull << 30; // 2 GiB
     std::uint64_t maxVertices = 50'000'000;
     std::uint64_t maxTriangles = 50'000'000;
     std::uint64_t maxImagePixels = 16384ull * 16384ull;
+    /**
+     * A glTF base colour texture that cannot be read fails the load instead of being dropped
+     * with a warning (a project's textures hold the painting).
+     */
+    bool requireTextures = false;
 };
 
 /**

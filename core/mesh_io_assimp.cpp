@@ -36,6 +36,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <sstream>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -310,6 +311,82 @@ std::string tooManyElements(std::uint64_t count, const std::string& what, std::u
 }
 
 /**
+ * Text OFF: every face lists as many vertex indices as its first number says, each a vertex of
+ * the file, and the faces the header declares are there. Assimp 5.2 reads on past a short face
+ * line, into the next lines and past the end of its buffer (found by fuzzing). Files that are not
+ * text OFF, or whose header cannot be read here, are left to Assimp.
+ */
+std::string checkOffFaces(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::string line;
+    std::vector<std::string> tokens;
+    enum class Stage { Magic, Counts, Vertices, Faces } stage = Stage::Magic;
+    bool dimension = false;
+    std::uint64_t vertices = 0, faces = 0, seenVertices = 0, seenFaces = 0, lineNo = 0;
+    while (std::getline(in, line)) {
+        ++lineNo;
+        if (const std::size_t hash = line.find('#'); hash != std::string::npos)
+            line.resize(hash);
+        tokens.clear();
+        std::istringstream words(line);
+        for (std::string w; words >> w;)
+            tokens.push_back(w);
+        if (tokens.empty())
+            continue;
+        std::size_t t = 0;
+        if (stage == Stage::Magic) {
+            const std::string& magic = tokens[0];
+            if (magic.size() < 3 || magic.size() > 9 ||
+                magic.compare(magic.size() - 3, 3, "OFF") != 0 ||
+                (tokens.size() > 1 && tokens[1] == "BINARY"))
+                return {};
+            dimension = magic.find('n') != std::string::npos;
+            stage = Stage::Counts;
+            t = 1;
+            if (t == tokens.size())
+                continue;
+        }
+        if (stage == Stage::Counts) {
+            if (dimension) {
+                ++t; // nOFF: the dimension comes first
+                dimension = false;
+                if (t >= tokens.size())
+                    continue;
+            }
+            if (t + 1 >= tokens.size() || !parseCount(tokens[t], vertices) ||
+                !parseCount(tokens[t + 1], faces))
+                return {};
+            stage = vertices > 0 ? Stage::Vertices : Stage::Faces;
+            continue;
+        }
+        if (stage == Stage::Vertices) {
+            if (++seenVertices == vertices)
+                stage = Stage::Faces;
+            continue;
+        }
+        if (seenFaces == faces)
+            break;
+        ++seenFaces;
+        std::uint64_t corners = 0;
+        if (!parseCount(tokens[0], corners))
+            return "line " + str(lineNo) + ": an OFF face must start with its number of vertices";
+        if (tokens.size() < corners + 1)
+            return "line " + str(lineNo) + ": the face lists " + str(tokens.size() - 1) +
+                   " vertex indices but says it has " + str(corners);
+        for (std::size_t k = 1; k <= corners; ++k) {
+            std::uint64_t index = 0;
+            if (!parseCount(tokens[k], index) || index >= vertices)
+                return "line " + str(lineNo) + ": the face uses vertex \"" + tokens[k] +
+                       "\", which is not one of the file's " + str(vertices) + " vertices";
+        }
+    }
+    if (stage == Stage::Faces && seenFaces < faces)
+        return "the OFF file ends after " + str(seenFaces) + " of the " + str(faces) +
+               " faces its header declares";
+    return {};
+}
+
+/**
  * OFF and PLY headers declare element counts that Assimp allocates and loops over before it
  * notices the data is missing: a 300-byte file can cost gigabytes and minutes. The counts must
  * fit the file: an ASCII value takes at least 2 bytes ("0 "), a binary one its size.
@@ -367,14 +444,11 @@ std::string checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize,
         return {};
     }
 
-    // PLY: sum over elements of count * the smallest size one element can have.
+    // PLY: sum over elements of count * the smallest size one element can have. The header is
+    // read line by line and must be well formed: Assimp 5.2 hangs or reads wild on unknown
+    // keywords, counts like "0.0" and headers without end_header (found by fuzzing).
     if (magic != "ply")
         return {};
-    const std::size_t end = head.find("end_header");
-    if (end == std::string::npos)
-        return {};
-    const std::size_t bodyStart = head.find('\n', end);
-    const std::uint64_t body = bodyStart == std::string::npos ? 0 : fileSize - bodyStart - 1;
     bool ascii = true;
     struct Element {
         std::string name;
@@ -387,25 +461,60 @@ std::string checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize,
             return 1;
         if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
             return 2;
+        if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
+            t == "float32")
+            return 4;
         if (t == "double" || t == "float64")
             return 8;
-        return 4;
+        return 0; // not a PLY type
     };
-    for (std::size_t t = 1; t < tokens.size() && tokens[t] != "end_header"; ++t) {
-        if (tokens[t] == "format" && t + 1 < tokens.size()) {
-            ascii = tokens[t + 1] == "ascii";
-        } else if (tokens[t] == "element" && t + 2 < tokens.size()) {
+    std::uint64_t bodyStart = 0;
+    bool ended = false;
+    std::size_t lineStart = 0;
+    for (int lineNo = 1; lineStart < head.size() && !ended; ++lineNo) {
+        std::size_t lineEnd = head.find('\n', lineStart);
+        if (lineEnd == std::string::npos)
+            break; // the header runs past what was read, or the file ends in it
+        std::istringstream words(head.substr(lineStart, lineEnd - lineStart));
+        lineStart = lineEnd + 1;
+        std::vector<std::string> w;
+        for (std::string word; words >> word;)
+            w.push_back(word);
+        const std::string where = "line " + str(std::uint64_t(lineNo)) + " of the PLY header: ";
+        if (w.empty() || w[0] == "comment" || w[0] == "obj_info" || (lineNo == 1 && w[0] == "ply"))
+            continue;
+        if (w[0] == "format" && w.size() == 3) {
+            ascii = w[1] == "ascii";
+        } else if (w[0] == "element" && w.size() == 3) {
             Element e;
-            e.name = tokens[t + 1];
-            if (!parseCount(tokens[t + 2], e.count))
-                return {};
+            e.name = w[1];
+            if (!parseCount(w[2], e.count))
+                return where + "the element \"" + e.name +
+                       "\" has a count that is not a whole number (\"" + w[2] + "\")";
             elements.push_back(e);
-        } else if (tokens[t] == "property" && t + 2 < tokens.size() && !elements.empty()) {
+        } else if (w[0] == "property" && !elements.empty() &&
+                   ((w.size() == 3 && typeSize(w[1]) > 0) ||
+                    (w.size() == 5 && w[1] == "list" && typeSize(w[2]) > 0 &&
+                     typeSize(w[3]) > 0))) {
             // A list costs at least its (zero) count; a scalar its size.
-            const std::string& type = tokens[t + 1] == "list" ? tokens[t + 2] : tokens[t + 1];
-            elements.back().minBytes += ascii ? 2 : typeSize(type);
+            elements.back().minBytes += ascii ? 2 : typeSize(w.size() == 5 ? w[2] : w[1]);
+        } else if (w[0] == "end_header" && w.size() == 1) {
+            ended = true;
+            bodyStart = lineStart;
+        } else if (w[0] == "format" || w[0] == "element" || w[0] == "property" ||
+                   w[0] == "end_header") {
+            return where + "\"" + w[0] + "\" is not followed by what it needs";
         }
+        // Other lines are skipped, as Assimp does (exporters write free text there).
     }
+    if (!ended)
+        return "the PLY header does not end (no end_header line in its first " + str(head.size()) +
+               " bytes)"; // Assimp would read on and hang
+    const std::uint64_t body = fileSize > bodyStart ? fileSize - bodyStart : 0;
+    for (const Element& e : elements)
+        if (e.count > 0 && e.minBytes == 0) // Assimp would loop over them without moving on
+            return "the PLY header declares " + str(e.count) + " \"" + e.name +
+                   "\" elements without properties";
     std::uint64_t needed = 0;
     for (const Element& e : elements) {
         if (e.name == "vertex" && e.count > maxRaw)
@@ -767,6 +876,9 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
         return Error{"cannot be read (" + ec.message() + ")"};
     if (std::string problem = checkDeclaredCounts(file, fileSize, limits); !problem.empty())
         return Error{problem};
+    if (ext == ".off")
+        if (std::string problem = checkOffFaces(file); !problem.empty())
+            return Error{problem};
 
     const aiScene* raw = importer.ReadFile(file.string(), 0);
     if (handler->cancelled())

@@ -1261,6 +1261,10 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
     }
     int result = -1;
     if (data == nullptr || length == 0) {
+        if (m_limits.requireTextures) {
+            fail(label + " could not be read");
+            return -1;
+        }
         m_mesh.warnings.push_back(label + " could not be read; the material has no texture");
     } else {
         Result<Image> decoded =
@@ -1268,6 +1272,9 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
         if (decoded) {
             result = static_cast<int>(m_mesh.textures.size());
             m_mesh.textures.push_back(std::move(decoded).value());
+        } else if (m_limits.requireTextures) {
+            fail(decoded.error());
+            return -1;
         } else {
             m_mesh.warnings.push_back(decoded.error() + "; the material has no texture");
         }

@@ -14,8 +14,9 @@ packages=(
 )
 if [[ "${1:-}" == "--test" ]]; then
     # qt6-base-private-dev: the widget tests deliver pen events through QWindowSystemInterface.
+    # clang and its runtime (libFuzzer, sanitizers) for the fuzz targets (scripts/fuzz.sh).
     packages+=(xvfb xauth assimp-testmodels clang-format appstream desktop-file-utils
-        qt6-base-private-dev)
+        qt6-base-private-dev clang libclang-rt-14-dev)
 fi
 
 missing=()

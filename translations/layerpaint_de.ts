@@ -12,16 +12,23 @@
         <translation>Datei</translation>
     </message>
     <message>
-        <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
-        <translation>Das zu öffnende Modell (glTF, OBJ, PLY, STL, OFF, … oder builtin:NAME). Ohne Angabe öffnet sich der Kleeblattknoten.</translation>
-    </message>
-    <message>
         <source>[file]</source>
         <translation>[Datei]</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed: auto (the faster here), cpu or gpu.</source>
         <translation>Wo die Pixel-Konnektivität berechnet wird: auto (das hier Schnellere), cpu oder gpu.</translation>
+    </message>
+    <message>
+        <source>The project or model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
+        <translation>Das zu öffnende Projekt oder Modell (glTF, OBJ, PLY, STL, OFF, … oder builtin:NAME). Ohne Angabe öffnet sich der Kleeblattknoten.</translation>
+    </message>
+</context>
+<context>
+    <name>ui::BackgroundTask</name>
+    <message>
+        <source>Not enough memory.</source>
+        <translation>Nicht genug Speicher.</translation>
     </message>
 </context>
 <context>
@@ -493,10 +500,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Liste &amp;leeren</translation>
     </message>
     <message>
-        <source>3D models (*.gltf *.glb *.obj *.ply *.stl *.off)</source>
-        <translation>3D-Modelle (*.gltf *.glb *.obj *.ply *.stl *.off)</translation>
-    </message>
-    <message>
         <source>glTF 2.0 (*.gltf *.glb)</source>
         <translation>glTF 2.0 (*.gltf *.glb)</translation>
     </message>
@@ -521,20 +524,12 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Alle Dateien (*)</translation>
     </message>
     <message>
-        <source>Open Model</source>
-        <translation>Modell öffnen</translation>
-    </message>
-    <message>
         <source>About LayerPaint</source>
         <translation>Über LayerPaint</translation>
     </message>
     <message>
         <source>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Layer-aware 3D painting: paint surfaces hidden behind others in one stroke.&lt;/p&gt;&lt;p&gt;License: GNU GPL version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Ebenenbewusstes 3D-Malen: Flächen, die hinter anderen verborgen liegen, in einem Strich bemalen.&lt;/p&gt;&lt;p&gt;Lizenz: GNU GPL Version 3 oder neuer.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>%1 — LayerPaint</source>
-        <translation>%1 – LayerPaint</translation>
     </message>
     <message>
         <source>Could not open %1</source>
@@ -904,6 +899,236 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Pen pressure (right) to stroke pressure (up)</source>
         <translation>Stiftdruck (rechts) zu Strichdruck (oben)</translation>
+    </message>
+    <message>
+        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
+        <translation>Projekte und 3D-Modelle (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint-Projekte (*.glb)</translation>
+    </message>
+    <message>
+        <source>Open Project or Model</source>
+        <translation>Projekt oder Modell öffnen</translation>
+    </message>
+    <message>
+        <source>%1[*] — LayerPaint</source>
+        <translation>%1[*] — LayerPaint</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save the painting and its settings as a project (.glb)</source>
+        <translation>Die Bemalung und ihre Einstellungen als Projekt (.glb) speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation>Das Projekt unter einem anderen Namen speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportieren</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Binary (.glb)…</source>
+        <translation>glTF &amp;binär (.glb) …</translation>
+    </message>
+    <message>
+        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
+        <translation>Wavefront &amp;OBJ (.obj + .mtl + Texturen) …</translation>
+    </message>
+    <message>
+        <source>Stanford &amp;PLY with Vertex Colours…</source>
+        <translation>Stanford &amp;PLY mit Vertexfarben …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as P&amp;NG (8-bit)…</source>
+        <translation>Maltextur als P&amp;NG (8 Bit) …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as PNG (&amp;16-bit)…</source>
+        <translation>Maltextur als PNG (&amp;16 Bit) …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as &amp;TIFF…</source>
+        <translation>Maltextur als &amp;TIFF …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as Open&amp;EXR…</source>
+        <translation>Maltextur als Open&amp;EXR …</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ProjectController</name>
+    <message>
+        <source>Autosaved</source>
+        <translation>Automatisch gesichert</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>Automatisches Sichern fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>There is no model to save.</source>
+        <translation>Es gibt kein Modell zum Speichern.</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>Projekt speichern</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint-Projekte (*.glb)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Still busy with the last save or export</source>
+        <translation>Noch mit dem letzten Speichern oder Export beschäftigt</translation>
+    </message>
+    <message>
+        <source>Save Failed</source>
+        <translation>Speichern fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not save.</source>
+        <translation>Konnte nicht speichern.</translation>
+    </message>
+    <message>
+        <source>Saving %1…</source>
+        <translation>%1 wird gespeichert …</translation>
+    </message>
+    <message>
+        <source>Saving cancelled; the file was not changed</source>
+        <translation>Speichern abgebrochen; die Datei wurde nicht verändert</translation>
+    </message>
+    <message>
+        <source>Could not save %1</source>
+        <translation>%1 konnte nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”. The file on disk was not changed.</source>
+        <translation>„%1“ konnte nicht gespeichert werden. Die Datei auf dem Datenträger wurde nicht verändert.</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 gespeichert</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>“%1” has unsaved changes.</source>
+        <translation>„%1“ hat ungespeicherte Änderungen.</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>Möchten Sie sie speichern?</translation>
+    </message>
+    <message>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF binär (*.glb)</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj)</source>
+        <translation>Wavefront OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Stanford PLY (*.ply)</source>
+        <translation>Stanford PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG-Bild (*.png)</translation>
+    </message>
+    <message>
+        <source>TIFF image (*.tif *.tiff)</source>
+        <translation>TIFF-Bild (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>OpenEXR image (*.exr)</source>
+        <translation>OpenEXR-Bild (*.exr)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportieren</translation>
+    </message>
+    <message>
+        <source>The model is painted with vertex colours, so there is no paint texture: export it as glTF or PLY.</source>
+        <translation>Das Modell ist mit Vertexfarben bemalt, es gibt also keine Maltextur: exportieren Sie es als glTF oder PLY.</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>Export fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>Could not export the paint texture.</source>
+        <translation>Die Maltextur konnte nicht exportiert werden.</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>%1 wird exportiert …</translation>
+    </message>
+    <message>
+        <source>Export cancelled</source>
+        <translation>Export abgebrochen</translation>
+    </message>
+    <message>
+        <source>Could not export “%1”.</source>
+        <translation>„%1“ konnte nicht exportiert werden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>%n Datei nach %1 exportiert</numerusform>
+            <numerusform>%n Dateien nach %1 exportiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>LayerPaint</source>
+        <translation>LayerPaint</translation>
+    </message>
+    <message>
+        <source>an unsaved painting of %1</source>
+        <translation>einer ungespeicherten Bemalung von %1</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Work</source>
+        <translation>Ungespeicherte Arbeit wiederherstellen</translation>
+    </message>
+    <message>
+        <source>LayerPaint was not closed properly. Work on %1 was autosaved at %2.</source>
+        <translation>LayerPaint wurde nicht ordnungsgemäß beendet. Die Arbeit an %1 wurde um %2 automatisch gesichert.</translation>
+    </message>
+    <message>
+        <source>Recover it? It opens as an unsaved document.</source>
+        <translation>Wiederherstellen? Sie öffnet sich als ungespeichertes Dokument.</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>&amp;Wiederherstellen</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>&amp;Verwerfen</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>&amp;Nicht jetzt</translation>
     </message>
 </context>
 <context>

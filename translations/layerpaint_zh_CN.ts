@@ -12,16 +12,23 @@
         <translation>文件</translation>
     </message>
     <message>
-        <source>The model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
-        <translation>要打开的模型（glTF、OBJ、PLY、STL、OFF……或 builtin:NAME）。不指定时打开三叶结。</translation>
-    </message>
-    <message>
         <source>[file]</source>
         <translation>[文件]</translation>
     </message>
     <message>
         <source>Where pixel connectivity is computed: auto (the faster here), cpu or gpu.</source>
         <translation>像素连通性的计算位置：auto（在本机上更快的一种）、cpu 或 gpu。</translation>
+    </message>
+    <message>
+        <source>The project or model to open (glTF, OBJ, PLY, STL, OFF, ... or builtin:NAME). Without it the trefoil knot opens.</source>
+        <translation>要打开的项目或模型（glTF、OBJ、PLY、STL、OFF……或 builtin:NAME）。不指定时打开三叶结。</translation>
+    </message>
+</context>
+<context>
+    <name>ui::BackgroundTask</name>
+    <message>
+        <source>Not enough memory.</source>
+        <translation>内存不足。</translation>
     </message>
 </context>
 <context>
@@ -492,10 +499,6 @@ connectivity %3 ms, regions %4 ms
         <translation>清除列表(&amp;C)</translation>
     </message>
     <message>
-        <source>3D models (*.gltf *.glb *.obj *.ply *.stl *.off)</source>
-        <translation>三维模型 (*.gltf *.glb *.obj *.ply *.stl *.off)</translation>
-    </message>
-    <message>
         <source>glTF 2.0 (*.gltf *.glb)</source>
         <translation>glTF 2.0 (*.gltf *.glb)</translation>
     </message>
@@ -520,20 +523,12 @@ connectivity %3 ms, regions %4 ms
         <translation>所有文件 (*)</translation>
     </message>
     <message>
-        <source>Open Model</source>
-        <translation>打开模型</translation>
-    </message>
-    <message>
         <source>About LayerPaint</source>
         <translation>关于 LayerPaint</translation>
     </message>
     <message>
         <source>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;Layer-aware 3D painting: paint surfaces hidden behind others in one stroke.&lt;/p&gt;&lt;p&gt;License: GNU GPL version 3 or later.&lt;/p&gt;</source>
         <translation>&lt;h3&gt;LayerPaint %1&lt;/h3&gt;&lt;p&gt;图层感知的三维绘画：一笔画到被其他表面遮挡的表面上。&lt;/p&gt;&lt;p&gt;许可证：GNU GPL 第 3 版或更高版本。&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>%1 — LayerPaint</source>
-        <translation>%1 — LayerPaint</translation>
     </message>
     <message>
         <source>Could not open %1</source>
@@ -902,6 +897,235 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Pen pressure (right) to stroke pressure (up)</source>
         <translation>笔压（向右）到笔画压力（向上）</translation>
+    </message>
+    <message>
+        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
+        <translation>项目和三维模型 (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint 项目 (*.glb)</translation>
+    </message>
+    <message>
+        <source>Open Project or Model</source>
+        <translation>打开项目或模型</translation>
+    </message>
+    <message>
+        <source>%1[*] — LayerPaint</source>
+        <translation>%1[*] — LayerPaint</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save the painting and its settings as a project (.glb)</source>
+        <translation>将绘画及其设置保存为项目 (.glb)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation>以另一个名称保存项目</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;X)</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Binary (.glb)…</source>
+        <translation>glTF 二进制 (.glb)(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
+        <translation>Wavefront OBJ（.obj + .mtl + 纹理）(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Stanford &amp;PLY with Vertex Colours…</source>
+        <translation>带顶点颜色的 Stanford PLY(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as P&amp;NG (8-bit)…</source>
+        <translation>绘画纹理为 PNG（8 位）(&amp;N)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as PNG (&amp;16-bit)…</source>
+        <translation>绘画纹理为 PNG（16 位）(&amp;1)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as &amp;TIFF…</source>
+        <translation>绘画纹理为 TIFF(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as Open&amp;EXR…</source>
+        <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
+    </message>
+</context>
+<context>
+    <name>ui::ProjectController</name>
+    <message>
+        <source>Autosaved</source>
+        <translation>已自动保存</translation>
+    </message>
+    <message>
+        <source>Autosave failed: %1</source>
+        <translation>自动保存失败：%1</translation>
+    </message>
+    <message>
+        <source>There is no model to save.</source>
+        <translation>没有可保存的模型。</translation>
+    </message>
+    <message>
+        <source>Save Project</source>
+        <translation>保存项目</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint 项目 (*.glb)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Still busy with the last save or export</source>
+        <translation>仍在进行上一次保存或导出</translation>
+    </message>
+    <message>
+        <source>Save Failed</source>
+        <translation>保存失败</translation>
+    </message>
+    <message>
+        <source>Could not save.</source>
+        <translation>无法保存。</translation>
+    </message>
+    <message>
+        <source>Saving %1…</source>
+        <translation>正在保存 %1…</translation>
+    </message>
+    <message>
+        <source>Saving cancelled; the file was not changed</source>
+        <translation>保存已取消；文件未被更改</translation>
+    </message>
+    <message>
+        <source>Could not save %1</source>
+        <translation>无法保存 %1</translation>
+    </message>
+    <message>
+        <source>Could not save “%1”. The file on disk was not changed.</source>
+        <translation>无法保存“%1”。磁盘上的文件未被更改。</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>已保存 %1</translation>
+    </message>
+    <message>
+        <source>Unsaved Changes</source>
+        <translation>未保存的更改</translation>
+    </message>
+    <message>
+        <source>“%1” has unsaved changes.</source>
+        <translation>“%1”有未保存的更改。</translation>
+    </message>
+    <message>
+        <source>Do you want to save them?</source>
+        <translation>是否保存这些更改？</translation>
+    </message>
+    <message>
+        <source>glTF binary (*.glb)</source>
+        <translation>glTF 二进制 (*.glb)</translation>
+    </message>
+    <message>
+        <source>Wavefront OBJ (*.obj)</source>
+        <translation>Wavefront OBJ (*.obj)</translation>
+    </message>
+    <message>
+        <source>Stanford PLY (*.ply)</source>
+        <translation>Stanford PLY (*.ply)</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>PNG 图像 (*.png)</translation>
+    </message>
+    <message>
+        <source>TIFF image (*.tif *.tiff)</source>
+        <translation>TIFF 图像 (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>OpenEXR image (*.exr)</source>
+        <translation>OpenEXR 图像 (*.exr)</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>导出</translation>
+    </message>
+    <message>
+        <source>The model is painted with vertex colours, so there is no paint texture: export it as glTF or PLY.</source>
+        <translation>该模型使用顶点颜色绘画，因此没有绘画纹理：请导出为 glTF 或 PLY。</translation>
+    </message>
+    <message>
+        <source>Export Failed</source>
+        <translation>导出失败</translation>
+    </message>
+    <message>
+        <source>Could not export the paint texture.</source>
+        <translation>无法导出绘画纹理。</translation>
+    </message>
+    <message>
+        <source>Exporting %1…</source>
+        <translation>正在导出 %1…</translation>
+    </message>
+    <message>
+        <source>Export cancelled</source>
+        <translation>导出已取消</translation>
+    </message>
+    <message>
+        <source>Could not export “%1”.</source>
+        <translation>无法导出“%1”。</translation>
+    </message>
+    <message numerus="yes">
+        <source>Exported %n file(s) to %1</source>
+        <translation>
+            <numerusform>已将 %n 个文件导出到 %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>LayerPaint</source>
+        <translation>LayerPaint</translation>
+    </message>
+    <message>
+        <source>an unsaved painting of %1</source>
+        <translation>%1 的一幅未保存的绘画</translation>
+    </message>
+    <message>
+        <source>Recover Unsaved Work</source>
+        <translation>恢复未保存的工作</translation>
+    </message>
+    <message>
+        <source>LayerPaint was not closed properly. Work on %1 was autosaved at %2.</source>
+        <translation>LayerPaint 未正常关闭。%1 上的工作已于 %2 自动保存。</translation>
+    </message>
+    <message>
+        <source>Recover it? It opens as an unsaved document.</source>
+        <translation>要恢复吗？它将作为未保存的文档打开。</translation>
+    </message>
+    <message>
+        <source>&amp;Recover</source>
+        <translation>恢复(&amp;R)</translation>
+    </message>
+    <message>
+        <source>&amp;Discard</source>
+        <translation>丢弃(&amp;D)</translation>
+    </message>
+    <message>
+        <source>&amp;Not Now</source>
+        <translation>暂不(&amp;N)</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,7 @@
 #include <QProgressDialog>
 #include <QScopedValueRollback>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStatusBar>
 #include <QToolBar>
 #include <QUndoStack>
@@ -42,6 +43,7 @@
 #include "ui/layers_panel.h"
 #include "ui/model_loader.h"
 #include "ui/order_command.h"
+#include "ui/project_controller.h"
 #include "ui/region_graph_panel.h"
 #include "ui/region_tools.h"
 #include "ui/segmentation_controls.h"
@@ -130,6 +132,17 @@ MainWindow::MainWindow(QWidget* parent)
 
     createPanels();
     createPaintActions();
+    m_project = new ProjectController(*this);
+    connect(m_project, &ProjectController::modifiedChanged, this, &MainWindow::updateWindowTitle);
+    connect(m_project, &ProjectController::documentNameChanged, this,
+            &MainWindow::updateWindowTitle);
+    connect(m_project, &ProjectController::saved, this, [this](const QString& path) {
+        m_recent.add(path);
+        updateRecentMenu();
+    });
+    // Project settings that live in other widgets.
+    for (QAction* action : {m_regionTools->autoPopUpAction(), m_regionTools->transparencyAction()})
+        connect(action, &QAction::toggled, m_project, &ProjectController::markModified);
     createToolActions();
     createMenus();
 
@@ -176,6 +189,9 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::openFile(const QString& source) {
+    finishStroke();
+    if (!m_project->maybeSave())
+        return;
     const QString resolved = isBuiltin(source) ? source : QFileInfo(source).absoluteFilePath();
     startProgress(resolved);
     m_loader->load(resolved);
@@ -323,6 +339,7 @@ void MainWindow::setDisplay(render::LayerDisplay display, std::uint32_t layer) {
 
 void MainWindow::setLayerOptions(const core::LayerOptions& options) {
     m_builder->setLayerOptions(options);
+    m_project->markModified();
     QSettings settings;
     settings.setValue(kThresholdKey, double(options.threshold));
     settings.setValue(kTestKey, options.test == core::ConnectionTest::Plain
@@ -476,6 +493,8 @@ void MainWindow::createPaintActions() {
                                         "surface is paintable"));
     connect(m_layerAwareAction, &QAction::toggled, this, [this](bool on) {
         m_document->setLayerAware(on);
+        if (m_project)
+            m_project->markModified();
         statusBar()->showMessage(on ? tr("Layer-aware painting") : tr("Conventional painting"),
                                  kPaintMessageMs);
     });
@@ -891,18 +910,27 @@ void MainWindow::syncUndoStack() {
         for (int i = 0; i < total; ++i)
             kept.push_back({nullptr, i < undo, tr("Paint Stroke")});
     }
-    const QScopedValueRollback guard(m_undoSuspended, true);
-    m_undoStack->clear();
-    int index = 0;
-    for (const Entry& entry : kept) {
-        if (entry.order)
-            m_undoStack->push(entry.order);
-        else
-            m_undoStack->push(
-                new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, entry.text));
-        index += entry.done;
+    const bool wasClean = m_undoStack->isClean();
+    {
+        const QScopedValueRollback guard(m_undoSuspended, true);
+        m_undoStack->clear();
+        int index = 0;
+        for (const Entry& entry : kept) {
+            if (entry.order)
+                m_undoStack->push(entry.order);
+            else
+                m_undoStack->push(
+                    new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, entry.text));
+            index += entry.done;
+        }
+        m_undoStack->setIndex(index);
     }
-    m_undoStack->setIndex(index);
+    // The picture did not change: saved stays saved; unsaved changes stay unsaved (the stack's
+    // clean index is gone with the old commands).
+    if (wasClean)
+        m_undoStack->setClean();
+    else if (m_project)
+        m_project->markModified();
 }
 
 void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
@@ -931,6 +959,7 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
     } else {
         m_paintOptions = options;
         m_viewport->paintTargetChanged();
+        m_project->markModified();
     }
     syncUndoStack();
     updateBrushBar();
@@ -950,6 +979,8 @@ void MainWindow::setBrush(const core::Brush& brush) {
         m_colorPanel->setForeground(color);
     m_viewport->setBrushRadius(brush.radius);
     updateBrushInfo();
+    if (m_project && m_document->meshSerial() != 0)
+        m_project->markModified();
 }
 
 void MainWindow::updateBrushInfo() {
@@ -1030,6 +1061,8 @@ void MainWindow::createMenus() {
     // Rebuilt on every show so files deleted meanwhile disappear.
     connect(m_recentMenu, &QMenu::aboutToShow, this, &MainWindow::updateRecentMenu);
     updateRecentMenu();
+
+    createProjectActions(fileMenu);
 
     fileMenu->addSeparator();
     QAction* quitAction = fileMenu->addAction(tr("&Quit"), this, &QWidget::close);
@@ -1126,13 +1159,14 @@ void MainWindow::updateRecentMenu() {
 void MainWindow::showOpenDialog() {
     QSettings settings;
     const QString filters =
-        tr("3D models (*.gltf *.glb *.obj *.ply *.stl *.off)") + QStringLiteral(";;") +
-        tr("glTF 2.0 (*.gltf *.glb)") + QStringLiteral(";;") + tr("Wavefront OBJ (*.obj)") +
-        QStringLiteral(";;") + tr("Stanford PLY (*.ply)") + QStringLiteral(";;") +
-        tr("STL (*.stl)") + QStringLiteral(";;") + tr("Object File Format (*.off)") +
-        QStringLiteral(";;") + tr("All files (*)");
+        tr("Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)") + QStringLiteral(";;") +
+        tr("LayerPaint projects (*.glb)") + QStringLiteral(";;") + tr("glTF 2.0 (*.gltf *.glb)") +
+        QStringLiteral(";;") + tr("Wavefront OBJ (*.obj)") + QStringLiteral(";;") +
+        tr("Stanford PLY (*.ply)") + QStringLiteral(";;") + tr("STL (*.stl)") +
+        QStringLiteral(";;") + tr("Object File Format (*.off)") + QStringLiteral(";;") +
+        tr("All files (*)");
     const QString path = QFileDialog::getOpenFileName(
-        this, tr("Open Model"), settings.value(kOpenDirectoryKey).toString(), filters);
+        this, tr("Open Project or Model"), settings.value(kOpenDirectoryKey).toString(), filters);
     if (path.isEmpty())
         return;
     settings.setValue(kOpenDirectoryKey, QFileInfo(path).absolutePath());
@@ -1159,7 +1193,8 @@ void MainWindow::showError(const QString& title, const QString& text, const QStr
     box->open();
 }
 
-void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh) {
+void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                          std::shared_ptr<const core::ProjectState> state) {
     stopProgress();
     m_source = source;
     updateModelInfo(*mesh);
@@ -1169,26 +1204,133 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     m_document->setPaintOptions(m_paintOptions);
     // This window is the loader's only listener: the mesh moves into the document.
     m_document->setMesh(std::move(*mesh), source.toStdString());
-    m_viewport->meshChanged();
-    if (m_paintOptions.kind == core::PaintTargetKind::Texture && !m_document->mesh().hasUvs()) {
-        // The document keeps its target options: vertex colours for this model, and the
-        // default (a texture when there are UVs) for the next.
-        m_paintOptions.kind.reset();
-        if (m_document->resetPaintTarget(m_paintOptions))
-            m_viewport->paintTargetChanged();
+    if (state) {
+        applyProjectState(*state);
+    } else {
+        m_projectBase = {};
+        if (m_paintOptions.kind == core::PaintTargetKind::Texture && !m_document->mesh().hasUvs()) {
+            // The document keeps its target options: vertex colours for this model, and the
+            // default (a texture when there are UVs) for the next.
+            m_paintOptions.kind.reset();
+            m_document->resetPaintTarget(m_paintOptions);
+        }
     }
+    m_viewport->meshChanged();
+    if (m_document->hasPaintTarget())
+        m_viewport->paintTargetChanged();
     syncUndoStack();
     updateBrushBar();
-    setWindowTitle(tr("%1 — LayerPaint").arg(displayName(source)));
-    if (!isBuiltin(source)) {
+    m_project->documentLoaded(source, state != nullptr,
+                              state ? QString::fromStdString(state->recoveryFor) : QString(),
+                              state ? QString::fromStdString(state->source) : QString());
+    updateWindowTitle();
+    if (!isBuiltin(source) && !m_project->isRecoveryFile(source)) {
         m_recent.add(source);
         updateRecentMenu();
     }
     emit modelLoaded(source);
 }
 
+core::ProjectState MainWindow::projectState() const {
+    core::ProjectState state = core::captureProjectState(*m_document, m_projectBase);
+    // Panels with state of their own add it here and read it in applyProjectState().
+    state.popUpTransparency = m_viewport->popUpTransparency();
+    state.foreground = BrushToolBar::toLinear(m_colorPanel->foreground());
+    state.background = BrushToolBar::toLinear(m_colorPanel->background());
+    state.palette.clear();
+    for (const QColor& color : m_colorPanel->recentColors())
+        state.palette.push_back(BrushToolBar::toLinear(color));
+    return state;
+}
+
+void MainWindow::applyProjectState(const core::ProjectState& state) {
+    m_projectBase = state;
+    if (const core::Status status = core::applyProjectState(*m_document, state); !status)
+        statusBar()->showMessage(QString::fromStdString(status.error()), kStatusMessageMs);
+    m_paintOptions = m_document->paintTargetOptions();
+    if (m_document->hasPaintTarget())
+        m_paintOptions.kind = m_document->paintTargetKind();
+    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_colorPanel->setBackground(BrushToolBar::toQColor(state.background));
+    // Oldest first, so the project's most recent colour ends up first.
+    for (auto it = state.palette.rbegin(); it != state.palette.rend(); ++it)
+        m_colorPanel->addRecent(BrushToolBar::toQColor(*it));
+    setBrush(m_document->brush()); // the bar, the panels and the colour follow
+    {
+        const QSignalBlocker blocker(m_layerAwareAction);
+        m_layerAwareAction->setChecked(m_document->layerAware());
+    }
+    {
+        const QSignalBlocker blocker(m_orthographicAction);
+        m_orthographicAction->setChecked(m_document->camera().orthographic);
+    }
+    // The pop-up toggles are remembered settings too: the project's become the current ones.
+    m_regionTools->autoPopUpAction()->setChecked(state.autoPopUp);
+    m_regionTools->transparencyAction()->setChecked(state.popUpTransparency);
+    updateBrushBar();
+}
+
+void MainWindow::updateWindowTitle() {
+    const QString name = m_project->documentName();
+    // [*] shows the unsaved-changes mark where the platform puts it.
+    setWindowTitle(name.isEmpty() ? tr("LayerPaint") : tr("%1[*] — LayerPaint").arg(name));
+    setWindowModified(m_project->isModified());
+}
+
+void MainWindow::createProjectActions(QMenu* fileMenu) {
+    fileMenu->addSeparator();
+    QAction* saveAction = fileMenu->addAction(tr("&Save"), m_project, &ProjectController::save);
+    saveAction->setObjectName(QStringLiteral("actionSave"));
+    saveAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_S));
+    saveAction->setStatusTip(tr("Save the painting and its settings as a project (.glb)"));
+    QAction* saveAsAction =
+        fileMenu->addAction(tr("Save &As…"), m_project, &ProjectController::saveAs);
+    saveAsAction->setObjectName(QStringLiteral("actionSaveAs"));
+    saveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+    saveAsAction->setStatusTip(tr("Save the project under another name"));
+
+    m_exportMenu = fileMenu->addMenu(tr("&Export"));
+    m_exportMenu->setObjectName(QStringLiteral("exportMenu"));
+    struct ExportInfo {
+        core::ExportFormat format;
+        QString name;
+        QString text;
+    };
+    const ExportInfo formats[] = {
+        {core::ExportFormat::Glb, QStringLiteral("Glb"), tr("glTF &Binary (.glb)…")},
+        {core::ExportFormat::Obj, QStringLiteral("Obj"),
+         tr("Wavefront &OBJ (.obj + .mtl + textures)…")},
+        {core::ExportFormat::Ply, QStringLiteral("Ply"), tr("Stanford &PLY with Vertex Colours…")},
+        {core::ExportFormat::Png8, QStringLiteral("Png8"), tr("Paint Texture as P&NG (8-bit)…")},
+        {core::ExportFormat::Png16, QStringLiteral("Png16"), tr("Paint Texture as PNG (&16-bit)…")},
+        {core::ExportFormat::Tiff, QStringLiteral("Tiff"), tr("Paint Texture as &TIFF…")},
+        {core::ExportFormat::Exr, QStringLiteral("Exr"), tr("Paint Texture as Open&EXR…")},
+    };
+    for (const ExportInfo& info : formats) {
+        if (info.format == core::ExportFormat::Png8)
+            m_exportMenu->addSeparator();
+        QAction* action = m_exportMenu->addAction(info.text);
+        action->setObjectName(QStringLiteral("actionExport") + info.name);
+        action->setData(int(info.format));
+        connect(action, &QAction::triggered, this,
+                [this, format = info.format] { m_project->showExportDialog(format); });
+    }
+    // Texture formats need a paint texture (not vertex colours); nothing without a model.
+    connect(m_exportMenu, &QMenu::aboutToShow, this, [this] {
+        const bool hasModel = m_document->meshSerial() != 0;
+        for (QAction* action : m_exportMenu->actions()) {
+            if (action->isSeparator())
+                continue;
+            const auto format = core::ExportFormat(action->data().toInt());
+            action->setEnabled(hasModel &&
+                               (!core::isTextureFormat(format) || m_project->canExportTexture()));
+        }
+    });
+}
+
 void MainWindow::onLoadFailed(const QString& source, const QString& message) {
     stopProgress();
+    m_project->documentLoadFailed(source);
     if (!isBuiltin(source) && !QFileInfo(source).exists())
         m_recent.remove(source);
     statusBar()->showMessage(tr("Could not open %1").arg(displayName(source)), kStatusMessageMs);
@@ -1244,6 +1386,14 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh) {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+    finishStroke();
+    if (!m_project->maybeSave()) {
+        event->ignore();
+        return;
+    }
+    // Saved or discarded: nothing is left to recover.
+    m_project->waitForTasks();
+    m_project->discardRecovery();
     QSettings settings;
     settings.setValue(kGeometryKey, saveGeometry());
     settings.setValue(kStateKey, saveState());

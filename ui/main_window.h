@@ -15,6 +15,7 @@
 
 #include "core/document.h"
 #include "core/mesh.h"
+#include "core/project.h"
 #include "render/layer_compositor.h"
 #include "ui/preferences.h"
 #include "ui/recent_files.h"
@@ -39,6 +40,7 @@ class FillPanel;
 class LayerBuilder;
 class LayersPanel;
 class ModelLoader;
+class ProjectController;
 class RegionGraphPanel;
 class RegionTools;
 class SegmentationControls;
@@ -62,8 +64,10 @@ public:
     ~MainWindow() override;
 
     /**
-     * Opens a file path or "builtin:NAME" in the background. On success modelLoaded() follows;
-     * on failure loadFailed() and an error dialog, with the current model left as it was.
+     * Opens a file path (a model or a project) or "builtin:NAME" in the background, after asking
+     * to save unsaved changes (ProjectController::maybeSave; nothing happens if the user
+     * cancels). On success modelLoaded() follows; on failure loadFailed() and an error dialog,
+     * with the current model left as it was.
      */
     void openFile(const QString& source);
     /** What the command line asks for: the first file, or the default model when there is none. */
@@ -87,6 +91,21 @@ public:
     BrushPanel* brushPanel() const { return m_brushPanel; }
     ColorPanel* colorPanel() const { return m_colorPanel; }
     QUndoStack* undoStack() const { return m_undoStack; }
+    /** Save, export, unsaved-changes tracking, autosave and recovery. */
+    ProjectController* projectController() const { return m_project; }
+
+    /**
+     * The project state to save (ProjectController snapshots it): the document's share
+     * (core::captureProjectState) and what this window's panels hold. Panels that add state
+     * (colours, palette, pop-up settings) fill it in here and read it in applyProjectState().
+     */
+    core::ProjectState projectState() const;
+    /**
+     * Shows an opened project's state: document settings (core::applyProjectState) and the
+     * widgets that show them. Call right after the document's mesh was set (onLoaded does); what
+     * this window does not show yet is kept for the next save.
+     */
+    void applyProjectState(const core::ProjectState& state);
 
     /** The brush everywhere: the document's, the brush bar's and the panels'. */
     void setBrush(const core::Brush& brush);
@@ -125,8 +144,14 @@ public:
     bool isLoading() const;
     QStringList recentFiles() const { return m_recent.files(); }
 
-    /** Tests turn the modal error dialogs off; loadFailed() is emitted either way. */
+    /**
+     * Tests turn the modal dialogs off: errors are only reported by signals (loadFailed(), ...)
+     * and unsaved changes are discarded without asking.
+     */
     void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
+    bool errorDialogsEnabled() const { return m_errorDialogs; }
+    /** A warning box (window-modal, not blocking) unless dialogs are off. */
+    void showError(const QString& title, const QString& text, const QString& details);
 
     /** The translated name of a built-in model ("trefoil" → "Trefoil knot"). */
     static QString builtinLabel(const QString& name);
@@ -187,9 +212,11 @@ private:
     void updateRecentMenu();
     void showOpenDialog();
     void showAbout();
-    void showError(const QString& title, const QString& text, const QString& details);
+    void createProjectActions(QMenu* fileMenu);
+    void updateWindowTitle();
 
-    void onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh);
+    void onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                  std::shared_ptr<const core::ProjectState> state);
     void onLoadFailed(const QString& source, const QString& message);
     void onLoadCancelled(const QString& source);
     void startProgress(const QString& source);
@@ -261,6 +288,11 @@ private:
     QTimer m_progressTimer;
     QString m_source;
     bool m_errorDialogs = true;
+
+    ProjectController* m_project = nullptr;
+    /** The state last opened: keeps what no panel of this window shows yet (projectState()). */
+    core::ProjectState m_projectBase;
+    QMenu* m_exportMenu = nullptr;
 };
 
 } // namespace ui

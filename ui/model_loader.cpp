@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "core/mesh_io.h"
+#include "core/project.h"
 
 namespace ui {
 
@@ -25,6 +25,7 @@ struct ModelLoader::Job {
 
 struct ModelLoader::Outcome {
     std::optional<core::Mesh> mesh;
+    std::shared_ptr<const core::ProjectState> state;
     std::string error;
 };
 
@@ -58,13 +59,17 @@ void ModelLoader::load(const QString& source) {
                 raw->progress.store(fraction, std::memory_order_relaxed);
                 return !raw->cancel.load(std::memory_order_relaxed);
             };
-            core::Result<core::Mesh> result = core::loadMesh(path, progress);
-            if (result)
-                outcome->mesh.emplace(std::move(result).value());
-            else
+            core::Result<core::Project> result = core::loadProject(path, progress);
+            if (result) {
+                outcome->mesh.emplace(std::move(result->mesh));
+                if (result->state)
+                    outcome->state =
+                        std::make_shared<const core::ProjectState>(std::move(*result->state));
+            } else {
                 outcome->error = result.error();
+            }
         } catch (const std::bad_alloc&) {
-            // loadMesh reports its own errors; only an allocation failure can still escape.
+            // loadProject reports its own errors; only an allocation failure can still escape.
             outcome->mesh.reset();
             outcome->error = path + ": not enough memory";
         } catch (const std::exception& e) {
@@ -111,7 +116,8 @@ void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
     if (owned->cancel)
         emit cancelled(source);
     else if (outcome->mesh)
-        emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)));
+        emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)),
+                    outcome->state);
     else
         emit failed(source, QString::fromStdString(outcome->error));
 }

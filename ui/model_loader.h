@@ -9,13 +9,14 @@
 #include <QString>
 
 #include "core/mesh.h"
+#include "core/project.h"
 
 namespace ui {
 
 /**
- * Loads models with core::loadMesh on a worker thread and reports back on the GUI thread, so the
- * event loop never waits for a file. One load is current at a time: starting another cancels the
- * previous one and drops its result.
+ * Loads models and projects with core::loadProject on a worker thread and reports back on the GUI
+ * thread, so the event loop never waits for a file. One load is current at a time: starting
+ * another cancels the previous one and drops its result.
  */
 class ModelLoader : public QObject {
     Q_OBJECT
@@ -37,7 +38,9 @@ public:
     double progress() const;
 
 signals:
-    void loaded(const QString& source, std::shared_ptr<core::Mesh> mesh);
+    /** state is the project's (a LayerPaint project), or null for a plain model. */
+    void loaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                std::shared_ptr<const core::ProjectState> state);
     /** message comes from core and names the file. */
     void failed(const QString& source, const QString& message);
     void cancelled(const QString& source);

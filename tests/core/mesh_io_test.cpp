@@ -552,6 +552,28 @@ std::vector<BrokenCase> brokenCases() {
                             "more than the"));
     cases.push_back(written("empty-face.obj", "mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf\n",
                             "face without vertices"));
+    // Found by fuzzing (tests/fuzz): Assimp hangs or reads past its buffer on these.
+    cases.push_back(written("no-end-header.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                            "0\n1\n2\n",
+                            "does not end"));
+    cases.push_back(written("broken-element.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                            "element f00.0 0.0 0 0 1 1\nend_header\n3 0 1 2\n",
+                            "is not followed by what it needs"));
+    cases.push_back(written("fraction-count.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 0.0\nproperty float x\n"
+                            "end_header\n",
+                            "not a whole number"));
+    cases.push_back(written("no-properties.ply",
+                            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                            "property float y\nproperty float z\nelement face 1\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                            "without properties"));
+    cases.push_back(
+        written("short-face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 4\n", "says it has 4"));
+    cases.push_back(written("bad-index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n",
+                            "not one of the file's 3 vertices"));
     return cases;
 }
 

@@ -6,12 +6,20 @@
 
 #include <QImage>
 #include <QRgb>
+#include <QString>
+#include <QWidget>
+#include <QWindow>
 
 namespace ui_test {
 
 // Generous: llvmpipe under a loaded CI machine is slow, and a test waits only as long as needed.
 inline constexpr int kLoadTimeoutMs = 60000;
 inline constexpr int kBuildTimeoutMs = 30000;
+
+/** The title as shown (windowTitle() keeps the "[*]" unsaved-changes placeholder). */
+inline QString shownTitle(const QWidget& window) {
+    return window.windowHandle() ? window.windowHandle()->title() : QString();
+}
 
 /** The largest difference of the red, green and blue channels. */
 inline int channelDifference(QRgb a, QRgb b) {

@@ -115,7 +115,7 @@ TEST_F(ViewerTest, OpensFileFromCommandLineAndDrawsIt) {
     ASSERT_TRUE(openAndWait(*m_window, {boxPath()}));
 
     EXPECT_EQ(m_window->currentSource(), QFileInfo(boxPath()).absoluteFilePath());
-    EXPECT_EQ(m_window->windowTitle(), QStringLiteral("BoxTextured.glb — LayerPaint"));
+    EXPECT_EQ(shownTitle(*m_window), QStringLiteral("BoxTextured.glb — LayerPaint"));
     ASSERT_TRUE(viewport()->mesh());
     EXPECT_EQ(viewport()->mesh()->triangleCount(), 12u);
     EXPECT_EQ(viewport()->mesh()->vertexCount(), 24u);
@@ -171,7 +171,7 @@ TEST_F(ViewerTest, LoadWarningsShowInTheStatusBar) {
 TEST_F(ViewerTest, WithoutArgumentsOpensTheTrefoil) {
     ASSERT_TRUE(openAndWait(*m_window, {}));
     EXPECT_EQ(m_window->currentSource(), QString::fromLatin1(core::kDefaultModel));
-    EXPECT_EQ(m_window->windowTitle(), QStringLiteral("Trefoil knot — LayerPaint"));
+    EXPECT_EQ(shownTitle(*m_window), QStringLiteral("Trefoil knot — LayerPaint"));
     ASSERT_TRUE(viewport()->mesh());
     EXPECT_EQ(viewport()->mesh()->vertexCount(), 144000u);
     // The recent list only holds files.
@@ -194,7 +194,7 @@ TEST_F(ViewerTest, BuiltinMenuOpensModels) {
     action->trigger();
     ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
     EXPECT_EQ(loaded.first().first().toString(), QStringLiteral("builtin:hexring"));
-    EXPECT_EQ(m_window->windowTitle(), QStringLiteral("Hexagonal ring — LayerPaint"));
+    EXPECT_EQ(shownTitle(*m_window), QStringLiteral("Hexagonal ring — LayerPaint"));
 }
 
 TEST_F(ViewerTest, MiddleDragOrbitsTheCamera) {

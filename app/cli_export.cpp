@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `export`: the GUI's File ▸ Export headless. A project exports its paint; a plain model exports
+// as loaded (a format conversion) unless a paint target is asked for.
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/cli_commands.h"
+#include "core/document.h"
+#include "core/export.h"
+#include "core/project.h"
+
+namespace cli {
+
+namespace {
+
+double msSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+/** The format named, or the one the extension of out implies. */
+std::optional<core::ExportFormat> formatOf(const ExportArgs& args) {
+    if (!args.format.empty())
+        return core::parseExportFormat(args.format);
+    std::string ext = std::filesystem::path(args.out).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".glb")
+        return core::ExportFormat::Glb;
+    if (ext == ".obj")
+        return core::ExportFormat::Obj;
+    if (ext == ".ply")
+        return core::ExportFormat::Ply;
+    if (ext == ".png")
+        return core::ExportFormat::Png8;
+    if (ext == ".tif" || ext == ".tiff")
+        return core::ExportFormat::Tiff;
+    if (ext == ".exr")
+        return core::ExportFormat::Exr;
+    return std::nullopt;
+}
+
+} // namespace
+
+int runExport(const ExportArgs& args) {
+    const std::optional<core::ExportFormat> format = formatOf(args);
+    if (!format)
+        return fail(args.out + ": unknown export format (use --format glb, obj, ply, png, png16, "
+                               "tiff or exr, or one of their extensions)");
+    const auto start = std::chrono::steady_clock::now();
+    auto project = core::loadProject(args.input);
+    if (!project)
+        return fail(project.error());
+    core::Document doc;
+    doc.setMesh(std::move(project->mesh), args.input);
+    if (project->state) {
+        if (const core::Status s = core::applyProjectState(doc, *project->state); !s)
+            std::cerr << "layerpaint-cli: " << args.input << ": " << s.error() << '\n';
+    }
+    if (!args.target.empty() || args.resolution > 0) {
+        core::PaintTargetOptions options = doc.paintTargetOptions();
+        if (args.target == "texture")
+            options.kind = core::PaintTargetKind::Texture;
+        else if (args.target == "vertex-colors")
+            options.kind = core::PaintTargetKind::VertexColors;
+        if (args.resolution > 0)
+            options.resolution = args.resolution;
+        if (const core::Status s = doc.resetPaintTarget(options); !s)
+            return fail(args.input + ": " + s.error());
+    }
+    const double loadMs = msSince(start);
+
+    const auto exportStart = std::chrono::steady_clock::now();
+    core::Result<std::vector<std::string>> files = std::vector<std::string>{};
+    if (core::isTextureFormat(*format)) {
+        std::string error;
+        const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.paintTarget(&error));
+        if (!texture)
+            return fail(args.input + ": " +
+                        (error.empty() ? "there is no paint texture to export (the model is "
+                                         "painted with vertex colours)"
+                                       : error));
+        std::vector<core::Image> pages;
+        for (std::size_t i = 0; i < texture->pageCount(); ++i)
+            pages.push_back(texture->page(i));
+        files = core::exportTextures(args.out, *format, pages);
+    } else {
+        files = core::exportMesh(args.out, *format, doc.paintedMesh());
+    }
+    if (!files)
+        return fail(files.error());
+    const nlohmann::json out = {{"format", core::exportFormatName(*format)},
+                                {"files", *files},
+                                {"load_ms", loadMs},
+                                {"export_ms", msSince(exportStart)}};
+    std::cout << out.dump(2) << '\n';
+    return 0;
+}
+
+} // namespace cli

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The headless tool's projects and exports: `paint --out` writes a project with the script's end
+// state (the GUI's save path), a project given to `paint` continues where it stopped, and
+// `export` writes every format from a project.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/gltf_export.h"
+#include "core/mesh_io.h"
+#include "core/paint_target.h"
+#include "core/project.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliRun {
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class CliProject : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() / ("lpcli_project_" + std::to_string(::getpid()));
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    std::string file(const std::string& name) const { return (m_dir / name).string(); }
+
+    CliRun run(const std::vector<std::string>& args) const {
+        std::string command = std::string("'") + LAYERPAINT_CLI + "'";
+        for (const std::string& a : args)
+            command += " '" + a + "'";
+        command += " >'" + file("out.txt") + "' 2>'" + file("err.txt") + "'";
+        CliRun r;
+        const int status = std::system(command.c_str());
+        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        r.out = readFile(file("out.txt"));
+        r.err = readFile(file("err.txt"));
+        return r;
+    }
+
+    void writeScript(const std::string& name, const json& script) const {
+        std::ofstream(file(name)) << script.dump();
+    }
+
+    fs::path m_dir;
+};
+
+const json kFirstScript = {
+    {"size", "320x240"},
+    {"orbit", "20,15,1.6"},
+    {"target", {{"kind", "texture"}, {"resolution", 1024}}},
+    {"operations",
+     {{{"op", "set-mode"}, {"layer_aware", false}},
+      {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 9}, {"hardness", 0.75}},
+      {{"op", "stroke"}, {"points", {{120, 100}, {140, 120}, {160, 140}}}}}}};
+
+} // namespace
+
+TEST_F(CliProject, PaintSavesAProjectWithTheScriptsState) {
+    writeScript("a.json", kFirstScript);
+    const CliRun r = run({"paint", "builtin:trefoil", "--script", file("a.json"), "--out",
+                          file("knot.glb"), "--cpu"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    core::Result<core::Project> p = core::loadProject(file("knot.glb"));
+    ASSERT_TRUE(p.ok()) << p.error();
+    ASSERT_TRUE(p->state.has_value());
+    const core::ProjectState& s = *p->state;
+    EXPECT_EQ(s.formatVersion, core::kProjectFormatVersion);
+    EXPECT_EQ(s.source, "builtin:trefoil");
+    EXPECT_EQ(s.brush.radius, 9.0f);
+    EXPECT_EQ(s.brush.hardness, 0.75f);
+    EXPECT_NEAR(s.brush.color.r, 1.0f, 1e-6f);
+    EXPECT_FALSE(s.layerAware);
+    EXPECT_EQ(s.target.kind, core::PaintTargetKind::Texture);
+    EXPECT_EQ(s.target.resolution, 1024);
+    ASSERT_TRUE(s.camera.has_value());
+    EXPECT_EQ(s.camera->yawDegrees, 20.0f);
+    EXPECT_EQ(s.camera->pitchDegrees, 15.0f);
+    ASSERT_EQ(p->mesh.textures.size(), 1u);
+    EXPECT_EQ(p->mesh.textures[0].width, 1024);
+    // Red paint landed in the texture.
+    std::size_t red = 0;
+    for (std::size_t i = 0; i < p->mesh.textures[0].rgba.size(); i += 4)
+        red += p->mesh.textures[0].rgba[i] == 255 && p->mesh.textures[0].rgba[i + 1] == 0;
+    EXPECT_GT(red, 50u);
+
+    // Saving over it keeps the previous version as the backup.
+    const CliRun again = run({"paint", "builtin:trefoil", "--script", file("a.json"), "--out",
+                              file("knot.glb"), "--cpu"});
+    ASSERT_EQ(again.exitCode, 0) << again.err;
+    EXPECT_TRUE(fs::exists(file("knot.glb.bak")));
+}
+
+TEST_F(CliProject, PaintContinuesAProject) {
+    writeScript("a.json", kFirstScript);
+    ASSERT_EQ(run({"paint", "builtin:trefoil", "--script", file("a.json"), "--out", file("one.glb"),
+                   "--cpu"})
+                  .exitCode,
+              0);
+    // No brush settings, no orbit: the project's brush, mode, target and view carry on.
+    writeScript("b.json",
+                json{{"size", "320x240"},
+                     {"operations", {{{"op", "stroke"}, {"points", {{150, 90}, {170, 95}}}}}}});
+    const CliRun r = run(
+        {"paint", file("one.glb"), "--script", file("b.json"), "--out", file("two.glb"), "--cpu"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    core::Result<core::Project> one = core::loadProject(file("one.glb"));
+    core::Result<core::Project> two = core::loadProject(file("two.glb"));
+    ASSERT_TRUE(one.ok() && two.ok());
+    ASSERT_TRUE(two->state.has_value());
+    EXPECT_EQ(two->state->source, "builtin:trefoil");
+    EXPECT_EQ(two->state->brush.radius, 9.0f);
+    EXPECT_FALSE(two->state->layerAware);
+    EXPECT_EQ(two->state->camera->yawDegrees, 20.0f);
+    ASSERT_EQ(two->mesh.textures.size(), 1u);
+    const std::vector<std::uint8_t>& a = one->mesh.textures[0].rgba;
+    const std::vector<std::uint8_t>& b = two->mesh.textures[0].rgba;
+    ASSERT_EQ(a.size(), b.size());
+    std::size_t kept = 0, added = 0;
+    for (std::size_t i = 0; i < a.size(); i += 4) {
+        const bool wasRed = a[i] == 255 && a[i + 1] == 0;
+        const bool isRed = b[i] == 255 && b[i + 1] == 0;
+        kept += wasRed && isRed;
+        added += !wasRed && isRed;
+        EXPECT_FALSE(wasRed && !isRed) << "paint of the first session was lost";
+    }
+    EXPECT_GT(kept, 50u);
+    EXPECT_GT(added, 50u);
+}
+
+TEST_F(CliProject, ExportWritesEveryFormat) {
+    writeScript("a.json", kFirstScript);
+    ASSERT_EQ(run({"paint", "builtin:trefoil", "--script", file("a.json"), "--out",
+                   file("knot.glb"), "--cpu"})
+                  .exitCode,
+              0);
+    core::Result<core::Project> project = core::loadProject(file("knot.glb"));
+    ASSERT_TRUE(project.ok());
+    const core::Mesh& painted = project->mesh;
+    for (const char* name : {"export.glb", "export.obj", "export.ply"}) {
+        SCOPED_TRACE(name);
+        const CliRun r = run({"export", file("knot.glb"), "--out", file(name)});
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        const json report = json::parse(r.out);
+        EXPECT_GE(report["export_ms"].get<double>(), 0.0);
+        core::Result<core::Mesh> back = core::loadMesh(file(name));
+        ASSERT_TRUE(back.ok()) << back.error();
+        EXPECT_EQ(back->triangleCount(), painted.triangleCount());
+        if (std::string(name) != "export.ply") {
+            ASSERT_EQ(back->textures.size(), 1u);
+            EXPECT_TRUE(back->textures[0].rgba == painted.textures[0].rgba);
+        } else {
+            EXPECT_TRUE(back->hasColors());
+        }
+    }
+    EXPECT_TRUE(fs::exists(file("export.mtl")));
+    EXPECT_TRUE(fs::exists(file("export_1.png")));
+    for (const char* name : {"paint.png", "paint.tif", "paint.exr"}) {
+        const CliRun r = run({"export", file("knot.glb"), "--out", file(name)});
+        ASSERT_EQ(r.exitCode, 0) << name << ": " << r.err;
+        EXPECT_TRUE(fs::exists(file(name)));
+    }
+    const CliRun wide =
+        run({"export", file("knot.glb"), "--out", file("paint16.png"), "--format", "png16"});
+    ASSERT_EQ(wide.exitCode, 0) << wide.err;
+
+    // A plain model converts; a vertex-colour model has no texture to export.
+    ASSERT_EQ(run({"export", "builtin:hexring", "--out", file("ring.obj")}).exitCode, 0);
+    const CliRun none =
+        run({"export", "builtin:hexring", "--out", file("ring.png"), "--target", "vertex-colors"});
+    EXPECT_NE(none.exitCode, 0);
+    EXPECT_NE(none.err.find("vertex colours"), std::string::npos) << none.err;
+    const CliRun unknown = run({"export", "builtin:hexring", "--out", file("ring.xyz")});
+    EXPECT_NE(unknown.exitCode, 0);
+    EXPECT_NE(unknown.err.find("unknown export format"), std::string::npos) << unknown.err;
+}
+
+TEST_F(CliProject, NewerProjectIsRefusedByPaintAndExport) {
+    json state = core::projectStateToJson({});
+    state["version"] = core::kProjectFormatVersion + 5;
+    ASSERT_TRUE(core::saveGlb(file("future.glb"), core::loadMesh("builtin:row").value(),
+                              {{"layerpaint", state}})
+                    .ok());
+    writeScript("a.json", kFirstScript);
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"paint", file("future.glb"), "--script", file("a.json"), "--out",
+                                   file("x.glb"), "--cpu"},
+          std::vector<std::string>{"export", file("future.glb"), "--out", file("x.obj")}}) {
+        const CliRun r = run(args);
+        EXPECT_NE(r.exitCode, 0);
+        EXPECT_NE(r.err.find(file("future.glb") + ": was saved by a newer LayerPaint"),
+                  std::string::npos)
+            << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+    EXPECT_FALSE(fs::exists(file("x.glb")));
+    EXPECT_FALSE(fs::exists(file("x.obj")));
+}

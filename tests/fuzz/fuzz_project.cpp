@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// libFuzzer target for the project reader: a binary glTF goes through core::loadProject (extras
+// first, then the strict glTF load); anything else is read as the JSON of extras.layerpaint by
+// core::projectStateFromJson. A state that was read must survive being written and read again.
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/json_depth.h"
+#include "core/project.h"
+#include "tests/fuzz/fuzz_input.h"
+
+namespace {
+
+void checkRoundTrip(const core::ProjectState& state) {
+    const nlohmann::json written = core::projectStateToJson(state);
+    core::Result<core::ProjectState> again =
+        core::projectStateFromJson(nlohmann::json::parse(written.dump()));
+    if (!again || core::projectStateToJson(*again) != written)
+        __builtin_trap();
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size >= 4 && std::memcmp(data, "glTF", 4) == 0) {
+        const std::string path = fuzz::writeInput(data, size, ".glb");
+        core::Result<core::Project> project = core::loadProject(path, {}, fuzz::limits());
+        if (project && !project->mesh.validate().empty())
+            __builtin_trap();
+        if (project && project->state)
+            checkRoundTrip(*project->state);
+        return 0;
+    }
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    if (core::jsonNestingTooDeep(text))
+        return 0; // the readers refuse these before parsing
+    const nlohmann::json json = nlohmann::json::parse(text, nullptr, false);
+    if (json.is_discarded())
+        return 0;
+    std::vector<std::string> warnings;
+    core::Result<core::ProjectState> state = core::projectStateFromJson(json, &warnings);
+    if (state)
+        checkRoundTrip(*state);
+    return 0;
+}
