@@ -806,6 +806,70 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Sof&amp;ter Brush</source>
         <translation>&amp;Weicherer Pinsel</translation>
     </message>
+    <message>
+        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
+        <translation>Projekte und 3D-Modelle (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint-Projekte (*.glb)</translation>
+    </message>
+    <message>
+        <source>Open Project or Model</source>
+        <translation>Projekt oder Modell öffnen</translation>
+    </message>
+    <message>
+        <source>%1[*] — LayerPaint</source>
+        <translation>%1[*] — LayerPaint</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Save the painting and its settings as a project (.glb)</source>
+        <translation>Die Bemalung und ihre Einstellungen als Projekt (.glb) speichern</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Speichern &amp;unter …</translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation>Das Projekt unter einem anderen Namen speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>E&amp;xportieren</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Binary (.glb)…</source>
+        <translation>glTF &amp;binär (.glb) …</translation>
+    </message>
+    <message>
+        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
+        <translation>Wavefront &amp;OBJ (.obj + .mtl + Texturen) …</translation>
+    </message>
+    <message>
+        <source>Stanford &amp;PLY with Vertex Colours…</source>
+        <translation>Stanford &amp;PLY mit Vertexfarben …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as P&amp;NG (8-bit)…</source>
+        <translation>Maltextur als P&amp;NG (8 Bit) …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as PNG (&amp;16-bit)…</source>
+        <translation>Maltextur als PNG (&amp;16 Bit) …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as &amp;TIFF…</source>
+        <translation>Maltextur als &amp;TIFF …</translation>
+    </message>
+    <message>
+        <source>Paint Texture as Open&amp;EXR…</source>
+        <translation>Maltextur als Open&amp;EXR …</translation>
+    </message>
 </context>
 <context>
     <name>ui::PreferencesDialog</name>
@@ -899,70 +963,6 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Pen pressure (right) to stroke pressure (up)</source>
         <translation>Stiftdruck (rechts) zu Strichdruck (oben)</translation>
-    </message>
-    <message>
-        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
-        <translation>Projekte und 3D-Modelle (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
-    </message>
-    <message>
-        <source>LayerPaint projects (*.glb)</source>
-        <translation>LayerPaint-Projekte (*.glb)</translation>
-    </message>
-    <message>
-        <source>Open Project or Model</source>
-        <translation>Projekt oder Modell öffnen</translation>
-    </message>
-    <message>
-        <source>%1[*] — LayerPaint</source>
-        <translation>%1[*] — LayerPaint</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>&amp;Speichern</translation>
-    </message>
-    <message>
-        <source>Save the painting and its settings as a project (.glb)</source>
-        <translation>Die Bemalung und ihre Einstellungen als Projekt (.glb) speichern</translation>
-    </message>
-    <message>
-        <source>Save &amp;As…</source>
-        <translation>Speichern &amp;unter …</translation>
-    </message>
-    <message>
-        <source>Save the project under another name</source>
-        <translation>Das Projekt unter einem anderen Namen speichern</translation>
-    </message>
-    <message>
-        <source>&amp;Export</source>
-        <translation>E&amp;xportieren</translation>
-    </message>
-    <message>
-        <source>glTF &amp;Binary (.glb)…</source>
-        <translation>glTF &amp;binär (.glb) …</translation>
-    </message>
-    <message>
-        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
-        <translation>Wavefront &amp;OBJ (.obj + .mtl + Texturen) …</translation>
-    </message>
-    <message>
-        <source>Stanford &amp;PLY with Vertex Colours…</source>
-        <translation>Stanford &amp;PLY mit Vertexfarben …</translation>
-    </message>
-    <message>
-        <source>Paint Texture as P&amp;NG (8-bit)…</source>
-        <translation>Maltextur als P&amp;NG (8 Bit) …</translation>
-    </message>
-    <message>
-        <source>Paint Texture as PNG (&amp;16-bit)…</source>
-        <translation>Maltextur als PNG (&amp;16 Bit) …</translation>
-    </message>
-    <message>
-        <source>Paint Texture as &amp;TIFF…</source>
-        <translation>Maltextur als &amp;TIFF …</translation>
-    </message>
-    <message>
-        <source>Paint Texture as Open&amp;EXR…</source>
-        <translation>Maltextur als Open&amp;EXR …</translation>
     </message>
 </context>
 <context>

@@ -804,6 +804,70 @@ connectivity %3 ms, regions %4 ms
         <source>Sof&amp;ter Brush</source>
         <translation>更软的画笔(&amp;T)</translation>
     </message>
+    <message>
+        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
+        <translation>项目和三维模型 (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
+    </message>
+    <message>
+        <source>LayerPaint projects (*.glb)</source>
+        <translation>LayerPaint 项目 (*.glb)</translation>
+    </message>
+    <message>
+        <source>Open Project or Model</source>
+        <translation>打开项目或模型</translation>
+    </message>
+    <message>
+        <source>%1[*] — LayerPaint</source>
+        <translation>%1[*] — LayerPaint</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>保存(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Save the painting and its settings as a project (.glb)</source>
+        <translation>将绘画及其设置保存为项目 (.glb)</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>另存为(&amp;A)…</translation>
+    </message>
+    <message>
+        <source>Save the project under another name</source>
+        <translation>以另一个名称保存项目</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;X)</translation>
+    </message>
+    <message>
+        <source>glTF &amp;Binary (.glb)…</source>
+        <translation>glTF 二进制 (.glb)(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
+        <translation>Wavefront OBJ（.obj + .mtl + 纹理）(&amp;O)…</translation>
+    </message>
+    <message>
+        <source>Stanford &amp;PLY with Vertex Colours…</source>
+        <translation>带顶点颜色的 Stanford PLY(&amp;P)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as P&amp;NG (8-bit)…</source>
+        <translation>绘画纹理为 PNG（8 位）(&amp;N)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as PNG (&amp;16-bit)…</source>
+        <translation>绘画纹理为 PNG（16 位）(&amp;1)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as &amp;TIFF…</source>
+        <translation>绘画纹理为 TIFF(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Paint Texture as Open&amp;EXR…</source>
+        <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
+    </message>
 </context>
 <context>
     <name>ui::PreferencesDialog</name>
@@ -897,70 +961,6 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Pen pressure (right) to stroke pressure (up)</source>
         <translation>笔压（向右）到笔画压力（向上）</translation>
-    </message>
-    <message>
-        <source>Projects and 3D models (*.glb *.gltf *.obj *.ply *.stl *.off)</source>
-        <translation>项目和三维模型 (*.glb *.gltf *.obj *.ply *.stl *.off)</translation>
-    </message>
-    <message>
-        <source>LayerPaint projects (*.glb)</source>
-        <translation>LayerPaint 项目 (*.glb)</translation>
-    </message>
-    <message>
-        <source>Open Project or Model</source>
-        <translation>打开项目或模型</translation>
-    </message>
-    <message>
-        <source>%1[*] — LayerPaint</source>
-        <translation>%1[*] — LayerPaint</translation>
-    </message>
-    <message>
-        <source>&amp;Save</source>
-        <translation>保存(&amp;S)</translation>
-    </message>
-    <message>
-        <source>Save the painting and its settings as a project (.glb)</source>
-        <translation>将绘画及其设置保存为项目 (.glb)</translation>
-    </message>
-    <message>
-        <source>Save &amp;As…</source>
-        <translation>另存为(&amp;A)…</translation>
-    </message>
-    <message>
-        <source>Save the project under another name</source>
-        <translation>以另一个名称保存项目</translation>
-    </message>
-    <message>
-        <source>&amp;Export</source>
-        <translation>导出(&amp;X)</translation>
-    </message>
-    <message>
-        <source>glTF &amp;Binary (.glb)…</source>
-        <translation>glTF 二进制 (.glb)(&amp;B)…</translation>
-    </message>
-    <message>
-        <source>Wavefront &amp;OBJ (.obj + .mtl + textures)…</source>
-        <translation>Wavefront OBJ（.obj + .mtl + 纹理）(&amp;O)…</translation>
-    </message>
-    <message>
-        <source>Stanford &amp;PLY with Vertex Colours…</source>
-        <translation>带顶点颜色的 Stanford PLY(&amp;P)…</translation>
-    </message>
-    <message>
-        <source>Paint Texture as P&amp;NG (8-bit)…</source>
-        <translation>绘画纹理为 PNG（8 位）(&amp;N)…</translation>
-    </message>
-    <message>
-        <source>Paint Texture as PNG (&amp;16-bit)…</source>
-        <translation>绘画纹理为 PNG（16 位）(&amp;1)…</translation>
-    </message>
-    <message>
-        <source>Paint Texture as &amp;TIFF…</source>
-        <translation>绘画纹理为 TIFF(&amp;T)…</translation>
-    </message>
-    <message>
-        <source>Paint Texture as Open&amp;EXR…</source>
-        <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
     </message>
 </context>
 <context>
