@@ -106,6 +106,14 @@ std::string readLine(FILE* in) {
     return line;
 }
 
+/** What is left to read from in (for failure messages). */
+std::string rest(FILE* in) {
+    std::string text;
+    for (std::string line = readLine(in); !line.empty(); line = readLine(in))
+        text += " | " + line;
+    return text;
+}
+
 int finish(Child& child) {
     int status = 0;
     waitpid(child.pid, &status, 0);
@@ -173,19 +181,22 @@ TEST(SaveCrash, KilledSavesLeaveTheOldOrTheNewVersionComplete) {
         SCOPED_TRACE("kill " + std::to_string(i));
         Child child = spawnHelper({"loop", path});
         ASSERT_GT(child.pid, 0);
-        ASSERT_EQ(readLine(child.out), "ready");
+        const std::string ready = readLine(child.out);
+        ASSERT_EQ(ready, "ready") << "helper: " << ready << rest(child.out);
         // Half the kills count from the start, half from the end of the first or second save
         // (B over A, A over B); the delays spread over about one and a half saves, visiting
         // early and late points alike.
         for (int k = 0; i % 2 == 1 && k <= (i / 2) % 2; ++k) {
-            ASSERT_EQ(readLine(child.out).rfind("saved ", 0), 0u);
+            const std::string line = readLine(child.out);
+            ASSERT_EQ(line.rfind("saved ", 0), 0u) << "helper: " << line << rest(child.out);
         }
         const double fraction = double((i * 7) % kKills) / double(kKills);
         std::this_thread::sleep_for(std::chrono::microseconds(long(fraction * 1.5 * saveUs)));
         kill(child.pid, SIGKILL);
+        const std::string output = rest(child.out);
         const int status = finish(child);
         ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL)
-            << "the helper ended by itself (status " << status << ")";
+            << "the helper ended by itself (status " << status << "): " << output;
 
         std::string why;
         const int version = whichVersion(path, versions, why);
