@@ -573,6 +573,9 @@ std::string makeBackup(const fs::path& file, const fs::path& backup, int mode) {
         return "no backup of the previous file can be kept as " + backup.string() + " (" +
                errnoText(err) + ")";
     }
+    // When the backup already was a link to the file (a save killed between making the backup
+    // and replacing the file), rename() does nothing and leaves the temporary link: remove it.
+    ::unlink(temporary.c_str());
     return {};
 }
 

@@ -17,6 +17,7 @@
 
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -463,6 +464,20 @@ TEST(GltfExportTest, SaveKeepsOneBackup) {
     EXPECT_TRUE(core::loadMesh(dir.file("restored.glb")).ok());
     fs::remove(dir.path() / "restored.glb");
     // No temporary files are left behind.
+    EXPECT_EQ(folderNames(dir.path()), (std::vector<std::string>{"model.glb", "model.glb.bak"}));
+}
+
+TEST(GltfExportTest, SaveAfterACrashBetweenBackupAndReplaceLeavesNoTemporary) {
+    // A save killed after making the backup (a hard link to the file) and before replacing the
+    // file leaves the backup and the file as one inode; the next save must still clean up.
+    TempDir dir;
+    const std::string path = dir.file("model.glb");
+    ASSERT_TRUE(core::saveGlb(path, core::makeTrefoil(20, 8)).ok());
+    const std::string first = readFile(path);
+    ASSERT_EQ(::link(path.c_str(), (path + ".bak").c_str()), 0);
+    ASSERT_TRUE(core::saveGlb(path, makeColoredMesh()).ok());
+    EXPECT_EQ(readFile(path + ".bak"), first);
+    EXPECT_NE(readFile(path), first);
     EXPECT_EQ(folderNames(dir.path()), (std::vector<std::string>{"model.glb", "model.glb.bak"}));
 }
 

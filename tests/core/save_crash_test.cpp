@@ -218,7 +218,10 @@ TEST(SaveCrash, KilledSavesLeaveTheOldOrTheNewVersionComplete) {
     }
     // The next save clears what killed saves left behind.
     ASSERT_TRUE(core::saveProject(path, versions[1].mesh, versions[1].state).ok());
-    EXPECT_TRUE(temporaries(dir.path()).empty());
+    std::string left;
+    for (const fs::path& t : temporaries(dir.path()))
+        left += " " + t.filename().string();
+    EXPECT_TRUE(left.empty()) << "left behind:" << left;
     std::printf("[ crashes  ] one save %.1f ms; %d kills: %d left version A, %d version B, %d "
                 "left a temporary file, %d had a backup\n",
                 saveUs / 1000.0, kKills, seen[0], seen[1], midSave, backups);
