@@ -20,31 +20,13 @@
 #include "core/mesh_io.h"
 #include "core/paint_target.h"
 #include "core/project.h"
+#include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "layerpaint-exp-XXXXXX").string();
-        if (mkdtemp(pattern.data()) != nullptr)
-            m_path = pattern;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        if (!m_path.empty())
-            fs::remove_all(m_path, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return m_path; }
-    std::string file(const std::string& name) const { return (m_path / name).string(); }
-
-private:
-    fs::path m_path;
-};
+using core_test::TempDir;
 
 /** The trefoil painted with a few strokes into target kind (CPU capture). */
 core::Mesh paintedTrefoil(core::PaintTargetKind kind) {

@@ -25,10 +25,13 @@
 #include <glm/geometric.hpp>
 
 #include "core/mesh_io.h"
+#include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using core_test::readFile;
 
 const fs::path kModels = LAYERPAINT_ASSIMP_MODELS;
 
@@ -61,11 +64,6 @@ void writeFile(const fs::path& path, const std::string& bytes) {
     fs::create_directories(path.parent_path());
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
 std::string base64(const std::string& bytes) {

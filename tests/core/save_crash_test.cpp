@@ -25,10 +25,13 @@
 
 #include "core/project.h"
 #include "tests/core/save_crash_versions.h"
+#include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;
 
 namespace {
+
+using core_test::readFile;
 
 const char* const kHelper = LAYERPAINT_SAVE_CRASH_HELPER;
 
@@ -53,11 +56,6 @@ public:
 private:
     fs::path m_path;
 };
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 /** A child process with its stdout on a pipe. */
 struct Child {
