@@ -11,9 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
-#include "core/document.h"
-#include "core/layers.h"
-#include "core/mesh_io.h"
+#include "core/document/document.h"
+#include "core/io/mesh_io.h"
+#include "core/layers/layers.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 #include "render/gpu_connectivity.h"

@@ -10,11 +10,11 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
-#include "core/camera.h"
-#include "core/document.h"
-#include "core/image_write.h"
-#include "core/layers.h"
-#include "core/mesh_io.h"
+#include "core/document/document.h"
+#include "core/io/image_write.h"
+#include "core/io/mesh_io.h"
+#include "core/layers/layers.h"
+#include "core/model/camera.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 #include "render/gpu_connectivity.h"

@@ -7,10 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/camera.h"
-#include "core/layers.h"
-#include "core/mesh.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/layers/layers.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 
 namespace core {
 class Document;

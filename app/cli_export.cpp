@@ -10,9 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
-#include "core/document.h"
-#include "core/export.h"
-#include "core/project.h"
+#include "core/document/document.h"
+#include "core/io/export.h"
+#include "core/io/project_file.h"
 
 namespace cli {
 

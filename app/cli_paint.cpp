@@ -11,11 +11,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
-#include "core/document.h"
-#include "core/flood_fill.h"
-#include "core/gltf_export.h"
-#include "core/mesh_io.h"
-#include "core/project.h"
+#include "core/document/document.h"
+#include "core/io/gltf_export.h"
+#include "core/io/mesh_io.h"
+#include "core/io/project_file.h"
+#include "core/paint/flood_fill.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 

@@ -12,9 +12,9 @@
 #include <QSurfaceFormat>
 #include <QTranslator>
 
-#include "ui/main_window.h"
-#include "ui/project_controller.h"
-#include "ui/viewport.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/project_controller.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

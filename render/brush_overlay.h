@@ -7,7 +7,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/result.h"
+#include "core/base/result.h"
 
 namespace render {
 

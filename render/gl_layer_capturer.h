@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/layers.h"
+#include "core/layers/layers.h"
 #include "render/layer_capture.h"
 
 namespace render {

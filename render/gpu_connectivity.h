@@ -5,10 +5,10 @@
 #include <optional>
 #include <string_view>
 
-#include "core/connectivity.h"
-#include "core/layer_stack.h"
-#include "core/layers.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/layers/connectivity.h"
+#include "core/layers/layer_stack.h"
+#include "core/layers/layers.h"
 
 namespace render {
 

@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "core/camera.h"
-#include "core/layer_stack.h"
-#include "core/mesh.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/layers/layer_stack.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 
 namespace render {
 

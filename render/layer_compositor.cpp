@@ -16,7 +16,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/connectivity.h"
+#include "core/layers/connectivity.h"
 #include "render/paint_texture.h"
 #include "render/shader_library.h"
 

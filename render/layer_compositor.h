@@ -8,11 +8,11 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/camera.h"
-#include "core/layer_stack.h"
-#include "core/layers.h"
-#include "core/mesh.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/layers/layer_stack.h"
+#include "core/layers/layers.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 
 namespace render {
 

@@ -7,9 +7,9 @@
 
 #include <glm/vec4.hpp>
 
-#include "core/camera.h"
-#include "core/mesh.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 
 namespace render {
 

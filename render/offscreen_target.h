@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "core/mesh.h"
-#include "core/result.h"
+#include "core/base/result.h"
+#include "core/model/mesh.h"
 
 namespace render {
 

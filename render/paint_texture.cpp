@@ -7,7 +7,7 @@
 
 #include <epoxy/gl.h>
 
-#include "core/paint_target.h"
+#include "core/paint/paint_target.h"
 
 namespace render {
 

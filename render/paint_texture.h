@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/mesh.h"
+#include "core/model/mesh.h"
 
 namespace render {
 

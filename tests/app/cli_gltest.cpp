@@ -12,11 +12,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/builtin_models.h"
-#include "core/camera.h"
-#include "core/cpu_capture.h"
-#include "core/layers.h"
-#include "core/mesh_io.h"
+#include "core/io/mesh_io.h"
+#include "core/layers/cpu_capture.h"
+#include "core/layers/layers.h"
+#include "core/model/builtin_models.h"
+#include "core/model/camera.h"
 
 namespace {
 

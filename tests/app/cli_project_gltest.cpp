@@ -13,10 +13,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/gltf_export.h"
-#include "core/mesh_io.h"
-#include "core/paint_target.h"
-#include "core/project.h"
+#include "core/io/gltf_export.h"
+#include "core/io/mesh_io.h"
+#include "core/io/project_file.h"
+#include "core/paint/paint_target.h"
 
 namespace {
 

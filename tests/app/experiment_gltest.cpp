@@ -11,9 +11,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/builtin_models.h"
-#include "core/camera.h"
-#include "core/mesh_io.h"
+#include "core/io/mesh_io.h"
+#include "core/model/builtin_models.h"
+#include "core/model/camera.h"
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/vec2.hpp>
 
-#include "core/camera.h"
-#include "core/mesh.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 
 namespace core_test {
 

@@ -10,7 +10,7 @@
 
 #include <unistd.h>
 
-#include "core/mesh_io.h"
+#include "core/io/mesh_io.h"
 
 namespace fuzz {
 

@@ -10,8 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/json_depth.h"
-#include "core/project.h"
+#include "core/io/json_depth.h"
+#include "core/io/project_file.h"
 #include "tests/fuzz/fuzz_input.h"
 
 namespace {

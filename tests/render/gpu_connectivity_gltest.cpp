@@ -14,12 +14,12 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/builtin_models.h"
-#include "core/camera.h"
-#include "core/connectivity.h"
-#include "core/cpu_capture.h"
-#include "core/layer_stack.h"
-#include "core/mesh_topology.h"
+#include "core/layers/connectivity.h"
+#include "core/layers/cpu_capture.h"
+#include "core/layers/layer_stack.h"
+#include "core/model/builtin_models.h"
+#include "core/model/camera.h"
+#include "core/model/mesh_topology.h"
 #include "render/gl_context.h"
 #include "render/gpu_connectivity.h"
 #include "render/layer_capture.h"

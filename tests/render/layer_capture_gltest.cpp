@@ -15,10 +15,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "core/builtin_models.h"
-#include "core/camera.h"
-#include "core/cpu_capture.h"
-#include "core/layer_stack.h"
+#include "core/layers/cpu_capture.h"
+#include "core/layers/layer_stack.h"
+#include "core/model/builtin_models.h"
+#include "core/model/camera.h"
 #include "render/gl_context.h"
 #include "render/layer_capture.h"
 #include "render/mesh_renderer.h"

@@ -8,8 +8,8 @@
 
 #include "tests/render/gl_test.h"
 
-#include "core/builtin_models.h"
-#include "core/camera.h"
+#include "core/model/builtin_models.h"
+#include "core/model/camera.h"
 #include "render/gl_context.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"

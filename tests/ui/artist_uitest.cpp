@@ -34,16 +34,16 @@
 #include <optional>
 #include <vector>
 
-#include "core/document.h"
-#include "core/paint_target.h"
+#include "core/document/document.h"
+#include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/brush_panel.h"
-#include "ui/brush_toolbar.h"
-#include "ui/color_panel.h"
-#include "ui/layer_builder.h"
-#include "ui/main_window.h"
-#include "ui/preferences.h"
-#include "ui/viewport.h"
+#include "ui/panels/brush_panel.h"
+#include "ui/panels/brush_toolbar.h"
+#include "ui/panels/color_panel.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/preferences.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

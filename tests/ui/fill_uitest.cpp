@@ -21,14 +21,14 @@
 #include <memory>
 #include <vector>
 
-#include "core/document.h"
-#include "core/paint_target.h"
+#include "core/document/document.h"
+#include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/fill_panel.h"
-#include "ui/layer_builder.h"
-#include "ui/main_window.h"
-#include "ui/tool.h"
-#include "ui/viewport.h"
+#include "ui/panels/fill_panel.h"
+#include "ui/shell/main_window.h"
+#include "ui/tools/tool.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

@@ -23,12 +23,12 @@
 #include <memory>
 #include <vector>
 
-#include "core/document.h"
-#include "core/paint_target.h"
+#include "core/document/document.h"
+#include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/layer_builder.h"
-#include "ui/main_window.h"
-#include "ui/viewport.h"
+#include "ui/shell/main_window.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

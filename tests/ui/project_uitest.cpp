@@ -31,16 +31,16 @@
 #include <memory>
 #include <vector>
 
-#include "core/document.h"
-#include "core/gltf_export.h"
-#include "core/mesh_io.h"
-#include "core/paint_target.h"
-#include "core/project.h"
+#include "core/document/document.h"
+#include "core/io/gltf_export.h"
+#include "core/io/mesh_io.h"
+#include "core/io/project_file.h"
+#include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/layer_builder.h"
-#include "ui/main_window.h"
-#include "ui/project_controller.h"
-#include "ui/viewport.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/project_controller.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

@@ -19,13 +19,13 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/document.h"
+#include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/hidden_regions_panel.h"
-#include "ui/layer_builder.h"
-#include "ui/main_window.h"
-#include "ui/region_tools.h"
-#include "ui/viewport.h"
+#include "ui/panels/hidden_regions_panel.h"
+#include "ui/shell/main_window.h"
+#include "ui/tools/region_tools.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

@@ -31,16 +31,16 @@
 #include <memory>
 #include <set>
 
-#include "core/document.h"
+#include "core/document/document.h"
 #include "render/layer_compositor.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/layer_builder.h"
-#include "ui/layers_panel.h"
-#include "ui/main_window.h"
-#include "ui/region_graph_panel.h"
-#include "ui/segmentation_controls.h"
-#include "ui/tool.h"
-#include "ui/viewport.h"
+#include "ui/panels/layers_panel.h"
+#include "ui/panels/region_graph_panel.h"
+#include "ui/panels/segmentation_controls.h"
+#include "ui/shell/main_window.h"
+#include "ui/tools/tool.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 
-#include "ui/viewport.h"
+#include "ui/view/viewport.h"
 
 int main(int argc, char* argv[]) {
     ::testing::InitGoogleTest(&argc, argv);

@@ -29,12 +29,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/builtin_models.h"
+#include "core/model/builtin_models.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/main_window.h"
-#include "ui/model_loader.h"
-#include "ui/recent_files.h"
-#include "ui/viewport.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/model_loader.h"
+#include "ui/shell/recent_files.h"
+#include "ui/view/viewport.h"
 
 namespace {
 

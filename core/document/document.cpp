@@ -1,0 +1,399 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/document/document.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include <glm/geometric.hpp>
+
+#include "core/layers/connectivity.h"
+
+namespace core {
+
+Document::Document()
+    : m_mesh(std::make_shared<const Mesh>()), m_topology(std::make_shared<const MeshTopology>()) {}
+
+void Document::setMesh(Mesh mesh, std::string name) {
+    auto topology = std::make_shared<const MeshTopology>(buildMeshTopology(mesh));
+    m_mesh = std::make_shared<const Mesh>(std::move(mesh));
+    m_topology = std::move(topology);
+    m_name = std::move(name);
+    ++m_meshSerial;
+    clearLayers();
+    m_paintTarget.reset();
+    m_history.clear();
+    m_camera.frame(m_mesh->bounds());
+}
+
+void Document::clearLayers() {
+    if (m_tracker.inStroke())
+        endStroke();
+    m_tracker.clearLayers();
+    m_layers.reset();
+    m_order = {};
+    m_ranks.clear();
+    m_fragmentHidden.clear();
+    m_tracker.setHiddenFragments({});
+}
+
+void Document::layersChanged() {
+    m_tracker.setLayers(*m_layers);
+    m_order = RegionOrder(m_layers->segmentation.graph);
+    ++m_layersSerial;
+    orderChanged();
+    m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
+}
+
+void Document::setRegionOrder(RegionOrder order) {
+    if (!m_layers || order.regionCount() != m_layers->segmentation.graph.regions.size())
+        return;
+    m_order = std::move(order);
+    orderChanged();
+}
+
+void Document::orderChanged() {
+    m_ranks = m_order.ranks();
+    ++m_orderSerial;
+    // Hidden regions take no paint: the tracker skips their fragments.
+    const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+    const bool anyHidden = std::any_of(m_ranks.begin(), m_ranks.end(),
+                                       [](std::uint32_t rank) { return rank == kNone; });
+    m_fragmentHidden.clear();
+    if (anyHidden) {
+        m_fragmentHidden.resize(region.size());
+        for (std::size_t f = 0; f < region.size(); ++f)
+            m_fragmentHidden[f] = std::uint8_t(m_order.isHidden(region[f]));
+    }
+    m_tracker.setHiddenFragments(m_fragmentHidden);
+}
+
+std::optional<std::size_t> Document::pixelIndex(glm::vec2 pixel) const {
+    if (!m_layers)
+        return std::nullopt;
+    const LayerStack& stack = m_layers->stack;
+    // Compared as floats first: converting a huge or NaN float to an integer is undefined.
+    if (!(pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < float(stack.width) &&
+          pixel.y < float(stack.height)))
+        return std::nullopt;
+    const auto x = std::size_t(pixel.x), y = std::size_t(pixel.y);
+    if (x >= std::size_t(stack.width) || y >= std::size_t(stack.height))
+        return std::nullopt;
+    return y * std::size_t(stack.width) + x;
+}
+
+std::uint32_t Document::popUpAt(glm::vec2 pixel) {
+    const auto index = pixelIndex(pixel);
+    if (!index)
+        return kNone;
+    const std::vector<std::uint32_t> regions =
+        regionsAtPixel(m_layers->stack, m_layers->segmentation.region, *index);
+    const std::uint32_t region = m_order.cycleAt(regions);
+    if (region != kNone)
+        orderChanged();
+    return region;
+}
+
+bool Document::popUpRegion(std::uint32_t region) {
+    if (region >= m_order.regionCount())
+        return false;
+    m_order.popUpWithNeighbours(region);
+    orderChanged();
+    return true;
+}
+
+std::size_t Document::hideAlong(glm::vec2 a, glm::vec2 b, float radius,
+                                std::span<const std::uint32_t> ranks) {
+    if (!m_layers || !(radius >= 0.0f))
+        return 0;
+    const std::vector<std::uint32_t> regions =
+        visibleRegionsAlong(m_layers->stack, m_layers->segmentation.region, ranks, a, b, radius);
+    std::size_t hidden = 0;
+    for (const std::uint32_t region : regions) {
+        if (!m_order.isHidden(region)) {
+            m_order.hide(region);
+            ++hidden;
+        }
+    }
+    if (hidden > 0)
+        orderChanged();
+    return hidden;
+}
+
+std::optional<glm::vec3> Document::surfacePoint(glm::vec2 pixel) const {
+    const auto index = pixelIndex(pixel);
+    if (!index)
+        return std::nullopt;
+    const std::uint32_t fragment = visibleFragment(*index);
+    if (fragment == kNone)
+        return std::nullopt;
+    const LayerStack& stack = m_layers->stack;
+    const glm::vec2 centre(float(*index % std::size_t(stack.width)) + 0.5f,
+                           float(*index / std::size_t(stack.width)) + 0.5f);
+    return m_layers->view.unproject(centre, stack.depth[fragment]);
+}
+
+std::uint32_t Document::visibleFragment(std::size_t pixel) const {
+    if (!m_layers)
+        return kNone;
+    return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
+}
+
+std::optional<glm::vec4> Document::pickColor(std::size_t pixel) {
+    if (!m_layers || pixel >= m_layers->stack.pixelCount())
+        return std::nullopt;
+    const std::uint32_t fragment = visibleFragment(pixel);
+    if (fragment == kNone)
+        return std::nullopt;
+    const std::uint32_t triangle = m_layers->stack.triangle[fragment];
+    if (triangle >= m_mesh->triangleCount())
+        return std::nullopt;
+    PaintTarget* target = paintTarget();
+    if (!target)
+        return std::nullopt;
+    // Where the ray through the pixel centre meets the triangle's plane, in view space, as
+    // barycentric weights. The capture covered this pixel centre with this triangle, so the
+    // point lies on it (up to rounding; colorAt drops small negative weights).
+    const View& view = m_layers->view;
+    const int width = m_layers->stack.width;
+    const float px = float(pixel % std::size_t(width)) + 0.5f;
+    const float py = float(pixel / std::size_t(width)) + 0.5f;
+    const PixelRays rays = PixelRays::fromView(view);
+    const glm::dvec3 origin(rays.origin(px, py)), direction(rays.direction(px, py));
+    glm::dvec3 corner[3];
+    for (int c = 0; c < 3; ++c) {
+        const glm::vec3& p =
+            m_mesh->positions[m_mesh->indices[3 * std::size_t(triangle) + std::size_t(c)]];
+        corner[c] = glm::dvec3(view.view * glm::vec4(p, 1.0f));
+    }
+    const glm::dvec3 e1 = corner[1] - corner[0], e2 = corner[2] - corner[0];
+    const glm::dvec3 normal = glm::cross(e1, e2);
+    const double area2 = glm::dot(normal, normal);
+    const double along = glm::dot(normal, direction);
+    glm::vec3 weights(1.0f / 3.0f);
+    if (area2 > 0.0 && along != 0.0) {
+        const double t = glm::dot(normal, corner[0] - origin) / along;
+        const glm::dvec3 hit = origin + t * direction;
+        const glm::dvec3 d = hit - corner[0];
+        const double w1 = glm::dot(glm::cross(d, e2), normal) / area2;
+        const double w2 = glm::dot(glm::cross(e1, d), normal) / area2;
+        weights = glm::vec3(float(1.0 - w1 - w2), float(w1), float(w2));
+    }
+    return target->colorAt(triangle, weights);
+}
+
+void Document::setLayerOptions(const LayerOptions& options) {
+    const bool recapture = options.cullBackFaces != m_layerOptions.cullBackFaces;
+    m_layerOptions = options;
+    if (recapture) {
+        clearLayers();
+    } else if (m_layers) {
+        if (m_tracker.inStroke())
+            endStroke();
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
+        layersChanged();
+    }
+}
+
+Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
+    auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions, m_engine);
+    if (!layers)
+        return Error{layers.error()};
+    clearLayers();
+    m_layers = std::make_unique<Layers>(std::move(layers).value());
+    layersChanged();
+    return {};
+}
+
+bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
+    const LayerOptions& o = layers.options;
+    if (meshSerial != m_meshSerial || o.cullBackFaces != m_layerOptions.cullBackFaces)
+        return false;
+    const bool resegment = o.threshold != m_layerOptions.threshold || o.test != m_layerOptions.test;
+    clearLayers();
+    m_layers = std::make_unique<Layers>(std::move(layers));
+    // The threshold may have moved while the worker ran: bring the result up to date.
+    if (resegment)
+        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
+    layersChanged();
+    return true;
+}
+
+PaintTarget* Document::paintTarget(std::string* error) {
+    if (!m_paintTarget) {
+        auto target = makePaintTarget(m_mesh, m_topology, m_paintOptions);
+        if (!target) {
+            if (error)
+                *error = target.error();
+            return nullptr;
+        }
+        m_paintTarget = std::move(target).value();
+    }
+    return m_paintTarget.get();
+}
+
+PaintTargetKind Document::paintTargetKind() const {
+    if (m_paintTarget)
+        return m_paintTarget->kind();
+    if (m_paintOptions.kind)
+        return *m_paintOptions.kind;
+    return m_mesh->hasUvs() ? PaintTargetKind::Texture : PaintTargetKind::VertexColors;
+}
+
+Status Document::resetPaintTarget(const PaintTargetOptions& options) {
+    auto target = makePaintTarget(m_mesh, m_topology, options);
+    if (!target)
+        return Error{target.error()};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_paintOptions = options;
+    m_paintTarget = std::move(target).value();
+    m_history.clear();
+    return {};
+}
+
+Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    std::string error;
+    PaintTarget* target = paintTarget(&error);
+    if (!target)
+        return Error{error};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_dabs.clear();
+    m_tracker.startStroke(point, m_brush, m_dabs);
+    target->beginStroke(m_brush);
+    paintDabs(changes);
+    return {};
+}
+
+void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    if (!m_tracker.inStroke() || !m_paintTarget)
+        return;
+    m_dabs.clear();
+    m_tracker.moveStroke(point, m_dabs);
+    paintDabs(changes);
+}
+
+void Document::paintDabs(PaintChanges& changes) {
+    const auto start = std::chrono::steady_clock::now();
+    for (const Dab& dab : m_dabs) {
+        if (m_autoPopUp && m_tracker.layerAware())
+            popUpUnder(dab);
+        const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
+        changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
+                              dabChanges.texels.end());
+        changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
+                                dabChanges.vertices.end());
+    }
+    m_dabStats = {m_dabs.size(), std::chrono::duration<double, std::milli>(
+                                     std::chrono::steady_clock::now() - start)
+                                     .count()};
+}
+
+void Document::popUpUnder(const Dab& dab) {
+    const auto index = pixelIndex(dab.center);
+    if (!index || dab.layer == 0)
+        return;
+    const std::uint32_t fragment = m_layers->stack.fragment(*index, dab.layer);
+    if (fragment == kNone || fragment == visibleFragment(*index))
+        return;
+    const std::uint32_t region = m_layers->segmentation.region[fragment];
+    if (region >= m_order.regionCount() || m_order.isHidden(region))
+        return;
+    m_order.popUp(region);
+    orderChanged();
+}
+
+void Document::endStroke() {
+    m_tracker.endStroke();
+    if (m_paintTarget && m_paintTarget->inStroke())
+        m_history.push(m_paintTarget->endStroke());
+}
+
+Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    std::string error;
+    PaintTarget* target = paintTarget(&error);
+    if (!target)
+        return Error{error};
+    if (m_tracker.inStroke())
+        endStroke();
+    const LayerStack& stack = m_layers->stack;
+    const auto pixel = pixelIndex(position);
+    if (!pixel)
+        return {};
+    const std::uint32_t fragment = visibleFragment(*pixel);
+    if (fragment == kNone || fragment >= stack.fragmentCount())
+        return {};
+    const std::uint32_t triangle = stack.triangle[fragment];
+
+    // The brush's colour and opacity at full weight everywhere it fills.
+    Brush brush = m_brush;
+    brush.hardness = 1.0f;
+    brush.flow = 1.0f;
+    brush.eraser = false;
+    target->beginStroke(brush);
+    switch (mode) {
+    case FillMode::Region: {
+        const std::uint32_t region = fragment < m_layers->segmentation.region.size()
+                                         ? m_layers->segmentation.region[fragment]
+                                         : kNone;
+        changes = target->paint(*m_layers, regionFillDab(*m_layers, region, brush.opacity));
+        break;
+    }
+    case FillMode::Surface:
+        changes = target->paintElements(
+            triangleElements(*target, componentTriangles(*m_topology, triangle)));
+        break;
+    case FillMode::Color:
+        if (const auto point = surfacePointAt(*m_mesh, m_layers->view, triangle, position))
+            changes = target->paintElements(
+                similarColorElements(*target, *m_topology, triangle, *point, tolerance));
+        break;
+    }
+    m_history.push(target->endStroke());
+    return {};
+}
+
+bool Document::undo(PaintChanges& changes) {
+    changes.clear();
+    if (m_tracker.inStroke())
+        endStroke();
+    const TileUndoRecord* record = m_paintTarget ? m_history.undo(*m_paintTarget) : nullptr;
+    if (record)
+        changes = m_paintTarget->changes(*record);
+    return record != nullptr;
+}
+
+bool Document::redo(PaintChanges& changes) {
+    changes.clear();
+    if (m_tracker.inStroke())
+        endStroke();
+    const TileUndoRecord* record = m_paintTarget ? m_history.redo(*m_paintTarget) : nullptr;
+    if (record)
+        changes = m_paintTarget->changes(*record);
+    return record != nullptr;
+}
+
+Mesh Document::paintedMesh() const {
+    Mesh mesh = *m_mesh;
+    if (!m_paintTarget)
+        return mesh;
+    mesh.materials = m_paintTarget->drawMaterials();
+    if (const auto* texture = dynamic_cast<const TextureTarget*>(m_paintTarget.get())) {
+        mesh.textures.clear();
+        for (std::size_t i = 0; i < texture->pageCount(); ++i)
+            mesh.textures.push_back(texture->page(i));
+        mesh.colors.clear(); // baked into the pages
+    } else if (const auto* colors = dynamic_cast<const VertexColorTarget*>(m_paintTarget.get())) {
+        mesh.colors = colors->colors();
+    }
+    return mesh;
+}
+
+} // namespace core

@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+
+#include "core/layers/layers.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
+#include "core/model/mesh_topology.h"
+#include "core/paint/dab.h"
+#include "core/paint/flood_fill.h"
+#include "core/paint/paint_target.h"
+#include "core/paint/stroke_tracker.h"
+#include "core/paint/undo_tiles.h"
+#include "core/regions/region_order.h"
+
+namespace core {
+
+/**
+ * The controller (DESIGN.md §2): the open model, its camera, the current view's layers and the
+ * operations on them. The GUI and the headless tool drive the same object. The mesh and its
+ * topology are immutable once set and shared, so worker threads can read them while the GUI
+ * goes on.
+ */
+class Document {
+public:
+    Document();
+    // The stroke tracker refers back to this object.
+    Document(const Document&) = delete;
+    Document& operator=(const Document&) = delete;
+
+    /** Replaces the model (its topology is computed here); drops the layers, frames the camera. */
+    void setMesh(Mesh mesh, std::string name);
+    const Mesh& mesh() const { return *m_mesh; }
+    std::shared_ptr<const Mesh> sharedMesh() const { return m_mesh; }
+    const MeshTopology& topology() const { return *m_topology; }
+    std::shared_ptr<const MeshTopology> sharedTopology() const { return m_topology; }
+    const std::string& name() const { return m_name; }
+    /** Changes whenever the mesh is replaced. */
+    std::uint64_t meshSerial() const { return m_meshSerial; }
+
+    Camera& camera() { return m_camera; }
+    const Camera& camera() const { return m_camera; }
+
+    const LayerOptions& layerOptions() const { return m_layerOptions; }
+    /**
+     * Sets the build_layers options. A new threshold or connection test re-segments the current
+     * layers at once (no capture); a new capture option (cullBackFaces) drops them.
+     */
+    void setLayerOptions(const LayerOptions& options);
+
+    /**
+     * The connectivity engine used by buildLayers() and re-segmentation on this thread (nullptr:
+     * the CPU reference). Not owned; it must outlive its use here.
+     */
+    void setConnectivityEngine(ConnectivityEngine* engine) { m_engine = engine; }
+    /** build_layers for view, synchronously. Keeps the old layers if the capture fails. */
+    Status buildLayers(LayerCapturer& capturer, const View& view);
+    /**
+     * Adopts layers finished elsewhere (see finishLayers()); ignored and false when they were
+     * made for another mesh (meshSerial) or with other options, so a stale result is never used.
+     */
+    bool adoptLayers(Layers layers, std::uint64_t meshSerial);
+    /** The current view's layers, or nullptr before the first build or after a change. */
+    const Layers* layers() const { return m_layers.get(); }
+    /** Drops the layers, e.g. when the view changes (they describe the old view). */
+    void clearLayers();
+
+    // Region order (DESIGN.md §3 step 3), of the current layers; a new build or re-segmentation
+    // starts from the initial order (region ids change).
+
+    const RegionOrder& regionOrder() const { return m_order; }
+    /** Replaces the order (pop-up, hiding, undo); ignored unless it has the layers' regions. */
+    void setRegionOrder(RegionOrder order);
+    /** The order's ranks (RegionOrder::ranks()), kept up to date. */
+    const std::vector<std::uint32_t>& regionRanks() const { return m_ranks; }
+    /**
+     * The fragment drawn at pixel (y * width + x of the layers' view): the one whose region comes
+     * first in the order, skipping hidden regions. kNone on background, outside the view or
+     * without layers.
+     */
+    std::uint32_t visibleFragment(std::size_t pixel) const;
+    /** Changes whenever the layers are replaced or re-segmented (region ids change). */
+    std::uint64_t layersSerial() const { return m_layersSerial; }
+    /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
+    std::uint64_t regionOrderSerial() const { return m_orderSerial; }
+    /**
+     * Intentional pop-up at a window pixel (the paper's click): the region below the visible
+     * fragment comes to the front with its neighbours; repeated clicks cycle through the pixel's
+     * regions. Returns the region popped up, kNone on background or without layers.
+     */
+    std::uint32_t popUpAt(glm::vec2 pixel);
+    /** Intentional pop-up of a region (a click in the region graph); false if unknown. */
+    bool popUpRegion(std::uint32_t region);
+    /**
+     * Automatic pop-up while painting (default on): a layer-aware dab whose centre is on a
+     * fragment that is not the visible one pops that fragment's region up.
+     */
+    void setAutoPopUp(bool on) { m_autoPopUp = on; }
+    bool autoPopUp() const { return m_autoPopUp; }
+    /**
+     * Paint-to-hide: hides every region visible (in the order given by ranks, e.g. the order at
+     * the start of the hiding stroke, so a stroke does not drill through what it reveals) at a
+     * pixel whose centre lies within radius of the segment from a to b. Returns how many
+     * regions were hidden.
+     */
+    std::size_t hideAlong(glm::vec2 a, glm::vec2 b, float radius,
+                          std::span<const std::uint32_t> ranks);
+    /**
+     * The world point of the visible fragment at a window pixel (the pivot of layer-aware
+     * rotation), from its view depth; nullopt on background or without layers.
+     */
+    std::optional<glm::vec3> surfacePoint(glm::vec2 pixel) const;
+    /**
+     * The eyedropper: the unlit surface colour (linear RGBA) of the visible fragment at pixel, as
+     * the paint target holds it (painted texel or vertex colour) where the pixel centre's ray
+     * meets the fragment's triangle. Creates the paint target if there is none yet. nullopt on
+     * background, outside the view, without layers, or when the target cannot be made.
+     */
+    std::optional<glm::vec4> pickColor(std::size_t pixel);
+
+    // Painting (DESIGN.md §3 steps 5-6).
+
+    Brush& brush() { return m_brush; }
+    const Brush& brush() const { return m_brush; }
+    /** Layer-aware (the paper's strokes across layers) or conventional (front surface only). */
+    void setLayerAware(bool on) { m_tracker.setLayerAware(on); }
+    bool layerAware() const { return m_tracker.layerAware(); }
+    /**
+     * The paint target, created on first use with options (a texture for meshes with UVs, vertex
+     * colours otherwise). Returns nullptr and sets error if it cannot be made.
+     */
+    PaintTarget* paintTarget(std::string* error = nullptr);
+    /** Replaces the paint target with one made with options (drops the undo history). */
+    Status resetPaintTarget(const PaintTargetOptions& options);
+    /**
+     * The options the next paint target is made with. setPaintOptions() keeps the current
+     * target; the options apply when one is made next (after setMesh(), or on first use).
+     */
+    const PaintTargetOptions& paintOptions() const { return m_paintOptions; }
+    void setPaintOptions(const PaintTargetOptions& options) { m_paintOptions = options; }
+    bool hasPaintTarget() const { return m_paintTarget != nullptr; }
+    /** The options the paint target is (or will be) made with. */
+    const PaintTargetOptions& paintTargetOptions() const { return m_paintOptions; }
+    /** The current paint target's kind; before one exists, the kind it will have. */
+    PaintTargetKind paintTargetKind() const;
+    /**
+     * Starts a stroke (On-Mouse-Down) at a pixel of the current layers' view and paints its first
+     * dab. Needs layers (an Error otherwise); a point on background starts nothing. changes
+     * receives what was painted, for the GPU copy.
+     */
+    Status beginStroke(const StrokePoint& point, PaintChanges& changes);
+    /** On-Mouse-Drag: tracks and paints the dabs up to point; changes gets what they touched. */
+    void moveStroke(const StrokePoint& point, PaintChanges& changes);
+    /** Ends the stroke and records it for undo. */
+    void endStroke();
+    bool inStroke() const { return m_tracker.inStroke(); }
+    /** Dabs painted by the last beginStroke()/moveStroke() and the time spent on the target. */
+    struct DabStats {
+        std::size_t dabs = 0;
+        double targetMs = 0.0;
+    };
+    const DabStats& lastDabStats() const { return m_dabStats; }
+    const StrokeTracker& strokeTracker() const { return m_tracker; }
+    /**
+     * The paper's Figure 4 overlay of the last dab's maps (StrokeTracker::fillOverlay: Mp red,
+     * the rest of Mt blue); false if rgba is not 4 bytes a pixel of the layers' view.
+     */
+    bool fillBrushMaps(std::span<std::uint8_t> rgba, std::uint8_t alpha = 128) {
+        return m_tracker.fillOverlay(rgba, alpha);
+    }
+    /**
+     * Flood fill (the Fill tool) at a window position of the current layers' view with the brush
+     * colour and opacity, as one undo step. mode says what is filled (FillMode), starting from
+     * the visible fragment there; tolerance (0..1) is FillMode::Color's. Needs layers (an Error
+     * otherwise); background or a position outside the view fills nothing. changes receives
+     * what was painted.
+     */
+    Status fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes);
+    /** Undo / redo of paint; false when there is nothing to undo / redo. */
+    bool undo(PaintChanges& changes);
+    bool redo(PaintChanges& changes);
+    UndoHistory& history() { return m_history; }
+    /** The model as painted: target pages as textures or painted vertex colours. */
+    Mesh paintedMesh() const;
+
+private:
+    void paintDabs(PaintChanges& changes);
+    /** The layers were replaced or re-segmented: a fresh order, the tracker told. */
+    void layersChanged();
+    void orderChanged();
+    /** Automatic pop-up of the region under a dab's centre when it is not the visible one. */
+    void popUpUnder(const Dab& dab);
+    /** y * width + x of a window pixel of the layers' view, or nullopt outside it. */
+    std::optional<std::size_t> pixelIndex(glm::vec2 pixel) const;
+
+    std::shared_ptr<const Mesh> m_mesh;
+    std::shared_ptr<const MeshTopology> m_topology;
+    std::string m_name;
+    std::uint64_t m_meshSerial = 0;
+    Camera m_camera;
+    LayerOptions m_layerOptions;
+    ConnectivityEngine* m_engine = nullptr;
+    std::unique_ptr<Layers> m_layers;
+    RegionOrder m_order;
+    std::vector<std::uint32_t> m_ranks;
+    std::vector<std::uint8_t> m_fragmentHidden; // per fragment, empty when nothing is hidden
+    std::uint64_t m_orderSerial = 0;
+    std::uint64_t m_layersSerial = 0;
+    bool m_autoPopUp = true;
+
+    Brush m_brush;
+    StrokeTracker m_tracker;
+    std::vector<Dab> m_dabs; // reused between calls
+    DabStats m_dabStats;
+    PaintTargetOptions m_paintOptions;
+    std::unique_ptr<PaintTarget> m_paintTarget;
+    UndoHistory m_history;
+};
+
+} // namespace core

@@ -1,0 +1,590 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Exports of the painted model (glTF binary, OBJ + MTL + PNG, PLY with vertex colours) and of the
+// paint texture alone (PNG 8/16-bit, TIFF, EXR). Everything is encoded in memory and written
+// with writeFileAtomically, so a failed export never leaves half a file under the chosen name.
+#include "core/io/export.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <map>
+#include <new>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "core/io/gltf_export.h"
+#include "core/paint/paint_target.h"
+
+namespace core {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Bytes = std::vector<std::uint8_t>;
+
+/** Thrown inside an export when progress asks to stop; caught at the top. */
+struct Cancelled {};
+
+void step(const ProgressFn& progress, double fraction) {
+    if (!reportProgress(progress, std::clamp(fraction, 0.0, 1.0)))
+        throw Cancelled{};
+}
+
+/** A progress function for [from, to] of the whole. */
+ProgressFn part(const ProgressFn& progress, double from, double to) {
+    if (!progress)
+        return {};
+    return [progress, from, to](double f) { return progress(from + (to - from) * f); };
+}
+
+void appendFloat(std::string& out, float v) {
+    char buffer[32];
+    // Shortest text that reads back as the same float.
+    const auto [end, ec] =
+        std::to_chars(buffer, buffer + sizeof buffer, std::isfinite(v) ? v : 0.0f);
+    out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+void appendInt(std::string& out, std::uint64_t v) {
+    char buffer[24];
+    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+    out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+/** Linear to sRGB-encoded, as a float (no rounding to bytes). */
+float encodeSrgb(float linear) {
+    const float c = std::clamp(std::isfinite(linear) ? linear : 0.0f, 0.0f, 1.0f);
+    return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+}
+
+Status writeBytes(const std::string& path, const std::string& text) {
+    return writeFileAtomically(path, text.data(), text.size(), false);
+}
+
+/** "name with spaces/and:odd chars" → "name_with_spaces_and_odd_chars" (for OBJ/MTL tokens). */
+std::string token(const std::string& name) {
+    std::string out;
+    for (unsigned char c : name)
+        out.push_back(std::isalnum(c) || c == '-' || c == '_' || c == '.' ? char(c) : '_');
+    return out.empty() ? std::string("unnamed") : out;
+}
+
+/** path with its extension replaced; suffix appended to the stem. */
+fs::path sibling(const fs::path& path, const std::string& suffix, const std::string& extension) {
+    fs::path out = path.parent_path() / (path.stem().string() + suffix + extension);
+    return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Images
+
+struct OiioProgress {
+    const ProgressFn* progress = nullptr;
+    bool cancelled = false;
+};
+
+bool oiioProgress(void* opaque, float done) {
+    auto* p = static_cast<OiioProgress*>(opaque);
+    if (p->progress && !reportProgress(*p->progress, double(done)))
+        p->cancelled = true;
+    return p->cancelled; // true asks OIIO to stop
+}
+
+bool opaque(const Image& image) {
+    for (std::size_t i = 3; i < image.rgba.size(); i += 4)
+        if (image.rgba[i] != 255)
+            return false;
+    return true;
+}
+
+/** image encoded as format in memory; an Error with the problem (no path). */
+Result<Bytes> encodeImage(const Image& image, ExportFormat format, const ProgressFn& progress) {
+    if (image.empty() || image.rgba.size() != std::size_t(image.width) * image.height * 4)
+        return Error{"the texture is empty"};
+    const char* formatName = format == ExportFormat::Tiff  ? "tiff"
+                             : format == ExportFormat::Exr ? "openexr"
+                                                           : "png";
+    Bytes bytes;
+    OIIO::Filesystem::IOVecOutput proxy(bytes);
+    auto out = OIIO::ImageOutput::create(formatName, &proxy);
+    if (!out)
+        return Error{std::string("no ") + formatName + " encoder (" + OIIO::geterror() + ")"};
+    if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy))
+        return Error{std::string("the ") + formatName + " encoder cannot write to memory"};
+    const int channels = opaque(image) ? 3 : 4;
+    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
+    OIIO::TypeDesc fileType = OIIO::TypeDesc::UINT8;
+    OIIO::TypeDesc dataType = OIIO::TypeDesc::UINT8;
+    const void* data = image.rgba.data();
+    std::vector<std::uint16_t> wide;
+    std::vector<float> linear;
+    if (format == ExportFormat::Png16) {
+        fileType = dataType = OIIO::TypeDesc::UINT16;
+        wide.resize(pixels * 4);
+        for (std::size_t i = 0; i < wide.size(); ++i)
+            wide[i] = std::uint16_t(image.rgba[i] * 257u);
+        data = wide.data();
+    } else if (format == ExportFormat::Exr) {
+        fileType = OIIO::TypeDesc::HALF;
+        dataType = OIIO::TypeDesc::FLOAT;
+        // EXR holds linear colour associated with (multiplied by) alpha.
+        linear.resize(pixels * 4);
+        for (std::size_t i = 0; i < linear.size(); i += 4) {
+            const float alpha = float(image.rgba[i + 3]) / 255.0f;
+            for (std::size_t k = 0; k < 3; ++k)
+                linear[i + k] = srgbToLinear(image.rgba[i + k]) * alpha;
+            linear[i + 3] = alpha;
+        }
+        data = linear.data();
+    }
+    OIIO::ImageSpec spec(image.width, image.height, channels, fileType);
+    if (format != ExportFormat::Exr)
+        spec.attribute("oiio:UnassociatedAlpha", 1); // PNG and TIFF: straight alpha, as given
+    // OIIO 2.4's TIFF writer produces an unreadable file through an I/O proxy when given a
+    // colour space: TIFF goes without (8-bit TIFF is read as sRGB anyway).
+    if (format != ExportFormat::Tiff)
+        spec.attribute("oiio:ColorSpace", format == ExportFormat::Exr ? "Linear" : "sRGB");
+    spec.attribute("Software", "LayerPaint");
+    if (format == ExportFormat::Tiff || format == ExportFormat::Exr)
+        spec.attribute("compression", "zip");
+    // The name only tells the encoder the format (TIFF needs it even with a proxy).
+    if (!out->open(std::string("memory") + exportExtension(format), spec))
+        return Error{out->geterror()};
+    const OIIO::stride_t pixelStride = OIIO::stride_t(dataType.size() * 4);
+    OiioProgress state{&progress};
+    const bool ok = out->write_image(dataType, data, pixelStride, OIIO::AutoStride,
+                                     OIIO::AutoStride, &oiioProgress, &state) &&
+                    out->close();
+    if (state.cancelled)
+        throw Cancelled{};
+    if (!ok || bytes.empty())
+        return Error{out->geterror().empty() ? std::string("the image cannot be encoded")
+                                             : out->geterror()};
+    return bytes;
+}
+
+Status writeImageFile(const std::string& path, const Image& image, ExportFormat format,
+                      const ProgressFn& progress) {
+    Result<Bytes> bytes = encodeImage(image, format, part(progress, 0.0, 0.9));
+    if (!bytes)
+        return Error{path + ": cannot be written (" + bytes.error() + ")"};
+    Status written = writeFileAtomically(path, bytes->data(), bytes->size(), false);
+    if (written)
+        step(progress, 1.0);
+    return written;
+}
+
+// ---------------------------------------------------------------------------------------------
+// OBJ
+
+/** texture × rgb factor, in linear space, back to sRGB bytes (alpha untouched). */
+Image bakeFactor(const Image& texture, const glm::vec4& factor) {
+    Image out = texture;
+    for (std::size_t i = 0; i + 3 < out.rgba.size(); i += 4)
+        for (int k = 0; k < 3; ++k)
+            out.rgba[i + std::size_t(k)] =
+                linearToSrgb(srgbToLinear(texture.rgba[i + std::size_t(k)]) * factor[k]);
+    return out;
+}
+
+bool finiteFactor(float v) {
+    return std::isfinite(v);
+}
+
+Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh,
+                                          const ProgressFn& progress) {
+    const std::string stem = token(path.stem().string());
+    const fs::path mtlPath = path.parent_path() / (stem + ".mtl");
+
+    // Materials: names unique as OBJ tokens, textures (baked with their factor) as PNG files.
+    std::vector<std::string> names(mesh.materials.size());
+    std::vector<int> materialImage(mesh.materials.size(), -1);
+    std::vector<Image> images;
+    std::map<std::pair<int, std::array<float, 3>>, int> baked;
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const Material& mat = mesh.materials[m];
+        names[m] = "m" + std::to_string(m) + "_" + token(mat.name);
+        const int t = mat.baseColorTexture;
+        if (t < 0 || std::size_t(t) >= mesh.textures.size() ||
+            mesh.textures[std::size_t(t)].empty())
+            continue;
+        std::array<float, 3> rgb;
+        for (int k = 0; k < 3; ++k)
+            rgb[std::size_t(k)] =
+                finiteFactor(mat.baseColorFactor[k]) ? mat.baseColorFactor[k] : 1.0f;
+        const auto key = std::make_pair(t, rgb);
+        if (const auto it = baked.find(key); it != baked.end()) {
+            materialImage[m] = it->second;
+            continue;
+        }
+        const Image& source = mesh.textures[std::size_t(t)];
+        images.push_back(rgb == std::array<float, 3>{1.0f, 1.0f, 1.0f}
+                             ? source
+                             : bakeFactor(source, glm::vec4(rgb[0], rgb[1], rgb[2], 1.0f)));
+        materialImage[m] = int(images.size() - 1);
+        baked.emplace(key, materialImage[m]);
+    }
+    auto imageName = [&](int i) { return stem + "_" + std::to_string(i + 1) + ".png"; };
+
+    std::string mtl = "# LayerPaint export\n";
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const Material& mat = mesh.materials[m];
+        mtl += "\nnewmtl " + names[m] + "\nKd ";
+        for (int k = 0; k < 3; ++k) {
+            const float f = finiteFactor(mat.baseColorFactor[k]) ? mat.baseColorFactor[k] : 1.0f;
+            appendFloat(mtl, materialImage[m] >= 0 ? 1.0f : f);
+            mtl += k < 2 ? " " : "\n";
+        }
+        mtl += "d ";
+        appendFloat(mtl, finiteFactor(mat.baseColorFactor.a) ? mat.baseColorFactor.a : 1.0f);
+        mtl += "\nillum 1\n";
+        if (materialImage[m] >= 0)
+            mtl += "map_Kd " + imageName(materialImage[m]) + "\n";
+    }
+
+    std::string obj;
+    obj.reserve(mesh.vertexCount() * 96 + mesh.triangleCount() * 40);
+    obj += "# LayerPaint export: ";
+    appendInt(obj, mesh.vertexCount());
+    obj += " vertices, ";
+    appendInt(obj, mesh.triangleCount());
+    obj += " triangles\nmtllib " + mtlPath.filename().string() + "\n";
+    const double geometryShare = images.empty() ? 0.9 : 0.3;
+    const std::size_t n = mesh.vertexCount();
+    for (std::size_t v = 0; v < n; ++v) {
+        const glm::vec3& p = mesh.positions[v];
+        obj += "v ";
+        appendFloat(obj, p.x);
+        obj += ' ';
+        appendFloat(obj, p.y);
+        obj += ' ';
+        appendFloat(obj, p.z);
+        if (mesh.hasColors()) {
+            for (int k = 0; k < 3; ++k) {
+                obj += ' ';
+                appendFloat(obj, encodeSrgb(mesh.colors[v][k]));
+            }
+        }
+        obj += '\n';
+        if ((v & 0xFFFF) == 0)
+            step(progress, geometryShare * 0.5 * double(v) / double(n));
+    }
+    if (mesh.hasUvs())
+        for (const glm::vec2& uv : mesh.uvs) {
+            obj += "vt ";
+            appendFloat(obj, uv.x);
+            obj += ' ';
+            appendFloat(obj, 1.0f - uv.y); // OBJ's v runs up, glTF's down
+            obj += '\n';
+        }
+    for (const glm::vec3& nv : mesh.normals) {
+        obj += "vn ";
+        appendFloat(obj, nv.x);
+        obj += ' ';
+        appendFloat(obj, nv.y);
+        obj += ' ';
+        appendFloat(obj, nv.z);
+        obj += '\n';
+    }
+    const std::size_t triangles = mesh.triangleCount();
+    std::uint32_t current = ~0u;
+    for (std::size_t t = 0; t < triangles; ++t) {
+        if (mesh.triangleMaterial[t] != current) {
+            current = mesh.triangleMaterial[t];
+            obj += "usemtl " + names[current] + "\n";
+        }
+        obj += 'f';
+        for (int c = 0; c < 3; ++c) {
+            const std::uint64_t i = std::uint64_t(mesh.indices[3 * t + std::size_t(c)]) + 1;
+            obj += ' ';
+            appendInt(obj, i);
+            obj += '/';
+            if (mesh.hasUvs())
+                appendInt(obj, i);
+            obj += '/';
+            appendInt(obj, i);
+        }
+        obj += '\n';
+        if ((t & 0xFFFF) == 0)
+            step(progress, geometryShare * (0.5 + 0.5 * double(t) / double(triangles)));
+    }
+
+    std::vector<std::string> written;
+    for (std::size_t i = 0; i < images.size(); ++i) {
+        const std::string file = (path.parent_path() / imageName(int(i))).string();
+        const double from =
+            geometryShare + (0.95 - geometryShare) * double(i) / double(images.size());
+        const double to =
+            geometryShare + (0.95 - geometryShare) * double(i + 1) / double(images.size());
+        if (Status s =
+                writeImageFile(file, images[i], ExportFormat::Png8, part(progress, from, to));
+            !s)
+            return Error{s.error()};
+        written.push_back(file);
+    }
+    if (Status s = writeBytes(mtlPath.string(), mtl); !s)
+        return Error{s.error()};
+    written.push_back(mtlPath.string());
+    if (Status s = writeBytes(path.string(), obj); !s)
+        return Error{s.error()};
+    written.push_back(path.string());
+    return written;
+}
+
+// ---------------------------------------------------------------------------------------------
+// PLY
+
+/** Per vertex: factor × vertex colour × texture, of the first triangle using it; linear RGBA. */
+std::vector<glm::vec4> vertexColors(const Mesh& mesh, const ProgressFn& progress) {
+    const std::size_t n = mesh.vertexCount();
+    std::vector<std::uint32_t> material(n, ~0u);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t)
+        for (int c = 0; c < 3; ++c) {
+            std::uint32_t& m = material[mesh.indices[3 * t + std::size_t(c)]];
+            if (m == ~0u)
+                m = mesh.triangleMaterial[t];
+        }
+    std::vector<glm::vec4> colors(n, glm::vec4(1.0f));
+    for (std::size_t v = 0; v < n; ++v) {
+        glm::vec4 c = mesh.hasColors() ? mesh.colors[v] : glm::vec4(1.0f);
+        if (material[v] != ~0u) {
+            const Material& mat = mesh.materials[material[v]];
+            for (int k = 0; k < 4; ++k)
+                c[k] *= std::isfinite(mat.baseColorFactor[k]) ? mat.baseColorFactor[k] : 1.0f;
+            const int t = mat.baseColorTexture;
+            if (t >= 0 && std::size_t(t) < mesh.textures.size() && mesh.hasUvs() &&
+                !mesh.textures[std::size_t(t)].empty())
+                c *= sampleTexture(mesh.textures[std::size_t(t)], mesh.uvs[v]);
+        }
+        colors[v] = c;
+        if ((v & 0xFFFF) == 0)
+            step(progress, 0.5 * double(v) / double(n));
+    }
+    return colors;
+}
+
+Result<std::vector<std::string>> writePly(const fs::path& path, const Mesh& mesh,
+                                          const ProgressFn& progress) {
+    const std::vector<glm::vec4> colors = vertexColors(mesh, part(progress, 0.0, 0.5));
+    std::string out = "ply\nformat binary_little_endian 1.0\ncomment LayerPaint export\n"
+                      "element vertex ";
+    appendInt(out, mesh.vertexCount());
+    out += "\nproperty float x\nproperty float y\nproperty float z\n"
+           "property float nx\nproperty float ny\nproperty float nz\n";
+    // UVs keep the twins of a texture seam apart (importers join identical vertices).
+    const bool uvs = mesh.hasUvs();
+    if (uvs)
+        out += "property float s\nproperty float t\n";
+    out += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
+           "element face ";
+    appendInt(out, mesh.triangleCount());
+    out += "\nproperty list uchar uint vertex_indices\nend_header\n";
+    const std::size_t header = out.size();
+    const std::size_t vertexBytes = 6 * 4 + (uvs ? 8 : 0) + 4;
+    out.resize(header + mesh.vertexCount() * vertexBytes + mesh.triangleCount() * 13);
+    char* p = out.data() + header;
+    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
+        std::memcpy(p, &mesh.positions[v], 12);
+        std::memcpy(p + 12, &mesh.normals[v], 12);
+        std::size_t at = 24;
+        if (uvs) {
+            const float st[2] = {mesh.uvs[v].x, 1.0f - mesh.uvs[v].y}; // t runs up, as in OBJ
+            std::memcpy(p + at, st, 8);
+            at += 8;
+        }
+        const glm::vec4& c = colors[v];
+        const std::uint8_t rgba[4] = {
+            linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b),
+            std::uint8_t(std::lround(std::clamp(c.a, 0.0f, 1.0f) * 255.0f))};
+        std::memcpy(p + at, rgba, 4);
+        p += vertexBytes;
+    }
+    step(progress, 0.7);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        *p++ = 3;
+        std::memcpy(p, &mesh.indices[3 * t], 12);
+        p += 12;
+    }
+    step(progress, 0.8);
+    if (Status s = writeBytes(path.string(), out); !s)
+        return Error{s.error()};
+    return std::vector<std::string>{path.string()};
+}
+
+Result<std::vector<std::string>> exportModel(const std::string& path, ExportFormat format,
+                                             const Mesh& mesh, const ProgressFn& progress) {
+    if (isTextureFormat(format))
+        return Error{path + ": " + exportFormatName(format) + " holds a texture, not a model"};
+    if (std::string problem = mesh.validate(); !problem.empty())
+        return Error{path + ": the model cannot be exported (" + problem + ")"};
+    step(progress, 0.0);
+    const fs::path target(path);
+    Result<std::vector<std::string>> written = std::vector<std::string>{};
+    switch (format) {
+    case ExportFormat::Glb: {
+        Result<Bytes> bytes = encodeGlb(mesh, {}, part(progress, 0.0, 0.9));
+        if (!bytes) {
+            if (bytes.error() == "cancelled")
+                throw Cancelled{};
+            return Error{path + ": " + bytes.error()};
+        }
+        if (Status s = writeFileAtomically(path, bytes->data(), bytes->size(), false); !s)
+            return Error{s.error()};
+        written = std::vector<std::string>{path};
+        break;
+    }
+    case ExportFormat::Obj:
+        written = writeObj(target, mesh, progress);
+        break;
+    case ExportFormat::Ply:
+        written = writePly(target, mesh, progress);
+        break;
+    default:
+        break;
+    }
+    if (written)
+        step(progress, 1.0);
+    return written;
+}
+
+} // namespace
+
+bool isTextureFormat(ExportFormat format) {
+    return format != ExportFormat::Glb && format != ExportFormat::Obj &&
+           format != ExportFormat::Ply;
+}
+
+const char* exportExtension(ExportFormat format) {
+    switch (format) {
+    case ExportFormat::Glb:
+        return ".glb";
+    case ExportFormat::Obj:
+        return ".obj";
+    case ExportFormat::Ply:
+        return ".ply";
+    case ExportFormat::Png8:
+    case ExportFormat::Png16:
+        return ".png";
+    case ExportFormat::Tiff:
+        return ".tif";
+    case ExportFormat::Exr:
+        return ".exr";
+    }
+    return "";
+}
+
+const char* exportFormatName(ExportFormat format) {
+    switch (format) {
+    case ExportFormat::Glb:
+        return "glb";
+    case ExportFormat::Obj:
+        return "obj";
+    case ExportFormat::Ply:
+        return "ply";
+    case ExportFormat::Png8:
+        return "png";
+    case ExportFormat::Png16:
+        return "png16";
+    case ExportFormat::Tiff:
+        return "tiff";
+    case ExportFormat::Exr:
+        return "exr";
+    }
+    return "";
+}
+
+std::optional<ExportFormat> parseExportFormat(const std::string& name) {
+    for (ExportFormat f :
+         {ExportFormat::Glb, ExportFormat::Obj, ExportFormat::Ply, ExportFormat::Png8,
+          ExportFormat::Png16, ExportFormat::Tiff, ExportFormat::Exr})
+        if (name == exportFormatName(f))
+            return f;
+    return std::nullopt;
+}
+
+glm::vec4 sampleTexture(const Image& image, glm::vec2 uv) {
+    if (image.empty())
+        return glm::vec4(1.0f);
+    const float u = std::isfinite(uv.x) ? uv.x : 0.0f, v = std::isfinite(uv.y) ? uv.y : 0.0f;
+    const double x = double(u) * image.width - 0.5, y = double(v) * image.height - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const float ax = float(x - fx), ay = float(y - fy);
+    auto wrap = [](double i, int size) {
+        const double m = std::fmod(i, double(size));
+        return int(m < 0 ? m + size : m);
+    };
+    const int x0 = wrap(fx, image.width), x1 = wrap(fx + 1, image.width);
+    const int y0 = wrap(fy, image.height), y1 = wrap(fy + 1, image.height);
+    auto texel = [&](int tx, int ty) {
+        const std::uint8_t* p =
+            &image.rgba[(std::size_t(ty) * std::size_t(image.width) + std::size_t(tx)) * 4];
+        return glm::vec4(srgbToLinear(p[0]), srgbToLinear(p[1]), srgbToLinear(p[2]),
+                         float(p[3]) / 255.0f);
+    };
+    const glm::vec4 top = texel(x0, y0) * (1.0f - ax) + texel(x1, y0) * ax;
+    const glm::vec4 bottom = texel(x0, y1) * (1.0f - ax) + texel(x1, y1) * ax;
+    return top * (1.0f - ay) + bottom * ay;
+}
+
+Result<std::vector<std::string>> exportMesh(const std::string& path, ExportFormat format,
+                                            const Mesh& mesh, const ProgressFn& progress) {
+    try {
+        return exportModel(path, format, mesh, progress);
+    } catch (const Cancelled&) {
+        return Error{path + ": cancelled"};
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to export the model"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be exported (" + std::string(e.what()) + ")"};
+    }
+}
+
+Status exportTexture(const std::string& path, ExportFormat format, const Image& image,
+                     const ProgressFn& progress) {
+    if (!isTextureFormat(format))
+        return Error{path + ": " + exportFormatName(format) + " holds a model, not a texture"};
+    try {
+        step(progress, 0.0);
+        return writeImageFile(path, image, format, progress);
+    } catch (const Cancelled&) {
+        return Error{path + ": cancelled"};
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to export the texture"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be exported (" + std::string(e.what()) + ")"};
+    }
+}
+
+Result<std::vector<std::string>> exportTextures(const std::string& path, ExportFormat format,
+                                                const std::vector<Image>& pages,
+                                                const ProgressFn& progress) {
+    if (pages.empty())
+        return Error{path + ": there is no paint texture to export (the model is painted with "
+                            "vertex colours)"};
+    std::vector<std::string> written;
+    const fs::path first(path);
+    for (std::size_t i = 0; i < pages.size(); ++i) {
+        const std::string file =
+            i == 0
+                ? path
+                : sibling(first, "_" + std::to_string(i + 1), first.extension().string()).string();
+        const double n = double(pages.size());
+        if (Status s = exportTexture(file, format, pages[i],
+                                     part(progress, double(i) / n, double(i + 1) / n));
+            !s)
+            return Error{s.error()};
+        written.push_back(file);
+    }
+    return written;
+}
+
+} // namespace core

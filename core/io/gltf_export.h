@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/base/progress.h"
+#include "core/base/result.h"
+#include "core/model/mesh.h"
+
+namespace core {
+
+/**
+ * Encodes mesh as a binary glTF 2.0 file (DESIGN.md §3 step 7): one scene, one node, one mesh with
+ * one primitive per run of consecutive triangles sharing a material, in triangle order, so
+ * loadMesh() gives the triangles back in the same order. Each primitive holds the vertices its
+ * triangles use, in their original order: a mesh whose material runs use disjoint, ascending
+ * vertex ranges (every mesh loadMesh() returns) comes back with identical vertices and indices;
+ * otherwise vertices shared between runs are duplicated and unused ones dropped.
+ * Attributes: POSITION (with min/max), NORMAL, TEXCOORD_0 and COLOR_0 (float RGBA, linear) when
+ * present; uint32 indices. Materials are metallic-roughness with metallic 0, roughness 1; base
+ * colour textures (sRGB) are stored as PNG in the binary chunk, only those a material uses, in
+ * the order of first use (empty images are left out). extras (a JSON object, or null for none) goes
+ * under asset.extras.
+ *
+ * Returns the file's bytes, or an Error (an invalid mesh, extras that are not an object, an image
+ * that cannot be encoded, more than 4 GiB of data, cancelled through progress).
+ */
+Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::json& extras = {},
+                                            const ProgressFn& progress = {});
+
+/**
+ * Saves mesh as a binary glTF file at path (see encodeGlb), atomically (writeFileAtomically),
+ * keeping the previous file as path + ".bak" unless keepBackup is false. On failure the old file
+ * is intact and the Error names path and the problem.
+ */
+Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras = {},
+               const ProgressFn& progress = {}, bool keepBackup = true);
+
+/**
+ * The asset.extras object of a glTF file (binary or JSON); reads only the JSON. An empty object
+ * if the file has none; an Error naming path if it cannot be read, is not glTF or its extras are
+ * not an object.
+ */
+Result<nlohmann::json> readGlbExtras(const std::string& path);
+
+/**
+ * Writes size bytes to path atomically (DESIGN.md §6): a temporary file in the same folder is
+ * written, flushed and fsync'ed, then renamed over path. With keepBackup, an existing file is
+ * first kept as path + ".bak" (replacing an older backup). A symbolic link at path is followed, so
+ * the file it points to is replaced. The new file gets the old one's permissions (else the
+ * default ones). On failure (missing or unwritable folder, disk full, ...) nothing at path
+ * changes, the temporary file is removed, and the Error names path and the problem.
+ */
+Status writeFileAtomically(const std::string& path, const void* data, std::size_t size,
+                           bool keepBackup = true);
+
+} // namespace core

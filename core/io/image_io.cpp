@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// In-memory image decoding through OpenImageIO.
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <iterator>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
+
+#include "core/io/mesh_io.h"
+
+namespace core {
+
+namespace {
+
+bool startsWith(const std::uint8_t* data, std::size_t size, std::string_view magic) {
+    return size >= magic.size() && std::memcmp(data, magic.data(), magic.size()) == 0;
+}
+
+/**
+ * The OIIO format name from the data's signature, else from the name's extension. Creating the
+ * reader by format name (not by file name) keeps OIIO from probing the disk for a file of that
+ * name.
+ */
+std::string formatName(const std::uint8_t* data, std::size_t size, const std::string& name) {
+    using namespace std::string_view_literals;
+    if (startsWith(data, size, "\x89PNG\r\n\x1a\n"sv))
+        return "png";
+    if (startsWith(data, size, "\xff\xd8\xff"sv))
+        return "jpeg";
+    if (startsWith(data, size, "GIF8"sv))
+        return "gif";
+    if (startsWith(data, size, "BM"sv))
+        return "bmp";
+    if (startsWith(data, size, "II*\0"sv) || startsWith(data, size, "MM\0*"sv))
+        return "tiff";
+    if (size >= 12 && startsWith(data, size, "RIFF"sv) && std::memcmp(data + 8, "WEBP", 4) == 0)
+        return "webp";
+    if (startsWith(data, size, "\x76\x2f\x31\x01"sv))
+        return "openexr";
+    if (startsWith(data, size, "#?"sv))
+        return "hdr";
+    if (startsWith(data, size, "DDS "sv))
+        return "dds";
+    if (startsWith(data, size, "8BPS"sv))
+        return "psd";
+    const std::size_t dot = name.find_last_of('.');
+    if (dot == std::string::npos || dot + 1 >= name.size())
+        return {};
+    std::string ext = name.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    // Only formats without a signature are worth trying by extension.
+    if (ext == "tga" || ext == "targa")
+        return "targa";
+    return {};
+}
+
+std::uint32_t crc32(const std::uint8_t* data, std::size_t size) {
+    static const auto table = [] {
+        std::array<std::uint32_t, 256> t{};
+        for (std::uint32_t i = 0; i < 256; ++i) {
+            std::uint32_t c = i;
+            for (int k = 0; k < 8; ++k)
+                c = (c & 1) ? 0xEDB88320u ^ (c >> 1) : c >> 1;
+            t[i] = c;
+        }
+        return t;
+    }();
+    std::uint32_t c = 0xFFFFFFFFu;
+    for (std::size_t i = 0; i < size; ++i)
+        c = table[(c ^ data[i]) & 0xFFu] ^ (c >> 8);
+    return c ^ 0xFFFFFFFFu;
+}
+
+std::uint32_t bigEndian32(const std::uint8_t* p) {
+    return std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+}
+
+/**
+ * Walks the PNG chunks (lengths, CRCs, IHDR first, IEND last). libpng reports broken data by
+ * longjmp through OpenImageIO's reader, which leaks and prints to stderr; most damage (truncated
+ * or garbled files) is caught here first instead.
+ */
+std::string checkPngChunks(const std::uint8_t* data, std::size_t size) {
+    std::size_t pos = 8;
+    bool first = true, haveData = false;
+    while (true) {
+        if (size - pos < 12)
+            return "the PNG data is truncated";
+        const std::uint32_t length = bigEndian32(data + pos);
+        const std::uint8_t* type = data + pos + 4;
+        if (length > 0x7FFFFFFFu || size - pos - 12 < length)
+            return "the PNG data is truncated";
+        for (int k = 0; k < 4; ++k)
+            if (!std::isalpha(type[k]))
+                return "the PNG data is corrupt (invalid chunk type)";
+        if (crc32(type, length + 4u) != bigEndian32(type + 4 + length))
+            return "the PNG data is corrupt (a chunk checksum does not match)";
+        const std::string_view name(reinterpret_cast<const char*>(type), 4);
+        if (first && (name != "IHDR" || length != 13))
+            return "the PNG data is corrupt (no header chunk)";
+        first = false;
+        haveData = haveData || name == "IDAT";
+        pos += 12 + length;
+        if (name == "IEND")
+            return haveData ? std::string() : "the PNG data has no image data";
+    }
+}
+
+std::string oneLine(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    std::replace(s.begin(), s.end(), '\r', ' ');
+    while (!s.empty() && s.back() == ' ')
+        s.pop_back();
+    return s;
+}
+
+Result<Image> decode(const std::uint8_t* data, std::size_t size, const std::string& label,
+                     const std::string& name, const LoadLimits& limits) {
+    const std::string format = formatName(data, size, name);
+    if (format.empty())
+        return Error{label + ": unknown image format"};
+    if (format == "png")
+        if (std::string problem = checkPngChunks(data, size); !problem.empty())
+            return Error{label + ": " + problem};
+
+    OIIO::Filesystem::IOMemReader proxy(data, size);
+    OIIO::ImageSpec config;
+    // PNG and TGA alpha stays straight (not premultiplied), as glTF expects.
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    auto in = OIIO::ImageInput::create(format, false, &config, &proxy);
+    if (!in) {
+        OIIO::geterror(); // clear the pending message
+        return Error{label + ": no decoder for " + format + " images"};
+    }
+    if (!in->supports("ioproxy"))
+        return Error{label + ": the " + format + " decoder cannot read from memory"};
+    // Both ways of handing over the proxy: create() only keeps it when it opens the file itself.
+    in->set_ioproxy(&proxy);
+    void* proxyPtr = &proxy;
+    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPtr);
+    // The reader reads through the proxy; the name only appears in its messages.
+    OIIO::ImageSpec spec;
+    if (!in->open("memory." + format, spec, config)) {
+        const std::string why = oneLine(in->geterror());
+        return Error{label + ": cannot decode the " + format + " image" +
+                     (why.empty() ? std::string() : " (" + why + ")")};
+    }
+    const std::int64_t w = spec.width, h = spec.height;
+    // Only the first four channels matter (RGBA or grey + alpha); reading fewer saves memory.
+    const std::int64_t channels = std::min(spec.nchannels, 4);
+    if (w <= 0 || h <= 0 || channels <= 0 || spec.depth > 1) {
+        in->close();
+        return Error{label + ": the image has an invalid size"};
+    }
+    // Check before allocating: a hostile header can claim any size.
+    if (static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > limits.maxImagePixels ||
+        w > 65536 || h > 65536) {
+        in->close();
+        return Error{label + ": the image is too large (" + std::to_string(w) + " x " +
+                     std::to_string(h) + " pixels)"};
+    }
+    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w * h * channels));
+    if (!in->read_image(0, 0, 0, static_cast<int>(channels), OIIO::TypeDesc::UINT8,
+                        pixels.data())) {
+        const std::string why = oneLine(in->geterror());
+        in->close();
+        return Error{label + ": cannot decode the " + format + " image" +
+                     (why.empty() ? std::string() : " (" + why + ")")};
+    }
+    in->close();
+
+    // Grey(+alpha) expands to RGB(+alpha); missing alpha becomes opaque.
+    Image img;
+    img.width = static_cast<int>(w);
+    img.height = static_cast<int>(h);
+    img.rgba.resize(static_cast<std::size_t>(w * h * 4));
+    // Alpha is the channel the reader names so; a fourth channel of another name is not alpha.
+    std::int64_t alphaChannel = spec.alpha_channel;
+    if (alphaChannel < 0 || alphaChannel >= channels) {
+        alphaChannel = -1;
+        for (std::int64_t c = 0; c < channels && c < std::ssize(spec.channelnames); ++c)
+            if (spec.channelnames[static_cast<std::size_t>(c)] == "A")
+                alphaChannel = c;
+    }
+    const std::size_t n = static_cast<std::size_t>(w * h);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* src = &pixels[i * static_cast<std::size_t>(channels)];
+        std::uint8_t* dst = &img.rgba[i * 4];
+        if (channels >= 3) {
+            dst[0] = src[0];
+            dst[1] = src[1];
+            dst[2] = src[2];
+        } else {
+            dst[0] = dst[1] = dst[2] = src[0];
+        }
+        dst[3] = alphaChannel >= 0 ? src[alphaChannel] : 255;
+    }
+    return img;
+}
+
+} // namespace
+
+Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std::string& name,
+                          const LoadLimits& limits) {
+    const std::string label = name.empty() ? std::string("image") : name;
+    if (data == nullptr || size == 0)
+        return Error{label + ": the image is empty"};
+    try {
+        return decode(data, size, label, name, limits);
+    } catch (const std::exception& e) {
+        return Error{label + ": cannot decode the image (" + oneLine(e.what()) + ")"};
+    } catch (...) {
+        return Error{label + ": cannot decode the image"};
+    }
+}
+
+} // namespace core

@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// loadMesh: checks the file, dispatches to the glTF or Assimp loader, then repairs what can be
+// repaired (normals, stray UV/color values) and validates the result.
+#include "core/io/mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <limits>
+#include <system_error>
+
+#include <glm/geometric.hpp>
+
+#include "core/model/builtin_models.h"
+
+namespace core {
+
+// The format loaders (mesh_io_gltf.cpp, mesh_io_assimp.cpp). `file` is canonical; errors carry
+// only the problem, loadMesh() prefixes the path. Both leave normals to finishMesh() below.
+namespace detail {
+Result<Mesh> loadGltf(const std::filesystem::path& file, const ProgressFn& progress,
+                      const LoadLimits& limits);
+Result<Mesh> loadAssimp(const std::filesystem::path& file, const ProgressFn& progress,
+                        const LoadLimits& limits);
+} // namespace detail
+
+namespace {
+
+std::string toLower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+/** Error messages are one line: "<path>: <problem>". */
+Error fileError(const std::string& path, std::string problem) {
+    for (char& c : problem)
+        if (c == '\n' || c == '\r' || c == '\t')
+            c = ' ';
+    while (!problem.empty() && (problem.back() == ' ' || problem.back() == '.'))
+        problem.pop_back();
+    return Error{path + ": " + (problem.empty() ? std::string("cannot be loaded") : problem)};
+}
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/** Normals, materials and stray values; returns an empty string or the problem. */
+std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
+    if (mesh.positions.size() > limits.maxVertices)
+        return "too many vertices (" + std::to_string(mesh.positions.size()) + ")";
+    if (mesh.triangleCount() > limits.maxTriangles)
+        return "too many triangles (" + std::to_string(mesh.triangleCount()) + ")";
+    if (mesh.positions.empty() || mesh.indices.empty())
+        return "the file contains no triangles";
+    for (const glm::vec3& p : mesh.positions)
+        if (!finite(p))
+            return "a vertex position is not a finite number";
+    for (std::uint32_t i : mesh.indices)
+        if (i >= mesh.positions.size())
+            return "a vertex index is out of range";
+    // Nothing to see or paint if every triangle is degenerate (e.g. all corners one vertex).
+    bool anyArea = false;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size() && !anyArea; t += 3) {
+        const glm::vec3& a = mesh.positions[mesh.indices[t]];
+        const glm::vec3 n = glm::cross(mesh.positions[mesh.indices[t + 1]] - a,
+                                       mesh.positions[mesh.indices[t + 2]] - a);
+        anyArea = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
+    }
+    if (!anyArea)
+        return "the file contains only degenerate triangles (no area)";
+
+    if (mesh.materials.empty())
+        mesh.materials.push_back(Material{"default", glm::vec4(1.0f), -1});
+    if (mesh.triangleMaterial.empty())
+        mesh.triangleMaterial.assign(mesh.triangleCount(), 0);
+
+    // Normals: keep the file's where usable, compute the rest from the triangles.
+    if (mesh.normals.size() != mesh.positions.size()) {
+        mesh.computeNormals();
+    } else {
+        std::size_t bad = 0;
+        for (glm::vec3& n : mesh.normals) {
+            const float len = finite(n) ? glm::length(n) : 0.0f;
+            if (std::isfinite(len) && len > 1e-12f) {
+                n /= len;
+            } else {
+                n = glm::vec3(std::numeric_limits<float>::quiet_NaN());
+                ++bad;
+            }
+        }
+        if (bad > 0) {
+            Mesh computed;
+            computed.positions = mesh.positions;
+            computed.indices = mesh.indices;
+            computed.computeNormals();
+            for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+                if (!finite(mesh.normals[i]))
+                    mesh.normals[i] = computed.normals[i];
+            mesh.warnings.push_back(std::to_string(bad) +
+                                    " invalid normals were recomputed from the triangles");
+        }
+    }
+
+    std::size_t badUvs = 0;
+    for (glm::vec2& uv : mesh.uvs)
+        if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
+            uv = glm::vec2(0.0f);
+            ++badUvs;
+        }
+    if (badUvs > 0)
+        mesh.warnings.push_back(std::to_string(badUvs) +
+                                " texture coordinates were not finite numbers and were set to 0");
+    for (glm::vec4& c : mesh.colors)
+        for (int k = 0; k < 4; ++k)
+            c[k] = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 1.0f;
+    return mesh.validate();
+}
+
+Result<Mesh> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits) {
+    if (path.rfind(kBuiltinPrefix, 0) == 0) {
+        Result<Mesh> builtin = makeBuiltinModel(path.substr(std::string(kBuiltinPrefix).size()));
+        if (!builtin && builtin.error().rfind(path, 0) != 0)
+            return fileError(path, builtin.error());
+        return builtin;
+    }
+    if (path.empty())
+        return Error{"(no file name): no file was given"};
+
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const fs::path given(path);
+    const fs::file_status st = fs::status(given, ec);
+    if (ec && ec != std::errc::no_such_file_or_directory)
+        return fileError(path, "cannot be read (" + ec.message() + ")");
+    if (!fs::exists(st))
+        return fileError(path, "does not exist");
+    if (fs::is_directory(st))
+        return fileError(path, "is a directory, not a file");
+    if (!fs::is_regular_file(st))
+        return fileError(path, "is not a regular file");
+    const std::uintmax_t size = fs::file_size(given, ec);
+    if (ec)
+        return fileError(path, "cannot be read (" + ec.message() + ")");
+    if (size == 0)
+        return fileError(path, "is empty");
+    if (size > limits.maxFileBytes)
+        return fileError(path, "is too large (" + std::to_string(size) + " bytes; the limit is " +
+                                   std::to_string(limits.maxFileBytes) + ")");
+    // Canonical: external files are resolved inside the real folder of the model.
+    const fs::path file = fs::canonical(given, ec);
+    if (ec)
+        return fileError(path, "cannot be read (" + ec.message() + ")");
+
+    if (!reportProgress(progress, 0.0))
+        return fileError(path, "cancelled");
+    const std::string ext = toLower(given.extension().string());
+    Result<Mesh> result = (ext == ".gltf" || ext == ".glb")
+                              ? detail::loadGltf(file, progress, limits)
+                              : detail::loadAssimp(file, progress, limits);
+    if (!result)
+        return fileError(path, result.error());
+    Mesh mesh = std::move(result).value();
+    if (const std::string problem = finishMesh(mesh, limits); !problem.empty())
+        return fileError(path, problem);
+    if (!reportProgress(progress, 1.0))
+        return fileError(path, "cancelled");
+    return mesh;
+}
+
+} // namespace
+
+Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
+                      const LoadLimits& limits) {
+    try {
+        return load(path, progress, limits);
+    } catch (const std::bad_alloc&) {
+        return fileError(path, "not enough memory to load the file");
+    } catch (const std::exception& e) {
+        return fileError(path, e.what());
+    } catch (...) {
+        return fileError(path, "cannot be loaded (unexpected error)");
+    }
+}
+
+} // namespace core

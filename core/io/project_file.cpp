@@ -1,0 +1,92 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Project files: a binary glTF with the app state under asset.extras.layerpaint (the state itself
+// is read and written by core/document/project_state.h).
+#include "core/io/project_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <exception>
+#include <filesystem>
+#include <new>
+
+#include "core/document/document.h"
+#include "core/io/gltf_export.h"
+
+namespace core {
+
+namespace {
+
+using Json = nlohmann::json;
+
+bool isGltfPath(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".glb" || ext == ".gltf";
+}
+
+Result<Project> load(const std::string& path, const ProgressFn& progress,
+                     const LoadLimits& limits) {
+    Project project;
+    std::vector<std::string> warnings;
+    if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
+        // The JSON alone first: a newer project is refused before its textures are decoded.
+        Result<Json> extras = readGlbExtras(path);
+        if (!extras)
+            return Error{extras.error()};
+        const auto it = extras->find(kProjectExtrasKey);
+        if (it != extras->end()) {
+            if (!it->is_object())
+                return Error{path + ": extras.layerpaint is not a JSON object"};
+            Result<ProjectState> state = projectStateFromJson(*it, &warnings);
+            if (!state)
+                return Error{path + ": " + state.error()};
+            project.state = std::move(state).value();
+        }
+    }
+    LoadLimits strict = limits;
+    strict.requireTextures = project.state.has_value(); // they hold the painting
+    Result<Mesh> mesh = loadMesh(path, progress, strict);
+    if (!mesh)
+        return Error{mesh.error()};
+    project.mesh = std::move(mesh).value();
+    project.mesh.warnings.insert(project.mesh.warnings.end(), warnings.begin(), warnings.end());
+    return project;
+}
+
+} // namespace
+
+Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
+                            const LoadLimits& limits) {
+    try {
+        return load(path, progress, limits);
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to load the file"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be loaded (" + std::string(e.what()) + ")"};
+    }
+}
+
+Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
+                   const ProgressFn& progress, bool keepBackup) {
+    Json extras;
+    try {
+        extras = {{kProjectExtrasKey, projectStateToJson(state)}};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be saved (" + std::string(e.what()) + ")"};
+    }
+    return saveGlb(path, paintedMesh, extras, progress, keepBackup);
+}
+
+Status saveProject(const std::string& path, const Document& doc, const ProjectState& state,
+                   const ProgressFn& progress) {
+    Mesh mesh;
+    try {
+        mesh = doc.paintedMesh();
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to save the file"};
+    }
+    return saveProject(path, mesh, state, progress);
+}
+
+} // namespace core

@@ -1,0 +1,431 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/layers/connectivity.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "core/base/parallel.h"
+
+namespace core {
+
+namespace {
+
+constexpr float kFail = std::numeric_limits<float>::infinity();
+/** |cos| of the angle between a pixel ray and a plane's normal below which the plane is grazing
+ * (about 0.6° from edge-on): predictions there amplify depth noise by more than 100×. */
+constexpr float kMinRayCosine = 0.01f;
+/** Allowed distance of a sample from the other sample's plane, relative to a circular arc's:
+ * a true arc gives 1, a sheet seen edge-on against an unrelated one about 2 or more. */
+constexpr float kArcSlack = 1.5f;
+/** The same for facets sharing a corner, within kFacetCosine (30°) of each other. */
+constexpr float kFacetSlack = 2.5f;
+constexpr float kFacetCosine = 0.8660254f;
+
+/** The ray through one window position, with |direction|² for the grazing check. */
+struct Ray {
+    glm::vec3 origin;
+    glm::vec3 direction;
+    float length2;
+};
+
+inline Ray rayAt(const PixelRays& rays, float px, float py) {
+    const glm::vec3 d = rays.direction(px, py);
+    return {rays.origin(px, py), d, glm::dot(d, d)};
+}
+
+/** Depth at which ray meets plane; NaN when grazing or degenerate (so any test with it fails). */
+inline float planeDepth(const glm::vec4& plane, const Ray& ray) {
+    const float denom =
+        plane.x * ray.direction.x + plane.y * ray.direction.y + plane.z * ray.direction.z;
+    if (!(denom * denom >= kMinRayCosine * kMinRayCosine * ray.length2))
+        return std::numeric_limits<float>::quiet_NaN();
+    return -(plane.w + plane.x * ray.origin.x + plane.y * ray.origin.y + plane.z * ray.origin.z) /
+           denom;
+}
+
+/** One side of a pixel pair: up to kMaxLinkedLayers fragments with what the test needs. */
+struct Side {
+    std::uint32_t first = 0; // index of the layer-1 fragment
+    std::uint32_t count = 0; // fragments considered (capped)
+    float depth[kMaxLinkedLayers];
+    std::uint32_t triangle[kMaxLinkedLayers];
+    const SurfaceTriangle* info[kMaxLinkedLayers]; // nullptr when unknown
+    float midDepth[kMaxLinkedLayers];              // plane depth on the midpoint ray, or NaN
+};
+
+class Linker {
+public:
+    Linker(const LayerStack& stack, const ConnectivityOptions& options,
+           const SurfaceGeometry* geometry, Connectivity& out)
+        : m_stack(stack), m_geometry(options.test == ConnectionTest::Surface ? geometry : nullptr),
+          m_out(out) {
+        const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
+        m_limit = options.threshold / scale;
+        m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
+        m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
+        m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
+    }
+
+    /** Links the fragments of rows [y0, y1) to their right and down neighbours and back. */
+    void rows(int y0, int y1) {
+        const int w = m_stack.width, h = m_stack.height;
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                if (m_stack.layerCount(p) == 0)
+                    continue;
+                if (x + 1 < w)
+                    pair(p, p + 1, float(x) + 0.5f, float(y) + 0.5f, 1.0f, 0.0f, kRight, kLeft);
+                if (y + 1 < h)
+                    pair(p, p + std::size_t(w), float(x) + 0.5f, float(y) + 0.5f, 0.0f, 1.0f, kDown,
+                         kUp);
+            }
+    }
+
+private:
+    void load(Side& side, std::size_t pixel, const Ray& mid) const {
+        side.first = m_stack.offsets[pixel];
+        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
+        const std::size_t triangles = m_geometry ? m_geometry->triangles.size() : 0;
+        for (std::uint32_t k = 0; k < side.count; ++k) {
+            const std::uint32_t f = side.first + k;
+            side.depth[k] = m_stack.depth[f];
+            side.triangle[k] = m_stack.triangle[f];
+            side.info[k] =
+                side.triangle[k] < triangles ? &m_geometry->triangles[side.triangle[k]] : nullptr;
+            side.midDepth[k] = side.info[k] ? planeDepth(side.info[k]->plane, mid)
+                                            : std::numeric_limits<float>::quiet_NaN();
+        }
+    }
+
+    /**
+     * Error of joining fragment i of a (at P) with fragment j of b (at Q); kFail when the test
+     * fails. Symmetric in (a, i) and (b, j) up to swapping P and Q.
+     */
+    float score(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j, const Ray& rayP,
+                const Ray& rayQ) const {
+        const SurfaceTriangle* ta = a.info[i];
+        const SurfaceTriangle* tb = b.info[j];
+        if (ta && tb) {
+            if (a.triangle[i] == b.triangle[j])
+                return -1.0f; // same plane: exact at any slope
+            const float za = a.midDepth[i], zb = b.midDepth[j];
+            if (!std::isnan(za) && !std::isnan(zb)) { // neither grazing
+                const float error = std::abs(za - zb);
+                if (ta->component != tb->component)
+                    return error < m_contactLimit ? error : kFail;
+                if (error < m_limit)
+                    return error;
+                const float cosine = glm::dot(glm::vec3(ta->plane), glm::vec3(tb->plane));
+                const bool corner = shareCorner(*ta, *tb);
+                const bool crease = corner && cosine >= m_creaseCos;
+                const bool facet = corner && cosine >= kFacetCosine;
+                const bool smooth = cosine >= m_smoothCos;
+                if (crease || smooth) {
+                    // The planes' depth difference along P→Q keeps its sign except at one
+                    // point (1/depth is affine on screen), so a sign change means their line of
+                    // intersection passes between the pixel centres.
+                    const float bAtP = planeDepth(tb->plane, rayP);
+                    const float aAtQ = planeDepth(ta->plane, rayQ);
+                    const bool cross = bAtP > 0.0f && aAtQ > 0.0f &&
+                                       (a.depth[i] - bAtP) * (aAtQ - b.depth[j]) <= 0.0f;
+                    if (crease && cross)
+                        return 0.0f; // the crease through the shared corner is between them
+                    if (smooth && cross && !facet) {
+                        const float arc = arcError(a, i, b, j, rayP, rayQ, cosine, kArcSlack);
+                        if (arc != kFail)
+                            return arc;
+                    }
+                }
+                if (facet) {
+                    // Facets around a shared corner of a coarse mesh: their planes meet at the
+                    // corner, not between the pixels, and one sample lies off the other's
+                    // plane by up to about twice the arc's distance; a fold this flat would
+                    // be off by four times or more.
+                    const float arc = arcError(a, i, b, j, rayP, rayQ, cosine, kFacetSlack);
+                    if (arc != kFail)
+                        return arc;
+                }
+                return kFail;
+            }
+        }
+        // Plain test: grazing, degenerate or unknown triangles.
+        const float error = std::abs(a.depth[i] - b.depth[j]);
+        const bool differentParts = ta && tb && ta->component != tb->component;
+        if (error < (differentParts ? m_contactLimit : m_limit))
+            return error;
+        // Seen edge-on, one mesh part may still continue smoothly (a silhouette pixel).
+        if (ta && tb && !differentParts) {
+            const float cosine = glm::dot(glm::vec3(ta->plane), glm::vec3(tb->plane));
+            if (cosine >= m_smoothCos && ta->plane != glm::vec4(0.0f) &&
+                tb->plane != glm::vec4(0.0f))
+                return arcError(a, i, b, j, rayP, rayQ, cosine, kArcSlack);
+        }
+        return kFail;
+    }
+
+    /**
+     * For a smooth surface curving between the two samples (one mesh part, triangles not
+     * adjacent, as where triangles are smaller than pixels or near silhouettes, where the depth
+     * prediction over half a pixel is poor): the samples must lie on a common arc, i.e. each
+     * sample's distance from the other's plane is at most about chord × sin(half the normal
+     * angle). Two unrelated sheets fail by a factor of about 2 even when one is seen edge-on, and
+     * parallel sheets by their gap. Returns the larger distance, or kFail.
+     */
+    float arcError(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j, const Ray& rayP,
+                   const Ray& rayQ, float cosine, float slack) const {
+        const glm::vec4& planeA = a.info[i]->plane;
+        const glm::vec4& planeB = b.info[j]->plane;
+        const glm::vec3 pointA = rayP.origin + a.depth[i] * rayP.direction;
+        const glm::vec3 pointB = rayQ.origin + b.depth[j] * rayQ.direction;
+        const float chord = glm::length(pointB - pointA);
+        const float sinHalf = std::sqrt(std::max(0.0f, 0.5f * (1.0f - cosine)));
+        const float bound = slack * chord * sinHalf + m_limit;
+        const float fromA = std::abs(glm::dot(glm::vec3(planeA), pointB) + planeA.w);
+        const float fromB = std::abs(glm::dot(glm::vec3(planeB), pointA) + planeB.w);
+        return fromA <= bound && fromB <= bound ? std::max(fromA, fromB) : kFail;
+    }
+
+    /** Whether the triangles share a welded corner, so their planes meet at a mesh point. */
+    static bool shareCorner(const SurfaceTriangle& a, const SurfaceTriangle& b) {
+        if (a.corners[0] == kNone || b.corners[0] == kNone)
+            return false;
+        for (std::uint32_t v : a.corners)
+            if (v == b.corners[0] || v == b.corners[1] || v == b.corners[2])
+                return true;
+        return false;
+    }
+
+    /** True when candidate layer c (score s) beats the current best for a fragment on layer
+     * self: lower score, then the same layer, then the shallower layer. */
+    static bool better(float s, std::uint32_t c, float bestScore, std::uint32_t best,
+                       std::uint32_t self) {
+        if (s != bestScore)
+            return s < bestScore;
+        const std::uint32_t rankC = c == self ? 0 : c, rankBest = best == self ? 0 : best;
+        return rankC < rankBest;
+    }
+
+    void pair(std::size_t p, std::size_t q, float px, float py, float dx, float dy, int forward,
+              int backward) {
+        if (m_stack.layerCount(q) == 0)
+            return;
+        Ray rayP{}, rayQ{}, rayM{};
+        if (m_geometry) {
+            const PixelRays& rays = m_geometry->rays;
+            rayP = rayAt(rays, px, py);
+            rayQ = rayAt(rays, px + dx, py + dy);
+            rayM = rayAt(rays, px + 0.5f * dx, py + 0.5f * dy);
+        }
+        Side& a = m_a;
+        Side& b = m_b;
+        if (m_geometry) {
+            load(a, p, rayM);
+            load(b, q, rayM);
+        } else {
+            loadPlain(a, p);
+            loadPlain(b, q);
+        }
+        float bestForB[kMaxLinkedLayers];
+        std::uint32_t choiceForB[kMaxLinkedLayers];
+        std::fill_n(bestForB, b.count, kFail);
+        std::fill_n(choiceForB, b.count, 0u);
+        std::uint8_t* links = m_out.links.data();
+        for (std::uint32_t i = 0; i < a.count; ++i) {
+            float bestScore = kFail;
+            std::uint32_t best = 0;
+            for (std::uint32_t j = 0; j < b.count; ++j) {
+                const float s =
+                    m_geometry ? score(a, i, b, j, rayP, rayQ) : plainScore(a.depth[i], b.depth[j]);
+                if (s == kFail)
+                    continue;
+                if (better(s, j + 1, bestScore, best, i + 1)) {
+                    bestScore = s;
+                    best = j + 1;
+                }
+                if (better(s, i + 1, bestForB[j], choiceForB[j], j + 1)) {
+                    bestForB[j] = s;
+                    choiceForB[j] = i + 1;
+                }
+            }
+            links[4 * std::size_t(a.first + i) + std::size_t(forward)] = std::uint8_t(best);
+        }
+        for (std::uint32_t j = 0; j < b.count; ++j)
+            links[4 * std::size_t(b.first + j) + std::size_t(backward)] =
+                std::uint8_t(choiceForB[j]);
+    }
+
+    void loadPlain(Side& side, std::size_t pixel) const {
+        side.first = m_stack.offsets[pixel];
+        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
+        for (std::uint32_t k = 0; k < side.count; ++k)
+            side.depth[k] = m_stack.depth[side.first + k];
+    }
+
+    float plainScore(float za, float zb) const {
+        const float error = std::abs(za - zb);
+        return error < m_limit ? error : kFail;
+    }
+
+    const LayerStack& m_stack;
+    const SurfaceGeometry* m_geometry;
+    Connectivity& m_out;
+    float m_limit = 0.0f;
+    float m_contactLimit = 0.0f;
+    float m_creaseCos = 0.0f;
+    float m_smoothCos = 1.0f;
+    Side m_a, m_b;
+};
+
+} // namespace
+
+float unitScale(const Mesh& mesh) {
+    const float side = mesh.positions.empty() ? 0.0f : mesh.bounds().longestSide();
+    return side > 0.0f && std::isfinite(side) ? 1.0f / side : 1.0f;
+}
+
+PixelRays PixelRays::fromView(const View& view) {
+    const glm::dmat4 invProj = glm::inverse(glm::dmat4(view.proj));
+    // (origin, direction) of the ray through window position (px, py), parameterized by depth.
+    auto rayThrough = [&](double px, double py, glm::dvec3& origin, glm::dvec3& direction) {
+        const double nx = px / double(view.width) * 2.0 - 1.0;
+        const double ny = 1.0 - py / double(view.height) * 2.0;
+        const glm::dvec4 a = invProj * glm::dvec4(nx, ny, -1.0, 1.0);
+        const glm::dvec4 b = invProj * glm::dvec4(nx, ny, 1.0, 1.0);
+        const glm::dvec3 pa = glm::dvec3(a) / a.w, pb = glm::dvec3(b) / b.w;
+        direction = (pb - pa) / (pa.z - pb.z);
+        origin = pa + pa.z * direction;
+    };
+    glm::dvec3 o0, d0, o1, d1, o2, d2;
+    rayThrough(0.0, 0.0, o0, d0);
+    rayThrough(1.0, 0.0, o1, d1);
+    rayThrough(0.0, 1.0, o2, d2);
+    PixelRays rays;
+    const auto finite = [](const glm::dvec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    if (!finite(o0) || !finite(d0) || !finite(o1) || !finite(d1) || !finite(o2) || !finite(d2))
+        return rays;
+    rays.origin0 = glm::vec3(o0);
+    rays.originDx = glm::vec3(o1 - o0);
+    rays.originDy = glm::vec3(o2 - o0);
+    rays.direction0 = glm::vec3(d0);
+    rays.directionDx = glm::vec3(d1 - d0);
+    rays.directionDy = glm::vec3(d2 - d0);
+    return rays;
+}
+
+SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
+                                    const View& view) {
+    SurfaceGeometry geometry;
+    geometry.rays = PixelRays::fromView(view);
+    const std::size_t count = mesh.triangleCount();
+    geometry.triangles.resize(count);
+    const glm::dmat4 toView(view.view);
+    const bool haveTopology = topology.triangleCount() == count;
+    // Independent per triangle: split over threads (this runs on every view change).
+    parallelRanges(int(count), 0, [&](int, int begin, int end) {
+        for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t) {
+            SurfaceTriangle& tri = geometry.triangles[t];
+            if (haveTopology) {
+                tri.corners = topology.corners[t];
+                tri.component = topology.component[t];
+            }
+            glm::dvec3 v[3];
+            bool valid = true;
+            for (int c = 0; c < 3; ++c) {
+                const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
+                valid = valid && index < mesh.positions.size();
+                if (valid)
+                    v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+            }
+            if (!valid)
+                continue;
+            const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+            const double length = glm::length(n);
+            if (!(length > 0.0) || !std::isfinite(length))
+                continue;
+            const glm::dvec3 unit = n / length;
+            // Offset from the centroid: the least rounding error over the whole triangle.
+            const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
+            tri.plane = glm::vec4(glm::vec3(unit), float(w));
+        }
+    });
+    return geometry;
+}
+
+Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOptions& options,
+                                 const SurfaceGeometry* geometry) {
+    Connectivity out;
+    out.width = stack.width;
+    out.height = stack.height;
+    out.links.assign(4 * stack.fragmentCount(), 0);
+    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1)
+        return out;
+    out.truncated = stack.maxLayers() > kMaxLinkedLayers;
+    // Each part writes the right/left links of its rows and the down links of its rows plus the
+    // up links of the row below: every byte has one writer, whatever the split.
+    parallelRanges(stack.height, options.threads, [&](int, int y0, int y1) {
+        auto linker = std::make_unique<Linker>(stack, options, geometry, out);
+        linker->rows(y0, y1);
+    });
+    return out;
+}
+
+ConnectivityQuality measureConnectivity(const LayerStack& stack, const Connectivity& connectivity,
+                                        const MeshTopology& topology) {
+    ConnectivityQuality quality;
+    if (connectivity.links.size() != 4 * stack.fragmentCount() ||
+        stack.offsets.size() != stack.pixelCount() + 1)
+        return quality;
+    const std::size_t triangles = topology.triangleCount();
+    const int w = stack.width, h = stack.height;
+    auto linked = [&](std::uint32_t from, std::uint32_t fromLayer, int direction,
+                      std::uint32_t toLayer) {
+        return fromLayer <= kMaxLinkedLayers && connectivity.link(from, direction) == toLayer;
+    };
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            for (int dir = 0; dir < 2; ++dir) {
+                if ((dir == 0 && x + 1 >= w) || (dir == 1 && y + 1 >= h))
+                    continue;
+                const std::size_t q = dir == 0 ? p + 1 : p + std::size_t(w);
+                const int forward = dir == 0 ? kRight : kDown, backward = dir == 0 ? kLeft : kUp;
+                for (std::uint32_t i = 1; i <= stack.layerCount(p); ++i) {
+                    const std::uint32_t a = stack.offsets[p] + i - 1;
+                    const std::uint32_t ta = stack.triangle[a];
+                    if (ta >= triangles)
+                        continue;
+                    for (std::uint32_t j = 1; j <= stack.layerCount(q); ++j) {
+                        const std::uint32_t b = stack.offsets[q] + j - 1;
+                        const std::uint32_t tb = stack.triangle[b];
+                        if (tb >= triangles)
+                            continue;
+                        const bool ab = linked(a, i, forward, j), ba = linked(b, j, backward, i);
+                        if (ta == tb) {
+                            ++quality.sameTrianglePairs;
+                            quality.sameTriangleDisconnected += (ab && ba) ? 0 : 1;
+                        } else if (topology.sharedCorners(ta, tb) > 0) {
+                            ++quality.adjacentTrianglePairs;
+                            quality.adjacentTriangleDisconnected += (ab || ba) ? 0 : 1;
+                        }
+                        if (ab || ba) {
+                            ++quality.connectedPairs;
+                            quality.crossComponentConnected +=
+                                topology.component[ta] != topology.component[tb] ? 1 : 0;
+                        }
+                    }
+                }
+            }
+        }
+    return quality;
+}
+
+} // namespace core

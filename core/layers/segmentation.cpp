@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/layers/segmentation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <climits>
+#include <numeric>
+
+#include "core/base/parallel.h"
+
+namespace core {
+
+namespace {
+
+// Union-find on a flat parent array whose root is always the smallest fragment index of its set.
+// Fragments are stored in scan order, so a root is its region's first pixel, and parent[i] <= i
+// holds throughout, which lets a single ascending pass flatten a range.
+
+inline std::uint32_t findRoot(std::uint32_t* parent, std::uint32_t x) {
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]]; // path halving
+        x = parent[x];
+    }
+    return x;
+}
+
+inline std::uint32_t findRootReadOnly(const std::uint32_t* parent, std::uint32_t x) {
+    while (parent[x] != x)
+        x = parent[x];
+    return x;
+}
+
+inline void unite(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
+    a = findRoot(parent, a);
+    b = findRoot(parent, b);
+    if (a < b)
+        parent[b] = a;
+    else if (b < a)
+        parent[a] = b;
+}
+
+/** The fragment that link value `layer` of a fragment at pixel p points to at pixel q, or kNone. */
+inline std::uint32_t target(const LayerStack& stack, std::size_t q, std::uint32_t layer) {
+    return layer != 0 && layer <= stack.layerCount(q) ? stack.offsets[q] + layer - 1 : kNone;
+}
+
+/** Joins the same-layer links of rows [y0, y1) that stay inside those rows. */
+void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y0,
+               int y1) {
+    const int w = stack.width;
+    const std::uint8_t* links = conn.links.data();
+    for (int y = y0; y < y1; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const std::uint32_t n = std::min(stack.layerCount(p), kMaxLinkedLayers);
+            const std::uint32_t first = stack.offsets[p];
+            for (std::uint32_t k = 1; k <= n; ++k) {
+                const std::uint32_t f = first + k - 1;
+                const std::uint8_t* l = links + 4 * std::size_t(f);
+                // Right and down cover every pair once; left and up add the pairs linked only
+                // the other way (links need not be symmetric).
+                if (l[kRight] == k && x + 1 < w)
+                    if (const std::uint32_t g = target(stack, p + 1, k); g != kNone)
+                        unite(parent, f, g);
+                if (l[kDown] == k && y + 1 < y1)
+                    if (const std::uint32_t g = target(stack, p + std::size_t(w), k); g != kNone)
+                        unite(parent, f, g);
+                if (l[kLeft] == k && x > 0)
+                    if (const std::uint32_t g = target(stack, p - 1, k); g != kNone)
+                        unite(parent, f, g);
+                if (l[kUp] == k && y - 1 >= y0)
+                    if (const std::uint32_t g = target(stack, p - std::size_t(w), k); g != kNone)
+                        unite(parent, f, g);
+            }
+        }
+}
+
+/** Joins the same-layer links between row y - 1 and row y. */
+void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y) {
+    const int w = stack.width;
+    for (int x = 0; x < w; ++x) {
+        const std::size_t q = std::size_t(y) * std::size_t(w) + std::size_t(x);
+        const std::size_t p = q - std::size_t(w);
+        for (std::uint32_t k = 1; k <= std::min(stack.layerCount(p), kMaxLinkedLayers); ++k)
+            if (conn.link(stack.offsets[p] + k - 1, kDown) == k)
+                if (const std::uint32_t g = target(stack, q, k); g != kNone)
+                    unite(parent, stack.offsets[p] + k - 1, g);
+        for (std::uint32_t k = 1; k <= std::min(stack.layerCount(q), kMaxLinkedLayers); ++k)
+            if (conn.link(stack.offsets[q] + k - 1, kUp) == k)
+                if (const std::uint32_t g = target(stack, p, k); g != kNone)
+                    unite(parent, stack.offsets[q] + k - 1, g);
+    }
+}
+
+} // namespace
+
+Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, unsigned threads,
+                           SegmentationTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    Segmentation out;
+    const std::size_t fragments = stack.fragmentCount();
+    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1 ||
+        conn.width != stack.width || conn.height != stack.height ||
+        conn.links.size() != 4 * fragments || stack.offsets.back() != fragments) {
+        out.graph.neighborOffsets.assign(1, 0);
+        return out;
+    }
+    const int w = stack.width, h = stack.height;
+    const int parts = partCount(h, threads);
+    auto rowFragment = [&](int y) { return stack.offsets[std::size_t(y) * std::size_t(w)]; };
+    struct Part {
+        std::vector<std::uint32_t> roots;      // local roots in scan order
+        std::vector<std::uint32_t> rootLayers; // their 1-based layers
+        std::vector<Region> regions;           // partial nodes, by region id
+        std::vector<std::uint64_t> pairs;      // cross-layer links as (smaller, larger) ids
+    };
+    std::vector<Part> part(static_cast<std::size_t>(parts));
+
+    // 1. Label each band of rows on its own, flatten it (parent[i] <= i, so one ascending pass)
+    //    and note its roots.
+    std::vector<std::uint32_t> parentStore(fragments);
+    std::uint32_t* parent = parentStore.data();
+    parallelRanges(h, threads, [&](int index, int y0, int y1) {
+        Part& own = part[std::size_t(index)];
+        const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
+        std::iota(parent + f0, parent + f1, f0);
+        labelRows(stack, conn, parent, y0, y1);
+        for (std::size_t p = std::size_t(y0) * w; p < std::size_t(y1) * w; ++p)
+            for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1]; ++f, ++k) {
+                parent[f] = parent[parent[f]];
+                if (parent[f] == f) {
+                    own.roots.push_back(f);
+                    own.rootLayers.push_back(k);
+                }
+            }
+    });
+    // 2. Stitch the bands in order; this only touches roots and short paths.
+    for (int index = 1; index < parts; ++index)
+        if (const int y = splitBegin(h, parts, index); y > 0 && y < h)
+            stitchRows(stack, conn, parent, y);
+
+    // 3. Number the surviving roots by layer, then scan order (bands are in scan order).
+    std::uint32_t layers = 0;
+    for (const Part& own : part)
+        for (std::uint32_t k : own.rootLayers)
+            layers = std::max(layers, k);
+    std::vector<std::uint32_t> base(std::size_t(parts) * layers, 0);
+    for (int index = 0; index < parts; ++index) {
+        const Part& own = part[std::size_t(index)];
+        for (std::size_t i = 0; i < own.roots.size(); ++i)
+            if (parent[own.roots[i]] == own.roots[i])
+                ++base[std::size_t(index) * layers + own.rootLayers[i] - 1];
+    }
+    std::uint32_t regionCount = 0;
+    for (std::uint32_t k = 0; k < layers; ++k)
+        for (int index = 0; index < parts; ++index) {
+            std::uint32_t& slot = base[std::size_t(index) * layers + k];
+            const std::uint32_t count = slot;
+            slot = regionCount;
+            regionCount += count;
+        }
+    out.region.resize(fragments);
+    std::uint32_t* region = out.region.data();
+    for (int index = 0; index < parts; ++index) {
+        const Part& own = part[std::size_t(index)];
+        std::uint32_t* nextId = base.data() + std::size_t(index) * layers;
+        for (std::size_t i = 0; i < own.roots.size(); ++i)
+            if (parent[own.roots[i]] == own.roots[i])
+                region[own.roots[i]] = nextId[own.rootLayers[i] - 1]++;
+    }
+
+    // 4. Every fragment's id, the partial region nodes and the cross-layer links, per band.
+    //    Another band's ids are read through the (final) roots only.
+    parallelRanges(h, threads, [&](int index, int y0, int y1) {
+        Part& own = part[std::size_t(index)];
+        own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
+        for (int y = y0; y < y1; ++y)
+            for (int x = 0; x < w; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                const std::uint32_t n = stack.layerCount(p);
+                for (std::uint32_t k = 1; k <= n; ++k) {
+                    const std::uint32_t f = stack.offsets[p] + k - 1;
+                    // Roots keep their id (other bands read it); the rest take their root's.
+                    const bool root = parent[f] == f;
+                    const std::uint32_t r = root ? region[f] : region[findRootReadOnly(parent, f)];
+                    if (!root)
+                        region[f] = r;
+                    Region& node = own.regions[r];
+                    ++node.pixels;
+                    node.minX = std::min(node.minX, x);
+                    node.maxX = std::max(node.maxX, x);
+                    node.minY = std::min(node.minY, y);
+                    node.maxY = std::max(node.maxY, y);
+                    if (k > kMaxLinkedLayers)
+                        continue;
+                    const std::uint8_t* l = conn.links.data() + 4 * std::size_t(f);
+                    for (int d = 0; d < 4; ++d) {
+                        if (l[d] == 0 || l[d] == k)
+                            continue;
+                        const bool inside = d == kRight  ? x + 1 < w
+                                            : d == kLeft ? x > 0
+                                            : d == kUp   ? y > 0
+                                                         : y + 1 < h;
+                        if (!inside)
+                            continue;
+                        const std::size_t q = d == kRight  ? p + 1
+                                              : d == kLeft ? p - 1
+                                              : d == kUp   ? p - std::size_t(w)
+                                                           : p + std::size_t(w);
+                        const std::uint32_t g = target(stack, q, l[d]);
+                        if (g == kNone)
+                            continue;
+                        const std::uint64_t a = r, b = region[findRootReadOnly(parent, g)];
+                        own.pairs.push_back(a < b ? (a << 32) | b : (b << 32) | a);
+                    }
+                }
+            }
+    });
+
+    const auto graphStart = std::chrono::steady_clock::now();
+    // 5. Region nodes: merge the bands' partial nodes.
+    RegionGraph& graph = out.graph;
+    graph.regions = std::move(part[0].regions);
+    for (int index = 1; index < parts; ++index)
+        for (std::uint32_t r = 0; r < regionCount; ++r) {
+            Region& node = graph.regions[r];
+            const Region& more = part[std::size_t(index)].regions[r];
+            node.pixels += more.pixels;
+            node.minX = std::min(node.minX, more.minX);
+            node.maxX = std::max(node.maxX, more.maxX);
+            node.minY = std::min(node.minY, more.minY);
+            node.maxY = std::max(node.maxY, more.maxY);
+        }
+    // Ids run layer by layer; after numbering, the last band's counter of a layer is the
+    // layer's end.
+    for (std::uint32_t k = 0, id = 0; k < layers; ++k)
+        for (const std::uint32_t end = base[std::size_t(parts - 1) * layers + k]; id < end; ++id) {
+            graph.regions[id].id = id;
+            graph.regions[id].layer = k + 1;
+        }
+
+    // 6. Region edges: count the unordered region pairs of the cross-layer links.
+    std::vector<std::uint64_t> pairs;
+    for (const Part& own : part)
+        pairs.insert(pairs.end(), own.pairs.begin(), own.pairs.end());
+    std::sort(pairs.begin(), pairs.end());
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // unique pair, link count
+    for (std::size_t i = 0; i < pairs.size();) {
+        std::size_t j = i + 1;
+        while (j < pairs.size() && pairs[j] == pairs[i])
+            ++j;
+        edges.emplace_back(pairs[i], std::uint32_t(j - i));
+        i = j;
+    }
+    graph.neighborOffsets.assign(std::size_t(regionCount) + 1, 0);
+    for (const auto& [key, count] : edges) {
+        ++graph.neighborOffsets[(key >> 32) + 1];
+        ++graph.neighborOffsets[(key & 0xffffffffu) + 1];
+    }
+    std::partial_sum(graph.neighborOffsets.begin(), graph.neighborOffsets.end(),
+                     graph.neighborOffsets.begin());
+    graph.neighbors.resize(graph.neighborOffsets.back());
+    // Edges are sorted by (smaller, larger) id, so appending to both ends fills every list in
+    // ascending neighbour order: first the smaller neighbours, then the larger ones.
+    std::vector<std::uint32_t> fill(graph.neighborOffsets.begin(), graph.neighborOffsets.end() - 1);
+    for (const auto& [key, count] : edges) {
+        const std::uint32_t r = std::uint32_t(key >> 32), s = std::uint32_t(key & 0xffffffffu);
+        graph.neighbors[fill[r]++] = {s, count};
+        graph.neighbors[fill[s]++] = {r, count};
+    }
+    if (timings) {
+        const auto ms = [](auto a, auto b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        const auto end = std::chrono::steady_clock::now();
+        *timings = {ms(start, graphStart), ms(graphStart, end)};
+    }
+    return out;
+}
+
+} // namespace core

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/model/mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+namespace core {
+
+float Bounds::longestSide() const {
+    const glm::vec3 s = size();
+    return std::max({s.x, s.y, s.z});
+}
+
+Bounds Mesh::bounds() const {
+    if (positions.empty())
+        return {};
+    Bounds b{glm::vec3(std::numeric_limits<float>::max()),
+             glm::vec3(std::numeric_limits<float>::lowest())};
+    for (const glm::vec3& p : positions) {
+        b.min = glm::min(b.min, p);
+        b.max = glm::max(b.max, p);
+    }
+    return b;
+}
+
+void Mesh::computeNormals() {
+    normals.assign(positions.size(), glm::vec3(0.0f));
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const std::uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+        // The cross product's length is twice the area: this weights by area.
+        const glm::vec3 n = glm::cross(positions[b] - positions[a], positions[c] - positions[a]);
+        normals[a] += n;
+        normals[b] += n;
+        normals[c] += n;
+    }
+    for (glm::vec3& n : normals) {
+        const float len = glm::length(n);
+        n = len > 0.0f ? n / len : glm::vec3(0.0f, 0.0f, 1.0f);
+    }
+}
+
+static bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string Mesh::validate() const {
+    const std::size_t n = positions.size();
+    if (n == 0 || indices.empty())
+        return "the mesh has no triangles";
+    if (indices.size() % 3 != 0)
+        return "the index count is not a multiple of 3";
+    if (normals.size() != n)
+        return "normal count differs from vertex count";
+    if (!uvs.empty() && uvs.size() != n)
+        return "texture coordinate count differs from vertex count";
+    if (!colors.empty() && colors.size() != n)
+        return "vertex color count differs from vertex count";
+    if (triangleMaterial.size() != triangleCount())
+        return "per-triangle material count differs from triangle count";
+    if (materials.empty())
+        return "the mesh has no material";
+    for (std::uint32_t i : indices)
+        if (i >= n)
+            return "a vertex index is out of range";
+    for (std::uint32_t m : triangleMaterial)
+        if (m >= materials.size())
+            return "a material index is out of range";
+    for (const Material& m : materials)
+        if (m.baseColorTexture >= static_cast<int>(textures.size()))
+            return "a texture index is out of range";
+    for (const glm::vec3& p : positions)
+        if (!finite(p))
+            return "a vertex position is not a finite number";
+    for (const Image& img : textures)
+        if (img.rgba.size() != static_cast<std::size_t>(img.width) * img.height * 4)
+            return "a texture's pixel data does not match its size";
+    return {};
+}
+
+} // namespace core

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/model/mesh_topology.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "core/layers/layer_stack.h"
+
+namespace core {
+
+namespace {
+
+/** Union-find whose root is always the smallest index of its set (deterministic numbering). */
+class MinUnionFind {
+public:
+    explicit MinUnionFind(std::size_t n) : m_parent(n) {
+        std::iota(m_parent.begin(), m_parent.end(), std::uint32_t(0));
+    }
+    std::uint32_t find(std::uint32_t x) {
+        while (m_parent[x] != x) {
+            m_parent[x] = m_parent[m_parent[x]];
+            x = m_parent[x];
+        }
+        return x;
+    }
+    void unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a < b)
+            m_parent[b] = a;
+        else if (b < a)
+            m_parent[a] = b;
+    }
+
+private:
+    std::vector<std::uint32_t> m_parent;
+};
+
+constexpr int kCellBits = 21;
+constexpr std::uint64_t kCellMask = (std::uint64_t(1) << kCellBits) - 1;
+/** A cluster bigger than this is only partly compared with its neighbour cells (bad input). */
+constexpr std::size_t kMaxCompared = 64;
+
+std::uint64_t cellKey(std::uint64_t x, std::uint64_t y, std::uint64_t z) {
+    return (x << (2 * kCellBits)) | (y << kCellBits) | z;
+}
+
+/** Renumbers union-find roots 0, 1, ... in order of first occurrence among ids 0 .. n-1. */
+template <typename RootOf>
+std::uint32_t numberRoots(std::size_t n, RootOf rootOf, std::vector<std::uint32_t>& out) {
+    std::vector<std::uint32_t> idOfRoot(n, kNone);
+    std::uint32_t next = 0;
+    out.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::uint32_t root = rootOf(i);
+        if (idOfRoot[root] == kNone)
+            idOfRoot[root] = next++;
+        out[i] = idOfRoot[root];
+    }
+    return next;
+}
+
+} // namespace
+
+int MeshTopology::sharedCorners(std::uint32_t a, std::uint32_t b) const {
+    const auto& ca = corners[a];
+    const auto& cb = corners[b];
+    int shared = 0;
+    for (std::uint32_t v : ca)
+        shared += (v == cb[0] || v == cb[1] || v == cb[2]) ? 1 : 0;
+    return shared;
+}
+
+MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
+    MeshTopology topo;
+    const std::size_t vertexCount = mesh.positions.size();
+    const std::size_t triangleCount = mesh.triangleCount();
+
+    // Weld: quantize to cells of the tolerance, join whole cells, then join vertices of
+    // neighbouring cells that are within the tolerance (two close points can straddle a cell
+    // border). Only 13 of the 26 neighbour offsets are needed because joining is symmetric.
+    const Bounds bounds = mesh.bounds();
+    const float longest = std::max(bounds.longestSide(), 1e-30f);
+    const float tolerance = std::max(weldTolerance, 0.0f) * longest;
+    // Keep cell coordinates within kCellBits bits.
+    const float cell = std::max(tolerance, longest / float(1 << (kCellBits - 1)));
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keyed(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v) {
+        const glm::vec3 q = (mesh.positions[v] - bounds.min) / cell;
+        auto quantize = [](float c) {
+            return std::uint64_t(
+                std::clamp(std::isfinite(c) ? c : 0.0f, 0.0f, float(kCellMask - 1)));
+        };
+        keyed[v] = {cellKey(quantize(q.x), quantize(q.y), quantize(q.z)), std::uint32_t(v)};
+    }
+    std::sort(keyed.begin(), keyed.end());
+    MinUnionFind vertexSets(vertexCount);
+    std::unordered_map<std::uint64_t, std::pair<std::uint32_t, std::uint32_t>> cells;
+    cells.reserve(vertexCount);
+    for (std::size_t i = 0; i < keyed.size();) {
+        std::size_t j = i + 1;
+        while (j < keyed.size() && keyed[j].first == keyed[i].first) {
+            vertexSets.unite(keyed[i].second, keyed[j].second);
+            ++j;
+        }
+        cells.emplace(keyed[i].first, std::pair{std::uint32_t(i), std::uint32_t(j)});
+        i = j;
+    }
+    const float tolerance2 = tolerance * tolerance;
+    if (tolerance > 0.0f) {
+        for (const auto& [key, range] : cells) {
+            const std::uint64_t x = key >> (2 * kCellBits), y = (key >> kCellBits) & kCellMask,
+                                z = key & kCellMask;
+            for (int d = 1; d <= 13; ++d) {
+                // Offsets (dx, dy, dz) in {-1,0,1}^3 after the origin in lexicographic order.
+                const int code = 13 + d;
+                const int dx = code / 9 - 1, dy = (code / 3) % 3 - 1, dz = code % 3 - 1;
+                if ((dx < 0 && x == 0) || (dy < 0 && y == 0) || (dz < 0 && z == 0))
+                    continue;
+                const auto other = cells.find(cellKey(x + dx, y + dy, z + dz));
+                if (other == cells.end())
+                    continue;
+                const auto [b0, b1] = other->second;
+                const std::uint32_t a1 =
+                    std::min<std::uint32_t>(range.second, range.first + kMaxCompared);
+                const std::uint32_t b1c = std::min<std::uint32_t>(b1, b0 + kMaxCompared);
+                for (std::uint32_t a = range.first; a < a1; ++a)
+                    for (std::uint32_t b = b0; b < b1c; ++b) {
+                        const glm::vec3 diff =
+                            mesh.positions[keyed[a].second] - mesh.positions[keyed[b].second];
+                        if (glm::dot(diff, diff) <= tolerance2)
+                            vertexSets.unite(keyed[a].second, keyed[b].second);
+                    }
+            }
+        }
+    }
+    topo.weldedVertexCount = numberRoots(
+        vertexCount, [&](std::size_t v) { return vertexSets.find(std::uint32_t(v)); },
+        topo.weldedVertex);
+
+    // Corners; an out-of-range index becomes a fresh vertex of its own.
+    topo.corners.resize(triangleCount);
+    std::uint32_t nextLoose = topo.weldedVertexCount;
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t index = mesh.indices[3 * t + c];
+            topo.corners[t][c] = index < vertexCount ? topo.weldedVertex[index] : nextLoose++;
+        }
+
+    // Edge neighbours: sort the undirected welded edges; a pair of equal edges is a manifold edge.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges;
+    edges.reserve(triangleCount * 3);
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t a = topo.corners[t][e], b = topo.corners[t][(e + 1) % 3];
+            if (a != b)
+                edges.emplace_back((std::uint64_t(std::min(a, b)) << 32) | std::max(a, b),
+                                   std::uint32_t(3 * t + e));
+        }
+    std::sort(edges.begin(), edges.end());
+    topo.edgeNeighbors.assign(triangleCount, {kNone, kNone, kNone});
+    for (std::size_t i = 0; i < edges.size();) {
+        std::size_t j = i + 1;
+        while (j < edges.size() && edges[j].first == edges[i].first)
+            ++j;
+        if (j - i == 2) {
+            const std::uint32_t u = edges[i].second, w = edges[i + 1].second;
+            topo.edgeNeighbors[u / 3][u % 3] = w / 3;
+            topo.edgeNeighbors[w / 3][w % 3] = u / 3;
+        }
+        i = j;
+    }
+
+    // Components through shared welded vertices.
+    MinUnionFind cornerSets(nextLoose);
+    for (const auto& c : topo.corners) {
+        cornerSets.unite(c[0], c[1]);
+        cornerSets.unite(c[0], c[2]);
+    }
+    std::vector<std::uint32_t> triangleRoot(triangleCount);
+    for (std::size_t t = 0; t < triangleCount; ++t)
+        triangleRoot[t] = cornerSets.find(topo.corners[t][0]);
+    // Number components by their first triangle: renumber the corner roots in triangle order.
+    std::vector<std::uint32_t> idOfRoot(nextLoose, kNone);
+    topo.component.resize(triangleCount);
+    for (std::size_t t = 0; t < triangleCount; ++t) {
+        std::uint32_t& id = idOfRoot[triangleRoot[t]];
+        if (id == kNone)
+            id = topo.componentCount++;
+        topo.component[t] = id;
+    }
+    return topo;
+}
+
+} // namespace core

@@ -1,0 +1,284 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/base/result.h"
+#include "core/model/mesh.h"
+#include "core/model/mesh_topology.h"
+#include "core/paint/dab.h"
+#include "core/paint/undo_tiles.h"
+
+namespace core {
+
+struct Layers;
+
+/** Texture tiles are kTextureTile × kTextureTile texels (edge tiles are smaller). */
+inline constexpr int kTextureTile = 64;
+/** Vertex colours are stored and undone in blocks of this many vertices. */
+inline constexpr std::uint32_t kVertexBlock = 256;
+
+/** A changed rectangle of texels of one texture page. */
+struct TexelRect {
+    std::uint32_t page = 0;
+    int x = 0, y = 0, width = 0, height = 0;
+};
+
+/** Changed vertices [begin, end). */
+struct VertexRange {
+    std::uint32_t begin = 0, end = 0;
+};
+
+/**
+ * What a dab, undo or redo changed, so a GPU copy can be updated without uploading everything:
+ * texel rectangles (whole tiles, merged along tile rows) or vertex ranges (whole blocks, merged).
+ */
+struct PaintChanges {
+    std::vector<TexelRect> texels;
+    std::vector<VertexRange> vertices;
+
+    bool empty() const { return texels.empty() && vertices.empty(); }
+    void clear() {
+        texels.clear();
+        vertices.clear();
+    }
+};
+
+/**
+ * One element of a paint target: texel y * width + x of a texture page, or a vertex (page 0) of
+ * a vertex colour target.
+ */
+struct PaintElement {
+    std::uint32_t page = 0;
+    std::uint32_t index = 0;
+
+    friend bool operator==(const PaintElement&, const PaintElement&) = default;
+    friend auto operator<=>(const PaintElement&, const PaintElement&) = default;
+};
+
+enum class PaintTargetKind : std::uint8_t { Texture, VertexColors };
+
+struct PaintTargetOptions {
+    /** Empty: a texture if the mesh has UVs, else vertex colours. */
+    std::optional<PaintTargetKind> kind;
+    /** Size of a new texture (when the mesh has none to paint), clamped to 512..8192. */
+    int resolution = 2048;
+    /** Seam padding: painted texels are dilated this far into texels no triangle covers. */
+    int padding = 4;
+    /** Paint the mesh's own base color textures (false: always bake into a new texture). */
+    bool reuseTextures = true;
+    /**
+     * A surface point matches a pixel's fragment when its distance to the fragment's triangle
+     * plane is at most relativeTolerance × depth + pixelTolerance × (size of a pixel at that
+     * depth). Surfaces hidden behind another are further apart than that.
+     */
+    float relativeTolerance = 1e-3f;
+    float pixelTolerance = 1.5f;
+};
+
+/**
+ * Where paint goes (DESIGN.md §3 step 6): the paper's paint_object(object, Mp). A stroke is
+ * beginStroke(), paint() per dab, endStroke(), which returns the stroke's undo record. Within a
+ * stroke every texel or vertex keeps a coverage a (never above the dab's opacity) that rises by
+ * flow × opacity × falloff per dab, and its colour is lerp(value at stroke start, brush colour, a)
+ * (the original colour for the eraser), so overlapping dabs never build up beyond the opacity.
+ *
+ * The target owns the painted data; draw the mesh with drawMaterials() (base colour factors are
+ * baked in, so they are all 1). It is a TileStore, so TileUndoRecords restore it; not during a
+ * stroke.
+ */
+class PaintTarget : public TileStore {
+public:
+    ~PaintTarget() override;
+    PaintTarget(const PaintTarget&) = delete;
+    PaintTarget& operator=(const PaintTarget&) = delete;
+
+    virtual PaintTargetKind kind() const = 0;
+    const Mesh& mesh() const;
+
+    /**
+     * Starts a stroke with brush (colour, hardness, flow, eraser; radius and opacity come with
+     * each dab). A stroke in progress is ended first and its record discarded.
+     */
+    void beginStroke(const Brush& brush);
+    bool inStroke() const;
+    /**
+     * Paints dab: every texel or vertex whose surface point projects into the dab's paintable
+     * map at a pixel whose fragment (of layers.stack) lies on the same surface, weighted by the
+     * brush falloff at its exact projected position (dab.center in window pixels, pixel centres at
+     * +0.5). layers must be the view the dab was tracked in. Returns what changed (valid until the
+     * next call); empty outside a stroke. Map entries outside the stack are ignored.
+     */
+    virtual const PaintChanges& paint(const Layers& layers, const Dab& dab) = 0;
+    /**
+     * Paints elements at full weight, as a dab covering them would (flood fill): each gets the
+     * stroke's opacity of the brush colour; texture pages pad the seams around painted texels.
+     * Elements out of range are ignored. Returns what changed (valid until the next call);
+     * empty outside a stroke.
+     */
+    virtual const PaintChanges& paintElements(std::span<const PaintElement> elements) = 0;
+    /** Ends the stroke: the record of the tiles it changed (empty if none, or no stroke). */
+    TileUndoRecord endStroke();
+
+    /** What undoing or redoing record changes (the tiles it holds), for updating a GPU copy. */
+    virtual PaintChanges changes(const TileUndoRecord& record) const = 0;
+    /**
+     * The target's current, unlit colour (linear RGBA) at a point of triangle given by weights of
+     * its three corners (negative ones are taken as 0, the rest normalised): the texel of its page
+     * under the interpolated uv, or the interpolated vertex colour. nullopt for a triangle out of
+     * range or weights that are not finite or all zero.
+     */
+    virtual std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                             const glm::vec3& weights) const = 0;
+    /** The mesh's materials as the painted mesh is to be drawn (see the derived classes). */
+    const std::vector<Material>& drawMaterials() const { return m_drawMaterials; }
+    /** Memory held by the painted data, originals and scratch, in bytes (approximate). */
+    virtual std::size_t bytes() const = 0;
+
+protected:
+    struct Context; // the shared dab and stroke machinery, defined in paint_target.cpp
+
+    PaintTarget(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
+                const PaintTargetOptions& options);
+    /** Sets the tile layout the stroke state keeps: tiles per page, elements and bytes a tile. */
+    void setUpStrokeTiles(const std::vector<std::uint32_t>& tilesPerPage,
+                          std::size_t elementsPerTile, std::size_t bytesPerTile);
+
+    std::unique_ptr<Context> m_context;
+    std::vector<Material> m_drawMaterials;
+};
+
+/**
+ * Projection painting into base colour textures ("pages", sRGB RGBA8, rows top first, uv (0,0)
+ * the top-left texel corner; UVs outside 0..1 repeat). Pages:
+ * - each base colour texture the materials use becomes a page, byte for byte, when its
+ *   materials' factor is white and the mesh has no vertex colours; otherwise (factor or vertex
+ *   colours to fold in) a copy with them baked in, one per distinct factor, so the look does not
+ *   change and painted colours show as painted;
+ * - all materials without a texture share one new page of options.resolution, filled per texel
+ *   from the base colour factor × vertex colours. Their UV layouts are assumed not to overlap
+ *   (where they do, painting one paints the other, as in any texture painter).
+ * drawMaterials()[m].baseColorTexture is the index of material m's page, factors are 1, and
+ * vertex colours are not to be applied (they are baked in).
+ */
+class TextureTarget final : public PaintTarget {
+public:
+    /**
+     * A target for mesh (topology = buildMeshTopology(*mesh), or nullptr to compute it here).
+     * An Error if the mesh is invalid, has no UVs or no triangles.
+     */
+    static Result<std::unique_ptr<TextureTarget>>
+    create(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
+           const PaintTargetOptions& options = {});
+    ~TextureTarget() override;
+
+    PaintTargetKind kind() const override { return PaintTargetKind::Texture; }
+    const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
+    PaintChanges changes(const TileUndoRecord& record) const override;
+    std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                     const glm::vec3& weights) const override;
+    std::size_t bytes() const override;
+
+    std::size_t pageCount() const { return m_pages.size(); }
+    /** The painted texture of page i. */
+    const Image& page(std::size_t i) const { return m_pages[i].image; }
+    /** Page i as created (what the eraser restores). */
+    const Image& originalPage(std::size_t i) const { return m_pages[i].original; }
+    /** The mesh texture page i was made from, or -1 for a new page. */
+    int pageSource(std::size_t i) const { return m_pages[i].source; }
+    /** Per texel of page i: 0 outside every triangle, 1 covered, 2 seam padding. */
+    const std::vector<std::uint8_t>& coverage(std::size_t i) const { return m_pages[i].coverage; }
+    /** The page triangle t is painted on. */
+    std::uint32_t trianglePage(std::size_t t) const;
+    int padding() const { return m_padding; }
+
+    std::size_t tileBytes(TileKey key) const override;
+    bool readTile(TileKey key, std::span<std::uint8_t> out) const override;
+    bool writeTile(TileKey key, std::span<const std::uint8_t> bytes) override;
+
+    struct PadPair {
+        std::uint32_t padded = 0; // texel index y * width + x of an uncovered texel
+        std::uint32_t source = 0; // the covered texel it copies
+    };
+    struct Page {
+        Image image;
+        Image original;
+        std::vector<std::uint8_t> coverage;
+        int source = -1;
+        glm::vec4 factor{1.0f};
+        int tilesX = 0, tilesY = 0;
+        std::vector<std::uint32_t> padOffsets; // per tile of the source texel, into padPairs
+        std::vector<PadPair> padPairs;
+    };
+
+private:
+    TextureTarget(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
+                  const PaintTargetOptions& options);
+    /** Pads the seams around the tiles the current dab touched (see PaintTargetOptions). */
+    void padTouched();
+
+    std::vector<Page> m_pages;
+    std::vector<std::uint32_t> m_materialPage;
+    int m_padding = 4;
+};
+
+/**
+ * Painting into per-vertex colours (linear RGBA), for meshes without UVs or on request. Starts
+ * from the mesh's vertex colours (white without) times the base colour factor of the vertex's
+ * first triangle's material; drawMaterials() have factor 1 and keep their textures, so a
+ * textured mesh shows texture × painted colour.
+ */
+class VertexColorTarget final : public PaintTarget {
+public:
+    /** A target for mesh (topology as for TextureTarget); an Error if invalid or empty. */
+    static Result<std::unique_ptr<VertexColorTarget>>
+    create(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
+           const PaintTargetOptions& options = {});
+    ~VertexColorTarget() override;
+
+    PaintTargetKind kind() const override { return PaintTargetKind::VertexColors; }
+    const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
+    PaintChanges changes(const TileUndoRecord& record) const override;
+    std::optional<glm::vec4> colorAt(std::uint32_t triangle,
+                                     const glm::vec3& weights) const override;
+    std::size_t bytes() const override;
+
+    const std::vector<glm::vec4>& colors() const { return m_colors; }
+    const std::vector<glm::vec4>& originalColors() const { return m_original; }
+
+    std::size_t tileBytes(TileKey key) const override;
+    bool readTile(TileKey key, std::span<std::uint8_t> out) const override;
+    bool writeTile(TileKey key, std::span<const std::uint8_t> bytes) override;
+
+private:
+    VertexColorTarget(std::shared_ptr<const Mesh> mesh,
+                      std::shared_ptr<const MeshTopology> topology,
+                      const PaintTargetOptions& options);
+
+    std::vector<glm::vec4> m_colors;
+    std::vector<glm::vec4> m_original;
+    std::vector<std::uint32_t> m_vertexDab; // per vertex: the last dab that looked at it
+};
+
+/**
+ * The target options.kind asks for (by default a texture if the mesh has UVs, else vertex
+ * colours); an Error as the targets' create() does, or for a texture on a mesh without UVs.
+ */
+Result<std::unique_ptr<PaintTarget>> makePaintTarget(std::shared_ptr<const Mesh> mesh,
+                                                     std::shared_ptr<const MeshTopology> topology,
+                                                     const PaintTargetOptions& options = {});
+
+/** sRGB-encoded byte to linear (exact table). */
+float srgbToLinear(std::uint8_t value);
+/** Linear value to the nearest sRGB-encoded byte (clamped to 0..1, correctly rounded). */
+std::uint8_t linearToSrgb(float value);
+
+} // namespace core

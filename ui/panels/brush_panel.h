@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+#include "core/paint/dab.h"
+
+class QCheckBox;
+class QFormLayout;
+class QLabel;
+class QSlider;
+class QSpinBox;
+
+namespace ui {
+
+/** A small plot of a pressure curve: pen pressure to the right, stroke pressure up. */
+class PressureCurveView : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PressureCurveView(QWidget* parent = nullptr);
+    void setCurve(const core::PressureCurve& curve);
+    QSize sizeHint() const override;
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+
+private:
+    core::PressureCurve m_curve;
+};
+
+/**
+ * The Brush panel (a dock): every setting of core::Brush — radius, hardness, opacity, flow,
+ * spacing, R_max (0 = automatic) and what pen pressure changes — and the pressure curve. Every
+ * change emits at once; setBrush() and setPressureCurve() show values without emitting, so the
+ * window can keep this panel, the brush bar and the document in step.
+ */
+class BrushPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit BrushPanel(QWidget* parent = nullptr);
+
+    void setBrush(const core::Brush& brush);
+    const core::Brush& brush() const { return m_brush; }
+    void setPressureCurve(const core::PressureCurve& curve);
+    const core::PressureCurve& pressureCurve() const { return m_curve; }
+
+signals:
+    void brushChanged(const core::Brush& brush);
+    void pressureCurveChanged(const core::PressureCurve& curve);
+
+private:
+    QSpinBox* addRow(const QString& label, const QString& name, int minimum, int maximum,
+                     const QString& suffix, const QString& tip);
+    void readBrush();
+    void updateAutoTrackText();
+
+    core::Brush m_brush;
+    core::PressureCurve m_curve;
+    QFormLayout* m_form = nullptr;
+    QSpinBox* m_radius = nullptr;
+    QSpinBox* m_hardness = nullptr;
+    QSpinBox* m_opacity = nullptr;
+    QSpinBox* m_flow = nullptr;
+    QSpinBox* m_spacing = nullptr;
+    QSpinBox* m_trackRadius = nullptr;
+    QCheckBox* m_pressureRadius = nullptr;
+    QCheckBox* m_pressureOpacity = nullptr;
+    QSlider* m_gamma = nullptr;
+    QLabel* m_gammaText = nullptr;
+    PressureCurveView* m_curveView = nullptr;
+    bool m_updating = false;
+};
+
+} // namespace ui

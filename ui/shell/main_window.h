@@ -1,0 +1,298 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include <QList>
+#include <QMainWindow>
+#include <QPointF>
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+
+#include "core/document/document.h"
+#include "core/io/project_file.h"
+#include "core/model/mesh.h"
+#include "render/layer_compositor.h"
+#include "ui/shell/preferences.h"
+#include "ui/shell/recent_files.h"
+#include "ui/tools/tool.h"
+
+class QAction;
+class QActionGroup;
+class QCheckBox;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QProgressDialog;
+class QToolBar;
+class QUndoStack;
+
+namespace ui {
+
+class BrushPanel;
+class BrushToolBar;
+class ColorPanel;
+class FillPanel;
+class LayerBuilder;
+class LayersPanel;
+class ModelLoader;
+class ProjectController;
+class RegionGraphPanel;
+class RegionTools;
+class SegmentationControls;
+class Viewport;
+
+/**
+ * The application window: owns the core::Document (model, camera, layers) and shows it in the
+ * viewport and the Segmentation, Layers, Region Graph, Paint to Hide, Fill, Brush and Colour
+ * panels (all dockable, the layout kept in QSettings); the File/Edit/View/Paint/Help menus, the
+ * brush and tool bars, the status bar, the Preferences and the background loading of models.
+ * Painting: the viewport's left button (or pen) drives the document's strokes (with the pressure
+ * curve applied) and fills, each a StrokeCommand on the undo stack, which mirrors the document's
+ * (budgeted) undo history. The brush bar, the Brush and Colour panels and the document's brush
+ * are kept in step by setBrush(). The open model only changes when a load succeeds.
+ */
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /**
+     * Opens a file path (a model or a project) or "builtin:NAME" in the background, after asking
+     * to save unsaved changes (ProjectController::maybeSave; nothing happens if the user
+     * cancels). On success modelLoaded() follows; on failure loadFailed() and an error dialog,
+     * with the current model left as it was.
+     */
+    void openFile(const QString& source);
+    /** What the command line asks for: the first file, or the default model when there is none. */
+    void openFromCommandLine(const QStringList& files);
+    /**
+     * Where build_layers computes connectivity: "auto", "cpu" or "gpu" (the --connectivity
+     * option; the Segmentation panel's choice is saved in the settings). False for other names.
+     */
+    bool setConnectivityBackend(const QString& name, bool remember = false);
+
+    Viewport* viewport() const { return m_viewport; }
+    core::Document& document() { return *m_document; }
+    const core::Document& document() const { return *m_document; }
+    LayerBuilder* layerBuilder() const { return m_builder; }
+    LayersPanel* layersPanel() const { return m_layersPanel; }
+    RegionGraphPanel* regionGraphPanel() const { return m_graphPanel; }
+    RegionTools* regionTools() const { return m_regionTools; }
+    SegmentationControls* segmentationControls() const { return m_segmentationControls; }
+    BrushToolBar* brushToolBar() const { return m_brushBar; }
+    FillPanel* fillPanel() const { return m_fillPanel; }
+    BrushPanel* brushPanel() const { return m_brushPanel; }
+    ColorPanel* colorPanel() const { return m_colorPanel; }
+    QUndoStack* undoStack() const { return m_undoStack; }
+    /** Save, export, unsaved-changes tracking, autosave and recovery. */
+    ProjectController* projectController() const { return m_project; }
+
+    /**
+     * The project state to save (ProjectController snapshots it): the document's share
+     * (core::captureProjectState) and what this window's panels hold. Panels that add state
+     * (colours, palette, pop-up settings) fill it in here and read it in applyProjectState().
+     */
+    core::ProjectState projectState() const;
+    /**
+     * Shows an opened project's state: document settings (core::applyProjectState) and the
+     * widgets that show them. Call right after the document's mesh was set (onLoaded does); what
+     * this window does not show yet is kept for the next save.
+     */
+    void applyProjectState(const core::ProjectState& state);
+
+    /** The brush everywhere: the document's, the brush bar's and the panels'. */
+    void setBrush(const core::Brush& brush);
+    /** What pen pressure goes through before it reaches a stroke. */
+    const core::PressureCurve& pressureCurve() const { return m_pressureCurve; }
+    /** The preferences in use (Edit ▸ Preferences). */
+    const Preferences& preferences() const { return m_preferences; }
+    /** Saves preferences to the settings and applies them. */
+    void setPreferences(const Preferences& preferences);
+    /** Opens the Preferences dialog (window-modal, returns at once). */
+    void showPreferences();
+
+    /** The tool of the left button (the Tools toolbar and menu). */
+    Tool tool() const { return m_tool; }
+    void setTool(Tool tool);
+    /** The checkable action that chooses tool (disabled while the tool cannot be used). */
+    QAction* toolAction(Tool tool) const { return m_toolActions[std::size_t(tool)]; }
+
+    /** What the last stroke's mouse moves cost on the GUI thread (tracking and painting). */
+    struct StrokeStats {
+        int moves = 0;
+        double totalMs = 0.0;
+        double maxMs = 0.0;
+        double pressMs = 0.0; // the press, including a layer build it needed
+    };
+    const StrokeStats& lastStrokeStats() const { return m_strokeStats; }
+    bool isPainting() const { return m_painting; }
+
+    /**
+     * Shows the layers as display; for SingleLayer, layer (1-based) is the one shown alone, 0
+     * keeps the current one.
+     */
+    void setDisplay(render::LayerDisplay display, std::uint32_t layer = 0);
+    /** The open model's source (absolute path or "builtin:NAME"); empty before the first load. */
+    QString currentSource() const { return m_source; }
+    bool isLoading() const;
+    QStringList recentFiles() const { return m_recent.files(); }
+
+    /**
+     * Tests turn the modal dialogs off: errors are only reported by signals (loadFailed(), ...)
+     * and unsaved changes are discarded without asking.
+     */
+    void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
+    bool errorDialogsEnabled() const { return m_errorDialogs; }
+    /** A warning box (window-modal, not blocking) unless dialogs are off. */
+    void showError(const QString& title, const QString& text, const QString& details);
+
+    /** The translated name of a built-in model ("trefoil" → "Trefoil knot"). */
+    static QString builtinLabel(const QString& name);
+    /** The name shown for a source: a built-in's label or the file name. */
+    static QString displayName(const QString& source);
+
+signals:
+    void modelLoaded(const QString& source);
+    /** message is core's error text; it names the file. */
+    void loadFailed(const QString& message);
+    /** A region was chosen (a click in the region graph). */
+    void regionActivated(std::uint32_t region);
+    void toolChanged(ui::Tool tool);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
+
+private:
+    void createPanels();
+    /** A dock (on the right by default) named for saveState(). */
+    QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
+                          Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
+    void createMenus();
+    void createDisplayActions(QMenu* viewMenu);
+    void createPaintActions();
+    void createToolActions();
+    void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
+    /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
+    void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
+    /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
+    void fillAt(QPointF pixel);
+    /** The eyedropper: the brush takes the surface colour under pixel. */
+    void pickColor(QPointF pixel);
+    void onPaintMoved(QPointF pixel, qreal pressure);
+    void onPaintReleased(QPointF pixel);
+    /** Ends a stroke in progress and puts it on the undo stack. */
+    void finishStroke();
+    /**
+     * Makes the undo stack offer exactly the document's paint steps and the order steps of the
+     * current layers (those of earlier layers go).
+     */
+    void syncUndoStack();
+    void setPaintTarget(const core::PaintTargetOptions& options);
+    void updateBrushBar();
+    void updateBrushInfo();
+    /** [ and ]: the radius a step (about 15 %) smaller or larger. */
+    void stepBrushRadius(int direction);
+    /** Shift+[ and Shift+]: the hardness 10 % down or up. */
+    void stepBrushHardness(int direction);
+    void setPressureCurve(const core::PressureCurve& curve);
+    void setLayerOptions(const core::LayerOptions& options);
+    void onLayersBuilt();
+    void onSegmentationChanged();
+    void onLayersCleared();
+    void updateLayerInfo();
+    void updateRecentMenu();
+    void showOpenDialog();
+    void showAbout();
+    void createProjectActions(QMenu* fileMenu);
+    void updateWindowTitle();
+
+    void onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                  std::shared_ptr<const core::ProjectState> state);
+    void onLoadFailed(const QString& source, const QString& message);
+    void onLoadCancelled(const QString& source);
+    void startProgress(const QString& source);
+    void stopProgress();
+    void updateModelInfo(const core::Mesh& mesh);
+
+    // ~MainWindow deletes the widgets that refer to it before it goes.
+    std::unique_ptr<core::Document> m_document;
+    Viewport* m_viewport = nullptr;
+    LayerBuilder* m_builder = nullptr;
+    ModelLoader* m_loader = nullptr;
+    SegmentationControls* m_segmentationControls = nullptr;
+    LayersPanel* m_layersPanel = nullptr;
+    RegionGraphPanel* m_graphPanel = nullptr;
+    QDockWidget* m_segmentationDock = nullptr;
+    QDockWidget* m_layersDock = nullptr;
+    QDockWidget* m_graphDock = nullptr;
+    QDockWidget* m_hiddenDock = nullptr;
+    RegionTools* m_regionTools = nullptr;
+    /** What leaving the hide tool (which shows the segmentation map) shows again. */
+    render::LayerDisplay m_displayBeforeHide = render::LayerDisplay::Composite;
+    FillPanel* m_fillPanel = nullptr;
+    QDockWidget* m_fillDock = nullptr;
+    BrushPanel* m_brushPanel = nullptr;
+    ColorPanel* m_colorPanel = nullptr;
+    QDockWidget* m_brushDock = nullptr;
+    QDockWidget* m_colorDock = nullptr;
+    QActionGroup* m_displayGroup = nullptr;
+    QAction* m_shadedAction = nullptr;
+    QAction* m_singleLayerAction = nullptr;
+    QAction* m_segmentationAction = nullptr;
+    QAction* m_boundariesAction = nullptr;
+    /** What "All layers" returns to: Composite or Segmentation. */
+    render::LayerDisplay m_allLayersDisplay = render::LayerDisplay::Composite;
+    QLabel* m_layerInfo = nullptr;
+    QLabel* m_brushInfo = nullptr;
+
+    BrushToolBar* m_brushBar = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    QActionGroup* m_toolGroup = nullptr;
+    std::array<QAction*, 6> m_toolActions{};
+    Tool m_tool = Tool::Brush;
+    QAction* m_layerAwareAction = nullptr;
+    QCheckBox* m_layerAwareCheck = nullptr;
+    QAction* m_swapColorsAction = nullptr;
+    QAction* m_preferencesAction = nullptr;
+    QList<QAction*> m_brushStepActions; // [ ] Shift+[ Shift+]
+    QAction* m_brushMapsAction = nullptr;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
+    QUndoStack* m_undoStack = nullptr;
+    /** The undo stack is being rebuilt: its commands must not touch the document. */
+    bool m_undoSuspended = false;
+    bool m_painting = false;
+    bool m_picking = false;      // the eyedropper is held down
+    float m_lastPressure = 1.0f; // of the stroke's last sample, for its end
+    /** undoCount() + droppedCount() of the history at the press: the stroke added a step. */
+    std::size_t m_historyMark = 0;
+    StrokeStats m_strokeStats;
+    core::PaintTargetOptions m_paintOptions;
+    core::PressureCurve m_pressureCurve;
+    Preferences m_preferences;
+
+    RecentFiles m_recent;
+    QMenu* m_recentMenu = nullptr;
+    QAction* m_orthographicAction = nullptr;
+    QLabel* m_modelInfo = nullptr;
+    QPointer<QProgressDialog> m_progress;
+    QTimer m_progressTimer;
+    QString m_source;
+    bool m_errorDialogs = true;
+
+    ProjectController* m_project = nullptr;
+    /** The state last opened: keeps what no panel of this window shows yet (projectState()). */
+    core::ProjectState m_projectBase;
+    QMenu* m_exportMenu = nullptr;
+};
+
+} // namespace ui

@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <QObject>
+#include <QString>
+
+#include "core/io/project_file.h"
+#include "core/model/mesh.h"
+
+namespace ui {
+
+/**
+ * Loads models and projects with core::loadProject on a worker thread and reports back on the GUI
+ * thread, so the event loop never waits for a file. One load is current at a time: starting
+ * another cancels the previous one and drops its result.
+ */
+class ModelLoader : public QObject {
+    Q_OBJECT
+
+public:
+    explicit ModelLoader(QObject* parent = nullptr);
+    /** Cancels every running load and waits for the workers to stop. */
+    ~ModelLoader() override;
+
+    /** Starts loading source: a file path or "builtin:NAME". */
+    void load(const QString& source);
+    /** Asks the current load to stop; cancelled() follows instead of loaded() or failed(). */
+    void cancel();
+
+    bool isLoading() const;
+    /** The current load's source, or empty. */
+    QString currentSource() const;
+    /** Progress of the current load in [0, 1]; safe to poll from the GUI thread. */
+    double progress() const;
+
+signals:
+    /** state is the project's (a LayerPaint project), or null for a plain model. */
+    void loaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                std::shared_ptr<const core::ProjectState> state);
+    /** message comes from core and names the file. */
+    void failed(const QString& source, const QString& message);
+    void cancelled(const QString& source);
+
+private:
+    struct Job;
+    struct Outcome;
+    void finish(Job* job, const std::shared_ptr<Outcome>& outcome);
+
+    std::vector<std::unique_ptr<Job>> m_jobs; // current one last; touched on the GUI thread only
+    Job* m_current = nullptr;
+};
+
+} // namespace ui

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <memory>
+
+#include <QLockFile>
+#include <QObject>
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+#include <QTimer>
+
+#include "core/io/export.h"
+
+class QProgressDialog;
+
+namespace ui {
+
+class BackgroundTask;
+class MainWindow;
+
+/**
+ * The project side of the main window (DESIGN.md §3 step 7): which file the document is saved
+ * to, whether it has unsaved changes, Save / Save As, Export, autosave and crash recovery.
+ *
+ * - Modified: the undo stack is away from its clean index (strokes, undo, redo), or a project
+ *   setting changed (markModified()). Saving makes the document clean unless it changed while
+ *   the save ran. The window title shows it with "[*]".
+ * - Saving and exporting take a snapshot on the GUI thread (the painted mesh, the state) and
+ *   encode and write it on a worker thread, with a progress dialog for long ones; the document
+ *   stays usable. Writes are atomic; a failure leaves the old file and says so.
+ * - Autosave: every "autosave/intervalMinutes" minutes (QSettings; default 5, 0 = off) a
+ *   modified document is written to recoveryFolder(), held by a lock file while this session
+ *   runs. A normal close removes it; one left by a crashed session is offered at the next start.
+ */
+class ProjectController : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int kDefaultAutosaveMinutes = 5;
+
+    explicit ProjectController(MainWindow& window);
+    /** Waits for a save or export under way (an interrupted write would leave a temporary file). */
+    ~ProjectController() override;
+
+    /** The project file the document is saved to; empty until it is saved (or a project opened). */
+    QString filePath() const { return m_filePath; }
+    /** The name the title shows: the project file's, else the model's. */
+    QString documentName() const;
+    bool isModified() const;
+    /** A project setting changed (brush, mode, segmentation, paint target, ...). */
+    void markModified();
+    /**
+     * A document was loaded from source (isProject: a LayerPaint project). A project is saved to
+     * its own file; a plain model or built-in is untitled. An autosave being recovered keeps the
+     * file it belonged to (recoveryFor) and stays modified. Either way the undo stack is clean.
+     */
+    void documentLoaded(const QString& source, bool isProject, const QString& recoveryFor,
+                        const QString& modelSource);
+    /** Loading source failed (the document is unchanged). */
+    void documentLoadFailed(const QString& source);
+    /** Whether source is a file in the recovery folder (not worth a Recent entry). */
+    bool isRecoveryFile(const QString& source) const;
+
+    /** File ▸ Save: to filePath(), or through the Save As dialog without one. False if not started.
+     */
+    bool save();
+    /** File ▸ Save As: asks for a file, then saves. False if cancelled or not started. */
+    bool saveAs();
+    /** Starts saving to path (".glb" is added without an extension); saved() or saveFailed()
+     * follow. */
+    bool saveTo(const QString& path);
+    /** Saves to path and waits (with a modal progress dialog); true when it is saved. */
+    bool saveAndWait(const QString& path);
+    bool isBusy() const;
+    /** Waits for a save or export under way. */
+    void waitForTasks();
+
+    /**
+     * Before the document is replaced or closed: if it has unsaved changes, asks Save / Discard /
+     * Cancel (without dialogs, see MainWindow::setErrorDialogsEnabled, the changes are
+     * discarded). True to go on.
+     */
+    bool maybeSave();
+
+    /** Export ▸ format: asks for a file, then exports. */
+    void showExportDialog(core::ExportFormat format);
+    /**
+     * Starts exporting the painted model (or its paint texture) to path; exported() or
+     * exportFailed() follow. False if it cannot start (busy, or no texture for a texture format).
+     */
+    bool exportTo(core::ExportFormat format, const QString& path);
+    /** Whether the document has a paint texture (texture formats can be exported). */
+    bool canExportTexture() const;
+
+    /** The folder of autosaves (under QStandardPaths::AppDataLocation). */
+    static QString recoveryFolder();
+    /** This session's autosave file. */
+    QString autosavePath() const;
+    /** Writes an autosave now if the document changed since the last one; false if not started. */
+    bool autosaveNow();
+    /** Reads "autosave/intervalMinutes" again (the Preferences dialog changed it). */
+    void reloadAutosaveInterval();
+    /**
+     * At startup: offers the newest autosave a crashed session left (Recover / Discard / Not
+     * Now). Recover opens it as the (modified) document. True if a recovery is loading.
+     */
+    bool offerRecovery();
+    /** The work is saved or discarded and the window closes: removes this session's autosave. */
+    void discardRecovery();
+
+signals:
+    void modifiedChanged(bool modified);
+    /** The document's file or name changed (title). */
+    void documentNameChanged();
+    void saved(const QString& path);
+    /** message names the file and the problem; the old file is intact. */
+    void saveFailed(const QString& message);
+    void exported(const QStringList& files);
+    void exportFailed(const QString& message);
+    void autosaved(const QString& path);
+
+private:
+    struct Snapshot;
+    /** The painted mesh and state now (GUI thread); null with why set if there is no model. */
+    std::shared_ptr<Snapshot> snapshot(QString& why) const;
+    QString askSavePath();
+    void startProgress(const QString& text);
+    void stopProgress();
+    void onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,
+                        const QString& error, bool cancelled);
+    void updateModified();
+    bool takeLock();
+    void onAutosaveTimer();
+
+    MainWindow& m_window;
+    BackgroundTask* m_task = nullptr;     // saves and exports, one at a time
+    BackgroundTask* m_autosave = nullptr; // autosaves, silently
+    QString m_filePath;
+    QString m_modelName; // the model's display name, for untitled documents
+    bool m_otherChanges = false;
+    bool m_lastModified = false;
+    /** Counts every change: a snapshot is clean to mark saved only if none came after it. */
+    quint64 m_changeSerial = 0;
+    quint64 m_autosavedSerial = 0;
+    QString m_recovering; // the autosave being loaded as the document
+    QString m_sessionId;
+    std::unique_ptr<QLockFile> m_lock;
+    QTimer m_autosaveTimer;
+    qint64 m_autosaveIntervalMs = 0;
+    QPointer<QProgressDialog> m_progress;
+    QTimer m_progressTimer;
+};
+
+} // namespace ui

@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/tools/region_tools.h"
+
+#include <QAction>
+#include <QKeySequence>
+#include <QSettings>
+#include <QUndoStack>
+
+#include <utility>
+
+#include "core/document/document.h"
+#include "ui/commands/order_command.h"
+#include "ui/panels/hidden_regions_panel.h"
+#include "ui/view/viewport.h"
+
+namespace ui {
+
+namespace {
+const QString kAutoPopUpKey = QStringLiteral("regions/autoPopUp");
+const QString kTransparencyKey = QStringLiteral("regions/seeThroughPopUps");
+const QString kOrbitKey = QStringLiteral("regions/orbitAboutSurface");
+
+glm::vec2 toVec(QPointF p) {
+    return {float(p.x()), float(p.y())};
+}
+
+QAction* makeToggle(const QString& text, const QString& name, const QString& tip,
+                    const QString& key, bool fallback, QObject* parent) {
+    auto* action = new QAction(text, parent);
+    action->setObjectName(name);
+    action->setCheckable(true);
+    action->setChecked(QSettings().value(key, fallback).toBool());
+    action->setStatusTip(tip);
+    action->setToolTip(tip);
+    QObject::connect(action, &QAction::toggled, parent,
+                     [key](bool on) { QSettings().setValue(key, on); });
+    return action;
+}
+} // namespace
+
+RegionTools::RegionTools(core::Document& document, Viewport& viewport, QUndoStack& undoStack,
+                         const bool& undoSuspended, std::function<bool()> ensureLayers,
+                         QObject* parent)
+    : QObject(parent), m_document(document), m_viewport(viewport), m_undoStack(undoStack),
+      m_undoSuspended(undoSuspended), m_ensureLayers(std::move(ensureLayers)) {
+    m_autoPopUp = makeToggle(tr("&Automatic Pop-up"), QStringLiteral("actionAutoPopUp"),
+                             tr("While painting layer-aware, bring the surface under the brush "
+                                "to the front when it goes behind another"),
+                             kAutoPopUpKey, true, this);
+    m_document.setAutoPopUp(m_autoPopUp->isChecked());
+    connect(m_autoPopUp, &QAction::toggled, this, [this](bool on) { m_document.setAutoPopUp(on); });
+
+    m_transparency = makeToggle(tr("&See-Through Pop-ups"), QStringLiteral("actionSeeThrough"),
+                                tr("Draw popped-up and revealed regions half transparent, so "
+                                   "what surrounds them stays visible"),
+                                kTransparencyKey, false, this);
+    m_viewport.setPopUpTransparency(m_transparency->isChecked());
+    connect(m_transparency, &QAction::toggled, &m_viewport, &Viewport::setPopUpTransparency);
+
+    m_orbitAboutSurface =
+        makeToggle(tr("Orbit About &Surface Point"), QStringLiteral("actionOrbitAboutSurface"),
+                   tr("Start an orbit on the model to turn about that point, on whatever layer "
+                      "is shown there"),
+                   kOrbitKey, true, this);
+    m_viewport.setOrbitAboutSurface(m_orbitAboutSurface->isChecked());
+    connect(m_orbitAboutSurface, &QAction::toggled, &m_viewport, &Viewport::setOrbitAboutSurface);
+
+    m_resetOrder = new QAction(tr("&Reset Region Order"), this);
+    m_resetOrder->setObjectName(QStringLiteral("actionResetOrder"));
+    m_resetOrder->setShortcut(QKeySequence(Qt::Key_R));
+    m_resetOrder->setStatusTip(tr("Show the regions in their original order (layer 1 in front)"));
+    m_resetOrder->setToolTip(tr("Reset the region order (R)"));
+    connect(m_resetOrder, &QAction::triggered, this, [this] {
+        core::RegionOrder order = m_document.regionOrder();
+        order.reset();
+        setOrder(std::move(order), tr("Reset Region Order"));
+    });
+
+    m_unhideAll = new QAction(tr("U&nhide All Regions"), this);
+    m_unhideAll->setObjectName(QStringLiteral("actionUnhideAll"));
+    m_unhideAll->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_H));
+    m_unhideAll->setToolTip(tr("Show every hidden region again (Shift+H)"));
+    connect(m_unhideAll, &QAction::triggered, this, [this] {
+        core::RegionOrder order = m_document.regionOrder();
+        order.unhideAll();
+        setOrder(std::move(order), tr("Unhide All"));
+    });
+    layersChanged();
+}
+
+HiddenRegionsPanel* RegionTools::createPanel(QWidget* parent) {
+    m_panel = new HiddenRegionsPanel(parent);
+    connect(m_panel, &HiddenRegionsPanel::unhideAllRequested, m_unhideAll, &QAction::trigger);
+    connect(m_panel, &HiddenRegionsPanel::unhideRequested, this,
+            [this](const std::vector<std::uint32_t>& regions) {
+                core::RegionOrder order = m_document.regionOrder();
+                for (const std::uint32_t region : regions)
+                    order.unhide(region);
+                setOrder(std::move(order), tr("Unhide"));
+            });
+    m_panel->setRegions(m_document.layers(), m_document.regionOrder());
+    return m_panel;
+}
+
+void RegionTools::popUpAt(QPointF pixel) {
+    if (!m_ensureLayers())
+        return;
+    core::RegionOrder before = m_document.regionOrder();
+    const std::uint32_t region = m_document.popUpAt(toVec(pixel));
+    if (region == core::kNone) {
+        emit message(tr("Nothing to pop up here"));
+        return;
+    }
+    pushChange(std::move(before), tr("Pop Up Region %1").arg(region));
+    emit message(tr("Region %1 (layer %2) in front; click again to go deeper")
+                     .arg(region)
+                     .arg(m_document.regionOrder().layerOf(region)));
+}
+
+void RegionTools::popUpRegion(std::uint32_t region) {
+    if (!m_document.layers())
+        return;
+    core::RegionOrder before = m_document.regionOrder();
+    if (!m_document.popUpRegion(region))
+        return;
+    pushChange(std::move(before), tr("Pop Up Region %1").arg(region));
+}
+
+void RegionTools::beginHide(QPointF pixel, float radius) {
+    endHide();
+    if (!m_ensureLayers())
+        return;
+    // The order at the press decides what the stroke hides: it never drills through what it
+    // reveals.
+    m_hideRanks = m_document.regionRanks();
+    m_hideBefore = m_document.regionOrder();
+    m_hideRadius = radius;
+    m_hideLast = pixel;
+    moveHide(pixel);
+}
+
+void RegionTools::moveHide(QPointF pixel) {
+    if (!m_hideRanks)
+        return;
+    if (m_document.hideAlong(toVec(m_hideLast), toVec(pixel), m_hideRadius, *m_hideRanks) > 0)
+        orderApplied();
+    m_hideLast = pixel;
+}
+
+void RegionTools::endHide() {
+    if (!m_hideRanks)
+        return;
+    m_hideRanks.reset();
+    const std::size_t before = m_hideBefore.hiddenRegions().size();
+    const std::size_t after = m_document.regionOrder().hiddenRegions().size();
+    if (after > before) {
+        pushChange(std::move(m_hideBefore), tr("Hide %n Region(s)", nullptr, int(after - before)));
+        emit message(tr("%n region(s) hidden", nullptr, int(after)));
+    }
+}
+
+void RegionTools::beginStroke() {
+    m_strokeBefore = m_document.regionOrder();
+    m_strokeOrderSerial = m_document.regionOrderSerial();
+}
+
+void RegionTools::strokeMoved() {
+    if (m_strokeBefore && m_document.regionOrderSerial() != m_strokeOrderSerial) {
+        m_strokeOrderSerial = m_document.regionOrderSerial();
+        orderApplied();
+    }
+}
+
+void RegionTools::endStroke() {
+    if (!m_strokeBefore)
+        return;
+    strokeMoved();
+    core::RegionOrder before = std::move(*m_strokeBefore);
+    m_strokeBefore.reset();
+    if (before.order() != m_document.regionOrder().order())
+        pushChange(std::move(before), tr("Automatic Pop-up"));
+}
+
+void RegionTools::layersChanged() {
+    m_strokeBefore.reset();
+    m_hideRanks.reset();
+    if (m_panel)
+        m_panel->setRegions(m_document.layers(), m_document.regionOrder());
+    const bool layers = m_document.layers() != nullptr;
+    m_resetOrder->setEnabled(layers);
+    m_unhideAll->setEnabled(layers && !m_document.regionOrder().hiddenRegions().empty());
+}
+
+void RegionTools::pushChange(core::RegionOrder before, const QString& text) {
+    orderApplied();
+    m_undoStack.push(new OrderCommand(m_document, m_undoSuspended, std::move(before),
+                                      m_document.regionOrder(), m_document.layersSerial(), text,
+                                      [this] { orderApplied(); }));
+}
+
+void RegionTools::setOrder(core::RegionOrder order, const QString& text) {
+    if (!m_document.layers())
+        return;
+    core::RegionOrder before = m_document.regionOrder();
+    if (order.order() == before.order() && order.hiddenRegions() == before.hiddenRegions())
+        return; // nothing to do: no undo step
+    m_document.setRegionOrder(std::move(order));
+    pushChange(std::move(before), text);
+}
+
+void RegionTools::orderApplied() {
+    m_viewport.regionOrderChanged();
+    if (m_panel)
+        m_panel->setRegions(m_document.layers(), m_document.regionOrder());
+    m_unhideAll->setEnabled(m_document.layers() &&
+                            !m_document.regionOrder().hiddenRegions().empty());
+}
+
+} // namespace ui

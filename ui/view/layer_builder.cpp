@@ -1,0 +1,225 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/view/layer_builder.h"
+
+#include <QElapsedTimer>
+#include <QMetaObject>
+
+#include <exception>
+#include <new>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "core/document/document.h"
+#include "ui/view/viewport.h"
+
+namespace ui {
+
+namespace {
+constexpr int kDefaultSettleMs = 250;
+} // namespace
+
+struct LayerBuilder::Job {
+    std::uint64_t viewSerial = 0;
+    std::uint64_t meshSerial = 0;
+    QElapsedTimer clock; // from the start of the capture
+    std::optional<core::Layers> layers;
+    std::string error;
+};
+
+LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject* parent)
+    : QObject(parent), m_document(document), m_viewport(viewport) {
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(kDefaultSettleMs);
+    connect(&m_settle, &QTimer::timeout, this, &LayerBuilder::onSettled);
+    connect(&m_viewport, &Viewport::viewChanged, this, &LayerBuilder::invalidate);
+}
+
+LayerBuilder::~LayerBuilder() {
+    // The worker posts its result to this object as its last step; joining here, before
+    // ~QObject discards the posted event, means it never reaches a destroyed builder.
+    if (m_worker.joinable())
+        m_worker.join();
+}
+
+void LayerBuilder::setSettleDelay(int milliseconds) {
+    m_settle.setInterval(milliseconds);
+}
+
+void LayerBuilder::setLayerOptions(const core::LayerOptions& options) {
+    const bool hadLayers = m_document.layers() != nullptr;
+    m_document.setLayerOptions(options);
+    if (m_document.layers()) {
+        m_viewport.showSegmentation();
+        emit segmentationChanged();
+    } else if (hadLayers || !m_wanted) {
+        // A capture option changed: the layers are gone and must be captured again.
+        invalidate();
+    }
+}
+
+void LayerBuilder::invalidate() {
+    const bool hadLayers = m_document.layers() != nullptr;
+    m_document.clearLayers();
+    m_wanted = true;
+    m_settle.start();
+    if (hadLayers)
+        emit layersCleared();
+}
+
+void LayerBuilder::onSettled() {
+    if (!m_wanted)
+        return;
+    if (m_viewport.isNavigating()) {
+        // Still dragging, only paused: a capture now would stall the drag when it goes on.
+        m_settle.start();
+        return;
+    }
+    if (!m_viewport.canCapture()) {
+        // No context or no model yet; the viewport reports a view change when either comes.
+        return;
+    }
+    if (m_workerBusy) {
+        m_captureWhenIdle = true;
+        return;
+    }
+    capture();
+}
+
+void LayerBuilder::capture() {
+    m_captureWhenIdle = false;
+    auto job = std::make_shared<Job>();
+    job->clock.start();
+    job->viewSerial = m_viewport.viewSerial();
+    job->meshSerial = m_document.meshSerial();
+    const core::View view = m_viewport.view();
+    const core::LayerOptions options = m_document.layerOptions();
+
+    // The GPU part, on this thread: the viewport's context is only current here.
+    core::CaptureStats stats;
+    core::Result<core::LayerStack> stack =
+        m_viewport.captureLayers(view, options.cullBackFaces, &stats);
+    ++m_captures;
+    if (!stack) {
+        m_wanted = false; // tried again at the next view change
+        emit buildFailed(QString::fromStdString(stack.error()));
+        return;
+    }
+
+    // With the GL compute pass chosen, connectivity needs this thread's context: finish here
+    // (a choice made where the GPU is fast).
+    if (core::ConnectivityEngine* engine = m_viewport.connectivityEngine()) {
+        m_document.setConnectivityEngine(engine);
+        job->layers.emplace(core::finishLayers(std::move(stack).value(), stats, m_document.mesh(),
+                                               m_document.topology(), view, options, engine));
+        m_job = job;
+        finish(job);
+        return;
+    }
+    m_document.setConnectivityEngine(nullptr);
+
+    // The CPU part on a worker. Mesh and topology are immutable and shared, so the document may
+    // move on (even to another model) while it runs.
+    m_workerBusy = true;
+    m_job = job;
+    m_worker = std::thread([this, job, stack = std::move(stack).value(), stats,
+                            mesh = m_document.sharedMesh(), topology = m_document.sharedTopology(),
+                            view, options]() mutable {
+        try {
+            job->layers.emplace(
+                core::finishLayers(std::move(stack), stats, *mesh, *topology, view, options));
+        } catch (const std::bad_alloc&) {
+            job->layers.reset();
+            job->error = "not enough memory for the layers of this view";
+        } catch (const std::exception& e) {
+            job->layers.reset();
+            job->error = e.what();
+        }
+        QMetaObject::invokeMethod(
+            this, [this, job] { finish(job); }, Qt::QueuedConnection);
+    });
+}
+
+bool LayerBuilder::buildNow() {
+    if (!m_wanted && m_document.layers())
+        return true;
+    if (!m_viewport.canCapture())
+        return false;
+    m_settle.stop();
+    m_wanted = true;
+    // A worker's result for this view is as good as a new one and nearly done.
+    if (m_worker.joinable())
+        m_worker.join();
+    std::shared_ptr<Job> job = std::move(m_job);
+    m_workerBusy = false;
+    m_captureWhenIdle = false;
+    if (job && job->layers && adopt(*job))
+        return true;
+
+    job = std::make_shared<Job>();
+    job->clock.start();
+    job->viewSerial = m_viewport.viewSerial();
+    job->meshSerial = m_document.meshSerial();
+    const core::View view = m_viewport.view();
+    const core::LayerOptions options = m_document.layerOptions();
+    core::CaptureStats stats;
+    core::Result<core::LayerStack> stack =
+        m_viewport.captureLayers(view, options.cullBackFaces, &stats);
+    ++m_captures;
+    if (stack) {
+        try {
+            core::ConnectivityEngine* engine = m_viewport.connectivityEngine();
+            m_document.setConnectivityEngine(engine);
+            job->layers.emplace(core::finishLayers(std::move(stack).value(), stats,
+                                                   m_document.mesh(), m_document.topology(), view,
+                                                   options, engine));
+        } catch (const std::bad_alloc&) {
+            job->error = "not enough memory for the layers of this view";
+        } catch (const std::exception& e) {
+            job->error = e.what();
+        }
+    } else {
+        job->error = stack.error();
+    }
+    if (job->layers && adopt(*job))
+        return true;
+    m_wanted = false; // tried again at the next view change
+    emit buildFailed(QString::fromStdString(job->error));
+    return false;
+}
+
+bool LayerBuilder::adopt(Job& job) {
+    if (job.viewSerial != m_viewport.viewSerial() || !m_wanted ||
+        !m_document.adoptLayers(std::move(*job.layers), job.meshSerial))
+        return false;
+    m_wanted = false;
+    m_lastBuildMs = double(job.clock.nsecsElapsed()) / 1e6;
+    m_viewport.showLayers();
+    emit layersBuilt();
+    return true;
+}
+
+void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
+    if (job != m_job)
+        return; // buildNow() already joined and settled it
+    m_job.reset();
+    // Posted as the worker's last step: the join returns at once.
+    if (m_worker.joinable())
+        m_worker.join();
+    m_workerBusy = false;
+
+    const bool current = job->viewSerial == m_viewport.viewSerial();
+    if (current && !job->layers) {
+        m_wanted = false;
+        emit buildFailed(QString::fromStdString(job->error));
+    } else if (current && job->layers && adopt(*job)) {
+        return;
+    }
+    // Stale: the view, the mesh or a capture option changed meanwhile.
+    if (m_captureWhenIdle)
+        capture();
+    else if (m_wanted && !m_settle.isActive())
+        m_settle.start();
+}
+
+} // namespace ui

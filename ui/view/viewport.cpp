@@ -1,0 +1,769 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/view/viewport.h"
+
+#include <QCoreApplication>
+#include <QMetaObject>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QPointingDevice>
+#include <QTabletEvent>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "core/document/document.h"
+#include "render/brush_overlay.h"
+#include "render/gl_layer_capturer.h"
+#include "render/mesh_renderer.h"
+
+namespace ui {
+
+namespace {
+constexpr float kOrbitDegreesPerPixel = 0.4f;
+constexpr float kPopUpOpacity = 0.55f;     // see-through pop-ups: the surroundings stay readable
+constexpr float kZoomPerWheelStep = 0.85f; // one 15° notch moves 15% closer
+constexpr float kZoomPerDragPixel = 0.005f;
+
+render::PixelRect unite(const render::PixelRect& a, const render::PixelRect& b) {
+    if (a.empty())
+        return b;
+    if (b.empty())
+        return a;
+    const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
+    const int x1 = std::max(a.x + a.width, b.x + b.width);
+    const int y1 = std::max(a.y + a.height, b.y + b.height);
+    return {x0, y0, x1 - x0, y1 - y0};
+}
+} // namespace
+
+Viewport::Viewport(core::Document& document, QWidget* parent)
+    : QOpenGLWidget(parent), m_document(document) {
+    setFormat(requiredFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    // Hover moves draw the brush outline, a pen's too.
+    setMouseTracking(true);
+    setAttribute(Qt::WA_TabletTracking);
+    setCursor(Qt::CrossCursor);
+    // Every pen sample is a point of the stroke: a 200 Hz tablet must lose none to merging.
+    // (Off by default in Qt 6; made sure of, as the stroke depends on it.)
+    QCoreApplication::setAttribute(Qt::AA_CompressTabletEvents, false);
+    // Qt sends proximity events to the application object, not to a widget.
+    if (QCoreApplication* app = QCoreApplication::instance())
+        app->installEventFilter(this);
+}
+
+Viewport::~Viewport() {
+    releaseGl();
+    // ~QOpenGLWidget destroys the context after this object stopped being a Viewport: the
+    // aboutToBeDestroyed connection must not reach releaseGl() then.
+    if (QOpenGLContext* current = context())
+        disconnect(current, nullptr, this, nullptr);
+}
+
+QSurfaceFormat Viewport::requiredFormat() {
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(4, 5);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    return format;
+}
+
+void Viewport::meshChanged() {
+    m_meshDirty = true; // uploaded where the context is current
+    cameraMoved();
+}
+
+std::shared_ptr<const core::Mesh> Viewport::mesh() const {
+    return m_document.meshSerial() != 0 ? m_document.sharedMesh() : nullptr;
+}
+
+const core::Camera& Viewport::camera() const {
+    return m_document.camera();
+}
+
+core::View Viewport::view() const {
+    const qreal ratio = devicePixelRatioF();
+    return camera().view(qRound(width() * ratio), qRound(height() * ratio));
+}
+
+bool Viewport::isNavigating() const {
+    return m_drag == Drag::Orbit || m_drag == Drag::Pan || m_drag == Drag::Zoom;
+}
+
+bool Viewport::isOrthographic() const {
+    return camera().orthographic;
+}
+
+void Viewport::frameAll() {
+    if (!mesh())
+        return;
+    m_document.camera().frame(m_document.mesh().bounds());
+    cameraMoved();
+}
+
+void Viewport::setOrthographic(bool orthographic) {
+    if (camera().orthographic == orthographic)
+        return;
+    m_document.camera().orthographic = orthographic;
+    emit orthographicChanged(orthographic);
+    cameraMoved();
+}
+
+void Viewport::setDisplay(render::LayerDisplay display) {
+    if (m_composite.display == display)
+        return;
+    m_composite.display = display;
+    update();
+}
+
+void Viewport::setDisplayLayer(std::uint32_t layer) {
+    layer = std::max(layer, 1u);
+    if (m_composite.layer == layer)
+        return;
+    m_composite.layer = layer;
+    update();
+}
+
+void Viewport::setBoundariesVisible(bool visible) {
+    if (m_composite.boundaries == visible)
+        return;
+    m_composite.boundaries = visible;
+    update();
+}
+
+void Viewport::setBrushMapsVisible(bool visible) {
+    if (m_brushMapsVisible == visible)
+        return;
+    m_brushMapsVisible = visible;
+    m_mapsRect = {};
+    if (visible)
+        brushMapsChanged();
+    update();
+}
+
+void Viewport::setBrushRadius(float radius) {
+    if (m_brushRadius == radius)
+        return;
+    m_brushRadius = radius;
+    if (m_cursorInside)
+        update();
+}
+
+void Viewport::paintTargetChanged() {
+    m_paintedMeshDirty = true; // uploaded where the context is current
+    m_compositorPaint.clear();
+    m_rendererPaint.clear();
+    update();
+}
+
+void Viewport::PendingPaint::add(const core::PaintChanges& changes) {
+    for (const core::TexelRect& rect : changes.texels) {
+        if (rect.width <= 0 || rect.height <= 0)
+            continue;
+        if (pages.size() <= rect.page)
+            pages.resize(std::size_t(rect.page) + 1);
+        core::TexelRect& box = pages[rect.page];
+        if (box.width <= 0) {
+            box = rect;
+            continue;
+        }
+        const int x1 = std::max(box.x + box.width, rect.x + rect.width);
+        const int y1 = std::max(box.y + box.height, rect.y + rect.height);
+        box.x = std::min(box.x, rect.x);
+        box.y = std::min(box.y, rect.y);
+        box.width = x1 - box.x;
+        box.height = y1 - box.y;
+    }
+    for (const core::VertexRange& range : changes.vertices) {
+        if (range.begin >= range.end)
+            continue;
+        if (vertices.begin >= vertices.end) {
+            vertices = range;
+        } else {
+            vertices.begin = std::min(vertices.begin, range.begin);
+            vertices.end = std::max(vertices.end, range.end);
+        }
+    }
+}
+
+void Viewport::applyPaintChanges(const core::PaintChanges& changes) {
+    if (changes.empty())
+        return;
+    m_compositorPaint.add(changes);
+    m_rendererPaint.add(changes);
+    update();
+}
+
+void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
+    if (!m_document.hasPaintTarget() || m_document.paintTarget() != m_shownTarget) {
+        pending.clear();
+        return;
+    }
+    const core::PaintTarget* target = m_document.paintTarget();
+    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target)) {
+        for (std::size_t page = 0; page < pending.pages.size(); ++page) {
+            const core::TexelRect& r = pending.pages[page];
+            if (r.width <= 0 || page >= texture->pageCount())
+                continue;
+            if (compositor)
+                m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                           texture->page(page));
+            else
+                m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                         texture->page(page));
+        }
+    } else if (const auto* colors = dynamic_cast<const core::VertexColorTarget*>(target)) {
+        const core::VertexRange range = pending.vertices;
+        const std::vector<glm::vec4>& all = colors->colors();
+        if (range.begin < range.end && range.end <= all.size()) {
+            const std::span<const glm::vec4> changed(all.data() + range.begin,
+                                                     range.end - range.begin);
+            if (compositor)
+                m_compositor->updateVertexColors(range.begin, changed);
+            else
+                m_renderer->updateVertexColors(range.begin, changed);
+        }
+    }
+    pending.clear();
+}
+
+void Viewport::brushMapsChanged() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_brushMapsVisible || !layers)
+        return;
+    const int width = layers->stack.width, height = layers->stack.height;
+    m_brushMaps.resize(std::size_t(width) * std::size_t(height) * 4);
+    if (!m_document.fillBrushMaps(m_brushMaps))
+        return;
+    // Mt (Mp included) is all the overlay shows: draw and upload only its bounding box.
+    int x0 = width, y0 = height, x1 = 0, y1 = 0;
+    for (const std::uint32_t pixel : m_document.strokeTracker().trackablePixels()) {
+        const int x = int(pixel % std::uint32_t(width)), y = int(pixel / std::uint32_t(width));
+        x0 = std::min(x0, x);
+        y0 = std::min(y0, y);
+        x1 = std::max(x1, x + 1);
+        y1 = std::max(y1, y + 1);
+    }
+    const render::PixelRect rect =
+        x0 < x1 ? render::PixelRect{x0, y0, x1 - x0, y1 - y0} : render::PixelRect{};
+    // The previous box is uploaded too, so what the maps left is cleared.
+    m_mapsUpload = unite(m_mapsUpload, unite(m_mapsRect, rect));
+    m_mapsRect = rect;
+    update();
+}
+
+void Viewport::setHighlightRegion(std::uint32_t region) {
+    if (m_composite.highlightRegion == region)
+        return;
+    m_composite.highlightRegion = region;
+    update();
+}
+
+bool Viewport::canCapture() const {
+    return m_capturer && mesh() && m_document.mesh().triangleCount() > 0;
+}
+
+core::Result<core::LayerStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
+                                                       core::CaptureStats* stats) {
+    if (!canCapture())
+        return core::Error{tr("The layer capture is not available.").toStdString()};
+    makeCurrent();
+    uploadMeshIfDirty();
+    auto stack = m_capturer->capture(view, cullBackFaces, stats);
+    doneCurrent();
+    return stack;
+}
+
+void Viewport::showLayers() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_compositor || !layers)
+        return;
+    makeCurrent();
+    uploadMeshIfDirty();
+    const core::Status status =
+        m_compositorHasMesh ? m_compositor->setLayers(*layers) : core::Status::success();
+    doneCurrent();
+    // Without them the mesh renderer goes on drawing the shaded view.
+    m_layersShown = m_compositorHasMesh && status.ok();
+    if (!status)
+        reportLayerError(status);
+    update();
+}
+
+void Viewport::showSegmentation() {
+    const core::Layers* layers = m_document.layers();
+    if (!m_compositor || !layers || !m_layersShown)
+        return;
+    makeCurrent();
+    const core::Status status = m_compositor->updateSegmentation(*layers);
+    doneCurrent();
+    if (!status) {
+        m_layersShown = false;
+        reportLayerError(status);
+    }
+    update();
+}
+
+void Viewport::regionOrderChanged() {
+    if (!m_compositor || !m_layersShown || !m_document.layers())
+        return;
+    makeCurrent();
+    // Pruned: the same picture, fewer regions to test per pixel.
+    m_compositor->setRegionRanks(m_document.regionOrder().prunedRanks(popUpTransparency()));
+    doneCurrent();
+    updateHoverHighlight();
+    update();
+}
+
+void Viewport::setPopUpTransparency(bool on) {
+    if (on == popUpTransparency())
+        return;
+    m_composite.popUpOpacity = on ? kPopUpOpacity : 1.0f;
+    regionOrderChanged();
+    update();
+}
+
+void Viewport::setHoverHighlight(bool on) {
+    m_hoverHighlight = on;
+    if (!on)
+        setHighlightRegion(core::kNone);
+    else
+        updateHoverHighlight();
+}
+
+void Viewport::updateHoverHighlight() {
+    if (!m_hoverHighlight)
+        return;
+    std::uint32_t region = core::kNone;
+    const core::Layers* layers = m_document.layers();
+    if (m_cursorInside && isShowingLayers() && layers && m_cursor.x() >= 0 && m_cursor.y() >= 0 &&
+        m_cursor.x() < layers->stack.width && m_cursor.y() < layers->stack.height) {
+        const std::size_t pixel = std::size_t(m_cursor.y()) * std::size_t(layers->stack.width) +
+                                  std::size_t(m_cursor.x());
+        const std::uint32_t f = m_document.visibleFragment(pixel);
+        if (f != core::kNone)
+            region = layers->segmentation.region[f];
+    }
+    setHighlightRegion(region);
+}
+
+bool Viewport::isShowingLayers() const {
+    return m_layersShown && m_compositor && m_document.layers();
+}
+
+void Viewport::cameraMoved() {
+    invalidateView();
+    emit cameraChanged();
+}
+
+void Viewport::invalidateView() {
+    ++m_viewSerial;
+    m_layersShown = false;
+    m_mapsRect = {}; // they describe the old view
+    emit viewChanged();
+    update();
+}
+
+void Viewport::initializeGL() {
+    // A new context (first show, or after reparenting) has none of our objects yet.
+    releaseGl();
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &Viewport::releaseGl,
+            Qt::UniqueConnection);
+    m_glError.clear();
+
+    const QSurfaceFormat format = context()->format();
+    if (format.version() < qMakePair(4, 5)) {
+        m_glError = tr("LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.")
+                        .arg(format.majorVersion())
+                        .arg(format.minorVersion());
+    } else {
+        auto renderer = std::make_unique<render::MeshRenderer>();
+        const core::Status status = renderer->initialize();
+        if (status)
+            m_renderer = std::move(renderer);
+        else
+            m_glError =
+                tr("The renderer could not start: %1").arg(QString::fromStdString(status.error()));
+    }
+    QString layerError;
+    if (m_renderer) {
+        // Without these the mesh still shows; only the layer views are missing.
+        auto capturer = std::make_unique<render::GlLayerCapturer>();
+        auto compositor = std::make_unique<render::LayerCompositor>();
+        const core::Status captureStatus = capturer->initialize();
+        const core::Status compositeStatus = compositor->initialize();
+        if (captureStatus && compositeStatus) {
+            m_capturer = std::move(capturer);
+            m_compositor = std::move(compositor);
+        } else {
+            layerError = tr("The layer views could not start: %1")
+                             .arg(QString::fromStdString(captureStatus ? compositeStatus.error()
+                                                                       : captureStatus.error()));
+            capturer->layerCapture().release();
+            compositor->release();
+        }
+        // Without it painting works, only the brush outline and maps are missing.
+        auto overlay = std::make_unique<render::BrushOverlay>();
+        if (overlay->initialize())
+            m_overlay = std::move(overlay);
+        else
+            overlay->release();
+    }
+    // Reported from the event loop: a modal dialog inside initializeGL would re-enter it.
+    if (!m_glError.isEmpty()) {
+        QMetaObject::invokeMethod(
+            this, [this] { emit glInitializationFailed(m_glError); }, Qt::QueuedConnection);
+    } else if (!layerError.isEmpty()) {
+        QMetaObject::invokeMethod(
+            this, [this, layerError] { emit layerRenderingFailed(layerError); },
+            Qt::QueuedConnection);
+    }
+    m_meshDirty = true;
+    m_compositorPaint.clear();
+    m_rendererPaint.clear();
+    m_mapsUpload = {};
+    invalidateView(); // the GL objects are new: so are the layers they will hold
+}
+
+void Viewport::resizeGL(int, int) {
+    invalidateView();
+}
+
+void Viewport::uploadMeshIfDirty() {
+    // A target made or replaced without paintTargetChanged() is caught here too.
+    const core::PaintTarget* target =
+        m_document.hasPaintTarget() ? m_document.paintTarget() : nullptr;
+    if (target != m_shownTarget)
+        m_paintedMeshDirty = true;
+    if ((!m_meshDirty && !m_paintedMeshDirty) || !m_renderer)
+        return;
+    // Once painted, the renderers draw the paint target's pages or colours; the capture needs
+    // only the geometry, which painting never changes.
+    if (m_meshDirty && m_capturer)
+        m_capturer->setMesh(m_document.mesh());
+    core::Mesh painted;
+    if (target)
+        painted = m_document.paintedMesh();
+    const core::Mesh& mesh = target ? painted : m_document.mesh();
+    m_shownTarget = target;
+    m_renderer->setMesh(mesh);
+    m_rendererPaint.clear();
+    m_compositorPaint.clear();
+    m_compositorHasMesh = false;
+    if (m_compositor) {
+        const core::Status status = m_compositor->setMesh(mesh);
+        m_compositorHasMesh = status.ok();
+        if (!status)
+            reportLayerError(status);
+    }
+    m_layersShown = m_layersShown && m_compositorHasMesh;
+    m_meshDirty = false;
+    m_paintedMeshDirty = false;
+}
+
+void Viewport::reportLayerError(const core::Status& status) {
+    // Queued: this may run inside paintGL or with the context current.
+    const QString message =
+        tr("The layers cannot be shown: %1").arg(QString::fromStdString(status.error()));
+    QMetaObject::invokeMethod(
+        this, [this, message] { emit layerRenderingFailed(message); }, Qt::QueuedConnection);
+}
+
+void Viewport::paintGL() {
+    render::DrawOptions options;
+    options.background = m_composite.background;
+    QOpenGLFunctions* gl = context()->functions();
+    gl->glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
+    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (!m_renderer || !mesh())
+        return;
+    uploadMeshIfDirty();
+    // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
+    const core::View current = view();
+    if (isShowingLayers()) {
+        flushPaint(m_compositorPaint, true);
+        m_compositor->draw(m_composite);
+    } else {
+        flushPaint(m_rendererPaint, false);
+        m_renderer->draw(current, options);
+    }
+    if (!m_overlay)
+        return;
+    render::BrushOverlayOptions overlay;
+    overlay.viewWidth = current.width;
+    overlay.viewHeight = current.height;
+    const core::Layers* layers = m_document.layers();
+    if (m_brushMapsVisible && layers && !m_mapsUpload.empty()) {
+        m_overlay->setMaps(layers->stack.width, layers->stack.height, m_brushMaps, m_mapsUpload);
+        m_mapsUpload = {};
+    }
+    if (m_brushMapsVisible && layers && isShowingLayers())
+        overlay.maps = m_mapsRect;
+    if (m_cursorInside && !isNavigating()) {
+        overlay.center = {float(m_cursor.x()), float(m_cursor.y())};
+        overlay.radius = m_brushRadius;
+    }
+    m_overlay->draw(overlay);
+}
+
+/** The compute pass in the viewport's context, for build_layers on the GUI thread. */
+class Viewport::ContextConnectivity : public core::ConnectivityEngine {
+public:
+    explicit ContextConnectivity(Viewport& viewport) : m_viewport(viewport) {}
+    core::Connectivity compute(const core::LayerStack& stack,
+                               const core::ConnectivityOptions& options,
+                               const core::SurfaceGeometry* geometry) override {
+        m_viewport.makeCurrent();
+        core::Connectivity result = m_viewport.m_connectivity->compute(stack, options, geometry);
+        m_viewport.doneCurrent();
+        return result;
+    }
+
+private:
+    Viewport& m_viewport;
+};
+
+void Viewport::setConnectivityBackend(render::ConnectivityBackend backend) {
+    if (backend == m_connectivityRequest)
+        return;
+    m_connectivityRequest = backend;
+    if (m_connectivity) {
+        makeCurrent();
+        m_connectivity.reset(); // made again, with the new choice, at the next use
+        doneCurrent();
+    }
+}
+
+core::ConnectivityEngine* Viewport::connectivityEngine() {
+    if (!m_connectivity && m_capturer) {
+        makeCurrent();
+        m_connectivity = std::make_unique<render::GlConnectivityEngine>(m_connectivityRequest);
+        doneCurrent();
+    }
+    if (!m_connectivity || m_connectivity->backend() != render::ConnectivityBackend::Gpu)
+        return nullptr;
+    if (!m_contextConnectivity)
+        m_contextConnectivity = std::make_unique<ContextConnectivity>(*this);
+    return m_contextConnectivity.get();
+}
+
+render::ConnectivityBackend Viewport::connectivityBackend() const {
+    return m_connectivity ? m_connectivity->backend() : render::ConnectivityBackend::Cpu;
+}
+
+void Viewport::releaseGl() {
+    if (!m_renderer && !m_capturer && !m_compositor && !m_overlay)
+        return;
+    makeCurrent();
+    m_overlay.reset();
+    m_shownTarget = nullptr;
+    m_compositor.reset();
+    m_capturer.reset();
+    m_connectivity.reset();
+    m_renderer.reset();
+    doneCurrent();
+    m_layersShown = false;
+}
+
+Viewport::Drag Viewport::dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const {
+    const bool altMapping = m_mapping != CameraMapping::Blender;
+    const bool middleMapping = m_mapping != CameraMapping::AltBased;
+    if (modifiers & Qt::AltModifier) {
+        // Alt belongs to the camera even where it moves nothing: an Alt+click never paints.
+        if (!altMapping)
+            return Drag::None;
+        switch (button) {
+        case Qt::LeftButton:
+            return Drag::Orbit;
+        case Qt::RightButton:
+            return Drag::Zoom;
+        case Qt::MiddleButton:
+            return Drag::Pan;
+        default:
+            return Drag::None;
+        }
+    }
+    if (button == Qt::MiddleButton) {
+        if (!middleMapping)
+            return Drag::None;
+        if (modifiers & Qt::ShiftModifier)
+            return Drag::Pan;
+        if (modifiers & Qt::ControlModifier)
+            return Drag::Zoom;
+        return Drag::Orbit;
+    }
+    if (button == Qt::LeftButton)
+        return Drag::Paint;
+    return Drag::None;
+}
+
+QPointF Viewport::toDevicePixels(QPointF logical) const {
+    return logical * devicePixelRatioF();
+}
+
+bool Viewport::pointerPress(Qt::MouseButton button, Qt::KeyboardModifiers modifiers,
+                            QPointF position, qreal pressure, PointerKind pointer) {
+    if (m_drag != Drag::None)
+        return true; // a second button during a drag is ignored
+    const Drag drag = dragFor(button, modifiers);
+    if (drag == Drag::None)
+        return false;
+    // The mode is fixed at the press, so releasing a modifier mid-drag does not switch it.
+    m_drag = drag;
+    m_dragButton = button;
+    m_lastPos = position;
+    m_cursor = toDevicePixels(position);
+    m_cursorInside = true;
+    m_pressPointer = pointer;
+    // Layer-aware rotation: about the visible surface point under the cursor, on any layer.
+    m_orbitPivot.reset();
+    if (drag == Drag::Orbit && m_orbitAboutSurface && isShowingLayers())
+        m_orbitPivot = m_document.surfacePoint({float(m_cursor.x()), float(m_cursor.y())});
+    if (drag == Drag::Paint)
+        emit paintPressed(toDevicePixels(position), pressure, modifiers);
+    return true;
+}
+
+bool Viewport::pointerMove(QPointF position, qreal pressure) {
+    m_cursor = toDevicePixels(position);
+    m_cursorInside = true;
+    if (m_drag == Drag::None) {
+        if (m_brushRadius > 0.0f)
+            update(); // the outline follows
+        updateHoverHighlight();
+        return false;
+    }
+    const QPointF delta = position - m_lastPos;
+    m_lastPos = position;
+    switch (m_drag) {
+    case Drag::Orbit:
+        // Dragging right turns the model right; dragging down shows more of its top.
+        if (m_orbitPivot)
+            m_document.camera().orbitAbout(*m_orbitPivot, float(-delta.x()) * kOrbitDegreesPerPixel,
+                                           float(delta.y()) * kOrbitDegreesPerPixel);
+        else
+            m_document.camera().orbit(float(-delta.x()) * kOrbitDegreesPerPixel,
+                                      float(delta.y()) * kOrbitDegreesPerPixel);
+        break;
+    case Drag::Pan:
+        // Logical delta against logical height: the model follows the cursor at any DPI.
+        m_document.camera().pan(float(delta.x()), float(delta.y()), height());
+        break;
+    case Drag::Zoom:
+        // Right or up moves closer.
+        m_document.camera().zoom(std::exp(float(delta.y() - delta.x()) * kZoomPerDragPixel));
+        break;
+    case Drag::Paint:
+        emit paintMoved(toDevicePixels(position), pressure);
+        return true;
+    case Drag::None:
+        break;
+    }
+    cameraMoved();
+    return true;
+}
+
+bool Viewport::pointerRelease(Qt::MouseButton button, QPointF position) {
+    if (m_drag == Drag::None || button != m_dragButton)
+        return false;
+    if (m_drag == Drag::Paint)
+        emit paintReleased(toDevicePixels(position));
+    m_drag = Drag::None;
+    m_dragButton = Qt::NoButton;
+    return true;
+}
+
+void Viewport::mousePressEvent(QMouseEvent* event) {
+    // A mouse paints at full pressure (the pen comes through tabletEvent).
+    if (pointerPress(event->button(), event->modifiers(), event->position(), 1.0,
+                     PointerKind::Mouse))
+        event->accept();
+    else
+        QOpenGLWidget::mousePressEvent(event);
+}
+
+void Viewport::mouseMoveEvent(QMouseEvent* event) {
+    if (pointerMove(event->position(), 1.0))
+        event->accept();
+    else
+        QOpenGLWidget::mouseMoveEvent(event);
+}
+
+void Viewport::mouseReleaseEvent(QMouseEvent* event) {
+    if (pointerRelease(event->button(), event->position()))
+        event->accept();
+    else
+        QOpenGLWidget::mouseReleaseEvent(event);
+}
+
+void Viewport::tabletEvent(QTabletEvent* event) {
+    m_tilt = {event->xTilt(), event->yTilt()};
+    m_penInProximity = true;
+    const PointerKind pointer = event->pointerType() == QPointingDevice::PointerType::Eraser
+                                    ? PointerKind::Eraser
+                                    : PointerKind::Pen;
+    switch (event->type()) {
+    case QEvent::TabletPress:
+        pointerPress(event->button(), event->modifiers(), event->position(), event->pressure(),
+                     pointer);
+        break;
+    case QEvent::TabletMove:
+        pointerMove(event->position(), event->pressure());
+        break;
+    case QEvent::TabletRelease:
+        pointerRelease(event->button(), event->position());
+        break;
+    default:
+        break;
+    }
+    // Always accepted: a mouse event synthesized from it would repeat the sample (or, for a
+    // button no drag uses, do nothing either).
+    event->accept();
+}
+
+bool Viewport::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::TabletEnterProximity)
+        proximityChanged(true);
+    else if (event->type() == QEvent::TabletLeaveProximity)
+        proximityChanged(false);
+    return QOpenGLWidget::eventFilter(watched, event);
+}
+
+void Viewport::proximityChanged(bool inProximity) {
+    m_penInProximity = inProximity;
+    if (!inProximity && m_drag == Drag::None && m_cursorInside) {
+        // The pen is lifted away: no outline until a pointer moves over the view again.
+        m_cursorInside = false;
+        update();
+    } else if (inProximity && underMouse() && !m_cursorInside) {
+        // Back over the view: the outline shows where the pointer was last seen until it moves.
+        m_cursorInside = true;
+        update();
+    }
+}
+
+void Viewport::leaveEvent(QEvent* event) {
+    m_cursorInside = false;
+    update();
+    QOpenGLWidget::leaveEvent(event);
+}
+
+void Viewport::wheelEvent(QWheelEvent* event) {
+    // Alt turns vertical wheel motion into horizontal on some platforms; take whichever is set.
+    const QPoint angle = event->angleDelta();
+    const int eighths = angle.y() != 0 ? angle.y() : angle.x();
+    if (eighths == 0) {
+        event->ignore();
+        return;
+    }
+    m_document.camera().zoom(std::pow(kZoomPerWheelStep, float(eighths) / 120.0f));
+    cameraMoved();
+    event->accept();
+}
+
+} // namespace ui

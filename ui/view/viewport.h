@@ -1,0 +1,283 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <QOpenGLWidget>
+#include <QPointF>
+#include <QSurfaceFormat>
+
+#include "core/base/result.h"
+#include "core/layers/layer_stack.h"
+#include "core/layers/layers.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
+#include "core/paint/paint_target.h"
+#include "render/brush_overlay.h"
+#include "render/gpu_connectivity.h"
+#include "render/layer_compositor.h"
+
+namespace core {
+class Document;
+}
+
+namespace render {
+class BrushOverlay;
+class GlLayerCapturer;
+class MeshRenderer;
+} // namespace render
+
+namespace ui {
+
+/**
+ * Which buttons move the camera (Preferences). Both, the default, offers the Blender-like and
+ * the Alt-based mapping at once; the other two keep only theirs, so Alt or the middle button is
+ * free for other uses. The wheel zooms in all of them.
+ */
+enum class CameraMapping {
+    Both,     // the two below together
+    Blender,  // middle drag orbits, Shift+middle pans, Ctrl+middle zooms
+    AltBased, // Alt+left orbits, Alt+middle pans, Alt+right zooms (tablets, laptops)
+};
+
+/** What pressed the button of the current (or last) stroke. */
+enum class PointerKind { Mouse, Pen, Eraser };
+
+/**
+ * The 3D view of a core::Document: turns mouse input into moves of the document's camera and
+ * draws the model. While the view moves, or before the layers of the current view exist, it
+ * draws the mesh with render::MeshRenderer; once they exist, it draws them with
+ * render::LayerCompositor in the chosen display. The camera buttons follow the CameraMapping
+ * (by default middle drag orbits, Shift+middle pans, the wheel zooms, and Alt+left/right/middle
+ * orbit, zoom and pan for tablets). The plain left button belongs to painting (the paint*
+ * signals). Painting shows without a recapture: once the document has a paint target the
+ * renderers draw its painted mesh, and applyPaintChanges() updates only what a dab changed, at
+ * the next frame. The brush outline follows the mouse or the pen.
+ *
+ * Tablets: every QTabletEvent is handled and accepted (so Qt synthesizes no mouse events from
+ * it) and each sample is passed on, none merged; the pen tip paints with its pressure, the
+ * eraser end reports PointerKind::Eraser, leaving proximity hides the outline. Mouse input is
+ * handled the same way with pressure 1.
+ */
+class Viewport : public QOpenGLWidget {
+    Q_OBJECT
+
+public:
+    explicit Viewport(core::Document& document, QWidget* parent = nullptr);
+    ~Viewport() override;
+
+    /** OpenGL 4.5 core with a depth buffer: what render needs. Set it as the default format. */
+    static QSurfaceFormat requiredFormat();
+
+    /** Call after replacing the document's mesh: uploads it at the next draw. */
+    void meshChanged();
+    /** The document's mesh, or null before the first model. */
+    std::shared_ptr<const core::Mesh> mesh() const;
+
+    const core::Camera& camera() const;
+    /** The current view in device pixels (what is drawn and what paint coordinates refer to). */
+    core::View view() const;
+    /** Changes with every change of camera, size or mesh: layers made before describe another. */
+    std::uint64_t viewSerial() const { return m_viewSerial; }
+    /** True during an orbit, pan or zoom drag. */
+    bool isNavigating() const;
+
+    bool isOrthographic() const;
+
+    /** The GL error met in initializeGL, or empty. */
+    QString glError() const { return m_glError; }
+
+    // Layers, driven by ui::LayerBuilder (the GL work it needs happens in this widget's context).
+    /** True once the context is up and a model is loaded: captureLayers() can run. */
+    bool canCapture() const;
+    /**
+     * Where build_layers computes pixel connectivity (DESIGN.md §2: the faster of the C++ path
+     * and the GL compute pass; Auto picks by renderer). Takes effect at the next build.
+     */
+    void setConnectivityBackend(render::ConnectivityBackend backend);
+    /**
+     * The engine for core::finishLayers / resegmentLayers: nullptr for the C++ reference (safe on
+     * any thread), or the compute pass in this widget's context (GUI thread only).
+     */
+    core::ConnectivityEngine* connectivityEngine();
+    /** The backend in use once resolved for this renderer (Cpu before the first use). */
+    render::ConnectivityBackend connectivityBackend() const;
+    /** The GPU part of build_layers for view, with this widget's context current. */
+    core::Result<core::LayerStack> captureLayers(const core::View& view, bool cullBackFaces,
+                                                 core::CaptureStats* stats);
+    /** Shows the document's layers with the compositor (they must be of the current view). */
+    void showLayers();
+    /** The document's layers were re-segmented: updates the compositor's regions. */
+    void showSegmentation();
+    /** True while the picture comes from the layers (the compositor), not from the mesh. */
+    bool isShowingLayers() const;
+    /** The document's region order changed (pop-up, hiding, undo): redraws with it. */
+    void regionOrderChanged();
+    /**
+     * See-through pop-ups (the paper's exploded view): regions not on layer 1 that are shown
+     * are drawn half transparent over what lies under them in the order.
+     */
+    void setPopUpTransparency(bool on);
+    bool popUpTransparency() const { return m_composite.popUpOpacity < 1.0f; }
+    /**
+     * Layer-aware rotation (default on): an orbit that starts on a surface point of the shown
+     * layers (any layer: what is visible there, popped-up or revealed) turns about that point.
+     */
+    void setOrbitAboutSurface(bool on) { m_orbitAboutSurface = on; }
+    bool orbitAboutSurface() const { return m_orbitAboutSurface; }
+    /** The pivot of the current or last orbit drag, if it was a surface point. */
+    std::optional<glm::vec3> orbitPivot() const { return m_orbitPivot; }
+    /** Highlights the region under the cursor while the layers are shown (pop-up, hide tools). */
+    void setHoverHighlight(bool on);
+
+    // Painting.
+    /** The document's paint target was created or replaced: draw its painted mesh from now on. */
+    void paintTargetChanged();
+    /** Paint changed these texels or vertices of the paint target: shown at the next frame. */
+    void applyPaintChanges(const core::PaintChanges& changes);
+    /** The stroke moved: refreshes the Mp/Mt overlay when it is shown. */
+    void brushMapsChanged();
+    bool brushMapsVisible() const { return m_brushMapsVisible; }
+    /** The radius of the brush outline, in device pixels (0 hides it). */
+    void setBrushRadius(float radius);
+    float brushRadius() const { return m_brushRadius; }
+    /** Whether the brush outline is drawn now (pointer over the view, not navigating). */
+    bool brushOutlineVisible() const {
+        return m_brushRadius > 0.0f && m_cursorInside && !isNavigating();
+    }
+    /** Where the brush outline is, in device pixels. */
+    QPointF cursorPosition() const { return m_cursor; }
+
+    // Input.
+    void setCameraMapping(CameraMapping mapping) { m_mapping = mapping; }
+    CameraMapping cameraMapping() const { return m_mapping; }
+    /** The pointer of the current or last press (the pen's eraser end erases). */
+    PointerKind pressPointer() const { return m_pressPointer; }
+    /** True between a pen's enter and leave proximity events. */
+    bool penInProximity() const { return m_penInProximity; }
+    /** The last tablet tilt in degrees (x, y); read for later brush shapes, unused for now. */
+    QPointF penTilt() const { return m_tilt; }
+
+    const render::CompositeOptions& compositeOptions() const { return m_composite; }
+    render::LayerDisplay display() const { return m_composite.display; }
+    std::uint32_t displayLayer() const { return m_composite.layer; }
+
+public slots:
+    void frameAll();
+    void setOrthographic(bool orthographic);
+    void setDisplay(render::LayerDisplay display);
+    /** The layer the SingleLayer display shows (1-based). */
+    void setDisplayLayer(std::uint32_t layer);
+    void setBoundariesVisible(bool visible);
+    /** A region drawn highlighted, or core::kNone. */
+    void setHighlightRegion(std::uint32_t region);
+    /** Shows the paintable (red) and trackable (blue) maps of the last dab (the paper's Fig. 4). */
+    void setBrushMapsVisible(bool visible);
+
+signals:
+    void orthographicChanged(bool orthographic);
+    void cameraChanged();
+    /** Camera, size or mesh changed: viewSerial() moved on and the layers are out of date. */
+    void viewChanged();
+    /** Emitted once, from the event loop, if the renderer cannot start (message for the user). */
+    void glInitializationFailed(const QString& message);
+    /** A render part other than the mesh renderer failed to start (layers will not show). */
+    void layerRenderingFailed(const QString& message);
+
+    // The painting hook: positions in device pixels, origin top-left (DESIGN.md §4).
+    // modifiers are those held at the press (ui::toolForPress).
+    void paintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
+    void paintMoved(QPointF pixel, qreal pressure);
+    void paintReleased(QPointF pixel);
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int w, int h) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void leaveEvent(QEvent* event) override;
+    void tabletEvent(QTabletEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    enum class Drag { None, Orbit, Pan, Zoom, Paint };
+    Drag dragFor(Qt::MouseButton button, Qt::KeyboardModifiers modifiers) const;
+    // Mouse and pen share these; positions are logical widget pixels. They return whether the
+    // event was used.
+    bool pointerPress(Qt::MouseButton button, Qt::KeyboardModifiers modifiers, QPointF position,
+                      qreal pressure, PointerKind pointer);
+    bool pointerMove(QPointF position, qreal pressure);
+    bool pointerRelease(Qt::MouseButton button, QPointF position);
+    void proximityChanged(bool inProximity);
+
+    QPointF toDevicePixels(QPointF logical) const;
+    void cameraMoved();
+    void updateHoverHighlight();
+    void invalidateView();
+    void uploadMeshIfDirty();
+    void reportLayerError(const core::Status& status);
+    void releaseGl();
+    /** What paint changed since a renderer last got it: a bounding rectangle per page. */
+    struct PendingPaint {
+        std::vector<core::TexelRect> pages; // width 0: clean
+        core::VertexRange vertices;         // begin == end: clean
+        void add(const core::PaintChanges& changes);
+        void clear() {
+            pages.clear();
+            vertices = {};
+        }
+    };
+    void flushPaint(PendingPaint& pending, bool compositor);
+
+    core::Document& m_document;
+    // These live only while the context does.
+    std::unique_ptr<render::MeshRenderer> m_renderer;
+    std::unique_ptr<render::GlLayerCapturer> m_capturer;
+    class ContextConnectivity;
+    render::ConnectivityBackend m_connectivityRequest = render::ConnectivityBackend::Auto;
+    std::unique_ptr<render::GlConnectivityEngine> m_connectivity;
+    std::unique_ptr<ContextConnectivity> m_contextConnectivity;
+    std::unique_ptr<render::LayerCompositor> m_compositor;
+    std::unique_ptr<render::BrushOverlay> m_overlay;
+    bool m_meshDirty = false;
+    bool m_paintedMeshDirty = false; // only the paint target's textures or colours are new
+    /** The paint target whose painted mesh the renderers hold (nullptr: the plain mesh). */
+    const core::PaintTarget* m_shownTarget = nullptr;
+    bool m_compositorHasMesh = false;
+    /** The compositor holds the document's layers of the current view. */
+    bool m_layersShown = false;
+    std::uint64_t m_viewSerial = 1;
+    render::CompositeOptions m_composite;
+    QString m_glError;
+
+    // Painting: each renderer catches up when it draws next (the mesh renderer only after the
+    // view moves), so a stroke costs the compositor's compose pass per frame.
+    PendingPaint m_compositorPaint;
+    PendingPaint m_rendererPaint;
+    bool m_brushMapsVisible = false;
+    std::vector<std::uint8_t> m_brushMaps; // view-sized RGBA, as Document::fillBrushMaps fills it
+    render::PixelRect m_mapsRect;          // what the maps cover now
+    render::PixelRect m_mapsUpload;        // what changed since the last upload
+    float m_brushRadius = 0.0f;
+    QPointF m_cursor; // device pixels
+    bool m_cursorInside = false;
+    bool m_hoverHighlight = false;
+    bool m_orbitAboutSurface = true;
+    std::optional<glm::vec3> m_orbitPivot;
+
+    Drag m_drag = Drag::None;
+    Qt::MouseButton m_dragButton = Qt::NoButton;
+    QPointF m_lastPos;
+    CameraMapping m_mapping = CameraMapping::Both;
+    PointerKind m_pressPointer = PointerKind::Mouse;
+    bool m_penInProximity = false;
+    QPointF m_tilt;
+};
+
+} // namespace ui
