@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `bench`: the paper's Table 2 figures on this machine, next to a plain z-buffer pass of the same
-// mesh and view measured in the same run (DESIGN.md §4, §5).
+// mesh and view measured in the same run (docs/architecture.md §4, §5).
 #include <algorithm>
 #include <chrono>
 #include <fstream>

@@ -51,11 +51,10 @@ int fail(const std::string& message) {
 
 core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh,
                                   const core::Camera* fallback) {
-    int width = 0, height = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(args.size.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
-        (x != 'x' && x != 'X') || width <= 0 || height <= 0 || width > 16384 || height > 16384)
-        return core::Error{"--size " + args.size + ": expected WIDTHxHEIGHT, each 1 to 16384"};
+    const auto size = core::parseViewSize(args.size);
+    if (!size)
+        return core::Error{"--size " + size.error(), core::ErrorKind::BadInput};
+    const auto [width, height] = *size;
     if (args.cameraFile.empty()) {
         auto camera = makeCamera(args, mesh, fallback);
         if (!camera)
@@ -90,15 +89,10 @@ core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& 
     camera.frame(mesh.bounds());
     camera.orbit(30.0f, 20.0f);
     if (!args.orbit.empty()) {
-        float yaw = 0, pitch = 0, distance = 0;
-        char c1 = 0, c2 = 0, end = 0;
-        if (std::sscanf(args.orbit.c_str(), "%f%c%f%c%f%c", &yaw, &c1, &pitch, &c2, &distance,
-                        &end) != 5 ||
-            c1 != ',' || c2 != ',' || !(distance > 0.0f) || !std::isfinite(yaw) ||
-            !std::isfinite(pitch) || !std::isfinite(distance))
-            return core::Error{"--orbit " + args.orbit +
-                               ": expected yaw,pitch,distance (degrees, unit-cube units > 0)"};
-        camera = core::Camera::fromOrbit(mesh.bounds(), yaw, pitch, distance);
+        auto orbit = core::parseOrbitCamera(args.orbit, mesh.bounds());
+        if (!orbit)
+            return core::Error{"--orbit " + orbit.error(), core::ErrorKind::BadInput};
+        camera = *orbit;
     }
     return camera;
 }
@@ -136,7 +130,7 @@ core::Status writeJson(const std::string& path, const json& value) {
     return {};
 }
 
-/** Writes the per-layer images of DESIGN.md §4 for layer (1-based). */
+/** Writes the per-layer images of docs/architecture.md §4 for layer (1-based). */
 core::Status writeLayerImages(const std::filesystem::path& dir, const core::Layers& layers,
                               std::uint32_t layer) {
     const core::LayerStack& stack = layers.stack;
@@ -233,12 +227,10 @@ core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& ar
     doc.setConnectivityEngine(engine);
     doc.adoptLayers(std::move(layers), doc.meshSerial());
     if (!args.script.empty()) {
-        auto script = readScript(args.script);
+        auto script = core::readScript(args.script);
         if (!script)
             return core::Error{script.error()};
-        if (const core::Status s =
-                replayScript(*script, args.script, doc, capturer, args.camera, view);
-            !s)
+        if (const core::Status s = replayScript(*script, args.script, doc, capturer, view); !s)
             return s;
     }
     if (!doc.layers())
@@ -256,7 +248,7 @@ core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& ar
 
 int runLayers(const LayersArgs& args) {
     if (!args.script.empty())
-        if (auto script = readScript(args.script); !script)
+        if (auto script = core::readScript(args.script); !script)
             return fail(script.error()); // before any work
     auto mesh = core::loadMesh(args.model);
     if (!mesh)
@@ -316,7 +308,8 @@ int runLayers(const LayersArgs& args) {
     if (const core::Status s = writePly((dir / "mesh.ply").string(), *mesh); !s)
         return fail(s.error());
 
-    // How well each connection test follows the mesh (DESIGN.md §3 step 2's two properties).
+    // How well each connection test follows the mesh (docs/architecture.md §3 step 2's two
+    // properties).
     json quality;
     for (const core::ConnectionTest test :
          {core::ConnectionTest::Plain, core::ConnectionTest::Surface}) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/result.h"
+#include "core/document/script.h"
 #include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
@@ -18,7 +19,7 @@ class Document;
 
 namespace cli {
 
-/** How a command picks its view (DESIGN.md §4). */
+/** How a command picks its view (docs/architecture.md §4). */
 struct CameraArgs {
     std::string orbit;      // "yaw,pitch,distance" (degrees, unit-cube units); empty: framed
     std::string cameraFile; // {"view":[16], "proj":[16]} column-major
@@ -75,26 +76,16 @@ core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& 
                                       const core::Camera* fallback = nullptr);
 
 /**
- * A `paint` script (README): an array of operations or an object with "operations" and the
- * settings "size", "orbit", "target". An Error naming the file if it cannot be read or is not
- * such a script.
+ * Replays script's operations on doc through the core's script runner (the GUI's code path),
+ * building layers with capturer for view whenever an operation needs them; operations that move
+ * the camera change view. An Error naming the file, the operation's number and the problem.
  */
-core::Result<nlohmann::json> readScript(const std::string& path);
-/** Applies the script's settings to camera and doc; an Error naming the file. */
-core::Status applyScriptSettings(const nlohmann::json& script, const std::string& path,
-                                 core::Document& doc, CameraArgs& camera);
-/**
- * Replays the script's operations on doc through the controller (the GUI's code path), building
- * layers with capturer for view whenever an operation needs them; operations that move the
- * camera change view. An Error naming the file, the operation's number and the problem.
- */
-core::Status replayScript(const nlohmann::json& script, const std::string& path,
-                          core::Document& doc, core::LayerCapturer& capturer,
-                          const CameraArgs& camera, core::View& view);
+core::Status replayScript(const core::Script& script, const std::string& path, core::Document& doc,
+                          core::LayerCapturer& capturer, core::View& view);
 
 /** `info MODEL`: prints the model's JSON summary on stdout; returns the exit code. */
 int runInfo(const std::string& model);
-/** `layers MODEL ...`: writes the files of DESIGN.md §4; returns the exit code. */
+/** `layers MODEL ...`: writes the files of docs/architecture.md §4; returns the exit code. */
 int runLayers(const LayersArgs& args);
 /** `paint MODEL --script S.json --out RESULT.glb`: replays and saves; the exit code. */
 int runPaint(const PaintArgs& args);

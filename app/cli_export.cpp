@@ -70,7 +70,7 @@ int runExport(const ExportArgs& args) {
             options.kind = core::PaintTargetKind::VertexColors;
         if (args.resolution > 0)
             options.resolution = args.resolution;
-        if (const core::Status s = doc.resetPaintTarget(options); !s)
+        if (const core::Status s = doc.setPaintTarget(options); !s)
             return fail(args.input + ": " + s.error());
     }
     const double loadMs = msSince(start);

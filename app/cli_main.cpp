@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// layerpaint-cli: the headless tool (DESIGN.md §4). Needs no Qt and no display.
+// layerpaint-cli: the headless tool (docs/architecture.md §4). Needs no Qt and no display.
 #include <CLI/CLI.hpp>
 
 #include "app/cli_commands.h"

@@ -86,8 +86,8 @@ core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectiv
                                        ConnectivityBackend* used = nullptr);
 
 /**
- * build_layers' connectivity step on the backend chosen for this machine (DESIGN.md §2: the
- * faster of the two). Needs the current GL context at construction and for every compute().
+ * build_layers' connectivity step on the backend chosen for this machine (docs/architecture.md §2:
+ * the faster of the two). Needs the current GL context at construction and for every compute().
  */
 class GlConnectivityEngine : public core::ConnectivityEngine {
 public:

@@ -32,9 +32,9 @@ struct LayerCaptureTimings {
 };
 
 /**
- * Captures every fragment of a view as a core::LayerStack (DESIGN.md §3 step 2) in one geometry
- * pass: a fragment shader appends each fragment to its pixel's linked list in GL buffers, then
- * CPU threads sort the lists front to back straight from the mapped buffers (ties by triangle
+ * Captures every fragment of a view as a core::LayerStack (docs/architecture.md §3 step 2) in one
+ * geometry pass: a fragment shader appends each fragment to its pixel's linked list in GL buffers,
+ * then CPU threads sort the lists front to back straight from the mapped buffers (ties by triangle
  * id, so the result is deterministic). If a view has more fragments than the node buffer holds,
  * the buffer grows and the view is drawn again; the capacity is kept for later captures.
  * GPU memory: 36 bytes a triangle, 4 a pixel, 12 a fragment. capture() blocks until the lists
@@ -85,7 +85,7 @@ private:
 };
 
 /**
- * The capture's baseline (DESIGN.md §5): milliseconds of one plain z-buffer pass of the
+ * The capture's baseline (docs/architecture.md §5): milliseconds of one plain z-buffer pass of the
  * renderer's mesh into the target, from an idle GPU to the pass's end (glFinish on both sides).
  * The target should have the view's size.
  */

@@ -49,8 +49,8 @@ struct CompositeOptions {
 };
 
 /**
- * draw_layers (DESIGN.md §3 step 4): draws the view from the captured per-pixel fragment lists
- * instead of the geometry, so the picture updates (paint, region order, display mode) without
+ * draw_layers (docs/architecture.md §3 step 4): draws the view from the captured per-pixel fragment
+ * lists instead of the geometry, so the picture updates (paint, region order, display mode) without
  * capturing again. The visible fragment of a pixel is the one whose region has the lowest rank
  * in the region order, skipping hidden regions; the default order ranks regions by id (so
  * layer 1 is visible everywhere). Each fragment is shaded like MeshRenderer shades the surface

@@ -16,7 +16,7 @@ namespace render {
 struct DrawOptions {
     glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded RGBA, as written
     bool clear = true;
-    bool cullBackFaces = false; // shading shows both sides; capture culls (DESIGN §3)
+    bool cullBackFaces = false; // shading shows both sides; capture culls (docs/architecture.md §3)
 };
 
 /**

@@ -7,20 +7,12 @@
 
 #include <epoxy/gl.h>
 
+#include "core/base/color.h"
 #include "core/paint/paint_target.h"
 
 namespace render {
 
 namespace {
-const std::array<float, 256>& srgbTable() {
-    static const std::array<float, 256> table = [] {
-        std::array<float, 256> t{};
-        for (int i = 0; i < 256; ++i)
-            t[std::size_t(i)] = core::srgbToLinear(std::uint8_t(i));
-        return t;
-    }();
-    return table;
-}
 
 int levelSize(int size, int level) {
     return std::max(1, size >> level);
@@ -92,7 +84,7 @@ void PaintTexture::update(const core::Image& image, int x, int y, int width, int
     }
 
     // A 2 × 2 box filter in linear space, level by level, over the texels above the rectangle.
-    const std::array<float, 256>& toLinear = srgbTable();
+    const std::array<float, 256>& toLinear = core::SrgbTables::get().decode;
     const std::uint8_t* source = image.rgba.data();
     int sourceWidth = m_width, sourceHeight = m_height;
     for (int level = 1; level < m_levels; ++level) {

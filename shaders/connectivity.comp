@@ -1,5 +1,5 @@
 #version 450 core
-// Pixel-level connectivity (DESIGN.md §3 step 2): the GPU twin of core::computeConnectivity,
+// Pixel-level connectivity (docs/architecture.md §3 step 2): the GPU twin of core::computeConnectivity,
 // which must give the same bytes. One invocation per fragment, not per pixel: llvmpipe caps the
 // loop iterations of an invocation (it stopped after some 32 thousand), which a pixel of 255
 // layers looping over a neighbour's 255 would exceed. Every decision mirrors

@@ -302,6 +302,41 @@
     </message>
 </context>
 <context>
+    <name>ui::HistoryBridge</name>
+    <message>
+        <source>Paint Stroke</source>
+        <translation>Pinselstrich</translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation>Füllen</translation>
+    </message>
+    <message>
+        <source>Pop Up Region</source>
+        <translation>Region hervorholen</translation>
+    </message>
+    <message>
+        <source>Hide Regions</source>
+        <translation>Regionen ausblenden</translation>
+    </message>
+    <message>
+        <source>Unhide Regions</source>
+        <translation>Regionen einblenden</translation>
+    </message>
+    <message>
+        <source>Reset Region Order</source>
+        <translation>Regionsreihenfolge zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Change Paint Target</source>
+        <translation>Malziel wechseln</translation>
+    </message>
+    <message>
+        <source>Run Script</source>
+        <translation>Skript ausführen</translation>
+    </message>
+</context>
+<context>
     <name>ui::HsvPicker</name>
     <message>
         <source>Saturation and value (square) and hue (bar)</source>
@@ -623,18 +658,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Malen nicht möglich: %1</translation>
     </message>
     <message>
-        <source>Paint Stroke</source>
-        <translation>Pinselstrich</translation>
-    </message>
-    <message>
-        <source>Change Paint Target</source>
-        <translation>Malziel wechseln</translation>
-    </message>
-    <message>
-        <source>Painting into another target starts afresh: the painting so far and its undo history are discarded.</source>
-        <translation>Das Malen in ein anderes Ziel beginnt von vorn: das bisher Gemalte und sein Rückgängig-Verlauf werden verworfen.</translation>
-    </message>
-    <message>
         <source>Cannot paint into that target: %1</source>
         <translation>In dieses Ziel kann nicht gemalt werden: %1</translation>
     </message>
@@ -869,6 +892,10 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>Maltextur als Open&amp;EXR …</translation>
+    </message>
+    <message>
+        <source>Painting into a new target (Undo brings the previous one back)</source>
+        <translation>Es wird in ein neues Malziel gemalt (Rückgängig holt das vorige zurück)</translation>
     </message>
 </context>
 <context>
@@ -1215,10 +1242,6 @@ Verbundene Regionen: %4</translation>
         <translation>Die Regionsreihenfolge zurücksetzen (R)</translation>
     </message>
     <message>
-        <source>Reset Region Order</source>
-        <translation>Regionsreihenfolge zurücksetzen</translation>
-    </message>
-    <message>
         <source>U&amp;nhide All Regions</source>
         <translation>Alle Regionen ei&amp;nblenden</translation>
     </message>
@@ -1227,31 +1250,12 @@ Verbundene Regionen: %4</translation>
         <translation>Alle ausgeblendeten Regionen wieder zeigen (Umschalt+H)</translation>
     </message>
     <message>
-        <source>Unhide All</source>
-        <translation>Alle einblenden</translation>
-    </message>
-    <message>
-        <source>Unhide</source>
-        <translation>Einblenden</translation>
-    </message>
-    <message>
         <source>Nothing to pop up here</source>
         <translation>Hier gibt es nichts hervorzuholen</translation>
     </message>
     <message>
-        <source>Pop Up Region %1</source>
-        <translation>Region %1 hervorholen</translation>
-    </message>
-    <message>
         <source>Region %1 (layer %2) in front; click again to go deeper</source>
         <translation>Region %1 (Ebene %2) vorn; erneut klicken, um tiefer zu gehen</translation>
-    </message>
-    <message numerus="yes">
-        <source>Hide %n Region(s)</source>
-        <translation>
-            <numerusform>%n Region ausblenden</numerusform>
-            <numerusform>%n Regionen ausblenden</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>%n region(s) hidden</source>
@@ -1260,9 +1264,89 @@ Verbundene Regionen: %4</translation>
             <numerusform>%n Regionen ausgeblendet</numerusform>
         </translation>
     </message>
+</context>
+<context>
+    <name>ui::ScriptActions</name>
     <message>
-        <source>Automatic Pop-up</source>
-        <translation>Automatisch hervorholen</translation>
+        <source>the script&apos;s view (%1×%2) is not the window&apos;s (%3×%4); replay it with layerpaint-cli</source>
+        <translation>die Ansicht des Skripts (%1×%2) ist nicht die des Fensters (%3×%4); spielen Sie es mit layerpaint-cli ab</translation>
+    </message>
+    <message>
+        <source>the layers of this view cannot be built</source>
+        <translation>die Tiefenebenen dieser Ansicht können nicht erstellt werden</translation>
+    </message>
+    <message>
+        <source>Run &amp;Script…</source>
+        <translation>&amp;Skript ausführen…</translation>
+    </message>
+    <message>
+        <source>Replay a script of painting operations on the open model</source>
+        <translation>Ein Skript aus Malvorgängen auf dem geöffneten Modell abspielen</translation>
+    </message>
+    <message>
+        <source>Copy Session as &amp;Script</source>
+        <translation>Sitzung als &amp;Skript kopieren</translation>
+    </message>
+    <message>
+        <source>Copy what you did since opening the model as a script that reproduces it (for bug reports and automation)</source>
+        <translation>Was Sie seit dem Öffnen des Modells getan haben, als Skript kopieren, das es wiederholt (für Fehlerberichte und Automatisierung)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n operation(s) as a script</source>
+        <translation>
+            <numerusform>%n Vorgang als Skript kopiert</numerusform>
+            <numerusform>%n Vorgänge als Skript kopiert</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Run Script</source>
+        <translation>Skript ausführen</translation>
+    </message>
+    <message>
+        <source>Scripts (*.json);;All files (*)</source>
+        <translation>Skripte (*.json);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The script cannot be run: %1</source>
+        <translation>Das Skript kann nicht ausgeführt werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Run %n operation(s) of %1 on the open model?</source>
+        <translation>
+            <numerusform>%n Vorgang aus %1 auf dem geöffneten Modell ausführen?</numerusform>
+            <numerusform>%n Vorgänge aus %1 auf dem geöffneten Modell ausführen?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>As &amp;One Undo Step</source>
+        <translation>Als &amp;ein Rückgängig-Schritt</translation>
+    </message>
+    <message>
+        <source>&amp;Step by Step</source>
+        <translation>&amp;Schritt für Schritt</translation>
+    </message>
+    <message>
+        <source>Running the script…</source>
+        <translation>Das Skript wird ausgeführt…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled after %n operation(s)</source>
+        <translation>
+            <numerusform>nach %n Vorgang abgebrochen</numerusform>
+            <numerusform>nach %n Vorgängen abgebrochen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Script finished</source>
+        <translation>Skript beendet</translation>
+    </message>
+    <message>
+        <source>Script stopped: %1</source>
+        <translation>Skript angehalten: %1</translation>
     </message>
 </context>
 <context>

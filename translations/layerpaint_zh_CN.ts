@@ -301,6 +301,41 @@
     </message>
 </context>
 <context>
+    <name>ui::HistoryBridge</name>
+    <message>
+        <source>Paint Stroke</source>
+        <translation>画笔笔画</translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation>填充</translation>
+    </message>
+    <message>
+        <source>Pop Up Region</source>
+        <translation>弹出区域</translation>
+    </message>
+    <message>
+        <source>Hide Regions</source>
+        <translation>隐藏区域</translation>
+    </message>
+    <message>
+        <source>Unhide Regions</source>
+        <translation>取消隐藏区域</translation>
+    </message>
+    <message>
+        <source>Reset Region Order</source>
+        <translation>重置区域顺序</translation>
+    </message>
+    <message>
+        <source>Change Paint Target</source>
+        <translation>更改绘制目标</translation>
+    </message>
+    <message>
+        <source>Run Script</source>
+        <translation>运行脚本</translation>
+    </message>
+</context>
+<context>
     <name>ui::HsvPicker</name>
     <message>
         <source>Saturation and value (square) and hue (bar)</source>
@@ -621,18 +656,6 @@ connectivity %3 ms, regions %4 ms
         <translation>无法绘画：%1</translation>
     </message>
     <message>
-        <source>Paint Stroke</source>
-        <translation>画笔笔画</translation>
-    </message>
-    <message>
-        <source>Change Paint Target</source>
-        <translation>更改绘制目标</translation>
-    </message>
-    <message>
-        <source>Painting into another target starts afresh: the painting so far and its undo history are discarded.</source>
-        <translation>绘制到其他目标将重新开始：到目前为止的绘画及其撤销历史都会被丢弃。</translation>
-    </message>
-    <message>
         <source>Cannot paint into that target: %1</source>
         <translation>无法绘制到该目标：%1</translation>
     </message>
@@ -867,6 +890,10 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
+    </message>
+    <message>
+        <source>Painting into a new target (Undo brings the previous one back)</source>
+        <translation>正在绘制到新的绘制目标（撤销可恢复之前的目标）</translation>
     </message>
 </context>
 <context>
@@ -1212,10 +1239,6 @@ Connected regions: %4</source>
         <translation>重置区域顺序 (R)</translation>
     </message>
     <message>
-        <source>Reset Region Order</source>
-        <translation>重置区域顺序</translation>
-    </message>
-    <message>
         <source>U&amp;nhide All Regions</source>
         <translation>取消隐藏所有区域(&amp;N)</translation>
     </message>
@@ -1224,30 +1247,12 @@ Connected regions: %4</source>
         <translation>重新显示所有隐藏的区域 (Shift+H)</translation>
     </message>
     <message>
-        <source>Unhide All</source>
-        <translation>全部取消隐藏</translation>
-    </message>
-    <message>
-        <source>Unhide</source>
-        <translation>取消隐藏</translation>
-    </message>
-    <message>
         <source>Nothing to pop up here</source>
         <translation>这里没有可弹出的区域</translation>
     </message>
     <message>
-        <source>Pop Up Region %1</source>
-        <translation>弹出区域 %1</translation>
-    </message>
-    <message>
         <source>Region %1 (layer %2) in front; click again to go deeper</source>
         <translation>区域 %1（图层 %2）已在最前；再次点击可继续深入</translation>
-    </message>
-    <message numerus="yes">
-        <source>Hide %n Region(s)</source>
-        <translation>
-            <numerusform>隐藏 %n 个区域</numerusform>
-        </translation>
     </message>
     <message numerus="yes">
         <source>%n region(s) hidden</source>
@@ -1255,9 +1260,86 @@ Connected regions: %4</source>
             <numerusform>已隐藏 %n 个区域</numerusform>
         </translation>
     </message>
+</context>
+<context>
+    <name>ui::ScriptActions</name>
     <message>
-        <source>Automatic Pop-up</source>
-        <translation>自动弹出</translation>
+        <source>the script&apos;s view (%1×%2) is not the window&apos;s (%3×%4); replay it with layerpaint-cli</source>
+        <translation>脚本的视图（%1×%2）与窗口的视图（%3×%4）不同；请用 layerpaint-cli 回放</translation>
+    </message>
+    <message>
+        <source>the layers of this view cannot be built</source>
+        <translation>无法构建此视图的深度层</translation>
+    </message>
+    <message>
+        <source>Run &amp;Script…</source>
+        <translation>运行脚本(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Replay a script of painting operations on the open model</source>
+        <translation>在打开的模型上回放绘制操作脚本</translation>
+    </message>
+    <message>
+        <source>Copy Session as &amp;Script</source>
+        <translation>将会话复制为脚本(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Copy what you did since opening the model as a script that reproduces it (for bug reports and automation)</source>
+        <translation>将打开模型以来的操作复制为可重现它的脚本（用于错误报告和自动化）</translation>
+    </message>
+    <message numerus="yes">
+        <source>Copied %n operation(s) as a script</source>
+        <translation>
+            <numerusform>已将 %n 个操作复制为脚本</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Run Script</source>
+        <translation>运行脚本</translation>
+    </message>
+    <message>
+        <source>Scripts (*.json);;All files (*)</source>
+        <translation>脚本 (*.json);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>The script cannot be run: %1</source>
+        <translation>无法运行脚本：%1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Run %n operation(s) of %1 on the open model?</source>
+        <translation>
+            <numerusform>在打开的模型上运行 %1 中的 %n 个操作？</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>As &amp;One Undo Step</source>
+        <translation>作为一个撤销步骤(&amp;O)</translation>
+    </message>
+    <message>
+        <source>&amp;Step by Step</source>
+        <translation>逐步(&amp;S)</translation>
+    </message>
+    <message>
+        <source>Running the script…</source>
+        <translation>正在运行脚本…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message numerus="yes">
+        <source>cancelled after %n operation(s)</source>
+        <translation>
+            <numerusform>在 %n 个操作后已取消</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Script finished</source>
+        <translation>脚本已完成</translation>
+    </message>
+    <message>
+        <source>Script stopped: %1</source>
+        <translation>脚本已停止：%1</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
+#include <new>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -28,10 +30,12 @@ inline int partCount(int count, unsigned threads) {
 
 /**
  * Calls fn(part, begin, end) for each of partCount(count, threads) contiguous parts of
- * [0, count); part 0 runs on the calling thread, the others on their own std::thread. Returns
- * when every part is done. A part whose thread cannot be started runs on the calling thread, so
- * the work is always done. Callers that need results independent of the thread count must make
- * each part's output depend only on its items (or stitch parts in part order).
+ * [0, count); part 0 runs on the calling thread, the others on their own thread. Returns when
+ * every part is done. A part whose thread cannot be started runs on the calling thread, so the
+ * work is always done. If a part throws (e.g. std::bad_alloc), every other part still finishes
+ * and the first exception, in part order, is rethrown on the calling thread. Callers that need
+ * results independent of the thread count must make each part's output depend only on its items
+ * (or stitch parts in part order).
  */
 template <typename Fn> void parallelRanges(int count, unsigned threads, Fn&& fn) {
     const int parts = partCount(count, threads);
@@ -39,22 +43,35 @@ template <typename Fn> void parallelRanges(int count, unsigned threads, Fn&& fn)
         fn(0, 0, std::max(count, 0));
         return;
     }
-    std::vector<std::thread> workers;
-    std::vector<int> inlineParts;
-    workers.reserve(std::size_t(parts - 1));
-    for (int part = 1; part < parts; ++part) {
-        const int begin = splitBegin(count, parts, part), end = splitBegin(count, parts, part + 1);
+    std::vector<std::exception_ptr> errors(static_cast<std::size_t>(parts));
+    const auto run = [&fn, &errors, count, parts](int part) noexcept {
         try {
-            workers.emplace_back([&fn, part, begin, end] { fn(part, begin, end); });
-        } catch (const std::system_error&) {
-            inlineParts.push_back(part);
+            fn(part, splitBegin(count, parts, part), splitBegin(count, parts, part + 1));
+        } catch (...) {
+            errors[std::size_t(part)] = std::current_exception();
         }
+    };
+    {
+        std::vector<std::jthread> workers; // joined when the scope ends, whatever happens
+        std::vector<int> inlineParts;
+        try {
+            workers.reserve(std::size_t(parts - 1));
+        } catch (const std::bad_alloc&) {
+        }
+        for (int part = 1; part < parts; ++part) {
+            try {
+                workers.emplace_back(run, part);
+            } catch (...) { // no thread (std::system_error) or no memory for one
+                inlineParts.push_back(part);
+            }
+        }
+        run(0);
+        for (int part : inlineParts)
+            run(part);
     }
-    fn(0, 0, splitBegin(count, parts, 1));
-    for (int part : inlineParts)
-        fn(part, splitBegin(count, parts, part), splitBegin(count, parts, part + 1));
-    for (std::thread& worker : workers)
-        worker.join();
+    for (const std::exception_ptr& error : errors)
+        if (error)
+            std::rethrow_exception(error);
 }
 
 } // namespace core

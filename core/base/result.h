@@ -8,16 +8,26 @@
 
 namespace core {
 
-/** An error message for the user: names the file (if any) and the problem. */
+/** What kind of failure an Error is, for callers that react differently (not for the user). */
+enum class ErrorKind {
+    Failed,      // anything else
+    Cancelled,   // the user (or a caller's progress function) asked to stop
+    BadInput,    // a file or a value that is not what it should be
+    Io,          // reading or writing failed (missing file, permissions, full disk)
+    Unsupported, // valid, but not something this build handles
+};
+
+/** An error message for the user: names the file (if any) and the problem; and its kind. */
 struct Error {
     std::string message;
+    ErrorKind kind = ErrorKind::Failed;
 };
 
 /** A value or an Error. Core functions return this instead of throwing. */
 template <typename T> class Result {
 public:
     Result(T value) : m_value(std::move(value)) {}
-    Result(Error error) : m_error(std::move(error.message)) {}
+    Result(Error error) : m_error(std::move(error.message)), m_kind(error.kind) {}
 
     bool ok() const { return m_value.has_value(); }
     explicit operator bool() const { return ok(); }
@@ -41,25 +51,35 @@ public:
 
     /** The error message; empty when ok(). */
     const std::string& error() const { return m_error; }
+    /** The error's kind; meaningless when ok(). */
+    ErrorKind errorKind() const { return m_kind; }
+    /** The error as an Error (to pass it on, e.g. with another message). */
+    Error takeError() const { return Error{m_error, m_kind}; }
+    bool cancelled() const { return !ok() && m_kind == ErrorKind::Cancelled; }
 
 private:
     std::optional<T> m_value;
     std::string m_error;
+    ErrorKind m_kind = ErrorKind::Failed;
 };
 
 /** Result for operations without a value. */
 class Status {
 public:
     Status() = default;
-    Status(Error error) : m_error(std::move(error.message)), m_failed(true) {}
+    Status(Error error) : m_error(std::move(error.message)), m_kind(error.kind), m_failed(true) {}
     static Status success() { return {}; }
 
     bool ok() const { return !m_failed; }
     explicit operator bool() const { return ok(); }
     const std::string& error() const { return m_error; }
+    ErrorKind errorKind() const { return m_kind; }
+    Error takeError() const { return Error{m_error, m_kind}; }
+    bool cancelled() const { return m_failed && m_kind == ErrorKind::Cancelled; }
 
 private:
     std::string m_error;
+    ErrorKind m_kind = ErrorKind::Failed;
     bool m_failed = false;
 };
 

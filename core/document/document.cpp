@@ -21,13 +21,22 @@ void Document::setMesh(Mesh mesh, std::string name) {
     ++m_meshSerial;
     clearLayers();
     m_paintTarget.reset();
+    ++m_targetSerial;
     m_history.clear();
+    m_session.clear();
     m_camera.frame(m_mesh->bounds());
 }
 
 void Document::clearLayers() {
     if (m_tracker.inStroke())
         endStroke();
+    if (m_hideRanks)
+        endHide();
+    if (m_layers) {
+        // The order steps of these layers name regions that are gone with them.
+        ++m_layersSerial;
+        m_history.dropStaleOrders(m_layersSerial);
+    }
     m_tracker.clearLayers();
     m_layers.reset();
     m_order = {};
@@ -40,6 +49,7 @@ void Document::layersChanged() {
     m_tracker.setLayers(*m_layers);
     m_order = RegionOrder(m_layers->segmentation.graph);
     ++m_layersSerial;
+    m_history.dropStaleOrders(m_layersSerial);
     orderChanged();
     m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
 }
@@ -85,19 +95,111 @@ std::uint32_t Document::popUpAt(glm::vec2 pixel) {
     const auto index = pixelIndex(pixel);
     if (!index)
         return kNone;
+    m_session.noteState(*this);
     const std::vector<std::uint32_t> regions =
         regionsAtPixel(m_layers->stack, m_layers->segmentation.region, *index);
+    RegionOrderState before = m_order.state();
     const std::uint32_t region = m_order.cycleAt(regions);
-    if (region != kNone)
+    if (region != kNone) {
+        m_session.add({{"op", "popup"}, {"at", {pixel.x, pixel.y}}});
         orderChanged();
+        pushOrderStep(StepKind::PopUp, std::move(before));
+    }
     return region;
 }
 
 bool Document::popUpRegion(std::uint32_t region) {
     if (region >= m_order.regionCount())
         return false;
+    m_session.noteState(*this);
+    RegionOrderState before = m_order.state();
     m_order.popUpWithNeighbours(region);
+    m_session.add({{"op", "popup"}, {"region", region}});
     orderChanged();
+    pushOrderStep(StepKind::PopUp, std::move(before));
+    return true;
+}
+
+void Document::pushOrderStep(StepKind kind, RegionOrderState before) {
+    RegionOrderState after = m_order.state();
+    if (after == before)
+        return;
+    HistoryStep step{kind, {}};
+    step.parts.emplace_back(OrderChange{std::move(before), std::move(after), m_layersSerial});
+    m_history.push(std::move(step));
+}
+
+void Document::beginHide() {
+    if (!m_layers || m_hideRanks)
+        return;
+    m_session.noteState(*this);
+    m_hideRanks = m_ranks;
+    m_hideBefore = m_order.state();
+    m_session.add({{"op", "hide"}, {"path", nlohmann::json::array()}, {"radius", 0.0f}});
+}
+
+std::size_t Document::hideAlong(glm::vec2 a, glm::vec2 b, float radius) {
+    if (!m_hideRanks)
+        return 0;
+    // The session's hide operation: a path of the stroke's points (its first segment from a).
+    nlohmann::json& op = m_session.last();
+    if (op["path"].empty())
+        op["path"].push_back({a.x, a.y});
+    op["path"].push_back({b.x, b.y});
+    op["radius"] = radius;
+    return hideAlong(a, b, radius, *m_hideRanks);
+}
+
+void Document::endHide() {
+    if (!m_hideRanks)
+        return;
+    m_hideRanks.reset();
+    pushOrderStep(StepKind::Hide, std::move(m_hideBefore));
+}
+
+bool Document::unhideRegions(std::span<const std::uint32_t> regions) {
+    if (!m_layers)
+        return false;
+    m_session.noteState(*this);
+    RegionOrderState before = m_order.state();
+    nlohmann::json ids = nlohmann::json::array();
+    for (const std::uint32_t region : regions) {
+        if (m_order.isHidden(region)) {
+            m_order.unhide(region);
+            ids.push_back(region);
+        }
+    }
+    if (ids.empty())
+        return false;
+    m_session.add({{"op", "unhide"}, {"regions", std::move(ids)}});
+    orderChanged();
+    pushOrderStep(StepKind::Unhide, std::move(before));
+    return true;
+}
+
+bool Document::unhideAll() {
+    if (!m_layers || m_order.hiddenRegions().empty())
+        return false;
+    m_session.noteState(*this);
+    RegionOrderState before = m_order.state();
+    m_order.unhideAll();
+    m_session.add({{"op", "unhide-all"}});
+    orderChanged();
+    pushOrderStep(StepKind::Unhide, std::move(before));
+    return true;
+}
+
+bool Document::resetRegionOrder() {
+    if (!m_layers)
+        return false;
+    RegionOrderState before = m_order.state();
+    m_order.reset();
+    if (m_order.state() == before)
+        return false;
+    m_session.noteState(*this);
+    m_session.add({{"op", "reset-order"}});
+    orderChanged();
+    pushOrderStep(StepKind::ResetOrder, std::move(before));
     return true;
 }
 
@@ -227,6 +329,7 @@ PaintTarget* Document::paintTarget(std::string* error) {
             return nullptr;
         }
         m_paintTarget = std::move(target).value();
+        ++m_targetSerial;
     }
     return m_paintTarget.get();
 }
@@ -239,15 +342,27 @@ PaintTargetKind Document::paintTargetKind() const {
     return m_mesh->hasUvs() ? PaintTargetKind::Texture : PaintTargetKind::VertexColors;
 }
 
-Status Document::resetPaintTarget(const PaintTargetOptions& options) {
+Status Document::setPaintTarget(const PaintTargetOptions& options) {
     auto target = makePaintTarget(m_mesh, m_topology, options);
     if (!target)
         return Error{target.error()};
     if (m_tracker.inStroke())
         endStroke();
+    if (m_paintTarget) {
+        m_session.noteState(*this);
+        nlohmann::json op = {{"op", "set-target"},
+                             {"kind", target.value()->kind() == PaintTargetKind::VertexColors
+                                          ? "vertex-colors"
+                                          : "texture"},
+                             {"resolution", options.resolution}};
+        m_session.add(std::move(op));
+        HistoryStep step{StepKind::PaintTarget, {}};
+        step.parts.emplace_back(TargetSwap{std::move(m_paintTarget), m_paintOptions});
+        m_history.push(std::move(step));
+    }
     m_paintOptions = options;
     m_paintTarget = std::move(target).value();
-    m_history.clear();
+    ++m_targetSerial;
     return {};
 }
 
@@ -261,8 +376,11 @@ Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
         return Error{error};
     if (m_tracker.inStroke())
         endStroke();
+    m_session.noteState(*this);
+    m_session.strokePoint(point);
+    m_strokeOrderBefore = m_order.state();
     m_dabs.clear();
-    m_tracker.startStroke(point, m_brush, m_dabs);
+    m_tracker.startStroke(curved(point), m_brush, m_dabs);
     target->beginStroke(m_brush);
     paintDabs(changes);
     return {};
@@ -272,9 +390,15 @@ void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
     changes.clear();
     if (!m_tracker.inStroke() || !m_paintTarget)
         return;
+    m_session.strokePoint(point);
     m_dabs.clear();
-    m_tracker.moveStroke(point, m_dabs);
+    m_tracker.moveStroke(curved(point), m_dabs);
     paintDabs(changes);
+}
+
+StrokePoint Document::curved(StrokePoint point) const {
+    point.pressure = m_pressureCurve.apply(point.pressure);
+    return point;
 }
 
 void Document::paintDabs(PaintChanges& changes) {
@@ -309,8 +433,18 @@ void Document::popUpUnder(const Dab& dab) {
 
 void Document::endStroke() {
     m_tracker.endStroke();
-    if (m_paintTarget && m_paintTarget->inStroke())
-        m_history.push(m_paintTarget->endStroke());
+    m_session.endStroke();
+    if (!m_paintTarget || !m_paintTarget->inStroke())
+        return;
+    // The stroke and the pop-ups it caused are one step.
+    HistoryStep step{StepKind::Stroke, {}};
+    if (TileUndoRecord record = m_paintTarget->endStroke(); !record.empty())
+        step.parts.emplace_back(std::move(record));
+    if (m_layers && m_order.state() != m_strokeOrderBefore)
+        step.parts.emplace_back(
+            OrderChange{std::move(m_strokeOrderBefore), m_order.state(), m_layersSerial});
+    m_strokeOrderBefore = {};
+    m_history.push(std::move(step));
 }
 
 Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes) {
@@ -331,6 +465,12 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
     if (fragment == kNone || fragment >= stack.fragmentCount())
         return {};
     const std::uint32_t triangle = stack.triangle[fragment];
+    m_session.noteState(*this);
+    nlohmann::json op = {
+        {"op", "fill"}, {"at", {position.x, position.y}}, {"mode", fillModeName(mode)}};
+    if (mode == FillMode::Color)
+        op["tolerance"] = tolerance;
+    m_session.add(std::move(op));
 
     // The brush's colour and opacity at full weight everywhere it fills.
     Brush brush = m_brush;
@@ -356,28 +496,70 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
                 similarColorElements(*target, *m_topology, triangle, *point, tolerance));
         break;
     }
-    m_history.push(target->endStroke());
+    HistoryStep step{StepKind::Fill, {}};
+    if (TileUndoRecord record = target->endStroke(); !record.empty())
+        step.parts.emplace_back(std::move(record));
+    m_history.push(std::move(step));
     return {};
+}
+
+void Document::applyStep(HistoryStep& step, bool undo, PaintChanges& changes) {
+    const auto apply = [&](StepPart& part) {
+        if (auto* record = std::get_if<TileUndoRecord>(&part)) {
+            if (m_paintTarget &&
+                (undo ? record->undo(*m_paintTarget) : record->redo(*m_paintTarget))) {
+                const PaintChanges touched = m_paintTarget->changes(*record);
+                changes.texels.insert(changes.texels.end(), touched.texels.begin(),
+                                      touched.texels.end());
+                changes.vertices.insert(changes.vertices.end(), touched.vertices.begin(),
+                                        touched.vertices.end());
+            }
+        } else if (auto* order = std::get_if<OrderChange>(&part)) {
+            if (m_layers && order->layersSerial == m_layersSerial &&
+                m_order.setState(undo ? order->before : order->after))
+                orderChanged();
+        } else if (auto* swap = std::get_if<TargetSwap>(&part)) {
+            std::swap(m_paintTarget, swap->other);
+            std::swap(m_paintOptions, swap->otherOptions);
+            ++m_targetSerial;
+        }
+    };
+    if (undo)
+        for (auto it = step.parts.rbegin(); it != step.parts.rend(); ++it)
+            apply(*it);
+    else
+        for (StepPart& part : step.parts)
+            apply(part);
 }
 
 bool Document::undo(PaintChanges& changes) {
     changes.clear();
     if (m_tracker.inStroke())
         endStroke();
-    const TileUndoRecord* record = m_paintTarget ? m_history.undo(*m_paintTarget) : nullptr;
-    if (record)
-        changes = m_paintTarget->changes(*record);
-    return record != nullptr;
+    if (m_hideRanks)
+        endHide();
+    HistoryStep* step = m_history.nextUndo();
+    if (!step)
+        return false;
+    m_session.add({{"op", "undo"}});
+    applyStep(*step, true, changes);
+    m_history.undone();
+    return true;
 }
 
 bool Document::redo(PaintChanges& changes) {
     changes.clear();
     if (m_tracker.inStroke())
         endStroke();
-    const TileUndoRecord* record = m_paintTarget ? m_history.redo(*m_paintTarget) : nullptr;
-    if (record)
-        changes = m_paintTarget->changes(*record);
-    return record != nullptr;
+    if (m_hideRanks)
+        endHide();
+    HistoryStep* step = m_history.nextRedo();
+    if (!step)
+        return false;
+    m_session.add({{"op", "redo"}});
+    applyStep(*step, false, changes);
+    m_history.redone();
+    return true;
 }
 
 Mesh Document::paintedMesh() const {

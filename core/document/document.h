@@ -7,6 +7,8 @@
 #include <span>
 #include <string>
 
+#include "core/document/history.h"
+#include "core/document/session_log.h"
 #include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
@@ -15,16 +17,15 @@
 #include "core/paint/flood_fill.h"
 #include "core/paint/paint_target.h"
 #include "core/paint/stroke_tracker.h"
-#include "core/paint/undo_tiles.h"
 #include "core/regions/region_order.h"
 
 namespace core {
 
 /**
- * The controller (DESIGN.md §2): the open model, its camera, the current view's layers and the
- * operations on them. The GUI and the headless tool drive the same object. The mesh and its
- * topology are immutable once set and shared, so worker threads can read them while the GUI
- * goes on.
+ * The controller (docs/architecture.md): the open model, its camera, the current view's layers
+ * and the operations on them, with the one undo history of everything a user changes. The GUI,
+ * scripts and the headless tool drive the same object. The mesh and its topology are immutable
+ * once set and shared, so worker threads can read them while the GUI goes on.
  */
 class Document {
 public:
@@ -70,11 +71,14 @@ public:
     /** Drops the layers, e.g. when the view changes (they describe the old view). */
     void clearLayers();
 
-    // Region order (DESIGN.md §3 step 3), of the current layers; a new build or re-segmentation
-    // starts from the initial order (region ids change).
+    // Region order (docs/architecture.md §3 step 3), of the current layers; a new build or
+    // re-segmentation starts from the initial order (region ids change).
 
     const RegionOrder& regionOrder() const { return m_order; }
-    /** Replaces the order (pop-up, hiding, undo); ignored unless it has the layers' regions. */
+    /**
+     * Replaces the order without recording a step (benchmarks, tests); ignored unless it has the
+     * layers' regions. User changes go through the operations below, which are undoable.
+     */
     void setRegionOrder(RegionOrder order);
     /** The order's ranks (RegionOrder::ranks()), kept up to date. */
     const std::vector<std::uint32_t>& regionRanks() const { return m_ranks; }
@@ -111,6 +115,19 @@ public:
     std::size_t hideAlong(glm::vec2 a, glm::vec2 b, float radius,
                           std::span<const std::uint32_t> ranks);
     /**
+     * A paint-to-hide stroke: hideAlong() calls between beginHide() and endHide() use the order
+     * at beginHide() and make one undo step.
+     */
+    void beginHide();
+    std::size_t hideAlong(glm::vec2 a, glm::vec2 b, float radius);
+    void endHide();
+    bool inHide() const { return m_hideRanks.has_value(); }
+    /** Shows hidden regions again (one undo step); false if none of them was hidden. */
+    bool unhideRegions(std::span<const std::uint32_t> regions);
+    bool unhideAll();
+    /** Back to the initial order (layer, then id; one undo step); false if it already was. */
+    bool resetRegionOrder();
+    /**
      * The world point of the visible fragment at a window pixel (the pivot of layer-aware
      * rotation), from its view depth; nullopt on background or without layers.
      */
@@ -123,10 +140,13 @@ public:
      */
     std::optional<glm::vec4> pickColor(std::size_t pixel);
 
-    // Painting (DESIGN.md §3 steps 5-6).
+    // Painting (docs/architecture.md §3 steps 5-6).
 
     Brush& brush() { return m_brush; }
     const Brush& brush() const { return m_brush; }
+    /** How pen pressure maps to the brush (applied to every stroke point's pressure). */
+    const PressureCurve& pressureCurve() const { return m_pressureCurve; }
+    void setPressureCurve(const PressureCurve& curve) { m_pressureCurve = curve; }
     /** Layer-aware (the paper's strokes across layers) or conventional (front surface only). */
     void setLayerAware(bool on) { m_tracker.setLayerAware(on); }
     bool layerAware() const { return m_tracker.layerAware(); }
@@ -135,8 +155,13 @@ public:
      * colours otherwise). Returns nullptr and sets error if it cannot be made.
      */
     PaintTarget* paintTarget(std::string* error = nullptr);
-    /** Replaces the paint target with one made with options (drops the undo history). */
-    Status resetPaintTarget(const PaintTargetOptions& options);
+    /**
+     * Replaces the paint target with one made with options: an undo step (the old target is
+     * kept in it) when there was a target. On failure nothing changes.
+     */
+    Status setPaintTarget(const PaintTargetOptions& options);
+    /** Changes whenever the paint target object is replaced (made, set, undone, redone). */
+    std::uint64_t paintTargetSerial() const { return m_targetSerial; }
     /**
      * The options the next paint target is made with. setPaintOptions() keeps the current
      * target; the options apply when one is made next (after setMesh(), or on first use).
@@ -150,13 +175,14 @@ public:
     PaintTargetKind paintTargetKind() const;
     /**
      * Starts a stroke (On-Mouse-Down) at a pixel of the current layers' view and paints its first
-     * dab. Needs layers (an Error otherwise); a point on background starts nothing. changes
-     * receives what was painted, for the GPU copy.
+     * dab. point.pressure is the pen's, before the pressure curve. Needs layers (an Error
+     * otherwise); a point on background starts nothing. changes receives what was painted, for
+     * the GPU copy.
      */
     Status beginStroke(const StrokePoint& point, PaintChanges& changes);
     /** On-Mouse-Drag: tracks and paints the dabs up to point; changes gets what they touched. */
     void moveStroke(const StrokePoint& point, PaintChanges& changes);
-    /** Ends the stroke and records it for undo. */
+    /** Ends the stroke and records it, with the pop-ups it caused, as one undo step. */
     void endStroke();
     bool inStroke() const { return m_tracker.inStroke(); }
     /** Dabs painted by the last beginStroke()/moveStroke() and the time spent on the target. */
@@ -181,15 +207,28 @@ public:
      * what was painted.
      */
     Status fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes);
-    /** Undo / redo of paint; false when there is nothing to undo / redo. */
+    /**
+     * Undo / redo of the newest step of any kind; false when there is nothing to undo / redo.
+     * changes receives the paint it touched; the region order and the paint target report
+     * their own changes (regionOrderSerial(), paintTargetSerial()).
+     */
     bool undo(PaintChanges& changes);
     bool redo(PaintChanges& changes);
-    UndoHistory& history() { return m_history; }
+    const History& history() const { return m_history; }
+    History& history() { return m_history; }
+    /** What the user did since the model was set, as a script that reproduces it. */
+    const SessionLog& session() const { return m_session; }
     /** The model as painted: target pages as textures or painted vertex colours. */
     Mesh paintedMesh() const;
 
 private:
     void paintDabs(PaintChanges& changes);
+    /** point with the pressure curve applied. */
+    StrokePoint curved(StrokePoint point) const;
+    /** Applies (undo) or re-applies (redo) one step's parts. */
+    void applyStep(HistoryStep& step, bool undo, PaintChanges& changes);
+    /** Records the order change since before as a step of kind (nothing if unchanged). */
+    void pushOrderStep(StepKind kind, RegionOrderState before);
     /** The layers were replaced or re-segmented: a fresh order, the tracker told. */
     void layersChanged();
     void orderChanged();
@@ -212,14 +251,20 @@ private:
     std::uint64_t m_orderSerial = 0;
     std::uint64_t m_layersSerial = 0;
     bool m_autoPopUp = true;
+    std::optional<std::vector<std::uint32_t>> m_hideRanks; // during a paint-to-hide stroke
+    RegionOrderState m_hideBefore;
+    RegionOrderState m_strokeOrderBefore;
 
     Brush m_brush;
+    PressureCurve m_pressureCurve;
     StrokeTracker m_tracker;
     std::vector<Dab> m_dabs; // reused between calls
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;
-    UndoHistory m_history;
+    std::uint64_t m_targetSerial = 0;
+    History m_history;
+    SessionLog m_session;
 };
 
 } // namespace core

@@ -388,12 +388,12 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
     }
     if (doc.meshSerial() == 0 || doc.mesh().triangleCount() == 0)
         return {};
-    const Status target = doc.resetPaintTarget(state.target);
+    const Status target = doc.setPaintTarget(state.target);
     if (target)
         return {};
     PaintTargetOptions fallback = state.target;
     fallback.kind.reset();
-    if (const Status automatic = doc.resetPaintTarget(fallback); !automatic)
+    if (const Status automatic = doc.setPaintTarget(fallback); !automatic)
         return Error{"no paint target can be made (" + automatic.error() + ")"};
     return Error{"the saved paint target cannot be used (" + target.error() +
                  "); painting goes into the automatic one"};

@@ -31,9 +31,9 @@ inline constexpr int kProjectFormatVersion = 2;
 inline constexpr const char* kProjectExtrasKey = "layerpaint";
 
 /**
- * The app state a project keeps beside the painted mesh (DESIGN.md §3 step 7), stored under the
- * glTF asset's extras.layerpaint. Colours are linear RGBA. Fields the GUI does not have yet are
- * kept as read, so a project saved again keeps them.
+ * The app state a project keeps beside the painted mesh (docs/architecture.md §3 step 7), stored
+ * under the glTF asset's extras.layerpaint. Colours are linear RGBA. Fields the GUI does not have
+ * yet are kept as read, so a project saved again keeps them.
  */
 struct ProjectState {
     /** The version the state was read from (saving always writes kProjectFormatVersion). */

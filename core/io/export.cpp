@@ -3,6 +3,7 @@
 // paint texture alone (PNG 8/16-bit, TIFF, EXR). Everything is encoded in memory and written
 // with writeFileAtomically, so a failed export never leaves half a file under the chosen name.
 #include "core/io/export.h"
+#include "core/base/color.h"
 
 #include <algorithm>
 #include <array>
@@ -58,12 +59,6 @@ void appendInt(std::string& out, std::uint64_t v) {
     char buffer[24];
     const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
     out.append(buffer, ec == std::errc() ? end : buffer);
-}
-
-/** Linear to sRGB-encoded, as a float (no rounding to bytes). */
-float encodeSrgb(float linear) {
-    const float c = std::clamp(std::isfinite(linear) ? linear : 0.0f, 0.0f, 1.0f);
-    return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
 Status writeBytes(const std::string& path, const std::string& text) {

@@ -15,9 +15,9 @@
 namespace core {
 
 /**
- * Encodes mesh as a binary glTF 2.0 file (DESIGN.md §3 step 7): one scene, one node, one mesh with
- * one primitive per run of consecutive triangles sharing a material, in triangle order, so
- * loadMesh() gives the triangles back in the same order. Each primitive holds the vertices its
+ * Encodes mesh as a binary glTF 2.0 file (docs/architecture.md §3 step 7): one scene, one node, one
+ * mesh with one primitive per run of consecutive triangles sharing a material, in triangle order,
+ * so loadMesh() gives the triangles back in the same order. Each primitive holds the vertices its
  * triangles use, in their original order: a mesh whose material runs use disjoint, ascending
  * vertex ranges (every mesh loadMesh() returns) comes back with identical vertices and indices;
  * otherwise vertices shared between runs are duplicated and unused ones dropped.
@@ -49,11 +49,11 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
 Result<nlohmann::json> readGlbExtras(const std::string& path);
 
 /**
- * Writes size bytes to path atomically (DESIGN.md §6): a temporary file in the same folder is
- * written, flushed and fsync'ed, then renamed over path. With keepBackup, an existing file is
- * first kept as path + ".bak" (replacing an older backup). A symbolic link at path is followed, so
- * the file it points to is replaced. The new file gets the old one's permissions (else the
- * default ones). On failure (missing or unwritable folder, disk full, ...) nothing at path
+ * Writes size bytes to path atomically (docs/architecture.md §6): a temporary file in the same
+ * folder is written, flushed and fsync'ed, then renamed over path. With keepBackup, an existing
+ * file is first kept as path + ".bak" (replacing an older backup). A symbolic link at path is
+ * followed, so the file it points to is replaced. The new file gets the old one's permissions (else
+ * the default ones). On failure (missing or unwritable folder, disk full, ...) nothing at path
  * changes, the temporary file is removed, and the Error names path and the problem.
  */
 Status writeFileAtomically(const std::string& path, const void* data, std::size_t size,

@@ -51,6 +51,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "core/base/color.h"
 #include "core/io/mesh_io.h"
 
 namespace core::detail {
@@ -169,11 +170,6 @@ bool toFloat(const glm::dvec3& p, glm::vec3& out) {
 glm::vec3 unitNormal(const glm::dvec3& n) {
     const double len = glm::length(n);
     return std::isfinite(len) && len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f);
-}
-
-float srgbToLinear(float c) {
-    c = std::clamp(c, 0.0f, 1.0f);
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
 glm::dmat4 toGlm(const aiMatrix4x4& m) {

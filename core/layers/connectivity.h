@@ -96,7 +96,7 @@ enum Direction : int { kRight = 0, kLeft = 1, kUp = 2, kDown = 3 };
 /** Layers deeper than this cannot be stored in a link byte: they are left unconnected. */
 inline constexpr std::uint32_t kMaxLinkedLayers = 255;
 
-/** Pixel-level connectivity (DESIGN.md §3 step 2) of a LayerStack. */
+/** Pixel-level connectivity (docs/architecture.md §3 step 2) of a LayerStack. */
 struct Connectivity {
     int width = 0;
     int height = 0;

@@ -10,11 +10,11 @@ namespace core {
 inline constexpr std::uint32_t kNone = 0xffffffffu;
 
 /**
- * Every captured fragment of one view as per-pixel lists sorted front to back (DESIGN.md §3
- * step 2), stored compactly: the fragments of pixel p = y * width + x are indices
- * [offsets[p], offsets[p + 1]) of the per-fragment arrays, layer 1 first. Layer k of a pixel is
- * its k-th fragment, so a fragment on layer j implies fragments on layers 1..j-1. Pixel y = 0
- * is the top row.
+ * Every captured fragment of one view as per-pixel lists sorted front to back (docs/architecture.md
+ * §3 step 2), stored compactly: the fragments of pixel p = y * width + x are indices [offsets[p],
+ * offsets[p + 1]) of the per-fragment arrays, layer 1 first. Layer k of a pixel is its k-th
+ * fragment, so a fragment on layer j implies fragments on layers 1..j-1. Pixel y = 0 is the top
+ * row.
  */
 struct LayerStack {
     int width = 0;

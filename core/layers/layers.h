@@ -21,8 +21,8 @@ struct CaptureStats {
 };
 
 /**
- * The GPU part of build_layers (DESIGN.md §2): render implements it on OpenGL; tests and headless
- * use without GL can use CpuLayerCapturer.
+ * The GPU part of build_layers (docs/architecture.md §2): render implements it on OpenGL; tests and
+ * headless use without GL can use CpuLayerCapturer.
  */
 class LayerCapturer {
 public:
@@ -86,8 +86,8 @@ struct Layers {
 };
 
 /**
- * build_layers (DESIGN.md §3 step 2): capture, pixel connectivity, segmentation, region graph.
- * topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
+ * build_layers (docs/architecture.md §3 step 2): capture, pixel connectivity, segmentation, region
+ * graph. topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
  */
 Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
                            const View& view, const LayerOptions& options,

@@ -51,7 +51,7 @@ struct Segmentation {
 };
 
 /**
- * Segments a LayerStack by its connectivity (DESIGN.md §3 step 2). Two fragments at
+ * Segments a LayerStack by its connectivity (docs/architecture.md §3 step 2). Two fragments at
  * neighbouring pixels on the same layer are in one region when either links to the other.
  * Region ids are ordered by layer, then by the row-major scan position of the region's first
  * pixel, so they do not depend on the thread count (0 = hardware concurrency). Links that point

@@ -39,7 +39,7 @@ struct Bounds {
 
 /**
  * A flattened triangle mesh in the file's coordinates. Triangle t uses indices[3t .. 3t+2];
- * triangles are numbered in the order of flattening the default scene (DESIGN.md §3).
+ * triangles are numbered in the order of flattening the default scene (docs/architecture.md §3).
  */
 struct Mesh {
     std::vector<glm::vec3> positions;

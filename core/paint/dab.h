@@ -28,7 +28,7 @@ struct Dab {
     std::vector<MapPixel> paintable;
 };
 
-/** Brush settings an artist sets (DESIGN.md §3 step 6). Colours are linear RGBA. */
+/** Brush settings an artist sets (docs/architecture.md §3 step 6). Colours are linear RGBA. */
 struct Brush {
     glm::vec4 color{0.8f, 0.1f, 0.1f, 1.0f};
     float radius = 32.0f;  // pixels
@@ -40,6 +40,8 @@ struct Brush {
     bool pressureRadius = true;
     bool pressureOpacity = false;
     float trackRadius = 0.0f; // R_max in pixels; 0 = max(4R, 64)
+
+    friend bool operator==(const Brush&, const Brush&) = default;
 
     float effectiveTrackRadius() const {
         return trackRadius > 0.0f ? trackRadius : (4.0f * radius > 64.0f ? 4.0f * radius : 64.0f);

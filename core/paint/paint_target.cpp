@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "core/base/color.h"
 #include "core/layers/connectivity.h"
 #include "core/layers/layers.h"
 #include "core/paint/uv_raster.h"
@@ -27,50 +28,6 @@ using uv::wrapIndex;
 // sRGB
 
 namespace {
-
-struct SrgbTables {
-    std::array<float, 256> decode{};
-    // threshold[k]: the linear value from which code k + 1 is the nearest; +inf for k = 255.
-    std::array<float, 256> threshold{};
-    // coarse[i]: the code of linear i / kCoarse, a lower bound for any value in its cell.
-    static constexpr int kCoarse = 4096;
-    std::array<std::uint8_t, kCoarse + 1> coarse{};
-
-    SrgbTables() {
-        auto toLinear = [](double c) {
-            return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-        };
-        for (int k = 0; k < 256; ++k) {
-            decode[std::size_t(k)] = float(toLinear(k / 255.0));
-            threshold[std::size_t(k)] = k < 255 ? float(toLinear((k + 0.5) / 255.0))
-                                                : std::numeric_limits<float>::infinity();
-        }
-        int code = 0;
-        for (int i = 0; i <= kCoarse; ++i) {
-            const float x = float(i) / float(kCoarse);
-            while (x >= threshold[std::size_t(code)])
-                ++code;
-            coarse[std::size_t(i)] = std::uint8_t(code);
-        }
-    }
-};
-
-const SrgbTables& srgbTables() {
-    static const SrgbTables tables;
-    return tables;
-}
-
-inline std::uint8_t encodeSrgb(const SrgbTables& t, float x) {
-    if (!(x > 0.0f))
-        return 0;
-    if (x >= 1.0f)
-        return 255;
-    // The coarse table is at most a code or two short (the curve is steepest near 0).
-    int code = t.coarse[std::size_t(x * float(SrgbTables::kCoarse))];
-    while (x >= t.threshold[std::size_t(code)])
-        ++code;
-    return std::uint8_t(code);
-}
 
 inline std::uint8_t encodeUnorm(float x) {
     if (!(x > 0.0f))
@@ -94,7 +51,7 @@ inline void blendTexel(const SrgbTables& srgb, std::uint8_t* dst, const std::uin
     for (int k = 0; k < 3; ++k) {
         const float from = srgb.decode[before[k]];
         const float to = targetLinear ? targetLinear[k] : srgb.decode[targetBytes[k]];
-        dst[k] = encodeSrgb(srgb, from + (to - from) * cover);
+        dst[k] = srgb.encode(from + (to - from) * cover);
     }
     const float from = float(before[3]) / 255.0f;
     const float to = targetLinear ? targetLinear[3] : float(targetBytes[3]) / 255.0f;
@@ -102,14 +59,6 @@ inline void blendTexel(const SrgbTables& srgb, std::uint8_t* dst, const std::uin
 }
 
 } // namespace
-
-float srgbToLinear(std::uint8_t value) {
-    return srgbTables().decode[value];
-}
-
-std::uint8_t linearToSrgb(float value) {
-    return encodeSrgb(srgbTables(), value);
-}
 
 // ---------------------------------------------------------------------------------------------
 // UV-space rasterization: core/uv_raster.h
@@ -575,12 +524,12 @@ void PaintTarget::beginStroke(const Brush& brush) {
         endStroke();
     c.inStroke = true;
     c.brush = brush;
-    const SrgbTables& t = srgbTables();
+    const SrgbTables& t = SrgbTables::get();
     for (int k = 0; k < 4; ++k) {
         c.colorLinear[k] =
             std::clamp(std::isfinite(brush.color[k]) ? brush.color[k] : 0.0f, 0.0f, 1.0f);
         c.colorBytes[std::size_t(k)] =
-            k < 3 ? encodeSrgb(t, c.colorLinear[k]) : encodeUnorm(c.colorLinear[k]);
+            k < 3 ? t.encode(c.colorLinear[k]) : encodeUnorm(c.colorLinear[k]);
     }
 }
 
@@ -628,7 +577,8 @@ TileUndoRecord PaintTarget::endStroke() {
 
 namespace {
 
-/** Seam padding of one page: which uncovered texels copy which covered one (DESIGN.md §3). */
+/** Seam padding of one page: which uncovered texels copy which covered one (docs/architecture.md
+ * §3). */
 void buildPadding(TextureTarget::Page& page, int padding) {
     const int width = page.image.width, height = page.image.height;
     std::vector<std::uint8_t>& coverage = page.coverage;
@@ -719,7 +669,7 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
         topology = std::make_shared<const MeshTopology>(buildMeshTopology(*mesh));
     std::unique_ptr<TextureTarget> target(new TextureTarget(mesh, topology, options));
     target->m_padding = std::clamp(options.padding, 0, kTextureTile);
-    const SrgbTables& srgb = srgbTables();
+    const SrgbTables& srgb = SrgbTables::get();
 
     // Vertex colours other than white have to be baked in; white ones change nothing.
     const bool bakeColors =
@@ -759,7 +709,7 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
                     for (std::size_t i = 0; i < page.image.rgba.size(); i += 4) {
                         std::uint8_t* px = &page.image.rgba[i];
                         for (int k = 0; k < 3; ++k)
-                            px[k] = encodeSrgb(srgb, srgb.decode[px[k]] * page.factor[k]);
+                            px[k] = srgb.encode(srgb.decode[px[k]] * page.factor[k]);
                         px[3] = encodeUnorm(float(px[3]) / 255.0f * page.factor[3]);
                     }
                 }
@@ -768,8 +718,8 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
                 page.image.width = page.image.height = resolution;
                 page.image.rgba.resize(std::size_t(resolution) * std::size_t(resolution) * 4);
                 const std::uint8_t fill[4] = {
-                    encodeSrgb(srgb, page.factor.r), encodeSrgb(srgb, page.factor.g),
-                    encodeSrgb(srgb, page.factor.b), encodeUnorm(page.factor.a)};
+                    srgb.encode(page.factor.r), srgb.encode(page.factor.g),
+                    srgb.encode(page.factor.b), encodeUnorm(page.factor.a)};
                 for (std::size_t i = 0; i < page.image.rgba.size(); i += 4)
                     std::memcpy(&page.image.rgba[i], fill, 4);
             }
@@ -827,11 +777,11 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
                    if (source) {
                        const std::uint8_t* in = source + texel * 4;
                        for (int k = 0; k < 3; ++k)
-                           px[k] = encodeSrgb(srgb, srgb.decode[in[k]] * color[k]);
+                           px[k] = srgb.encode(srgb.decode[in[k]] * color[k]);
                        px[3] = encodeUnorm(float(in[3]) / 255.0f * color[3]);
                    } else {
                        for (int k = 0; k < 3; ++k)
-                           px[k] = encodeSrgb(srgb, color[k]);
+                           px[k] = srgb.encode(color[k]);
                        px[3] = encodeUnorm(color[3]);
                    }
                });
@@ -977,7 +927,7 @@ PaintChanges TextureTarget::changes(const TileUndoRecord& record) const {
 
 void TextureTarget::padTouched() {
     Context& c = *m_context;
-    const SrgbTables& srgb = srgbTables();
+    const SrgbTables& srgb = SrgbTables::get();
     const bool eraser = c.brush.eraser;
     // Seam padding: uncovered texels next to charts take the coverage of the texel they copy,
     // blended over their own stroke-start value, so the eraser restores them exactly too.
@@ -1030,7 +980,7 @@ const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> e
     const float cover = c.beginElements();
     if (!(cover > 0.0f))
         return c.changes;
-    const SrgbTables& srgb = srgbTables();
+    const SrgbTables& srgb = SrgbTables::get();
     const bool eraser = c.brush.eraser;
     for (const PaintElement& e : elements) {
         if (e.page >= m_pages.size())
@@ -1070,7 +1020,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     if (!c.inStroke || !c.beginDab(layers, dab))
         return c.changes;
     const Mesh& m = *c.mesh;
-    const SrgbTables& srgb = srgbTables();
+    const SrgbTables& srgb = SrgbTables::get();
     const Brush& brush = c.brush;
     const bool eraser = brush.eraser;
 

@@ -83,8 +83,8 @@ struct PaintTargetOptions {
 };
 
 /**
- * Where paint goes (DESIGN.md §3 step 6): the paper's paint_object(object, Mp). A stroke is
- * beginStroke(), paint() per dab, endStroke(), which returns the stroke's undo record. Within a
+ * Where paint goes (docs/architecture.md §3 step 6): the paper's paint_object(object, Mp). A stroke
+ * is beginStroke(), paint() per dab, endStroke(), which returns the stroke's undo record. Within a
  * stroke every texel or vertex keeps a coverage a (never above the dab's opacity) that rises by
  * flow × opacity × falloff per dab, and its colour is lerp(value at stroke start, brush colour, a)
  * (the original colour for the eraser), so overlapping dabs never build up beyond the opacity.
@@ -275,10 +275,5 @@ private:
 Result<std::unique_ptr<PaintTarget>> makePaintTarget(std::shared_ptr<const Mesh> mesh,
                                                      std::shared_ptr<const MeshTopology> topology,
                                                      const PaintTargetOptions& options = {});
-
-/** sRGB-encoded byte to linear (exact table). */
-float srgbToLinear(std::uint8_t value);
-/** Linear value to the nearest sRGB-encoded byte (clamped to 0..1, correctly rounded). */
-std::uint8_t linearToSrgb(float value);
 
 } // namespace core

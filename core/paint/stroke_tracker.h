@@ -18,8 +18,8 @@ namespace core {
 struct Layers;
 
 /**
- * The visible fragment of a pixel (DESIGN.md §3 step 3): the index of the fragment whose region
- * comes first in the region order, skipping hidden regions; kNone when none is visible.
+ * The visible fragment of a pixel (docs/architecture.md §3 step 3): the index of the fragment whose
+ * region comes first in the region order, skipping hidden regions; kNone when none is visible.
  */
 using VisibleFragmentFn = std::function<std::uint32_t(std::size_t pixel)>;
 
@@ -40,13 +40,13 @@ struct StrokePoint {
 };
 
 /**
- * The stroke logic of layer-aware painting (the paper's On-Mouse-Down / On-Mouse-Drag, DESIGN.md
- * §3 step 5): resamples the input at the brush spacing and turns every sample into a Dab whose
- * paintable map Mp was found by a breadth-first search over (pixel, layer) nodes along the pixel
- * connectivity, the dab's layer looked up in the trackable map Mt of the previous dab. In the
- * conventional mode a dab paints the visible fragment of every pixel under its footprint instead,
- * like a standard screen-space painter (even when its centre is on background: Dab::layer 0),
- * and tracks nothing (Mt = Mp).
+ * The stroke logic of layer-aware painting (the paper's On-Mouse-Down / On-Mouse-Drag,
+ * docs/architecture.md §3 step 5): resamples the input at the brush spacing and turns every sample
+ * into a Dab whose paintable map Mp was found by a breadth-first search over (pixel, layer) nodes
+ * along the pixel connectivity, the dab's layer looked up in the trackable map Mt of the previous
+ * dab. In the conventional mode a dab paints the visible fragment of every pixel under its
+ * footprint instead, like a standard screen-space painter (even when its centre is on background:
+ * Dab::layer 0), and tracks nothing (Mt = Mp).
  *
  * Mp: nodes within the dab radius R (pixel centres), reached by a search that stays inside that
  * disc and takes at most ⌊√2·R⌋ 4-steps (anti-bleeding); one layer per pixel, the first reached.

@@ -3,7 +3,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <span>
 #include <vector>
 
@@ -20,7 +19,7 @@ struct TileKey {
 
 /**
  * Something whose state is a set of fixed byte tiles, so undo can store only the tiles a step
- * touched (DESIGN.md §3 step 6). Paint targets implement it.
+ * touched (docs/architecture.md §3 step 6). Paint targets implement it.
  */
 class TileStore {
 public:
@@ -82,52 +81,6 @@ private:
     std::vector<Entry> m_entries;
     std::vector<std::uint8_t> m_data;
     bool m_undone = false;
-};
-
-/**
- * A linear undo history under a byte budget (DESIGN.md §6): when the records exceed it, the
- * oldest steps are dropped (they can no longer be undone) instead of growing without bound.
- */
-class UndoHistory {
-public:
-    static constexpr std::size_t kDefaultBudget = std::size_t(256) << 20; // 256 MiB
-
-    explicit UndoHistory(std::size_t budgetBytes = kDefaultBudget) : m_budget(budgetBytes) {}
-
-    /**
-     * Adds a finished step: forgets the redo steps, then drops the oldest steps while over
-     * budget. Returns false for an empty or undone record (ignored), and for one bigger than the
-     * whole budget (then nothing can be undone any more: the history is cleared).
-     */
-    bool push(TileUndoRecord record);
-    /** Undoes the newest step on store; the record (for PaintTarget::changes()), or nullptr. */
-    const TileUndoRecord* undo(TileStore& store);
-    /** Redoes the step undone last; the record, or nullptr if there is none. */
-    const TileUndoRecord* redo(TileStore& store);
-
-    bool canUndo() const { return m_next > 0; }
-    bool canRedo() const { return m_next < m_steps.size(); }
-    std::size_t undoCount() const { return m_next; }
-    std::size_t redoCount() const { return m_steps.size() - m_next; }
-    /** Steps dropped so far to stay within the budget. */
-    std::size_t droppedCount() const { return m_dropped; }
-
-    /** Memory held by the records, in bytes; never more than budget(). */
-    std::size_t bytes() const { return m_bytes; }
-    std::size_t budget() const { return m_budget; }
-    /** Changes the budget, dropping the oldest steps (then the furthest redo steps) to fit. */
-    void setBudget(std::size_t budgetBytes);
-    /** Forgets every step (e.g. when the paint target is replaced). */
-    void clear();
-
-private:
-    void enforceBudget();
-
-    std::deque<TileUndoRecord> m_steps; // oldest first; [0, m_next) can be undone
-    std::size_t m_next = 0;
-    std::size_t m_bytes = 0;
-    std::size_t m_budget;
-    std::size_t m_dropped = 0;
 };
 
 } // namespace core

@@ -250,4 +250,12 @@ std::vector<std::uint32_t> visibleRegionsAlong(const LayerStack& stack,
     return out;
 }
 
+bool RegionOrder::setState(const RegionOrderState& state) {
+    if (state.order.size() != m_order.size() || state.hidden.size() != m_hidden.size())
+        return false;
+    m_order = state.order;
+    m_hidden = state.hidden;
+    return true;
+}
+
 } // namespace core

@@ -13,10 +13,19 @@
 
 namespace core {
 
+/** What changes of a RegionOrder (the order and the hidden flags), for undo. */
+struct RegionOrderState {
+    std::vector<std::uint32_t> order;
+    std::vector<std::uint8_t> hidden;
+
+    std::size_t bytes() const { return order.size() * sizeof(std::uint32_t) + hidden.size(); }
+    friend bool operator==(const RegionOrderState&, const RegionOrderState&) = default;
+};
+
 /**
- * The front-to-back region list of one view (DESIGN.md §3 step 3; the paper's "Region popup and
- * sorting", "Back-to-front region rendering" and "Interactive Paint-to-Hide"). Initially sorted
- * by layer, then id. Hiding is separate from the order: a hidden region keeps its place in
+ * The front-to-back region list of one view (docs/architecture.md §3 step 3; the paper's "Region
+ * popup and sorting", "Back-to-front region rendering" and "Interactive Paint-to-Hide"). Initially
+ * sorted by layer, then id. Hiding is separate from the order: a hidden region keeps its place in
  * order() (and moves with pop-ups) but gets no rank and is never drawn. Region ids outside the
  * graph are ignored by every operation. O(regions) per operation; deterministic.
  */
@@ -84,6 +93,10 @@ public:
 
     /** Back to the initial order (layer, then id); hidden regions stay hidden. */
     void reset();
+
+    RegionOrderState state() const { return {m_order, m_hidden}; }
+    /** Restores a state() of this order; false (nothing changed) if it has other regions. */
+    bool setState(const RegionOrderState& state);
 
     /** Layer (1-based) of region, 0 if unknown. */
     std::uint32_t layerOf(std::uint32_t region) const {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The headless tool's contract (DESIGN.md §4), checked by running the real binary.
+// The headless tool's contract (docs/architecture.md §4), checked by running the real binary.
 #include <algorithm>
 #include <array>
 #include <cstdlib>

@@ -137,7 +137,8 @@ bool near(const core::Image& image, std::size_t pixel, const glm::vec4& color, i
     return true;
 }
 
-/** The CPU lookup of the visible fragment (DESIGN.md §3 step 3), kNone for background. */
+/** The CPU lookup of the visible fragment (docs/architecture.md §3 step 3), kNone for background.
+ */
 std::uint32_t visibleFragment(const core::Layers& layers, const std::vector<std::uint32_t>& rank,
                               std::size_t pixel) {
     std::uint32_t best = kNone, chosen = kNone;
@@ -607,9 +608,9 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
 }
 
 /**
- * DESIGN.md §5's draw_layers figure at 1280 × 720: the framed trefoil and a close view that fills
- * most of the screen. Reports medians of 15 draws (glFinish on both sides) and the first draw
- * after setLayers(), which also shades every fragment; asserts only that drawing works.
+ * docs/architecture.md §5's draw_layers figure at 1280 × 720: the framed trefoil and a close view
+ * that fills most of the screen. Reports medians of 15 draws (glFinish on both sides) and the first
+ * draw after setLayers(), which also shades every fragment; asserts only that drawing works.
  */
 TEST_F(LayerCompositorGlTest, DrawTimeAt1280x720) {
     const core::Mesh mesh = core::makeTrefoil();

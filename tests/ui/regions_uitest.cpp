@@ -103,7 +103,7 @@ TEST_F(RegionsTest, ShiftClickCyclesThroughTheRegionsAtAPixelAndUndoRestores) {
     EXPECT_EQ(visibleLayer(p), 2u);
     EXPECT_EQ(undoStack()->count(), 1);
     EXPECT_GT(differingFraction(before, viewport()->grabFramebuffer()), 0.001);
-    EXPECT_TRUE(document().history().undoCount() == 0); // no paint
+    EXPECT_EQ(document().history().undoKind(), core::StepKind::PopUp); // no paint
 
     // The pop-up tool (P) goes on cycling: deeper, then back to the top.
     QTest::keyClick(m_window.get(), Qt::Key_P);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/brush_toolbar.h"
 
+#include "core/base/color.h"
+
 #include <QColorDialog>
 #include <QComboBox>
 #include <QLabel>

@@ -84,8 +84,8 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Threshold:"), thresholdRow);
     form->addRow(tr("Test:"), m_test);
     form->addRow(m_twoSided);
-    // DESIGN.md §2: the C++ path and the GL compute pass give the same links; Auto takes the
-    // faster for this renderer (C++ on software OpenGL).
+    // docs/architecture.md §2: the C++ path and the GL compute pass give the same links; Auto takes
+    // the faster for this renderer (C++ on software OpenGL).
     m_connectivity = new QComboBox(this);
     m_connectivity->setObjectName(QStringLiteral("connectivityBackend"));
     m_connectivity->addItem(tr("Automatic"), 0);

@@ -34,8 +34,7 @@
 #include <utility>
 
 #include "core/model/builtin_models.h"
-#include "ui/commands/order_command.h"
-#include "ui/commands/stroke_command.h"
+#include "ui/commands/history_bridge.h"
 #include "ui/panels/brush_panel.h"
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
@@ -46,6 +45,7 @@
 #include "ui/panels/segmentation_controls.h"
 #include "ui/shell/model_loader.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
@@ -109,7 +109,7 @@ MainWindow::MainWindow(QWidget* parent)
     }
 
     m_preferences = Preferences::load();
-    m_pressureCurve.gamma = m_preferences.pressureGamma;
+    m_document->setPressureCurve(core::PressureCurve{m_preferences.pressureGamma});
     m_paintOptions.resolution = m_preferences.textureSize;
     m_document->setPaintOptions(m_paintOptions);
 
@@ -371,7 +371,7 @@ void MainWindow::onLayersBuilt() {
     if (m_document->layers() != layers)
         return;
     m_regionTools->layersChanged();
-    syncUndoStack(); // order steps of the old regions go
+    m_history->sync(); // order steps of the old regions go
     updateLayerInfo();
 }
 
@@ -386,7 +386,7 @@ void MainWindow::onSegmentationChanged() {
     if (m_document->layers() != layers)
         return;
     m_regionTools->layersChanged();
-    syncUndoStack();
+    m_history->sync();
     updateLayerInfo();
 }
 
@@ -395,7 +395,7 @@ void MainWindow::onLayersCleared() {
     m_layersPanel->setLayers(nullptr);
     m_graphPanel->setLayers(nullptr);
     m_regionTools->layersChanged();
-    syncUndoStack();
+    m_history->sync();
     updateLayerInfo();
 }
 
@@ -429,12 +429,14 @@ void MainWindow::updateLayerInfo() {
 }
 
 void MainWindow::createPaintActions() {
-    m_undoStack = new QUndoStack(this);
+    m_history = new HistoryBridge(*m_document, this);
+    m_undoStack = m_history->stack();
     m_document->history().setBudget(std::size_t(m_preferences.undoBudgetMiB) << 20);
+    connect(m_history, &HistoryBridge::applied, this, &MainWindow::onHistoryApplied);
 
     m_regionTools = new RegionTools(
-        *m_document, *m_viewport, *m_undoStack, m_undoSuspended,
-        [this] { return m_builder->buildNow(); }, this);
+        *m_document, *m_viewport, [this] { return m_builder->buildNow(); }, this);
+    connect(m_regionTools, &RegionTools::edited, m_history, &HistoryBridge::sync);
     connect(m_regionTools, &RegionTools::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, kPaintMessageMs); });
     m_hiddenDock = makeDock(tr("Paint to Hide"), QStringLiteral("hiddenRegionsDock"),
@@ -460,7 +462,7 @@ void MainWindow::createPaintActions() {
 
     // The panels: the full brush settings and the colours, on the left of the view.
     m_brushPanel = new BrushPanel(this);
-    m_brushPanel->setPressureCurve(m_pressureCurve);
+    m_brushPanel->setPressureCurve(m_document->pressureCurve());
     m_brushDock =
         makeDock(tr("Brush"), QStringLiteral("brushDock"), m_brushPanel, Qt::LeftDockWidgetArea);
     connect(m_brushPanel, &BrushPanel::brushChanged, this, &MainWindow::setBrush);
@@ -749,10 +751,8 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     }
     if (!hadTarget)
         m_viewport->paintTargetChanged();
-    const core::UndoHistory& history = m_document->history();
-    m_historyMark = history.undoCount() + history.droppedCount();
     m_document->brush().eraser = eraser;
-    m_lastPressure = m_pressureCurve.apply(float(pressure));
+    m_lastPressure = float(pressure);
     core::PaintChanges changes;
     m_regionTools->beginStroke();
     const core::Status status =
@@ -787,8 +787,7 @@ void MainWindow::fillAt(QPointF pixel) {
     }
     if (!hadTarget)
         m_viewport->paintTargetChanged();
-    const core::UndoHistory& history = m_document->history();
-    const std::size_t mark = history.undoCount() + history.droppedCount();
+    const std::uint64_t revision = m_document->history().revision();
     core::PaintChanges changes;
     const core::Status status =
         m_document->fill({float(pixel.x()), float(pixel.y())}, m_fillPanel->mode(),
@@ -799,16 +798,15 @@ void MainWindow::fillAt(QPointF pixel) {
         return;
     }
     m_viewport->applyPaintChanges(changes);
-    if (history.undoCount() + history.droppedCount() > mark) {
+    if (m_document->history().revision() != revision) {
         m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
-        m_undoStack->push(new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Fill")));
         statusBar()->showMessage(
             tr("Filled in %1 ms").arg(QLocale().toString(elapsedMs(clock), 'f', 0)),
             kPaintMessageMs);
     } else {
         statusBar()->showMessage(tr("Nothing to fill there"), kPaintMessageMs);
     }
-    syncUndoStack();
+    m_history->sync();
 }
 
 void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
@@ -823,7 +821,7 @@ void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
     QElapsedTimer clock;
     clock.start();
     core::PaintChanges changes;
-    m_lastPressure = m_pressureCurve.apply(float(pressure));
+    m_lastPressure = float(pressure);
     m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
@@ -854,83 +852,38 @@ void MainWindow::finishStroke() {
     if (!m_painting)
         return;
     m_painting = false;
+    // The stroke and the pop-ups it made are one step of the document's history.
     m_document->endStroke();
-    // Pop-ups the stroke made go first: one undo takes the paint away, the next the pop-up.
     m_regionTools->endStroke();
-    const core::UndoHistory& history = m_document->history();
-    if (history.undoCount() + history.droppedCount() > m_historyMark)
-        m_undoStack->push(
-            new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, tr("Paint Stroke")));
-    syncUndoStack();
+    m_history->sync();
 }
 
-void MainWindow::syncUndoStack() {
-    const core::UndoHistory& history = m_document->history();
-    const int undo = int(history.undoCount());
-    const int total = int(history.undoCount() + history.redoCount());
-    // Paint steps on the stack (all, and those done) and order steps of other layers' regions.
-    int strokes = 0, strokesDone = 0;
-    bool stale = false;
-    for (int i = 0; i < m_undoStack->count(); ++i) {
-        if (const auto* order = dynamic_cast<const OrderCommand*>(m_undoStack->command(i))) {
-            stale = stale || order->layersSerial() != m_document->layersSerial();
-            continue;
-        }
-        ++strokes;
-        strokesDone += i < m_undoStack->index();
+void MainWindow::showDocumentState() {
+    setBrush(m_document->brush());
+    m_layerAwareAction->setChecked(m_document->layerAware());
+    m_regionTools->autoPopUpAction()->setChecked(m_document->autoPopUp());
+    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_brushPanel->setPressureCurve(m_document->pressureCurve());
+    m_targetSerial = m_document->paintTargetSerial();
+    m_paintOptions = m_document->paintTargetOptions();
+    if (m_document->hasPaintTarget())
+        m_viewport->paintTargetChanged();
+    updateBrushBar();
+    m_viewport->cameraMoved();
+    m_regionTools->orderApplied();
+    m_history->sync();
+    m_project->markModified();
+}
+
+void MainWindow::onHistoryApplied(const core::PaintChanges& changes) {
+    m_viewport->applyPaintChanges(changes);
+    if (m_document->paintTargetSerial() != m_targetSerial) {
+        m_targetSerial = m_document->paintTargetSerial();
+        m_paintOptions = m_document->paintTargetOptions();
+        m_viewport->paintTargetChanged();
+        updateBrushBar();
     }
-    if (!stale && strokes == total && strokesDone == undo)
-        return;
-    // The core dropped its oldest paint steps (budget) or all of them (new target), or the
-    // layers changed (order steps name regions that are gone): offer only what exists. Paint
-    // commands hold no data, so new ones stand in for the steps that are left, keeping their
-    // names ("Paint Stroke", "Fill").
-    const int drop = strokes - total;
-    const bool oldestDropped = drop >= 0 && strokesDone - drop == undo;
-    struct Entry {
-        OrderCommand* order; // nullptr: a paint step
-        bool done;
-        QString text; // of a paint step
-    };
-    std::vector<Entry> kept;
-    if (oldestDropped) {
-        int dropped = 0;
-        for (int i = 0; i < m_undoStack->count(); ++i) {
-            const bool done = i < m_undoStack->index();
-            if (const auto* order = dynamic_cast<const OrderCommand*>(m_undoStack->command(i))) {
-                if (order->layersSerial() == m_document->layersSerial())
-                    kept.push_back({order->clone(), done, {}});
-            } else if (dropped < drop) {
-                ++dropped;
-            } else {
-                kept.push_back({nullptr, done, m_undoStack->text(i)});
-            }
-        }
-    } else {
-        for (int i = 0; i < total; ++i)
-            kept.push_back({nullptr, i < undo, tr("Paint Stroke")});
-    }
-    const bool wasClean = m_undoStack->isClean();
-    {
-        const QScopedValueRollback guard(m_undoSuspended, true);
-        m_undoStack->clear();
-        int index = 0;
-        for (const Entry& entry : kept) {
-            if (entry.order)
-                m_undoStack->push(entry.order);
-            else
-                m_undoStack->push(
-                    new StrokeCommand(*m_document, *m_viewport, m_undoSuspended, entry.text));
-            index += entry.done;
-        }
-        m_undoStack->setIndex(index);
-    }
-    // The picture did not change: saved stays saved; unsaved changes stay unsaved (the stack's
-    // clean index is gone with the old commands).
-    if (wasClean)
-        m_undoStack->setClean();
-    else if (m_project)
-        m_project->markModified();
+    m_regionTools->orderApplied();
 }
 
 void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
@@ -940,28 +893,20 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
         updateBrushBar();
         return;
     }
-    if (m_document->history().undoCount() > 0 && m_errorDialogs) {
-        const auto answer = QMessageBox::question(
-            this, tr("Change Paint Target"),
-            tr("Painting into another target starts afresh: the painting so far and its undo "
-               "history are discarded."),
-            QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Cancel);
-        if (answer != QMessageBox::Discard) {
-            updateBrushBar();
-            return;
-        }
-    }
-    const core::Status status = m_document->resetPaintTarget(options);
+    const core::Status status = m_document->setPaintTarget(options);
     if (!status) {
         statusBar()->showMessage(
             tr("Cannot paint into that target: %1").arg(QString::fromStdString(status.error())),
             kStatusMessageMs);
     } else {
         m_paintOptions = options;
+        m_targetSerial = m_document->paintTargetSerial();
         m_viewport->paintTargetChanged();
-        m_project->markModified();
+        statusBar()->showMessage(tr("Painting into a new target (Undo brings the previous one "
+                                    "back)"),
+                                 kStatusMessageMs);
     }
-    syncUndoStack();
+    m_history->sync();
     updateBrushBar();
 }
 
@@ -1012,7 +957,7 @@ void MainWindow::stepBrushHardness(int direction) {
 }
 
 void MainWindow::setPressureCurve(const core::PressureCurve& curve) {
-    m_pressureCurve = curve;
+    m_document->setPressureCurve(curve);
     m_brushPanel->setPressureCurve(curve);
     if (m_preferences.pressureGamma != curve.gamma) {
         m_preferences.pressureGamma = curve.gamma;
@@ -1024,7 +969,7 @@ void MainWindow::setPreferences(const Preferences& preferences) {
     preferences.save();
     m_preferences = preferences;
     m_document->history().setBudget(std::size_t(preferences.undoBudgetMiB) << 20);
-    syncUndoStack(); // the budget may have dropped steps
+    m_history->sync(); // the budget may have dropped steps
     setPressureCurve(core::PressureCurve{preferences.pressureGamma});
     m_viewport->setCameraMapping(preferences.cameraMapping);
     // The texture size is the default for the next model; the open one keeps its painting.
@@ -1073,6 +1018,8 @@ void MainWindow::createMenus() {
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     editMenu->addAction(m_undoAction);
     editMenu->addAction(m_redoAction);
+    editMenu->addSeparator();
+    editMenu->addAction(m_scriptActions->copySessionAction());
     editMenu->addSeparator();
     m_preferencesAction =
         editMenu->addAction(tr("&Preferences…"), this, &MainWindow::showPreferences);
@@ -1212,13 +1159,13 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
             // The document keeps its target options: vertex colours for this model, and the
             // default (a texture when there are UVs) for the next.
             m_paintOptions.kind.reset();
-            m_document->resetPaintTarget(m_paintOptions);
+            m_document->setPaintTarget(m_paintOptions);
         }
     }
     m_viewport->meshChanged();
     if (m_document->hasPaintTarget())
         m_viewport->paintTargetChanged();
-    syncUndoStack();
+    m_history->sync();
     updateBrushBar();
     m_project->documentLoaded(source, state != nullptr,
                               state ? QString::fromStdString(state->recoveryFor) : QString(),
@@ -1288,6 +1235,9 @@ void MainWindow::createProjectActions(QMenu* fileMenu) {
     saveAsAction->setObjectName(QStringLiteral("actionSaveAs"));
     saveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     saveAsAction->setStatusTip(tr("Save the project under another name"));
+
+    m_scriptActions = new ScriptActions(*this);
+    fileMenu->addAction(m_scriptActions->runAction());
 
     m_exportMenu = fileMenu->addMenu(tr("&Export"));
     m_exportMenu->setObjectName(QStringLiteral("exportMenu"));

@@ -37,6 +37,8 @@ class BrushPanel;
 class BrushToolBar;
 class ColorPanel;
 class FillPanel;
+class HistoryBridge;
+class ScriptActions;
 class LayerBuilder;
 class LayersPanel;
 class ModelLoader;
@@ -51,10 +53,10 @@ class Viewport;
  * viewport and the Segmentation, Layers, Region Graph, Paint to Hide, Fill, Brush and Colour
  * panels (all dockable, the layout kept in QSettings); the File/Edit/View/Paint/Help menus, the
  * brush and tool bars, the status bar, the Preferences and the background loading of models.
- * Painting: the viewport's left button (or pen) drives the document's strokes (with the pressure
- * curve applied) and fills, each a StrokeCommand on the undo stack, which mirrors the document's
- * (budgeted) undo history. The brush bar, the Brush and Colour panels and the document's brush
- * are kept in step by setBrush(). The open model only changes when a load succeeds.
+ * Painting: the viewport's left button (or pen) drives the document's strokes and fills; every
+ * change is a step of the document's one history, which the undo stack mirrors (HistoryBridge).
+ * The brush bar, the Brush and Colour panels and the document's brush are kept in step by
+ * setBrush(). The open model only changes when a load succeeds.
  */
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -110,7 +112,16 @@ public:
     /** The brush everywhere: the document's, the brush bar's and the panels'. */
     void setBrush(const core::Brush& brush);
     /** What pen pressure goes through before it reaches a stroke. */
-    const core::PressureCurve& pressureCurve() const { return m_pressureCurve; }
+    const core::PressureCurve& pressureCurve() const { return m_document->pressureCurve(); }
+    /** The document's history as the GUI shows it. */
+    HistoryBridge* history() const { return m_history; }
+    /** Run Script and Copy Session as Script. */
+    ScriptActions* scriptActions() const { return m_scriptActions; }
+    /**
+     * Shows what the document holds now in every widget (brush, modes, segmentation, paint
+     * target, region order, camera), after something changed it wholesale (a script).
+     */
+    void showDocumentState();
     /** The preferences in use (Edit ▸ Preferences). */
     const Preferences& preferences() const { return m_preferences; }
     /** Saves preferences to the settings and applies them. */
@@ -195,7 +206,8 @@ private:
      * Makes the undo stack offer exactly the document's paint steps and the order steps of the
      * current layers (those of earlier layers go).
      */
-    void syncUndoStack();
+    /** Undo/redo changed the document: show its paint, target and order. */
+    void onHistoryApplied(const core::PaintChanges& changes);
     void setPaintTarget(const core::PaintTargetOptions& options);
     void updateBrushBar();
     void updateBrushInfo();
@@ -269,15 +281,15 @@ private:
     QAction* m_redoAction = nullptr;
     QUndoStack* m_undoStack = nullptr;
     /** The undo stack is being rebuilt: its commands must not touch the document. */
-    bool m_undoSuspended = false;
+    HistoryBridge* m_history = nullptr;
+    ScriptActions* m_scriptActions = nullptr;
+    std::uint64_t m_targetSerial = 0; // the document's paint target the view shows
     bool m_painting = false;
     bool m_picking = false;      // the eyedropper is held down
     float m_lastPressure = 1.0f; // of the stroke's last sample, for its end
     /** undoCount() + droppedCount() of the history at the press: the stroke added a step. */
-    std::size_t m_historyMark = 0;
     StrokeStats m_strokeStats;
     core::PaintTargetOptions m_paintOptions;
-    core::PressureCurve m_pressureCurve;
     Preferences m_preferences;
 
     RecentFiles m_recent;

@@ -15,7 +15,6 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QStatusBar>
-#include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +25,7 @@
 #include "core/io/project_file.h"
 #include "core/model/builtin_models.h"
 #include "core/paint/paint_target.h"
+#include "ui/commands/history_bridge.h"
 #include "ui/shell/background_task.h"
 #include "ui/shell/main_window.h"
 
@@ -62,12 +62,12 @@ ProjectController::ProjectController(MainWindow& window)
     m_sessionId = QStringLiteral("%1-%2")
                       .arg(QCoreApplication::applicationPid())
                       .arg(QDateTime::currentMSecsSinceEpoch(), 0, 36);
-    QUndoStack* stack = m_window.undoStack();
-    connect(stack, &QUndoStack::indexChanged, this, [this] {
+    HistoryBridge* history = m_window.history();
+    connect(history, &HistoryBridge::changed, this, [this] {
         ++m_changeSerial;
         updateModified();
     });
-    connect(stack, &QUndoStack::cleanChanged, this, &ProjectController::updateModified);
+    connect(history, &HistoryBridge::cleanChanged, this, &ProjectController::updateModified);
     connect(m_autosave, &BackgroundTask::finished, this, [this](const QString& error, bool) {
         if (error.isEmpty()) {
             m_window.statusBar()->showMessage(tr("Autosaved"), kStatusMs / 2);
@@ -96,7 +96,7 @@ QString ProjectController::documentName() const {
 }
 
 bool ProjectController::isModified() const {
-    return m_otherChanges || !m_window.undoStack()->isClean();
+    return m_otherChanges || !m_window.history()->isClean();
 }
 
 void ProjectController::markModified() {
@@ -116,7 +116,7 @@ void ProjectController::updateModified() {
 void ProjectController::documentLoaded(const QString& source, bool isProject,
                                        const QString& recoveryFor, const QString& modelSource) {
     const bool recovered = !m_recovering.isEmpty() && source == m_recovering;
-    m_window.undoStack()->setClean();
+    m_window.history()->markSaved();
     m_otherChanges = recovered; // recovered work is not saved anywhere yet
     if (recovered) {
         m_filePath = recoveryFor;
@@ -256,7 +256,7 @@ void ProjectController::onSaveFinished(const std::shared_ptr<Snapshot>& snap, co
     m_filePath = path;
     if (snap->serial == m_changeSerial) {
         // Nothing changed while it was written: what is shown is what is saved.
-        m_window.undoStack()->setClean();
+        m_window.history()->markSaved();
         m_otherChanges = false;
         // Nothing left to recover.
         m_autosave->wait();

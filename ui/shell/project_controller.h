@@ -20,8 +20,8 @@ class BackgroundTask;
 class MainWindow;
 
 /**
- * The project side of the main window (DESIGN.md §3 step 7): which file the document is saved
- * to, whether it has unsaved changes, Save / Save As, Export, autosave and crash recovery.
+ * The project side of the main window (docs/architecture.md §3 step 7): which file the document is
+ * saved to, whether it has unsaved changes, Save / Save As, Export, autosave and crash recovery.
  *
  * - Modified: the undo stack is away from its clean index (strokes, undo, redo), or a project
  *   setting changed (markModified()). Saving makes the document clean unless it changed while

@@ -4,12 +4,10 @@
 #include <QAction>
 #include <QKeySequence>
 #include <QSettings>
-#include <QUndoStack>
 
 #include <utility>
 
 #include "core/document/document.h"
-#include "ui/commands/order_command.h"
 #include "ui/panels/hidden_regions_panel.h"
 #include "ui/view/viewport.h"
 
@@ -38,11 +36,10 @@ QAction* makeToggle(const QString& text, const QString& name, const QString& tip
 }
 } // namespace
 
-RegionTools::RegionTools(core::Document& document, Viewport& viewport, QUndoStack& undoStack,
-                         const bool& undoSuspended, std::function<bool()> ensureLayers,
-                         QObject* parent)
-    : QObject(parent), m_document(document), m_viewport(viewport), m_undoStack(undoStack),
-      m_undoSuspended(undoSuspended), m_ensureLayers(std::move(ensureLayers)) {
+RegionTools::RegionTools(core::Document& document, Viewport& viewport,
+                         std::function<bool()> ensureLayers, QObject* parent)
+    : QObject(parent), m_document(document), m_viewport(viewport),
+      m_ensureLayers(std::move(ensureLayers)) {
     m_autoPopUp = makeToggle(tr("&Automatic Pop-up"), QStringLiteral("actionAutoPopUp"),
                              tr("While painting layer-aware, bring the surface under the brush "
                                 "to the front when it goes behind another"),
@@ -71,9 +68,8 @@ RegionTools::RegionTools(core::Document& document, Viewport& viewport, QUndoStac
     m_resetOrder->setStatusTip(tr("Show the regions in their original order (layer 1 in front)"));
     m_resetOrder->setToolTip(tr("Reset the region order (R)"));
     connect(m_resetOrder, &QAction::triggered, this, [this] {
-        core::RegionOrder order = m_document.regionOrder();
-        order.reset();
-        setOrder(std::move(order), tr("Reset Region Order"));
+        if (m_document.resetRegionOrder())
+            changed();
     });
 
     m_unhideAll = new QAction(tr("U&nhide All Regions"), this);
@@ -81,9 +77,8 @@ RegionTools::RegionTools(core::Document& document, Viewport& viewport, QUndoStac
     m_unhideAll->setShortcut(QKeySequence(Qt::SHIFT | Qt::Key_H));
     m_unhideAll->setToolTip(tr("Show every hidden region again (Shift+H)"));
     connect(m_unhideAll, &QAction::triggered, this, [this] {
-        core::RegionOrder order = m_document.regionOrder();
-        order.unhideAll();
-        setOrder(std::move(order), tr("Unhide All"));
+        if (m_document.unhideAll())
+            changed();
     });
     layersChanged();
 }
@@ -93,10 +88,8 @@ HiddenRegionsPanel* RegionTools::createPanel(QWidget* parent) {
     connect(m_panel, &HiddenRegionsPanel::unhideAllRequested, m_unhideAll, &QAction::trigger);
     connect(m_panel, &HiddenRegionsPanel::unhideRequested, this,
             [this](const std::vector<std::uint32_t>& regions) {
-                core::RegionOrder order = m_document.regionOrder();
-                for (const std::uint32_t region : regions)
-                    order.unhide(region);
-                setOrder(std::move(order), tr("Unhide"));
+                if (m_document.unhideRegions(regions))
+                    changed();
             });
     m_panel->setRegions(m_document.layers(), m_document.regionOrder());
     return m_panel;
@@ -105,13 +98,12 @@ HiddenRegionsPanel* RegionTools::createPanel(QWidget* parent) {
 void RegionTools::popUpAt(QPointF pixel) {
     if (!m_ensureLayers())
         return;
-    core::RegionOrder before = m_document.regionOrder();
     const std::uint32_t region = m_document.popUpAt(toVec(pixel));
     if (region == core::kNone) {
         emit message(tr("Nothing to pop up here"));
         return;
     }
-    pushChange(std::move(before), tr("Pop Up Region %1").arg(region));
+    changed();
     emit message(tr("Region %1 (layer %2) in front; click again to go deeper")
                      .arg(region)
                      .arg(m_document.regionOrder().layerOf(region)));
@@ -120,10 +112,8 @@ void RegionTools::popUpAt(QPointF pixel) {
 void RegionTools::popUpRegion(std::uint32_t region) {
     if (!m_document.layers())
         return;
-    core::RegionOrder before = m_document.regionOrder();
-    if (!m_document.popUpRegion(region))
-        return;
-    pushChange(std::move(before), tr("Pop Up Region %1").arg(region));
+    if (m_document.popUpRegion(region))
+        changed();
 }
 
 void RegionTools::beginHide(QPointF pixel, float radius) {
@@ -132,58 +122,55 @@ void RegionTools::beginHide(QPointF pixel, float radius) {
         return;
     // The order at the press decides what the stroke hides: it never drills through what it
     // reveals.
-    m_hideRanks = m_document.regionRanks();
-    m_hideBefore = m_document.regionOrder();
+    m_document.beginHide();
     m_hideRadius = radius;
     m_hideLast = pixel;
     moveHide(pixel);
 }
 
+bool RegionTools::isHiding() const {
+    return m_document.inHide();
+}
+
 void RegionTools::moveHide(QPointF pixel) {
-    if (!m_hideRanks)
+    if (!m_document.inHide())
         return;
-    if (m_document.hideAlong(toVec(m_hideLast), toVec(pixel), m_hideRadius, *m_hideRanks) > 0)
+    if (m_document.hideAlong(toVec(m_hideLast), toVec(pixel), m_hideRadius) > 0)
         orderApplied();
     m_hideLast = pixel;
 }
 
 void RegionTools::endHide() {
-    if (!m_hideRanks)
+    if (!m_document.inHide())
         return;
-    m_hideRanks.reset();
-    const std::size_t before = m_hideBefore.hiddenRegions().size();
-    const std::size_t after = m_document.regionOrder().hiddenRegions().size();
-    if (after > before) {
-        pushChange(std::move(m_hideBefore), tr("Hide %n Region(s)", nullptr, int(after - before)));
-        emit message(tr("%n region(s) hidden", nullptr, int(after)));
+    const std::uint64_t revision = m_document.history().revision();
+    m_document.endHide();
+    if (m_document.history().revision() != revision) {
+        changed();
+        emit message(tr("%n region(s) hidden", nullptr,
+                        int(m_document.regionOrder().hiddenRegions().size())));
     }
 }
 
 void RegionTools::beginStroke() {
-    m_strokeBefore = m_document.regionOrder();
+    m_inStroke = true;
     m_strokeOrderSerial = m_document.regionOrderSerial();
 }
 
 void RegionTools::strokeMoved() {
-    if (m_strokeBefore && m_document.regionOrderSerial() != m_strokeOrderSerial) {
+    if (m_inStroke && m_document.regionOrderSerial() != m_strokeOrderSerial) {
         m_strokeOrderSerial = m_document.regionOrderSerial();
         orderApplied();
     }
 }
 
 void RegionTools::endStroke() {
-    if (!m_strokeBefore)
-        return;
     strokeMoved();
-    core::RegionOrder before = std::move(*m_strokeBefore);
-    m_strokeBefore.reset();
-    if (before.order() != m_document.regionOrder().order())
-        pushChange(std::move(before), tr("Automatic Pop-up"));
+    m_inStroke = false;
 }
 
 void RegionTools::layersChanged() {
-    m_strokeBefore.reset();
-    m_hideRanks.reset();
+    m_inStroke = false;
     if (m_panel)
         m_panel->setRegions(m_document.layers(), m_document.regionOrder());
     const bool layers = m_document.layers() != nullptr;
@@ -191,21 +178,9 @@ void RegionTools::layersChanged() {
     m_unhideAll->setEnabled(layers && !m_document.regionOrder().hiddenRegions().empty());
 }
 
-void RegionTools::pushChange(core::RegionOrder before, const QString& text) {
+void RegionTools::changed() {
     orderApplied();
-    m_undoStack.push(new OrderCommand(m_document, m_undoSuspended, std::move(before),
-                                      m_document.regionOrder(), m_document.layersSerial(), text,
-                                      [this] { orderApplied(); }));
-}
-
-void RegionTools::setOrder(core::RegionOrder order, const QString& text) {
-    if (!m_document.layers())
-        return;
-    core::RegionOrder before = m_document.regionOrder();
-    if (order.order() == before.order() && order.hiddenRegions() == before.hiddenRegions())
-        return; // nothing to do: no undo step
-    m_document.setRegionOrder(std::move(order));
-    pushChange(std::move(before), text);
+    emit edited();
 }
 
 void RegionTools::orderApplied() {

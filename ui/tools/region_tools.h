@@ -13,7 +13,6 @@
 #include "core/regions/region_order.h"
 
 class QAction;
-class QUndoStack;
 
 namespace core {
 class Document;
@@ -36,11 +35,10 @@ class RegionTools : public QObject {
 
 public:
     /**
-     * ensureLayers builds the current view's layers if they are missing (false if it could not);
-     * undoSuspended is the window's flag for rebuilding the undo stack.
+     * ensureLayers builds the current view's layers if they are missing (false if it could not).
+     * Every change is an undo step of the document; edited() follows it.
      */
-    RegionTools(core::Document& document, Viewport& viewport, QUndoStack& undoStack,
-                const bool& undoSuspended, std::function<bool()> ensureLayers,
+    RegionTools(core::Document& document, Viewport& viewport, std::function<bool()> ensureLayers,
                 QObject* parent = nullptr);
 
     /** The Paint-to-Hide panel (owned by parent). */
@@ -61,31 +59,30 @@ public:
     void beginHide(QPointF pixel, float radius);
     void moveHide(QPointF pixel);
     void endHide();
-    bool isHiding() const { return m_hideRanks.has_value(); }
+    bool isHiding() const;
 
-    /** A paint stroke starts / ended: pop-ups it made become one undo step, pushed at the end. */
+    /** A paint stroke starts / ended (its pop-ups are part of the stroke's undo step). */
     void beginStroke();
     void endStroke();
     /** Call while a stroke's dabs may have popped regions up: redraws with the new order. */
     void strokeMoved();
+    /** The viewport and the panel show the document's order (after undo/redo too). */
+    void orderApplied();
 
     /** The layers were built or re-segmented (a fresh order) or dropped. */
     void layersChanged();
 
 signals:
     void message(const QString& text);
+    /** A change of the region order was recorded in the document's history. */
+    void edited();
 
 private:
-    /** Pushes an OrderCommand for the change from before to the document's order. */
-    void pushChange(core::RegionOrder before, const QString& text);
-    void setOrder(core::RegionOrder order, const QString& text);
-    /** The viewport and the panel show the document's order. */
-    void orderApplied();
+    /** After a recorded change: redraw and tell. */
+    void changed();
 
     core::Document& m_document;
     Viewport& m_viewport;
-    QUndoStack& m_undoStack;
-    const bool& m_undoSuspended;
     std::function<bool()> m_ensureLayers;
     HiddenRegionsPanel* m_panel = nullptr;
     QAction* m_autoPopUp = nullptr;
@@ -94,11 +91,9 @@ private:
     QAction* m_resetOrder = nullptr;
     QAction* m_unhideAll = nullptr;
 
-    // The stroke in progress: the order at its start, and the hide stroke's ranks and last point.
-    std::optional<core::RegionOrder> m_strokeBefore;
+    // The stroke in progress: whether one is, the order it drew last; the hide stroke's last point.
+    bool m_inStroke = false;
     std::uint64_t m_strokeOrderSerial = 0;
-    std::optional<std::vector<std::uint32_t>> m_hideRanks;
-    core::RegionOrder m_hideBefore;
     QPointF m_hideLast;
     float m_hideRadius = 0.0f;
 };

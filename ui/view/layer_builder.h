@@ -20,10 +20,10 @@ namespace ui {
 class Viewport;
 
 /**
- * Runs build_layers (DESIGN.md §3 step 2) when the view settles, without ever blocking orbiting.
- * Any view change drops the document's layers at once and restarts a short timer; when it fires
- * (and no drag is in progress), the viewport captures the fragments on the GUI thread in its GL
- * context, and a worker thread finishes them (connectivity, regions, region graph). The result
+ * Runs build_layers (docs/architecture.md §3 step 2) when the view settles, without ever blocking
+ * orbiting. Any view change drops the document's layers at once and restarts a short timer; when it
+ * fires (and no drag is in progress), the viewport captures the fragments on the GUI thread in its
+ * GL context, and a worker thread finishes them (connectivity, regions, region graph). The result
  * is adopted only if view, mesh and capture options are still those it was made for; a stale one
  * is dropped. Threshold and test changes re-segment the current layers without a capture.
  */

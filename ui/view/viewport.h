@@ -94,8 +94,8 @@ public:
     /** True once the context is up and a model is loaded: captureLayers() can run. */
     bool canCapture() const;
     /**
-     * Where build_layers computes pixel connectivity (DESIGN.md §2: the faster of the C++ path
-     * and the GL compute pass; Auto picks by renderer). Takes effect at the next build.
+     * Where build_layers computes pixel connectivity (docs/architecture.md §2: the faster of the
+     * C++ path and the GL compute pass; Auto picks by renderer). Takes effect at the next build.
      */
     void setConnectivityBackend(render::ConnectivityBackend backend);
     /**
@@ -166,6 +166,8 @@ public:
     std::uint32_t displayLayer() const { return m_composite.layer; }
 
 public slots:
+    /** The document's camera moved (by a script, an orbit...): the view and layers follow. */
+    void cameraMoved();
     void frameAll();
     void setOrthographic(bool orthographic);
     void setDisplay(render::LayerDisplay display);
@@ -187,7 +189,7 @@ signals:
     /** A render part other than the mesh renderer failed to start (layers will not show). */
     void layerRenderingFailed(const QString& message);
 
-    // The painting hook: positions in device pixels, origin top-left (DESIGN.md §4).
+    // The painting hook: positions in device pixels, origin top-left (docs/architecture.md §4).
     // modifiers are those held at the press (ui::toolForPress).
     void paintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
     void paintMoved(QPointF pixel, qreal pressure);
@@ -217,7 +219,6 @@ private:
     void proximityChanged(bool inProximity);
 
     QPointF toDevicePixels(QPointF logical) const;
-    void cameraMoved();
     void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();

@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/layers/layers.h"
 #include "core/paint/dab.h"
@@ -76,7 +77,7 @@ class PickColorTest : public ::testing::Test {
 protected:
     void build(core::Mesh mesh, const core::PaintTargetOptions& options = {}) {
         m_doc.setMesh(std::move(mesh), "quads");
-        ASSERT_TRUE(m_doc.resetPaintTarget(options).ok());
+        ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
         core::CpuLayerCapturer capturer;
         capturer.setMesh(m_doc.mesh());
         const core::Status status = m_doc.buildLayers(capturer, pixelView(kWidth, kHeight));

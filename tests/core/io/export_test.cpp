@@ -14,6 +14,7 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/mesh_io.h"
@@ -35,7 +36,7 @@ core::Mesh paintedTrefoil(core::PaintTargetKind kind) {
     core::PaintTargetOptions options;
     options.kind = kind;
     options.resolution = 512;
-    EXPECT_TRUE(doc.resetPaintTarget(options).ok());
+    EXPECT_TRUE(doc.setPaintTarget(options).ok());
     doc.camera() = core::Camera::fromOrbit(doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
     const int width = 240, height = 180;
     core::CpuLayerCapturer capturer;

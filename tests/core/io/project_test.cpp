@@ -318,7 +318,7 @@ TEST(Project, TextureSaveLoadKeepsPaintCameraAndSettings) {
     doc.setMesh(core::makeTrefoil(60, 16), "builtin:trefoil");
     core::PaintTargetOptions options;
     options.resolution = 512;
-    ASSERT_TRUE(doc.resetPaintTarget(options).ok());
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
     paintSomething(doc);
     doc.camera().orbit(12.0f, -5.0f);
     doc.camera().orthographic = true;
@@ -377,7 +377,7 @@ TEST(Project, VertexColorSaveLoadKeepsPaint) {
     doc.setMesh(core::makeTrefoil(60, 16), "builtin:trefoil");
     core::PaintTargetOptions options;
     options.kind = core::PaintTargetKind::VertexColors;
-    ASSERT_TRUE(doc.resetPaintTarget(options).ok());
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
     paintSomething(doc);
     const auto* colors = dynamic_cast<const core::VertexColorTarget*>(doc.paintTarget());
     ASSERT_NE(colors, nullptr);
@@ -449,7 +449,7 @@ TEST(Project, CorruptedProjectsAreRefusedWithClearMessages) {
     doc.setMesh(core::makeTrefoil(40, 12), "builtin:trefoil");
     core::PaintTargetOptions options;
     options.resolution = 512;
-    ASSERT_TRUE(doc.resetPaintTarget(options).ok());
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
     paintSomething(doc, 160, 120);
     const std::string good = dir.file("good.glb");
     ASSERT_TRUE(core::saveProject(good, doc, core::captureProjectState(doc)).ok());
@@ -562,7 +562,7 @@ TEST(Project, FileOpensInOtherGltfTools) {
     doc.setMesh(core::makeTrefoil(60, 16), "builtin:trefoil");
     core::PaintTargetOptions options;
     options.resolution = 512;
-    ASSERT_TRUE(doc.resetPaintTarget(options).ok());
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
     paintSomething(doc);
     const std::string path = dir.file("knot.glb");
     ASSERT_TRUE(core::saveProject(path, doc, core::captureProjectState(doc)).ok());

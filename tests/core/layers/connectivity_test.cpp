@@ -404,7 +404,8 @@ TEST(ConnectivityTiming, DISABLED_Trefoil1280x720) {
         core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 1.6f).view(1280, 720);
     const core::LayerStack stack = core::captureLayersCpu(mesh, view);
     const core::SurfaceGeometry geometry = core::makeSurfaceGeometry(mesh, topology, view);
-    // Per fragment, and per pixel-layer slot (width × height × layers, DESIGN.md §5's unit).
+    // Per fragment, and per pixel-layer slot (width × height × layers, docs/architecture.md §5's
+    // unit).
     const double fragments = double(stack.fragmentCount());
     const double slots = double(stack.pixelCount()) * double(stack.maxLayers());
     std::printf("[ timing   ] %zu fragments, %u layers, %.0f pixel-layer slots\n",

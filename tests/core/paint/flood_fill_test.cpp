@@ -13,6 +13,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/layers/layers.h"
 #include "core/model/mesh_topology.h"
@@ -99,7 +100,7 @@ struct TwoQuads {
         core::PaintTargetOptions options;
         options.kind = kind;
         options.resolution = 512;
-        EXPECT_TRUE(doc.resetPaintTarget(options).ok());
+        EXPECT_TRUE(doc.setPaintTarget(options).ok());
         capturer.setMesh(doc.mesh());
         const core::Status built = doc.buildLayers(capturer, view);
         EXPECT_TRUE(built.ok()) << built.error();
@@ -478,9 +479,7 @@ TEST(FloodFillVertexColors, EachModeFillsItsVerticesAndUndoRestores) {
     ASSERT_TRUE(s.fill({5.0f, 30.5f}, FillMode::Color, tolerance).ok());
     // The seed is the clicked triangle's corner nearest the click: on B's left column.
     const float seedGrey = 1.0f; // vRamp at x = 4.25
-    const auto encode = [](float c) {
-        return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
-    };
+    const auto encode = [](float c) { return core::encodeSrgb(c); };
     const int colour = expectVertices([&](std::size_t v) {
         return v < backVertices && pixelOf(v).x < 32.25f &&
                std::fabs(encode(original[v].r) - encode(seedGrey)) <= tolerance + 1e-6f;

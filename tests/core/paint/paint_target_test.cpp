@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
+#include "core/base/color.h"
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
@@ -453,8 +454,6 @@ TEST(TextureTarget, UndoAndRedoAreByteExact) {
     core::PaintTargetOptions options;
     options.resolution = 1024;
     auto target = textureTarget(scene, options);
-    core::UndoHistory history;
-
     const auto s0 = target->page(0).rgba;
     core::Brush brush;
     brush.color = {0.1f, 0.9f, 0.3f, 1.0f};
@@ -464,25 +463,24 @@ TEST(TextureTarget, UndoAndRedoAreByteExact) {
         dabs1.push_back(makeDab(scene.layers.stack, {30.0f + 6.0f * float(i), 60.0f}, 12.0f));
     for (int i = 0; i < 6; ++i)
         dabs2.push_back(makeDab(scene.layers.stack, {50.0f, 40.0f + 6.0f * float(i)}, 12.0f));
-    ASSERT_TRUE(history.push(stroke(*target, scene.layers, brush, dabs1)));
+    core::TileUndoRecord first = stroke(*target, scene.layers, brush, dabs1);
     const auto s1 = target->page(0).rgba;
     brush.color = {0.9f, 0.2f, 0.1f, 0.5f};
-    ASSERT_TRUE(history.push(stroke(*target, scene.layers, brush, dabs2)));
+    core::TileUndoRecord second = stroke(*target, scene.layers, brush, dabs2);
     const auto s2 = target->page(0).rgba;
     ASSERT_NE(s0, s1);
     ASSERT_NE(s1, s2);
     // Only touched tiles are stored: far less than the 4 MiB texture.
-    EXPECT_LT(history.bytes(), target->page(0).rgba.size() / 2);
+    EXPECT_LT(first.bytes() + second.bytes(), target->page(0).rgba.size() / 2);
 
-    const core::TileUndoRecord* undone = history.undo(*target);
-    ASSERT_NE(undone, nullptr);
+    ASSERT_TRUE(second.undo(*target));
     EXPECT_EQ(target->page(0).rgba, s1);
-    EXPECT_FALSE(target->changes(*undone).texels.empty());
-    ASSERT_NE(history.undo(*target), nullptr);
+    EXPECT_FALSE(target->changes(second).texels.empty());
+    ASSERT_TRUE(first.undo(*target));
     EXPECT_EQ(target->page(0).rgba, s0);
-    ASSERT_NE(history.redo(*target), nullptr);
+    ASSERT_TRUE(first.redo(*target));
     EXPECT_EQ(target->page(0).rgba, s1);
-    ASSERT_NE(history.redo(*target), nullptr);
+    ASSERT_TRUE(second.redo(*target));
     EXPECT_EQ(target->page(0).rgba, s2);
 
     // A stroke that changes nothing (outside the mesh) leaves no record.
@@ -509,7 +507,8 @@ TEST(TextureTarget, MaterialsWithTexturesAndFactorsGetTheirOwnPages) {
     ASSERT_EQ(target->pageCount(), 3u);
     EXPECT_EQ(target->page(0).rgba, image.rgba); // kept byte for byte
     EXPECT_EQ(target->pageSource(1), 0);         // the texture with the tint baked in
-    EXPECT_EQ(texel(target->page(1), 3, 3)[0], core::linearToSrgb(0.5f * core::srgbToLinear(128)));
+    EXPECT_EQ(texel(target->page(1), 3, 3)[0],
+              core::linearToSrgb(0.5f * core::srgbToLinear(std::uint8_t(128))));
     EXPECT_EQ(target->pageSource(2), -1);
     EXPECT_EQ(target->page(2).width, 2048);
     for (std::size_t m = 0; m < 3; ++m)
@@ -719,7 +718,8 @@ TEST_F(TrefoilPaint, LayerTwoDabPaintsTheHiddenStrand) {
 }
 
 TEST_F(TrefoilPaint, DabCost) {
-    // Not a timed test (DESIGN.md §5: benchmarks are not tests); prints the median for reports.
+    // Not a timed test (docs/architecture.md §5: benchmarks are not tests); prints the median for
+    // reports.
     const glm::vec2 start = findCenter(32.0f, 1);
     ASSERT_GE(start.x, 0.0f);
     const auto c0 = std::chrono::steady_clock::now();

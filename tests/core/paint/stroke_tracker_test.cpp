@@ -718,7 +718,7 @@ double medianMs(std::vector<double> v) {
     return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
-// Timing for the README and DESIGN.md §5 (run with --gtest_also_run_disabled_tests): the
+// Timing for the README and docs/architecture.md §5 (run with --gtest_also_run_disabled_tests): the
 // built-in trefoil (144K vertices) at 1280×720, R = 32 px; start_stroke at points along a
 // strand, move_stroke for 5 px moves (a 200 Hz tablet at 1000 px/s) across a crossing.
 TEST(StrokeTiming, DISABLED_Trefoil1280x720) {

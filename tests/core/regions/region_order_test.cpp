@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The region order of DESIGN.md §3 step 3: the paper's pop-up example, two-level pop-up,
+// The region order of docs/architecture.md §3 step 3: the paper's pop-up example, two-level pop-up,
 // cycling at a pixel, pruning and paint-to-hide.
 #include <algorithm>
 #include <cstdint>

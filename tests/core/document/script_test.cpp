@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Scripts in the core: the runner replays operations through the Document, every change is one
+// step of the one history, and a recorded session replays to the same picture.
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/document/document.h"
+#include "core/document/script.h"
+#include "tests/core/test_scenes.h"
+
+namespace {
+
+using core_test::addQuad;
+using core_test::pixelView;
+using nlohmann::json;
+
+constexpr int kWidth = 96, kHeight = 64;
+
+/** A back quad (depth 8) partly covered by a front quad (depth 4), as in the order tests. */
+core::Mesh twoQuads() {
+    core::Mesh mesh;
+    addQuad(mesh, {{4.0f, 8.0f}, {64.0f, 56.0f}, 8.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 4});
+    addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
+    return mesh;
+}
+
+class Host final : public core::ScriptHost {
+public:
+    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+        capturer.setMesh(doc.mesh());
+        ++builds;
+        return doc.buildLayers(capturer, view);
+    }
+    core::CpuLayerCapturer capturer;
+    int builds = 0;
+};
+
+struct Session {
+    core::Document doc;
+    Host host;
+    core::ScriptRunner runner{doc, host, pixelView(kWidth, kHeight)};
+
+    Session() {
+        doc.setMesh(twoQuads(), "two quads");
+        core::PaintTargetOptions options;
+        options.resolution = 256;
+        EXPECT_TRUE(doc.setPaintTarget(options).ok());
+    }
+    core::Status run(const json& operations) {
+        for (const json& op : operations)
+            if (core::Status s = runner.run(op); !s)
+                return s;
+        return {};
+    }
+    std::vector<std::uint8_t> pixels() const { return doc.paintedMesh().textures.at(0).rgba; }
+};
+
+const json kBrush = {{"op", "set-brush"}, {"color", "#20c040"}, {"radius", 5}, {"hardness", 1}};
+// From the back quad's uncovered part into the part the front quad covers.
+const json kBehind = {{"op", "stroke"}, {"points", {{14, 30}, {24, 30}, {34, 30}, {50, 30}}}};
+
+TEST(Script, AStrokeAndThePopUpsItCausedAreOneUndoStep) {
+    Session s;
+    const std::vector<std::uint8_t> blank = s.pixels();
+    ASSERT_TRUE(s.run({{{"op", "set-mode"}, {"layer_aware", true}}, kBrush, kBehind}).ok());
+    const core::RegionOrderState initial = [&] {
+        core::RegionOrder order = s.doc.regionOrder();
+        order.reset();
+        return order.state();
+    }();
+    ASSERT_NE(s.doc.regionOrder().state(), initial) << "the stroke went behind: pop-up";
+    ASSERT_NE(s.pixels(), blank);
+    EXPECT_EQ(s.doc.history().undoCount(), 1u);
+    EXPECT_EQ(s.doc.history().undoKind(), core::StepKind::Stroke);
+
+    ASSERT_TRUE(s.run({{{"op", "undo"}}}).ok());
+    EXPECT_EQ(s.pixels(), blank);
+    EXPECT_EQ(s.doc.regionOrder().state(), initial);
+    ASSERT_TRUE(s.run({{{"op", "redo"}}}).ok());
+    EXPECT_NE(s.pixels(), blank);
+    EXPECT_NE(s.doc.regionOrder().state(), initial);
+}
+
+TEST(Script, UndoAfterAPopUpTakesBackThePopUpNotTheStroke) {
+    Session s;
+    ASSERT_TRUE(s.run({{{"op", "set-mode"}, {"layer_aware", false}},
+                       kBrush,
+                       {{"op", "stroke"}, {"points", {{10, 12}, {20, 12}}}}})
+                    .ok());
+    const std::vector<std::uint8_t> painted = s.pixels();
+    const core::RegionOrderState before = s.doc.regionOrder().state();
+    ASSERT_TRUE(s.run({{{"op", "popup"}, {"at", {50, 30}}}}).ok());
+    ASSERT_NE(s.doc.regionOrder().state(), before);
+    ASSERT_TRUE(s.run({{{"op", "undo"}}}).ok());
+    EXPECT_EQ(s.doc.regionOrder().state(), before);
+    EXPECT_EQ(s.pixels(), painted);
+    // Hiding and unhiding are steps too.
+    ASSERT_TRUE(s.run({{{"op", "hide"}, {"path", {{70, 30}, {80, 30}}}, {"radius", 3}}}).ok());
+    EXPECT_FALSE(s.doc.regionOrder().hiddenRegions().empty());
+    ASSERT_TRUE(s.run({{{"op", "unhide-all"}}, {{"op", "undo"}}}).ok());
+    EXPECT_FALSE(s.doc.regionOrder().hiddenRegions().empty());
+    ASSERT_TRUE(s.run({{{"op", "undo"}}}).ok());
+    EXPECT_TRUE(s.doc.regionOrder().hiddenRegions().empty());
+    EXPECT_EQ(s.pixels(), painted);
+}
+
+TEST(Script, APaintTargetChangeIsUndoable) {
+    Session s;
+    ASSERT_TRUE(s.run({kBrush, {{"op", "stroke"}, {"points", {{10, 12}, {20, 12}}}}}).ok());
+    const std::vector<std::uint8_t> painted = s.pixels();
+    ASSERT_TRUE(s.run({{{"op", "set-target"}, {"kind", "vertex-colors"}}}).ok());
+    EXPECT_EQ(s.doc.paintTargetKind(), core::PaintTargetKind::VertexColors);
+    ASSERT_TRUE(s.run({{{"op", "undo"}}}).ok());
+    ASSERT_EQ(s.doc.paintTargetKind(), core::PaintTargetKind::Texture);
+    EXPECT_EQ(s.pixels(), painted);
+    ASSERT_TRUE(s.run({{{"op", "undo"}}}).ok()); // and the stroke before it
+    EXPECT_NE(s.pixels(), painted);
+}
+
+TEST(Script, ErrorsNameTheOperation) {
+    Session s;
+    const core::Status status =
+        s.run({kBrush, {{"op", "stroke"}, {"points", {{10, 12}}}}, {{"op", "fly"}}});
+    ASSERT_FALSE(status.ok());
+    EXPECT_NE(status.error().find("operation 3"), std::string::npos) << status.error();
+    EXPECT_NE(status.error().find("fly"), std::string::npos) << status.error();
+    EXPECT_EQ(status.errorKind(), core::ErrorKind::BadInput);
+    EXPECT_FALSE(core::parseScript(json::object()).ok());
+    EXPECT_FALSE(s.runner.run({{"op", "set-brush"}, {"radius", "big"}}).ok());
+}
+
+TEST(Script, ARecordedSessionReplaysToTheSamePicture) {
+    // What a user does, through the Document's own operations (as the GUI calls them).
+    Session user;
+    ASSERT_TRUE(user.host.buildLayers(user.doc, pixelView(kWidth, kHeight)).ok());
+    core::PaintChanges changes;
+    user.doc.setLayerAware(true);
+    user.doc.brush().color = {0.2f, 0.4f, 0.9f, 1.0f};
+    user.doc.brush().radius = 6.0f;
+    user.doc.setPressureCurve({2.0f});
+    ASSERT_TRUE(user.doc.beginStroke({{14.0f, 30.0f}, 0.7f}, changes).ok());
+    user.doc.moveStroke({{30.0f, 31.0f}, 0.9f}, changes);
+    user.doc.moveStroke({{50.0f, 33.0f}, 0.5f}, changes);
+    user.doc.endStroke();
+    user.doc.beginHide();
+    user.doc.hideAlong({70.0f, 30.0f}, {70.0f, 30.0f}, 3.0f);
+    user.doc.hideAlong({70.0f, 30.0f}, {80.0f, 32.0f}, 3.0f);
+    user.doc.endHide();
+    user.doc.brush().color = {0.9f, 0.1f, 0.1f, 0.5f};
+    ASSERT_TRUE(user.doc.fill({50.0f, 30.0f}, core::FillMode::Region, 0.1f, changes).ok());
+    ASSERT_TRUE(user.doc.undo(changes));
+    ASSERT_TRUE(user.doc.popUpAt({50.0f, 30.0f}) != core::kNone);
+    user.doc.brush().eraser = true;
+    ASSERT_TRUE(user.doc.beginStroke({{20.0f, 30.0f}, 1.0f}, changes).ok());
+    user.doc.moveStroke({{26.0f, 30.0f}, 1.0f}, changes);
+    user.doc.endStroke();
+
+    const core::Script script = user.doc.session().script();
+    ASSERT_GT(script.operations.size(), 5u);
+    // Through text, as a saved script would be.
+    const core::Result<core::Script> parsed =
+        core::parseScript(json::parse(core::scriptToJson(script).dump()));
+    ASSERT_TRUE(parsed.ok()) << parsed.error();
+
+    Session replay;
+    ASSERT_TRUE(replay.runner.runAll(*parsed).ok());
+    EXPECT_EQ(replay.pixels(), user.pixels());
+    EXPECT_EQ(replay.doc.regionOrder().state(), user.doc.regionOrder().state());
+    EXPECT_EQ(replay.doc.brush(), user.doc.brush());
+    EXPECT_EQ(replay.doc.history().undoCount(), user.doc.history().undoCount());
+}
+
+TEST(Script, AGroupedScriptIsOneUndoStep) {
+    Session s;
+    const std::vector<std::uint8_t> blank = s.pixels();
+    core::Script script;
+    script.operations = {kBrush,
+                         {{"op", "stroke"}, {"points", {{10, 12}, {20, 12}}}},
+                         {{"op", "popup"}, {"at", {50, 30}}},
+                         {{"op", "stroke"}, {"points", {{10, 40}, {20, 40}}}},
+                         {{"op", "undo"}}, // the script's own undo works step by step
+                         {{"op", "stroke"}, {"points", {{10, 44}, {20, 44}}}}};
+    Session stepByStep;
+    ASSERT_TRUE(stepByStep.runner.runAll(script).ok());
+    EXPECT_EQ(stepByStep.doc.history().undoCount(), 3u);
+
+    const std::uint64_t mark = s.doc.history().mark();
+    ASSERT_TRUE(s.runner.runAll(script).ok());
+    ASSERT_TRUE(s.doc.history().squash(mark, core::StepKind::Script));
+    EXPECT_EQ(s.doc.history().undoCount(), 1u);
+    EXPECT_FALSE(s.doc.history().canRedo());
+    EXPECT_EQ(s.pixels(), stepByStep.pixels());
+    core::PaintChanges changes;
+    ASSERT_TRUE(s.doc.undo(changes));
+    EXPECT_EQ(s.pixels(), blank);
+    EXPECT_FALSE(s.doc.history().canUndo());
+}
+
+TEST(Script, RunAllCanBeCancelled) {
+    Session s;
+    core::Script script;
+    script.operations = {kBrush, kBrush, kBrush};
+    int calls = 0;
+    const core::Status status = s.runner.runAll(script, [&](double) { return ++calls < 2; });
+    EXPECT_TRUE(status.cancelled());
+    EXPECT_EQ(s.runner.count(), 1u);
+}
+
+} // namespace
