@@ -510,7 +510,9 @@ void MainWindow::createPaintActions() {
     m_brushBar->insertWidget(first, m_layerAwareCheck);
     m_brushBar->insertSeparator(first);
 
-    // Painters' keys for the brush. Shift+[ arrives as { on many layouts: both are bound.
+    // Painters' keys for the brush. One key each: a keyboard's Shift+[ matches both Shift+[ and
+    // { (the platform offers the shifted and the unshifted key), and an action bound to both
+    // would be an ambiguous shortcut that does nothing.
     struct StepInfo {
         QString name;
         QString text;
@@ -534,13 +536,13 @@ void MainWindow::createPaintActions() {
          1},
         {QStringLiteral("actionBrushSofter"),
          tr("Sof&ter Brush"),
-         {QKeySequence(Qt::SHIFT | Qt::Key_BracketLeft), QKeySequence(Qt::Key_BraceLeft)},
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketLeft)},
          tr("Lower the brush hardness"),
          false,
          -1},
         {QStringLiteral("actionBrushHarder"),
          tr("Har&der Brush"),
-         {QKeySequence(Qt::SHIFT | Qt::Key_BracketRight), QKeySequence(Qt::Key_BraceRight)},
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketRight)},
          tr("Raise the brush hardness"),
          false,
          1},

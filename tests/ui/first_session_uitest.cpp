@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A new artist's first session through real Qt event delivery: keys as an X keyboard sends them
+// (QWindowSystemInterface with native scan codes), typing into the tool bar and panel fields,
+// the file dialogs of Export and Save As, recovery after a crash, load warnings and errors,
+// models without UVs, the Panels menu and the cursor of every tool. Needs a display with OpenGL
+// 4.5 (xvfb-run; llvmpipe is enough).
+#include <gtest/gtest.h>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardItemModel>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+#include <QUndoStack>
+#include <qpa/qwindowsysteminterface.h>
+
+#include <functional>
+#include <ostream>
+#include <memory>
+#include <random>
+#include <set>
+
+#include "core/mesh_io.h"
+#include "core/project.h"
+#include "tests/ui/ui_test_util.h"
+#include "ui/brush_toolbar.h"
+#include "ui/color_panel.h"
+#include "ui/layer_builder.h"
+#include "ui/main_window.h"
+#include "ui/project_controller.h"
+#include "ui/viewport.h"
+
+// Readable failures: gtest prints a QString as its text.
+[[maybe_unused]] static void PrintTo(const QString& text, std::ostream* out) {
+    *out << '"' << text.toStdString() << '"';
+}
+
+namespace {
+
+using namespace ui_test;
+
+[[maybe_unused]] constexpr int kSaveTimeoutMs = 60000;
+
+// X11 keycodes (evdev and the older xfree86 set agree on these) and keysyms of a US keyboard.
+constexpr quint32 kScanBracketLeft = 34;
+constexpr quint32 kScanBracketRight = 35;
+constexpr quint32 kShiftMask = 1;
+
+[[maybe_unused]] std::string local(const QString& path) {
+    return QFile::encodeName(path).toStdString();
+}
+
+[[maybe_unused]] QByteArray readAll(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+[[maybe_unused]] bool writeFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
+/** Runs act on the next modal widget of type T as soon as it shows (it runs its own loop). */
+template <typename T>
+void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {}) {
+    auto* timer = new QTimer(qApp);
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, act, accept] {
+        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
+        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
+            !widget->windowHandle()->isExposed() || (accept && !accept(widget)))
+            return;
+        timer->stop();
+        timer->deleteLater();
+        act(widget);
+    });
+    timer->start();
+}
+
+[[maybe_unused]] void clickButton(QMessageBox* box, QMessageBox::StandardButton which) {
+    QTest::mouseClick(box->button(which), Qt::LeftButton);
+}
+
+/** Whether text is fit to show: no control characters, no replacement characters. */
+[[maybe_unused]] bool printable(const QString& text) {
+    for (const QChar c : text)
+        if (c == QChar::ReplacementCharacter || (!c.isPrint() && c != QLatin1Char(' ')))
+            return false;
+    return true;
+}
+
+class FirstSessionTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
+        ASSERT_TRUE(m_dir.isValid());
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(1180, 760);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+    }
+
+    void TearDown() override {
+        m_window.reset();
+        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
+        QSettings().clear();
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    core::Document& document() const { return m_window->document(); }
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+    QAction* action(const char* name) const {
+        return m_window->findChild<QAction*>(QString::fromLatin1(name));
+    }
+    /** The bar over the viewport that keeps notes about the open model. */
+    QWidget* messageBar() const {
+        return m_window->findChild<QWidget*>(QStringLiteral("messageBar"));
+    }
+    QString messageBarText() const {
+        QWidget* bar = messageBar();
+        auto* label = bar ? bar->findChild<QLabel*>(QStringLiteral("messageBarText")) : nullptr;
+        return label ? label->text() : QString();
+    }
+    QString modelInfo() const {
+        const auto* info = m_window->statusBar()->findChild<QLabel*>();
+        return info ? info->text() : QString();
+    }
+
+    bool open(const QString& source, QString* error = nullptr) {
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy failed(m_window.get(), &ui::MainWindow::loadFailed);
+        m_window->openFile(source);
+        if (!QTest::qWaitFor([&] { return !loaded.isEmpty() || !failed.isEmpty(); },
+                             kLoadTimeoutMs))
+            return false;
+        if (error && !failed.isEmpty())
+            *error = failed.first().first().toString();
+        return !loaded.isEmpty();
+    }
+
+    void openAndBuild(const QString& source) {
+        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        ASSERT_TRUE(open(source));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+    }
+
+    bool saveTo(const QString& file) {
+        QSignalSpy saved(m_window->projectController(), &ui::ProjectController::saved);
+        QSignalSpy failed(m_window->projectController(), &ui::ProjectController::saveFailed);
+        if (!m_window->projectController()->saveTo(file))
+            return false;
+        EXPECT_TRUE(
+            QTest::qWaitFor([&] { return !saved.isEmpty() || !failed.isEmpty(); }, kSaveTimeoutMs));
+        return !saved.isEmpty();
+    }
+
+    /**
+     * A key pressed and released on the keyboard, delivered as the X11 platform plugin delivers
+     * it: to the focus widget, shortcuts matched through the keyboard map when scan is given.
+     */
+    void key(int qtKey, Qt::KeyboardModifiers modifiers = Qt::NoModifier,
+             const QString& text = QString(), quint32 scan = 0, quint32 keysym = 0,
+             quint32 nativeModifiers = 0) {
+        QWindow* window = QApplication::focusWindow();
+        ASSERT_NE(window, nullptr);
+        for (const QEvent::Type type : {QEvent::KeyPress, QEvent::KeyRelease})
+            QWindowSystemInterface::handleExtendedKeyEvent(window, type, qtKey, modifiers, scan,
+                                                           keysym, nativeModifiers, text);
+        QWindowSystemInterface::flushWindowSystemEvents();
+    }
+    /** A letter key as typed: E gives Qt::Key_E and the text "e". */
+    void letter(char c) {
+        key(Qt::Key_A + (QChar::fromLatin1(c).toLower().toLatin1() - 'a'), Qt::NoModifier,
+            QString(QChar::fromLatin1(c).toLower()));
+    }
+    void type(const QString& text) {
+        for (const QChar c : text) {
+            const char l = c.toLatin1();
+            int code = c.toUpper().unicode();
+            if (l == '#')
+                code = Qt::Key_NumberSign;
+            key(code, Qt::NoModifier, QString(c));
+        }
+    }
+    void selectAllText() { key(Qt::Key_A, Qt::ControlModifier, QStringLiteral("\x01")); }
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+// Item 2: Shift+[ and Shift+] as an X keyboard sends them (keys { and } with Shift).
+TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
+    viewport()->setFocus();
+    ASSERT_FLOAT_EQ(document().brush().hardness, 0.5f);
+    key(Qt::Key_BraceRight, Qt::ShiftModifier, QStringLiteral("}"), kScanBracketRight, 0x7d,
+        kShiftMask);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.6f);
+    key(Qt::Key_BraceLeft, Qt::ShiftModifier, QStringLiteral("{"), kScanBracketLeft, 0x7b,
+        kShiftMask);
+    key(Qt::Key_BraceLeft, Qt::ShiftModifier, QStringLiteral("{"), kScanBracketLeft, 0x7b,
+        kShiftMask);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+    // The same keys without Shift still size the brush.
+    const float radius = document().brush().radius;
+    key(Qt::Key_BracketRight, Qt::NoModifier, QStringLiteral("]"), kScanBracketRight, 0x5d, 0);
+    EXPECT_GT(document().brush().radius, radius);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+}
+
+} // namespace
