@@ -129,10 +129,6 @@
 <context>
     <name>ui::BrushToolBar</name>
     <message>
-        <source>Brush</source>
-        <translation>Pinsel</translation>
-    </message>
-    <message>
         <source>Brush colour</source>
         <translation>Pinselfarbe</translation>
     </message>
@@ -187,6 +183,10 @@
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
         <translation>0: weicher Verlauf von der Mitte, 100: harte Kante (Umschalt+[ weicher, Umschalt+] härter)</translation>
+    </message>
+    <message>
+        <source>Brush Bar</source>
+        <translation>Pinselleiste</translation>
     </message>
 </context>
 <context>

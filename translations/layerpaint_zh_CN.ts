@@ -129,10 +129,6 @@
 <context>
     <name>ui::BrushToolBar</name>
     <message>
-        <source>Brush</source>
-        <translation>画笔</translation>
-    </message>
-    <message>
         <source>Brush colour</source>
         <translation>画笔颜色</translation>
     </message>
@@ -187,6 +183,10 @@
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
         <translation>0：从中心柔和衰减，100：硬边（Shift+[ 更软，Shift+] 更硬）</translation>
+    </message>
+    <message>
+        <source>Brush Bar</source>
+        <translation>画笔栏</translation>
     </message>
 </context>
 <context>

@@ -21,7 +21,8 @@ constexpr int kVertexColorsItem = -1; // the combo's data for vertex colours
 } // namespace
 
 BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
-    setWindowTitle(tr("Brush"));
+    // Named apart from the Brush panel (View ▸ Panels lists both).
+    setWindowTitle(tr("Brush Bar"));
     setObjectName(QStringLiteral("brushToolBar"));
 
     m_color = new QToolButton(this);

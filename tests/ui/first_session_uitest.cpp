@@ -32,8 +32,8 @@
 #include <qpa/qwindowsysteminterface.h>
 
 #include <functional>
-#include <ostream>
 #include <memory>
+#include <ostream>
 #include <random>
 #include <set>
 
@@ -227,6 +227,23 @@ TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
     key(Qt::Key_BracketRight, Qt::NoModifier, QStringLiteral("]"), kScanBracketRight, 0x5d, 0);
     EXPECT_GT(document().brush().radius, radius);
     EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+}
+
+// Item 11: View ▸ Panels names every panel and tool bar apart.
+TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
+    auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
+    ASSERT_NE(panels, nullptr);
+    std::set<QString> names;
+    int entries = 0;
+    for (const QAction* entry : panels->actions()) {
+        if (entry->isSeparator())
+            continue;
+        ++entries;
+        names.insert(entry->text().remove(QLatin1Char('&')));
+    }
+    EXPECT_EQ(int(names.size()), entries) << "two entries of View ▸ Panels share a name";
+    EXPECT_EQ(m_window->findChild<QDockWidget*>(QStringLiteral("brushDock"))->windowTitle(),
+              QStringLiteral("Brush"));
 }
 
 } // namespace
