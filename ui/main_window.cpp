@@ -48,6 +48,7 @@
 #include "ui/region_tools.h"
 #include "ui/segmentation_controls.h"
 #include "ui/stroke_command.h"
+#include "ui/tool_cursors.h"
 #include "ui/viewport.h"
 
 namespace ui {
@@ -652,6 +653,7 @@ void MainWindow::createToolActions() {
         m_toolBar->addAction(action);
     }
     toolAction(Tool::Brush)->setChecked(true);
+    m_viewport->setToolCursor(toolCursor(m_tool), toolShowsBrushOutline(m_tool));
 }
 
 void MainWindow::setTool(Tool tool) {
@@ -672,6 +674,7 @@ void MainWindow::setTool(Tool tool) {
     }
     m_tool = tool;
     m_viewport->setHoverHighlight(tool == Tool::Hide || tool == Tool::PopUp);
+    m_viewport->setToolCursor(toolCursor(tool), toolShowsBrushOutline(tool));
     emit toolChanged(tool);
 }
 

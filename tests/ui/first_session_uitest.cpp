@@ -246,4 +246,50 @@ TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
               QStringLiteral("Brush"));
 }
 
+// Item 12: every tool shows its own cursor; the brush outline only where it means something.
+TEST_F(FirstSessionTest, EveryToolShowsItsOwnCursor) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    viewport()->setFocus();
+    struct Seen {
+        Qt::CursorShape shape;
+        QImage image;
+        bool outline;
+    };
+    const auto choose = [&](char c) {
+        letter(c);
+        QTest::mouseMove(viewport(), viewport()->rect().center() + QPoint(3, 1));
+        QTest::mouseMove(viewport(), viewport()->rect().center());
+        const QCursor cursor = viewport()->cursor();
+        return Seen{cursor.shape(),
+                    cursor.shape() == Qt::BitmapCursor ? cursor.pixmap().toImage() : QImage(),
+                    viewport()->brushOutlineVisible()};
+    };
+    const Seen brush = choose('b');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Brush);
+    EXPECT_TRUE(brush.outline);
+    const Seen eraser = choose('e');
+    EXPECT_TRUE(eraser.outline);
+    const Seen fill = choose('g');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Fill);
+    EXPECT_FALSE(fill.outline);
+    EXPECT_EQ(fill.shape, Qt::BitmapCursor);
+    EXPECT_FALSE(fill.image.isNull());
+    const Seen picker = choose('i');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
+    EXPECT_FALSE(picker.outline);
+    EXPECT_EQ(picker.shape, Qt::CrossCursor);
+    const Seen popUp = choose('p');
+    EXPECT_EQ(m_window->tool(), ui::Tool::PopUp);
+    EXPECT_FALSE(popUp.outline);
+    EXPECT_EQ(popUp.shape, Qt::PointingHandCursor);
+    const Seen hide = choose('h');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Hide);
+    EXPECT_TRUE(hide.outline) << "paint to hide uses the brush radius";
+    // The painting tools' cursor is not the fill bucket, nor the eyedropper's crosshair.
+    EXPECT_NE(brush.shape, Qt::CrossCursor);
+    EXPECT_TRUE(brush.shape != fill.shape || brush.image != fill.image);
+    // Back to the brush: its outline again.
+    EXPECT_TRUE(choose('b').outline);
+}
+
 } // namespace
