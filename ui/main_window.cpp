@@ -37,6 +37,7 @@
 #include "ui/brush_panel.h"
 #include "ui/brush_toolbar.h"
 #include "ui/color_panel.h"
+#include "ui/field_focus.h"
 #include "ui/fill_panel.h"
 #include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
@@ -146,6 +147,8 @@ MainWindow::MainWindow(QWidget* parent)
         connect(action, &QAction::toggled, m_project, &ProjectController::markModified);
     createToolActions();
     createMenus();
+    // Enter and Escape in a tool bar or panel field give the keys back to the view.
+    qApp->installEventFilter(new FieldFocus(*this, *m_viewport, this));
 
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
     connect(m_loader, &ModelLoader::failed, this, &MainWindow::onLoadFailed);

@@ -166,6 +166,28 @@ protected:
         ASSERT_NE(document().layers(), nullptr);
     }
 
+    /** A pixel of the view in the middle of the model's surface (logical = device here). */
+    QPoint onModel() const {
+        const core::LayerStack& stack = document().layers()->stack;
+        const auto covered = [&](int x, int y) {
+            for (int dy = -3; dy <= 3; ++dy)
+                for (int dx = -3; dx <= 3; ++dx) {
+                    const int px = x + dx, py = y + dy;
+                    if (px < 0 || py < 0 || px >= stack.width || py >= stack.height ||
+                        stack.layerCount(std::size_t(py) * stack.width + px) == 0)
+                        return false;
+                }
+            return true;
+        };
+        for (int r = 0; r < stack.width / 2; r += 2)
+            for (const QPoint p : {QPoint(r, 0), QPoint(-r, 0), QPoint(0, r), QPoint(0, -r)}) {
+                const QPoint at = QPoint(stack.width / 2, stack.height / 2) + p;
+                if (covered(at.x(), at.y()))
+                    return at;
+            }
+        return {};
+    }
+
     bool saveTo(const QString& file) {
         QSignalSpy saved(m_window->projectController(), &ui::ProjectController::saved);
         QSignalSpy failed(m_window->projectController(), &ui::ProjectController::saveFailed);
@@ -227,6 +249,71 @@ TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
     key(Qt::Key_BracketRight, Qt::NoModifier, QStringLiteral("]"), kScanBracketRight, 0x5d, 0);
     EXPECT_GT(document().brush().radius, radius);
     EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+}
+
+// Item 3: after Enter or Escape in a tool bar or panel field, the tool keys work again.
+TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    auto* opacity = m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushOpacity"));
+    auto* radius = m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushRadius"));
+    auto* hex = m_window->colorPanel()->findChild<QLineEdit*>(QStringLiteral("colorHex"));
+    ASSERT_TRUE(opacity && radius && hex);
+    ASSERT_NE(opacity->value(), 40);
+
+    // Opacity 40, Enter, then E: the eraser.
+    QTest::mouseClick(opacity->findChild<QLineEdit*>(), Qt::LeftButton);
+    ASSERT_TRUE(opacity->hasFocus());
+    selectAllText();
+    type(QStringLiteral("40"));
+    key(Qt::Key_Return, Qt::NoModifier, QStringLiteral("\r"));
+    EXPECT_EQ(opacity->value(), 40);
+    EXPECT_FLOAT_EQ(document().brush().opacity, 0.4f);
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('e');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eraser);
+
+    // A hex colour, Enter, then G and a click: a fill in that colour.
+    QTest::mouseClick(hex, Qt::LeftButton);
+    ASSERT_TRUE(hex->hasFocus());
+    selectAllText();
+    type(QStringLiteral("#20a040"));
+    key(Qt::Key_Enter, Qt::KeypadModifier, QStringLiteral("\r"));
+    EXPECT_EQ(m_window->colorPanel()->foreground(), QColor(0x20, 0xa0, 0x40));
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('g');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Fill);
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, onModel());
+    ASSERT_EQ(m_window->undoStack()->count(), 1);
+    EXPECT_EQ(m_window->undoStack()->text(0), QStringLiteral("Fill"));
+
+    // Escape leaves a field without taking what was typed.
+    QTest::mouseClick(radius->findChild<QLineEdit*>(), Qt::LeftButton);
+    ASSERT_TRUE(radius->hasFocus());
+    selectAllText();
+    type(QStringLiteral("77"));
+    key(Qt::Key_Escape, Qt::NoModifier, QStringLiteral("\x1b"));
+    EXPECT_EQ(radius->value(), 32);
+    EXPECT_EQ(radius->cleanText(), QStringLiteral("32"));
+    EXPECT_FLOAT_EQ(document().brush().radius, 32.0f);
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('b');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Brush);
+
+    // Escape in the hex field: the colour in use stays.
+    QTest::mouseClick(hex, Qt::LeftButton);
+    selectAllText();
+    type(QStringLiteral("#ffffff"));
+    key(Qt::Key_Escape, Qt::NoModifier, QStringLiteral("\x1b"));
+    EXPECT_EQ(m_window->colorPanel()->foreground(), QColor(0x20, 0xa0, 0x40));
+    EXPECT_EQ(hex->text().toLower(), QStringLiteral("#20a040"));
+    EXPECT_TRUE(viewport()->hasFocus());
+
+    // A click on a number field's arrow edits nothing as text: letters stay tool keys.
+    QTest::mouseClick(radius, Qt::LeftButton, Qt::NoModifier, QPoint(radius->width() - 6, 4));
+    ASSERT_TRUE(radius->hasFocus());
+    EXPECT_EQ(radius->value(), 33);
+    letter('i');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
 }
 
 // Item 11: View ▸ Panels names every panel and tool bar apart.
