@@ -1130,6 +1130,22 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>&amp;Not Now</source>
         <translation>&amp;Nicht jetzt</translation>
     </message>
+    <message>
+        <source>“%1” is the open project. Exporting there would replace it with a plain model without its LayerPaint settings. Choose another name, or use File ▸ Save.</source>
+        <translation>„%1“ ist das geöffnete Projekt. Ein Export dorthin würde es durch ein einfaches Modell ohne seine LayerPaint-Einstellungen ersetzen. Wählen Sie einen anderen Namen oder verwenden Sie Datei ▸ Speichern.</translation>
+    </message>
+    <message>
+        <source>Not exported: “%1” is the open project</source>
+        <translation>Nicht exportiert: „%1“ ist das geöffnete Projekt</translation>
+    </message>
+    <message>
+        <source>Export Refused</source>
+        <translation>Export abgelehnt</translation>
+    </message>
+    <message>
+        <source>Could not export to “%1”.</source>
+        <translation>Export nach „%1“ nicht möglich.</translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>

@@ -1127,6 +1127,22 @@ connectivity %3 ms, regions %4 ms
         <source>&amp;Not Now</source>
         <translation>暂不(&amp;N)</translation>
     </message>
+    <message>
+        <source>“%1” is the open project. Exporting there would replace it with a plain model without its LayerPaint settings. Choose another name, or use File ▸ Save.</source>
+        <translation>“%1”是当前打开的项目。导出到该文件会用不含 LayerPaint 设置的普通模型替换它。请选择其他名称，或使用“文件 ▸ 保存”。</translation>
+    </message>
+    <message>
+        <source>Not exported: “%1” is the open project</source>
+        <translation>未导出：“%1”是当前打开的项目</translation>
+    </message>
+    <message>
+        <source>Export Refused</source>
+        <translation>已拒绝导出</translation>
+    </message>
+    <message>
+        <source>Could not export to “%1”.</source>
+        <translation>无法导出到“%1”。</translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionGraphPanel</name>

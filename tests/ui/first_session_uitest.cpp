@@ -232,6 +232,61 @@ protected:
     std::unique_ptr<ui::MainWindow> m_window;
 };
 
+// Item 1: Export proposes another name and never replaces the open project.
+TEST_F(FirstSessionTest, ExportNeverReplacesTheOpenProject) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    const QString project = path(QStringLiteral("p.glb"));
+    ASSERT_TRUE(saveTo(project));
+    const QByteArray saved = readAll(project);
+    ASSERT_FALSE(saved.isEmpty());
+    ui::ProjectController* controller = m_window->projectController();
+    QSignalSpy exported(controller, &ui::ProjectController::exported);
+    QSignalSpy failed(controller, &ui::ProjectController::exportFailed);
+
+    // File ▸ Export ▸ glTF Binary: the dialog proposes a name of its own. The artist types the
+    // project's name over it anyway and confirms that the file may be replaced.
+    QString proposed;
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        proposed = dialog->selectedFiles().value(0);
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        name->selectAll();
+        QTest::keyClicks(name, QStringLiteral("p.glb"));
+        onNextModal<QMessageBox>([](QMessageBox* box) { clickButton(box, QMessageBox::Yes); });
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    action("actionExportGlb")->trigger();
+    EXPECT_EQ(QFileInfo(proposed).fileName(), QStringLiteral("p-export.glb"));
+    EXPECT_EQ(QFileInfo(proposed).absolutePath(), QFileInfo(project).absolutePath());
+    QTest::qWait(0);
+    controller->waitForTasks();
+    QApplication::processEvents();
+    EXPECT_TRUE(exported.isEmpty()) << "the open project was replaced by an export";
+    ASSERT_EQ(failed.size(), 1);
+    EXPECT_TRUE(failed.first().first().toString().contains(QStringLiteral("p.glb")))
+        << failed.first().first().toString().toStdString();
+    EXPECT_EQ(readAll(project), saved);
+    core::Result<core::Project> reopened = core::loadProject(local(project));
+    ASSERT_TRUE(reopened.ok());
+    EXPECT_TRUE(reopened->state.has_value()) << "the project lost its LayerPaint state";
+
+    // Accepting the proposal exports beside the project, which stays as it was.
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        if (name->text() != QStringLiteral("p-export.glb")) {
+            dialog->reject(); // never answer an overwrite question here
+            return;
+        }
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    action("actionExportGlb")->trigger();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !exported.isEmpty(); }, kSaveTimeoutMs));
+    EXPECT_TRUE(QFileInfo::exists(path(QStringLiteral("p-export.glb"))));
+    EXPECT_EQ(readAll(project), saved);
+    EXPECT_EQ(controller->filePath(), QFileInfo(project).absoluteFilePath());
+}
+
 // Item 2: Shift+[ and Shift+] as an X keyboard sends them (keys { and } with Shift).
 TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
     viewport()->setFocus();
