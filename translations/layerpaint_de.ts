@@ -563,13 +563,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>%1 — %2 vertices, %3 triangles</source>
         <translation>%1 – %2 Eckpunkte, %3 Dreiecke</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading: %1</source>
-        <translation>
-            <numerusform>%n Warnung beim Laden: %1</numerusform>
-            <numerusform>%n Warnungen beim Laden: %1</numerusform>
-        </translation>
-    </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
         <translation>&amp;Ebenenbewusstes Malen</translation>
@@ -869,6 +862,34 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>Maltextur als Open&amp;EXR …</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was opened with %n warning(s):</source>
+        <translation>
+            <numerusform>„%1“ wurde mit %n Warnung geöffnet:</numerusform>
+            <numerusform>„%1“ wurde mit %n Warnungen geöffnet:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) while loading, shown above the view</source>
+        <translation>
+            <numerusform>%n Warnung beim Laden, oben in der Ansicht angezeigt</numerusform>
+            <numerusform>%n Warnungen beim Laden, oben in der Ansicht angezeigt</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ui::MessageBar</name>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more (see the tooltip)</source>
+        <translation>
+            <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
+            <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -562,12 +562,6 @@ connectivity %3 ms, regions %4 ms
         <source>%1 — %2 vertices, %3 triangles</source>
         <translation>%1 — %2 个顶点，%3 个三角形</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading: %1</source>
-        <translation>
-            <numerusform>加载时有 %n 条警告：%1</numerusform>
-        </translation>
-    </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
         <translation>图层感知绘画(&amp;L)</translation>
@@ -867,6 +861,31 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
+    </message>
+    <message numerus="yes">
+        <source>“%1” was opened with %n warning(s):</source>
+        <translation>
+            <numerusform>打开“%1”时出现 %n 条警告：</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n warning(s) while loading, shown above the view</source>
+        <translation>
+            <numerusform>加载时出现 %n 条警告，显示在视图上方</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>ui::MessageBar</name>
+    <message>
+        <source>Dismiss</source>
+        <translation>关闭</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more (see the tooltip)</source>
+        <translation>
+            <numerusform>……还有 %n 条（见工具提示）</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -42,6 +42,7 @@
 #include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
 #include "ui/layers_panel.h"
+#include "ui/message_bar.h"
 #include "ui/model_loader.h"
 #include "ui/order_command.h"
 #include "ui/project_controller.h"
@@ -118,6 +119,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_viewport = new Viewport(*m_document, this);
     m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
+    m_messageBar = new MessageBar(*m_viewport);
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
 
@@ -1385,12 +1387,20 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh) {
     for (const std::string& warning : mesh.warnings)
         warnings.append(QString::fromStdString(warning));
     m_modelInfo->setToolTip(warnings.join(QLatin1Char('\n')));
-    if (warnings.isEmpty())
+    // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
+    if (warnings.isEmpty()) {
+        m_messageBar->dismiss();
         statusBar()->clearMessage();
-    else
+    } else {
+        m_messageBar->showMessage(
+            MessageBar::Level::Warning,
+            tr("“%1” was opened with %n warning(s):", nullptr, int(warnings.size()))
+                .arg(displayName(m_source)),
+            warnings);
         statusBar()->showMessage(
-            tr("%n warning(s) while loading: %1", nullptr, int(warnings.size()))
-                .arg(warnings.first()));
+            tr("%n warning(s) while loading, shown above the view", nullptr, int(warnings.size())),
+            kStatusMessageMs);
+    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

@@ -39,6 +39,7 @@ class ColorPanel;
 class FillPanel;
 class LayerBuilder;
 class LayersPanel;
+class MessageBar;
 class ModelLoader;
 class ProjectController;
 class RegionGraphPanel;
@@ -226,6 +227,8 @@ private:
     // ~MainWindow deletes the widgets that refer to it before it goes.
     std::unique_ptr<core::Document> m_document;
     Viewport* m_viewport = nullptr;
+    /** Notes about the open model over the top of the viewport (load warnings, ...). */
+    MessageBar* m_messageBar = nullptr;
     LayerBuilder* m_builder = nullptr;
     ModelLoader* m_loader = nullptr;
     SegmentationControls* m_segmentationControls = nullptr;

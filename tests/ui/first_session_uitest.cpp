@@ -371,6 +371,37 @@ TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
     EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
 }
 
+// Item 6: load warnings are shown whole, over the viewport, until dismissed.
+TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
+    const QString file = path(QStringLiteral("warnings.obj"));
+    ASSERT_TRUE(writeFile(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1e39 0 0\nvn 0 0 1\n"
+                                "f 1//1 2//2 3//2\nl 1 3\n"));
+    ASSERT_TRUE(open(file));
+    const std::vector<std::string>& warnings = viewport()->mesh()->warnings;
+    ASSERT_EQ(warnings.size(), 2u);
+    QWidget* bar = messageBar();
+    ASSERT_NE(bar, nullptr);
+    EXPECT_TRUE(bar->isVisible());
+    EXPECT_TRUE(viewport()->isAncestorOf(bar)) << "the bar is over the viewport";
+    for (const std::string& warning : warnings)
+        EXPECT_TRUE(messageBarText().contains(QString::fromStdString(warning)))
+            << warning << " in " << messageBarText().toStdString();
+    // Later messages (a mode change here) do not take its place.
+    letter('l');
+    EXPECT_TRUE(bar->isVisible());
+    EXPECT_TRUE(messageBarText().contains(QString::fromStdString(warnings.front())));
+    // The artist dismisses it.
+    auto* close = bar->findChild<QAbstractButton*>(QStringLiteral("messageBarClose"));
+    ASSERT_NE(close, nullptr);
+    QTest::mouseClick(close, Qt::LeftButton);
+    EXPECT_FALSE(bar->isVisible());
+    // It comes back with the next model that has something to say, not with one that has not.
+    ASSERT_TRUE(open(file));
+    EXPECT_TRUE(messageBar()->isVisible());
+    ASSERT_TRUE(open(QStringLiteral("builtin:trefoil")));
+    EXPECT_FALSE(messageBar()->isVisible());
+}
+
 // Item 11: View ▸ Panels names every panel and tool bar apart.
 TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
     auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
