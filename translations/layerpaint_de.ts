@@ -188,6 +188,10 @@
         <source>Brush Bar</source>
         <translation>Pinselleiste</translation>
     </message>
+    <message>
+        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
+        <translation>Dieses Modell hat keine Texturkoordinaten (UVs), daher gibt es keine Textur zum Bemalen: Es wird mit Vertexfarben bemalt.</translation>
+    </message>
 </context>
 <context>
     <name>ui::ColorPanel</name>
@@ -876,6 +880,10 @@ Konnektivität %3 ms, Regionen %4 ms
             <numerusform>%n Warnung beim Laden, oben in der Ansicht angezeigt</numerusform>
             <numerusform>%n Warnungen beim Laden, oben in der Ansicht angezeigt</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
+        <translation>„%1“ hat keine Texturkoordinaten (UVs) und wird daher mit Vertexfarben bemalt: Die Feinheit der Farbe folgt seinen Vertices.</translation>
     </message>
 </context>
 <context>

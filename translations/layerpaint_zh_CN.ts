@@ -188,6 +188,10 @@
         <source>Brush Bar</source>
         <translation>画笔栏</translation>
     </message>
+    <message>
+        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
+        <translation>此模型没有纹理坐标（UV），因此没有可绘制的纹理：它使用顶点颜色绘制。</translation>
+    </message>
 </context>
 <context>
     <name>ui::ColorPanel</name>
@@ -873,6 +877,10 @@ connectivity %3 ms, regions %4 ms
         <translation>
             <numerusform>加载时出现 %n 条警告，显示在视图上方</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
+        <translation>“%1”没有纹理坐标（UV），因此使用顶点颜色绘制：颜料的细节取决于其顶点。</translation>
     </message>
 </context>
 <context>

@@ -1387,20 +1387,28 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh) {
     for (const std::string& warning : mesh.warnings)
         warnings.append(QString::fromStdString(warning));
     m_modelInfo->setToolTip(warnings.join(QLatin1Char('\n')));
+    const int warningCount = int(warnings.size());
+    // Without UVs there is no texture to paint into (BrushToolBar::setTarget says so too).
+    if (!mesh.hasUvs())
+        warnings.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
+                           "colours: the paint's detail follows its vertices.")
+                            .arg(displayName(m_source)));
     // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
-    if (warnings.isEmpty()) {
+    if (warnings.isEmpty())
         m_messageBar->dismiss();
+    else if (warningCount == 0)
+        m_messageBar->showMessage(MessageBar::Level::Information, warnings.first());
+    else
+        m_messageBar->showMessage(MessageBar::Level::Warning,
+                                  tr("“%1” was opened with %n warning(s):", nullptr, warningCount)
+                                      .arg(displayName(m_source)),
+                                  warnings);
+    if (warningCount == 0)
         statusBar()->clearMessage();
-    } else {
-        m_messageBar->showMessage(
-            MessageBar::Level::Warning,
-            tr("“%1” was opened with %n warning(s):", nullptr, int(warnings.size()))
-                .arg(displayName(m_source)),
-            warnings);
+    else
         statusBar()->showMessage(
-            tr("%n warning(s) while loading, shown above the view", nullptr, int(warnings.size())),
+            tr("%n warning(s) while loading, shown above the view", nullptr, warningCount),
             kStatusMessageMs);
-    }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
