@@ -885,6 +885,10 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
         <translation>„%1“ hat keine Texturkoordinaten (UVs) und wird daher mit Vertexfarben bemalt: Die Feinheit der Farbe folgt seinen Vertices.</translation>
     </message>
+    <message>
+        <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
+        <translation>Die ungesicherte Arbeit an „%1“, automatisch gesichert um %2, wurde wiederhergestellt. Speichern Sie sie, um sie zu behalten.</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -882,6 +882,10 @@ connectivity %3 ms, regions %4 ms
         <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
         <translation>“%1”没有纹理坐标（UV），因此使用顶点颜色绘制：颜料的细节取决于其顶点。</translation>
     </message>
+    <message>
+        <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
+        <translation>已恢复“%1”中于 %2 自动保存的未保存工作。请保存以保留它。</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -10,6 +10,7 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -1206,14 +1207,32 @@ void MainWindow::showError(const QString& title, const QString& text, const QStr
 void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
                           std::shared_ptr<const core::ProjectState> state) {
     stopProgress();
+    // Recovered work is shown under its own name: the project it belongs to, else the model it
+    // was painted from; the autosave's name is an internal one.
+    const bool recovered = state && m_project->isRecoveryFile(source);
     m_source = source;
-    updateModelInfo(*mesh);
+    QString recoveredNote;
+    if (recovered) {
+        const auto decode = [](const std::string& path) {
+            return QFile::decodeName(QByteArray::fromStdString(path));
+        };
+        if (!state->recoveryFor.empty())
+            m_source = decode(state->recoveryFor);
+        else if (!state->source.empty())
+            m_source = decode(state->source);
+        recoveredNote =
+            tr("Recovered the unsaved work on “%1” that was autosaved at %2. Save it "
+               "to keep it.")
+                .arg(displayName(m_source),
+                     QLocale().toString(QFileInfo(source).lastModified(), QLocale::ShortFormat));
+    }
+    updateModelInfo(*mesh, recoveredNote);
     finishStroke();
     // A new model starts with the preferred size for a new texture.
     m_paintOptions.resolution = m_preferences.textureSize;
     m_document->setPaintOptions(m_paintOptions);
     // This window is the loader's only listener: the mesh moves into the document.
-    m_document->setMesh(std::move(*mesh), source.toStdString());
+    m_document->setMesh(std::move(*mesh), m_source.toStdString());
     if (state) {
         applyProjectState(*state);
     } else {
@@ -1284,7 +1303,7 @@ void MainWindow::updateWindowTitle() {
     const QString name = m_project->documentName();
     // [*] shows the unsaved-changes mark where the platform puts it.
     setWindowTitle(name.isEmpty() ? tr("LayerPaint") : tr("%1[*] — LayerPaint").arg(name));
-    setWindowModified(m_project->isModified());
+    setWindowModified(!name.isEmpty() && m_project->isModified()); // no mark without a document
 }
 
 void MainWindow::createProjectActions(QMenu* fileMenu) {
@@ -1377,7 +1396,7 @@ void MainWindow::stopProgress() {
     m_progress = nullptr;
 }
 
-void MainWindow::updateModelInfo(const core::Mesh& mesh) {
+void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
     const QLocale locale;
     m_modelInfo->setText(tr("%1 — %2 vertices, %3 triangles")
                              .arg(displayName(m_source),
@@ -1388,21 +1407,24 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh) {
         warnings.append(QString::fromStdString(warning));
     m_modelInfo->setToolTip(warnings.join(QLatin1Char('\n')));
     const int warningCount = int(warnings.size());
+    QStringList notes;
+    if (!note.isEmpty())
+        notes.append(note);
     // Without UVs there is no texture to paint into (BrushToolBar::setTarget says so too).
     if (!mesh.hasUvs())
-        warnings.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
-                           "colours: the paint's detail follows its vertices.")
-                            .arg(displayName(m_source)));
+        notes.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
+                        "colours: the paint's detail follows its vertices.")
+                         .arg(displayName(m_source)));
     // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
-    if (warnings.isEmpty())
-        m_messageBar->dismiss();
-    else if (warningCount == 0)
-        m_messageBar->showMessage(MessageBar::Level::Information, warnings.first());
-    else
+    if (warningCount > 0)
         m_messageBar->showMessage(MessageBar::Level::Warning,
                                   tr("“%1” was opened with %n warning(s):", nullptr, warningCount)
                                       .arg(displayName(m_source)),
-                                  warnings);
+                                  warnings + notes);
+    else if (!notes.isEmpty())
+        m_messageBar->showMessage(MessageBar::Level::Information, notes.join(QLatin1Char('\n')));
+    else
+        m_messageBar->dismiss();
     if (warningCount == 0)
         statusBar()->clearMessage();
     else

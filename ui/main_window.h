@@ -222,7 +222,8 @@ private:
     void onLoadCancelled(const QString& source);
     void startProgress(const QString& source);
     void stopProgress();
-    void updateModelInfo(const core::Mesh& mesh);
+    /** The status bar's model line and the notes over the view (warnings, note, no UVs). */
+    void updateModelInfo(const core::Mesh& mesh, const QString& note = {});
 
     // ~MainWindow deletes the widgets that refer to it before it goes.
     std::unique_ptr<core::Document> m_document;

@@ -371,6 +371,61 @@ TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
     EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
 }
 
+// Item 5: a recovered document keeps its own name and says it was recovered.
+TEST_F(FirstSessionTest, RecoveredWorkKeepsItsNameAndSaysSo) {
+    const QString folder = ui::ProjectController::recoveryFolder();
+    ASSERT_TRUE(QDir().mkpath(folder));
+    const QString orphan = QDir(folder).filePath(QStringLiteral("autosave-999999-crashed.glb"));
+    core::Result<core::Mesh> mesh = core::loadMesh("builtin:row");
+    ASSERT_TRUE(mesh.ok());
+    core::ProjectState state;
+    state.source = "builtin:row";
+    ASSERT_TRUE(core::saveProject(local(orphan), *mesh, state, {}, false).ok());
+    QSettings().setValue(QStringLiteral("project/directory"), m_dir.path());
+
+    m_window->setErrorDialogsEnabled(true);
+    QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+    onNextModal<QMessageBox>(
+        [](QMessageBox* box) {
+            QTest::mouseClick(box->findChild<QAbstractButton*>(QStringLiteral("recoverButton")),
+                              Qt::LeftButton);
+        },
+        [](QMessageBox* box) { return box->objectName() == QStringLiteral("recoveryBox"); });
+    ASSERT_TRUE(m_window->projectController()->offerRecovery());
+    ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+    m_window->setErrorDialogsEnabled(false);
+    m_window->activateWindow(); // the question box had the keyboard
+    ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+
+    EXPECT_EQ(m_window->currentSource(), QStringLiteral("builtin:row"));
+    EXPECT_TRUE(modelInfo().startsWith(QStringLiteral("Row of four"))) << modelInfo().toStdString();
+    EXPECT_FALSE(shownTitle(*m_window).contains(QStringLiteral("autosave")));
+    ASSERT_NE(messageBar(), nullptr);
+    EXPECT_TRUE(messageBar()->isVisible());
+    EXPECT_TRUE(messageBarText().contains(QStringLiteral("ecovered")))
+        << messageBarText().toStdString();
+
+    // Ctrl+S proposes the model's own name; the artist saves there.
+    QString proposed;
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        proposed = dialog->selectedFiles().value(0);
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        if (name->text() != QStringLiteral("row.glb")) {
+            dialog->reject();
+            return;
+        }
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    QSignalSpy saved(m_window->projectController(), &ui::ProjectController::saved);
+    key(Qt::Key_S, Qt::ControlModifier, QStringLiteral("\x13"));
+    EXPECT_EQ(QFileInfo(proposed).fileName(), QStringLiteral("row.glb"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !saved.isEmpty(); }, kSaveTimeoutMs));
+    EXPECT_EQ(m_window->projectController()->filePath(), path(QStringLiteral("row.glb")));
+    EXPECT_EQ(shownTitle(*m_window), QStringLiteral("row.glb — LayerPaint"));
+    EXPECT_FALSE(modelInfo().contains(QStringLiteral("autosave"))) << modelInfo().toStdString();
+}
+
 // Item 6: load warnings are shown whole, over the viewport, until dismissed.
 TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
     const QString file = path(QStringLiteral("warnings.obj"));
