@@ -219,8 +219,12 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
     if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
         // The JSON alone first: a newer project is refused before its textures are decoded.
         Result<Json> extras = readGlbExtras(path);
-        if (!extras)
+        if (!extras) {
+            // Not a glTF file at all: the model loader says what is wrong in plainer words.
+            if (Result<Mesh> mesh = loadMesh(path, progress, limits); !mesh)
+                return Error{mesh.error()};
             return Error{extras.error()};
+        }
         const auto it = extras->find(kKey);
         if (it != extras->end()) {
             if (!it->is_object())

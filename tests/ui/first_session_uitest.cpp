@@ -457,6 +457,45 @@ TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
     EXPECT_FALSE(messageBar()->isVisible());
 }
 
+// Item 7: errors name the file and say what is wrong in the user's words, no raw bytes.
+TEST_F(FirstSessionTest, OpenErrorsAreInTheUsersWords) {
+    std::mt19937 random(15);
+    QByteArray noise(4096, '\0');
+    for (char& c : noise)
+        c = char(random() & 0xff);
+    noise[0] = char(0x9c); // never "glTF" or "{"
+    struct Case {
+        QString name;
+        QByteArray bytes;
+        const char* forbidden;
+    };
+    const Case cases[] = {
+        {QStringLiteral("random.glb"), noise, "JSON"},
+        {QStringLiteral("notes.glb"), "hello, these are notes\n", "JSON"},
+        {QStringLiteral("notes.obj"), "just notes\n", "OBJ-file"},
+        {QStringLiteral("random.stl"), noise.left(100), "representation"},
+        {QStringLiteral("random.ply"), noise, "magic number"},
+    };
+    m_window->setErrorDialogsEnabled(true);
+    for (const Case& c : cases) {
+        const QString file = path(c.name);
+        ASSERT_TRUE(writeFile(file, c.bytes));
+        QString message;
+        QString shown;
+        onNextModal<QMessageBox>([&](QMessageBox* box) {
+            shown = box->text() + QLatin1Char('\n') + box->informativeText();
+            clickButton(box, QMessageBox::Ok);
+        });
+        EXPECT_FALSE(open(file, &message)) << c.name.toStdString();
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !shown.isEmpty(); }, 10000));
+        EXPECT_TRUE(shown.contains(c.name)) << shown.toStdString();
+        EXPECT_FALSE(shown.contains(QLatin1String(c.forbidden), Qt::CaseInsensitive))
+            << shown.toStdString();
+        EXPECT_TRUE(printable(message)) << message.toStdString();
+        EXPECT_TRUE(message.contains(c.name)) << message.toStdString();
+    }
+}
+
 // Item 8: a model without UVs says so, and the Paint into box says why textures are off.
 TEST_F(FirstSessionTest, ModelWithoutUvsSaysWhyItPaintsVertexColours) {
     const QString file = path(QStringLiteral("tetra.obj"));
