@@ -813,7 +813,9 @@ bool AssimpFlattener::run(Mesh& out) {
                 stack.push_back(Item{item.node->mChildren[c], global});
     }
     if (m_skippedFaces > 0)
-        m_mesh.warnings.push_back(str(m_skippedFaces) + " point and line faces were skipped");
+        m_mesh.warnings.push_back(m_skippedFaces == 1
+                                      ? std::string("1 point or line face was skipped")
+                                      : str(m_skippedFaces) + " point and line faces were skipped");
     if (m_mesh.indices.empty())
         return fail("the file contains no triangles");
 

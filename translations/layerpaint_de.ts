@@ -867,20 +867,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>Maltextur als Open&amp;EXR …</translation>
     </message>
-    <message numerus="yes">
-        <source>“%1” was opened with %n warning(s):</source>
-        <translation>
-            <numerusform>„%1“ wurde mit %n Warnung geöffnet:</numerusform>
-            <numerusform>„%1“ wurde mit %n Warnungen geöffnet:</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading, shown above the view</source>
-        <translation>
-            <numerusform>%n Warnung beim Laden, oben in der Ansicht angezeigt</numerusform>
-            <numerusform>%n Warnungen beim Laden, oben in der Ansicht angezeigt</numerusform>
-        </translation>
-    </message>
     <message>
         <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
         <translation>„%1“ hat keine Texturkoordinaten (UVs) und wird daher mit Vertexfarben bemalt: Die Feinheit der Farbe folgt seinen Vertices.</translation>
@@ -888,6 +874,14 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
         <translation>Die ungesicherte Arbeit an „%1“, automatisch gesichert um %2, wurde wiederhergestellt. Speichern Sie sie, um sie zu behalten.</translation>
+    </message>
+    <message>
+        <source>Opening “%1” gave these warnings:</source>
+        <translation>Beim Öffnen von „%1“ gab es diese Warnungen:</translation>
+    </message>
+    <message>
+        <source>Warnings while loading are shown above the view</source>
+        <translation>Warnungen beim Laden stehen oben in der Ansicht</translation>
     </message>
 </context>
 <context>

@@ -866,18 +866,6 @@ connectivity %3 ms, regions %4 ms
         <source>Paint Texture as Open&amp;EXR…</source>
         <translation>绘画纹理为 OpenEXR(&amp;E)…</translation>
     </message>
-    <message numerus="yes">
-        <source>“%1” was opened with %n warning(s):</source>
-        <translation>
-            <numerusform>打开“%1”时出现 %n 条警告：</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading, shown above the view</source>
-        <translation>
-            <numerusform>加载时出现 %n 条警告，显示在视图上方</numerusform>
-        </translation>
-    </message>
     <message>
         <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
         <translation>“%1”没有纹理坐标（UV），因此使用顶点颜色绘制：颜料的细节取决于其顶点。</translation>
@@ -885,6 +873,14 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
         <translation>已恢复“%1”中于 %2 自动保存的未保存工作。请保存以保留它。</translation>
+    </message>
+    <message>
+        <source>Opening “%1” gave these warnings:</source>
+        <translation>打开“%1”时出现以下警告：</translation>
+    </message>
+    <message>
+        <source>Warnings while loading are shown above the view</source>
+        <translation>加载时的警告显示在视图上方</translation>
     </message>
 </context>
 <context>

@@ -1417,10 +1417,9 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
                          .arg(displayName(m_source)));
     // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
     if (warningCount > 0)
-        m_messageBar->showMessage(MessageBar::Level::Warning,
-                                  tr("“%1” was opened with %n warning(s):", nullptr, warningCount)
-                                      .arg(displayName(m_source)),
-                                  warnings + notes);
+        m_messageBar->showMessage(
+            MessageBar::Level::Warning,
+            tr("Opening “%1” gave these warnings:").arg(displayName(m_source)), warnings + notes);
     else if (!notes.isEmpty())
         m_messageBar->showMessage(MessageBar::Level::Information, notes.join(QLatin1Char('\n')));
     else
@@ -1428,9 +1427,8 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
     if (warningCount == 0)
         statusBar()->clearMessage();
     else
-        statusBar()->showMessage(
-            tr("%n warning(s) while loading, shown above the view", nullptr, warningCount),
-            kStatusMessageMs);
+        statusBar()->showMessage(tr("Warnings while loading are shown above the view"),
+                                 kStatusMessageMs);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
