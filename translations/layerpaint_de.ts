@@ -129,10 +129,6 @@
 <context>
     <name>ui::BrushToolBar</name>
     <message>
-        <source>Brush</source>
-        <translation>Pinsel</translation>
-    </message>
-    <message>
         <source>Brush colour</source>
         <translation>Pinselfarbe</translation>
     </message>
@@ -187,6 +183,14 @@
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
         <translation>0: weicher Verlauf von der Mitte, 100: harte Kante (Umschalt+[ weicher, Umschalt+] härter)</translation>
+    </message>
+    <message>
+        <source>Brush Bar</source>
+        <translation>Pinselleiste</translation>
+    </message>
+    <message>
+        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
+        <translation>Dieses Modell hat keine Texturkoordinaten (UVs), daher gibt es keine Textur zum Bemalen: Es wird mit Vertexfarben bemalt.</translation>
     </message>
 </context>
 <context>
@@ -598,13 +602,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>%1 — %2 vertices, %3 triangles</source>
         <translation>%1 – %2 Eckpunkte, %3 Dreiecke</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading: %1</source>
-        <translation>
-            <numerusform>%n Warnung beim Laden: %1</numerusform>
-            <numerusform>%n Warnungen beim Laden: %1</numerusform>
-        </translation>
-    </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
         <translation>&amp;Ebenenbewusstes Malen</translation>
@@ -897,6 +894,36 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Painting into a new target (Undo brings the previous one back)</source>
         <translation>Es wird in ein neues Malziel gemalt (Rückgängig holt das vorige zurück)</translation>
     </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
+        <translation>„%1“ hat keine Texturkoordinaten (UVs) und wird daher mit Vertexfarben bemalt: Die Feinheit der Farbe folgt seinen Vertices.</translation>
+    </message>
+    <message>
+        <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
+        <translation>Die ungesicherte Arbeit an „%1“, automatisch gesichert um %2, wurde wiederhergestellt. Speichern Sie sie, um sie zu behalten.</translation>
+    </message>
+    <message>
+        <source>Opening “%1” gave these warnings:</source>
+        <translation>Beim Öffnen von „%1“ gab es diese Warnungen:</translation>
+    </message>
+    <message>
+        <source>Warnings while loading are shown above the view</source>
+        <translation>Warnungen beim Laden stehen oben in der Ansicht</translation>
+    </message>
+</context>
+<context>
+    <name>ui::MessageBar</name>
+    <message>
+        <source>Dismiss</source>
+        <translation>Schließen</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more (see the tooltip)</source>
+        <translation>
+            <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
+            <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ui::PreferencesDialog</name>
@@ -1156,6 +1183,22 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>&amp;Not Now</source>
         <translation>&amp;Nicht jetzt</translation>
+    </message>
+    <message>
+        <source>“%1” is the open project. Exporting there would replace it with a plain model without its LayerPaint settings. Choose another name, or use File ▸ Save.</source>
+        <translation>„%1“ ist das geöffnete Projekt. Ein Export dorthin würde es durch ein einfaches Modell ohne seine LayerPaint-Einstellungen ersetzen. Wählen Sie einen anderen Namen oder verwenden Sie Datei ▸ Speichern.</translation>
+    </message>
+    <message>
+        <source>Not exported: “%1” is the open project</source>
+        <translation>Nicht exportiert: „%1“ ist das geöffnete Projekt</translation>
+    </message>
+    <message>
+        <source>Export Refused</source>
+        <translation>Export abgelehnt</translation>
+    </message>
+    <message>
+        <source>Could not export to “%1”.</source>
+        <translation>Export nach „%1“ nicht möglich.</translation>
     </message>
 </context>
 <context>

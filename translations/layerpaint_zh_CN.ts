@@ -129,10 +129,6 @@
 <context>
     <name>ui::BrushToolBar</name>
     <message>
-        <source>Brush</source>
-        <translation>画笔</translation>
-    </message>
-    <message>
         <source>Brush colour</source>
         <translation>画笔颜色</translation>
     </message>
@@ -187,6 +183,14 @@
     <message>
         <source>0: soft falloff from the centre, 100: a hard edge (Shift+[ softer, Shift+] harder)</source>
         <translation>0：从中心柔和衰减，100：硬边（Shift+[ 更软，Shift+] 更硬）</translation>
+    </message>
+    <message>
+        <source>Brush Bar</source>
+        <translation>画笔栏</translation>
+    </message>
+    <message>
+        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
+        <translation>此模型没有纹理坐标（UV），因此没有可绘制的纹理：它使用顶点颜色绘制。</translation>
     </message>
 </context>
 <context>
@@ -597,12 +601,6 @@ connectivity %3 ms, regions %4 ms
         <source>%1 — %2 vertices, %3 triangles</source>
         <translation>%1 — %2 个顶点，%3 个三角形</translation>
     </message>
-    <message numerus="yes">
-        <source>%n warning(s) while loading: %1</source>
-        <translation>
-            <numerusform>加载时有 %n 条警告：%1</numerusform>
-        </translation>
-    </message>
     <message>
         <source>&amp;Layer-Aware Painting</source>
         <translation>图层感知绘画(&amp;L)</translation>
@@ -895,6 +893,35 @@ connectivity %3 ms, regions %4 ms
         <source>Painting into a new target (Undo brings the previous one back)</source>
         <translation>正在绘制到新的绘制目标（撤销可恢复之前的目标）</translation>
     </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs), so it is painted with vertex colours: the paint&apos;s detail follows its vertices.</source>
+        <translation>“%1”没有纹理坐标（UV），因此使用顶点颜色绘制：颜料的细节取决于其顶点。</translation>
+    </message>
+    <message>
+        <source>Recovered the unsaved work on “%1” that was autosaved at %2. Save it to keep it.</source>
+        <translation>已恢复“%1”中于 %2 自动保存的未保存工作。请保存以保留它。</translation>
+    </message>
+    <message>
+        <source>Opening “%1” gave these warnings:</source>
+        <translation>打开“%1”时出现以下警告：</translation>
+    </message>
+    <message>
+        <source>Warnings while loading are shown above the view</source>
+        <translation>加载时的警告显示在视图上方</translation>
+    </message>
+</context>
+<context>
+    <name>ui::MessageBar</name>
+    <message>
+        <source>Dismiss</source>
+        <translation>关闭</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more (see the tooltip)</source>
+        <translation>
+            <numerusform>……还有 %n 条（见工具提示）</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>ui::PreferencesDialog</name>
@@ -1153,6 +1180,22 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>&amp;Not Now</source>
         <translation>暂不(&amp;N)</translation>
+    </message>
+    <message>
+        <source>“%1” is the open project. Exporting there would replace it with a plain model without its LayerPaint settings. Choose another name, or use File ▸ Save.</source>
+        <translation>“%1”是当前打开的项目。导出到该文件会用不含 LayerPaint 设置的普通模型替换它。请选择其他名称，或使用“文件 ▸ 保存”。</translation>
+    </message>
+    <message>
+        <source>Not exported: “%1” is the open project</source>
+        <translation>未导出：“%1”是当前打开的项目</translation>
+    </message>
+    <message>
+        <source>Export Refused</source>
+        <translation>已拒绝导出</translation>
+    </message>
+    <message>
+        <source>Could not export to “%1”.</source>
+        <translation>无法导出到“%1”。</translation>
     </message>
 </context>
 <context>

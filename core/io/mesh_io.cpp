@@ -100,8 +100,11 @@ std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
             for (std::size_t i = 0; i < mesh.normals.size(); ++i)
                 if (!finite(mesh.normals[i]))
                     mesh.normals[i] = computed.normals[i];
-            mesh.warnings.push_back(std::to_string(bad) +
-                                    " invalid normals were recomputed from the triangles");
+            mesh.warnings.push_back(bad == 1
+                                        ? std::string("1 invalid normal was recomputed from "
+                                                      "the triangles")
+                                        : std::to_string(bad) + " invalid normals were "
+                                                                "recomputed from the triangles");
         }
     }
 

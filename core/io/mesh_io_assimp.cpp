@@ -809,7 +809,9 @@ bool AssimpFlattener::run(Mesh& out) {
                 stack.push_back(Item{item.node->mChildren[c], global});
     }
     if (m_skippedFaces > 0)
-        m_mesh.warnings.push_back(str(m_skippedFaces) + " point and line faces were skipped");
+        m_mesh.warnings.push_back(m_skippedFaces == 1
+                                      ? std::string("1 point or line face was skipped")
+                                      : str(m_skippedFaces) + " point and line faces were skipped");
     if (m_mesh.indices.empty())
         return fail("the file contains no triangles");
 
@@ -849,6 +851,48 @@ std::string oneLine(std::string s) {
     return s;
 }
 
+/** The format a file's extension (lower case, with the dot) stands for, with its article. */
+std::string formatName(const std::string& ext) {
+    if (ext == ".obj")
+        return "a Wavefront OBJ";
+    if (ext == ".ply")
+        return "a Stanford PLY";
+    if (ext == ".stl")
+        return "an STL";
+    if (ext == ".off")
+        return "an OFF";
+    std::string name = ext.empty() ? ext : ext.substr(1);
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return "a " + name;
+}
+
+/**
+ * What Assimp said about a file it could not read, in the user's words: its common messages
+ * mapped, anything else kept as detail without the file's path or bytes that cannot be shown.
+ */
+std::string readError(const fs::path& file, const std::string& ext, std::string assimp) {
+    const std::string format = formatName(ext);
+    const auto says = [&](const char* text) { return assimp.find(text) != std::string::npos; };
+    if (assimp.empty())
+        return "could not be read as " + format + " model";
+    if (says("No suitable reader found"))
+        return "is not in a 3D model format LayerPaint can read";
+    if (says("too small") || says("Unexpected end of file") || says("unexpected end"))
+        return "is too short to be " + format + " model; it may be cut off or another kind of file";
+    if (says("magic number") || says("Magic number") || says("storage representation") ||
+        says("not a valid") || says("no data loaded"))
+        return "is not " + format + " model; it may be damaged or another kind of file";
+    // Otherwise Assimp's own words as the detail, without the path (the message names it).
+    for (const std::string& path : {file.string(), file.filename().string()})
+        for (std::size_t p; !path.empty() && (p = assimp.find(path)) != std::string::npos;)
+            assimp.replace(p, path.size(), "the file");
+    for (char& c : assimp)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F)
+            c = '?';
+    return "could not be read as " + format + " model (" + assimp + ")";
+}
+
 Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLimits& limits) {
     const fs::path folder = file.parent_path();
     Assimp::Importer importer;
@@ -879,10 +923,8 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     const aiScene* raw = importer.ReadFile(file.string(), 0);
     if (handler->cancelled())
         return Error{"cancelled"};
-    if (raw == nullptr) {
-        const std::string why = oneLine(importer.GetErrorString());
-        return Error{why.empty() ? std::string("cannot be read by Assimp") : why};
-    }
+    if (raw == nullptr)
+        return Error{readError(file, ext, oneLine(importer.GetErrorString()))};
     // The importer owns the scene and post-processing changes it anyway.
     if (std::string problem = checkRawScene(*const_cast<aiScene*>(raw), limits); !problem.empty())
         return Error{problem};
@@ -890,10 +932,8 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
         importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (handler->cancelled())
         return Error{"cancelled"};
-    if (scene == nullptr) {
-        const std::string why = oneLine(importer.GetErrorString());
-        return Error{why.empty() ? std::string("cannot be processed by Assimp") : why};
-    }
+    if (scene == nullptr)
+        return Error{readError(file, ext, oneLine(importer.GetErrorString()))};
     Mesh mesh;
     AssimpFlattener flattener(*scene, folder, limits);
     if (!flattener.run(mesh))

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -1421,6 +1422,50 @@ std::string oneLine(const std::string& s) {
     return out;
 }
 
+bool isGlbName(const fs::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext == ".glb";
+}
+
+/** Whether text starts (after white space and a UTF-8 byte order mark) with "{". */
+bool startsLikeJsonObject(std::string_view text) {
+    if (text.substr(0, 3) == "\xEF\xBB\xBF")
+        text.remove_prefix(3);
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    return first != std::string_view::npos && text[first] == '{';
+}
+
+/**
+ * Where the glTF text breaks and how, in words: the line and column, and the parser's reason
+ * without the bytes it last read (they may be anything).
+ */
+std::string describeParseError(const Json::parse_error& e, std::string_view text) {
+    const std::size_t at = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < at; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else if ((static_cast<unsigned char>(text[i]) & 0xC0) != 0x80) {
+            ++column; // characters, not the bytes of one
+        }
+    }
+    std::string reason = e.what();
+    if (const std::size_t p = reason.find(" - "); p != std::string::npos)
+        reason = reason.substr(p + 3); // after "parse error at ...: syntax error while parsing X"
+    if (const std::size_t p = reason.find("; last read"); p != std::string::npos)
+        reason.resize(p);
+    for (char& c : reason)
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F)
+            c = '?';
+    if (at >= text.size())
+        return "the text ends too early (" + reason + ")";
+    return "the text is malformed at line " + str(line) + ", column " + str(column) + " (" +
+           reason + ")";
+}
+
 Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLimits& limits) {
     std::vector<std::uint8_t> bytes;
     {
@@ -1452,16 +1497,22 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     }
     const std::string_view jsonText(reinterpret_cast<const char*>(bytes.data()) + parts.jsonOffset,
                                     static_cast<std::size_t>(parts.jsonLength));
+    // Neither the binary header nor text that starts like glTF's: another kind of file.
+    if (!binary && !startsLikeJsonObject(jsonText))
+        return Error{isGlbName(file)
+                         ? "is not a glTF binary file (it does not start with the glTF header); "
+                           "it may be damaged or another kind of file"
+                         : "is not a glTF file (glTF text starts with “{”); it may be damaged or "
+                           "another kind of file"};
     if (jsonNestingTooDeep(jsonText))
-        return Error{"the JSON is nested too deeply"};
+        return Error{"the glTF text is nested too deeply"};
     Json json;
     try {
         json = Json::parse(jsonText.begin(), jsonText.end());
-    } catch (const Json::exception& e) {
-        std::string what = e.what();
-        if (const std::size_t p = what.find("] "); p != std::string::npos)
-            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
-        return Error{"is not valid glTF JSON (" + what + ")"};
+    } catch (const Json::parse_error& e) {
+        return Error{"is not a valid glTF file: " + describeParseError(e, jsonText)};
+    } catch (const Json::exception&) {
+        return Error{"is not a valid glTF file: its text cannot be read"};
     }
     if (std::string problem = SchemaCheck().run(json); !problem.empty())
         return Error{problem};

@@ -32,8 +32,12 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
     if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
         // The JSON alone first: a newer project is refused before its textures are decoded.
         Result<Json> extras = readGlbExtras(path);
-        if (!extras)
-            return Error{extras.error()};
+        if (!extras) {
+            // Not a glTF file at all: the model loader says what is wrong in plainer words.
+            if (Result<Mesh> mesh = loadMesh(path, progress, limits); !mesh)
+                return mesh.takeError();
+            return extras.takeError();
+        }
         const auto it = extras->find(kProjectExtrasKey);
         if (it != extras->end()) {
             if (!it->is_object())

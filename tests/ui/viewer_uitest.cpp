@@ -147,7 +147,7 @@ TEST_F(ViewerTest, RelativeCommandLinePathIsResolved) {
     EXPECT_EQ(m_window->currentSource(), QFileInfo(boxPath()).absoluteFilePath());
 }
 
-TEST_F(ViewerTest, LoadWarningsShowInTheStatusBar) {
+TEST_F(ViewerTest, LoadWarningsShowOverTheView) {
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("with line.obj"));
@@ -161,8 +161,11 @@ TEST_F(ViewerTest, LoadWarningsShowInTheStatusBar) {
     ASSERT_FALSE(viewport()->mesh()->warnings.empty());
     EXPECT_EQ(viewport()->mesh()->triangleCount(), 1u);
     const QString first = QString::fromStdString(viewport()->mesh()->warnings.front());
-    EXPECT_TRUE(m_window->statusBar()->currentMessage().contains(first))
-        << m_window->statusBar()->currentMessage().toStdString();
+    auto* bar = m_window->findChild<QLabel*>(QStringLiteral("messageBarText"));
+    ASSERT_NE(bar, nullptr);
+    EXPECT_TRUE(bar->isVisible());
+    EXPECT_TRUE(bar->text().contains(first)) << bar->text().toStdString();
+    EXPECT_FALSE(m_window->statusBar()->currentMessage().isEmpty()); // a hint to look there
     const auto* info = m_window->statusBar()->findChild<QLabel*>();
     ASSERT_NE(info, nullptr);
     EXPECT_TRUE(info->toolTip().contains(first));

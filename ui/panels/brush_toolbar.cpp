@@ -23,7 +23,8 @@ constexpr int kVertexColorsItem = -1; // the combo's data for vertex colours
 } // namespace
 
 BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
-    setWindowTitle(tr("Brush"));
+    // Named apart from the Brush panel (View ▸ Panels lists both).
+    setWindowTitle(tr("Brush Bar"));
     setObjectName(QStringLiteral("brushToolBar"));
 
     m_color = new QToolButton(this);
@@ -72,8 +73,9 @@ BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
     addWidget(targetLabel);
     m_target = new QComboBox(this);
     m_target->setObjectName(QStringLiteral("paintTarget"));
-    m_target->setToolTip(tr("Where paint goes: a texture (meshes with UVs) or vertex colours. "
-                            "Changing it starts the painting afresh."));
+    m_targetTip = tr("Where paint goes: a texture (meshes with UVs) or vertex colours. "
+                     "Changing it starts the painting afresh.");
+    m_target->setToolTip(m_targetTip);
     for (int resolution : kResolutions)
         m_target->addItem(tr("Texture %1 × %1").arg(resolution), resolution);
     m_target->addItem(tr("Vertex colours"), kVertexColorsItem);
@@ -108,12 +110,17 @@ void BrushToolBar::setBrush(const core::Brush& brush) {
 void BrushToolBar::setTarget(const core::PaintTargetOptions& options, bool meshHasUvs) {
     const QScopedValueRollback guard(m_updating, true);
     const bool texture = meshHasUvs && options.kind != core::PaintTargetKind::VertexColors;
+    const QString why = tr("This model has no texture coordinates (UVs), so there is no texture "
+                           "to paint into: it is painted with vertex colours.");
+    m_target->setToolTip(meshHasUvs ? m_targetTip : m_targetTip + QStringLiteral("\n\n") + why);
     int current = m_target->count() - 1;
     for (int i = 0; i + 1 < m_target->count(); ++i) {
         // Disabled items of a QComboBox stay visible but cannot be chosen.
         auto* model = qobject_cast<QStandardItemModel*>(m_target->model());
-        if (model)
+        if (model) {
             model->item(i)->setEnabled(meshHasUvs);
+            model->item(i)->setToolTip(meshHasUvs ? QString() : why);
+        }
         if (texture && m_target->itemData(i).toInt() == options.resolution)
             current = i;
     }

@@ -25,7 +25,10 @@ public:
 
     void setBrush(const core::Brush& brush);
     const core::Brush& brush() const { return m_brush; }
-    /** Shows the target options; texture entries are offered only when the mesh has UVs. */
+    /**
+     * Shows the target options; texture entries are offered only when the mesh has UVs (the
+     * tooltips say why they are not).
+     */
     void setTarget(const core::PaintTargetOptions& options, bool meshHasUvs);
 
     /** sRGB QColor ↔ the brush's linear colour. */
@@ -47,6 +50,7 @@ private:
     QSpinBox* m_hardness = nullptr;
     QSpinBox* m_opacity = nullptr;
     QComboBox* m_target = nullptr;
+    QString m_targetTip; // the target box's tooltip for meshes with UVs
     bool m_updating = false;
 };
 

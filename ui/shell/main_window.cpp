@@ -10,6 +10,7 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QElapsedTimer>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeySequence>
@@ -43,11 +44,14 @@
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/panels/segmentation_controls.h"
+#include "ui/shell/field_focus.h"
 #include "ui/shell/model_loader.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
+#include "ui/tools/tool_cursors.h"
 #include "ui/view/layer_builder.h"
+#include "ui/view/message_bar.h"
 #include "ui/view/viewport.h"
 
 namespace ui {
@@ -116,6 +120,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_viewport = new Viewport(*m_document, this);
     m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
+    m_messageBar = new MessageBar(*m_viewport);
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
 
@@ -145,6 +150,8 @@ MainWindow::MainWindow(QWidget* parent)
         connect(action, &QAction::toggled, m_project, &ProjectController::markModified);
     createToolActions();
     createMenus();
+    // Enter and Escape in a tool bar or panel field give the keys back to the view.
+    qApp->installEventFilter(new FieldFocus(*this, *m_viewport, this));
 
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
     connect(m_loader, &ModelLoader::failed, this, &MainWindow::onLoadFailed);
@@ -512,7 +519,9 @@ void MainWindow::createPaintActions() {
     m_brushBar->insertWidget(first, m_layerAwareCheck);
     m_brushBar->insertSeparator(first);
 
-    // Painters' keys for the brush. Shift+[ arrives as { on many layouts: both are bound.
+    // Painters' keys for the brush. One key each: a keyboard's Shift+[ matches both Shift+[ and
+    // { (the platform offers the shifted and the unshifted key), and an action bound to both
+    // would be an ambiguous shortcut that does nothing.
     struct StepInfo {
         QString name;
         QString text;
@@ -536,13 +545,13 @@ void MainWindow::createPaintActions() {
          1},
         {QStringLiteral("actionBrushSofter"),
          tr("Sof&ter Brush"),
-         {QKeySequence(Qt::SHIFT | Qt::Key_BracketLeft), QKeySequence(Qt::Key_BraceLeft)},
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketLeft)},
          tr("Lower the brush hardness"),
          false,
          -1},
         {QStringLiteral("actionBrushHarder"),
          tr("Har&der Brush"),
-         {QKeySequence(Qt::SHIFT | Qt::Key_BracketRight), QKeySequence(Qt::Key_BraceRight)},
+         {QKeySequence(Qt::SHIFT | Qt::Key_BracketRight)},
          tr("Raise the brush hardness"),
          false,
          1},
@@ -652,6 +661,7 @@ void MainWindow::createToolActions() {
         m_toolBar->addAction(action);
     }
     toolAction(Tool::Brush)->setChecked(true);
+    m_viewport->setToolCursor(toolCursor(m_tool), toolShowsBrushOutline(m_tool));
 }
 
 void MainWindow::setTool(Tool tool) {
@@ -672,6 +682,7 @@ void MainWindow::setTool(Tool tool) {
     }
     m_tool = tool;
     m_viewport->setHoverHighlight(tool == Tool::Hide || tool == Tool::PopUp);
+    m_viewport->setToolCursor(toolCursor(tool), toolShowsBrushOutline(tool));
     emit toolChanged(tool);
 }
 
@@ -1143,14 +1154,32 @@ void MainWindow::showError(const QString& title, const QString& text, const QStr
 void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
                           std::shared_ptr<const core::ProjectState> state) {
     stopProgress();
+    // Recovered work is shown under its own name: the project it belongs to, else the model it
+    // was painted from; the autosave's name is an internal one.
+    const bool recovered = state && m_project->isRecoveryFile(source);
     m_source = source;
-    updateModelInfo(*mesh);
+    QString recoveredNote;
+    if (recovered) {
+        const auto decode = [](const std::string& path) {
+            return QFile::decodeName(QByteArray::fromStdString(path));
+        };
+        if (!state->recoveryFor.empty())
+            m_source = decode(state->recoveryFor);
+        else if (!state->source.empty())
+            m_source = decode(state->source);
+        recoveredNote =
+            tr("Recovered the unsaved work on “%1” that was autosaved at %2. Save it "
+               "to keep it.")
+                .arg(displayName(m_source),
+                     QLocale().toString(QFileInfo(source).lastModified(), QLocale::ShortFormat));
+    }
+    updateModelInfo(*mesh, recoveredNote);
     finishStroke();
     // A new model starts with the preferred size for a new texture.
     m_paintOptions.resolution = m_preferences.textureSize;
     m_document->setPaintOptions(m_paintOptions);
     // This window is the loader's only listener: the mesh moves into the document.
-    m_document->setMesh(std::move(*mesh), source.toStdString());
+    m_document->setMesh(std::move(*mesh), m_source.toStdString());
     if (state) {
         applyProjectState(*state);
     } else {
@@ -1221,7 +1250,7 @@ void MainWindow::updateWindowTitle() {
     const QString name = m_project->documentName();
     // [*] shows the unsaved-changes mark where the platform puts it.
     setWindowTitle(name.isEmpty() ? tr("LayerPaint") : tr("%1[*] — LayerPaint").arg(name));
-    setWindowModified(m_project->isModified());
+    setWindowModified(!name.isEmpty() && m_project->isModified()); // no mark without a document
 }
 
 void MainWindow::createProjectActions(QMenu* fileMenu) {
@@ -1317,7 +1346,7 @@ void MainWindow::stopProgress() {
     m_progress = nullptr;
 }
 
-void MainWindow::updateModelInfo(const core::Mesh& mesh) {
+void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
     const QLocale locale;
     m_modelInfo->setText(tr("%1 — %2 vertices, %3 triangles")
                              .arg(displayName(m_source),
@@ -1327,12 +1356,29 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh) {
     for (const std::string& warning : mesh.warnings)
         warnings.append(QString::fromStdString(warning));
     m_modelInfo->setToolTip(warnings.join(QLatin1Char('\n')));
-    if (warnings.isEmpty())
+    const int warningCount = int(warnings.size());
+    QStringList notes;
+    if (!note.isEmpty())
+        notes.append(note);
+    // Without UVs there is no texture to paint into (BrushToolBar::setTarget says so too).
+    if (!mesh.hasUvs())
+        notes.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
+                        "colours: the paint's detail follows its vertices.")
+                         .arg(displayName(m_source)));
+    // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
+    if (warningCount > 0)
+        m_messageBar->showMessage(
+            MessageBar::Level::Warning,
+            tr("Opening “%1” gave these warnings:").arg(displayName(m_source)), warnings + notes);
+    else if (!notes.isEmpty())
+        m_messageBar->showMessage(MessageBar::Level::Information, notes.join(QLatin1Char('\n')));
+    else
+        m_messageBar->dismiss();
+    if (warningCount == 0)
         statusBar()->clearMessage();
     else
-        statusBar()->showMessage(
-            tr("%n warning(s) while loading: %1", nullptr, int(warnings.size()))
-                .arg(warnings.first()));
+        statusBar()->showMessage(tr("Warnings while loading are shown above the view"),
+                                 kStatusMessageMs);
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {

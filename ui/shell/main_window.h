@@ -41,6 +41,7 @@ class HistoryBridge;
 class ScriptActions;
 class LayerBuilder;
 class LayersPanel;
+class MessageBar;
 class ModelLoader;
 class ProjectController;
 class RegionGraphPanel;
@@ -233,11 +234,14 @@ private:
     void onLoadCancelled(const QString& source);
     void startProgress(const QString& source);
     void stopProgress();
-    void updateModelInfo(const core::Mesh& mesh);
+    /** The status bar's model line and the notes over the view (warnings, note, no UVs). */
+    void updateModelInfo(const core::Mesh& mesh, const QString& note = {});
 
     // ~MainWindow deletes the widgets that refer to it before it goes.
     std::unique_ptr<core::Document> m_document;
     Viewport* m_viewport = nullptr;
+    /** Notes about the open model over the top of the viewport (load warnings, ...). */
+    MessageBar* m_messageBar = nullptr;
     LayerBuilder* m_builder = nullptr;
     ModelLoader* m_loader = nullptr;
     SegmentationControls* m_segmentationControls = nullptr;

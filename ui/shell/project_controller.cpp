@@ -137,6 +137,20 @@ void ProjectController::documentLoadFailed(const QString& source) {
         m_recovering.clear(); // the file stays, as this session's autosave
 }
 
+bool ProjectController::samePath(const QString& a, const QString& b) {
+    const QFileInfo fa(a), fb(b);
+    if (fa.exists() && fb.exists())
+        return fa.canonicalFilePath() == fb.canonicalFilePath(); // links and ".." agree
+    return fa.absoluteFilePath() == fb.absoluteFilePath();
+}
+
+bool ProjectController::isOpenDocumentFile(const QString& path) const {
+    const QString source = m_window.currentSource();
+    return (!m_filePath.isEmpty() && samePath(path, m_filePath)) ||
+           (!source.isEmpty() && !source.startsWith(QLatin1String(core::kBuiltinPrefix)) &&
+            samePath(path, source));
+}
+
 bool ProjectController::isRecoveryFile(const QString& source) const {
     return QFileInfo(source).absolutePath() == QDir(recoveryFolder()).absolutePath();
 }
@@ -353,8 +367,11 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
                    m_filePath.isEmpty() ? QDir::homePath() : QFileInfo(m_filePath).absolutePath())
             .toString();
     const QString suffix = QString::fromLatin1(core::exportExtension(format));
-    const QString suggestion = QDir(folder).filePath(
+    QString suggestion = QDir(folder).filePath(
         (core::isTextureFormat(format) ? stem + QStringLiteral("-paint") : stem) + suffix);
+    // Never propose the open project (a .glb too) or the model it was painted from.
+    if (isOpenDocumentFile(suggestion))
+        suggestion = QDir(folder).filePath(stem + QStringLiteral("-export") + suffix);
     QString path = QFileDialog::getSaveFileName(
         &m_window, tr("Export"), suggestion, filter + QStringLiteral(";;") + tr("All files (*)"));
     if (path.isEmpty())
@@ -374,6 +391,19 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
     const core::Document& doc = m_window.document();
     if (doc.meshSerial() == 0 || doc.mesh().triangleCount() == 0)
         return false;
+    if (!m_filePath.isEmpty() && samePath(path, m_filePath)) {
+        // An export keeps no LayerPaint state: written over the project, it would lose it.
+        const QString name = QFileInfo(path).fileName();
+        const QString why =
+            tr("“%1” is the open project. Exporting there would replace it with a plain model "
+               "without its LayerPaint settings. Choose another name, or use File ▸ Save.")
+                .arg(name);
+        m_window.statusBar()->showMessage(tr("Not exported: “%1” is the open project").arg(name),
+                                          kStatusMs);
+        m_window.showError(tr("Export Refused"), tr("Could not export to “%1”.").arg(name), why);
+        emit exportFailed(why);
+        return false;
+    }
     auto snap = std::make_shared<Snapshot>();
     if (core::isTextureFormat(format)) {
         std::string error;

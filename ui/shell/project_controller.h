@@ -87,7 +87,8 @@ public:
     void showExportDialog(core::ExportFormat format);
     /**
      * Starts exporting the painted model (or its paint texture) to path; exported() or
-     * exportFailed() follow. False if it cannot start (busy, or no texture for a texture format).
+     * exportFailed() follow. False if it cannot start (busy, no texture for a texture format, or
+     * path is the open project, which an export would replace without its state).
      */
     bool exportTo(core::ExportFormat format, const QString& path);
     /** Whether the document has a paint texture (texture formats can be exported). */
@@ -125,6 +126,10 @@ private:
     /** The painted mesh and state now (GUI thread); null with why set if there is no model. */
     std::shared_ptr<Snapshot> snapshot(QString& why) const;
     QString askSavePath();
+    /** Whether two paths name the same file (through links, when both exist). */
+    static bool samePath(const QString& a, const QString& b);
+    /** Whether path is the open project's file or the model file it was opened from. */
+    bool isOpenDocumentFile(const QString& path) const;
     void startProgress(const QString& text);
     void stopProgress();
     void onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,

@@ -47,7 +47,6 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     // Hover moves draw the brush outline, a pen's too.
     setMouseTracking(true);
     setAttribute(Qt::WA_TabletTracking);
-    setCursor(Qt::CrossCursor);
     // Every pen sample is a point of the stroke: a 200 Hz tablet must lose none to merging.
     // (Off by default in Qt 6; made sure of, as the stroke depends on it.)
     QCoreApplication::setAttribute(Qt::AA_CompressTabletEvents, false);
@@ -150,6 +149,15 @@ void Viewport::setBrushRadius(float radius) {
     if (m_brushRadius == radius)
         return;
     m_brushRadius = radius;
+    if (m_cursorInside)
+        update();
+}
+
+void Viewport::setToolCursor(const QCursor& cursor, bool brushOutline) {
+    setCursor(cursor);
+    if (m_brushOutline == brushOutline)
+        return;
+    m_brushOutline = brushOutline;
     if (m_cursorInside)
         update();
 }
@@ -504,7 +512,7 @@ void Viewport::paintGL() {
     }
     if (m_brushMapsVisible && layers && isShowingLayers())
         overlay.maps = m_mapsRect;
-    if (m_cursorInside && !isNavigating()) {
+    if (brushOutlineVisible()) {
         overlay.center = {float(m_cursor.x()), float(m_cursor.y())};
         overlay.radius = m_brushRadius;
     }
@@ -633,7 +641,7 @@ bool Viewport::pointerMove(QPointF position, qreal pressure) {
     m_cursor = toDevicePixels(position);
     m_cursorInside = true;
     if (m_drag == Drag::None) {
-        if (m_brushRadius > 0.0f)
+        if (m_brushOutline && m_brushRadius > 0.0f)
             update(); // the outline follows
         updateHoverHighlight();
         return false;

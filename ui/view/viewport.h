@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include <QCursor>
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QSurfaceFormat>
@@ -144,9 +145,14 @@ public:
     /** The radius of the brush outline, in device pixels (0 hides it). */
     void setBrushRadius(float radius);
     float brushRadius() const { return m_brushRadius; }
+    /**
+     * The cursor of the chosen tool over the view, and whether the brush outline goes with it
+     * (only tools that use the brush radius show it).
+     */
+    void setToolCursor(const QCursor& cursor, bool brushOutline);
     /** Whether the brush outline is drawn now (pointer over the view, not navigating). */
     bool brushOutlineVisible() const {
-        return m_brushRadius > 0.0f && m_cursorInside && !isNavigating();
+        return m_brushOutline && m_brushRadius > 0.0f && m_cursorInside && !isNavigating();
     }
     /** Where the brush outline is, in device pixels. */
     QPointF cursorPosition() const { return m_cursor; }
@@ -266,7 +272,8 @@ private:
     render::PixelRect m_mapsRect;          // what the maps cover now
     render::PixelRect m_mapsUpload;        // what changed since the last upload
     float m_brushRadius = 0.0f;
-    QPointF m_cursor; // device pixels
+    bool m_brushOutline = true; // the tool uses the brush radius
+    QPointF m_cursor;           // device pixels
     bool m_cursorInside = false;
     bool m_hoverHighlight = false;
     bool m_orbitAboutSurface = true;

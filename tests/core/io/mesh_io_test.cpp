@@ -421,8 +421,18 @@ std::vector<BrokenCase> brokenCases() {
         std::memcpy(&bytes[binAt], &tooLong, 4);
         cases.push_back(written("bin-past-end.glb", bytes, "BIN chunk"));
     }
-    cases.push_back(written("not-json.gltf", "this is not JSON at all", "JSON"));
-    cases.push_back(written("deep.gltf", std::string(100000, '[') + std::string(100000, ']'),
+    cases.push_back(written("not-json.gltf", "this is not JSON at all", "is not a glTF file"));
+    cases.push_back(written("garbage.glb", std::string("\x9c\x01\xff\x00 data", 9),
+                            "is not a glTF binary file"));
+    cases.push_back(written("broken.gltf", "{\"asset\": {\"version\": \"2.0\"},\n \"meshes\": [ }",
+                            "malformed at line 2, column 14"));
+    // Other files under a model's name: what is wrong in words, never the reader's jargon.
+    cases.push_back(written("notes.obj", "just notes\n", "too short to be a Wavefront OBJ model"));
+    cases.push_back(written("noise.ply", std::string(300, '\xa7'), "is not a Stanford PLY model"));
+    cases.push_back(written("noise.stl", std::string(100, '\xa7'), "is not an STL model"));
+    cases.push_back(written("model.xyz", "hello\n", "not in a 3D model format"));
+    cases.push_back(written("deep.gltf",
+                            "{\"a\": " + std::string(100000, '[') + std::string(100000, ']') + "}",
                             "nested too deeply"));
     cases.push_back(gltf("version1", {{"@VERSION@", "1.0"}}, "version"));
     cases.push_back({"dotdot-buffer.gltf",
@@ -575,6 +585,25 @@ std::vector<BrokenCase> brokenCases() {
     return cases;
 }
 
+/** Whether text is valid UTF-8 without control characters: fit to show to a user. */
+bool showable(const std::string& text) {
+    for (std::size_t i = 0; i < text.size();) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const int follow = c < 0x80             ? 0
+                           : (c & 0xE0) == 0xC0 ? 1
+                           : (c & 0xF0) == 0xE0 ? 2
+                           : (c & 0xF8) == 0xF0 ? 3
+                                                : -1;
+        if (follow < 0 || c < 0x20 || c == 0x7F || i + follow >= text.size() + (follow ? 0 : 1))
+            return false;
+        for (int k = 1; k <= follow; ++k)
+            if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80)
+                return false;
+        i += std::size_t(follow) + 1;
+    }
+    return true;
+}
+
 class BrokenFile : public ::testing::TestWithParam<BrokenCase> {};
 
 TEST_P(BrokenFile, IsRefusedWithAOneLineMessageNamingIt) {
@@ -586,6 +615,7 @@ TEST_P(BrokenFile, IsRefusedWithAOneLineMessageNamingIt) {
     EXPECT_NE(mesh.error().find(file.filename().string()), std::string::npos) << mesh.error();
     EXPECT_EQ(mesh.error().rfind(file.string() + ": ", 0), 0u) << mesh.error();
     EXPECT_EQ(mesh.error().find('\n'), std::string::npos) << mesh.error();
+    EXPECT_TRUE(showable(mesh.error())) << "raw bytes in: " << mesh.error();
     if (!GetParam().expect.empty()) {
         EXPECT_NE(mesh.error().find(GetParam().expect), std::string::npos) << mesh.error();
     }

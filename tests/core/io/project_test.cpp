@@ -491,12 +491,12 @@ TEST(Project, CorruptedProjectsAreRefusedWithClearMessages) {
         std::string b = bytes;
         b[20 + jsonLength / 2] = '{';
         b[20 + jsonLength / 3] = '"';
-        cases.push_back({"bad JSON", b, "JSON"});
+        cases.push_back({"bad JSON", b, "malformed at line 1"});
         b = bytes;
         const std::size_t extrasAt = jsonText.find("\"layerpaint\"");
         ASSERT_NE(extrasAt, std::string::npos);
         b[20 + extrasAt] = '!';
-        cases.push_back({"broken extras", b, "JSON"});
+        cases.push_back({"broken extras", b, "malformed at line 1"});
     }
     // Huge declared sizes (the JSON is rewritten and the container rebuilt around it).
     const auto rebuild = [&](const Json& json) {

@@ -1,0 +1,593 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A new artist's first session through real Qt event delivery: keys as an X keyboard sends them
+// (QWindowSystemInterface with native scan codes), typing into the tool bar and panel fields,
+// the file dialogs of Export and Save As, recovery after a crash, load warnings and errors,
+// models without UVs, the Panels menu and the cursor of every tool. Needs a display with OpenGL
+// 4.5 (xvfb-run; llvmpipe is enough).
+#include <gtest/gtest.h>
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QDockWidget>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QStandardItemModel>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include <QToolButton>
+#include <QUndoStack>
+#include <qpa/qwindowsysteminterface.h>
+
+#include <functional>
+#include <memory>
+#include <ostream>
+#include <random>
+#include <set>
+
+#include "core/io/mesh_io.h"
+#include "core/io/project_file.h"
+#include "tests/ui/ui_test_util.h"
+#include "ui/panels/brush_toolbar.h"
+#include "ui/panels/color_panel.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/project_controller.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
+
+// Readable failures: gtest prints a QString as its text.
+[[maybe_unused]] static void PrintTo(const QString& text, std::ostream* out) {
+    *out << '"' << text.toStdString() << '"';
+}
+
+namespace {
+
+using namespace ui_test;
+
+[[maybe_unused]] constexpr int kSaveTimeoutMs = 60000;
+
+// X11 keycodes (evdev and the older xfree86 set agree on these) and keysyms of a US keyboard.
+constexpr quint32 kScanBracketLeft = 34;
+constexpr quint32 kScanBracketRight = 35;
+constexpr quint32 kShiftMask = 1;
+
+[[maybe_unused]] std::string local(const QString& path) {
+    return QFile::encodeName(path).toStdString();
+}
+
+[[maybe_unused]] QByteArray readAll(const QString& path) {
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+[[maybe_unused]] bool writeFile(const QString& path, const QByteArray& bytes) {
+    QFile file(path);
+    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
+}
+
+/** Runs act on the next modal widget of type T as soon as it shows (it runs its own loop). */
+template <typename T>
+void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {}) {
+    auto* timer = new QTimer(qApp);
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, act, accept] {
+        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
+        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
+            !widget->windowHandle()->isExposed() || (accept && !accept(widget)))
+            return;
+        timer->stop();
+        timer->deleteLater();
+        act(widget);
+    });
+    timer->start();
+}
+
+[[maybe_unused]] void clickButton(QMessageBox* box, QMessageBox::StandardButton which) {
+    QTest::mouseClick(box->button(which), Qt::LeftButton);
+}
+
+/** Whether text is fit to show: no control characters, no replacement characters. */
+[[maybe_unused]] bool printable(const QString& text) {
+    for (const QChar c : text)
+        if (c == QChar::ReplacementCharacter || (!c.isPrint() && c != QLatin1Char(' ')))
+            return false;
+    return true;
+}
+
+class FirstSessionTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
+        ASSERT_TRUE(m_dir.isValid());
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(1180, 760);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+    }
+
+    void TearDown() override {
+        m_window.reset();
+        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
+        QSettings().clear();
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    core::Document& document() const { return m_window->document(); }
+    QString path(const QString& name) const { return m_dir.filePath(name); }
+    QAction* action(const char* name) const {
+        return m_window->findChild<QAction*>(QString::fromLatin1(name));
+    }
+    /** The bar over the viewport that keeps notes about the open model. */
+    QWidget* messageBar() const {
+        return m_window->findChild<QWidget*>(QStringLiteral("messageBar"));
+    }
+    QString messageBarText() const {
+        QWidget* bar = messageBar();
+        auto* label = bar ? bar->findChild<QLabel*>(QStringLiteral("messageBarText")) : nullptr;
+        return label ? label->text() : QString();
+    }
+    QString modelInfo() const {
+        const auto* info = m_window->statusBar()->findChild<QLabel*>();
+        return info ? info->text() : QString();
+    }
+
+    bool open(const QString& source, QString* error = nullptr) {
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy failed(m_window.get(), &ui::MainWindow::loadFailed);
+        m_window->openFile(source);
+        if (!QTest::qWaitFor([&] { return !loaded.isEmpty() || !failed.isEmpty(); },
+                             kLoadTimeoutMs))
+            return false;
+        if (error && !failed.isEmpty())
+            *error = failed.first().first().toString();
+        return !loaded.isEmpty();
+    }
+
+    void openAndBuild(const QString& source) {
+        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        ASSERT_TRUE(open(source));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+    }
+
+    /** A pixel of the view in the middle of the model's surface (logical = device here). */
+    QPoint onModel() const {
+        const core::LayerStack& stack = document().layers()->stack;
+        const auto covered = [&](int x, int y) {
+            for (int dy = -3; dy <= 3; ++dy)
+                for (int dx = -3; dx <= 3; ++dx) {
+                    const int px = x + dx, py = y + dy;
+                    if (px < 0 || py < 0 || px >= stack.width || py >= stack.height ||
+                        stack.layerCount(std::size_t(py) * stack.width + px) == 0)
+                        return false;
+                }
+            return true;
+        };
+        for (int r = 0; r < stack.width / 2; r += 2)
+            for (const QPoint p : {QPoint(r, 0), QPoint(-r, 0), QPoint(0, r), QPoint(0, -r)}) {
+                const QPoint at = QPoint(stack.width / 2, stack.height / 2) + p;
+                if (covered(at.x(), at.y()))
+                    return at;
+            }
+        return {};
+    }
+
+    bool saveTo(const QString& file) {
+        QSignalSpy saved(m_window->projectController(), &ui::ProjectController::saved);
+        QSignalSpy failed(m_window->projectController(), &ui::ProjectController::saveFailed);
+        if (!m_window->projectController()->saveTo(file))
+            return false;
+        EXPECT_TRUE(
+            QTest::qWaitFor([&] { return !saved.isEmpty() || !failed.isEmpty(); }, kSaveTimeoutMs));
+        return !saved.isEmpty();
+    }
+
+    /**
+     * A key pressed and released on the keyboard, delivered as the X11 platform plugin delivers
+     * it: to the focus widget, shortcuts matched through the keyboard map when scan is given.
+     */
+    void key(int qtKey, Qt::KeyboardModifiers modifiers = Qt::NoModifier,
+             const QString& text = QString(), quint32 scan = 0, quint32 keysym = 0,
+             quint32 nativeModifiers = 0) {
+        QWindow* window = QApplication::focusWindow();
+        ASSERT_NE(window, nullptr);
+        for (const QEvent::Type type : {QEvent::KeyPress, QEvent::KeyRelease})
+            QWindowSystemInterface::handleExtendedKeyEvent(window, type, qtKey, modifiers, scan,
+                                                           keysym, nativeModifiers, text);
+        QWindowSystemInterface::flushWindowSystemEvents();
+    }
+    /** A letter key as typed: E gives Qt::Key_E and the text "e". */
+    void letter(char c) {
+        key(Qt::Key_A + (QChar::fromLatin1(c).toLower().toLatin1() - 'a'), Qt::NoModifier,
+            QString(QChar::fromLatin1(c).toLower()));
+    }
+    void type(const QString& text) {
+        for (const QChar c : text) {
+            const char l = c.toLatin1();
+            int code = c.toUpper().unicode();
+            if (l == '#')
+                code = Qt::Key_NumberSign;
+            key(code, Qt::NoModifier, QString(c));
+        }
+    }
+    void selectAllText() { key(Qt::Key_A, Qt::ControlModifier, QStringLiteral("\x01")); }
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+// Item 1: Export proposes another name and never replaces the open project.
+TEST_F(FirstSessionTest, ExportNeverReplacesTheOpenProject) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    const QString project = path(QStringLiteral("p.glb"));
+    ASSERT_TRUE(saveTo(project));
+    const QByteArray saved = readAll(project);
+    ASSERT_FALSE(saved.isEmpty());
+    ui::ProjectController* controller = m_window->projectController();
+    QSignalSpy exported(controller, &ui::ProjectController::exported);
+    QSignalSpy failed(controller, &ui::ProjectController::exportFailed);
+
+    // File ▸ Export ▸ glTF Binary: the dialog proposes a name of its own. The artist types the
+    // project's name over it anyway and confirms that the file may be replaced.
+    QString proposed;
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        proposed = dialog->selectedFiles().value(0);
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        name->selectAll();
+        QTest::keyClicks(name, QStringLiteral("p.glb"));
+        onNextModal<QMessageBox>([](QMessageBox* box) { clickButton(box, QMessageBox::Yes); });
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    action("actionExportGlb")->trigger();
+    EXPECT_EQ(QFileInfo(proposed).fileName(), QStringLiteral("p-export.glb"));
+    EXPECT_EQ(QFileInfo(proposed).absolutePath(), QFileInfo(project).absolutePath());
+    QTest::qWait(0);
+    controller->waitForTasks();
+    QApplication::processEvents();
+    EXPECT_TRUE(exported.isEmpty()) << "the open project was replaced by an export";
+    ASSERT_EQ(failed.size(), 1);
+    EXPECT_TRUE(failed.first().first().toString().contains(QStringLiteral("p.glb")))
+        << failed.first().first().toString().toStdString();
+    EXPECT_EQ(readAll(project), saved);
+    core::Result<core::Project> reopened = core::loadProject(local(project));
+    ASSERT_TRUE(reopened.ok());
+    EXPECT_TRUE(reopened->state.has_value()) << "the project lost its LayerPaint state";
+
+    // Accepting the proposal exports beside the project, which stays as it was.
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        if (name->text() != QStringLiteral("p-export.glb")) {
+            dialog->reject(); // never answer an overwrite question here
+            return;
+        }
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    action("actionExportGlb")->trigger();
+    EXPECT_TRUE(QTest::qWaitFor([&] { return !exported.isEmpty(); }, kSaveTimeoutMs));
+    EXPECT_TRUE(QFileInfo::exists(path(QStringLiteral("p-export.glb"))));
+    EXPECT_EQ(readAll(project), saved);
+    EXPECT_EQ(controller->filePath(), QFileInfo(project).absoluteFilePath());
+}
+
+// Item 2: Shift+[ and Shift+] as an X keyboard sends them (keys { and } with Shift).
+TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
+    viewport()->setFocus();
+    ASSERT_FLOAT_EQ(document().brush().hardness, 0.5f);
+    key(Qt::Key_BraceRight, Qt::ShiftModifier, QStringLiteral("}"), kScanBracketRight, 0x7d,
+        kShiftMask);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.6f);
+    key(Qt::Key_BraceLeft, Qt::ShiftModifier, QStringLiteral("{"), kScanBracketLeft, 0x7b,
+        kShiftMask);
+    key(Qt::Key_BraceLeft, Qt::ShiftModifier, QStringLiteral("{"), kScanBracketLeft, 0x7b,
+        kShiftMask);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+    // The same keys without Shift still size the brush.
+    const float radius = document().brush().radius;
+    key(Qt::Key_BracketRight, Qt::NoModifier, QStringLiteral("]"), kScanBracketRight, 0x5d, 0);
+    EXPECT_GT(document().brush().radius, radius);
+    EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
+}
+
+// Item 3: after Enter or Escape in a tool bar or panel field, the tool keys work again.
+TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    auto* opacity = m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushOpacity"));
+    auto* radius = m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushRadius"));
+    auto* hex = m_window->colorPanel()->findChild<QLineEdit*>(QStringLiteral("colorHex"));
+    ASSERT_TRUE(opacity && radius && hex);
+    ASSERT_NE(opacity->value(), 40);
+
+    // Opacity 40, Enter, then E: the eraser.
+    QTest::mouseClick(opacity->findChild<QLineEdit*>(), Qt::LeftButton);
+    ASSERT_TRUE(opacity->hasFocus());
+    selectAllText();
+    type(QStringLiteral("40"));
+    key(Qt::Key_Return, Qt::NoModifier, QStringLiteral("\r"));
+    EXPECT_EQ(opacity->value(), 40);
+    EXPECT_FLOAT_EQ(document().brush().opacity, 0.4f);
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('e');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eraser);
+
+    // A hex colour, Enter, then G and a click: a fill in that colour.
+    QTest::mouseClick(hex, Qt::LeftButton);
+    ASSERT_TRUE(hex->hasFocus());
+    selectAllText();
+    type(QStringLiteral("#20a040"));
+    key(Qt::Key_Enter, Qt::KeypadModifier, QStringLiteral("\r"));
+    EXPECT_EQ(m_window->colorPanel()->foreground(), QColor(0x20, 0xa0, 0x40));
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('g');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Fill);
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, onModel());
+    ASSERT_EQ(m_window->undoStack()->count(), 1);
+    EXPECT_EQ(m_window->undoStack()->text(0), QStringLiteral("Fill"));
+
+    // Escape leaves a field without taking what was typed.
+    QTest::mouseClick(radius->findChild<QLineEdit*>(), Qt::LeftButton);
+    ASSERT_TRUE(radius->hasFocus());
+    selectAllText();
+    type(QStringLiteral("77"));
+    key(Qt::Key_Escape, Qt::NoModifier, QStringLiteral("\x1b"));
+    EXPECT_EQ(radius->value(), 32);
+    EXPECT_EQ(radius->cleanText(), QStringLiteral("32"));
+    EXPECT_FLOAT_EQ(document().brush().radius, 32.0f);
+    EXPECT_TRUE(viewport()->hasFocus());
+    letter('b');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Brush);
+
+    // Escape in the hex field: the colour in use stays.
+    QTest::mouseClick(hex, Qt::LeftButton);
+    selectAllText();
+    type(QStringLiteral("#ffffff"));
+    key(Qt::Key_Escape, Qt::NoModifier, QStringLiteral("\x1b"));
+    EXPECT_EQ(m_window->colorPanel()->foreground(), QColor(0x20, 0xa0, 0x40));
+    EXPECT_EQ(hex->text().toLower(), QStringLiteral("#20a040"));
+    EXPECT_TRUE(viewport()->hasFocus());
+
+    // A click on a number field's arrow edits nothing as text: letters stay tool keys.
+    QTest::mouseClick(radius, Qt::LeftButton, Qt::NoModifier, QPoint(radius->width() - 6, 4));
+    ASSERT_TRUE(radius->hasFocus());
+    EXPECT_EQ(radius->value(), 33);
+    letter('i');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
+}
+
+// Item 5: a recovered document keeps its own name and says it was recovered.
+TEST_F(FirstSessionTest, RecoveredWorkKeepsItsNameAndSaysSo) {
+    const QString folder = ui::ProjectController::recoveryFolder();
+    ASSERT_TRUE(QDir().mkpath(folder));
+    const QString orphan = QDir(folder).filePath(QStringLiteral("autosave-999999-crashed.glb"));
+    core::Result<core::Mesh> mesh = core::loadMesh("builtin:row");
+    ASSERT_TRUE(mesh.ok());
+    core::ProjectState state;
+    state.source = "builtin:row";
+    ASSERT_TRUE(core::saveProject(local(orphan), *mesh, state, {}, false).ok());
+    QSettings().setValue(QStringLiteral("project/directory"), m_dir.path());
+
+    m_window->setErrorDialogsEnabled(true);
+    QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+    onNextModal<QMessageBox>(
+        [](QMessageBox* box) {
+            QTest::mouseClick(box->findChild<QAbstractButton*>(QStringLiteral("recoverButton")),
+                              Qt::LeftButton);
+        },
+        [](QMessageBox* box) { return box->objectName() == QStringLiteral("recoveryBox"); });
+    ASSERT_TRUE(m_window->projectController()->offerRecovery());
+    ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+    m_window->setErrorDialogsEnabled(false);
+    m_window->activateWindow(); // the question box had the keyboard
+    ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+
+    EXPECT_EQ(m_window->currentSource(), QStringLiteral("builtin:row"));
+    EXPECT_TRUE(modelInfo().startsWith(QStringLiteral("Row of four"))) << modelInfo().toStdString();
+    EXPECT_FALSE(shownTitle(*m_window).contains(QStringLiteral("autosave")));
+    ASSERT_NE(messageBar(), nullptr);
+    EXPECT_TRUE(messageBar()->isVisible());
+    EXPECT_TRUE(messageBarText().contains(QStringLiteral("ecovered")))
+        << messageBarText().toStdString();
+
+    // Ctrl+S proposes the model's own name; the artist saves there.
+    QString proposed;
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        proposed = dialog->selectedFiles().value(0);
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        ASSERT_NE(name, nullptr);
+        if (name->text() != QStringLiteral("row.glb")) {
+            dialog->reject();
+            return;
+        }
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    QSignalSpy saved(m_window->projectController(), &ui::ProjectController::saved);
+    key(Qt::Key_S, Qt::ControlModifier, QStringLiteral("\x13"));
+    EXPECT_EQ(QFileInfo(proposed).fileName(), QStringLiteral("row.glb"));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !saved.isEmpty(); }, kSaveTimeoutMs));
+    EXPECT_EQ(m_window->projectController()->filePath(), path(QStringLiteral("row.glb")));
+    EXPECT_EQ(shownTitle(*m_window), QStringLiteral("row.glb — LayerPaint"));
+    EXPECT_FALSE(modelInfo().contains(QStringLiteral("autosave"))) << modelInfo().toStdString();
+}
+
+// Item 6: load warnings are shown whole, over the viewport, until dismissed.
+TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
+    const QString file = path(QStringLiteral("warnings.obj"));
+    ASSERT_TRUE(writeFile(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1e39 0 0\nvn 0 0 1\n"
+                                "f 1//1 2//2 3//2\nl 1 3\n"));
+    ASSERT_TRUE(open(file));
+    const std::vector<std::string>& warnings = viewport()->mesh()->warnings;
+    ASSERT_EQ(warnings.size(), 2u);
+    QWidget* bar = messageBar();
+    ASSERT_NE(bar, nullptr);
+    EXPECT_TRUE(bar->isVisible());
+    EXPECT_TRUE(viewport()->isAncestorOf(bar)) << "the bar is over the viewport";
+    for (const std::string& warning : warnings)
+        EXPECT_TRUE(messageBarText().contains(QString::fromStdString(warning)))
+            << warning << " in " << messageBarText().toStdString();
+    // Later messages (a mode change here) do not take its place.
+    letter('l');
+    EXPECT_TRUE(bar->isVisible());
+    EXPECT_TRUE(messageBarText().contains(QString::fromStdString(warnings.front())));
+    // The artist dismisses it.
+    auto* close = bar->findChild<QAbstractButton*>(QStringLiteral("messageBarClose"));
+    ASSERT_NE(close, nullptr);
+    QTest::mouseClick(close, Qt::LeftButton);
+    EXPECT_FALSE(bar->isVisible());
+    // It comes back with the next model that has something to say, not with one that has not.
+    ASSERT_TRUE(open(file));
+    EXPECT_TRUE(messageBar()->isVisible());
+    ASSERT_TRUE(open(QStringLiteral("builtin:trefoil")));
+    EXPECT_FALSE(messageBar()->isVisible());
+}
+
+// Item 7: errors name the file and say what is wrong in the user's words, no raw bytes.
+TEST_F(FirstSessionTest, OpenErrorsAreInTheUsersWords) {
+    std::mt19937 random(15);
+    QByteArray noise(4096, '\0');
+    for (char& c : noise)
+        c = char(random() & 0xff);
+    noise[0] = char(0x9c); // never "glTF" or "{"
+    struct Case {
+        QString name;
+        QByteArray bytes;
+        const char* forbidden;
+    };
+    const Case cases[] = {
+        {QStringLiteral("random.glb"), noise, "JSON"},
+        {QStringLiteral("notes.glb"), "hello, these are notes\n", "JSON"},
+        {QStringLiteral("notes.obj"), "just notes\n", "OBJ-file"},
+        {QStringLiteral("random.stl"), noise.left(100), "representation"},
+        {QStringLiteral("random.ply"), noise, "magic number"},
+    };
+    m_window->setErrorDialogsEnabled(true);
+    for (const Case& c : cases) {
+        const QString file = path(c.name);
+        ASSERT_TRUE(writeFile(file, c.bytes));
+        QString message;
+        QString shown;
+        onNextModal<QMessageBox>([&](QMessageBox* box) {
+            shown = box->text() + QLatin1Char('\n') + box->informativeText();
+            clickButton(box, QMessageBox::Ok);
+        });
+        EXPECT_FALSE(open(file, &message)) << c.name.toStdString();
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !shown.isEmpty(); }, 10000));
+        EXPECT_TRUE(shown.contains(c.name)) << shown.toStdString();
+        EXPECT_FALSE(shown.contains(QLatin1String(c.forbidden), Qt::CaseInsensitive))
+            << shown.toStdString();
+        EXPECT_TRUE(printable(message)) << message.toStdString();
+        EXPECT_TRUE(message.contains(c.name)) << message.toStdString();
+    }
+}
+
+// Item 8: a model without UVs says so, and the Paint into box says why textures are off.
+TEST_F(FirstSessionTest, ModelWithoutUvsSaysWhyItPaintsVertexColours) {
+    const QString file = path(QStringLiteral("tetra.obj"));
+    ASSERT_TRUE(writeFile(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
+                                "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"));
+    ASSERT_TRUE(open(file));
+    ASSERT_FALSE(document().mesh().hasUvs());
+    ASSERT_NE(messageBar(), nullptr);
+    EXPECT_TRUE(messageBar()->isVisible());
+    EXPECT_TRUE(messageBarText().contains(QStringLiteral("texture coordinates")))
+        << messageBarText().toStdString();
+    EXPECT_TRUE(messageBarText().contains(QStringLiteral("vertex colours")));
+    auto* target = m_window->brushToolBar()->findChild<QComboBox*>(QStringLiteral("paintTarget"));
+    ASSERT_NE(target, nullptr);
+    EXPECT_EQ(target->currentText(), QStringLiteral("Vertex colours"));
+    EXPECT_TRUE(target->toolTip().contains(QStringLiteral("no texture coordinates")))
+        << target->toolTip().toStdString();
+    auto* model = qobject_cast<QStandardItemModel*>(target->model());
+    ASSERT_NE(model, nullptr);
+    for (int i = 0; i + 1 < target->count(); ++i) {
+        EXPECT_FALSE(model->item(i)->isEnabled());
+        EXPECT_TRUE(model->item(i)->toolTip().contains(QStringLiteral("texture coordinates")));
+    }
+    // A model with UVs: textures again, and no such note.
+    ASSERT_TRUE(open(QStringLiteral("builtin:trefoil")));
+    EXPECT_FALSE(target->toolTip().contains(QStringLiteral("no texture coordinates")));
+    EXPECT_TRUE(model->item(0)->isEnabled());
+    EXPECT_TRUE(model->item(0)->toolTip().isEmpty());
+    EXPECT_FALSE(messageBar()->isVisible());
+}
+
+// Item 11: View ▸ Panels names every panel and tool bar apart.
+TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
+    auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
+    ASSERT_NE(panels, nullptr);
+    std::set<QString> names;
+    int entries = 0;
+    for (const QAction* entry : panels->actions()) {
+        if (entry->isSeparator())
+            continue;
+        ++entries;
+        names.insert(entry->text().remove(QLatin1Char('&')));
+    }
+    EXPECT_EQ(int(names.size()), entries) << "two entries of View ▸ Panels share a name";
+    EXPECT_EQ(m_window->findChild<QDockWidget*>(QStringLiteral("brushDock"))->windowTitle(),
+              QStringLiteral("Brush"));
+}
+
+// Item 12: every tool shows its own cursor; the brush outline only where it means something.
+TEST_F(FirstSessionTest, EveryToolShowsItsOwnCursor) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    viewport()->setFocus();
+    struct Seen {
+        Qt::CursorShape shape;
+        QImage image;
+        bool outline;
+    };
+    const auto choose = [&](char c) {
+        letter(c);
+        QTest::mouseMove(viewport(), viewport()->rect().center() + QPoint(3, 1));
+        QTest::mouseMove(viewport(), viewport()->rect().center());
+        const QCursor cursor = viewport()->cursor();
+        return Seen{cursor.shape(),
+                    cursor.shape() == Qt::BitmapCursor ? cursor.pixmap().toImage() : QImage(),
+                    viewport()->brushOutlineVisible()};
+    };
+    const Seen brush = choose('b');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Brush);
+    EXPECT_TRUE(brush.outline);
+    const Seen eraser = choose('e');
+    EXPECT_TRUE(eraser.outline);
+    const Seen fill = choose('g');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Fill);
+    EXPECT_FALSE(fill.outline);
+    EXPECT_EQ(fill.shape, Qt::BitmapCursor);
+    EXPECT_FALSE(fill.image.isNull());
+    const Seen picker = choose('i');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
+    EXPECT_FALSE(picker.outline);
+    EXPECT_EQ(picker.shape, Qt::CrossCursor);
+    const Seen popUp = choose('p');
+    EXPECT_EQ(m_window->tool(), ui::Tool::PopUp);
+    EXPECT_FALSE(popUp.outline);
+    EXPECT_EQ(popUp.shape, Qt::PointingHandCursor);
+    const Seen hide = choose('h');
+    EXPECT_EQ(m_window->tool(), ui::Tool::Hide);
+    EXPECT_TRUE(hide.outline) << "paint to hide uses the brush radius";
+    // The painting tools' cursor is not the fill bucket, nor the eyedropper's crosshair.
+    EXPECT_NE(brush.shape, Qt::CrossCursor);
+    EXPECT_TRUE(brush.shape != fill.shape || brush.image != fill.image);
+    // Back to the brush: its outline again.
+    EXPECT_TRUE(choose('b').outline);
+}
+
+} // namespace
