@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -22,7 +23,12 @@ void Document::setMesh(Mesh mesh, std::string name) {
     clearLayers();
     m_paintTarget.reset();
     m_history.clear();
-    m_camera.frame(m_mesh->bounds());
+    m_camera.frame(m_mesh->bounds(), m_viewAspect, kFrameMargin);
+}
+
+void Document::setViewAspect(float aspect) {
+    if (aspect > 0.0f && std::isfinite(aspect))
+        m_viewAspect = aspect;
 }
 
 void Document::clearLayers() {

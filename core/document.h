@@ -33,8 +33,14 @@ public:
     Document(const Document&) = delete;
     Document& operator=(const Document&) = delete;
 
-    /** Replaces the model (its topology is computed here); drops the layers, frames the camera. */
+    /**
+     * Replaces the model (its topology is computed here); drops the layers and frames the camera
+     * (kFrameMargin, for the view aspect of setViewAspect()).
+     */
     void setMesh(Mesh mesh, std::string name);
+    /** Width / height of the view the camera is framed for (1 until set); ignored unless > 0. */
+    void setViewAspect(float aspect);
+    float viewAspect() const { return m_viewAspect; }
     const Mesh& mesh() const { return *m_mesh; }
     std::shared_ptr<const Mesh> sharedMesh() const { return m_mesh; }
     const MeshTopology& topology() const { return *m_topology; }
@@ -203,6 +209,7 @@ private:
     std::string m_name;
     std::uint64_t m_meshSerial = 0;
     Camera m_camera;
+    float m_viewAspect = 1.0f;
     LayerOptions m_layerOptions;
     ConnectivityEngine* m_engine = nullptr;
     std::unique_ptr<Layers> m_layers;

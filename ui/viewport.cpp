@@ -7,6 +7,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPointingDevice>
+#include <QResizeEvent>
 #include <QTabletEvent>
 #include <QWheelEvent>
 
@@ -75,6 +76,8 @@ QSurfaceFormat Viewport::requiredFormat() {
 
 void Viewport::meshChanged() {
     m_meshDirty = true; // uploaded where the context is current
+    // A new model starts in its default view (or a project's): the toggle follows.
+    emit orthographicChanged(camera().orthographic);
     cameraMoved();
 }
 
@@ -102,7 +105,8 @@ bool Viewport::isOrthographic() const {
 void Viewport::frameAll() {
     if (!mesh())
         return;
-    m_document.camera().frame(m_document.mesh().bounds());
+    m_document.camera().frame(m_document.mesh().bounds(), m_document.viewAspect(),
+                              core::kFrameMargin);
     cameraMoved();
 }
 
@@ -432,6 +436,13 @@ void Viewport::initializeGL() {
 
 void Viewport::resizeGL(int, int) {
     invalidateView();
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
+    // The next model, and Frame All, are framed for this shape.
+    if (width() > 0 && height() > 0)
+        m_document.setViewAspect(float(width()) / float(height()));
+    QOpenGLWidget::resizeEvent(event);
 }
 
 void Viewport::uploadMeshIfDirty() {
