@@ -23,6 +23,11 @@ void Document::setMesh(Mesh mesh, std::string name) {
     clearLayers();
     m_paintTarget.reset();
     m_history.clear();
+    resetCamera();
+}
+
+void Document::resetCamera() {
+    m_camera = Camera{};
     m_camera.frame(m_mesh->bounds(), m_viewAspect, kFrameMargin);
 }
 

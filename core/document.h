@@ -34,10 +34,15 @@ public:
     Document& operator=(const Document&) = delete;
 
     /**
-     * Replaces the model (its topology is computed here); drops the layers and frames the camera
-     * (kFrameMargin, for the view aspect of setViewAspect()).
+     * Replaces the model (its topology is computed here); drops the layers and puts the camera in
+     * the model's default view (resetCamera()).
      */
     void setMesh(Mesh mesh, std::string name);
+    /**
+     * The default view of the model: perspective, looking along -Z with Y up, its bounding
+     * sphere framed with kFrameMargin for the view aspect (setViewAspect()).
+     */
+    void resetCamera();
     /** Width / height of the view the camera is framed for (1 until set); ignored unless > 0. */
     void setViewAspect(float aspect);
     float viewAspect() const { return m_viewAspect; }

@@ -37,6 +37,8 @@
 #include "ui/brush_panel.h"
 #include "ui/brush_toolbar.h"
 #include "ui/color_panel.h"
+#include "ui/dock_size_keeper.h"
+#include "ui/elided_label.h"
 #include "ui/fill_panel.h"
 #include "ui/hidden_regions_panel.h"
 #include "ui/layer_builder.h"
@@ -119,13 +121,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
 
-    m_modelInfo = new QLabel(this);
+    m_modelInfo = new ElidedLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);
     // Added after the model label (tests find that one first), but shown to its left.
-    m_layerInfo = new QLabel(this);
+    m_layerInfo = new ElidedLabel(this);
     m_layerInfo->setObjectName(QStringLiteral("layerInfo"));
     statusBar()->insertPermanentWidget(0, m_layerInfo);
-    m_brushInfo = new QLabel(this);
+    m_brushInfo = new ElidedLabel(this);
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
     m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
     statusBar()->insertPermanentWidget(1, m_brushInfo);
@@ -178,6 +180,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
         resize(1280, 800);
     restoreState(settings.value(kStateKey).toByteArray());
+    new DockSizeKeeper(this); // panels get their width back when the window grows again
 }
 
 MainWindow::~MainWindow() {

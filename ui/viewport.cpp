@@ -44,7 +44,8 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     : QOpenGLWidget(parent), m_document(document) {
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
-    setMinimumSize(160, 120);
+    // Room to see a model and paint on it at the smallest window size.
+    setMinimumSize(360, 240);
     // Hover moves draw the brush outline, a pen's too.
     setMouseTracking(true);
     setAttribute(Qt::WA_TabletTracking);

@@ -13,8 +13,12 @@
 #include <QSignalSpy>
 #include <QStatusBar>
 #include <QTest>
+#include <QWheelEvent>
 
 #include <memory>
+#include <vector>
+
+#include <glm/geometric.hpp>
 
 #include "tests/ui/ui_test_util.h"
 #include "ui/main_window.h"
@@ -148,6 +152,110 @@ TEST_F(FramingTest, FrameAllFitsTheEngineInWideAndTallViews) {
     ASSERT_TRUE(openAndWait(enginePath()));
     EXPECT_GT(cornerClearance(), 0.0f) << "on load, tall";
     EXPECT_EQ(modelPixelsOnTheBorder(), 0) << "on load, tall";
+}
+
+TEST_F(FramingTest, AnotherModelOpensInTheDefaultView) {
+    ASSERT_TRUE(openAndWait(QStringLiteral("builtin:trefoil")));
+    const core::Camera initial = viewport()->camera();
+    EXPECT_FALSE(initial.orthographic);
+    auto* ortho = m_window->findChild<QAction*>(QStringLiteral("actionOrthographic"));
+    ASSERT_NE(ortho, nullptr);
+
+    // Turned, moved, zoomed and orthographic...
+    middleDrag(Qt::NoModifier, QPoint(90, 40));
+    middleDrag(Qt::ShiftModifier, QPoint(50, 20));
+    QWheelEvent wheel(QPointF(viewport()->rect().center()),
+                      viewport()->mapToGlobal(QPointF(viewport()->rect().center())), QPoint(),
+                      QPoint(0, 360), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+    QTest::keyClick(m_window.get(), Qt::Key_O);
+    ASSERT_TRUE(viewport()->isOrthographic());
+    ASSERT_NE(viewport()->camera().yawDegrees, initial.yawDegrees);
+
+    // ...then another model: framed in the default view, in perspective.
+    ASSERT_TRUE(openAndWait(QStringLiteral("builtin:hexring")));
+    const core::Camera& camera = viewport()->camera();
+    EXPECT_FALSE(camera.orthographic);
+    EXPECT_FALSE(viewport()->isOrthographic());
+    EXPECT_FALSE(ortho->isChecked());
+    EXPECT_EQ(camera.yawDegrees, initial.yawDegrees);
+    EXPECT_EQ(camera.pitchDegrees, initial.pitchDegrees);
+    const core::Bounds bounds = viewport()->mesh()->bounds();
+    EXPECT_LT(glm::length(camera.target - bounds.center()), 1e-5f * bounds.longestSide());
+    EXPECT_GT(cornerClearance(), 0.0f);
+    // As F frames it.
+    const float distance = camera.distance;
+    QTest::keyClick(m_window.get(), Qt::Key_F);
+    EXPECT_FLOAT_EQ(viewport()->camera().distance, distance);
+
+    // The same for the first model opened again.
+    QTest::keyClick(m_window.get(), Qt::Key_O);
+    middleDrag(Qt::NoModifier, QPoint(-60, 30));
+    ASSERT_TRUE(openAndWait(QStringLiteral("builtin:trefoil")));
+    EXPECT_FALSE(viewport()->camera().orthographic);
+    EXPECT_FALSE(ortho->isChecked());
+    EXPECT_EQ(viewport()->camera().yawDegrees, initial.yawDegrees);
+    EXPECT_EQ(viewport()->camera().pitchDegrees, initial.pitchDegrees);
+    EXPECT_FLOAT_EQ(viewport()->camera().distance, initial.distance);
+}
+
+TEST_F(FramingTest, SmallestWindowKeepsAUsableViewAndWholeStatusTexts) {
+    resizeWindow({1280, 800});
+    const auto docks = m_window->findChildren<QDockWidget*>();
+    const auto dockWidths = [&] {
+        std::vector<int> widths;
+        for (const QDockWidget* dock : docks)
+            widths.push_back(dock->isVisible() && !dock->isFloating() ? dock->width() : -1);
+        return widths;
+    };
+    const std::vector<int> widths = dockWidths();
+    const int viewWidth = viewport()->width();
+
+    // As small as the window goes...
+    resizeWindow({200, 150});
+    const QSize smallest = m_window->size();
+    EXPECT_GE(viewport()->width(), 320)
+        << "window " << smallest.width() << "x" << smallest.height();
+    EXPECT_GE(viewport()->height(), 200);
+    // ...then a model, whose facts fill the status bar once its layers are built.
+    ASSERT_TRUE(openAndWait(QStringLiteral("builtin:trefoil")));
+    auto* layerInfo = m_window->statusBar()->findChild<QLabel*>(QStringLiteral("layerInfo"));
+    ASSERT_NE(layerInfo, nullptr);
+    ASSERT_TRUE(QTest::qWaitFor(
+        [&] { return layerInfo->text().contains(QStringLiteral("Regions")); }, kBuildTimeoutMs));
+    QApplication::processEvents();
+    EXPECT_EQ(m_window->size(), smallest);
+    // Every status text is shown whole or elided, never cut off mid-letter.
+    int labels = 0;
+    for (const QLabel* label : m_window->statusBar()->findChildren<QLabel*>()) {
+        if (!label->isVisible() || label->text().isEmpty())
+            continue;
+        ++labels;
+        const QString shown = label->property("shownText").isValid()
+                                  ? label->property("shownText").toString()
+                                  : label->text();
+        EXPECT_LE(label->fontMetrics().horizontalAdvance(shown), label->contentsRect().width())
+            << label->objectName().toStdString() << ": " << shown.toStdString();
+        EXPECT_LE(label->mapTo(m_window->statusBar(), QPoint(label->width(), 0)).x(),
+                  m_window->statusBar()->width())
+            << label->objectName().toStdString();
+        if (shown != label->text()) {
+            EXPECT_TRUE(shown.endsWith(QChar(0x2026))) << shown.toStdString();
+            EXPECT_TRUE(label->property("shownToolTip").toString().startsWith(label->text()));
+        }
+    }
+    EXPECT_GE(labels, 3);
+
+    // Back to the first size: the panels and the view as they were.
+    resizeWindow({1280, 800});
+    (void)QTest::qWaitFor([&] { return dockWidths() == widths; }, 2000);
+    const std::vector<int> restored = dockWidths();
+    for (qsizetype i = 0; i < docks.size(); ++i)
+        EXPECT_NEAR(restored[std::size_t(i)], widths[std::size_t(i)], 2)
+            << docks[i]->objectName().toStdString();
+    EXPECT_NEAR(viewport()->width(), viewWidth, 2);
+    // With room, the texts are whole again.
+    EXPECT_EQ(layerInfo->property("shownText").toString(), layerInfo->text());
 }
 
 } // namespace
