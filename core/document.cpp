@@ -146,6 +146,16 @@ std::optional<glm::vec3> Document::surfacePoint(glm::vec2 pixel) const {
 std::uint32_t Document::visibleFragment(std::size_t pixel) const {
     if (!m_layers)
         return kNone;
+    if (m_shownLayer > 0) {
+        if (pixel >= m_layers->stack.pixelCount())
+            return kNone;
+        const std::uint32_t fragment = m_layers->stack.fragment(pixel, m_shownLayer);
+        const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+        if (fragment == kNone || fragment >= region.size() || region[fragment] >= m_ranks.size() ||
+            m_ranks[region[fragment]] == kNone)
+            return kNone;
+        return fragment;
+    }
     return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
 }
 

@@ -95,6 +95,14 @@ public:
      * without layers.
      */
     std::uint32_t visibleFragment(std::size_t pixel) const;
+    /**
+     * The depth layer shown alone (the single-layer display), 0 for the region order's picture.
+     * While one is shown, the fragment drawn at a pixel, and so what strokes, fills, the
+     * eyedropper and pop-up clicks start from, is the pixel's fragment on that layer (none
+     * where it has none or its region is hidden).
+     */
+    void setShownLayer(std::uint32_t layer) { m_shownLayer = layer; }
+    std::uint32_t shownLayer() const { return m_shownLayer; }
     /** Changes whenever the layers are replaced or re-segmented (region ids change). */
     std::uint64_t layersSerial() const { return m_layersSerial; }
     /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
@@ -224,6 +232,7 @@ private:
     std::uint64_t m_orderSerial = 0;
     std::uint64_t m_layersSerial = 0;
     bool m_autoPopUp = true;
+    std::uint32_t m_shownLayer = 0;
 
     Brush m_brush;
     StrokeTracker m_tracker;

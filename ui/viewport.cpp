@@ -123,6 +123,7 @@ void Viewport::setDisplay(render::LayerDisplay display) {
     if (m_composite.display == display)
         return;
     m_composite.display = display;
+    shownLayerChanged();
     update();
 }
 
@@ -131,7 +132,16 @@ void Viewport::setDisplayLayer(std::uint32_t layer) {
     if (m_composite.layer == layer)
         return;
     m_composite.layer = layer;
+    shownLayerChanged();
     update();
+}
+
+void Viewport::shownLayerChanged() {
+    // What is painted, filled or picked is what this view shows.
+    m_document.setShownLayer(
+        m_composite.display == render::LayerDisplay::SingleLayer ? m_composite.layer : 0);
+    if (m_hoverHighlight)
+        updateHoverHighlight();
 }
 
 void Viewport::setBoundariesVisible(bool visible) {

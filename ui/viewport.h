@@ -222,6 +222,8 @@ private:
 
     QPointF toDevicePixels(QPointF logical) const;
     void cameraMoved();
+    /** The display or its layer changed: the document follows (Document::setShownLayer()). */
+    void shownLayerChanged();
     void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();

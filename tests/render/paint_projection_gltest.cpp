@@ -154,4 +154,80 @@ TEST_F(PaintProjectionGlTest, StrokeEdgeAtTheOutlineFollowsTheSurfaceNotThePixel
     EXPECT_LT(double(extra), 0.005 * double(referenceCount));
 }
 
+TEST_F(PaintProjectionGlTest, PaintingTheSecondLayerShownAloneLeavesTheFrontStrand) {
+    // The Single Layer display of layer 2 shows the strand under a crossing; a stroke there
+    // paints that strand, and not one texel of the strand in front of it.
+    constexpr int kWidth = 640, kHeight = 480, kRadius = 6;
+    auto doc = open(kWidth, kHeight, 1);
+    const core::Layers& layers = *doc->layers();
+    const core::LayerStack& stack = layers.stack;
+    const auto index = [&](int x, int y) {
+        return std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+    };
+    // Crossing pixels: a front strand on layer 1 well in front of a strand on layer 2.
+    const auto crossing = [&](int x, int y) {
+        if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
+            return false;
+        const std::uint32_t front = stack.fragment(index(x, y), 1);
+        const std::uint32_t back = stack.fragment(index(x, y), 2);
+        return front != kNone && back != kNone && stack.depth[back] - stack.depth[front] > 0.3f;
+    };
+    // A stroke of 8 px down the middle of a crossing, wholly inside it.
+    std::optional<glm::ivec2> start;
+    for (int y = 0; y < stack.height && !start; ++y)
+        for (int x = 0; x < stack.width && !start; ++x) {
+            bool inside = true;
+            for (int dy = -2 * kRadius; inside && dy <= 2 * kRadius + 8; ++dy)
+                for (int dx = -2 * kRadius; inside && dx <= 2 * kRadius; ++dx)
+                    inside = crossing(x + dx, y + dy);
+            if (inside)
+                start = glm::ivec2(x, y);
+        }
+    ASSERT_TRUE(start.has_value()) << "no crossing in the view";
+
+    // The front strand's colours around the stroke, as the eyedropper sees them on layer 1.
+    const auto layerColors = [&](std::uint32_t layer) {
+        doc->setShownLayer(layer);
+        std::vector<glm::vec4> colors;
+        for (int dy = -4 * kRadius; dy <= 4 * kRadius + 8; ++dy)
+            for (int dx = -4 * kRadius; dx <= 4 * kRadius; ++dx) {
+                const int x = start->x + dx, y = start->y + dy;
+                if (crossing(x, y))
+                    colors.push_back(doc->pickColor(index(x, y)).value_or(glm::vec4(-1.0f)));
+            }
+        return colors;
+    };
+    const std::vector<glm::vec4> frontBefore = layerColors(1);
+    const std::vector<glm::vec4> backBefore = layerColors(2);
+    ASSERT_GT(frontBefore.size(), 100u);
+
+    // Shown alone, layer 2 is what a click starts on; painted layer-aware, as the GUI's default.
+    doc->setShownLayer(2);
+    EXPECT_EQ(doc->visibleFragment(index(start->x, start->y)),
+              stack.fragment(index(start->x, start->y), 2));
+    core::Brush& brush = doc->brush();
+    brush.color = {1.0f, 0.0f, 0.0f, 1.0f};
+    brush.radius = float(kRadius);
+    brush.hardness = 1.0f;
+    brush.opacity = 1.0f;
+    core::PaintChanges changes;
+    const glm::vec2 a = glm::vec2(*start) + 0.5f;
+    ASSERT_TRUE(doc->beginStroke({a, 1.0f}, changes));
+    doc->moveStroke({a + glm::vec2(0.0f, 8.0f), 1.0f}, changes);
+    doc->endStroke();
+    ASSERT_GT(doc->history().undoCount(), 0u);
+
+    const std::vector<glm::vec4> frontAfter = layerColors(1);
+    const std::vector<glm::vec4> backAfter = layerColors(2);
+    std::size_t frontChanged = 0, backChanged = 0;
+    for (std::size_t i = 0; i < frontBefore.size(); ++i) {
+        frontChanged += frontAfter[i] != frontBefore[i];
+        backChanged += backAfter[i] != backBefore[i];
+    }
+    std::printf("[ layer 2 ] %zu crossing pixels: %zu changed on layer 2, %zu on layer 1\n",
+                frontBefore.size(), backChanged, frontChanged);
+    EXPECT_GT(backChanged, 50u) << "the stroke did not paint the strand shown";
+    EXPECT_EQ(frontChanged, 0u) << "the stroke painted the front strand";
+}
+
 } // namespace
