@@ -11,7 +11,7 @@
 #include <QGraphicsSceneMouseEvent>
 #include <QGraphicsSimpleTextItem>
 #include <QGraphicsView>
-#include <QHBoxLayout>
+#include <QGridLayout>
 #include <QKeyEvent>
 #include <QLabel>
 #include <QLocale>
@@ -202,14 +202,16 @@ RegionGraphPanel::RegionGraphPanel(QWidget* parent)
     m_view->installEventFilter(this);
     m_view->viewport()->installEventFilter(this);
 
-    auto* controls = new QHBoxLayout;
+    // Two short rows: the panel stays as narrow as the others in its dock column.
+    auto* controls = new QGridLayout;
     controls->setContentsMargins(4, 0, 4, 2);
-    controls->setSpacing(4);
-    controls->addWidget(m_fitButton);
-    controls->addSpacing(6);
-    controls->addWidget(minLabel);
-    controls->addWidget(m_minPixels, 1);
-    controls->addWidget(m_neighbourhoodBox);
+    controls->setHorizontalSpacing(4);
+    controls->setVerticalSpacing(2);
+    controls->addWidget(m_fitButton, 0, 0);
+    controls->addWidget(m_neighbourhoodBox, 0, 1, 1, 2);
+    controls->addWidget(minLabel, 1, 0, 1, 2);
+    controls->addWidget(m_minPixels, 1, 2);
+    controls->setColumnStretch(2, 1);
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
