@@ -1245,6 +1245,46 @@ Verbundene Regionen: %4</translation>
         <source>%1 pixel links</source>
         <translation>%1 Pixelverbindungen</translation>
     </message>
+    <message>
+        <source>Fit</source>
+        <translation>Einpassen</translation>
+    </message>
+    <message>
+        <source>Show the whole graph (F or Home in the graph). The wheel zooms, dragging the background pans.</source>
+        <translation>Den ganzen Graphen zeigen (F oder Pos1 im Graphen). Das Mausrad zoomt, Ziehen auf dem Hintergrund verschiebt.</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>All sizes</source>
+        <translation>Alle Größen</translation>
+    </message>
+    <message>
+        <source>Hide regions smaller than this many pixels</source>
+        <translation>Regionen mit weniger Pixeln ausblenden</translation>
+    </message>
+    <message>
+        <source>&amp;Hide under:</source>
+        <translation>&amp;Ausblenden unter:</translation>
+    </message>
+    <message>
+        <source>&amp;Neighbours only</source>
+        <translation>Nur &amp;Nachbarn</translation>
+    </message>
+    <message>
+        <source>Show only the selected region (click a node) and the regions connected to it</source>
+        <translation>Nur die gewählte Region (Knoten anklicken) und die mit ihr verbundenen Regionen zeigen</translation>
+    </message>
+    <message>
+        <source>Click a node to see its neighbours only</source>
+        <translation>Einen Knoten anklicken, um nur seine Nachbarn zu sehen</translation>
+    </message>
+    <message>
+        <source>Shown: %1 (filtered out: %2), in grey nodes: %3</source>
+        <translation>Gezeigt: %1 (ausgefiltert: %2), in grauen Knoten: %3</translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionTools</name>

@@ -1242,6 +1242,46 @@ Connected regions: %4</source>
         <source>%1 pixel links</source>
         <translation>%1 条像素连接</translation>
     </message>
+    <message>
+        <source>Fit</source>
+        <translation>适应</translation>
+    </message>
+    <message>
+        <source>Show the whole graph (F or Home in the graph). The wheel zooms, dragging the background pans.</source>
+        <translation>显示整个图（在图中按 F 或 Home）。滚轮缩放，拖动背景平移。</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> 像素</translation>
+    </message>
+    <message>
+        <source>All sizes</source>
+        <translation>全部大小</translation>
+    </message>
+    <message>
+        <source>Hide regions smaller than this many pixels</source>
+        <translation>隐藏像素数少于此值的区域</translation>
+    </message>
+    <message>
+        <source>&amp;Hide under:</source>
+        <translation>隐藏小于(&amp;H):</translation>
+    </message>
+    <message>
+        <source>&amp;Neighbours only</source>
+        <translation>仅邻居(&amp;N)</translation>
+    </message>
+    <message>
+        <source>Show only the selected region (click a node) and the regions connected to it</source>
+        <translation>只显示所选区域（单击节点）及与其相连的区域</translation>
+    </message>
+    <message>
+        <source>Click a node to see its neighbours only</source>
+        <translation>单击节点以只查看其邻居</translation>
+    </message>
+    <message>
+        <source>Shown: %1 (filtered out: %2), in grey nodes: %3</source>
+        <translation>显示：%1（已过滤：%2），灰色节点中：%3</translation>
+    </message>
 </context>
 <context>
     <name>ui::RegionTools</name>

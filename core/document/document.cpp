@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 
@@ -24,7 +25,17 @@ void Document::setMesh(Mesh mesh, std::string name) {
     ++m_targetSerial;
     m_history.clear();
     m_session.clear();
-    m_camera.frame(m_mesh->bounds());
+    resetCamera();
+}
+
+void Document::resetCamera() {
+    m_camera = Camera{};
+    m_camera.frame(m_mesh->bounds(), m_viewAspect, kFrameMargin);
+}
+
+void Document::setViewAspect(float aspect) {
+    if (aspect > 0.0f && std::isfinite(aspect))
+        m_viewAspect = aspect;
 }
 
 void Document::clearLayers() {
@@ -237,6 +248,16 @@ std::optional<glm::vec3> Document::surfacePoint(glm::vec2 pixel) const {
 std::uint32_t Document::visibleFragment(std::size_t pixel) const {
     if (!m_layers)
         return kNone;
+    if (m_shownLayer > 0) {
+        if (pixel >= m_layers->stack.pixelCount())
+            return kNone;
+        const std::uint32_t fragment = m_layers->stack.fragment(pixel, m_shownLayer);
+        const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+        if (fragment == kNone || fragment >= region.size() || region[fragment] >= m_ranks.size() ||
+            m_ranks[region[fragment]] == kNone)
+            return kNone;
+        return fragment;
+    }
     return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
 }
 

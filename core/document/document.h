@@ -34,8 +34,19 @@ public:
     Document(const Document&) = delete;
     Document& operator=(const Document&) = delete;
 
-    /** Replaces the model (its topology is computed here); drops the layers, frames the camera. */
+    /**
+     * Replaces the model (its topology is computed here); drops the layers and puts the camera in
+     * the model's default view (resetCamera()).
+     */
     void setMesh(Mesh mesh, std::string name);
+    /**
+     * The default view of the model: perspective, looking along -Z with Y up, its bounding
+     * sphere framed with kFrameMargin for the view aspect (setViewAspect()).
+     */
+    void resetCamera();
+    /** Width / height of the view the camera is framed for (1 until set); ignored unless > 0. */
+    void setViewAspect(float aspect);
+    float viewAspect() const { return m_viewAspect; }
     const Mesh& mesh() const { return *m_mesh; }
     std::shared_ptr<const Mesh> sharedMesh() const { return m_mesh; }
     const MeshTopology& topology() const { return *m_topology; }
@@ -88,6 +99,14 @@ public:
      * without layers.
      */
     std::uint32_t visibleFragment(std::size_t pixel) const;
+    /**
+     * The depth layer shown alone (the single-layer display), 0 for the region order's picture.
+     * While one is shown, the fragment drawn at a pixel, and so what strokes, fills, the
+     * eyedropper and pop-up clicks start from, is the pixel's fragment on that layer (none
+     * where it has none or its region is hidden).
+     */
+    void setShownLayer(std::uint32_t layer) { m_shownLayer = layer; }
+    std::uint32_t shownLayer() const { return m_shownLayer; }
     /** Changes whenever the layers are replaced or re-segmented (region ids change). */
     std::uint64_t layersSerial() const { return m_layersSerial; }
     /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
@@ -242,6 +261,7 @@ private:
     std::string m_name;
     std::uint64_t m_meshSerial = 0;
     Camera m_camera;
+    float m_viewAspect = 1.0f;
     LayerOptions m_layerOptions;
     ConnectivityEngine* m_engine = nullptr;
     std::unique_ptr<Layers> m_layers;
@@ -254,6 +274,7 @@ private:
     std::optional<std::vector<std::uint32_t>> m_hideRanks; // during a paint-to-hide stroke
     RegionOrderState m_hideBefore;
     RegionOrderState m_strokeOrderBefore;
+    std::uint32_t m_shownLayer = 0;
 
     Brush m_brush;
     PressureCurve m_pressureCurve;

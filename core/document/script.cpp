@@ -363,6 +363,13 @@ Status ScriptRunner::run(const json& op) {
                 throw OpError{options.error()};
             if (Status s = m_doc.setPaintTarget(*options); !s)
                 throw OpError{s.error()};
+        } else if (name == "show-layer") {
+            // The Single Layer view: strokes, fills, picks and pop-ups use that depth layer's
+            // fragments; 0 shows every layer.
+            if (!op.contains("layer") || !op["layer"].is_number_unsigned() ||
+                op["layer"].get<std::uint64_t>() > 4096)
+                throw OpError{"\"layer\" must be a depth layer number (0 for all layers)"};
+            m_doc.setShownLayer(op["layer"].get<std::uint32_t>());
         } else if (name == "set-segmentation") {
             LayerOptions options = m_doc.layerOptions();
             options.threshold = number(op, "threshold", options.threshold, 1e-6f, 1.0f);

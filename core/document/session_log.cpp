@@ -29,6 +29,10 @@ void SessionLog::noteState(const Document& doc) {
             {{"op", "set-mode"}, {"layer_aware", mode.first}, {"auto_pop_up", mode.second}});
         m_mode = mode;
     }
+    if (m_shownLayer != doc.shownLayer()) {
+        m_operations.push_back({{"op", "show-layer"}, {"layer", doc.shownLayer()}});
+        m_shownLayer = doc.shownLayer();
+    }
     const LayerOptions& o = doc.layerOptions();
     json segmentation = {{"op", "set-segmentation"},
                          {"threshold", o.threshold},

@@ -47,6 +47,7 @@ private:
     std::optional<Brush> m_brush;
     std::optional<float> m_curve;
     std::optional<std::pair<bool, bool>> m_mode;
+    std::optional<std::uint32_t> m_shownLayer;
     std::optional<nlohmann::json> m_segmentation;
 };
 

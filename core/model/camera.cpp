@@ -94,11 +94,19 @@ void Camera::zoom(float factor) {
     distance = std::clamp(distance * factor, sceneRadius * 1e-3f, sceneRadius * 1e3f);
 }
 
-void Camera::frame(const Bounds& bounds) {
+void Camera::frame(const Bounds& bounds, float aspect, float margin) {
     sceneCenter = bounds.center();
     sceneRadius = std::max(glm::length(bounds.size()) * 0.5f, 1e-6f);
     target = sceneCenter;
-    distance = sceneRadius / std::sin(glm::radians(fovYDegrees) * 0.5f);
+    if (!(aspect > 0.0f) || !std::isfinite(aspect))
+        aspect = 1.0f;
+    if (!(margin >= 0.0f) || !std::isfinite(margin))
+        margin = 0.0f;
+    // The narrower of the two half-angles decides: a sphere seen at distance d fills a half-angle
+    // of asin(r / d). Orthographic shows d * tan(half-angle) on each side, which is more than r.
+    const float tanHalfY = std::tan(glm::radians(fovYDegrees) * 0.5f);
+    const float halfAngle = std::atan(tanHalfY * std::min(aspect, 1.0f));
+    distance = sceneRadius * (1.0f + margin) / std::sin(halfAngle);
 }
 
 View View::orbitedAbout(const glm::vec3& pivot, float dYawDegrees, float dPitchDegrees) const {

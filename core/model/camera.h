@@ -9,6 +9,9 @@
 
 namespace core {
 
+/** The margin around the bounding sphere when the GUI frames a model (a fraction of its radius). */
+inline constexpr float kFrameMargin = 0.06f;
+
 /** The matrices and pixel size of one view. Pixel (0,0) is the top-left corner. */
 struct View {
     glm::mat4 view{1.0f};
@@ -58,8 +61,13 @@ public:
     void pan(float dxPixels, float dyPixels, int viewportHeight);
     /** Multiplies the distance by factor (> 0), within sane bounds for the scene. */
     void zoom(float factor);
-    /** Looks at the bounds' centre from a distance at which they fit the view. Keeps yaw/pitch. */
-    void frame(const Bounds& bounds);
+    /**
+     * Looks at the bounds' centre from the distance at which their bounding sphere, grown by
+     * margin (a fraction of its radius), fits both the vertical and the horizontal field of view
+     * of a view aspect = width / height wide, in perspective and orthographic alike. Keeps
+     * yaw/pitch.
+     */
+    void frame(const Bounds& bounds, float aspect = 1.0f, float margin = 0.0f);
     /**
      * Orbits about an arbitrary world pivot: the camera turns about the pivot, which keeps its
      * place on screen.

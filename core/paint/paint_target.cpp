@@ -231,6 +231,60 @@ struct PaintTarget::Context {
         return plane != glm::vec4(0.0f) && std::fabs(glm::dot(glm::vec3(plane), p) + plane.w) <=
                                                depth * toleranceScale + toleranceOffset;
     }
+    /** The setup of the map's fragment at pixel (x, y), or kNone (also outside the window). */
+    std::uint32_t mapAtPixel(int x, int y) const {
+        const int wx = x - windowX, wy = y - windowY;
+        if (wx < 0 || wy < 0 || wx >= windowW || wy >= windowH)
+            return kNone;
+        return window[std::size_t(wy) * std::size_t(windowW) + std::size_t(wx)];
+    }
+    /**
+     * Whether view-space point p of the triangle of setup own, seen at window position (px, py)
+     * in a pixel whose centre saw no fragment of the map on its surface, is still on the map's
+     * surface where the pixel is only partly covered by it: a neighbouring pixel of the 2 × 2
+     * block of pixel centres around the position has the map on its surface, and the pixel's
+     * centre saw nothing in front of the point and nothing on its surface, unless the centre
+     * lies outside the dab's disc (the map ends there for the radius alone). Such points are
+     * painted as if their pixel were in the map, so the paint ends at the surface's outline and
+     * at the dab's circle, not at the saw-tooth of whole pixels around them.
+     */
+    bool coveredAtEdge(const LayerStack& stack, std::uint32_t own, const glm::vec3& p, float px,
+                       float py) const {
+        const float fx = std::floor(px), fy = std::floor(py);
+        const int x = int(fx), y = int(fy);
+        const int nx = px - fx < 0.5f ? x - 1 : x + 1;
+        const int ny = py - fy < 0.5f ? y - 1 : y + 1;
+        const int neighbours[3][2] = {{nx, y}, {x, ny}, {nx, ny}};
+        bool beside = false;
+        for (const auto& q : neighbours) {
+            const std::uint32_t mapped = mapAtPixel(q[0], q[1]);
+            if (mapped != kNone && onMapSurface(own, p, mapped)) {
+                beside = true;
+                break;
+            }
+        }
+        if (!beside)
+            return false;
+        if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
+            return true;
+        const std::size_t pixel = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+        const glm::vec2 centreOffset = glm::vec2(fx + 0.5f, fy + 0.5f) - center;
+        const bool outsideDisc = glm::dot(centreOffset, centreOffset) >= radius * radius;
+        const float depth = -p.z;
+        const float tolerance = depth * toleranceScale + toleranceOffset;
+        for (std::uint32_t f = stack.offsets[pixel]; f < stack.offsets[pixel + 1]; ++f) {
+            const std::uint32_t t = stack.triangle[f];
+            const bool onSurface =
+                t < triangleDab.size() && triangleDab[t] == dab && triangleLocal[t] != kNone
+                    ? onMapSurface(own, p, triangleLocal[t])
+                    : std::fabs(stack.depth[f] - depth) <= tolerance;
+            // The centre saw this surface, yet it is not in the map: hidden, too far along the
+            // surface, or another layer chosen there; or only outside the disc.
+            if (onSurface ? !outsideDisc : stack.depth[f] < depth)
+                return false;
+        }
+        return true;
+    }
     bool windowPreimage(const TriangleSetup& s, const glm::dvec2 texel[3], double& minX,
                         double& maxX, double& minY, double& maxY) const;
     std::int32_t slotFor(TileStore& store, std::uint32_t page, std::uint32_t tile);
@@ -299,15 +353,16 @@ bool PaintTarget::Context::setUpTriangle(std::uint32_t t, TriangleSetup& s) {
 }
 
 bool PaintTarget::Context::overlapsMap(const TriangleSetup& s) const {
-    // Its surface points project inside its screen bounding box: look for a map pixel there.
+    // Its surface points project inside its screen bounding box: look for a map pixel there, or
+    // one pixel beside it (points in a pixel next to the map can be painted: coveredAtEdge()).
     const float minX = std::min({s.screen[0].x, s.screen[1].x, s.screen[2].x});
     const float maxX = std::max({s.screen[0].x, s.screen[1].x, s.screen[2].x});
     const float minY = std::min({s.screen[0].y, s.screen[1].y, s.screen[2].y});
     const float maxY = std::max({s.screen[0].y, s.screen[1].y, s.screen[2].y});
-    const float x0 = std::max(std::floor(minX), float(windowX));
-    const float x1 = std::min(std::floor(maxX), float(windowX + windowW - 1));
-    const float y0 = std::max(std::floor(minY), float(windowY));
-    const float y1 = std::min(std::floor(maxY), float(windowY + windowH - 1));
+    const float x0 = std::max(std::floor(minX) - 1.0f, float(windowX));
+    const float x1 = std::min(std::floor(maxX) + 1.0f, float(windowX + windowW - 1));
+    const float y0 = std::max(std::floor(minY) - 1.0f, float(windowY));
+    const float y1 = std::min(std::floor(maxY) + 1.0f, float(windowY + windowH - 1));
     if (!(x0 <= x1 && y0 <= y1))
         return false;
     for (int y = int(y0); y <= int(y1); ++y) {
@@ -1044,6 +1099,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const glm::vec2 center = c.center;
     const float radius = c.radius, dabOpacity = c.dabOpacity, flowOpacity = c.flowOpacity;
     const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
+    const LayerStack& stack = layers.stack;
 
     for (std::size_t si = 0; si < c.setups.size(); ++si) {
         const TriangleSetup s = c.setups[si];
@@ -1108,24 +1164,32 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     return;
                 const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
                 const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
-                // The map's fragment at the texel's pixel (as Context::mapAt()).
+                // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
+                // pixel outside the map's box can be at its surface's outline.
                 const float fx = px - windowX, fy = py - windowY;
-                if (!(fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH))
+                if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
                     return;
                 const std::uint32_t mapped =
-                    window[std::size_t(fy) * windowStride + std::size_t(fx)];
-                if (mapped == kNone)
-                    return;
+                    fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
+                        ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
+                        : kNone;
                 // On its surface (as Context::onMapSurface()).
-                if (mapped != own) {
+                bool onMap = mapped == own;
+                if (!onMap && mapped != kNone) {
                     const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
                     const glm::vec4& plane = setups[mapped].plane;
-                    if (plane == glm::vec4(0.0f) ||
-                        !(std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
-                          -point.z * toleranceScale + toleranceOffset))
-                        return;
+                    onMap = plane != glm::vec4(0.0f) &&
+                            std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
+                                -point.z * toleranceScale + toleranceOffset;
                 }
-                const float weight = brush.falloff(glm::length(glm::vec2(px, py) - center), radius);
+                const float distance = glm::length(glm::vec2(px, py) - center);
+                if (!(distance < radius))
+                    return;
+                if (!onMap &&
+                    !c.coveredAtEdge(stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view,
+                                     px, py))
+                    return;
+                const float weight = brush.falloff(distance, radius);
                 if (!(weight > 0.0f))
                     return;
                 const int tx = wrap ? wrapIndex(x, width) : x;

@@ -25,6 +25,7 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
+#include <QWheelEvent>
 #include <qpa/qwindowsysteminterface.h>
 
 #include <algorithm>
@@ -244,6 +245,13 @@ TEST_F(ArtistTest, PenPressureWidensTheStrokeAndTheEraserEndErasesIt) {
     EXPECT_TRUE(document().brush().pressureRadius);
     const QColor color = m_window->colorPanel()->foreground();
 
+    // Two wheel notches closer: the tube is wide enough for the widest stroke.
+    QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+    const QPointF middle = QPointF(viewport()->rect().center());
+    QWheelEvent wheel(middle, viewport()->mapToGlobal(middle), QPoint(), QPoint(0, 240),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(viewport(), &wheel);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
     const auto [a, b] = solidRun(170, 24);
     ASSERT_GT(b.x() - a.x(), 150) << "no wide run across the knot";
     ASSERT_NE(texture(), nullptr);

@@ -40,7 +40,7 @@ protected:
         QSettings().clear();
         m_window = std::make_unique<ui::MainWindow>();
         m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1100, 720);
+        m_window->resize(1260, 720);
         m_window->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
         m_window->activateWindow();

@@ -515,13 +515,14 @@ TEST_F(ViewerTest, DroppingAFileOpensIt) {
 }
 
 TEST_F(ViewerTest, WindowGeometryIsRemembered) {
-    m_window->resize(900, 640);
-    ASSERT_TRUE(QTest::qWaitFor([&] { return m_window->size() == QSize(900, 640); }));
+    // Above the smallest size (the panels beside a view of usable width).
+    m_window->resize(1100, 700);
+    ASSERT_TRUE(QTest::qWaitFor([&] { return m_window->size() == QSize(1100, 700); }));
     m_window->close();
     m_window.reset();
 
     auto window = std::make_unique<ui::MainWindow>();
-    EXPECT_EQ(window->size(), QSize(900, 640));
+    EXPECT_EQ(window->size(), QSize(1100, 700));
 }
 
 TEST(ModelLoaderTest, CancelAndSupersede) {

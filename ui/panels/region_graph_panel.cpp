@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/region_graph_panel.h"
 
+#include <QCheckBox>
 #include <QEvent>
+#include <QFontMetricsF>
 #include <QGraphicsEllipseItem>
 #include <QGraphicsPathItem>
 #include <QGraphicsScene>
@@ -9,15 +11,21 @@
 #include <QGraphicsSceneMouseEvent>
 #include <QGraphicsSimpleTextItem>
 #include <QGraphicsView>
+#include <QGridLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLocale>
 #include <QPainterPath>
 #include <QPen>
+#include <QScrollBar>
+#include <QSpinBox>
+#include <QTimer>
+#include <QToolButton>
 #include <QVBoxLayout>
+#include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 #include "core/layers/layers.h"
 #include "render/layer_compositor.h"
@@ -25,14 +33,13 @@
 namespace ui {
 
 namespace {
-constexpr double kSceneHeight = 320.0; // the view's height maps onto this
-constexpr double kNodeGap = 3.0;
-constexpr double kMinRadius = 4.0;
-constexpr double kMaxRadius = 18.0;
+using Layout = core::RegionGraphLayout;
+
 constexpr double kColumnGap = 44.0;
-constexpr double kMaxZoom = 2.0;
-constexpr int kBarycentricSweeps = 4;
-constexpr double kMergedLabelSpace = 14.0; // under a merged node, for its "+N" label
+constexpr double kMaxFitZoom = 2.0;      // a small graph is not blown up to fill the view
+constexpr double kMinZoomOut = 0.5;      // relative to the whole graph in view
+constexpr double kZoomPerNotch = 1.25;   // one 15° wheel notch
+constexpr double kNodeLabelRadius = 9.0; // on-screen radius from which a node shows its id
 
 const QColor kBackground(46, 48, 53);
 const QColor kText(200, 203, 210);
@@ -48,50 +55,38 @@ QColor toColor(const glm::vec4& c) {
                             std::clamp(c.b, 0.0f, 1.0f));
 }
 
-/** One drawn node: a region or the merged small regions of one layer. */
-struct LayoutNode {
-    std::uint32_t region = core::kNone; // kNone: merged
-    std::uint32_t layer = 1;
-    std::uint32_t members = 1;
-    double pixels = 0.0;
-    double home = 0.0; // where the view puts it: the regions' height in the picture
-    double key = 0.0;  // home nudged towards the neighbours
-    double y = 0.0;
-    double radius = kMinRadius;
-    std::vector<std::pair<int, double>> adjacent; // node, weight
+QPen cosmeticPen(const QColor& color, double width) {
+    QPen pen(color, width);
+    pen.setCosmetic(true); // the same on screen at any zoom
+    pen.setCapStyle(Qt::RoundCap);
+    return pen;
+}
 
-    bool merged() const { return region == core::kNone; }
-    /** Room the node needs below its centre. */
-    double below() const { return radius + (merged() ? kMergedLabelSpace : 0.0); }
-};
-
-/** Places one column's nodes in key order, as near their keys as the sizes allow. */
-void packColumn(std::vector<LayoutNode>& nodes, std::vector<int>& column) {
-    std::sort(column.begin(), column.end(), [&](int a, int b) {
-        return nodes[a].key != nodes[b].key ? nodes[a].key < nodes[b].key : a < b;
-    });
-    double previousBottom = -1e300;
-    for (int index : column) {
-        LayoutNode& node = nodes[index];
-        node.y = std::max(node.key, previousBottom + kNodeGap + node.radius);
-        previousBottom = node.y + node.below();
-    }
-    // Pushed past the bottom: pull back up as far as the top allows.
-    double nextTop = kSceneHeight;
-    for (auto it = column.rbegin(); it != column.rend(); ++it) {
-        LayoutNode& node = nodes[*it];
-        node.y = std::min(node.y, nextTop - kNodeGap - node.below());
-        nextTop = node.y - node.radius;
-    }
-    // A column taller than the scene starts at the top instead.
-    if (!column.empty() && nodes[column.front()].y - nodes[column.front()].radius < 0.0) {
-        double top = 0.0;
-        for (int index : column) {
-            LayoutNode& node = nodes[index];
-            node.y = std::max(node.y, top + node.radius);
-            top = node.y + node.below() + kNodeGap;
-        }
-    }
+/**
+ * A label that keeps its size on screen at any zoom, anchored at pos (in parent or scene
+ * coordinates): centred on it horizontally, above it (up), below it, or centred on it.
+ */
+enum class LabelSide { Above, Below, Centre };
+QGraphicsItem* addLabel(QGraphicsScene* scene, QGraphicsItem* parent, const QString& text,
+                        const QFont& font, QPointF pos, LabelSide side) {
+    auto* anchor = new QGraphicsRectItem(parent);
+    anchor->setPen(Qt::NoPen);
+    anchor->setBrush(Qt::NoBrush);
+    anchor->setFlag(QGraphicsItem::ItemIgnoresTransformations);
+    anchor->setAcceptedMouseButtons(Qt::NoButton);
+    anchor->setPos(pos);
+    auto* label = new QGraphicsSimpleTextItem(text, anchor);
+    label->setFont(font);
+    label->setBrush(kText);
+    label->setAcceptedMouseButtons(Qt::NoButton);
+    const QRectF box = label->boundingRect();
+    const double y = side == LabelSide::Above   ? -box.height() - 2.0
+                     : side == LabelSide::Below ? 1.0
+                                                : -box.height() / 2.0;
+    label->setPos(-box.width() / 2.0, y);
+    if (!parent)
+        scene->addItem(anchor);
+    return anchor;
 }
 } // namespace
 
@@ -100,22 +95,25 @@ class RegionGraphItem : public QGraphicsEllipseItem {
 public:
     RegionGraphItem(RegionGraphPanel* panel, std::uint32_t region, double radius)
         : QGraphicsEllipseItem(-radius, -radius, 2.0 * radius, 2.0 * radius), m_panel(panel),
-          m_region(region) {
+          m_region(region), m_radius(radius) {
         setAcceptHoverEvents(true);
         setAcceptedMouseButtons(Qt::LeftButton);
         setData(0, region == core::kNone ? QVariant() : QVariant(uint(region)));
     }
 
     std::uint32_t region() const { return m_region; }
+    double radius() const { return m_radius; }
     std::vector<QGraphicsPathItem*>& edges() { return m_edges; }
+    /** The id label shown when the node is big enough on screen. */
+    QGraphicsItem*& idLabel() { return m_idLabel; }
 
     void setState(bool hovered, bool selected) {
         if (selected)
-            setPen(QPen(kSelected, 2.5));
+            setPen(cosmeticPen(kSelected, 2.5));
         else if (hovered)
-            setPen(QPen(kHovered, 2.5));
+            setPen(cosmeticPen(kHovered, 2.5));
         else
-            setPen(QPen(kOutline, 1.0));
+            setPen(cosmeticPen(kOutline, 1.0));
         setZValue(hovered || selected ? 3.0 : 2.0);
         for (QGraphicsPathItem* edge : m_edges) {
             QPen pen = edge->pen();
@@ -135,7 +133,7 @@ protected:
         QGraphicsEllipseItem::hoverLeaveEvent(event);
     }
     void mousePressEvent(QGraphicsSceneMouseEvent* event) override {
-        event->accept(); // the click happens at the release, on this item
+        event->accept(); // the click happens at the release, on this item; no panning
     }
     void mouseReleaseEvent(QGraphicsSceneMouseEvent* event) override {
         if (contains(event->pos()))
@@ -146,29 +144,45 @@ protected:
 private:
     RegionGraphPanel* m_panel;
     std::uint32_t m_region;
+    double m_radius;
     std::vector<QGraphicsPathItem*> m_edges;
-};
-
-/** What the scene is drawn from: placed nodes and summed edges of one region graph. */
-struct RegionGraphPanel::Layout {
-    struct Edge {
-        int a, b;
-        std::uint64_t links;
-    };
-    std::vector<LayoutNode> nodes;
-    std::vector<Edge> edges;
-    std::uint32_t layerCount = 0;
-    double top = 0.0, bottom = kSceneHeight; // of the nodes
-    /** The region's tooltip facts, by node. */
-    std::vector<std::uint32_t> regionPixels, regionNeighbors;
+    QGraphicsItem* m_idLabel = nullptr;
 };
 
 RegionGraphPanel::RegionGraphPanel(QWidget* parent)
     : QWidget(parent), m_selected(core::kNone), m_hovered(core::kNone) {
+    m_options.maxNodesPerLayer = kMaxNodesPerLayer;
+
     m_summary = new QLabel(tr("No regions yet"), this);
     m_summary->setObjectName(QStringLiteral("regionSummary"));
     m_summary->setWordWrap(true);
     m_summary->setContentsMargins(4, 2, 4, 2);
+
+    m_fitButton = new QToolButton(this);
+    m_fitButton->setObjectName(QStringLiteral("regionGraphFit"));
+    m_fitButton->setText(tr("Fit"));
+    m_fitButton->setToolTip(tr("Show the whole graph (F or Home in the graph). The wheel "
+                               "zooms, dragging the background pans."));
+    connect(m_fitButton, &QToolButton::clicked, this, &RegionGraphPanel::fitGraph);
+
+    m_minPixels = new QSpinBox(this);
+    m_minPixels->setObjectName(QStringLiteral("regionGraphMinPixels"));
+    m_minPixels->setRange(0, 10'000'000);
+    m_minPixels->setSingleStep(50);
+    m_minPixels->setSuffix(tr(" px"));
+    m_minPixels->setSpecialValueText(tr("All sizes"));
+    m_minPixels->setKeyboardTracking(false);
+    m_minPixels->setToolTip(tr("Hide regions smaller than this many pixels"));
+    auto* minLabel = new QLabel(tr("&Hide under:"), this);
+    minLabel->setBuddy(m_minPixels);
+    connect(m_minPixels, &QSpinBox::valueChanged, this,
+            [this](int value) { setMinimumPixels(std::uint32_t(std::max(0, value))); });
+
+    m_neighbourhoodBox = new QCheckBox(tr("&Neighbours only"), this);
+    m_neighbourhoodBox->setObjectName(QStringLiteral("regionGraphNeighbours"));
+    m_neighbourhoodBox->setToolTip(
+        tr("Show only the selected region (click a node) and the regions connected to it"));
+    connect(m_neighbourhoodBox, &QCheckBox::toggled, this, &RegionGraphPanel::setNeighbourhoodOnly);
 
     m_scene = new QGraphicsScene(this);
     m_scene->setBackgroundBrush(kBackground);
@@ -178,15 +192,32 @@ RegionGraphPanel::RegionGraphPanel(QWidget* parent)
     m_view->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_view->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_view->setFrameShape(QFrame::NoFrame);
+    m_view->setDragMode(QGraphicsView::ScrollHandDrag);
+    m_view->setTransformationAnchor(QGraphicsView::NoAnchor);
+    m_view->setResizeAnchor(QGraphicsView::AnchorViewCenter);
+    m_view->setFocusPolicy(Qt::StrongFocus);
     m_view->setMouseTracking(true);
     m_view->viewport()->setMouseTracking(true);
     m_view->setMinimumSize(120, 100);
+    m_view->installEventFilter(this);
     m_view->viewport()->installEventFilter(this);
+
+    // Two short rows: the panel stays as narrow as the others in its dock column.
+    auto* controls = new QGridLayout;
+    controls->setContentsMargins(4, 0, 4, 2);
+    controls->setHorizontalSpacing(4);
+    controls->setVerticalSpacing(2);
+    controls->addWidget(m_fitButton, 0, 0);
+    controls->addWidget(m_neighbourhoodBox, 0, 1, 1, 2);
+    controls->addWidget(minLabel, 1, 0, 1, 2);
+    controls->addWidget(m_minPixels, 1, 2);
+    controls->setColumnStretch(2, 1);
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     layout->addWidget(m_summary);
+    layout->addLayout(controls);
     layout->addWidget(m_view, 1);
 }
 
@@ -202,181 +233,79 @@ void RegionGraphPanel::setLayers(const core::Layers* layers) {
         emit regionHovered(core::kNone);
     }
     m_selected = core::kNone;
-    auto layout = std::make_unique<Layout>();
-
-    const core::RegionGraph& graph = layers->segmentation.graph;
-    const double imageHeight = std::max(1, layers->stack.height);
-    m_regionCount = int(graph.regions.size());
-    m_connectionCount = int(graph.neighbors.size() / 2);
-
-    // Nodes: per layer the largest regions, then one node for the rest.
-    std::uint32_t layerCount = 0;
-    for (const core::Region& region : graph.regions)
-        layerCount = std::max(layerCount, region.layer);
-    std::vector<std::vector<std::uint32_t>> byLayer(layerCount);
-    for (const core::Region& region : graph.regions) {
-        if (region.layer >= 1)
-            byLayer[region.layer - 1].push_back(region.id);
-    }
-    std::vector<LayoutNode>& nodes = layout->nodes;
-    std::vector<int> nodeOf(graph.regions.size(), -1);
-    std::vector<std::vector<int>> columns(layerCount);
-    int merged = 0;
-    for (std::uint32_t l = 0; l < layerCount; ++l) {
-        std::vector<std::uint32_t>& ids = byLayer[l];
-        const auto larger = [&](std::uint32_t a, std::uint32_t b) {
-            return graph.regions[a].pixels != graph.regions[b].pixels
-                       ? graph.regions[a].pixels > graph.regions[b].pixels
-                       : a < b;
-        };
-        const std::size_t own = ids.size() <= std::size_t(kMaxNodesPerLayer)
-                                    ? ids.size()
-                                    : std::size_t(kMaxNodesPerLayer - 1);
-        // Only the largest need an order: a tiny threshold can make 100,000 regions.
-        std::partial_sort(ids.begin(), ids.begin() + std::ptrdiff_t(own), ids.end(), larger);
-        int shared = -1; // the layer's node for its small regions
-        for (std::size_t i = 0; i < ids.size(); ++i) {
-            const core::Region& region = graph.regions[ids[i]];
-            int index;
-            if (i < own) {
-                LayoutNode node;
-                node.region = region.id;
-                node.layer = l + 1;
-                nodes.push_back(node);
-                index = int(nodes.size() - 1);
-                columns[l].push_back(index);
-            } else {
-                if (shared < 0) {
-                    LayoutNode node;
-                    node.layer = l + 1;
-                    node.members = 0;
-                    nodes.push_back(node);
-                    shared = int(nodes.size() - 1);
-                    columns[l].push_back(shared);
-                }
-                index = shared;
-                ++nodes[index].members;
-                ++merged;
-            }
-            nodeOf[region.id] = index;
-            // Pixel-weighted sums, divided below.
-            const double centre = 0.5 * (region.minY + region.maxY + 1) / imageHeight;
-            nodes[index].home += centre * kSceneHeight * region.pixels;
-            nodes[index].pixels += region.pixels;
-        }
-    }
-    double maxPixels = 1.0;
-    double lowest = kSceneHeight, highest = 0.0;
-    for (LayoutNode& node : nodes) {
-        node.home = node.pixels > 0.0 ? node.home / node.pixels : kSceneHeight / 2.0;
-        if (!node.merged()) {
-            lowest = std::min(lowest, node.home);
-            highest = std::max(highest, node.home);
-        }
-        maxPixels = std::max(maxPixels, node.pixels);
-    }
-    // Spread the heights the regions actually use over the scene, keeping their order. A
-    // layer's merged small regions always sit at the bottom of its column.
-    for (LayoutNode& node : nodes) {
-        if (node.merged())
-            node.home = 2.0 * kSceneHeight;
-        else if (highest - lowest > 1.0)
-            node.home = kSceneHeight * (0.1 + 0.8 * (node.home - lowest) / (highest - lowest));
-        else
-            node.home = kSceneHeight / 2.0;
-        node.key = node.home;
-    }
-    for (LayoutNode& node : nodes) {
-        node.radius = kMinRadius + (kMaxRadius - kMinRadius) * std::sqrt(node.pixels / maxPixels);
-        if (node.merged())
-            node.radius = std::max(node.radius, 7.0);
-    }
-
-    // Edges between nodes, links summed over merged regions.
-    std::unordered_map<std::uint64_t, std::uint64_t> edgeLinks;
-    for (const core::Region& region : graph.regions) {
-        for (const core::RegionLink& link : graph.neighborsOf(region.id)) {
-            if (link.region <= region.id || link.region >= nodeOf.size())
-                continue;
-            const int a = nodeOf[region.id];
-            const int b = nodeOf[link.region];
-            if (a < 0 || b < 0 || a == b)
-                continue;
-            const auto key = (std::uint64_t(std::min(a, b)) << 32) | std::uint64_t(std::max(a, b));
-            edgeLinks[key] += link.links;
-        }
-    }
-    using Edge = Layout::Edge;
-    std::vector<Edge>& edges = layout->edges;
-    edges.reserve(edgeLinks.size());
-    for (const auto& [key, links] : edgeLinks)
-        edges.push_back({int(key >> 32), int(key & 0xffffffffu), links});
-    std::sort(edges.begin(), edges.end(),
-              [](const Edge& x, const Edge& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-    for (const Edge& edge : edges) {
-        const double weight = 1.0 + std::log10(double(edge.links));
-        nodes[edge.a].adjacent.emplace_back(edge.b, weight);
-        nodes[edge.b].adjacent.emplace_back(edge.a, weight);
-    }
-
-    // Layout: columns by layer; in a column by height in the view, pulled towards neighbours.
-    for (std::vector<int>& column : columns)
-        packColumn(nodes, column);
-    for (int sweep = 0; sweep < kBarycentricSweeps; ++sweep) {
-        for (std::size_t i = 0; i < columns.size(); ++i) {
-            std::vector<int>& column = columns[sweep % 2 == 0 ? i : columns.size() - 1 - i];
-            for (int index : column) {
-                LayoutNode& node = nodes[index];
-                if (node.merged())
-                    continue;
-                double sum = 0.0, weights = 0.0;
-                for (const auto& [other, weight] : node.adjacent) {
-                    sum += nodes[other].y * weight;
-                    weights += weight;
-                }
-                node.key = weights > 0.0 ? 0.5 * node.home + 0.5 * sum / weights : node.home;
-            }
-            packColumn(nodes, column);
-        }
-    }
-
-    layout->layerCount = layerCount;
-    layout->top = nodes.empty() ? 0.0 : 1e300;
-    layout->bottom = nodes.empty() ? kSceneHeight : -1e300;
-    for (const LayoutNode& node : nodes) {
-        layout->top = std::min(layout->top, node.y - node.radius);
-        layout->bottom = std::max(layout->bottom, node.y + node.below());
-        const bool own = !node.merged();
-        layout->regionPixels.push_back(own ? graph.regions[node.region].pixels
-                                           : std::uint32_t(node.pixels));
-        layout->regionNeighbors.push_back(own ? std::uint32_t(graph.neighborsOf(node.region).size())
-                                              : 0u);
-    }
-    m_layout = std::move(layout);
-
-    if (graph.regions.empty()) {
-        m_summary->setText(tr("No regions in this view"));
-    } else {
-        QString text = tr("Regions: %1, connections: %2")
-                           .arg(QLocale().toString(m_regionCount))
-                           .arg(QLocale().toString(m_connectionCount));
-        if (merged > 0)
-            text += QLatin1Char('\n') +
-                    tr("Small regions merged into grey nodes: %1").arg(QLocale().toString(merged));
-        m_summary->setText(text);
-    }
-    buildScene();
+    m_graph = layers->segmentation.graph;
+    m_imageHeight = std::max(1, layers->stack.height);
+    m_haveGraph = true;
+    m_regionCount = int(m_graph.regions.size());
+    m_connectionCount = int(m_graph.neighbors.size() / 2);
+    relayout();
     setStale(false);
 }
 
+void RegionGraphPanel::setMinimumPixels(std::uint32_t pixels) {
+    if (m_minPixels->value() != int(std::min<std::uint32_t>(pixels, 10'000'000))) {
+        m_minPixels->setValue(int(std::min<std::uint32_t>(pixels, 10'000'000)));
+        return; // back here through valueChanged
+    }
+    if (m_options.minPixels == pixels)
+        return;
+    m_options.minPixels = pixels;
+    relayout();
+}
+
+void RegionGraphPanel::setNeighbourhoodOnly(bool on) {
+    if (m_neighbourhoodBox->isChecked() != on) {
+        m_neighbourhoodBox->setChecked(on);
+        return; // back here through toggled
+    }
+    if (m_neighbourhood == on)
+        return;
+    m_neighbourhood = on;
+    relayout();
+}
+
+void RegionGraphPanel::relayout() {
+    if (!m_haveGraph)
+        return;
+    m_options.focus = m_neighbourhood ? m_selected : core::kNone;
+    m_layout = core::layoutRegionGraph(m_graph, m_imageHeight, m_options);
+    updateSummary();
+    buildScene();
+    fitGraph();
+}
+
+void RegionGraphPanel::updateSummary() {
+    if (m_graph.regions.empty()) {
+        m_summary->setText(tr("No regions in this view"));
+        return;
+    }
+    const QLocale locale;
+    QString text = tr("Regions: %1, connections: %2")
+                       .arg(locale.toString(m_regionCount), locale.toString(m_connectionCount));
+    if (m_neighbourhood && m_selected == core::kNone)
+        text += QLatin1Char('\n') + tr("Click a node to see its neighbours only");
+    else if (m_layout.hiddenRegions > 0)
+        text +=
+            QLatin1Char('\n') +
+            tr("Shown: %1 (filtered out: %2), in grey nodes: %3")
+                .arg(locale.toString(qulonglong(m_graph.regions.size() - m_layout.hiddenRegions)),
+                     locale.toString(qulonglong(m_layout.hiddenRegions)),
+                     locale.toString(qulonglong(m_layout.mergedRegions)));
+    else if (m_layout.mergedRegions > 0)
+        text += QLatin1Char('\n') + tr("Small regions merged into grey nodes: %1")
+                                        .arg(locale.toString(qulonglong(m_layout.mergedRegions)));
+    m_summary->setText(text);
+}
+
 double RegionGraphPanel::columnSpacing() const {
-    const double minimum = 2.0 * kMaxRadius + kColumnGap;
-    if (!m_layout || m_layout->layerCount < 2)
+    const double minimum = 2.0 * Layout::kMaxRadius + kColumnGap;
+    if (m_layout.layerCount < 2)
         return minimum;
     const QSize size = m_view->viewport()->size();
     const double aspect = size.height() > 0 ? double(size.width()) / size.height() : 1.0;
-    const double height = m_layout->bottom - m_layout->top + 40.0; // with the headers
-    const double spacing = (aspect * height - 2.0 * kMaxRadius - 16.0) / (m_layout->layerCount - 1);
+    const double height = m_layout.bottom - m_layout.top + 40.0; // with the headers
+    const double spacing =
+        (aspect * height - 2.0 * Layout::kMaxRadius - 16.0) / double(m_layout.layerCount - 1);
     return std::clamp(spacing, minimum, 4.0 * minimum);
 }
 
@@ -386,85 +315,155 @@ void RegionGraphPanel::buildScene() {
         emit regionHovered(core::kNone);
     }
     m_nodes.clear();
+    m_headers.clear();
+    m_countLabels.clear();
     m_scene->clear();
-    if (!m_layout)
+    if (!m_haveGraph)
         return;
-    const std::vector<LayoutNode>& nodes = m_layout->nodes;
-    const std::vector<Layout::Edge>& edges = m_layout->edges;
-    const std::uint32_t layerCount = m_layout->layerCount;
-    const double top = m_layout->top;
-    const double bottom = m_layout->bottom;
+    const std::vector<Layout::Node>& nodes = m_layout.nodes;
+    const double top = m_layout.top;
+    const double bottom = m_layout.bottom;
 
     m_spacing = columnSpacing();
     const double spacing = m_spacing;
     const auto columnX = [&](std::uint32_t layer) { return (double(layer) - 1.0) * spacing; };
 
-    // Scene: guides and headers, edges, nodes.
+    // Scene: guides and headers, edges, nodes. Labels keep their size at any zoom.
     QFont small = font();
-    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.85));
-    for (std::uint32_t layer = 1; layer <= layerCount; ++layer) {
+    small.setPointSizeF(std::max(7.0, small.pointSizeF() * 0.85));
+    std::vector<std::uint8_t> columnUsed(m_layout.layerCount + 1, 0);
+    for (const Layout::Node& node : nodes)
+        columnUsed[node.layer] = 1;
+    for (std::uint32_t layer = 1; layer <= m_layout.layerCount; ++layer) {
+        if (!columnUsed[layer])
+            continue;
         const double x = columnX(layer);
-        m_scene->addLine(x, top - 6.0, x, bottom + 6.0, QPen(QColor(255, 255, 255, 22), 1.0))
+        m_scene->addLine(x, top - 6.0, x, bottom + 6.0, cosmeticPen(QColor(255, 255, 255, 22), 1.0))
             ->setZValue(0.0);
-        auto* header = m_scene->addSimpleText(tr("Layer %1").arg(layer), small);
-        header->setBrush(kText);
-        const QRectF box = header->boundingRect();
-        header->setPos(x - box.width() / 2.0, top - 10.0 - box.height());
+        QGraphicsItem* header = addLabel(m_scene, nullptr, tr("Layer %1").arg(layer), small,
+                                         QPointF(x, top - 6.0), LabelSide::Above);
+        header->setZValue(4.0);
+        header->childItems().front()->setData(1, uint(layer));
+        m_headers.push_back(static_cast<QGraphicsSimpleTextItem*>(header->childItems().front()));
     }
 
     std::vector<RegionGraphItem*> items(nodes.size(), nullptr);
     const QLocale locale;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
-        const LayoutNode& node = nodes[i];
+        const Layout::Node& node = nodes[i];
         auto* item = new RegionGraphItem(this, node.region, node.radius);
         item->setPos(columnX(node.layer), node.y);
-        item->setZValue(2.0);
-        if (node.region == core::kNone) {
+        if (node.merged()) {
             item->setBrush(kMerged);
             item->setToolTip(tr("%1 small regions of layer %2\n%3 pixels together")
                                  .arg(locale.toString(node.members))
                                  .arg(node.layer)
                                  .arg(locale.toString(qulonglong(node.pixels))));
-            auto* label = new QGraphicsSimpleTextItem(
-                tr("+%1").arg(locale.toString(qulonglong(node.members))), item);
-            label->setFont(small);
-            label->setBrush(kText);
-            const QRectF box = label->boundingRect();
-            label->setPos(-box.width() / 2.0, node.radius + 1.0);
+            m_countLabels.push_back(
+                addLabel(m_scene, item, tr("+%1").arg(locale.toString(qulonglong(node.members))),
+                         small, QPointF(0.0, node.radius), LabelSide::Below));
         } else {
             item->setBrush(toColor(render::regionColor(node.region)));
             item->setToolTip(tr("Region %1 on layer %2\n%3 pixels\nConnected regions: %4")
                                  .arg(node.region)
                                  .arg(node.layer)
-                                 .arg(locale.toString(qulonglong(m_layout->regionPixels[i])))
-                                 .arg(m_layout->regionNeighbors[i]));
+                                 .arg(locale.toString(qulonglong(node.pixels)))
+                                 .arg(node.neighbors));
+            item->idLabel() = addLabel(m_scene, item, QString::number(node.region), small,
+                                       QPointF(0.0, 0.0), LabelSide::Centre);
         }
-        item->setState(false, node.region != core::kNone && node.region == m_selected);
+        item->setState(false, !node.merged() && node.region == m_selected);
         m_scene->addItem(item);
         items[i] = item;
         m_nodes.push_back(item);
     }
-    for (const Layout::Edge& edge : edges) {
-        const LayoutNode& a = nodes[edge.a];
-        const LayoutNode& b = nodes[edge.b];
+    for (const Layout::Edge& edge : m_layout.edges) {
+        const Layout::Node& a = nodes[std::size_t(edge.a)];
+        const Layout::Node& b = nodes[std::size_t(edge.b)];
         const QPointF from(columnX(a.layer), a.y);
         const QPointF to(columnX(b.layer), b.y);
         const double bend = (to.x() - from.x()) * 0.5;
         QPainterPath path(from);
         path.cubicTo(from + QPointF(bend, 0.0), to - QPointF(bend, 0.0), to);
-        const double width = std::min(7.0, 0.8 + 1.2 * std::log10(double(edge.links)));
-        QPen pen(kEdge, width);
-        pen.setCapStyle(Qt::RoundCap);
-        QGraphicsPathItem* item = m_scene->addPath(path, pen);
+        const double width =
+            std::min(5.0, 0.8 + 0.9 * std::log10(double(std::max<std::uint64_t>(edge.links, 1))));
+        QGraphicsPathItem* item = m_scene->addPath(path, cosmeticPen(kEdge, width));
         item->setZValue(1.0);
         item->setToolTip(tr("%1 pixel links").arg(locale.toString(qulonglong(edge.links))));
-        items[edge.a]->edges().push_back(item);
-        items[edge.b]->edges().push_back(item);
+        items[std::size_t(edge.a)]->edges().push_back(item);
+        items[std::size_t(edge.b)]->edges().push_back(item);
     }
+    for (RegionGraphItem* item : items)
+        item->setState(false, item->region() != core::kNone && item->region() == m_selected);
 
-    const QRectF bounds = m_scene->itemsBoundingRect().adjusted(-8.0, -8.0, 8.0, 8.0);
-    m_scene->setSceneRect(bounds);
-    fitGraph();
+    // Room around the nodes for the labels (their size on screen is not known here). The
+    // scene reaches a graph's size beyond it on every side, so any part of the graph can be
+    // zoomed into and panned to the middle of the view.
+    const QRectF nodesBox(
+        QPointF(-Layout::kMaxRadius, top),
+        QPointF(columnX(std::max(1u, m_layout.layerCount)) + Layout::kMaxRadius, bottom));
+    m_graphRect = nodesBox.adjusted(-24.0, -28.0, 24.0, 12.0);
+    m_scene->setSceneRect(m_graphRect.adjusted(-m_graphRect.width(), -m_graphRect.height(),
+                                               m_graphRect.width(), m_graphRect.height()));
+}
+
+double RegionGraphPanel::fitScale() const {
+    const QRectF rect = m_graphRect;
+    const QSize size = m_view->viewport()->size();
+    if (rect.isEmpty() || size.isEmpty())
+        return 1.0;
+    return std::min(
+        {double(size.width()) / rect.width(), double(size.height()) / rect.height(), kMaxFitZoom});
+}
+
+double RegionGraphPanel::zoom() const {
+    return m_view->transform().m11() / fitScale();
+}
+
+void RegionGraphPanel::fitGraph() {
+    const double scale = fitScale();
+    m_view->setTransform(QTransform::fromScale(scale, scale));
+    m_view->centerOn(m_graphRect.center());
+    m_zoomed = false;
+    zoomBy(1.0, QPointF()); // labels for this zoom
+}
+
+void RegionGraphPanel::zoomBy(double factor, QPointF anchor) {
+    const double fit = fitScale();
+    const double current = m_view->transform().m11();
+    const double scale = std::clamp(current * factor, fit * kMinZoomOut, fit * kMaxZoomIn);
+    if (scale != current) {
+        // The scene point under the anchor stays there.
+        const QPointF scenePoint = m_view->mapToScene(anchor.toPoint());
+        m_view->setTransform(QTransform::fromScale(scale, scale));
+        const QPointF moved = QPointF(m_view->mapFromScene(scenePoint)) - anchor;
+        m_view->horizontalScrollBar()->setValue(m_view->horizontalScrollBar()->value() +
+                                                int(std::lround(moved.x())));
+        m_view->verticalScrollBar()->setValue(m_view->verticalScrollBar()->value() +
+                                              int(std::lround(moved.y())));
+        m_zoomed = true;
+    }
+    // Region ids on the nodes that are big enough on screen to hold them.
+    for (RegionGraphItem* item : m_nodes)
+        if (QGraphicsItem* label = item->idLabel())
+            label->setVisible(item->radius() * scale >= kNodeLabelRadius);
+    // Column labels as long as the columns' distance on screen leaves room for.
+    const double room = m_spacing * scale - 6.0;
+    for (QGraphicsSimpleTextItem* header : m_headers) {
+        const uint layer = header->data(1).toUInt();
+        const QString full = tr("Layer %1").arg(layer);
+        const QFontMetricsF metrics(header->font());
+        const QString text = metrics.horizontalAdvance(full) <= room || m_headers.size() == 1
+                                 ? full
+                                 : QString::number(layer);
+        if (header->text() != text) {
+            header->setText(text);
+            header->setPos(-header->boundingRect().width() / 2.0, header->pos().y());
+        }
+    }
+    for (QGraphicsItem* label : m_countLabels)
+        label->setVisible(m_headers.size() <= 1 ||
+                          label->childItems().front()->boundingRect().width() <= room);
 }
 
 void RegionGraphPanel::setStale(bool stale) {
@@ -497,35 +496,52 @@ void RegionGraphPanel::nodeClicked(RegionGraphItem* node) {
     m_selected = node->region();
     for (RegionGraphItem* item : m_nodes)
         item->setState(item == node || item->isUnderMouse(), item->region() == m_selected);
+    if (m_neighbourhood) {
+        // Not from inside the clicked item's own event: the scene is rebuilt.
+        QTimer::singleShot(0, this, &RegionGraphPanel::relayout);
+    }
     emit regionActivated(m_selected);
 }
 
-void RegionGraphPanel::fitGraph() {
-    const QRectF rect = m_scene->sceneRect();
-    const QSize size = m_view->viewport()->size();
-    if (rect.isEmpty() || size.isEmpty())
-        return;
-    const double scale = std::min(
-        {double(size.width()) / rect.width(), double(size.height()) / rect.height(), kMaxZoom});
-    m_view->setTransform(QTransform::fromScale(scale, scale));
-    m_view->centerOn(rect.center());
-}
-
 bool RegionGraphPanel::eventFilter(QObject* watched, QEvent* event) {
-    // The view also changes size when the summary above it gains or loses a line.
-    if (watched == m_view->viewport() && event->type() == QEvent::Resize) {
-        // Spread the columns to the view's shape; placing them again is cheap.
-        if (m_layout && std::abs(columnSpacing() - m_spacing) > 0.05 * m_spacing)
-            buildScene();
-        else
-            fitGraph();
+    if (watched == m_view) {
+        // F and Home fit the graph while it has the focus (elsewhere they frame the model).
+        if (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress) {
+            const auto* key = static_cast<QKeyEvent*>(event);
+            if ((key->key() == Qt::Key_F || key->key() == Qt::Key_Home) &&
+                key->modifiers() == Qt::NoModifier) {
+                event->accept();
+                if (event->type() == QEvent::KeyPress)
+                    fitGraph();
+                return true;
+            }
+        }
+    } else if (watched == m_view->viewport()) {
+        if (event->type() == QEvent::Wheel) {
+            const auto* wheel = static_cast<QWheelEvent*>(event);
+            const int eighths = wheel->angleDelta().y();
+            if (eighths != 0)
+                zoomBy(std::pow(kZoomPerNotch, double(eighths) / 120.0), wheel->position());
+            return true;
+        }
+        // The view also changes size when the summary above it gains or loses a line.
+        if (event->type() == QEvent::Resize && m_haveGraph) {
+            // Spread the columns to the view's shape; placing them again is cheap.
+            if (!m_zoomed && std::abs(columnSpacing() - m_spacing) > 0.05 * m_spacing) {
+                buildScene();
+                fitGraph();
+            } else if (!m_zoomed) {
+                fitGraph();
+            }
+        }
     }
     return QWidget::eventFilter(watched, event);
 }
 
 void RegionGraphPanel::showEvent(QShowEvent* event) {
     QWidget::showEvent(event);
-    fitGraph();
+    if (!m_zoomed)
+        fitGraph();
 }
 
 } // namespace ui

@@ -44,6 +44,8 @@
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/panels/segmentation_controls.h"
+#include "ui/shell/dock_size_keeper.h"
+#include "ui/shell/elided_label.h"
 #include "ui/shell/field_focus.h"
 #include "ui/shell/model_loader.h"
 #include "ui/shell/project_controller.h"
@@ -124,13 +126,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
 
-    m_modelInfo = new QLabel(this);
+    m_modelInfo = new ElidedLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);
     // Added after the model label (tests find that one first), but shown to its left.
-    m_layerInfo = new QLabel(this);
+    m_layerInfo = new ElidedLabel(this);
     m_layerInfo->setObjectName(QStringLiteral("layerInfo"));
     statusBar()->insertPermanentWidget(0, m_layerInfo);
-    m_brushInfo = new QLabel(this);
+    m_brushInfo = new ElidedLabel(this);
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
     m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
     statusBar()->insertPermanentWidget(1, m_brushInfo);
@@ -185,6 +187,7 @@ MainWindow::MainWindow(QWidget* parent)
     if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
         resize(1280, 800);
     restoreState(settings.value(kStateKey).toByteArray());
+    new DockSizeKeeper(this); // panels get their width back when the window grows again
 }
 
 MainWindow::~MainWindow() {

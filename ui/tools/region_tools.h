@@ -27,7 +27,7 @@ class Viewport;
  * The paper's region operations in the window: intentional pop-up (a click cycles through the
  * regions at a pixel), pop-up from the region graph, automatic pop-up while painting,
  * paint-to-hide, unhide, reset of the order, see-through pop-ups and layer-aware rotation.
- * Every change of the order is an OrderCommand on the undo stack; the Paint-to-Hide panel and
+ * Every change of the order is a step of the document's history; the Paint-to-Hide panel and
  * the viewport follow the document's order.
  */
 class RegionTools : public QObject {

@@ -7,6 +7,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
 #include <QPointingDevice>
+#include <QResizeEvent>
 #include <QTabletEvent>
 #include <QWheelEvent>
 
@@ -43,7 +44,8 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     : QOpenGLWidget(parent), m_document(document) {
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
-    setMinimumSize(160, 120);
+    // Room to see a model and paint on it at the smallest window size.
+    setMinimumSize(360, 240);
     // Hover moves draw the brush outline, a pen's too.
     setMouseTracking(true);
     setAttribute(Qt::WA_TabletTracking);
@@ -74,6 +76,8 @@ QSurfaceFormat Viewport::requiredFormat() {
 
 void Viewport::meshChanged() {
     m_meshDirty = true; // uploaded where the context is current
+    // A new model starts in its default view (or a project's): the toggle follows.
+    emit orthographicChanged(camera().orthographic);
     cameraMoved();
 }
 
@@ -101,7 +105,8 @@ bool Viewport::isOrthographic() const {
 void Viewport::frameAll() {
     if (!mesh())
         return;
-    m_document.camera().frame(m_document.mesh().bounds());
+    m_document.camera().frame(m_document.mesh().bounds(), m_document.viewAspect(),
+                              core::kFrameMargin);
     cameraMoved();
 }
 
@@ -117,6 +122,7 @@ void Viewport::setDisplay(render::LayerDisplay display) {
     if (m_composite.display == display)
         return;
     m_composite.display = display;
+    shownLayerChanged();
     update();
 }
 
@@ -125,7 +131,16 @@ void Viewport::setDisplayLayer(std::uint32_t layer) {
     if (m_composite.layer == layer)
         return;
     m_composite.layer = layer;
+    shownLayerChanged();
     update();
+}
+
+void Viewport::shownLayerChanged() {
+    // What is painted, filled or picked is what this view shows.
+    m_document.setShownLayer(
+        m_composite.display == render::LayerDisplay::SingleLayer ? m_composite.layer : 0);
+    if (m_hoverHighlight)
+        updateHoverHighlight();
 }
 
 void Viewport::setBoundariesVisible(bool visible) {
@@ -440,6 +455,13 @@ void Viewport::initializeGL() {
 
 void Viewport::resizeGL(int, int) {
     invalidateView();
+}
+
+void Viewport::resizeEvent(QResizeEvent* event) {
+    // The next model, and Frame All, are framed for this shape.
+    if (width() > 0 && height() > 0)
+        m_document.setViewAspect(float(width()) / float(height()));
+    QOpenGLWidget::resizeEvent(event);
 }
 
 void Viewport::uploadMeshIfDirty() {

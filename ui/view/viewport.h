@@ -73,7 +73,10 @@ public:
     /** OpenGL 4.5 core with a depth buffer: what render needs. Set it as the default format. */
     static QSurfaceFormat requiredFormat();
 
-    /** Call after replacing the document's mesh: uploads it at the next draw. */
+    /**
+     * Call after replacing the document's mesh: uploads it at the next draw and shows the
+     * camera's projection (orthographicChanged()).
+     */
     void meshChanged();
     /** The document's mesh, or null before the first model. */
     std::shared_ptr<const core::Mesh> mesh() const;
@@ -204,6 +207,7 @@ signals:
 protected:
     void initializeGL() override;
     void resizeGL(int w, int h) override;
+    void resizeEvent(QResizeEvent* event) override;
     void paintGL() override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
@@ -225,6 +229,8 @@ private:
     void proximityChanged(bool inProximity);
 
     QPointF toDevicePixels(QPointF logical) const;
+    /** The display or its layer changed: the document follows (Document::setShownLayer()). */
+    void shownLayerChanged();
     void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();

@@ -152,6 +152,12 @@ TEST(Script, ARecordedSessionReplaysToTheSamePicture) {
     ASSERT_TRUE(user.doc.fill({50.0f, 30.0f}, core::FillMode::Region, 0.1f, changes).ok());
     ASSERT_TRUE(user.doc.undo(changes));
     ASSERT_TRUE(user.doc.popUpAt({50.0f, 30.0f}) != core::kNone);
+    user.doc.setShownLayer(2); // the Single Layer view of the covered part
+    user.doc.brush().color = {0.1f, 0.9f, 0.9f, 1.0f};
+    ASSERT_TRUE(user.doc.beginStroke({{44.0f, 24.0f}, 1.0f}, changes).ok());
+    user.doc.moveStroke({{56.0f, 24.0f}, 1.0f}, changes);
+    user.doc.endStroke();
+    user.doc.setShownLayer(0);
     user.doc.brush().eraser = true;
     ASSERT_TRUE(user.doc.beginStroke({{20.0f, 30.0f}, 1.0f}, changes).ok());
     user.doc.moveStroke({{26.0f, 30.0f}, 1.0f}, changes);

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <cmath>
+
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/model/camera.h"
@@ -50,6 +53,44 @@ TEST(Camera, FrameFitsTheBoundsInsideTheView) {
         EXPECT_LE(p.y, 600.0f);
         EXPECT_GT(p.z, 0.0f);
     }
+}
+
+TEST(Camera, FrameFitsWideAndTallViewsWithAMargin) {
+    const core::Bounds box{glm::vec3(-3, -0.5f, -1), glm::vec3(5, 1, 0.5f)};
+    const glm::vec2 sizes[] = {{1600, 400}, {300, 1000}, {500, 500}};
+    for (const glm::vec2 size : sizes) {
+        for (const bool orthographic : {false, true}) {
+            core::Camera camera;
+            camera.orthographic = orthographic;
+            camera.frame(box, size.x / size.y, 0.1f);
+            for (const glm::vec2 turn : {glm::vec2(0, 0), glm::vec2(90, 0), glm::vec2(35, 60)}) {
+                core::Camera turned = camera;
+                turned.orbit(turn.x, turn.y);
+                const core::View view = turned.view(int(size.x), int(size.y));
+                // The sphere with its margin is in view, so the corners are well inside.
+                const float margin = 0.02f * std::min(size.x, size.y);
+                for (int i = 0; i < 8; ++i) {
+                    const glm::vec3 corner((i & 1) ? box.max.x : box.min.x,
+                                           (i & 2) ? box.max.y : box.min.y,
+                                           (i & 4) ? box.max.z : box.min.z);
+                    const glm::vec3 p = view.project(corner);
+                    EXPECT_GT(p.x, margin) << size.x << "x" << size.y << " " << orthographic;
+                    EXPECT_LT(p.x, size.x - margin) << size.x << "x" << size.y;
+                    EXPECT_GT(p.y, margin) << size.x << "x" << size.y;
+                    EXPECT_LT(p.y, size.y - margin) << size.x << "x" << size.y;
+                }
+            }
+        }
+    }
+    // Not needlessly far: in a square view the sphere with its margin just fits.
+    core::Camera camera;
+    camera.frame(box, 1.0f, 0.1f);
+    const float radius = glm::length(box.size()) * 0.5f;
+    EXPECT_NEAR(camera.distance * std::sin(glm::radians(22.5f)), radius * 1.1f, 1e-3f * radius);
+    // Bad input keeps a usable camera.
+    camera.frame(box, std::nanf(""), -1.0f);
+    EXPECT_TRUE(std::isfinite(camera.distance));
+    EXPECT_GT(camera.distance, radius);
 }
 
 TEST(Camera, OrbitAboutKeepsThePivotOnScreen) {
