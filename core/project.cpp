@@ -17,6 +17,7 @@
 
 #include "core/document.h"
 #include "core/gltf_export.h"
+#include "core/mesh_io_in_process.h"
 
 namespace core {
 
@@ -212,8 +213,10 @@ bool isGltfPath(const std::string& path) {
     return ext == ".glb" || ext == ".gltf";
 }
 
-Result<Project> load(const std::string& path, const ProgressFn& progress,
-                     const LoadLimits& limits) {
+using MeshLoader = Result<Mesh> (*)(const std::string&, const ProgressFn&, const LoadLimits&);
+
+Result<Project> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits,
+                     MeshLoader loadMeshWith) {
     Project project;
     std::vector<std::string> warnings;
     if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
@@ -233,7 +236,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
     }
     LoadLimits strict = limits;
     strict.requireTextures = project.state.has_value(); // they hold the painting
-    Result<Mesh> mesh = loadMesh(path, progress, strict);
+    Result<Mesh> mesh = loadMeshWith(path, progress, strict);
     if (!mesh)
         return Error{mesh.error()};
     project.mesh = std::move(mesh).value();
@@ -437,15 +440,29 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
                  "); painting goes into the automatic one"};
 }
 
-Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
-                            const LoadLimits& limits) {
+namespace {
+
+Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progress,
+                                const LoadLimits& limits, MeshLoader loadMeshWith) {
     try {
-        return load(path, progress, limits);
+        return load(path, progress, limits, loadMeshWith);
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to load the file"};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be loaded (" + std::string(e.what()) + ")"};
     }
+}
+
+} // namespace
+
+Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
+                            const LoadLimits& limits) {
+    return loadProjectWith(path, progress, limits, &loadMesh);
+}
+
+Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress,
+                                     const LoadLimits& limits) {
+    return loadProjectWith(path, progress, limits, &loadMeshInProcess);
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
