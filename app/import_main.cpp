@@ -7,7 +7,10 @@
 //   layerpaint-import [--max-file-bytes N] [--max-vertices N] [--max-triangles N]
 //                     [--max-image-pixels N] [--max-seconds S] [--require-textures]
 //                     [--image] -- FILE
+//   layerpaint-import --stdin    (the same arguments from standard input, each ended by a NUL,
+//                                 then an empty one: a process started before it is needed)
 //   layerpaint-import --probe OTHER_FILE -- FILE   (tests: what the sandbox allows, as text)
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -16,9 +19,12 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include <fcntl.h>
+#include <malloc.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -57,11 +63,61 @@ bool number(const char* text, std::uint64_t& out) {
     return true;
 }
 
-std::optional<Options> parse(int argc, char** argv) {
+/**
+ * A process started ahead waits for its request with its heap already grown and touched: a
+ * fresh process otherwise spends a large part of a load in page faults (about 30 % on a glTF of
+ * 150,000 vertices). Skipped when the request is there already (started for the load).
+ */
+void prepareWhileIdle() {
+    pollfd pfd{STDIN_FILENO, POLLIN, 0};
+    if (::poll(&pfd, 1, 0) != 0)
+        return;
+    // Blocks up to 32 MiB come from the heap (not fresh mappings) and freed memory stays there.
+    ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    ::mallopt(M_TRIM_THRESHOLD, 512 << 20);
+    constexpr std::size_t kBlock = 8u << 20;
+    std::vector<void*> blocks;
+    for (int k = 0; k < 8; ++k)
+        if (void* block = std::malloc(kBlock)) {
+            std::memset(block, 0, kBlock);
+            blocks.push_back(block);
+        }
+    for (void* block : blocks)
+        std::free(block);
+}
+
+/**
+ * The request from standard input: arguments ended by NULs, then an empty one. Nothing (the
+ * application ended without using this process) gives an empty list.
+ */
+std::vector<std::string> readRequest() {
+    std::vector<std::string> args;
+    std::string current, buffer(4096, '\0');
+    std::size_t total = 0;
+    while (true) {
+        const ssize_t n = ::read(STDIN_FILENO, buffer.data(), buffer.size());
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0 || (total += std::size_t(n)) > (1u << 20))
+            return {};
+        for (ssize_t k = 0; k < n; ++k) {
+            if (buffer[std::size_t(k)] != '\0') {
+                current.push_back(buffer[std::size_t(k)]);
+            } else if (current.empty()) {
+                return args;
+            } else {
+                args.push_back(std::exchange(current, {}));
+            }
+        }
+    }
+}
+
+std::optional<Options> parse(const std::vector<std::string>& argv) {
     Options o;
-    int i = 1;
+    const std::size_t argc = argv.size();
+    std::size_t i = 0;
     for (; i < argc; ++i) {
-        const std::string arg = argv[i];
+        const std::string& arg = argv[i];
         if (arg == "--") {
             ++i;
             break;
@@ -71,7 +127,7 @@ std::optional<Options> parse(int argc, char** argv) {
         } else if (arg == "--require-textures") {
             o.limits.requireTextures = true;
         } else if (i + 1 < argc) {
-            const char* value = argv[++i];
+            const char* value = argv[++i].c_str();
             std::uint64_t n = 0;
             if (arg == "--probe") {
                 o.probe = value;
@@ -138,7 +194,20 @@ int probe(const Options& o, const importer::SandboxReport& report) {
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::optional<Options> options = parse(argc, argv);
+    std::vector<std::string> args(argv + std::min(argc, 1), argv + argc);
+    if (args.size() == 1 && args[0] == "--stdin") {
+        prepareWhileIdle();
+        args = readRequest();
+        if (args.empty())
+            return 0;
+        // The request channel is done with; reads from here on see an empty input.
+        const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
+        if (null >= 0) {
+            ::dup2(null, STDIN_FILENO);
+            ::close(null);
+        }
+    }
+    const std::optional<Options> options = parse(args);
     if (!options)
         return usage("invalid arguments");
     const Options& o = *options;
@@ -170,5 +239,7 @@ int main(int argc, char** argv) {
     }
     // No destructors: freeing a large scene only costs time, and a heap that a parser damaged
     // cannot crash the process after its answer.
+    // The end of the output tells the application the answer is complete.
+    ::close(STDOUT_FILENO);
     ::_exit(sent ? 0 : 1);
 }

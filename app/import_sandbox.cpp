@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
-#include <csignal>
 #include <cstddef>
 #include <cstdint>
 
@@ -184,7 +183,9 @@ SandboxReport applySandbox(const SandboxOptions& options) {
     report.addressSpaceLimit = true;
 #endif
 
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    // No parent-death signal: it follows the thread that started the process, and a process
+    // started ahead outlives that thread. If the application dies, this process ends on the
+    // end of its input (still waiting), on its next write, or at its processor-time limit.
     report.noNewPrivs = ::prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) == 0;
     report.landlockAbi = landlockAbi();
     if (report.landlockAbi > 0 && report.noNewPrivs)

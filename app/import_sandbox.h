@@ -25,8 +25,8 @@ struct SandboxReport {
 
 /**
  * Limits (address space, processor time, no file writes, no core dumps, few descriptors), no
- * new privileges, death with the parent, Landlock file rules where the kernel has them (read
- * only: options.readable and the system's library folders) and a seccomp filter. Whatever the
+ * new privileges, Landlock file rules where the kernel has them (read only: options.readable
+ * and the system's library folders) and a seccomp filter. Whatever the
  * system lacks is skipped; the rest still applies.
  */
 SandboxReport applySandbox(const SandboxOptions& options);

@@ -2,7 +2,8 @@
 // loadMesh() and loadImageFile(): the file is parsed by layerpaint-import in a child process
 // (app/import_main.cpp). Its output (import_protocol.h) is read here under a wall-clock deadline,
 // checked against the limits and validated again; a crash, hang, abort or malformed output
-// becomes one error message, and the child is always killed and reaped before returning.
+// becomes one error message, and the child is always killed and reaped before returning. Every
+// file gets a fresh process; keepImporterReady() only starts the next one ahead of time.
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -11,14 +12,19 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <mutex>
 #include <new>
 #include <string>
 #include <system_error>
+#include <thread>
+#include <utility>
 #include <vector>
 
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -123,70 +129,163 @@ std::string describeExit(int status, double maxSeconds) {
     return "its output ended before the answer was complete";
 }
 
+/** A started importer waiting for its request on its standard input. */
+struct Process {
+    pid_t pid = -1;
+    int output = -1;  // its standard output (the read end, non-blocking)
+    int request = -1; // its standard input (a socket: a write never raises SIGPIPE here)
+    std::string program;
+};
+
+/** Kills p unless it has exited, reaps it and closes its descriptors. */
+void discard(Process& p) {
+    if (p.pid > 0) {
+        ::kill(p.pid, SIGKILL);
+        while (::waitpid(p.pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+    }
+    for (int fd : {p.output, p.request})
+        if (fd >= 0)
+            ::close(fd);
+    p = Process{};
+}
+
+/** Starts `program --stdin` without a shell: only standard input, output and error open. */
+Result<Process> spawnImporter(const std::string& program) {
+    Process p;
+    p.program = program;
+    int out[2], in[2];
+    if (::pipe2(out, O_CLOEXEC) != 0)
+        return Error{std::string("cannot start the importer (") + std::strerror(errno) + ")"};
+    if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, in) != 0) {
+        const int error = errno;
+        ::close(out[0]);
+        ::close(out[1]);
+        return Error{std::string("cannot start the importer (") + std::strerror(error) + ")"};
+    }
+    p.output = out[0];
+    p.request = in[0];
+    ::fcntl(p.output, F_SETFL, ::fcntl(p.output, F_GETFL) | O_NONBLOCK);
+    // Fewer wake-ups for big meshes; the system may refuse, which only costs speed.
+    ::fcntl(p.output, F_SETPIPE_SZ, 1 << 20);
+
+    posix_spawn_file_actions_t actions;
+    posix_spawnattr_t attributes;
+    ::posix_spawn_file_actions_init(&actions);
+    ::posix_spawnattr_init(&attributes);
+    ::posix_spawn_file_actions_adddup2(&actions, in[1], 0);
+    ::posix_spawn_file_actions_adddup2(&actions, out[1], 1);
+    // Its messages (a decoder's warning, a sanitizer's report) go where ours go, unless that is
+    // a regular file: the importer may not write files at all (RLIMIT_FSIZE 0 would kill it).
+    struct stat errStat {};
+    if (::fstat(STDERR_FILENO, &errStat) != 0 || S_ISREG(errStat.st_mode))
+        ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 34))
+    ::posix_spawn_file_actions_addclosefrom_np(&actions, 3);
+#endif
+    // Default dispositions and no blocked signals, whatever this process set up.
+    sigset_t none, defaults;
+    sigemptyset(&none);
+    sigfillset(&defaults);
+    sigdelset(&defaults, SIGKILL);
+    sigdelset(&defaults, SIGSTOP);
+    ::posix_spawnattr_setsigmask(&attributes, &none);
+    ::posix_spawnattr_setsigdefault(&attributes, &defaults);
+    ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+
+    std::string name = program, mode = "--stdin";
+    char* argv[] = {name.data(), mode.data(), nullptr};
+    const int error = ::posix_spawn(&p.pid, program.c_str(), &actions, &attributes, argv, environ);
+    ::posix_spawn_file_actions_destroy(&actions);
+    ::posix_spawnattr_destroy(&attributes);
+    ::close(out[1]);
+    ::close(in[1]);
+    if (error != 0) {
+        p.pid = -1;
+        discard(p);
+        return Error{"the importer " + program + " cannot be started (" + std::strerror(error) +
+                     ")"};
+    }
+    return p;
+}
+
+// One importer started ahead (keepImporterReady()), so that a load need not wait for the program
+// and its libraries to load. It serves one request like any other.
+std::mutex g_spareMutex;
+Process g_spare;
+bool g_keepSpare = false;
+
+/** The spare if it runs program and is still alive; else a Process without pid. */
+Process takeSpare(const std::string& program) {
+    std::lock_guard lock(g_spareMutex);
+    Process p = std::exchange(g_spare, Process{});
+    if (p.pid > 0 && p.program == program && ::waitpid(p.pid, nullptr, WNOHANG) == 0)
+        return p;
+    discard(p);
+    return {};
+}
+
+/** Starts a new spare if spares are wanted and none is waiting. */
+void refillSpare(const std::string& program) {
+    {
+        std::lock_guard lock(g_spareMutex);
+        if (!g_keepSpare || g_spare.pid > 0)
+            return;
+    }
+    Result<Process> p = spawnImporter(program);
+    if (!p)
+        return;
+    std::lock_guard lock(g_spareMutex);
+    if (g_spare.pid > 0)
+        discard(*p);
+    else
+        g_spare = std::move(*p);
+}
+
 /**
- * One run of the importer: spawned without a shell, its standard output read through a pipe
- * under a deadline, killed and reaped on destruction at the latest.
+ * One run of the importer: the spare or a new process gets the request, its standard output is
+ * read under a deadline, and it is killed and reaped on destruction at the latest.
  */
 class ImporterRun final : public importer::FrameSource {
 public:
     enum class Stop { None, Ended, TimedOut, Cancelled, Failed };
 
     ImporterRun(const ProgressFn& progress, double maxSeconds)
-        : m_progress(progress), m_maxSeconds(maxSeconds),
-          m_deadline(Clock::now() +
-                     std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(std::clamp(maxSeconds, 0.1, 1e7)))),
-          m_nextCheck(Clock::now() + kCheckInterval) {}
-
+        : m_progress(progress), m_maxSeconds(std::clamp(maxSeconds, 0.1, 1e7)) {}
     ~ImporterRun() override { finish(true); }
     ImporterRun(const ImporterRun&) = delete;
     ImporterRun& operator=(const ImporterRun&) = delete;
 
-    /** Starts program with args; an empty string, or why it could not start. */
+    /** Gives program the request args; an empty string, or why it could not start. */
     std::string start(const std::string& program, const std::vector<std::string>& args) {
-        int fds[2];
-        if (::pipe2(fds, O_CLOEXEC) != 0)
-            return std::string("cannot start the importer (") + std::strerror(errno) + ")";
-        m_fd = fds[0];
-        ::fcntl(m_fd, F_SETFL, ::fcntl(m_fd, F_GETFL) | O_NONBLOCK);
-        // Fewer wake-ups for big meshes; the system may refuse, which only costs speed.
-        ::fcntl(m_fd, F_SETPIPE_SZ, 1 << 20);
-
-        posix_spawn_file_actions_t actions;
-        posix_spawnattr_t attributes;
-        ::posix_spawn_file_actions_init(&actions);
-        ::posix_spawnattr_init(&attributes);
-        ::posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-        ::posix_spawn_file_actions_adddup2(&actions, fds[1], 1);
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 34))
-        ::posix_spawn_file_actions_addclosefrom_np(&actions, 3);
-#endif
-        // Default dispositions and no blocked signals, whatever this process set up.
-        sigset_t none, defaults;
-        sigemptyset(&none);
-        sigfillset(&defaults);
-        sigdelset(&defaults, SIGKILL);
-        sigdelset(&defaults, SIGSTOP);
-        ::posix_spawnattr_setsigmask(&attributes, &none);
-        ::posix_spawnattr_setsigdefault(&attributes, &defaults);
-        ::posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-
-        std::vector<char*> argv;
-        std::string name = program;
-        argv.push_back(name.data());
-        std::vector<std::string> owned = args;
-        for (std::string& a : owned)
-            argv.push_back(a.data());
-        argv.push_back(nullptr);
-        const int error =
-            ::posix_spawn(&m_pid, program.c_str(), &actions, &attributes, argv.data(), environ);
-        ::posix_spawn_file_actions_destroy(&actions);
-        ::posix_spawnattr_destroy(&attributes);
-        ::close(fds[1]);
-        if (error != 0) {
-            m_pid = -1;
-            return "the importer " + program + " cannot be started (" + std::strerror(error) + ")";
+        m_process = takeSpare(program);
+        if (m_process.pid <= 0) {
+            Result<Process> started = spawnImporter(program);
+            if (!started)
+                return started.error();
+            m_process = std::move(*started);
         }
+        const Clock::time_point now = Clock::now();
+        m_deadline = now + std::chrono::duration_cast<Clock::duration>(
+                               std::chrono::duration<double>(m_maxSeconds));
+        m_nextCheck = now + kCheckInterval;
+        // The arguments, each ended by a NUL, then an empty one. An importer that has ended
+        // already cannot take them; its exit status says why once its output is read.
+        std::string request;
+        for (const std::string& arg : args)
+            request.append(arg).push_back('\0');
+        request.push_back('\0');
+        for (std::size_t sent = 0; sent < request.size();) {
+            const ssize_t n = ::send(m_process.request, request.data() + sent,
+                                     request.size() - sent, MSG_NOSIGNAL);
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                break;
+            sent += static_cast<std::size_t>(n);
+        }
+        ::close(m_process.request);
+        m_process.request = -1;
         return {};
     }
 
@@ -195,7 +294,7 @@ public:
         while (size > 0) {
             if (!check())
                 return false;
-            const ssize_t n = ::read(m_fd, p, size);
+            const ssize_t n = ::read(m_process.output, p, size);
             if (n > 0) {
                 p += n;
                 size -= static_cast<std::size_t>(n);
@@ -211,7 +310,7 @@ public:
                 m_stop = Stop::Failed;
                 return false;
             }
-            pollfd pfd{m_fd, POLLIN, 0};
+            pollfd pfd{m_process.output, POLLIN, 0};
             const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(
                 std::min(m_nextCheck, m_deadline) - Clock::now());
             ::poll(&pfd, 1, static_cast<int>(std::max<long long>(1, wait.count())));
@@ -230,50 +329,42 @@ public:
     }
 
     /**
-     * Ends the run: kills the importer unless `kill` is false and it exits by itself before the
-     * deadline, and reaps it. Returns its wait status (0 if it never ran).
+     * Ends the run: kills the importer and reaps it. With `kill` false (it has answered) its
+     * output must end right after the answer, and the status is 0. Returns the wait status (0
+     * if it never ran).
      */
     int finish(bool kill) {
-        if (m_pid > 0) {
-            if (!kill) {
-                // It has answered: its output must end there, then it must exit.
-                std::uint8_t extra = 0;
-                if (read(&extra, 1))
-                    m_extraOutput = true;
-                while (!m_extraOutput && m_stop == Stop::Ended) {
-                    const pid_t r = ::waitpid(m_pid, &m_status, WNOHANG);
-                    if (r == m_pid) {
-                        m_pid = -1;
-                        break;
-                    }
-                    if (r < 0 && errno != EINTR)
-                        break;
-                    if (!check())
-                        break;
-                    ::usleep(200);
-                }
-            }
-            if (m_pid > 0) {
-                ::kill(m_pid, SIGKILL);
-                while (::waitpid(m_pid, &m_status, 0) < 0 && errno == EINTR) {
-                }
-                m_pid = -1;
+        if (m_process.pid > 0 && !kill) {
+            // It has answered: its output must end there (it closes it before exiting).
+            std::uint8_t extra = 0;
+            if (read(&extra, 1)) {
+                m_extraOutput = true;
+            } else if (m_stop == Stop::Ended) {
+                // Nothing more can come from it. Unmapping a large load's memory takes it a
+                // while: it is reaped on the side instead of waited for.
+                ::kill(m_process.pid, SIGKILL);
+                if (::waitpid(m_process.pid, nullptr, WNOHANG) != m_process.pid)
+                    std::thread([pid = m_process.pid] {
+                        while (::waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+                        }
+                    }).detach();
+                m_process.pid = -1;
+                m_status = 0;
             }
         }
-        if (m_fd >= 0) {
-            ::close(m_fd);
-            m_fd = -1;
+        if (m_process.pid > 0) {
+            ::kill(m_process.pid, SIGKILL);
+            while (::waitpid(m_process.pid, &m_status, 0) < 0 && errno == EINTR) {
+            }
+            m_process.pid = -1;
         }
+        discard(m_process);
         return m_status;
     }
 
-    Stop stop() const {
-        return m_stop;
-    }
+    Stop stop() const { return m_stop; }
     /** Whether it wrote more after its answer (finish(false) then kills it). */
-    bool extraOutput() const {
-        return m_extraOutput;
-    }
+    bool extraOutput() const { return m_extraOutput; }
 
 private:
     /** Every kCheckInterval: the deadline and cancel. False once either stops the run. */
@@ -296,8 +387,7 @@ private:
     Clock::time_point m_deadline;
     Clock::time_point m_nextCheck;
     double m_fraction = 0.0;
-    pid_t m_pid = -1;
-    int m_fd = -1;
+    Process m_process;
     int m_status = 0;
     Stop m_stop = Stop::None;
     bool m_extraOutput = false;
@@ -340,6 +430,7 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
         importer::readFrames(run, limits, [&run](double f) { return run.report(f); });
     const bool answered = received.mesh || received.image || received.error;
     const int status = run.finish(!answered || !received.malformed.empty());
+    refillSpare(*program); // now: while loading, it would compete for the processor
 
     const std::string stopped = "the importer stopped: ";
     if (received.cancelled || run.stop() == ImporterRun::Stop::Cancelled)
@@ -390,6 +481,15 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
     } catch (const std::exception& e) {
         return detail::fileError(path, e.what());
     }
+}
+
+void keepImporterReady() {
+    {
+        std::lock_guard lock(g_spareMutex);
+        g_keepSpare = true;
+    }
+    if (Result<std::string> program = findImporter())
+        refillSpare(*program);
 }
 
 Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits) {

@@ -47,6 +47,13 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress = {},
                       const LoadLimits& limits = {});
 
 /**
+ * Keeps one importer process started ahead of the next loadMesh()/loadImageFile(), so that a
+ * load does not wait for the program and its libraries to load (a few hundred milliseconds).
+ * For programs that load files again and again (the GUI); each file still gets its own process.
+ */
+void keepImporterReady();
+
+/**
  * Decodes an image file (PNG, JPEG, ...) to RGBA8 through OpenImageIO in the importer process, as
  * loadMesh() does a model. Returns the image or an Error "FILE: problem". Never throws.
  */
