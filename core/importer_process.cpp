@@ -483,12 +483,14 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
     }
 }
 
-void keepImporterReady() {
+void keepImporterReady(bool keep) {
     {
         std::lock_guard lock(g_spareMutex);
-        g_keepSpare = true;
+        g_keepSpare = keep;
+        if (!keep)
+            discard(g_spare);
     }
-    if (Result<std::string> program = findImporter())
+    if (Result<std::string> program = findImporter(); program && keep)
         refillSpare(*program);
 }
 

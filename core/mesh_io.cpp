@@ -90,7 +90,10 @@ std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
         for (glm::vec3& n : mesh.normals) {
             const float len = finite(n) ? glm::length(n) : 0.0f;
             if (std::isfinite(len) && len > 1e-12f) {
-                n /= len;
+                // Unit normals stay as they are: a second pass (the application checking what
+                // the importer process sent) changes nothing.
+                if (std::abs(len - 1.0f) > 1e-6f)
+                    n /= len;
             } else {
                 n = glm::vec3(std::numeric_limits<float>::quiet_NaN());
                 ++bad;

@@ -50,8 +50,9 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress = {},
  * Keeps one importer process started ahead of the next loadMesh()/loadImageFile(), so that a
  * load does not wait for the program and its libraries to load (a few hundred milliseconds).
  * For programs that load files again and again (the GUI); each file still gets its own process.
+ * keepImporterReady(false) ends the waiting one and stops doing so.
  */
-void keepImporterReady();
+void keepImporterReady(bool keep = true);
 
 /**
  * Decodes an image file (PNG, JPEG, ...) to RGBA8 through OpenImageIO in the importer process, as
