@@ -78,15 +78,18 @@ if [[ -x "$cli" ]]; then
         dd if="$project" of="${project%.glb}.json" bs=1 skip=20 count="$length" status=none
     done
 fi
-# The seed lists in a fixed order: libFuzzer reads a folder in the file system's order.
+# The seed lists in a fixed order (libFuzzer reads a folder in the file system's order), comma
+# separated as -seed_inputs=@FILE wants them.
 for name in loaders project; do
-    (cd "$work/seeds-$name" && ls | LC_ALL=C sort | sed "s|^|$PWD/|") >"$work/seeds-$name.txt"
+    (cd "$work/seeds-$name" && ls | LC_ALL=C sort | sed "s|^|$PWD/|" | paste -sd,) \
+        >"$work/seeds-$name.txt"
 done
-echo "seeds: $seeds model files, $(wc -l <"$work/seeds-project.txt") project inputs"
+echo "seeds: $seeds model files, $(ls "$work/seeds-project" | wc -l) project inputs"
 
 export LAYERPAINT_FUZZ_KNOWN_CRASHERS=$PWD/tests/data/crashers
 # Leaks inside Assimp's error paths are not ours to fix; everything else is checked.
-export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+# Allocations beyond 3 GiB fail the same way everywhere (not by what the machine can map).
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=3072
 export UBSAN_OPTIONS=print_stacktrace=1
 if [[ -n $runs ]]; then
     seed=1
@@ -95,6 +98,10 @@ else
     seed=${LAYERPAINT_FUZZ_SEED:-$((RANDOM * 32768 + RANDOM + 1))}
     echo "seed $seed, $seconds s per target (LAYERPAINT_FUZZ_SEED=$seed repeats the start)"
 fi
+# The targets' scratch files: the same path on every machine (see tests/fuzz/fuzz_input.h), so
+# one run at a time per machine.
+exec 9>/tmp/layerpaint-fuzz.lock
+flock -n 9 || { echo "another scripts/fuzz.sh is running on this machine" >&2; exit 1; }
 run() {
     local name=$1 target=${1#fuzz_} mode
     if [[ -n $runs ]]; then
@@ -104,7 +111,8 @@ run() {
         mode=(-max_total_time="$seconds" -fork=1 -ignore_crashes=1 -ignore_timeouts=1
             -ignore_ooms=1 "$work/seeds-$target")
     fi
-    "build/fuzz/tests/fuzz/$name" -seed="$seed" -timeout=20 -rss_limit_mb=3072 -max_len=65536 \
+    LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-$target \
+        "build/fuzz/tests/fuzz/$name" -seed="$seed" -timeout=20 -rss_limit_mb=3072 -max_len=65536 \
         -close_fd_mask=1 -print_final_stats=1 -artifact_prefix="$work/artifacts/$name-" \
         "$work/corpus-$target" "${mode[@]}" >"$work/$name.log" 2>&1
 }

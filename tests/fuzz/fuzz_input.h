@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Shared by the fuzz targets: the loaders read files, so each input is written to a scratch file
-// (in memory where /dev/shm exists) with the extension that picks the loader.
+// with the extension that picks the loader.
 #pragma once
 
 #include <algorithm>
@@ -23,14 +23,15 @@ namespace fuzz {
 
 /** Writes size bytes to a per-process scratch file ending in extension; its path. */
 inline std::string writeInput(const std::uint8_t* data, std::size_t size, const char* extension) {
+    // One fixed folder (LAYERPAINT_FUZZ_SCRATCH, set by scripts/fuzz.sh): paths reach the
+    // loaders' comparisons, whose operands feed libFuzzer's mutations, so a path that differs
+    // between runs or machines (a process id, a home folder) would make runs differ.
     static const std::string folder = [] {
-        std::filesystem::path base = std::filesystem::exists("/dev/shm")
-                                         ? std::filesystem::path("/dev/shm")
-                                         : std::filesystem::temp_directory_path();
-        // The same length whatever the process id: paths reach the loaders' comparisons.
-        char name[64];
-        std::snprintf(name, sizeof name, "layerpaint-fuzz-%010d", static_cast<int>(::getpid()));
-        base /= name;
+        const char* fixed = std::getenv("LAYERPAINT_FUZZ_SCRATCH");
+        std::filesystem::path base = fixed != nullptr && *fixed != '\0'
+                                         ? std::filesystem::path(fixed)
+                                         : std::filesystem::temp_directory_path() /
+                                               ("layerpaint-fuzz-" + std::to_string(::getpid()));
         std::filesystem::create_directories(base);
         return base.string();
     }();
