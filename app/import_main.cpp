@@ -134,7 +134,7 @@ std::optional<Options> parse(const std::vector<std::string>& argv) {
             } else if (arg == "--max-seconds") {
                 char* end = nullptr;
                 o.limits.maxSeconds = std::strtod(value, &end);
-                if (end == value || *end != '\0' || !(o.limits.maxSeconds > 0.0))
+                if (end == value || *end != '\0' || !(o.limits.maxSeconds >= 0.0))
                     return std::nullopt;
             } else if (!number(value, n)) {
                 return std::nullopt;
@@ -214,7 +214,7 @@ int main(int argc, char** argv) {
 
     importer::SandboxOptions sandbox;
     sandbox.readable = readablePaths(o);
-    sandbox.maxSeconds = o.limits.maxSeconds;
+    sandbox.maxSeconds = core::detail::importSeconds(o.file, o.limits);
     const importer::SandboxReport report = importer::applySandbox(sandbox);
     if (o.probe)
         return probe(o, report);

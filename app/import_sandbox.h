@@ -11,7 +11,7 @@ struct SandboxOptions {
     /** Files and folders (everything beneath) the process may read; nothing else of the user's. */
     std::vector<std::string> readable;
     /** Processor seconds before the kernel stops the process. */
-    double maxSeconds = 600.0;
+    double maxSeconds = 30.0;
 };
 
 /** What could be applied on this system. */

@@ -417,13 +417,15 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
     Result<std::string> program = findImporter();
     if (!program)
         return detail::fileError(path, program.error());
-    std::vector<std::string> args = limitArgs(limits);
+    LoadLimits resolved = limits;
+    resolved.maxSeconds = detail::importSeconds(path, limits);
+    std::vector<std::string> args = limitArgs(resolved);
     if (mode != nullptr)
         args.emplace_back(mode);
     args.emplace_back("--");
     args.push_back(path);
 
-    ImporterRun run(progress, limits.maxSeconds);
+    ImporterRun run(progress, resolved.maxSeconds);
     if (std::string problem = run.start(*program, args); !problem.empty())
         return detail::fileError(path, problem);
     importer::Received received =
@@ -437,17 +439,31 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
         return detail::fileError(path, "cancelled");
     if (run.stop() == ImporterRun::Stop::TimedOut)
         return detail::fileError(path, stopped + "it did not finish within " +
-                                           secondsText(limits.maxSeconds));
+                                           secondsText(resolved.maxSeconds));
     if (!received.malformed.empty())
         return detail::fileError(path, stopped + received.malformed);
     if (run.extraOutput())
         return detail::fileError(path, stopped + "it sent more after its answer");
     if (!answered || status != 0)
-        return detail::fileError(path, stopped + describeExit(status, limits.maxSeconds));
+        return detail::fileError(path, stopped + describeExit(status, resolved.maxSeconds));
     return received;
 }
 
 } // namespace
+
+namespace detail {
+
+double importSeconds(const std::string& path, const LoadLimits& limits) {
+    if (limits.maxSeconds > 0.0)
+        return limits.maxSeconds;
+    // A parser that hangs on a few hundred bytes is found in half a minute; a large file gets
+    // time to load.
+    std::error_code ec;
+    const std::uintmax_t bytes = fs::file_size(path, ec);
+    return 30.0 + (ec ? 0.0 : double(bytes) / double(1 << 20));
+}
+
+} // namespace detail
 
 Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
                       const LoadLimits& limits) {

@@ -24,9 +24,10 @@ struct LoadLimits {
     bool requireTextures = false;
     /**
      * Wall-clock seconds a file may take in the importer process (its processor time is capped
-     * the same); longer is an error. What it may send back is capped from the sizes above.
+     * the same); longer is an error. 0: 30 s plus 1 s per MiB of the file. What the importer may
+     * send back is capped from the sizes above.
      */
-    double maxSeconds = 600.0;
+    double maxSeconds = 0.0;
 };
 
 /**

@@ -27,6 +27,9 @@ Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& 
                                      const LoadLimits& limits = {});
 
 namespace detail {
+/** The importer's deadline for path: limits.maxSeconds, or 30 s plus 1 s per MiB of the file. */
+double importSeconds(const std::string& path, const LoadLimits& limits);
+
 /** "<path>: <problem>" on one line (line breaks become spaces, no final full stop). */
 Error fileError(const std::string& path, std::string problem);
 

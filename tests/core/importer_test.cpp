@@ -172,7 +172,7 @@ std::vector<Misbehaviour> misbehaviours() {
         {"bus", "kill -BUS $$\n", "the importer stopped: it crashed (bus error)"},
         {"abort", "kill -ABRT $$\n", "the importer stopped: it aborted"},
         {"cpu", "kill -XCPU $$\n",
-         "the importer stopped: it used more than 600 seconds of processor time"},
+         "the importer stopped: it used more than 30 seconds of processor time"},
         {"status", "exit 3\n", "the importer stopped: it exited with status 3"},
         {"silent", "exit 0\n",
          "the importer stopped: its output ended before the answer was complete"},
