@@ -26,5 +26,5 @@ cmake --preset asan
 cmake --build --preset asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=0 ctest --preset asan -j"$jobs"
 
-echo "== fuzzing (libFuzzer, 200000 runs per target from seed 1, both at once)"
-bash scripts/fuzz.sh --runs 200000
+echo "== fuzzing (libFuzzer, 30000 runs per target from seed 1, both at once)"
+bash scripts/fuzz.sh --runs 30000
