@@ -94,4 +94,10 @@ int runExport(const ExportArgs& args);
 /** `bench [MODELS]`: Table 2 timings and the plain-pass baseline as JSON; the exit code. */
 int runBench(const BenchArgs& args);
 
+/**
+ * `bench-load`: medians of loading each model in this process and through the importer process,
+ * started for the load and started ahead (as the GUI does), as JSON on standard output.
+ */
+int runBenchLoad(const std::vector<std::string>& models, int runs);
+
 } // namespace cli

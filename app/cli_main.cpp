@@ -105,6 +105,16 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     benchCommand->add_option("--json", bench.jsonOut, "Also write the results to this file");
 
+    std::vector<std::string> loadModels;
+    int loadRuns = 9;
+    CLI::App* benchLoadCommand = app.add_subcommand(
+        "bench-load", "Time loading models in this process and through the importer process "
+                      "(medians)");
+    benchLoadCommand->add_option("MODELS", loadModels, "Model files")->required();
+    benchLoadCommand->add_option("--runs", loadRuns, "Measured runs per case")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -120,5 +130,7 @@ int main(int argc, char** argv) {
         return cli::runExport(exportArgs);
     if (benchCommand->parsed())
         return cli::runBench(bench);
+    if (benchLoadCommand->parsed())
+        return cli::runBenchLoad(loadModels, loadRuns);
     return 1;
 }

@@ -1,16 +1,36 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Fuzzes the model loaders and the project reader with libFuzzer for a bounded time (the two
-# targets side by side), starting from a seed corpus made here from Debian's assimp-testmodels
-# (and, when the dev build exists, projects written by its layerpaint-cli). Any crash, sanitizer
-# report, timeout or out-of-memory fails. Inputs that fail are kept in build/fuzz/run/artifacts.
-# Usage: scripts/fuzz.sh [SECONDS]   (per target, default 40)
-# The random seed is fixed (LAYERPAINT_FUZZ_SEED, default 1) so a CI run can be repeated; set it
-# to explore other paths.
+# Fuzzes the model loaders and the project reader with libFuzzer (the two targets side by side),
+# as the importer process runs them (in process, ASan/UBSan), starting from a seed corpus made
+# here from Debian's assimp-testmodels (and, when the dev build exists, projects written by its
+# layerpaint-cli). Any crash, sanitizer report, timeout or out-of-memory fails.
+#
+#   scripts/fuzz.sh --runs N      CI: N inputs per target from seed 1 and a seed corpus listed in
+#                                 sorted order (no wall-clock budget); then the regression corpus
+#                                 (tests/data/crashers) and any finding through the dev build's
+#                                 layerpaint-cli, out of process: each must give a clean error. A
+#                                 finding fails if it is in our code or the importer process does
+#                                 not contain it; one in a third-party parser is reported (add it
+#                                 to tests/data/crashers).
+#   scripts/fuzz.sh [SECONDS]     exploration: SECONDS per target (default 1800), seed
+#                                 LAYERPAINT_FUZZ_SEED (default: random, printed). What it finds is
+#                                 in build/fuzz/run/artifacts and is replayed through the dev
+#                                 build's layerpaint-cli: a crash there is one the importer process
+#                                 turns into an error (add it to tests/data/crashers, see README).
+#
+# Inputs of tests/data/crashers are skipped by the targets (LAYERPAINT_FUZZ_KNOWN_CRASHERS): they
+# crash third-party parsers, which only the importer process can contain.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-40}
+runs=
+seconds=1800
+case ${1:-} in
+    --runs) runs=${2:?--runs needs a number} ;;
+    '') ;;
+    *) seconds=$1 ;;
+esac
 models=${LAYERPAINT_ASSIMP_MODELS:-/usr/share/assimp/models}
+cli=build/dev/app/layerpaint-cli
 
 echo "== fuzz build (clang, libFuzzer, ASan/UBSan)"
 cmake --preset fuzz >/dev/null
@@ -34,17 +54,16 @@ while IFS= read -r -d '' file; do
         off) selector=5 ;;
         *) continue ;;
     esac
-    name=$(printf '%s' "$file" | md5sum | cut -c1-16)
+    name=$(printf '%s' "${file#"$models"/}" | md5sum | cut -c1-16)
     { printf "\\x$(printf %02x "$selector")"; cat "$file"; } >"$work/seeds-loaders/$name"
     seeds=$((seeds + 1))
 done < <(find "$models" -type f -size -64k \( -iname '*.glb' -o -iname '*.gltf' -o -iname '*.obj' \
-    -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) -print0 2>/dev/null)
+    -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) -print0 2>/dev/null | sort -z)
 
 # Seeds for fuzz_project: binary glTF files, LayerPaint projects and their JSON.
 while IFS= read -r -d '' file; do
-    cp "$file" "$work/seeds-project/$(printf '%s' "$file" | md5sum | cut -c1-16).glb"
-done < <(find "$models" -type f -iname '*.glb' -size -256k -print0 2>/dev/null)
-cli=build/dev/app/layerpaint-cli
+    cp "$file" "$work/seeds-project/$(printf '%s' "${file#"$models"/}" | md5sum | cut -c1-16).glb"
+done < <(find "$models" -type f -iname '*.glb' -size -256k -print0 2>/dev/null | sort -z)
 if [[ -x "$cli" ]]; then
     printf '%s' '{"size":"96x72","target":{"kind":"texture","resolution":512},"operations":[
         {"op":"set-brush","color":"#2060ff","radius":6},{"op":"stroke","points":[[30,30],[60,40]]}]}' \
@@ -56,22 +75,49 @@ if [[ -x "$cli" ]]; then
         --out "$work/seeds-project/row-texture.glb" >/dev/null
     "$cli" paint builtin:hexring --cpu --script "$work/colors.json" \
         --out "$work/seeds-project/ring-colors.glb" >/dev/null
+    rm -f "$work"/seeds-project/*.bak
     for project in "$work/seeds-project/row-texture.glb" "$work/seeds-project/ring-colors.glb"; do
         length=$(od -An -t u4 -j 12 -N 4 "$project" | tr -d ' ')
         dd if="$project" of="${project%.glb}.json" bs=1 skip=20 count="$length" status=none
     done
 fi
+# The seed lists in a fixed order (libFuzzer reads a folder in the file system's order), comma
+# separated as -seed_inputs=@FILE wants them.
+for name in loaders project; do
+    (cd "$work/seeds-$name" && ls | LC_ALL=C sort | sed "s|^|$PWD/|" | paste -sd,) \
+        >"$work/seeds-$name.txt"
+done
 echo "seeds: $seeds model files, $(ls "$work/seeds-project" | wc -l) project inputs"
 
+export LAYERPAINT_FUZZ_KNOWN_CRASHERS=$PWD/tests/data/crashers
 # Leaks inside Assimp's error paths are not ours to fix; everything else is checked.
-export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1
+# Allocations beyond 3 GiB fail the same way everywhere (not by what the machine can map).
+export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=3072
 export UBSAN_OPTIONS=print_stacktrace=1
+if [[ -n $runs ]]; then
+    seed=1
+    echo "seed $seed, $runs runs per target"
+else
+    seed=${LAYERPAINT_FUZZ_SEED:-$((RANDOM * 32768 + RANDOM + 1))}
+    echo "seed $seed, $seconds s per target (LAYERPAINT_FUZZ_SEED=$seed repeats the start)"
+fi
+# The targets' scratch files: the same path on every machine (see tests/fuzz/fuzz_input.h), so
+# one run at a time per machine.
+exec 9>/tmp/layerpaint-fuzz.lock
+flock -n 9 || { echo "another scripts/fuzz.sh is running on this machine" >&2; exit 1; }
 run() {
-    local name=$1
-    "build/fuzz/tests/fuzz/$name" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=3072 \
-        -max_len=65536 -close_fd_mask=1 -print_final_stats=1 -seed="${LAYERPAINT_FUZZ_SEED:-1}" \
-        -artifact_prefix="$work/artifacts/$name-" "$work/corpus-${name#fuzz_}" \
-        "$work/seeds-${name#fuzz_}" >"$work/$name.log" 2>&1
+    local name=$1 target=${1#fuzz_} mode
+    if [[ -n $runs ]]; then
+        mode=(-runs="$runs" -seed_inputs=@"$work/seeds-$target.txt")
+    else
+        # Goes on after a finding (in child processes) to use the whole time.
+        mode=(-max_total_time="$seconds" -fork=1 -ignore_crashes=1 -ignore_timeouts=1
+            -ignore_ooms=1 "$work/seeds-$target")
+    fi
+    LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-$target \
+        "build/fuzz/tests/fuzz/$name" -seed="$seed" -timeout=20 -rss_limit_mb=3072 -max_len=65536 \
+        -close_fd_mask=1 -print_final_stats=1 -artifact_prefix="$work/artifacts/$name-" \
+        "$work/corpus-$target" "${mode[@]}" >"$work/$name.log" 2>&1
 }
 status=0
 run fuzz_loaders &
@@ -80,16 +126,92 @@ run fuzz_project &
 project=$!
 wait "$loaders" || status=1
 wait "$project" || status=1
+# Where a finding failed: the innermost stack frame that is not the sanitizer's, libFuzzer's or
+# the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
+# in a third-party parser, which only the importer process can contain (checked below).
+origin() {
+    awk '/ERROR: |runtime error|Test unit written/ { on = 1 } on && /#[0-9]+ 0x[0-9a-f]+ in / {
+        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x/) next
+        print ($0 ~ /\/(core|tests\/fuzz)\/[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
+}
 for name in fuzz_loaders fuzz_project; do
     echo "== $name"
-    grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb)' \
-        "$work/$name.log" || true
+    grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|INFO: fuzzed for)' \
+        "$work/$name.log" | tail -n 4 || true
     if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|runtime error|Test unit written' \
         "$work/$name.log"; then
-        status=1
-        tail -n 60 "$work/$name.log"
+        where=$(origin "$work/$name.log")
+        echo "finding in ${where:-unknown} code:"
+        grep -E 'ERROR: |runtime error|#[0-9]+ 0x[0-9a-f]+ in ' "$work/$name.log" | head -n 30
+        # In CI a finding in our code fails; one in a third-party parser fails only if the
+        # importer process does not contain it (below): it then belongs in tests/data/crashers.
+        [[ -n $runs && $where != third-party ]] && status=1
     fi
 done
+# Exploring, findings are expected (third-party parsers): what counts is whether the
+# application contains them, checked below.
+[[ -z $runs ]] && status=0
+
+# A file through the public, out-of-process loader: a one-line error or a model, never a crash.
+# Prints the outcome; returns 1 if the CLI itself died or printed more than one line.
+contained() {
+    local file=$1 out code
+    out=$("$cli" info "$file" 2>&1 >/dev/null) && code=0 || code=$?
+    if ((code >= 128)) || [[ $(printf '%s' "$out" | wc -l) -gt 0 ]]; then
+        echo "NOT CONTAINED (exit $code): $file: $out"
+        return 1
+    fi
+    echo "  ${out:-loaded}"
+}
+if [[ -x $cli ]]; then
+    if [[ -n $runs ]]; then
+        echo "== regression corpus through $cli (importer process)"
+        while IFS= read -r -d '' file; do
+            contained "$file" || status=1
+        done < <(find tests/data/crashers -type f -print0 | sort -z)
+    fi
+    # What the fuzzers found, as the application would open it.
+    extensions=(glb gltf obj ply stl off)
+    found=0 turned=0
+    for artifact in "$work"/artifacts/fuzz_loaders-*; do
+        [[ -f $artifact ]] || continue
+        selector=$(od -An -t u1 -N 1 "$artifact" | tr -d ' ')
+        file="$work/replay-$(basename "$artifact").${extensions[selector % 6]}"
+        tail -c +2 "$artifact" >"$file"
+        found=$((found + 1))
+        if out=$(contained "$file"); then
+            [[ $out == *"the importer stopped"* ]] && turned=$((turned + 1))
+            echo "$out"
+        else
+            echo "$out"
+            status=1
+        fi
+    done
+    for artifact in "$work"/artifacts/fuzz_project-*; do
+        [[ -f $artifact ]] || continue
+        found=$((found + 1))
+        if [[ $(head -c 4 "$artifact") == glTF ]]; then
+            file="$work/replay-$(basename "$artifact").glb"
+            cp "$artifact" "$file"
+            out=$("$cli" export "$file" --out "$work/replay-out.glb" 2>&1 >/dev/null) && code=0 ||
+                code=$?
+            if ((code >= 128)); then
+                echo "NOT CONTAINED (exit $code): $file: $out"
+                status=1
+            else
+                [[ $out == *"the importer stopped"* ]] && turned=$((turned + 1))
+                echo "  ${out:-loaded}"
+            fi
+        else
+            echo "IN PROCESS: $artifact (project JSON, read by the application itself)"
+            status=1
+        fi
+    done
+    echo "$found inputs failed in process; the importer process turned $turned of them (crashes" \
+        "or hangs) into errors"
+else
+    echo "(no dev build: the regression corpus and the findings are not replayed out of process)"
+fi
 if ((status != 0)); then
     echo "fuzzing found a problem: see $work/*.log and $work/artifacts" >&2
 fi

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// In-memory image decoding through OpenImageIO.
+// Image decoding through OpenImageIO, from memory or from a file.
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <filesystem>
+#include <fstream>
 #include <iterator>
 #include <string>
 #include <string_view>
@@ -15,6 +17,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include "core/io/mesh_io.h"
+#include "core/io/mesh_io_in_process.h"
 
 namespace core {
 
@@ -220,6 +223,35 @@ Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std:
         return Error{label + ": cannot decode the image (" + oneLine(e.what()) + ")"};
     } catch (...) {
         return Error{label + ": cannot decode the image"};
+    }
+}
+
+Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits) {
+    namespace fs = std::filesystem;
+    if (path.empty())
+        return Error{"(no file name): no file was given"};
+    std::error_code ec;
+    const fs::file_status st = fs::status(path, ec);
+    if (!fs::exists(st))
+        return Error{path + ": does not exist"};
+    if (!fs::is_regular_file(st))
+        return Error{path + ": is not a regular file"};
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec)
+        return Error{path + ": cannot be read (" + ec.message() + ")"};
+    if (size == 0)
+        return Error{path + ": is empty"};
+    if (size > limits.maxFileBytes)
+        return Error{path + ": is too large (" + std::to_string(size) + " bytes; the limit is " +
+                     std::to_string(limits.maxFileBytes) + ")"};
+    try {
+        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
+        std::ifstream in(path, std::ios::binary);
+        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
+            return Error{path + ": cannot be read"};
+        return decodeImage(bytes.data(), bytes.size(), path, limits);
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to load the file"};
     }
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// loadMesh: checks the file, dispatches to the glTF or Assimp loader, then repairs what can be
-// repaired (normals, stray UV/color values) and validates the result.
+// loadMeshInProcess: checks the file, dispatches to the glTF or Assimp loader, then repairs what
+// can be repaired (normals, stray UV/color values) and validates the result.
 #include "core/io/mesh_io.h"
 
 #include <algorithm>
@@ -13,12 +13,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/io/mesh_io_in_process.h"
 #include "core/model/builtin_models.h"
 
 namespace core {
 
 // The format loaders (mesh_io_gltf.cpp, mesh_io_assimp.cpp). `file` is canonical; errors carry
-// only the problem, loadMesh() prefixes the path. Both leave normals to finishMesh() below.
+// only the problem, loadMeshInProcess() prefixes the path. Both leave normals to finishMesh()
+// below.
 namespace detail {
 Result<Mesh> loadGltf(const std::filesystem::path& file, const ProgressFn& progress,
                       const LoadLimits& limits);
@@ -34,7 +36,14 @@ std::string toLower(std::string s) {
     return s;
 }
 
-/** Error messages are one line: "<path>: <problem>". */
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+} // namespace
+
+namespace detail {
+
 Error fileError(const std::string& path, std::string problem) {
     for (char& c : problem)
         if (c == '\n' || c == '\r' || c == '\t')
@@ -44,11 +53,6 @@ Error fileError(const std::string& path, std::string problem) {
     return Error{path + ": " + (problem.empty() ? std::string("cannot be loaded") : problem)};
 }
 
-bool finite(const glm::vec3& v) {
-    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
-/** Normals, materials and stray values; returns an empty string or the problem. */
 std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
     if (mesh.positions.size() > limits.maxVertices)
         return "too many vertices (" + std::to_string(mesh.positions.size()) + ")";
@@ -86,7 +90,10 @@ std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
         for (glm::vec3& n : mesh.normals) {
             const float len = finite(n) ? glm::length(n) : 0.0f;
             if (std::isfinite(len) && len > 1e-12f) {
-                n /= len;
+                // Unit normals stay as they are: a second pass (the application checking what
+                // the importer process sent) changes nothing.
+                if (std::abs(len - 1.0f) > 1e-6f)
+                    n /= len;
             } else {
                 n = glm::vec3(std::numeric_limits<float>::quiet_NaN());
                 ++bad;
@@ -123,13 +130,7 @@ std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
     return mesh.validate();
 }
 
-Result<Mesh> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits) {
-    if (path.rfind(kBuiltinPrefix, 0) == 0) {
-        Result<Mesh> builtin = makeBuiltinModel(path.substr(std::string(kBuiltinPrefix).size()));
-        if (!builtin && builtin.error().rfind(path, 0) != 0)
-            return fileError(path, builtin.error());
-        return builtin;
-    }
+Result<std::filesystem::path> checkModelFile(const std::string& path, const LoadLimits& limits) {
     if (path.empty())
         return Error{"(no file name): no file was given"};
 
@@ -154,9 +155,30 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
         return fileError(path, "is too large (" + std::to_string(size) + " bytes; the limit is " +
                                    std::to_string(limits.maxFileBytes) + ")");
     // Canonical: external files are resolved inside the real folder of the model.
-    const fs::path file = fs::canonical(given, ec);
+    fs::path file = fs::canonical(given, ec);
     if (ec)
         return fileError(path, "cannot be read (" + ec.message() + ")");
+    return file;
+}
+
+} // namespace detail
+
+namespace {
+
+using detail::fileError;
+
+Result<Mesh> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits) {
+    if (path.rfind(kBuiltinPrefix, 0) == 0) {
+        Result<Mesh> builtin = makeBuiltinModel(path.substr(std::string(kBuiltinPrefix).size()));
+        if (!builtin && builtin.error().rfind(path, 0) != 0)
+            return fileError(path, builtin.error());
+        return builtin;
+    }
+    Result<std::filesystem::path> checked = detail::checkModelFile(path, limits);
+    if (!checked)
+        return Error{checked.error()};
+    const std::filesystem::path& file = *checked;
+    const std::filesystem::path given(path);
 
     if (!reportProgress(progress, 0.0))
         return fileError(path, "cancelled");
@@ -167,7 +189,7 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
     if (!result)
         return fileError(path, result.error());
     Mesh mesh = std::move(result).value();
-    if (const std::string problem = finishMesh(mesh, limits); !problem.empty())
+    if (const std::string problem = detail::finishMesh(mesh, limits); !problem.empty())
         return fileError(path, problem);
     if (!reportProgress(progress, 1.0))
         return fileError(path, "cancelled");
@@ -176,8 +198,8 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
 
 } // namespace
 
-Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
-                      const LoadLimits& limits) {
+Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progress,
+                               const LoadLimits& limits) {
     try {
         return load(path, progress, limits);
     } catch (const std::bad_alloc&) {

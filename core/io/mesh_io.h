@@ -22,6 +22,12 @@ struct LoadLimits {
      * with a warning (a project's textures hold the painting).
      */
     bool requireTextures = false;
+    /**
+     * Wall-clock seconds a file may take in the importer process (its processor time is capped
+     * the same); longer is an error. 0: 30 s plus 1 s per MiB of the file. What the importer may
+     * send back is capped from the sizes above.
+     */
+    double maxSeconds = 0.0;
 };
 
 /**
@@ -29,13 +35,36 @@ struct LoadLimits {
  * or any format Assimp reads (OBJ, PLY, STL, OFF, ...). The default scene is flattened with node
  * transforms; points and lines are skipped with a warning.
  *
- * Returns the mesh, or an Error whose message names the file and the problem. Never throws.
- * A cancelled load (progress returned false) returns an Error "…: cancelled".
+ * Files are parsed in a short-lived importer process (layerpaint-import: found through the
+ * environment variable LAYERPAINT_IMPORTER, beside the running program, or in
+ * ../libexec/layerpaint/ from it) with resource limits and read access to the model's folder
+ * only; what it sends back is checked again here. Built-in models are made in this process.
+ *
+ * Returns the mesh, or an Error whose message names the file and the problem; an importer that
+ * crashes, hangs or exceeds a limit gives "FILE: the importer stopped: …". Never throws.
+ * A cancelled load (progress returned false) ends the importer and returns "…: cancelled".
  */
 Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress = {},
                       const LoadLimits& limits = {});
 
-/** Decodes an image file held in memory (PNG, JPEG, ...) to RGBA8 through OpenImageIO. */
+/**
+ * Keeps one importer process started ahead of the next loadMesh()/loadImageFile(), so that a
+ * load does not wait for the program and its libraries to load (a few hundred milliseconds).
+ * For programs that load files again and again (the GUI); each file still gets its own process.
+ * keepImporterReady(false) ends the waiting one and stops doing so.
+ */
+void keepImporterReady(bool keep = true);
+
+/**
+ * Decodes an image file (PNG, JPEG, ...) to RGBA8 through OpenImageIO in the importer process, as
+ * loadMesh() does a model. Returns the image or an Error "FILE: problem". Never throws.
+ */
+Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits = {});
+
+/**
+ * Decodes an image file held in memory (PNG, JPEG, ...) to RGBA8 through OpenImageIO, in this
+ * process (the loaders call it inside the importer).
+ */
 Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std::string& name,
                           const LoadLimits& limits = {});
 

@@ -442,8 +442,9 @@ std::string checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize,
 
     // PLY: sum over elements of count * the smallest size one element can have. The header is
     // read line by line and must be well formed: Assimp 5.2 hangs or reads wild on unknown
-    // keywords, counts like "0.0" and headers without end_header (found by fuzzing).
-    if (magic != "ply")
+    // keywords, counts like "0.0" and headers without end_header (found by fuzzing). Assimp
+    // takes any file that starts with the three letters for PLY ("ply," too).
+    if (magic.rfind("ply", 0) != 0)
         return {};
     bool ascii = true;
     struct Element {
@@ -477,7 +478,8 @@ std::string checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize,
         for (std::string word; words >> word;)
             w.push_back(word);
         const std::string where = "line " + str(std::uint64_t(lineNo)) + " of the PLY header: ";
-        if (w.empty() || w[0] == "comment" || w[0] == "obj_info" || (lineNo == 1 && w[0] == "ply"))
+        if (w.empty() || w[0] == "comment" || w[0] == "obj_info" ||
+            (lineNo == 1 && w[0].rfind("ply", 0) == 0))
             continue;
         if (w[0] == "format" && w.size() == 3) {
             ascii = w[1] == "ascii";

@@ -11,6 +11,7 @@
 
 #include "core/document/document.h"
 #include "core/io/gltf_export.h"
+#include "core/io/mesh_io_in_process.h"
 
 namespace core {
 
@@ -25,8 +26,10 @@ bool isGltfPath(const std::string& path) {
     return ext == ".glb" || ext == ".gltf";
 }
 
-Result<Project> load(const std::string& path, const ProgressFn& progress,
-                     const LoadLimits& limits) {
+using MeshLoader = Result<Mesh> (*)(const std::string&, const ProgressFn&, const LoadLimits&);
+
+Result<Project> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits,
+                     MeshLoader loadMeshWith) {
     Project project;
     std::vector<std::string> warnings;
     if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
@@ -34,7 +37,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
         Result<Json> extras = readGlbExtras(path);
         if (!extras) {
             // Not a glTF file at all: the model loader says what is wrong in plainer words.
-            if (Result<Mesh> mesh = loadMesh(path, progress, limits); !mesh)
+            if (Result<Mesh> mesh = loadMeshWith(path, progress, limits); !mesh)
                 return mesh.takeError();
             return extras.takeError();
         }
@@ -50,7 +53,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
     }
     LoadLimits strict = limits;
     strict.requireTextures = project.state.has_value(); // they hold the painting
-    Result<Mesh> mesh = loadMesh(path, progress, strict);
+    Result<Mesh> mesh = loadMeshWith(path, progress, strict);
     if (!mesh)
         return Error{mesh.error()};
     project.mesh = std::move(mesh).value();
@@ -58,17 +61,27 @@ Result<Project> load(const std::string& path, const ProgressFn& progress,
     return project;
 }
 
-} // namespace
-
-Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
-                            const LoadLimits& limits) {
+Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progress,
+                                const LoadLimits& limits, MeshLoader loadMeshWith) {
     try {
-        return load(path, progress, limits);
+        return load(path, progress, limits, loadMeshWith);
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to load the file"};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be loaded (" + std::string(e.what()) + ")"};
     }
+}
+
+} // namespace
+
+Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
+                            const LoadLimits& limits) {
+    return loadProjectWith(path, progress, limits, &loadMesh);
+}
+
+Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress,
+                                     const LoadLimits& limits) {
+    return loadProjectWith(path, progress, limits, &loadMeshInProcess);
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,

@@ -104,6 +104,17 @@ TEST(Cli, BadInputIsOneLineOnStderrAndAFailureCode) {
     EXPECT_NE(badSize.err.find("--size"), std::string::npos);
 }
 
+/** The OFF file that crashes Assimp 5.2: the importer process stops, the CLI reports it. */
+TEST(Cli, AFileThatCrashesTheParserIsAnErrorNotACrash) {
+    const std::string crasher = std::string(LAYERPAINT_TEST_DATA) + "/crashers/off-assimp-segv.off";
+    const CliRun run = runCli({"info", crasher});
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    EXPECT_EQ(run.err.find('\n'), run.err.size() - 1) << run.err;
+    EXPECT_EQ(run.err.rfind("layerpaint-cli: " + crasher + ": the importer stopped: ", 0), 0u)
+        << run.err;
+}
+
 /** layers --cpu writes exactly what the controller computes in process. */
 TEST(Cli, LayersWritesTheFilesOfTheContract) {
     const fs::path out = fs::temp_directory_path() / "layerpaint_cli_layers";

@@ -1,8 +1,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # `cmake --install` into a fresh prefix puts the programs and the desktop integration where
-# desktops look for them, the metadata validates, and the installed `layerpaint` answers
-# --version and --help (in the preferred language) without a display.
-# Run as: cmake -DBUILD_DIR=... -DPREFIX=... -DVERSION=... [-DAPPSTREAMCLI=...]
+# desktops look for them, the metadata validates, the installed `layerpaint-cli` finds its
+# importer process under libexec, and the installed `layerpaint` answers --version and --help (in
+# the preferred language) without a display.
+# Run as: cmake -DBUILD_DIR=... -DPREFIX=... -DVERSION=... -DLIBEXECDIR=... [-DAPPSTREAMCLI=...]
 #         [-DDESKTOP_FILE_VALIDATE=...] -P install_test.cmake
 set(id io.github.layerpaint.LayerPaint)
 
@@ -18,12 +19,23 @@ if(NOT result EQUAL 0)
     fail("cmake --install failed: ${output}")
 endif()
 
-foreach(file bin/layerpaint bin/layerpaint-cli share/applications/${id}.desktop
+foreach(file bin/layerpaint bin/layerpaint-cli ${LIBEXECDIR}/layerpaint/layerpaint-import
+        share/applications/${id}.desktop
         share/metainfo/${id}.metainfo.xml share/icons/hicolor/scalable/apps/${id}.svg)
     if(NOT EXISTS "${PREFIX}/${file}")
         fail("not installed: ${file}")
     endif()
 endforeach()
+
+# Files are parsed by the importer process, found relative to the installed program (not
+# through LAYERPAINT_IMPORTER, which the tests set to the build tree's).
+file(WRITE "${PREFIX}/triangle.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=LAYERPAINT_IMPORTER
+    "${PREFIX}/bin/layerpaint-cli" info "${PREFIX}/triangle.obj"
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+if(NOT result EQUAL 0 OR NOT output MATCHES "\"triangles\": 1")
+    fail("the installed layerpaint-cli cannot load a model (${result}): ${output}${error}")
+endif()
 
 # The metainfo carries this version; the desktop entry starts the installed program.
 file(READ "${PREFIX}/share/metainfo/${id}.metainfo.xml" metainfo)

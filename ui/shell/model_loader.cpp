@@ -12,6 +12,7 @@
 #include <string>
 #include <thread>
 
+#include "core/io/mesh_io.h"
 #include "core/io/project_file.h"
 
 namespace ui {
@@ -29,7 +30,10 @@ struct ModelLoader::Outcome {
     std::string error;
 };
 
-ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {}
+ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {
+    // Files are parsed in an importer process: one started ahead spares each open its start-up.
+    core::keepImporterReady();
+}
 
 ModelLoader::~ModelLoader() {
     // Workers post their result to this object; joining them here, before ~QObject removes the

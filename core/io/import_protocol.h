@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What the importer process (layerpaint-import) writes on its standard output and loadMesh()
+// reads back: frames of a 16-byte header (magic, tag, payload length) and a payload of plain
+// native-endian arrays, so nothing is parsed twice. The reader trusts nothing: every length is
+// checked against the counts announced and the LoadLimits before memory is allocated.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/base/progress.h"
+#include "core/io/mesh_io.h"
+#include "core/model/mesh.h"
+
+namespace core::importer {
+
+inline constexpr std::uint32_t kMagic = 0x3149504Cu; // "LPI1" in little-endian byte order
+
+enum class Tag : std::uint32_t {
+    Progress = 1,           // double, a fraction in [0, 1]
+    Warning = 2,            // UTF-8 text
+    Error = 3,              // UTF-8 text: "FILE: problem"
+    MeshBegin = 4,          // MeshHeader
+    Positions = 5,          // float[3 * vertices]
+    Normals = 6,            // float[3 * vertices]
+    Uvs = 7,                // float[2 * vertices]
+    Colors = 8,             // float[4 * vertices]
+    Indices = 9,            // uint32[indices]
+    TriangleMaterials = 10, // uint32[indices / 3]
+    Material = 11,          // MaterialHeader, then the name's bytes
+    Texture = 12,           // ImageHeader, then RGBA8 rows
+    MeshEnd = 13,           // empty: the mesh is complete
+    Image = 14,             // ImageHeader, then RGBA8 rows (an image file's pixels)
+};
+
+struct FrameHeader {
+    std::uint32_t magic;
+    std::uint32_t tag;
+    std::uint64_t length;
+};
+
+/** Element counts; normals, uvs and colors are 0 or the vertex count. */
+struct MeshHeader {
+    std::uint64_t vertices;
+    std::uint64_t indices;
+    std::uint64_t normals;
+    std::uint64_t uvs;
+    std::uint64_t colors;
+    std::uint64_t triangleMaterials;
+    std::uint64_t materials;
+    std::uint64_t textures;
+};
+
+struct MaterialHeader {
+    float baseColorFactor[4];
+    std::int32_t baseColorTexture;
+    std::uint32_t nameLength;
+};
+
+struct ImageHeader {
+    std::uint32_t width;
+    std::uint32_t height;
+};
+
+/** Writes frames to a file descriptor; after a failed write every later call fails too. */
+class FrameWriter {
+public:
+    explicit FrameWriter(int fd) : m_fd(fd) {}
+
+    bool progress(double fraction);
+    bool text(Tag tag, const std::string& text);
+    bool mesh(const Mesh& mesh);
+    bool image(const Image& image);
+
+private:
+    bool frame(Tag tag, const void* a, std::size_t aSize, const void* b = nullptr,
+               std::size_t bSize = 0);
+    bool writeAll(const void* data, std::size_t size);
+
+    int m_fd;
+    bool m_ok = true;
+};
+
+/** Where frames come from: fills exactly size bytes, or returns false (ended or stopped). */
+class FrameSource {
+public:
+    virtual ~FrameSource() = default;
+    virtual bool read(void* data, std::size_t size) = 0;
+};
+
+/** What a run of the importer sent. At most one of mesh, image, error is set. */
+struct Received {
+    std::optional<Mesh> mesh;         // complete (MeshEnd seen), not yet validated
+    std::optional<Image> image;       // sizes checked
+    std::optional<std::string> error; // the importer's own message, made one line
+    std::vector<std::string> warnings;
+    std::string malformed;  // not empty: the output broke the format (what was wrong)
+    bool cancelled = false; // a progress report returned false
+    // None of the above: the source ended before a complete answer.
+};
+
+/** The most bytes one load may send under limits; more is refused. */
+std::uint64_t maxOutputBytes(const LoadLimits& limits);
+
+/**
+ * Reads frames until an answer (mesh, image or error), a violation of the format, a cancel or
+ * the end of the source. Progress frames go to progress.
+ */
+Received readFrames(FrameSource& source, const LoadLimits& limits, const ProgressFn& progress);
+
+/** Text from the importer as one line of at most 2000 bytes without control characters. */
+std::string cleanText(std::string text);
+
+} // namespace core::importer

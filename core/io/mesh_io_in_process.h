@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The loaders that parse files in the calling process. Only the importer process
+// (layerpaint-import) and the fuzz targets call these: everything else loads through loadMesh(),
+// loadImageFile() and loadProject(), which run them in that helper process.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "core/base/progress.h"
+#include "core/base/result.h"
+#include "core/document/project.h"
+#include "core/io/mesh_io.h"
+#include "core/model/mesh.h"
+
+namespace core {
+
+/** loadMesh() in this process: the same contract, the same messages. */
+Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progress = {},
+                               const LoadLimits& limits = {});
+
+/** loadImageFile() in this process. */
+Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits = {});
+
+/** loadProject() with the mesh read by loadMeshInProcess(). */
+Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress = {},
+                                     const LoadLimits& limits = {});
+
+namespace detail {
+/** The importer's deadline for path: limits.maxSeconds, or 30 s plus 1 s per MiB of the file. */
+double importSeconds(const std::string& path, const LoadLimits& limits);
+
+/** "<path>: <problem>" on one line (line breaks become spaces, no final full stop). */
+Error fileError(const std::string& path, std::string problem);
+
+/**
+ * The checks made before a model file is parsed: it exists, is a regular file, not empty and
+ * within limits.maxFileBytes. Returns its canonical path, or the Error.
+ */
+Result<std::filesystem::path> checkModelFile(const std::string& path, const LoadLimits& limits);
+
+/**
+ * The checks and repairs every loaded mesh goes through (counts against the limits, finite
+ * values, normals, materials, Mesh::validate()); an empty string, or the problem.
+ */
+std::string finishMesh(Mesh& mesh, const LoadLimits& limits);
+} // namespace detail
+
+} // namespace core
