@@ -31,6 +31,7 @@
 #include <QUndoStack>
 #include <qpa/qwindowsysteminterface.h>
 
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -231,6 +232,67 @@ protected:
     QTemporaryDir m_dir;
     std::unique_ptr<ui::MainWindow> m_window;
 };
+
+// Item 4: a layer-aware stroke and the pop-ups it caused are one undo step, and undoing back to
+// the saved state clears the unsaved mark.
+TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
+    openAndBuild(QStringLiteral("builtin:trefoil"));
+    ASSERT_TRUE(saveTo(path(QStringLiteral("knot.glb"))));
+    ASSERT_FALSE(m_window->projectController()->isModified());
+    const core::Layers& layers = *document().layers();
+    const core::LayerStack& stack = layers.stack;
+    const core::RegionOrderState initial = document().regionOrder().state();
+    QUndoStack* stack0 = m_window->undoStack();
+    ASSERT_NE(document().paintTarget(), nullptr);
+    const std::vector<std::uint8_t> blank = document().paintedMesh().textures.at(0).rgba;
+
+    // A stroke from a visible surface to where it runs under another one: from a layer-1 pixel
+    // of a region linked to a layer-2 region, to a pixel where that region is on layer 2.
+    bool poppedUp = false;
+    for (int y = stack.height / 4; y < stack.height * 3 / 4 && !poppedUp; y += 9) {
+        for (int x = stack.width / 4; x < stack.width * 3 / 4 && !poppedUp; x += 9) {
+            const std::size_t p = std::size_t(y) * stack.width + x;
+            const std::uint32_t back = stack.fragment(p, 2);
+            if (back == core::kNone)
+                continue;
+            const std::uint32_t region = layers.segmentation.region[back];
+            for (const core::RegionLink& link : layers.segmentation.graph.neighborsOf(region)) {
+                const core::Region& front = layers.segmentation.graph.regions[link.region];
+                if (front.layer != 1 || front.pixels < 400)
+                    continue;
+                const QPoint from((front.minX + front.maxX) / 2, (front.minY + front.maxY) / 2);
+                const std::size_t q = std::size_t(from.y()) * stack.width + from.x();
+                const std::uint32_t f = stack.fragment(q, 1);
+                if (f == core::kNone || layers.segmentation.region[f] != link.region ||
+                    std::hypot(from.x() - x, from.y() - y) > 90)
+                    continue;
+                const int count = stack0->count();
+                const std::uint64_t serial = document().regionOrderSerial();
+                QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, from);
+                for (int i = 1; i <= 12; ++i)
+                    QTest::mouseMove(viewport(), from + (QPoint(x, y) - from) * i / 12);
+                QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, QPoint(x, y));
+                if (document().regionOrderSerial() != serial) {
+                    poppedUp = true;
+                    EXPECT_EQ(stack0->count(), count + 1); // one step, not two
+                } else if (stack0->count() > count) {
+                    stack0->undo(); // no pop-up: take the stroke back and try elsewhere
+                }
+                break;
+            }
+        }
+    }
+    ASSERT_TRUE(poppedUp) << "no stroke went behind another surface";
+    ASSERT_TRUE(m_window->projectController()->isModified());
+    EXPECT_TRUE(action("actionUndo")->text().contains(QStringLiteral("Paint Stroke")));
+    EXPECT_NE(document().regionOrder().state(), initial);
+
+    key(Qt::Key_Z, Qt::ControlModifier, QStringLiteral("\x1a"));
+    EXPECT_EQ(document().regionOrder().state(), initial); // the pop-ups went with the paint
+    EXPECT_EQ(document().paintedMesh().textures.at(0).rgba, blank);
+    EXPECT_FALSE(m_window->projectController()->isModified()); // back at the saved state
+    EXPECT_FALSE(QWidget::isWindowModified() && m_window->isWindowModified());
+}
 
 // Item 1: Export proposes another name and never replaces the open project.
 TEST_F(FirstSessionTest, ExportNeverReplacesTheOpenProject) {
