@@ -9,8 +9,8 @@
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
-#include "core/document/project.h"
 #include "core/io/mesh_io.h"
+#include "core/io/project_file.h"
 #include "core/model/mesh.h"
 
 namespace core {

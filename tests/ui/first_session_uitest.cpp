@@ -291,7 +291,7 @@ TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
     EXPECT_EQ(document().regionOrder().state(), initial); // the pop-ups went with the paint
     EXPECT_EQ(document().paintedMesh().textures.at(0).rgba, blank);
     EXPECT_FALSE(m_window->projectController()->isModified()); // back at the saved state
-    EXPECT_FALSE(QWidget::isWindowModified() && m_window->isWindowModified());
+    EXPECT_FALSE(m_window->isWindowModified());
 }
 
 // Item 1: Export proposes another name and never replaces the open project.
