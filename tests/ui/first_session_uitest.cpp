@@ -115,7 +115,7 @@ protected:
         ASSERT_TRUE(m_dir.isValid());
         m_window = std::make_unique<ui::MainWindow>();
         m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1180, 760);
+        m_window->resize(1260, 900);
         m_window->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
         m_window->activateWindow();
@@ -260,11 +260,22 @@ TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
                 const core::Region& front = layers.segmentation.graph.regions[link.region];
                 if (front.layer != 1 || front.pixels < 400)
                     continue;
-                const QPoint from((front.minX + front.maxX) / 2, (front.minY + front.maxY) / 2);
-                const std::size_t q = std::size_t(from.y()) * stack.width + from.x();
-                const std::uint32_t f = stack.fragment(q, 1);
-                if (f == core::kNone || layers.segmentation.region[f] != link.region ||
-                    std::hypot(from.x() - x, from.y() - y) > 90)
+                // A start on that front region 30 to 90 px away, the first found on rings.
+                QPoint from(-1, -1);
+                for (int r = 30; r <= 90 && from.x() < 0; r += 20) {
+                    for (int k = 0; k < 16 && from.x() < 0; ++k) {
+                        const double angle = k * 3.14159265358979 / 8;
+                        const QPoint at(x + int(r * std::cos(angle)), y + int(r * std::sin(angle)));
+                        if (at.x() < 0 || at.y() < 0 || at.x() >= stack.width ||
+                            at.y() >= stack.height)
+                            continue;
+                        const std::uint32_t f =
+                            stack.fragment(std::size_t(at.y()) * stack.width + at.x(), 1);
+                        if (f != core::kNone && layers.segmentation.region[f] == link.region)
+                            from = at;
+                    }
+                }
+                if (from.x() < 0)
                     continue;
                 const int count = stack0->count();
                 const std::uint64_t serial = document().regionOrderSerial();

@@ -41,7 +41,7 @@ protected:
         ASSERT_TRUE(m_dir.isValid());
         m_window = std::make_unique<ui::MainWindow>();
         m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1000, 700);
+        m_window->resize(1260, 900);
         m_window->show();
         ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
         m_window->activateWindow();
