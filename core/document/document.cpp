@@ -320,7 +320,7 @@ void Document::setLayerOptions(const LayerOptions& options) {
 Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
     auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions, m_engine);
     if (!layers)
-        return Error{layers.error()};
+        return layers.takeError();
     clearLayers();
     m_layers = std::make_unique<Layers>(std::move(layers).value());
     layersChanged();
@@ -341,18 +341,20 @@ bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
     return true;
 }
 
-PaintTarget* Document::paintTarget(std::string* error) {
+Result<PaintTarget*> Document::ensurePaintTarget() {
     if (!m_paintTarget) {
         auto target = makePaintTarget(m_mesh, m_topology, m_paintOptions);
-        if (!target) {
-            if (error)
-                *error = target.error();
-            return nullptr;
-        }
+        if (!target)
+            return target.takeError();
         m_paintTarget = std::move(target).value();
         ++m_targetSerial;
     }
     return m_paintTarget.get();
+}
+
+PaintTarget* Document::paintTarget() {
+    Result<PaintTarget*> target = ensurePaintTarget();
+    return target ? *target : nullptr;
 }
 
 PaintTargetKind Document::paintTargetKind() const {
@@ -366,7 +368,7 @@ PaintTargetKind Document::paintTargetKind() const {
 Status Document::setPaintTarget(const PaintTargetOptions& options) {
     auto target = makePaintTarget(m_mesh, m_topology, options);
     if (!target)
-        return Error{target.error()};
+        return target.takeError();
     if (m_tracker.inStroke())
         endStroke();
     if (m_paintTarget) {
@@ -391,10 +393,10 @@ Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
     changes.clear();
     if (!m_layers)
         return Error{"the layers of this view are not built yet"};
-    std::string error;
-    PaintTarget* target = paintTarget(&error);
-    if (!target)
-        return Error{error};
+    Result<PaintTarget*> made = ensurePaintTarget();
+    if (!made)
+        return made.takeError();
+    PaintTarget* target = *made;
     if (m_tracker.inStroke())
         endStroke();
     m_session.noteState(*this);
@@ -472,10 +474,10 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
     changes.clear();
     if (!m_layers)
         return Error{"the layers of this view are not built yet"};
-    std::string error;
-    PaintTarget* target = paintTarget(&error);
-    if (!target)
-        return Error{error};
+    Result<PaintTarget*> made = ensurePaintTarget();
+    if (!made)
+        return made.takeError();
+    PaintTarget* target = *made;
     if (m_tracker.inStroke())
         endStroke();
     const LayerStack& stack = m_layers->stack;

@@ -171,9 +171,11 @@ public:
     bool layerAware() const { return m_tracker.layerAware(); }
     /**
      * The paint target, created on first use with options (a texture for meshes with UVs, vertex
-     * colours otherwise). Returns nullptr and sets error if it cannot be made.
+     * colours otherwise), or the Error saying why it cannot be made.
      */
-    PaintTarget* paintTarget(std::string* error = nullptr);
+    Result<PaintTarget*> ensurePaintTarget();
+    /** ensurePaintTarget() for callers that only need to know whether there is one: nullptr. */
+    PaintTarget* paintTarget();
     /**
      * Replaces the paint target with one made with options: an undo step (the old target is
      * kept in it) when there was a target. On failure nothing changes.

@@ -2,7 +2,7 @@
 // Binary glTF 2.0 writer. The GLB container is written here with nlohmann::json rather than
 // through tinygltf's writer: the layout (one buffer, 4-byte aligned views, strides, PNG images in
 // views) is then exactly what mesh_io_gltf.cpp reads back, and no image is re-encoded behind our
-// back. Images are encoded to PNG in memory by OpenImageIO.
+// back. Images are encoded to PNG in memory by encodeImage() (image_encode.h).
 #include "core/io/gltf_export.h"
 
 #include <algorithm>
@@ -31,9 +31,8 @@
 
 #include <glm/common.hpp>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+#include "core/io/glb_container.h"
+#include "core/io/image_encode.h"
 #include "core/io/json_depth.h"
 
 static_assert(std::endian::native == std::endian::little,
@@ -47,9 +46,6 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using Bytes = std::vector<std::uint8_t>;
 
-constexpr std::uint32_t kGlbMagic = 0x46546C67u;    // "glTF"
-constexpr std::uint32_t kChunkJson = 0x4E4F534Au;   // "JSON"
-constexpr std::uint32_t kChunkBin = 0x004E4942u;    // "BIN\0"
 constexpr std::uint64_t kMaxGlbBytes = 0xFFFFFFFFu; // the header's length is 32 bits
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
@@ -69,46 +65,6 @@ void putU32(Bytes& out, std::uint32_t v) {
     const auto at = out.size();
     out.resize(at + 4);
     std::memcpy(out.data() + at, &v, 4);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Images
-
-/**
- * img as PNG in memory; empty with why set if it cannot be encoded. Fully opaque images are
- * written as RGB (smaller, and decoded back to alpha 255). Alpha is straight, as glTF wants.
- */
-Bytes encodePng(const Image& img, std::string& why) {
-    Bytes png;
-    OIIO::Filesystem::IOVecOutput proxy(png);
-    auto out = OIIO::ImageOutput::create("png", &proxy);
-    if (!out) {
-        why = "no PNG encoder (" + OIIO::geterror() + ")";
-        return {};
-    }
-    if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy)) {
-        why = "the PNG encoder cannot write to memory";
-        return {};
-    }
-    bool opaque = true;
-    for (std::size_t i = 3; i < img.rgba.size() && opaque; i += 4)
-        opaque = img.rgba[i] == 255;
-    const int channels = opaque ? 3 : 4;
-    OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::UINT8);
-    // Without this the PNG writer would un-premultiply the colours by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    if (!out->open("memory.png", spec)) {
-        why = out->geterror();
-        return {};
-    }
-    // RGB is read out of the RGBA pixels with a 4-byte pixel stride.
-    const bool ok = out->write_image(OIIO::TypeDesc::UINT8, img.rgba.data(), 4) && out->close();
-    if (!ok || png.empty()) {
-        why = out->geterror();
-        return {};
-    }
-    return png;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -236,12 +192,12 @@ struct GlbParts {
 };
 
 Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const ProgressFn& progress) {
-    if (std::string problem = mesh.validate(); !problem.empty())
-        return Error{"the mesh cannot be saved (" + problem + ")"};
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
     if (!extras.is_null() && !extras.is_object())
         return Error{"the extras to save are not a JSON object"};
     if (!reportProgress(progress, 0.0))
-        return Error{"cancelled"};
+        return cancelledError();
 
     const std::vector<Run> runs = materialRuns(mesh);
     const RunGeometry g = gatherRuns(mesh, runs);
@@ -254,7 +210,7 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
         mesh.hasColors() ? bin.addView(g.colors.data(), g.colors.size() * 4, kArrayBuffer, 16) : -1;
     const int idxView = bin.addView(g.indices.data(), g.indices.size() * 4, kElementArrayBuffer, 0);
     if (!reportProgress(progress, 0.2))
-        return Error{"cancelled"};
+        return cancelledError();
 
     Json accessors = Json::array();
     auto addAccessor = [&](int view, std::size_t element, std::size_t first, std::size_t count,
@@ -305,19 +261,19 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
     }
     Json images = Json::array(), textures = Json::array();
     for (std::size_t k = 0; k < written.size(); ++k) {
-        std::string why;
-        const Bytes png = encodePng(mesh.textures[written[k]], why);
-        if (png.empty())
-            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG" +
-                         (why.empty() ? std::string() : " (" + why + ")")};
-        const int view = bin.addView(png.data(), png.size(), 0, 0);
+        const Result<Bytes> png = encodeImage(mesh.textures[written[k]], ExportFormat::Png8);
+        if (!png)
+            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG (" +
+                             png.error() + ")",
+                         png.errorKind()};
+        const int view = bin.addView(png->data(), png->size(), 0, 0);
         images.push_back({{"bufferView", view},
                           {"mimeType", "image/png"},
                           {"name", "texture " + std::to_string(written[k])}});
         textures.push_back({{"source", k}, {"sampler", 0}});
         if (!reportProgress(progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
                                                 static_cast<double>(written.size())))
-            return Error{"cancelled"};
+            return cancelledError();
     }
 
     Json materials = Json::array();
@@ -368,17 +324,17 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
 
     GlbParts parts;
     parts.head.reserve(28 + json.size());
-    putU32(parts.head, kGlbMagic);
+    putU32(parts.head, glb::kMagic);
     putU32(parts.head, 2);
     putU32(parts.head, static_cast<std::uint32_t>(total));
     putU32(parts.head, static_cast<std::uint32_t>(json.size()));
-    putU32(parts.head, kChunkJson);
+    putU32(parts.head, glb::kChunkJson);
     parts.head.insert(parts.head.end(), json.begin(), json.end());
     putU32(parts.head, static_cast<std::uint32_t>(bin.bytes().size()));
-    putU32(parts.head, kChunkBin);
+    putU32(parts.head, glb::kChunkBin);
     parts.bin = std::move(bin.bytes());
     if (!reportProgress(progress, 0.95))
-        return Error{"cancelled"};
+        return cancelledError();
     return parts;
 }
 
@@ -524,18 +480,19 @@ Result<std::string> writeTemporary(const fs::path& target,
     FileDescriptor fd(createTemporary(target, suffix, mode, name));
     if (fd.get() < 0)
         return Error{"no file can be created in the folder " + target.parent_path().string() +
-                     " (" + errnoText(errno) + ")"};
+                         " (" + errnoText(errno) + ")",
+                     ErrorKind::Io};
     RemoveOnExit cleanup;
     cleanup.set(name);
     if (mode >= 0)
         ::fchmod(fd.get(), static_cast<mode_t>(mode)); // the umask must not narrow the old mode
     for (const auto& part : parts)
         if (const int err = writeAll(fd.get(), part.data(), part.size()); err != 0)
-            return Error{"writing failed (" + errnoText(err) + ")"};
+            return Error{"writing failed (" + errnoText(err) + ")", ErrorKind::Io};
     if (::fsync(fd.get()) != 0)
-        return Error{"writing failed (" + errnoText(errno) + ")"};
+        return Error{"writing failed (" + errnoText(errno) + ")", ErrorKind::Io};
     if (const int err = fd.close(); err != 0)
-        return Error{"writing failed (" + errnoText(err) + ")"};
+        return Error{"writing failed (" + errnoText(err) + ")", ErrorKind::Io};
     cleanup.release();
     return name;
 }
@@ -544,19 +501,19 @@ Result<std::string> writeTemporary(const fs::path& target,
 Result<std::string> copyToTemporary(const fs::path& from, const fs::path& target, int mode) {
     std::ifstream in(from, std::ios::binary);
     if (!in)
-        return Error{"the previous file cannot be read"};
+        return Error{"the previous file cannot be read", ErrorKind::Io};
     Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad())
-        return Error{"the previous file cannot be read"};
+        return Error{"the previous file cannot be read", ErrorKind::Io};
     const std::span<const std::uint8_t> one[] = {bytes};
     return writeTemporary(target, one, mode, ".tmp");
 }
 
 /**
  * Makes backup a copy of file (a hard link when the file system has them, so nothing is copied),
- * replacing an older backup in one rename. An empty string, or what went wrong.
+ * replacing an older backup in one rename. The Error says what went wrong (no path in front).
  */
-std::string makeBackup(const fs::path& file, const fs::path& backup, int mode) {
+Status makeBackup(const fs::path& file, const fs::path& backup, int mode) {
     std::string temporary;
     const int linked = withUniqueName(backup, ".tmp", temporary, [&](const std::string& n) {
         return ::link(file.c_str(), n.c_str());
@@ -564,14 +521,16 @@ std::string makeBackup(const fs::path& file, const fs::path& backup, int mode) {
     if (linked != 0) {
         Result<std::string> copy = copyToTemporary(file, backup, mode);
         if (!copy)
-            return "no backup of the previous file can be kept (" + copy.error() + ")";
+            return Error{"no backup of the previous file can be kept (" + copy.error() + ")",
+                         ErrorKind::Io};
         temporary = std::move(copy).value();
     }
     if (::rename(temporary.c_str(), backup.c_str()) != 0) {
         const int err = errno;
         ::unlink(temporary.c_str());
-        return "no backup of the previous file can be kept as " + backup.string() + " (" +
-               errnoText(err) + ")";
+        return Error{"no backup of the previous file can be kept as " + backup.string() + " (" +
+                         errnoText(err) + ")",
+                     ErrorKind::Io};
     }
     // When the backup already was a link to the file (a save killed between making the backup
     // and replacing the file), rename() does nothing and leaves the temporary link: remove it.
@@ -582,7 +541,7 @@ std::string makeBackup(const fs::path& file, const fs::path& backup, int mode) {
 Status writeAtomically(const std::string& path,
                        std::span<const std::span<const std::uint8_t>> parts, bool backup) {
     auto fail = [&](const std::string& detail) {
-        return Status(Error{path + ": cannot be saved: " + detail});
+        return Status(Error{path + ": cannot be saved: " + detail, ErrorKind::Io});
     };
     if (path.empty())
         return Status(Error{"(no file name): no file was given"});
@@ -615,8 +574,8 @@ Status writeAtomically(const std::string& path,
     if (exists && backup) {
         fs::path backupPath = target;
         backupPath += ".bak";
-        if (std::string problem = makeBackup(target, backupPath, mode); !problem.empty())
-            return fail(problem);
+        if (const Status kept = makeBackup(target, backupPath, mode); !kept)
+            return fail(kept.error());
     }
     if (::rename(temporary.value().c_str(), target.c_str()) != 0)
         return fail("the file cannot be replaced (" + errnoText(errno) + ")");
@@ -632,37 +591,27 @@ Status writeAtomically(const std::string& path,
 Result<Json> readExtras(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
-        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist"};
+        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
+                     ErrorKind::Io};
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec)
-        return Error{"cannot be read (" + ec.message() + ")"};
+        return Error{"cannot be read (" + ec.message() + ")", ErrorKind::Io};
     if (size == 0)
         return Error{"is empty"};
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        return Error{"cannot be read"};
-    std::uint8_t header[20] = {};
-    in.read(reinterpret_cast<char*>(header),
-            std::min<std::streamsize>(20, static_cast<std::streamsize>(size)));
+        return Error{"cannot be read", ErrorKind::Io};
+    std::uint8_t header[glb::kHeadBytes] = {};
+    const auto headSize = std::min<std::uint64_t>(glb::kHeadBytes, size);
+    in.read(reinterpret_cast<char*>(header), static_cast<std::streamsize>(headSize));
+    const std::span<const std::uint8_t> head(header, static_cast<std::size_t>(headSize));
     std::uint64_t jsonOffset = 0, jsonLength = size;
-    auto u32 = [&](int at) {
-        std::uint32_t v = 0;
-        std::memcpy(&v, header + at, 4);
-        return v;
-    };
-    if (size >= 4 && u32(0) == kGlbMagic) {
-        if (size < 20)
-            return Error{"the binary glTF file is truncated (no JSON chunk)"};
-        if (u32(4) != 2)
-            return Error{"binary glTF version " + std::to_string(u32(4)) +
-                         " is not supported (only 2)"};
-        if (u32(16) != kChunkJson)
-            return Error{"the first chunk of the binary glTF file is not JSON"};
-        jsonOffset = 20;
-        jsonLength = u32(12);
-        const std::uint64_t declared = std::min<std::uint64_t>(u32(8), size);
-        if (jsonLength == 0 || 20 + jsonLength > declared)
-            return Error{"the binary glTF file is truncated (the JSON chunk runs past the end)"};
+    if (glb::hasMagic(head)) {
+        Result<glb::Layout> layout = glb::readHead(head, size);
+        if (!layout)
+            return layout.takeError();
+        jsonOffset = layout->jsonOffset;
+        jsonLength = layout->jsonLength;
     }
     if (jsonLength > kMaxJsonBytes)
         return Error{"the glTF JSON is too large (" + std::to_string(jsonLength) + " bytes)"};
@@ -670,7 +619,7 @@ Result<Json> readExtras(const std::string& path) {
     in.clear();
     in.seekg(static_cast<std::streamoff>(jsonOffset));
     if (!in.read(text.data(), static_cast<std::streamsize>(jsonLength)))
-        return Error{"cannot be read"};
+        return Error{"cannot be read", ErrorKind::Io};
     if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
     Json root;
@@ -700,7 +649,7 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
-            return Error{parts.error()};
+            return parts.takeError();
         Bytes out = std::move(parts->head);
         out.insert(out.end(), parts->bin.begin(), parts->bin.end());
         return out;
@@ -716,7 +665,7 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
-            return Status(Error{path + ": " + parts.error()});
+            return Status(Error{path + ": " + parts.error(), parts.errorKind()});
         const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
         Status status = writeAtomically(path, spans, keepBackup);
         if (status)
@@ -744,7 +693,7 @@ Result<nlohmann::json> readGlbExtras(const std::string& path) {
     try {
         Result<Json> extras = readExtras(path);
         if (!extras)
-            return Error{path + ": " + extras.error()};
+            return Error{path + ": " + extras.error(), extras.errorKind()};
         return extras;
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to read the file"};

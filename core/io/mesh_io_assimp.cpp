@@ -531,13 +531,13 @@ public:
         : m_scene(scene), m_folder(std::move(folder)), m_limits(limits) {}
 
     bool run(Mesh& out);
-    const std::string& error() const { return m_error; }
+    const Error& error() const { return m_error; }
 
 private:
     const aiScene& m_scene;
     fs::path m_folder;
     const LoadLimits& m_limits;
-    std::string m_error;
+    Error m_error;
     Mesh m_mesh;
     std::set<std::string> m_warned;
     bool m_anyNormals = false, m_anyUv = false, m_anyColor = false;
@@ -545,9 +545,9 @@ private:
     std::size_t m_skippedFaces = 0;
     std::map<std::string, int> m_textureCache;
 
-    bool fail(std::string msg) {
-        if (m_error.empty())
-            m_error = std::move(msg);
+    bool fail(std::string msg, ErrorKind kind = ErrorKind::BadInput) {
+        if (m_error.message.empty())
+            m_error = Error{std::move(msg), kind};
         return false;
     }
     void warnOnce(const std::string& msg) {
@@ -924,7 +924,7 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
 
     const aiScene* raw = importer.ReadFile(file.string(), 0);
     if (handler->cancelled())
-        return Error{"cancelled"};
+        return cancelledError();
     if (raw == nullptr)
         return Error{readError(file, ext, oneLine(importer.GetErrorString()))};
     // The importer owns the scene and post-processing changes it anyway.
@@ -933,18 +933,18 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     const aiScene* scene =
         importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_JoinIdenticalVertices);
     if (handler->cancelled())
-        return Error{"cancelled"};
+        return cancelledError();
     if (scene == nullptr)
         return Error{readError(file, ext, oneLine(importer.GetErrorString()))};
     Mesh mesh;
     AssimpFlattener flattener(*scene, folder, limits);
     if (!flattener.run(mesh))
-        return Error{flattener.error()};
+        return flattener.error();
     if (!io->rejected().empty())
         mesh.warnings.push_back("a reference to a file outside the model's folder was ignored: " +
                                 io->rejected());
     if (!reportProgress(progress, 0.9))
-        return Error{"cancelled"};
+        return cancelledError();
     return mesh;
 }
 

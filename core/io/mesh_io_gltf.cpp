@@ -2,8 +2,8 @@
 // glTF 2.0 loader. tinygltf parses; everything it hands over is checked here before use.
 //
 // Order of work and the decisions behind it:
-// 1. The GLB container is checked here first: tinygltf 2.7 lets the BIN chunk run 8 bytes past
-//    the declared length.
+// 1. The GLB container is checked first (glb_container.h): tinygltf 2.7 lets the BIN chunk run 8
+//    bytes past the declared length.
 // 2. The JSON is checked against the glTF schema's types (tinygltf silently ignores properties of
 //    the wrong type, so "index": -1 or "primitives": {} would otherwise load as something else),
 //    and for nesting depth (deep nesting costs stack in the JSON library).
@@ -41,6 +41,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "core/io/glb_container.h"
 #include "core/io/json_depth.h"
 #include "core/io/mesh_io.h"
 
@@ -76,54 +77,6 @@ bool addOverflows(std::uint64_t a, std::uint64_t b, std::uint64_t& out) {
 }
 bool mulOverflows(std::uint64_t a, std::uint64_t b, std::uint64_t& out) {
     return __builtin_mul_overflow(a, b, &out);
-}
-
-// ---------------------------------------------------------------------------------------------
-// GLB container
-
-struct GlbParts {
-    std::uint64_t jsonOffset = 0, jsonLength = 0;
-    std::uint64_t length = 0; // the declared length: what tinygltf may see
-};
-
-std::uint32_t readU32(const std::vector<std::uint8_t>& b, std::uint64_t at) {
-    std::uint32_t v = 0;
-    std::memcpy(&v, b.data() + at, 4);
-    return v;
-}
-
-std::string checkGlb(const std::vector<std::uint8_t>& bytes, GlbParts& parts) {
-    const std::uint64_t size = bytes.size();
-    if (size < 12)
-        return "the binary glTF file is truncated (no complete header)";
-    const std::uint32_t version = readU32(bytes, 4);
-    if (version != 2)
-        return "binary glTF version " + str(version) + " is not supported (only 2)";
-    const std::uint64_t length = readU32(bytes, 8);
-    if (length > size)
-        return "the binary glTF file is truncated (the header says " + str(length) +
-               " bytes, the file has " + str(size) + ")";
-    if (length < 20)
-        return "the binary glTF file is truncated (no JSON chunk)";
-    const std::uint64_t jsonLength = readU32(bytes, 12);
-    if (readU32(bytes, 16) != 0x4E4F534Au)
-        return "the first chunk of the binary glTF file is not JSON";
-    if (jsonLength == 0 || 20 + jsonLength > length)
-        return "the binary glTF file is truncated (the JSON chunk runs past the end)";
-    parts.jsonOffset = 20;
-    parts.jsonLength = jsonLength;
-    parts.length = length;
-    const std::uint64_t binHeader = 20 + jsonLength;
-    if (binHeader < length) {
-        if (binHeader + 8 > length)
-            return "the binary glTF file is truncated (incomplete BIN chunk header)";
-        const std::uint64_t binLength = readU32(bytes, binHeader);
-        if (readU32(bytes, binHeader + 4) != 0x004E4942u)
-            return "the second chunk of the binary glTF file is not BIN";
-        if (binHeader + 8 + binLength > length)
-            return "the binary glTF file is truncated (the BIN chunk runs past the end)";
-    }
-    return {};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -831,7 +784,7 @@ public:
 
     /** Flattens into out; false with error() on failure. */
     bool run(Mesh& out);
-    const std::string& error() const { return m_error; }
+    const Error& error() const { return m_error; }
 
 private:
     const tinygltf::Model& m_model;
@@ -839,7 +792,7 @@ private:
     const FileAccess& m_access;
     const ProgressFn& m_progress;
     const LoadLimits& m_limits;
-    std::string m_error;
+    Error m_error;
     bool m_quantized;
     std::set<std::string> m_warned;
     Mesh m_mesh;
@@ -848,9 +801,9 @@ private:
     std::size_t m_skippedPrimitives = 0;
     std::map<int, int> m_imageToTexture; // glTF image -> Mesh::textures index (-1: failed)
 
-    bool fail(std::string msg) {
-        if (m_error.empty())
-            m_error = std::move(msg);
+    bool fail(std::string msg, ErrorKind kind = ErrorKind::BadInput) {
+        if (m_error.message.empty())
+            m_error = Error{std::move(msg), kind};
         return false;
     }
     void warnOnce(const std::string& msg) {
@@ -1332,7 +1285,7 @@ bool GltfFlattener::addMaterials() {
             if (!std::isfinite(mat.baseColorFactor[k]))
                 mat.baseColorFactor[k] = 1.0f;
         mat.baseColorTexture = textureFor(texIndex, texCoord, mat.name);
-        if (!m_error.empty())
+        if (!m_error.message.empty())
             return false;
         m_mesh.materials.push_back(std::move(mat));
     }
@@ -1356,7 +1309,7 @@ bool GltfFlattener::run(Mesh& out) {
             ++primDone;
             if (!reportProgress(m_progress, 0.5 + 0.4 * static_cast<double>(primDone) /
                                                       static_cast<double>(primTotal)))
-                return fail("cancelled");
+                return fail("cancelled", ErrorKind::Cancelled);
         }
     }
     if (m_skippedPrimitives > 0)
@@ -1484,13 +1437,15 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
             return Error{"cannot be read"};
     }
     if (!reportProgress(progress, 0.05))
-        return Error{"cancelled"};
+        return cancelledError();
 
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    GlbParts parts;
+    const bool binary = glb::hasMagic(bytes);
+    glb::Layout parts;
     if (binary) {
-        if (std::string problem = checkGlb(bytes, parts); !problem.empty())
-            return Error{problem};
+        Result<glb::Layout> layout = glb::readContainer(bytes);
+        if (!layout)
+            return layout.takeError();
+        parts = *layout;
     } else {
         parts.jsonLength = bytes.size();
         parts.length = bytes.size();
@@ -1547,12 +1502,12 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     bytes.clear();
     bytes.shrink_to_fit();
     if (!reportProgress(progress, 0.5))
-        return Error{"cancelled"};
+        return cancelledError();
 
     Mesh mesh;
     GltfFlattener flattener(model, json, access, quantized, progress, limits);
     if (!flattener.run(mesh))
-        return Error{flattener.error()};
+        return flattener.error();
     // Then tinygltf's own warnings (missing images, ...), then the flattener's.
     for (const std::string& w : lines(warn))
         warnings.push_back(w);

@@ -30,8 +30,17 @@ namespace detail {
 /** The importer's deadline for path: limits.maxSeconds, or 30 s plus 1 s per MiB of the file. */
 double importSeconds(const std::string& path, const LoadLimits& limits);
 
-/** "<path>: <problem>" on one line (line breaks become spaces, no final full stop). */
-Error fileError(const std::string& path, std::string problem);
+/**
+ * "<path>: <problem>" on one line (line breaks become spaces, no final full stop), of the given
+ * kind (a problem with the file unless said otherwise).
+ */
+Error fileError(const std::string& path, std::string problem, ErrorKind kind = ErrorKind::BadInput);
+
+/**
+ * error (from a format loader, which names no file) with path in front; its kind, or BadInput
+ * where the loader gave none (the loaders' errors are about the file).
+ */
+Error fileError(const std::string& path, const Error& error);
 
 /**
  * The checks made before a model file is parsed: it exists, is a regular file, not empty and
@@ -41,9 +50,9 @@ Result<std::filesystem::path> checkModelFile(const std::string& path, const Load
 
 /**
  * The checks and repairs every loaded mesh goes through (counts against the limits, finite
- * values, normals, materials, Mesh::validate()); an empty string, or the problem.
+ * values, normals, materials, Mesh::validate()); the first problem as an Error (no path).
  */
-std::string finishMesh(Mesh& mesh, const LoadLimits& limits);
+Status finishMesh(Mesh& mesh, const LoadLimits& limits);
 } // namespace detail
 
 } // namespace core

@@ -716,8 +716,8 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
                       const PaintTargetOptions& options) {
     if (!mesh)
         return Error{"no mesh to paint"};
-    if (const std::string problem = mesh->validate(); !problem.empty())
-        return Error{"cannot paint the mesh: " + problem};
+    if (const Status valid = mesh->validate(); !valid)
+        return Error{"cannot paint the mesh: " + valid.error(), ErrorKind::BadInput};
     if (!mesh->hasUvs())
         return Error{"the mesh has no texture coordinates to paint a texture with"};
     if (!topology || topology->triangleCount() != mesh->triangleCount())
@@ -1244,8 +1244,8 @@ VertexColorTarget::create(std::shared_ptr<const Mesh> mesh,
                           const PaintTargetOptions& options) {
     if (!mesh)
         return Error{"no mesh to paint"};
-    if (const std::string problem = mesh->validate(); !problem.empty())
-        return Error{"cannot paint the mesh: " + problem};
+    if (const Status valid = mesh->validate(); !valid)
+        return Error{"cannot paint the mesh: " + valid.error(), ErrorKind::BadInput};
     if (!topology || topology->triangleCount() != mesh->triangleCount())
         topology = std::make_shared<const MeshTopology>(buildMeshTopology(*mesh));
     std::unique_ptr<VertexColorTarget> target(new VertexColorTarget(mesh, topology, options));
@@ -1418,12 +1418,12 @@ Result<std::unique_ptr<PaintTarget>> makePaintTarget(std::shared_ptr<const Mesh>
     if (texture) {
         auto target = TextureTarget::create(std::move(mesh), std::move(topology), options);
         if (!target)
-            return Error{target.error()};
+            return target.takeError();
         return Result<std::unique_ptr<PaintTarget>>(std::move(target).value());
     }
     auto target = VertexColorTarget::create(std::move(mesh), std::move(topology), options);
     if (!target)
-        return Error{target.error()};
+        return target.takeError();
     return Result<std::unique_ptr<PaintTarget>>(std::move(target).value());
 }
 

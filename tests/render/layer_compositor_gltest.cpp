@@ -583,7 +583,7 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
     mesh.materials = {core::Material{"red", glm::vec4(1.0f), 0},
                       core::Material{"plain", glm::vec4(0.2f, 0.8f, 0.2f, 1.0f), -1},
                       core::Material{"blue", glm::vec4(1.0f), 1}};
-    ASSERT_EQ(mesh.validate(), "");
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().error();
 
     core::Camera camera;
     camera.frame(mesh.bounds());

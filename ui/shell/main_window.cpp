@@ -757,10 +757,10 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     if (!m_builder->buildNow())
         return; // buildFailed() reported why
     const bool hadTarget = m_document->hasPaintTarget();
-    std::string error;
-    if (!m_document->paintTarget(&error)) {
+    if (const core::Result<core::PaintTarget*> target = m_document->ensurePaintTarget(); !target) {
         statusBar()->showMessage(
-            tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
+            tr("Cannot paint this model: %1").arg(QString::fromStdString(target.error())),
+            kStatusMessageMs);
         return;
     }
     if (!hadTarget)
@@ -793,10 +793,10 @@ void MainWindow::fillAt(QPointF pixel) {
     if (!m_builder->buildNow())
         return; // buildFailed() reported why
     const bool hadTarget = m_document->hasPaintTarget();
-    std::string error;
-    if (!m_document->paintTarget(&error)) {
+    if (const core::Result<core::PaintTarget*> target = m_document->ensurePaintTarget(); !target) {
         statusBar()->showMessage(
-            tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
+            tr("Cannot paint this model: %1").arg(QString::fromStdString(target.error())),
+            kStatusMessageMs);
         return;
     }
     if (!hadTarget)

@@ -25,6 +25,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/io/mesh_io.h"
+#include "core/io/mesh_io_in_process.h"
 #include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;
@@ -234,7 +235,7 @@ TEST_P(CorpusModel, LoadsOrFailsAsListed) {
     if (expected == expectedFailures().end()) {
         ASSERT_TRUE(mesh.ok()) << mesh.error();
         EXPECT_GT(mesh->triangleCount(), 0u);
-        EXPECT_EQ(mesh->validate(), "");
+        EXPECT_TRUE(mesh->validate().ok());
     } else {
         ASSERT_FALSE(mesh.ok()) << rel << " was expected to fail: " << expected->second;
         EXPECT_EQ(mesh.error().rfind(path + ": ", 0), 0u) << mesh.error();
@@ -1019,6 +1020,15 @@ TEST(MeshIo, ProgressIsReportedAndCancels) {
             core::loadMesh(corpus(rel), [&](double) { return ++calls < 3; });
         ASSERT_FALSE(cancelled.ok());
         EXPECT_EQ(cancelled.error(), corpus(rel) + ": cancelled");
+        EXPECT_TRUE(cancelled.cancelled()) << rel;
+
+        // The loaders themselves (in the importer process) stop with the same kind of error.
+        int inProcessCalls = 0;
+        const core::Result<core::Mesh> stopped =
+            core::loadMeshInProcess(corpus(rel), [&](double) { return ++inProcessCalls < 3; });
+        ASSERT_FALSE(stopped.ok());
+        EXPECT_EQ(stopped.error(), corpus(rel) + ": cancelled");
+        EXPECT_EQ(stopped.errorKind(), core::ErrorKind::Cancelled) << rel;
     }
 }
 

@@ -37,7 +37,7 @@ struct Scene {
 Scene makeScene(core::Mesh mesh, const core::View& view) {
     Scene scene;
     scene.mesh = std::make_shared<core::Mesh>(std::move(mesh));
-    EXPECT_EQ(scene.mesh->validate(), "");
+    EXPECT_TRUE(scene.mesh->validate().ok());
     scene.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*scene.mesh));
     core::CpuLayerCapturer capturer;
     capturer.setMesh(*scene.mesh);
