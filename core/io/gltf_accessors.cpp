@@ -121,20 +121,6 @@ double readComponent(const std::uint8_t* p, int componentType, bool normalized) 
     }
 }
 
-bool toFloat(const glm::dvec3& p, glm::vec3& out) {
-    constexpr double kMax = std::numeric_limits<float>::max();
-    for (int k = 0; k < 3; ++k)
-        if (!std::isfinite(p[k]) || std::abs(p[k]) > kMax)
-            return false;
-    out = glm::vec3(p);
-    return true;
-}
-
-glm::vec3 unitNormal(const glm::dvec3& n) {
-    const double len = glm::length(n);
-    return std::isfinite(len) && len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f);
-}
-
 const char* semanticName(Semantic s) {
     switch (s) {
     case Semantic::Position:

@@ -44,10 +44,6 @@ const char* typeName(int type);
 std::string componentName(int componentType, bool normalized);
 /** One component as a number; normalized integers map to [0, 1] or [-1, 1] (glTF 2.0 §3.11). */
 double readComponent(const std::uint8_t* p, int componentType, bool normalized);
-/** p as floats, or false if it does not fit (a double beyond float range is not castable). */
-bool toFloat(const glm::dvec3& p, glm::vec3& out);
-/** n normalized in double precision; zero (recomputed later) when it has no direction. */
-glm::vec3 unitNormal(const glm::dvec3& n);
 
 /** What an accessor is read for. */
 enum class Semantic { Position, Normal, TexCoord, Color, Indices };

@@ -19,6 +19,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/io/gltf_accessors.h"
+#include "core/io/mesh_io_in_process.h"
 
 static_assert(std::endian::native == std::endian::little,
               "glTF buffers are little-endian and are read with memcpy");

@@ -32,6 +32,7 @@
 #include "core/io/gltf_schema.h"
 #include "core/io/json_depth.h"
 #include "core/io/mesh_io.h"
+#include "core/io/mesh_io_in_process.h"
 
 namespace core::detail {
 
@@ -217,15 +218,7 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
 
 Result<Mesh> loadGltf(const std::filesystem::path& file, const ProgressFn& progress,
                       const LoadLimits& limits) {
-    try {
-        return load(file, progress, limits);
-    } catch (const std::bad_alloc&) {
-        return Error{"not enough memory to load the file"};
-    } catch (const std::exception& e) {
-        return Error{std::string("cannot be loaded (") + e.what() + ")"};
-    } catch (...) {
-        return Error{"cannot be loaded (unexpected error)"};
-    }
+    return catchLoadErrors([&] { return load(file, progress, limits); });
 }
 
 } // namespace core::detail

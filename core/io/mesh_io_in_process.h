@@ -4,8 +4,12 @@
 // loadImageFile() and loadProject(), which run them in that helper process.
 #pragma once
 
+#include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
+
+#include <glm/vec3.hpp>
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
@@ -41,6 +45,28 @@ Error fileError(const std::string& path, std::string problem, ErrorKind kind = E
  * where the loader gave none (the loaders' errors are about the file).
  */
 Error fileError(const std::string& path, const Error& error);
+
+/**
+ * load() (a format loader's work), with an exception it throws turned into the Error it stands
+ * for, naming no file.
+ */
+template <typename Load> Result<Mesh> catchLoadErrors(Load&& load) {
+    try {
+        return load();
+    } catch (const std::bad_alloc&) {
+        return Error{"not enough memory to load the file"};
+    } catch (const std::exception& e) {
+        return Error{std::string("cannot be loaded (") + e.what() + ")"};
+    } catch (...) {
+        return Error{"cannot be loaded (unexpected error)"};
+    }
+}
+
+/** p as floats, or false if it does not fit (a double beyond float range is not castable). */
+bool toFloat(const glm::dvec3& p, glm::vec3& out);
+
+/** n normalized in double precision; zero (recomputed later) when it has no direction. */
+glm::vec3 unitNormal(const glm::dvec3& n);
 
 /**
  * The checks made before a model file is parsed: it exists, is a regular file, not empty and
