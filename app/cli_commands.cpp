@@ -46,6 +46,20 @@ core::Result<glm::mat4> readMatrix(const json& value, const std::string& file, c
 
 } // namespace
 
+core::Result<std::unique_ptr<core::LayerCapturer>>
+makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context) {
+    if (cpu)
+        return std::unique_ptr<core::LayerCapturer>(std::make_unique<core::CpuLayerCapturer>());
+    auto created = render::HeadlessContext::create();
+    if (!created)
+        return core::Error{created.error() + " (use --cpu to capture without OpenGL)"};
+    context = std::move(created).value();
+    auto gl = std::make_unique<render::GlLayerCapturer>();
+    if (const core::Status s = gl->initialize(); !s)
+        return s.takeError();
+    return std::unique_ptr<core::LayerCapturer>(std::move(gl));
+}
+
 int fail(const std::string& message) {
     std::cerr << "layerpaint-cli: " << message << '\n';
     return 1;
@@ -252,25 +266,17 @@ int runLayers(const LayersArgs& args) {
         return fail(args.outDir + ": " + ec.message());
 
     std::unique_ptr<render::HeadlessContext> context;
-    std::unique_ptr<core::LayerCapturer> capturer;
     std::unique_ptr<render::GlConnectivityEngine> engine;
     const auto backend = render::parseConnectivityBackend(args.connectivity);
     if (args.cpuCapture && backend == render::ConnectivityBackend::Gpu)
         return fail("--connectivity gpu needs OpenGL: drop --cpu");
-    if (args.cpuCapture) {
-        capturer = std::make_unique<core::CpuLayerCapturer>();
-    } else {
-        auto created = render::HeadlessContext::create();
-        if (!created)
-            return fail(created.error() + " (use --cpu to capture without OpenGL)");
-        context = std::move(created).value();
-        auto gl = std::make_unique<render::GlLayerCapturer>();
-        if (const core::Status s = gl->initialize(); !s)
-            return fail(s.error());
-        capturer = std::move(gl);
+    auto made = makeCapturer(args.cpuCapture, context);
+    if (!made)
+        return fail(made.error());
+    std::unique_ptr<core::LayerCapturer> capturer = std::move(made).value();
+    if (!args.cpuCapture)
         engine = std::make_unique<render::GlConnectivityEngine>(
             backend.value_or(render::ConnectivityBackend::Auto));
-    }
     capturer->setMesh(*mesh);
 
     core::LayerOptions options;

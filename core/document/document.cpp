@@ -389,16 +389,21 @@ Status Document::setPaintTarget(const PaintTargetOptions& options) {
     return {};
 }
 
-Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
-    changes.clear();
+Result<PaintTarget*> Document::readyToPaint() {
     if (!m_layers)
         return Error{"the layers of this view are not built yet"};
-    Result<PaintTarget*> made = ensurePaintTarget();
-    if (!made)
-        return made.takeError();
-    PaintTarget* target = *made;
-    if (m_tracker.inStroke())
+    Result<PaintTarget*> target = ensurePaintTarget();
+    if (target && m_tracker.inStroke())
         endStroke();
+    return target;
+}
+
+Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    Result<PaintTarget*> ready = readyToPaint();
+    if (!ready)
+        return ready.takeError();
+    PaintTarget* target = *ready;
     m_session.noteState(*this);
     m_session.strokePoint(point);
     m_strokeOrderBefore = m_order.state();
@@ -472,14 +477,10 @@ void Document::endStroke() {
 
 Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes) {
     changes.clear();
-    if (!m_layers)
-        return Error{"the layers of this view are not built yet"};
-    Result<PaintTarget*> made = ensurePaintTarget();
-    if (!made)
-        return made.takeError();
-    PaintTarget* target = *made;
-    if (m_tracker.inStroke())
-        endStroke();
+    Result<PaintTarget*> ready = readyToPaint();
+    if (!ready)
+        return ready.takeError();
+    PaintTarget* target = *ready;
     const LayerStack& stack = m_layers->stack;
     const auto pixel = pixelIndex(position);
     if (!pixel)
@@ -556,32 +557,28 @@ void Document::applyStep(HistoryStep& step, bool undo, PaintChanges& changes) {
 }
 
 bool Document::undo(PaintChanges& changes) {
-    changes.clear();
-    if (m_tracker.inStroke())
-        endStroke();
-    if (m_hideRanks)
-        endHide();
-    HistoryStep* step = m_history.nextUndo();
-    if (!step)
-        return false;
-    m_session.add({{"op", "undo"}});
-    applyStep(*step, true, changes);
-    m_history.undone();
-    return true;
+    return walkHistory(true, changes);
 }
 
 bool Document::redo(PaintChanges& changes) {
+    return walkHistory(false, changes);
+}
+
+bool Document::walkHistory(bool undo, PaintChanges& changes) {
     changes.clear();
     if (m_tracker.inStroke())
         endStroke();
     if (m_hideRanks)
         endHide();
-    HistoryStep* step = m_history.nextRedo();
+    HistoryStep* step = undo ? m_history.nextUndo() : m_history.nextRedo();
     if (!step)
         return false;
-    m_session.add({{"op", "redo"}});
-    applyStep(*step, false, changes);
-    m_history.redone();
+    m_session.add({{"op", undo ? "undo" : "redo"}});
+    applyStep(*step, undo, changes);
+    if (undo)
+        m_history.undone();
+    else
+        m_history.redone();
     return true;
 }
 

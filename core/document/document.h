@@ -248,6 +248,13 @@ private:
     StrokePoint curved(StrokePoint point) const;
     /** Applies (undo) or re-applies (redo) one step's parts. */
     void applyStep(HistoryStep& step, bool undo, PaintChanges& changes);
+    /**
+     * What painting (a stroke, a fill) needs: built layers and the paint target (made on first
+     * use); a stroke in progress is ended.
+     */
+    Result<PaintTarget*> readyToPaint();
+    /** undo() or redo(): ends a stroke or hide in progress, applies the next step, logs it. */
+    bool walkHistory(bool undo, PaintChanges& changes);
     /** Records the order change since before as a step of kind (nothing if unchanged). */
     void pushOrderStep(StepKind kind, RegionOrderState before);
     /** The layers were replaced or re-segmented: a fresh order, the tracker told. */

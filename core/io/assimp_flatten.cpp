@@ -163,17 +163,10 @@ bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
     if (tris.empty())
         return true;
 
-    std::vector<std::uint32_t> remap(vertexCount, std::numeric_limits<std::uint32_t>::max());
-    for (std::uint32_t v : tris)
-        remap[v] = 0;
-    std::uint64_t used = 0;
-    for (std::uint32_t& r : remap)
-        if (r == 0)
-            r = static_cast<std::uint32_t>(used++);
-    if (m_mesh.positions.size() + used > m_limits.maxVertices)
-        return fail("too many vertices (more than " + str(m_limits.maxVertices) + ")");
-    if (m_mesh.triangleCount() + tris.size() / 3 > m_limits.maxTriangles)
-        return fail("too many triangles (more than " + str(m_limits.maxTriangles) + ")");
+    Result<UsedVertices> usedVertices = numberUsedVertices(tris, vertexCount, m_mesh, m_limits);
+    if (!usedVertices)
+        return fail(usedVertices.error());
+    const std::vector<std::uint32_t>& remap = usedVertices->remap;
 
     const bool hasNormals = am.mNormals != nullptr;
     const bool hasUv = am.mTextureCoords[0] != nullptr;

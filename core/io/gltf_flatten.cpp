@@ -378,17 +378,10 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     }
 
     // Only the vertices the triangles use, in their original order.
-    std::vector<std::uint32_t> remap(vertexCount, std::numeric_limits<std::uint32_t>::max());
-    for (std::uint32_t v : tris)
-        remap[v] = 0;
-    std::uint64_t used = 0;
-    for (std::uint32_t& r : remap)
-        if (r == 0)
-            r = static_cast<std::uint32_t>(used++);
-    if (m_mesh.positions.size() + used > m_limits.maxVertices)
-        return fail("too many vertices (more than " + str(m_limits.maxVertices) + ")");
-    if (m_mesh.triangleCount() + tris.size() / 3 > m_limits.maxTriangles)
-        return fail("too many triangles (more than " + str(m_limits.maxTriangles) + ")");
+    Result<UsedVertices> usedVertices = numberUsedVertices(tris, vertexCount, m_mesh, m_limits);
+    if (!usedVertices)
+        return fail(usedVertices.error());
+    const std::vector<std::uint32_t>& remap = usedVertices->remap;
 
     const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(inst.transform));
     const bool mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;

@@ -58,6 +58,25 @@ Error fileError(const std::string& path, const Error& error) {
                      error.kind == ErrorKind::Failed ? ErrorKind::BadInput : error.kind);
 }
 
+Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
+                                        std::size_t vertexCount, const Mesh& mesh,
+                                        const LoadLimits& limits) {
+    UsedVertices used;
+    used.remap.assign(vertexCount, std::numeric_limits<std::uint32_t>::max());
+    for (std::uint32_t v : tris)
+        used.remap[v] = 0;
+    for (std::uint32_t& r : used.remap)
+        if (r == 0)
+            r = static_cast<std::uint32_t>(used.count++);
+    if (mesh.positions.size() + used.count > limits.maxVertices)
+        return Error{"too many vertices (more than " + std::to_string(limits.maxVertices) + ")",
+                     ErrorKind::BadInput};
+    if (mesh.triangleCount() + tris.size() / 3 > limits.maxTriangles)
+        return Error{"too many triangles (more than " + std::to_string(limits.maxTriangles) + ")",
+                     ErrorKind::BadInput};
+    return used;
+}
+
 bool toFloat(const glm::dvec3& p, glm::vec3& out) {
     constexpr double kMax = std::numeric_limits<float>::max();
     for (int k = 0; k < 3; ++k)

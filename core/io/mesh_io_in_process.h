@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <new>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -61,6 +62,21 @@ template <typename Load> Result<Mesh> catchLoadErrors(Load&& load) {
         return Error{"cannot be loaded (unexpected error)"};
     }
 }
+
+/** The vertices a run of triangle corners uses, numbered in their original order. */
+struct UsedVertices {
+    std::vector<std::uint32_t> remap; // per vertex: its new index, or UINT32_MAX where unused
+    std::uint64_t count = 0;
+};
+
+/**
+ * The vertices (of vertexCount) that the triangle corners tris use, numbered in their original
+ * order, so primitives sharing one big vertex array do not multiply it; an Error (BadInput) when
+ * adding them and their triangles to mesh would pass limits.
+ */
+Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
+                                        std::size_t vertexCount, const Mesh& mesh,
+                                        const LoadLimits& limits);
 
 /** p as floats, or false if it does not fit (a double beyond float range is not castable). */
 bool toFloat(const glm::dvec3& p, glm::vec3& out);

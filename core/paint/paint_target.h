@@ -234,6 +234,11 @@ private:
                   const PaintTargetOptions& options);
     /** Pads the seams around the tiles the current dab touched (see PaintTargetOptions). */
     void padTouched();
+    /**
+     * Raises the stroke's coverage of texel (x, y) of page pageIndex to cover (never lowers it)
+     * and blends the texel to it: the flood fill's and the seam padding's texel.
+     */
+    void coverTexel(std::uint32_t pageIndex, int x, int y, float cover);
     void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const override;
 
     std::vector<Page> m_pages;

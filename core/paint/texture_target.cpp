@@ -373,8 +373,6 @@ void TextureTarget::addChanges(std::vector<TileKey>& keys, PaintChanges& out) co
 
 void TextureTarget::padTouched() {
     Context& c = *m_context;
-    const SrgbTables& srgb = SrgbTables::get();
-    const bool eraser = c.brush.eraser;
     // Seam padding: uncovered texels next to charts take the coverage of the texel they copy,
     // blended over their own stroke-start value, so the eraser restores them exactly too.
     const std::size_t paintedTiles = c.touched.size(); // padding adds to the list
@@ -398,27 +396,32 @@ void TextureTarget::padTouched() {
                     .alpha[std::size_t(sy) * std::size_t(sourceWidth) + std::size_t(sx)];
             if (!(sourceCover > 0.0f))
                 continue;
-            const int px = int(pair.padded % std::uint32_t(width));
-            const int py = int(pair.padded / std::uint32_t(width));
-            const std::uint32_t tile =
-                std::uint32_t(py / kTextureTile) * std::uint32_t(page.tilesX) +
-                std::uint32_t(px / kTextureTile);
-            const std::int32_t slot = c.slotFor(*this, key.page, tile);
-            StrokeTile& st = c.slots[std::size_t(slot)];
-            const int tileWidth =
-                std::min(kTextureTile, width - (px / kTextureTile) * kTextureTile);
-            const std::size_t local = std::size_t(py % kTextureTile) * std::size_t(tileWidth) +
-                                      std::size_t(px % kTextureTile);
-            if (!(sourceCover > st.alpha[local]))
-                continue;
-            st.alpha[local] = sourceCover;
-            c.touch(slot);
-            const std::size_t at = std::size_t(pair.padded) * 4;
-            blendTexel(srgb, &page.image.rgba[at], &st.before[local * 4],
-                       eraser ? &page.original.rgba[at] : c.colorBytes.data(),
-                       eraser ? nullptr : &c.colorLinear[0], sourceCover);
+            coverTexel(key.page, int(pair.padded % std::uint32_t(width)),
+                       int(pair.padded / std::uint32_t(width)), sourceCover);
         }
     }
+}
+
+void TextureTarget::coverTexel(std::uint32_t pageIndex, int x, int y, float cover) {
+    Context& c = *m_context;
+    Page& page = m_pages[pageIndex];
+    const int width = page.image.width;
+    const std::uint32_t tile = std::uint32_t(y / kTextureTile) * std::uint32_t(page.tilesX) +
+                               std::uint32_t(x / kTextureTile);
+    const std::int32_t slot = c.slotFor(*this, pageIndex, tile);
+    StrokeTile& st = c.slots[std::size_t(slot)];
+    const int tileWidth = std::min(kTextureTile, width - (x / kTextureTile) * kTextureTile);
+    const std::size_t local =
+        std::size_t(y % kTextureTile) * std::size_t(tileWidth) + std::size_t(x % kTextureTile);
+    if (!(cover > st.alpha[local]))
+        return;
+    st.alpha[local] = cover;
+    c.touch(slot);
+    const std::size_t at = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
+    const bool eraser = c.brush.eraser;
+    blendTexel(SrgbTables::get(), &page.image.rgba[at], &st.before[local * 4],
+               eraser ? &page.original.rgba[at] : c.colorBytes.data(),
+               eraser ? nullptr : &c.colorLinear[0], cover);
 }
 
 const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> elements) {
@@ -426,8 +429,6 @@ const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> e
     const float cover = c.beginElements();
     if (!(cover > 0.0f))
         return c.changes;
-    const SrgbTables& srgb = SrgbTables::get();
-    const bool eraser = c.brush.eraser;
     for (const PaintElement& e : elements) {
         if (e.page >= m_pages.size())
             continue;
@@ -435,22 +436,8 @@ const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> e
         const int width = page.image.width;
         if (std::size_t(e.index) >= std::size_t(width) * std::size_t(page.image.height))
             continue;
-        const int x = int(e.index % std::uint32_t(width)), y = int(e.index / std::uint32_t(width));
-        const std::uint32_t tile = std::uint32_t(y / kTextureTile) * std::uint32_t(page.tilesX) +
-                                   std::uint32_t(x / kTextureTile);
-        const std::int32_t slot = c.slotFor(*this, e.page, tile);
-        StrokeTile& st = c.slots[std::size_t(slot)];
-        const int tileWidth = std::min(kTextureTile, width - (x / kTextureTile) * kTextureTile);
-        const std::size_t local =
-            std::size_t(y % kTextureTile) * std::size_t(tileWidth) + std::size_t(x % kTextureTile);
-        if (!(cover > st.alpha[local]))
-            continue;
-        st.alpha[local] = cover;
-        c.touch(slot);
-        const std::size_t at = std::size_t(e.index) * 4;
-        blendTexel(srgb, &page.image.rgba[at], &st.before[local * 4],
-                   eraser ? &page.original.rgba[at] : c.colorBytes.data(),
-                   eraser ? nullptr : &c.colorLinear[0], cover);
+        coverTexel(e.page, int(e.index % std::uint32_t(width)), int(e.index / std::uint32_t(width)),
+                   cover);
     }
     padTouched();
     return touchedChanges();
