@@ -130,15 +130,16 @@ wait "$project" || status=1
 # the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
 # in a third-party parser, which only the importer process can contain (checked below).
 origin() {
-    awk '/ERROR: |runtime error|Test unit written/ { on = 1 } on && /#[0-9]+ 0x[0-9a-f]+ in / {
-        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x/) next
-        print ($0 ~ /\/(core|tests\/fuzz)\/[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
+    awk '/ERROR: |CHECK failed|deadly signal|runtime error|Test unit written/ { on = 1 }
+        on && /#[0-9]+ 0x[0-9a-f]+ / {
+        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x|asan_|operator (new|delete)/) next
+        print ($0 ~ /\/(core|tests\/fuzz)\/([a-z_]+\/)*[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
 }
 for name in fuzz_loaders fuzz_project; do
     echo "== $name"
     grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|INFO: fuzzed for)' \
         "$work/$name.log" | tail -n 4 || true
-    if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|runtime error|Test unit written' \
+    if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|Sanitizer: CHECK failed|runtime error|Test unit written' \
         "$work/$name.log"; then
         where=$(origin "$work/$name.log")
         echo "finding in ${where:-unknown} code:"
