@@ -124,8 +124,11 @@ run fuzz_loaders &
 loaders=$!
 run fuzz_project &
 project=$!
-wait "$loaders" || status=1
-wait "$project" || status=1
+# A finding makes libFuzzer exit non-zero; whether it fails is decided below by where it is. A
+# run that ended non-zero without a finding (it could not start, ...) fails.
+declare -A exited
+wait "$loaders" && exited[fuzz_loaders]=0 || exited[fuzz_loaders]=$?
+wait "$project" && exited[fuzz_project]=0 || exited[fuzz_project]=$?
 # Where a finding failed: the innermost stack frame that is not the sanitizer's, libFuzzer's or
 # the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
 # in a third-party parser, which only the importer process can contain (checked below).
@@ -147,6 +150,10 @@ for name in fuzz_loaders fuzz_project; do
         # In CI a finding in our code fails; one in a third-party parser fails only if the
         # importer process does not contain it (below): it then belongs in tests/data/crashers.
         [[ -n $runs && $where != third-party ]] && status=1
+    elif ((exited[$name] != 0)); then
+        echo "$name ended with status ${exited[$name]} without a finding:"
+        tail -n 20 "$work/$name.log"
+        status=1
     fi
 done
 # Exploring, findings are expected (third-party parsers): what counts is whether the
