@@ -17,6 +17,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/layers/connectivity.h"
+#include "render/gl_buffer.h"
 #include "render/paint_texture.h"
 #include "render/shader_library.h"
 
@@ -90,147 +91,69 @@ struct GpuMaterial {
     std::int32_t pad;
 };
 
-/** A GL buffer whose storage is kept while new data fits, so a rebuild does not reallocate. */
-struct Buffer {
-    GLuint id = 0;
-    std::size_t capacity = 0;
-
+/** A shader storage buffer of the compositor: 16-byte elements, room to grow on request. */
+struct Buffer : GlBuffer {
     /**
      * Stores bytes from data (or only makes room when data is null); slack leaves room to grow.
      * False if GL could not allocate (the buffer is then empty).
      */
-    bool upload(const void* data, std::size_t bytes, std::size_t limit, bool slack = false) {
-        if (id == 0 || bytes > capacity) {
-            release();
-            std::size_t size = std::max(bytes, kMinBufferBytes);
-            if (slack)
-                size = std::max(size, std::min(size + size / 4, limit));
-            size = (size + 15) / 16 * 16; // whole elements for any std430 array
-            while (glGetError() != GL_NO_ERROR) {
-            }
-            glCreateBuffers(1, &id);
-            glNamedBufferStorage(id, GLsizeiptr(size), nullptr, GL_DYNAMIC_STORAGE_BIT);
-            if (glGetError() != GL_NO_ERROR) {
-                release();
-                return false;
-            }
-            capacity = size;
-        }
-        if (data && bytes > 0)
-            glNamedBufferSubData(id, 0, GLsizeiptr(bytes), data);
-        return true;
+    bool upload(const void* source, std::size_t size, std::size_t limit, bool slack = false) {
+        std::size_t allocation = std::max(size, kMinBufferBytes);
+        if (slack)
+            allocation = std::max(allocation, std::min(allocation + allocation / 4, limit));
+        allocation = (allocation + 15) / 16 * 16; // whole elements for any std430 array
+        return GlBuffer::upload(source, size, allocation);
     }
     template <typename T>
-    bool upload(const std::vector<T>& data, std::size_t limit, bool slack = false) {
-        return upload(data.data(), data.size() * sizeof(T), limit, slack);
-    }
-    void release() {
-        if (id)
-            glDeleteBuffers(1, &id);
-        id = 0;
-        capacity = 0;
+    bool upload(const std::vector<T>& values, std::size_t limit, bool slack = false) {
+        return upload(values.data(), values.size() * sizeof(T), limit, slack);
     }
 };
 
 /** A linked program variant and the locations of its uniforms (-1 where it has none). */
 struct Program {
-    GLuint id = 0;
-    GLint width, height, tileSize, layer, regionCount, maxLayers, fragmentCount, triangleCount,
-        view;
-    GLint rayOrigin0, rayOriginDx, rayOriginDy, rayDirection0, rayDirectionDx, rayDirectionDy;
-    GLint background, highlight, highlightBox, pass, texture, opacity;
+    ShaderProgram shader;
+    GLint width = -1, height = -1, tileSize = -1, layer = -1, regionCount = -1, maxLayers = -1,
+          fragmentCount = -1, triangleCount = -1, view = -1;
+    GLint rayOrigin0 = -1, rayOriginDx = -1, rayOriginDy = -1, rayDirection0 = -1,
+          rayDirectionDx = -1, rayDirectionDy = -1;
+    GLint background = -1, highlight = -1, highlightBox = -1, pass = -1, texture = -1, opacity = -1;
 };
 
-std::string shaderLog(GLuint object, bool program) {
-    GLint length = 0;
-    if (program)
-        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else
-        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    if (program)
-        glGetProgramInfoLog(object, length, nullptr, log.data());
-    else
-        glGetShaderInfoLog(object, length, nullptr, log.data());
-    return log.c_str();
-}
-
-/**
- * composite.vert + composite.frag, or composite_shade.comp, with the variant's defines after the
- * #version line (a #line keeps the driver's line numbers those of the file); an Error naming
- * the file on failure.
- */
+/** composite.vert + composite.frag, or composite_shade.comp, with the variant's defines. */
 core::Result<Program> buildProgram(unsigned variant) {
-    std::string defines, names;
+    std::vector<std::string> defines;
     for (const auto& [bit, name] : kDefines)
-        if (variant & bit) {
-            defines += std::string("#define ") + name + "\n";
-            names += std::string(names.empty() ? "" : " ") + name;
-        }
-    defines += "#line 2\n";
-    const GLuint id = glCreateProgram();
-    std::vector<const char*> files{"composite.vert", "composite.frag"};
-    if (variant & kShade)
-        files = {"composite_shade.comp"};
-    for (const char* file : files) {
-        std::string source(shaderSource(file));
-        const std::size_t firstLine = source.find('\n');
-        if (source.empty() || firstLine == std::string::npos) {
-            glDeleteProgram(id);
-            return core::Error{std::string("shader ") + file + ": not embedded in this build"};
-        }
-        source.insert(firstLine + 1, defines);
-        const std::string_view name(file);
-        const GLuint shader = glCreateShader(name.ends_with(".vert")   ? GL_VERTEX_SHADER
-                                             : name.ends_with(".comp") ? GL_COMPUTE_SHADER
-                                                                       : GL_FRAGMENT_SHADER);
-        const char* text = source.c_str();
-        glShaderSource(shader, 1, &text, nullptr);
-        glCompileShader(shader);
-        GLint ok = GL_FALSE;
-        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            const std::string log = shaderLog(shader, false);
-            glDeleteShader(shader);
-            glDeleteProgram(id);
-            return core::Error{std::string("shader ") + file + " (" + names +
-                               ") failed to compile:\n" + log};
-        }
-        glAttachShader(id, shader);
-        glDeleteShader(shader); // freed with the program
-    }
-    glLinkProgram(id);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(id, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = shaderLog(id, true);
-        glDeleteProgram(id);
-        return core::Error{std::string("shader program ") + files.front() + " (" + names +
-                           ") failed to link:\n" + log};
-    }
-    const auto at = [id](const char* name) { return glGetUniformLocation(id, name); };
-    return Program{id,
-                   at("uWidth"),
-                   at("uHeight"),
-                   at("uTileSize"),
-                   at("uLayer"),
-                   at("uRegionCount"),
-                   at("uMaxLayers"),
-                   at("uFragmentCount"),
-                   at("uTriangleCount"),
-                   at("uView"),
-                   at("uRayOrigin0"),
-                   at("uRayOriginDx"),
-                   at("uRayOriginDy"),
-                   at("uRayDirection0"),
-                   at("uRayDirectionDx"),
-                   at("uRayDirectionDy"),
-                   at("uBackground"),
-                   at("uHighlight"),
-                   at("uHighlightBox"),
-                   at("uPass"),
-                   at("uTexture"),
-                   at("uOpacity")};
+        if (variant & bit)
+            defines.emplace_back(name);
+    auto built = variant & kShade
+                     ? ShaderProgram::build({"composite_shade.comp"}, defines)
+                     : ShaderProgram::build({"composite.vert", "composite.frag"}, defines);
+    if (!built)
+        return core::Error{built.error()};
+    Program p{std::move(built).value()};
+    p.shader.locate({{&p.width, "uWidth"},
+                     {&p.height, "uHeight"},
+                     {&p.tileSize, "uTileSize"},
+                     {&p.layer, "uLayer"},
+                     {&p.regionCount, "uRegionCount"},
+                     {&p.maxLayers, "uMaxLayers"},
+                     {&p.fragmentCount, "uFragmentCount"},
+                     {&p.triangleCount, "uTriangleCount"},
+                     {&p.view, "uView"},
+                     {&p.rayOrigin0, "uRayOrigin0"},
+                     {&p.rayOriginDx, "uRayOriginDx"},
+                     {&p.rayOriginDy, "uRayOriginDy"},
+                     {&p.rayDirection0, "uRayDirection0"},
+                     {&p.rayDirectionDx, "uRayDirectionDx"},
+                     {&p.rayDirectionDy, "uRayDirectionDy"},
+                     {&p.background, "uBackground"},
+                     {&p.highlight, "uHighlight"},
+                     {&p.highlightBox, "uHighlightBox"},
+                     {&p.pass, "uPass"},
+                     {&p.texture, "uTexture"},
+                     {&p.opacity, "uOpacity"}});
+    return p;
 }
 
 /** lowbias32 (C. Wellons): a cheap integer hash with good avalanche, the same in GLSL. */
@@ -327,7 +250,7 @@ struct LayerCompositor::Impl {
             auto built = buildProgram(variant);
             if (!built)
                 return core::Error{built.error()};
-            found = programs.emplace(variant, built.value()).first;
+            found = programs.emplace(variant, std::move(built).value()).first;
         }
         return &found->second;
     }
@@ -696,7 +619,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     if (shade && d.fragments > 0) {
         // Once per capture or mesh: every fragment's shading, 64 fragments a group.
         const Program& p = **shader;
-        glUseProgram(p.id);
+        p.shader.use();
         glUniform1ui(p.fragmentCount, std::uint32_t(d.fragments));
         glUniform1ui(p.width, std::uint32_t(d.width));
         glUniform1ui(p.triangleCount, d.hasMesh ? d.triangleCount : 0u);
@@ -727,7 +650,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const Step& step = steps[i];
         const Program& p = **d.program(step.variant);
-        glUseProgram(p.id);
+        p.shader.use();
         if (step.blend)
             glEnable(GL_BLEND);
         glUniform1i(p.width, d.width);
@@ -786,12 +709,10 @@ void LayerCompositor::release() {
     Impl& d = *m_impl;
     d.releaseTextures();
     for (Buffer& buffer : d.buffers)
-        buffer.release();
+        buffer.free();
     if (d.vao)
         glDeleteVertexArrays(1, &d.vao);
     d.vao = 0;
-    for (auto& [variant, program] : d.programs)
-        glDeleteProgram(program.id);
     d.programs.clear();
     d.hasMesh = false;
     d.hasLayers = false;
