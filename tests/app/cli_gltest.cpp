@@ -17,38 +17,21 @@
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-    int exitCode = -1;
-    std::string out, err;
-};
+using cli_test::CliRun;
+using cli_test::readFile;
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/** Runs layerpaint-cli with arguments (no shell expansion happens in them: they are quoted). */
+/** Runs layerpaint-cli with arguments, its output kept in a folder of this test process. */
 CliRun runCli(const std::vector<std::string>& args) {
     const fs::path dir = fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    std::string command = std::string("'") + LAYERPAINT_CLI + "'";
-    for (const std::string& a : args)
-        command += " '" + a + "'";
-    command += " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
-    CliRun run;
-    const int status = std::system(command.c_str());
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = readFile(dir / "out");
-    run.err = readFile(dir / "err");
-    return run;
+    return cli_test::runCli(args, dir);
 }
 
 std::vector<std::uint32_t> readUInt32Image(const fs::path& path, int& width, int& height) {

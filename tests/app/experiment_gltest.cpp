@@ -14,6 +14,7 @@
 #include "core/io/mesh_io.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
@@ -80,6 +81,24 @@ std::vector<int> paintedPerSegment(const core::Mesh& mesh) {
     return painted;
 }
 
+/** Runs `paint MODEL` with script; the saved model, reloaded (nullopt and a failure if not). */
+std::optional<core::Mesh> runPaintScript(const std::string& model, const json& script,
+                                         const std::string& tag) {
+    const fs::path dir = fs::temp_directory_path() / ("layerpaint_" + tag);
+    fs::create_directories(dir);
+    std::ofstream(dir / "script.json") << script.dump();
+    const cli_test::CliRun run =
+        cli_test::runCli({"paint", model, "--script", (dir / "script.json").string(), "--out",
+                          (dir / "result.glb").string()},
+                         dir);
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    auto mesh = core::loadMesh((dir / "result.glb").string());
+    EXPECT_TRUE(mesh) << mesh.error();
+    if (!mesh)
+        return std::nullopt;
+    return std::move(mesh).value();
+}
+
 std::vector<int> paintStroke(bool layerAware, const Crossing& crossing, const core::View& view,
                              const std::string& tag) {
     json points = json::array();
@@ -95,15 +114,8 @@ std::vector<int> paintStroke(bool layerAware, const Crossing& crossing, const co
          {{{"op", "set-mode"}, {"layer_aware", layerAware}},
           {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 6}, {"hardness", 1.0}},
           {{"op", "stroke"}, {"points", points}}}}};
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_experiment1_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const std::string command =
-        std::string("'") + LAYERPAINT_CLI + "' paint builtin:trefoil --script '" +
-        (dir / "script.json").string() + "' --out '" + (dir / "result.glb").string() + "'";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
+    const std::optional<core::Mesh> mesh =
+        runPaintScript("builtin:trefoil", script, "experiment1_" + tag);
     if (!mesh)
         return {};
     EXPECT_EQ(mesh->triangleCount(), core::makeTrefoil().triangleCount());
@@ -143,23 +155,6 @@ TEST(PaperExperiments, OneLongStrokePaintsTheHiddenStrandAndNotTheOccluder) {
 } // namespace
 
 namespace {
-
-/** Runs `paint MODEL` with script; the saved model, reloaded (nullopt and a failure if not). */
-std::optional<core::Mesh> runPaintScript(const std::string& model, const json& script,
-                                         const std::string& tag) {
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const std::string command = std::string("'") + LAYERPAINT_CLI + "' paint " + model +
-                                " --script '" + (dir / "script.json").string() + "' --out '" +
-                                (dir / "result.glb").string() + "'";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
-    if (!mesh)
-        return std::nullopt;
-    return std::move(mesh).value();
-}
 
 /** Red texels of the saved texture inside the UV rectangle [origin, origin + size). */
 int redTexelsIn(const core::Mesh& mesh, glm::vec2 origin, float size) {
