@@ -749,22 +749,28 @@ void MainWindow::pickColor(QPointF pixel) {
     statusBar()->showMessage(tr("Picked %1").arg(ColorPanel::hexName(picked)), kPaintMessageMs);
 }
 
-void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
-    QElapsedTimer clock;
-    clock.start();
-    m_strokeStats = {};
+bool MainWindow::preparePainting() {
     // Never paint with the layers of another view: build them now if they are not there.
     if (!m_builder->buildNow())
-        return; // buildFailed() reported why
+        return false; // buildFailed() reported why
     const bool hadTarget = m_document->hasPaintTarget();
     std::string error;
     if (!m_document->paintTarget(&error)) {
         statusBar()->showMessage(
             tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
-        return;
+        return false;
     }
     if (!hadTarget)
         m_viewport->paintTargetChanged();
+    return true;
+}
+
+void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
+    QElapsedTimer clock;
+    clock.start();
+    m_strokeStats = {};
+    if (!preparePainting())
+        return;
     m_document->brush().eraser = eraser;
     m_lastPressure = float(pressure);
     core::PaintChanges changes;
@@ -789,18 +795,8 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
 void MainWindow::fillAt(QPointF pixel) {
     QElapsedTimer clock;
     clock.start();
-    // As a stroke: never with the layers of another view.
-    if (!m_builder->buildNow())
-        return; // buildFailed() reported why
-    const bool hadTarget = m_document->hasPaintTarget();
-    std::string error;
-    if (!m_document->paintTarget(&error)) {
-        statusBar()->showMessage(
-            tr("Cannot paint this model: %1").arg(QString::fromStdString(error)), kStatusMessageMs);
+    if (!preparePainting())
         return;
-    }
-    if (!hadTarget)
-        m_viewport->paintTargetChanged();
     const std::uint64_t revision = m_document->history().revision();
     core::PaintChanges changes;
     const core::Status status =

@@ -193,6 +193,11 @@ private:
     void createPaintActions();
     void createToolActions();
     void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
+    /**
+     * Before a stroke or fill: the layers of this view (built now if missing) and a paint target
+     * (made now if there is none); false, with a message, where either cannot be had.
+     */
+    bool preparePainting();
     /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
     /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
