@@ -184,6 +184,13 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    // Shared by the files the window's code is split into.
+    static constexpr int kStatusMessageMs = 10000;
+    static constexpr int kPaintMessageMs = 3000;
+    static constexpr int kProgressSteps = 1000;
+    /** A "builtin:NAME" source rather than a file. */
+    static bool isBuiltin(const QString& source);
+
     void createPanels();
     /** A dock (on the right by default) named for saveState(). */
     QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
