@@ -9,7 +9,8 @@ namespace ui {
 
 struct BackgroundTask::State {
     QFuture<void> future;
-    QString error; // written by the job, read once it finished
+    bool ran = false; // the job started (a job cancelled before it started never does)
+    QString error;    // written by the job, read once it finished
 };
 
 BackgroundTask::BackgroundTask(QObject* parent) : QObject(parent) {
@@ -29,6 +30,7 @@ bool BackgroundTask::start(Job job) {
     state->future = runInBackground(
         m_pool, this,
         [raw = state.get(), job = std::move(job)](const core::ProgressFn& progress) {
+            raw->ran = true;
             try {
                 raw->error = job(progress);
             } catch (const std::bad_alloc&) {
@@ -62,6 +64,8 @@ void BackgroundTask::finish(const std::shared_ptr<State>& state) {
     if (state != m_state)
         return; // already reported (wait())
     m_state.reset();
+    if (!state->ran)
+        state->error = QStringLiteral("cancelled"); // as core says of a job stopped at once
     // A job that completed although asked to stop (too late to cancel) succeeded.
     emit finished(state->error, !state->error.isEmpty() && state->future.isCanceled());
 }

@@ -24,9 +24,10 @@ inline constexpr int kJobProgressSteps = 10000;
 /**
  * The one way the GUI runs work off its thread (loading, building layers, saving, exporting):
  * QtConcurrent::run on pool with a QPromise, and a QFutureWatcher that calls done() on context's
- * thread once work has returned, also when the future was cancelled. work gets a
- * core::ProgressFn that publishes a fraction as the future's progress value and returns false
- * once QFuture::cancel() was called. work must catch its own exceptions and keep its result in
+ * thread once work has returned, also when the future was cancelled (work never runs when it was
+ * cancelled before it started). work gets a core::ProgressFn that publishes a fraction as the
+ * future's progress value (which only grows: a lower one is ignored) and returns false once
+ * QFuture::cancel() was called. work must catch its own exceptions and keep its result in
  * state it shares with done(); it must not touch the document. done() never comes once context
  * was destroyed, so whoever owns pool waits for its jobs first (a waited-for job still reports
  * later: done() must ignore a job it has settled).
