@@ -17,38 +17,21 @@
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-    int exitCode = -1;
-    std::string out, err;
-};
+using cli_test::CliRun;
+using cli_test::readFile;
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/** Runs layerpaint-cli with arguments (no shell expansion happens in them: they are quoted). */
+/** Runs layerpaint-cli with arguments, its output kept in a folder of this test process. */
 CliRun runCli(const std::vector<std::string>& args) {
     const fs::path dir = fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    std::string command = std::string("'") + LAYERPAINT_CLI + "'";
-    for (const std::string& a : args)
-        command += " '" + a + "'";
-    command += " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
-    CliRun run;
-    const int status = std::system(command.c_str());
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = readFile(dir / "out");
-    run.err = readFile(dir / "err");
-    return run;
+    return cli_test::runCli(args, dir);
 }
 
 std::vector<std::uint32_t> readUInt32Image(const fs::path& path, int& width, int& height) {
@@ -297,15 +280,9 @@ TEST(Cli, CameraFileGivesTheSameViewAsOrbit) {
 /** builtin:row's four bodies: per body, how many triangles have rgb (±3) at their centre texel. */
 std::array<int, 4> rowTrianglesOfColor(const core::Mesh& mesh, std::array<int, 3> rgb) {
     std::array<int, 4> count{};
-    const core::Image& texture = mesh.textures.at(0);
     const std::size_t perBody = mesh.triangleCount() / 4;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        glm::vec2 uv(0.0f);
-        for (int k = 0; k < 3; ++k)
-            uv += mesh.uvs[mesh.indices[3 * t + std::size_t(k)]] / 3.0f;
-        const int x = std::clamp(int(uv.x * float(texture.width)), 0, texture.width - 1);
-        const int y = std::clamp(int(uv.y * float(texture.height)), 0, texture.height - 1);
-        const std::uint8_t* px = &texture.rgba[(std::size_t(y) * texture.width + x) * 4];
+        const std::uint8_t* px = cli_test::centreTexel(mesh, t);
         if (std::abs(px[0] - rgb[0]) <= 3 && std::abs(px[1] - rgb[1]) <= 3 &&
             std::abs(px[2] - rgb[2]) <= 3)
             ++count[std::min<std::size_t>(t / perBody, 3)];
@@ -315,15 +292,9 @@ std::array<int, 4> rowTrianglesOfColor(const core::Mesh& mesh, std::array<int, 3
 
 /** Replays script on builtin:row and loads the saved .glb. */
 core::Mesh paintRow(const json& script, const std::string& tag) {
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_cli_fill_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const CliRun run = runCli({"paint", "builtin:row", "--script", (dir / "script.json").string(),
-                               "--out", (dir / "result.glb").string()});
-    EXPECT_EQ(run.exitCode, 0) << run.err;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
-    return mesh ? std::move(mesh).value() : core::Mesh{};
+    std::optional<core::Mesh> mesh =
+        cli_test::paintScript("builtin:row", script, "cli_fill_" + tag);
+    return mesh ? std::move(*mesh) : core::Mesh{};
 }
 
 TEST(Cli, PaintFillModesFillWhatTheySayOnTheSavedModel) {
