@@ -43,13 +43,13 @@ void CpuCapture(benchmark::State& state) {
 }
 BENCHMARK(CpuCapture)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/** Args: connection test (0 plain, 1 surface), worker threads. */
-void Connectivity(benchmark::State& state) {
+/** The surface or the plain connection test; arg: worker threads. */
+void Connectivity(benchmark::State& state, core::ConnectionTest test) {
     const TrefoilScene& s = trefoilScene();
     core::ConnectivityOptions options;
-    options.test = state.range(0) ? core::ConnectionTest::Surface : core::ConnectionTest::Plain;
+    options.test = test;
     options.unitScale = core::unitScale(*s.mesh);
-    options.threads = unsigned(state.range(1));
+    options.threads = unsigned(state.range(0));
     for (auto _ : state) {
         const core::Connectivity links =
             core::computeConnectivity(s.layers.stack, options, &s.layers.geometry);
@@ -57,12 +57,16 @@ void Connectivity(benchmark::State& state) {
     }
     state.counters["per_fragment"] = perFragment(s);
 }
-BENCHMARK(Connectivity)
-    ->ArgNames({"surface", "threads"})
-    ->Args({1, 1})
-    ->Args({1, 2})
-    ->Args({0, 1})
-    ->Args({0, 2})
+BENCHMARK_CAPTURE(Connectivity, surface, core::ConnectionTest::Surface)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(Connectivity, plain, core::ConnectionTest::Plain)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

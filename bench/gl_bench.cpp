@@ -42,8 +42,8 @@ bool glContext(benchmark::State& state) {
     return context != nullptr;
 }
 
-/** One back-face-culled (arg 1, as the capture draws) or two-sided (arg 0) z-buffer pass. */
-void PlainPass(benchmark::State& state) {
+/** One z-buffer pass, back faces culled (as the capture draws) or two-sided (as the viewer). */
+void PlainPass(benchmark::State& state, bool culled) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
@@ -55,18 +55,14 @@ void PlainPass(benchmark::State& state) {
     }
     renderer.setMesh(*s.mesh);
     render::DrawOptions options;
-    options.cullBackFaces = state.range(0) != 0;
+    options.cullBackFaces = culled;
     render::timePlainPass(renderer, target, s.view, options); // compiles, uploads
     for (auto _ : state)
         benchmark::DoNotOptimize(render::timePlainPass(renderer, target, s.view, options));
     renderer.release();
 }
-BENCHMARK(PlainPass)
-    ->ArgName("culled")
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK_CAPTURE(PlainPass, culled, true)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(PlainPass, two_sided, false)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /** The capture: every front-facing fragment as per-pixel lists in CPU memory. */
 void GlCapture(benchmark::State& state) {
@@ -115,10 +111,10 @@ void BuildLayersGl(benchmark::State& state) {
 BENCHMARK(BuildLayersGl)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 /**
- * The connectivity compute pass (the surface test, arg 1, or the plain one): upload, dispatch and
- * readback from an idle GPU, on the same stack as the CPU benchmark.
+ * The connectivity compute pass (surface or plain test): upload, dispatch and readback from an
+ * idle GPU, on the same stack as the CPU benchmark.
  */
-void GpuConnectivity(benchmark::State& state) {
+void GpuConnectivity(benchmark::State& state, core::ConnectionTest test) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
@@ -128,7 +124,7 @@ void GpuConnectivity(benchmark::State& state) {
         return;
     }
     core::ConnectivityOptions options;
-    options.test = state.range(0) ? core::ConnectionTest::Surface : core::ConnectionTest::Plain;
+    options.test = test;
     options.unitScale = core::unitScale(*s.mesh);
     if (auto warm = gpu.compute(s.layers.stack, options, &s.layers.geometry); !warm) {
         state.SkipWithError(warm.error().c_str());
@@ -143,22 +139,22 @@ void GpuConnectivity(benchmark::State& state) {
         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
     gpu.release();
 }
-BENCHMARK(GpuConnectivity)
-    ->ArgName("surface")
-    ->Arg(1)
-    ->Arg(0)
+BENCHMARK_CAPTURE(GpuConnectivity, surface, core::ConnectionTest::Surface)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(GpuConnectivity, plain, core::ConnectionTest::Plain)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
 enum DrawCase { kComposite, kBoundaries, kSegmentation, kPoppedUp, kFirstAfterSetLayers };
 
 /**
- * draw_layers: a redraw from the captured fragments (glFinish on both sides). Args: 0 composite,
- * 1 with region boundaries, 2 the segmentation display, 3 composite with the largest layer-2
- * region popped up (defeats the fragment search's early exit), 4 the first draw after
- * setLayers(), which also shades every fragment.
+ * draw_layers: a redraw from the captured fragments (glFinish on both sides): the composite, with
+ * region boundaries, the segmentation display, the composite with the largest layer-2 region
+ * popped up (defeats the fragment search's early exit), and the first draw after setLayers(),
+ * which also shades every fragment.
  */
-void DrawLayers(benchmark::State& state) {
+void DrawLayers(benchmark::State& state, DrawCase drawCase) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
@@ -176,7 +172,6 @@ void DrawLayers(benchmark::State& state) {
         state.SkipWithError(status.error().c_str());
         return;
     }
-    const auto drawCase = DrawCase(state.range(0));
     options.boundaries = drawCase == kBoundaries;
     if (drawCase == kSegmentation)
         options.display = render::LayerDisplay::Segmentation;
@@ -209,9 +204,15 @@ void DrawLayers(benchmark::State& state) {
     }
     compositor.release();
 }
-BENCHMARK(DrawLayers)
-    ->ArgName("case")
-    ->DenseRange(kComposite, kFirstAfterSetLayers)
+BENCHMARK_CAPTURE(DrawLayers, composite, kComposite)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(DrawLayers, boundaries, kBoundaries)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(DrawLayers, segmentation, kSegmentation)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(DrawLayers, popped_up, kPoppedUp)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK_CAPTURE(DrawLayers, first_after_set_layers, kFirstAfterSetLayers)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
