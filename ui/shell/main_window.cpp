@@ -19,6 +19,7 @@
 #include <QMenu>
 #include <QMimeData>
 #include <QProgressDialog>
+#include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUrl>
@@ -152,8 +153,13 @@ MainWindow::MainWindow(QWidget* parent)
     });
 
     const QSettings settings;
-    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray()))
-        resize(1280, 800);
+    if (!restoreGeometry(settings.value(kGeometryKey).toByteArray())) {
+        // The first start: 1280 × 800, or nine tenths of a smaller screen, so it fits there.
+        QSize size(1280, 800);
+        if (const QScreen* shown = screen())
+            size = size.boundedTo(shown->availableGeometry().size() * 9 / 10);
+        resize(size);
+    }
     restoreState(settings.value(kStateKey).toByteArray());
     new DockSizeKeeper(this); // panels get their width back when the window grows again
 }
