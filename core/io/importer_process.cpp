@@ -15,6 +15,7 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -50,6 +51,7 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kImporterName = "layerpaint-import";
 constexpr const char* kImporterVariable = "LAYERPAINT_IMPORTER";
+constexpr const char* kImporterStderrVariable = "LAYERPAINT_IMPORTER_STDERR";
 /** How often cancel and the deadline are checked while waiting for the importer. */
 constexpr auto kCheckInterval = std::chrono::milliseconds(100);
 
@@ -175,10 +177,14 @@ Result<Process> spawnImporter(const std::string& program) {
     ::posix_spawnattr_init(&attributes);
     ::posix_spawn_file_actions_adddup2(&actions, in[1], 0);
     ::posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-    // Its messages (a decoder's warning, a sanitizer's report) go where ours go, unless that is
-    // a regular file: the importer may not write files at all (RLIMIT_FSIZE 0 would kill it).
+    // What a parser prints (a decoder's warning, the C library's "free(): invalid pointer" as a
+    // damaged heap aborts it) is not for the user: the error message says what happened. With
+    // LAYERPAINT_IMPORTER_STDERR=1 its messages (a sanitizer's report) go where ours go, unless
+    // that is a regular file: the importer may not write files (RLIMIT_FSIZE 0 would kill it).
     struct stat errStat {};
-    if (::fstat(STDERR_FILENO, &errStat) != 0 || S_ISREG(errStat.st_mode))
+    const char* passStderr = std::getenv(kImporterStderrVariable);
+    if (passStderr == nullptr || std::string_view(passStderr) != "1" ||
+        ::fstat(STDERR_FILENO, &errStat) != 0 || S_ISREG(errStat.st_mode))
         ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 34))
     ::posix_spawn_file_actions_addclosefrom_np(&actions, 3);
