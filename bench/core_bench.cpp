@@ -112,19 +112,29 @@ std::vector<core::StrokePoint> startPoints(const TrefoilScene& s, core::StrokeTr
     return points;
 }
 
+/**
+ * The tracker given the scene's layers and the path's points on the surface; empty (after
+ * SkipWithError) when either is not there.
+ */
+std::vector<core::StrokePoint> readyToStroke(benchmark::State& state, const TrefoilScene& s,
+                                             core::StrokeTracker& tracker) {
+    if (!tracker.setLayers(s.layers)) {
+        state.SkipWithError("the scene's layers are not usable");
+        return {};
+    }
+    std::vector<core::StrokePoint> points = startPoints(s, tracker);
+    if (points.empty())
+        state.SkipWithError("no point of the path is on the surface");
+    return points;
+}
+
 /** start_stroke: the first dab's BFS over (x, y, layer), its paintable map Mp (R = 32 px). */
 void StartStroke(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     core::StrokeTracker tracker;
-    if (!tracker.setLayers(s.layers)) {
-        state.SkipWithError("the scene's layers are not usable");
+    const std::vector<core::StrokePoint> points = readyToStroke(state, s, tracker);
+    if (points.empty())
         return;
-    }
-    const std::vector<core::StrokePoint> points = startPoints(s, tracker);
-    if (points.empty()) {
-        state.SkipWithError("no point of the path is on the surface");
-        return;
-    }
     const core::Brush brush = brush32();
     std::vector<core::Dab> dabs;
     std::size_t next = 0, mapPixels = 0, count = 0;
@@ -177,15 +187,9 @@ BENCHMARK(MoveStroke)->Unit(benchmark::kMillisecond)->UseRealTime();
 void CompleteTrackableMap(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     core::StrokeTracker tracker;
-    if (!tracker.setLayers(s.layers)) {
-        state.SkipWithError("the scene's layers are not usable");
+    const std::vector<core::StrokePoint> points = readyToStroke(state, s, tracker);
+    if (points.empty())
         return;
-    }
-    const std::vector<core::StrokePoint> points = startPoints(s, tracker);
-    if (points.empty()) {
-        state.SkipWithError("no point of the path is on the surface");
-        return;
-    }
     const core::Brush brush = brush32();
     std::vector<core::Dab> dabs;
     std::size_t next = 0;

@@ -42,6 +42,17 @@ bool glContext(benchmark::State& state) {
     return context != nullptr;
 }
 
+/** capturer initialized with the scene's mesh; false after SkipWithError. */
+bool readyCapturer(benchmark::State& state, render::GlLayerCapturer& capturer,
+                   const TrefoilScene& s) {
+    if (const core::Status status = capturer.initialize(); !status) {
+        state.SkipWithError(status.error().c_str());
+        return false;
+    }
+    capturer.setMesh(*s.mesh);
+    return true;
+}
+
 /** One z-buffer pass, back faces culled (as the capture draws) or two-sided (as the viewer). */
 void PlainPass(benchmark::State& state, bool culled) {
     if (!glContext(state))
@@ -70,11 +81,8 @@ void GlCapture(benchmark::State& state) {
         return;
     const TrefoilScene& s = trefoilScene();
     render::GlLayerCapturer capturer;
-    if (const core::Status status = capturer.initialize(); !status) {
-        state.SkipWithError(status.error().c_str());
+    if (!readyCapturer(state, capturer, s))
         return;
-    }
-    capturer.setMesh(*s.mesh);
     core::CaptureStats stats;
     if (auto warm = capturer.capture(s.view, true, &stats); !warm) { // buffer sizes, shaders
         state.SkipWithError(warm.error().c_str());
@@ -94,11 +102,8 @@ void BuildLayersGl(benchmark::State& state) {
         return;
     const TrefoilScene& s = trefoilScene();
     render::GlLayerCapturer capturer;
-    if (const core::Status status = capturer.initialize(); !status) {
-        state.SkipWithError(status.error().c_str());
+    if (!readyCapturer(state, capturer, s))
         return;
-    }
-    capturer.setMesh(*s.mesh);
     render::GlConnectivityEngine engine;
     core::buildLayers(capturer, *s.mesh, *s.topology, s.view, {}, &engine); // warm-up
     for (auto _ : state) {

@@ -116,7 +116,7 @@ private:
     Error m_error;
     Mesh m_mesh;
     std::set<std::string> m_warned;
-    bool m_anyNormals = false, m_anyUv = false, m_anyColor = false;
+    bool m_anyUv = false, m_anyColor = false;
     std::vector<char> m_hasNormal;
     std::size_t m_skippedFaces = 0;
     std::map<std::string, int> m_textureCache;
@@ -208,7 +208,6 @@ bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
             m_mesh.colors.push_back(glm::vec4(1.0f));
         }
     }
-    m_anyNormals = m_anyNormals || hasNormals;
     m_anyUv = m_anyUv || hasUv;
     m_anyColor = m_anyColor || hasColor;
 
@@ -398,17 +397,7 @@ bool AssimpFlattener::run(Mesh& out) {
         m_mesh.uvs.clear();
     if (!m_anyColor)
         m_mesh.colors.clear();
-    if (!m_anyNormals) {
-        m_mesh.normals.clear(); // loadMesh computes them all
-    } else if (std::find(m_hasNormal.begin(), m_hasNormal.end(), 0) != m_hasNormal.end()) {
-        Mesh computed;
-        computed.positions = m_mesh.positions;
-        computed.indices = m_mesh.indices;
-        computed.computeNormals();
-        for (std::size_t i = 0; i < m_hasNormal.size(); ++i)
-            if (!m_hasNormal[i])
-                m_mesh.normals[i] = computed.normals[i];
-    }
+    fillMissingNormals(m_mesh, m_hasNormal);
     out = std::move(m_mesh);
     return true;
 }

@@ -586,19 +586,7 @@ bool GltfFlattener::run(Mesh& out) {
     if (!m_anyColor)
         m_mesh.colors.clear();
     // Vertices of primitives without normals get normals computed from the triangles.
-    const auto withNormal =
-        static_cast<std::size_t>(std::count(m_hasNormal.begin(), m_hasNormal.end(), 1));
-    if (withNormal == 0) {
-        m_mesh.normals.clear(); // loadMesh computes them all
-    } else if (withNormal < m_hasNormal.size()) {
-        Mesh computed;
-        computed.positions = m_mesh.positions;
-        computed.indices = m_mesh.indices;
-        computed.computeNormals();
-        for (std::size_t i = 0; i < m_hasNormal.size(); ++i)
-            if (!m_hasNormal[i])
-                m_mesh.normals[i] = computed.normals[i];
-    }
+    fillMissingNormals(m_mesh, m_hasNormal);
     out = std::move(m_mesh);
     return true;
 }

@@ -77,6 +77,24 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
     return used;
 }
 
+void fillMissingNormals(Mesh& mesh, const std::vector<char>& hasNormal) {
+    const auto withNormal =
+        static_cast<std::size_t>(std::count(hasNormal.begin(), hasNormal.end(), 1));
+    if (withNormal == 0) {
+        mesh.normals.clear(); // loadMesh computes them all
+        return;
+    }
+    if (withNormal == hasNormal.size())
+        return;
+    Mesh computed;
+    computed.positions = mesh.positions;
+    computed.indices = mesh.indices;
+    computed.computeNormals();
+    for (std::size_t i = 0; i < hasNormal.size(); ++i)
+        if (!hasNormal[i])
+            mesh.normals[i] = computed.normals[i];
+}
+
 bool toFloat(const glm::dvec3& p, glm::vec3& out) {
     constexpr double kMax = std::numeric_limits<float>::max();
     for (int k = 0; k < 3; ++k)

@@ -78,6 +78,13 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
                                         std::size_t vertexCount, const Mesh& mesh,
                                         const LoadLimits& limits);
 
+/**
+ * The normals of a flattened mesh whose primitives came with (hasNormal[v] = 1) or without them:
+ * none came with normals, so all are left for loadMesh to compute (normals cleared); some did, so
+ * the vertices of the others get normals computed from the triangles.
+ */
+void fillMissingNormals(Mesh& mesh, const std::vector<char>& hasNormal);
+
 /** p as floats, or false if it does not fit (a double beyond float range is not castable). */
 bool toFloat(const glm::dvec3& p, glm::vec3& out);
 
