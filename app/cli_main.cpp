@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_uv_layout.h"
 
 namespace {
 void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
@@ -115,6 +116,39 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
 
+    cli::UvLayoutArgs uvLayout;
+    CLI::App* uvLayoutCommand = app.add_subcommand(
+        "uv-layout", "Make an automatic UV layout for a model without texture coordinates and "
+                     "print its quality figures as JSON");
+    uvLayoutCommand->add_option("MODEL", uvLayout.model, "Model file or builtin:NAME")->required();
+    uvLayoutCommand->add_option("--resolution", uvLayout.resolution, "Page size in texels")
+        ->capture_default_str()
+        ->check(CLI::Range(64, 16384));
+    uvLayoutCommand->add_option("--padding", uvLayout.padding, "Empty texels between charts")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 256));
+    uvLayoutCommand
+        ->add_option("--texels-per-unit", uvLayout.texelsPerUnit,
+                     "Texel density (default: the largest that fits one page; else as many "
+                     "pages as needed)")
+        ->check(CLI::PositiveNumber);
+    uvLayoutCommand->add_option("--threads", uvLayout.threads, "Worker threads (0: one per core)")
+        ->capture_default_str();
+    uvLayoutCommand
+        ->add_option("--max-deviation", uvLayout.maxDeviation,
+                     "Degrees a chart's normals may turn from its mean (default 50)")
+        ->check(CLI::Range(1.0f, 179.0f));
+    uvLayoutCommand
+        ->add_option("--sharp-edge", uvLayout.sharpEdge,
+                     "Edges bending more than this many degrees cut charts (default 40)")
+        ->check(CLI::Range(1.0f, 180.0f));
+    uvLayoutCommand->add_flag("--replace-uvs", uvLayout.keepUvs,
+                              "Lay out a model that has texture coordinates too");
+    uvLayoutCommand->add_option("--json", uvLayout.jsonOut, "Also write the figures to this file");
+    uvLayoutCommand->add_option("--out", uvLayout.out, "Save the laid-out mesh (.glb)");
+    uvLayoutCommand->add_option("--image", uvLayout.image,
+                                "Draw the pages' charts side by side into this image (.png)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -130,6 +164,8 @@ int main(int argc, char** argv) {
         return cli::runExport(exportArgs);
     if (benchCommand->parsed())
         return cli::runBench(bench);
+    if (uvLayoutCommand->parsed())
+        return cli::runUvLayout(uvLayout);
     if (benchLoadCommand->parsed())
         return cli::runBenchLoad(loadModels, loadRuns);
     return 1;

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -113,6 +116,12 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
         });
         if (stop)
             return cancelled();
+        if (getenv("UVL_DEBUG")) {
+            int counts[4] = {0, 0, 0, 0};
+            std::size_t singles = 0;
+            for (std::size_t i = 0; i < work.size(); ++i) { counts[int(outcome[i])]++; singles += work[i].triangles.size() == 1; }
+            fprintf(stderr, "round %d charts %zu good %d flipped %d overlapping %d stretched %d singles %zu\n", round, work.size(), counts[0], counts[1], counts[2], counts[3], singles);
+        }
         for (std::size_t i = 0; i < work.size(); ++i) {
             if (outcome[i] == uvl::FlattenOutcome::Good || work[i].triangles.size() == 1) {
                 finishedTriangles += work[i].triangles.size();
@@ -145,7 +154,9 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
     std::atomic<bool> cancel{false};
     constexpr int kAttempts = 14;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
+        auto t0 = std::chrono::steady_clock::now();
         Result<uvl::Packing> packing = uvl::packCharts(charts, density, options, 1, cancel);
+        if (getenv("UVL_DEBUG")) fprintf(stderr, "attempt %d density %g ok %d %.3f s\n", attempt, density, int(packing.ok()), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         if (packing.cancelled())
             return cancelled();
         if (packing.ok()) {

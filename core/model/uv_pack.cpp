@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Packing the charts of the automatic UV layout into texture pages by their shape: each chart is
-// rasterized conservatively into a texel mask, grown by half the padding, and dropped onto a
-// skyline per page (Tetris-like: the mask's lowest texel of each column rests on the column's
-// height), in the quarter turn and place that keep the page lowest.
+// rasterized conservatively into a texel mask grown by half the padding, and put at the lowest
+// free place of a page (first fit, row by row) in the quarter turn that keeps its top lowest, so
+// small charts fill the gaps and holes that big ones leave.
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <cstdio>
+#include <chrono>
+#include <cstdlib>
 
 #include <glm/common.hpp>
 
@@ -18,12 +21,11 @@ namespace core::uvl {
 
 namespace {
 
-/** The outline of a chart's grown mask: per column and per row, its first and last texel. */
-struct Outline {
+/** A chart's mask, conservatively rasterized and grown by half the padding. */
+struct Mask {
     int width = 0, height = 0;
-    glm::dvec2 origin{0.0};
-    std::vector<int> columnLo, columnHi; // rows; lo > hi for an empty column
-    std::vector<int> rowLo, rowHi;       // columns; lo > hi for an empty row
+    glm::dvec2 origin{0.0}; // texel position (uv × density) of the mask's corner
+    std::vector<std::uint8_t> bits;
 };
 
 /** Marks the texels of mask (width w) that triangle a, b, c touches at all. */
@@ -74,7 +76,7 @@ void dilate(std::vector<std::uint8_t>& mask, int w, int h, int r) {
                     mask[std::size_t(k) * std::size_t(w) + std::size_t(x)] = 1;
 }
 
-Outline outlineChart(const Chart& chart, double density, int r) {
+Mask maskChart(const Chart& chart, double density, int r) {
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const glm::dvec2& p : chart.uv) {
         lo = glm::min(lo, p * density);
@@ -85,117 +87,214 @@ Outline outlineChart(const Chart& chart, double density, int r) {
     const double margin = double(r + 1);
     const int w = int(std::floor(hi.x - lo.x + margin)) + r + 2;
     const int h = int(std::floor(hi.y - lo.y + margin)) + r + 2;
-    std::vector<std::uint8_t> mask(std::size_t(w) * std::size_t(h), 0u);
+    std::vector<std::uint8_t> bits(std::size_t(w) * std::size_t(h), 0u);
     const glm::dvec2 shift = lo - margin;
     for (const auto& c : chart.local)
         rasterizeConservative(chart.uv[c[0]] * density - shift, chart.uv[c[1]] * density - shift,
-                              chart.uv[c[2]] * density - shift, mask, w, h);
-    if (chart.local.empty() || std::find(mask.begin(), mask.end(), 1u) == mask.end())
-        mask[std::size_t(r + 1) * std::size_t(w) + std::size_t(r + 1)] = 1;
-    dilate(mask, w, h, r);
+                              chart.uv[c[2]] * density - shift, bits, w, h);
+    if (std::find(bits.begin(), bits.end(), 1u) == bits.end())
+        bits[std::size_t(r + 1) * std::size_t(w) + std::size_t(r + 1)] = 1;
+    dilate(bits, w, h, r);
     int x0 = w, x1 = -1, y0 = h, y1 = -1;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
-            if (mask[std::size_t(y) * std::size_t(w) + std::size_t(x)]) {
+            if (bits[std::size_t(y) * std::size_t(w) + std::size_t(x)]) {
                 x0 = std::min(x0, x);
                 x1 = std::max(x1, x);
                 y0 = std::min(y0, y);
                 y1 = std::max(y1, y);
             }
-    Outline o;
-    o.width = x1 - x0 + 1;
-    o.height = y1 - y0 + 1;
-    o.origin = shift + glm::dvec2(x0, y0);
-    o.columnLo.assign(std::size_t(o.width), o.height);
-    o.columnHi.assign(std::size_t(o.width), -1);
-    o.rowLo.assign(std::size_t(o.height), o.width);
-    o.rowHi.assign(std::size_t(o.height), -1);
-    for (int y = y0; y <= y1; ++y)
-        for (int x = x0; x <= x1; ++x)
-            if (mask[std::size_t(y) * std::size_t(w) + std::size_t(x)]) {
-                const int i = x - x0, j = y - y0;
-                o.columnLo[std::size_t(i)] = std::min(o.columnLo[std::size_t(i)], j);
-                o.columnHi[std::size_t(i)] = std::max(o.columnHi[std::size_t(i)], j);
-                o.rowLo[std::size_t(j)] = std::min(o.rowLo[std::size_t(j)], i);
-                o.rowHi[std::size_t(j)] = std::max(o.rowHi[std::size_t(j)], i);
-            }
-    return o;
+    Mask m;
+    m.width = x1 - x0 + 1;
+    m.height = y1 - y0 + 1;
+    m.origin = shift + glm::dvec2(x0, y0);
+    m.bits.resize(std::size_t(m.width) * std::size_t(m.height));
+    for (int y = 0; y < m.height; ++y)
+        std::copy_n(&bits[std::size_t(y + y0) * std::size_t(w) + std::size_t(x0)], m.width,
+                    &m.bits[std::size_t(y) * std::size_t(m.width)]);
+    return m;
 }
 
-/** A chart's column profile after `rotation` quarter turns (see placeUv). */
-struct Profile {
+/** A mask after `rotation` quarter turns (see placeUv) as runs of texels per row. */
+struct Shape {
     int width = 0, height = 0;
-    std::vector<int> lo, hi;
+    std::vector<int> rowBegin;                 // per row: its first run; height + 1 entries
+    std::vector<std::pair<int, int>> runs;     // first and last column, inclusive
+    std::vector<int> widestRun;                // per row
 };
 
-Profile rotatedProfile(const Outline& o, int rotation) {
-    Profile p;
-    const int w = o.width, h = o.height;
+Shape rotatedShape(const Mask& m, int rotation) {
+    Shape s;
+    const int w = m.width, h = m.height;
     const bool swapped = rotation % 2 == 1;
-    p.width = swapped ? h : w;
-    p.height = swapped ? w : h;
-    p.lo.resize(std::size_t(p.width));
-    p.hi.resize(std::size_t(p.width));
-    for (int c = 0; c < p.width; ++c) {
-        const std::size_t k = std::size_t(c);
+    s.width = swapped ? h : w;
+    s.height = swapped ? w : h;
+    const auto bit = [&](int x, int y) {
+        int i, j;
         switch (rotation) {
-        case 0:
-            p.lo[k] = o.columnLo[k];
-            p.hi[k] = o.columnHi[k];
-            break;
-        case 1: // texel (i, j) goes to (h − 1 − j, i)
-            p.lo[k] = o.rowLo[std::size_t(h - 1 - c)];
-            p.hi[k] = o.rowHi[std::size_t(h - 1 - c)];
-            break;
-        case 2: // (i, j) goes to (w − 1 − i, h − 1 − j)
-            p.lo[k] = h - 1 - o.columnHi[std::size_t(w - 1 - c)];
-            p.hi[k] = h - 1 - o.columnLo[std::size_t(w - 1 - c)];
-            break;
-        default: // (i, j) goes to (j, w − 1 − i)
-            p.lo[k] = w - 1 - o.rowHi[k];
-            p.hi[k] = w - 1 - o.rowLo[k];
-            break;
+        case 0: i = x, j = y; break;
+        case 1: i = y, j = h - 1 - x; break; // texel (i, j) goes to (h − 1 − j, i)
+        case 2: i = w - 1 - x, j = h - 1 - y; break;
+        default: i = w - 1 - y, j = x; break; // (i, j) goes to (j, w − 1 − i)
+        }
+        return m.bits[std::size_t(j) * std::size_t(w) + std::size_t(i)] != 0;
+    };
+    s.rowBegin.reserve(std::size_t(s.height) + 1);
+    s.widestRun.assign(std::size_t(s.height), 0);
+    for (int y = 0; y < s.height; ++y) {
+        s.rowBegin.push_back(int(s.runs.size()));
+        for (int x = 0; x < s.width;) {
+            if (!bit(x, y)) {
+                ++x;
+                continue;
+            }
+            int e = x;
+            while (e + 1 < s.width && bit(e + 1, y))
+                ++e;
+            s.runs.emplace_back(x, e);
+            s.widestRun[std::size_t(y)] = std::max(s.widestRun[std::size_t(y)], e - x + 1);
+            x = e + 1;
         }
     }
-    return p;
+    s.rowBegin.push_back(int(s.runs.size()));
+    return s;
 }
 
-struct Spot {
-    long long top = LLONG_MAX;
-    long long waste = LLONG_MAX;
-    int x = 0, y = 0, rotation = 0;
-
-    bool betterThan(const Spot& o) const {
-        return top != o.top ? top < o.top : waste < o.waste;
+/**
+ * One page's occupancy: per texel, the length of the free (> 0) or taken (< 0) stretch that
+ * starts there and runs right, so a chart's row of texels is tested with one look-up and a
+ * failed test says how far to move on.
+ */
+class Page {
+public:
+    explicit Page(int size) : m_size(size), m_run(std::size_t(size) * std::size_t(size)) {
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x)
+                m_run[index(x, y)] = std::int16_t(size - x);
+        m_widest.assign(std::size_t(size), size);
+        m_searchFrom.assign(std::size_t(size) + 1, 0);
+        m_dirty.assign(std::size_t(size), 0u);
     }
-};
 
-/** The lowest place for profile p on a page's skyline, or top == LLONG_MAX if none fits. */
-void bestSpot(const std::vector<int>& sky, int pageSize, const Profile& p, int rotation,
-              Spot& best) {
-    for (int x = 0; x + p.width <= pageSize; ++x) {
-        int y = 0;
-        bool skip = false;
-        for (int c = 0; c < p.width; ++c) {
-            if (p.lo[std::size_t(c)] > p.hi[std::size_t(c)])
+    /** The lowest row, then column, where s fits with its top below topLimit; false if none. */
+    __attribute__((noinline)) bool firstFit(const Shape& s, long long topLimit, int& outX, int& outY) {
+        m_lastFailed = 0;
+        while (m_open < m_size && widest(m_open) == 0)
+            ++m_open;
+        // Tall charts try every step-th row, then slide down from where they fit: far fewer
+        // tests, and at most a step higher than the lowest place.
+        const int step = std::max(1, s.height / 16);
+        const int from = std::max(m_open, m_searchFrom[std::size_t(smallSide(s))]);
+        for (int y = from; y + s.height <= m_size && y + s.height < topLimit; y += step) {
+            bool rowsFit = true;
+            for (int j = 0; j < s.height && rowsFit; ++j)
+                rowsFit = widest(y + j) >= s.widestRun[std::size_t(j)];
+            if (!rowsFit)
                 continue;
-            y = std::max(y, sky[std::size_t(x + c)] - p.lo[std::size_t(c)]);
-            if (static_cast<long long>(y) + p.height > best.top) {
-                skip = true;
-                break;
+            // Rows are tested round the shape from the one that failed last; a failing row moves
+            // x past what blocked it and is tested again; s fits when every row passed in turn.
+            int j = m_lastFailed, passed = 0;
+            for (int x = 0; x + s.width <= m_size;) {
+                const int next = testRow(s, j, x, y);
+                if (next >= 0) {
+                    x = next;
+                    passed = 0;
+                    continue;
+                }
+                if (++passed == s.height) {
+                    while (y > m_open && fitsAt(s, x, y - 1))
+                        --y;
+                    outX = x;
+                    outY = y;
+                    return true;
+                }
+                j = j + 1 == s.height ? 0 : j + 1;
             }
         }
-        if (skip || y + p.height > pageSize)
-            continue;
-        long long waste = 0;
-        for (int c = 0; c < p.width; ++c)
-            if (p.lo[std::size_t(c)] <= p.hi[std::size_t(c)])
-                waste += y + p.lo[std::size_t(c)] - sky[std::size_t(x + c)];
-        Spot s{y + p.height, waste, x, y, rotation};
-        if (s.betterThan(best))
-            best = s;
+        return false;
     }
-}
+
+    __attribute__((noinline)) void place(const Shape& s, int x, int y) {
+        // Charts come largest first and many are alike: one at least as small across as this
+        // one starts its search a little below where this one went, not at the bottom again.
+        const int side = smallSide(s);
+        const int from = std::max(0, y - side);
+        for (std::size_t k = std::size_t(side); k < m_searchFrom.size(); ++k)
+            m_searchFrom[k] = std::max(m_searchFrom[k], from);
+        for (int j = 0; j < s.height; ++j) {
+            std::int16_t* row = &m_run[index(0, y + j)];
+            for (int k = s.rowBegin[std::size_t(j)]; k < s.rowBegin[std::size_t(j) + 1]; ++k) {
+                const auto [a, b] = s.runs[std::size_t(k)];
+                const int begin = x + a, end = x + b; // inclusive
+                for (int i = begin; i <= end; ++i)
+                    row[i] = -1; // fixed up below
+                // The taken stretch now reaches from its left end to the right end of what
+                // was taken after it.
+                int right = end + 1;
+                while (right < m_size && row[right] < 0)
+                    right += -row[right];
+                int left = begin;
+                while (left > 0 && row[left - 1] < 0)
+                    --left;
+                for (int i = right - 1; i >= left; --i)
+                    row[i] = std::int16_t(-(right - i));
+                for (int i = left - 1; i >= 0 && row[i] > 0; --i)
+                    row[i] = std::int16_t(left - i);
+            }
+            m_dirty[std::size_t(y + j)] = 1;
+        }
+    }
+
+private:
+    int smallSide(const Shape& s) const { return std::min({s.width, s.height, m_size}); }
+
+    __attribute__((noinline)) bool fitsAt(const Shape& s, int x, int y) {
+        for (int j = 0; j < s.height; ++j)
+            if (testRow(s, j, x, y) >= 0)
+                return false;
+        return true;
+    }
+
+    /**
+     * -1 if row j of s fits at (x, y); else the next x worth testing (the row's run moved past
+     * the taken stretch it met), and j becomes the last failed row.
+     */
+    __attribute__((noinline)) int testRow(const Shape& s, int j, int x, int y) {
+        const std::int16_t* row = &m_run[index(0, y + j)];
+        for (int k = s.rowBegin[std::size_t(j)]; k < s.rowBegin[std::size_t(j) + 1]; ++k) {
+            const auto [a, b] = s.runs[std::size_t(k)];
+            const int v = row[x + a];
+            if (v > b - a)
+                continue;
+            // Taken at x + a + max(v, 0): move the run past that taken stretch.
+            const int taken = x + a + std::max(v, 0);
+            m_lastFailed = j;
+            return taken - row[taken] - a;
+        }
+        return -1;
+    }
+
+    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(m_size) + std::size_t(x); }
+    __attribute__((noinline)) int widest(int y) {
+        if (m_dirty[std::size_t(y)]) {
+            int w = 0;
+            const std::int16_t* row = &m_run[index(0, y)];
+            for (int x = 0; x < m_size; ++x)
+                w = std::max(w, int(row[x]));
+            m_widest[std::size_t(y)] = w;
+            m_dirty[std::size_t(y)] = 0;
+        }
+        return m_widest[std::size_t(y)];
+    }
+
+    int m_size;
+    std::vector<std::int16_t> m_run;
+    std::vector<int> m_widest;
+    std::vector<std::uint8_t> m_dirty;
+    std::vector<int> m_searchFrom; // per smaller side of a chart: the row its search starts at
+    int m_open = 0;
+    int m_lastFailed = 0;
+};
 
 } // namespace
 
@@ -225,70 +324,109 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                            const std::atomic<bool>& cancel) {
     const int pageSize = options.resolution;
     const int r = (options.padding + 1) / 2;
-    std::vector<Outline> outlines(charts.size());
+    std::vector<Mask> masks(charts.size());
     std::atomic<std::size_t> next{0};
-    parallelRanges(int(resolveThreadCount(options.threads)), options.threads, [&](int, int, int) {
-        for (std::size_t i = next++; i < charts.size() && !cancel; i = next++)
-            outlines[i] = outlineChart(charts[i], density, r);
+    std::atomic<bool> tooLarge{false};
+    const unsigned threads = resolveThreadCount(options.threads);
+    parallelRanges(int(threads), threads, [&](int, int, int) {
+        for (std::size_t i = next++; i < charts.size() && !cancel && !tooLarge; i = next++) {
+            glm::dvec2 lo(1e300), hi(-1e300);
+            for (const glm::dvec2& p : charts[i].uv) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            if (!charts[i].uv.empty() &&
+                std::min(hi.x - lo.x, hi.y - lo.y) * density > double(pageSize)) {
+                tooLarge = true;
+                break;
+            }
+            if (charts[i].area > 0.0) // charts without area are points that need no room
+                masks[i] = maskChart(charts[i], density, r);
+        }
     });
     if (cancel)
         return Error{"cancelled", ErrorKind::Cancelled};
+    const auto tooLargeError = [&] {
+        return Error{"a chart is larger than a " + std::to_string(pageSize) + " texel page",
+                     ErrorKind::BadInput};
+    };
+    if (tooLarge)
+        return tooLargeError();
 
     std::vector<std::uint32_t> order(charts.size());
     std::iota(order.begin(), order.end(), 0u);
+    std::vector<std::size_t> texels(charts.size());
+    double allTexels = 0.0;
+    for (std::size_t i = 0; i < charts.size(); ++i) {
+        texels[i] = std::size_t(std::count(masks[i].bits.begin(), masks[i].bits.end(), 1u));
+        allTexels += double(texels[i]);
+    }
+    const auto noRoom = [&] {
+        return Error{"the charts do not fit on " + std::to_string(maxPages) + " page(s)",
+                     ErrorKind::BadInput};
+    };
+    if (getenv("UVL_DEBUG")) {
+        std::vector<std::size_t> t = texels; std::sort(t.rbegin(), t.rend());
+        fprintf(stderr, "charts %zu texels %.0f biggest %zu %zu %zu median %zu\n", t.size(), allTexels, t[0], t.size()>1?t[1]:0, t.size()>10?t[10]:0, t[t.size()/2]);
+    }
+    if (allTexels > double(maxPages) * double(pageSize) * double(pageSize))
+        return noRoom();
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        const Outline &oa = outlines[a], &ob = outlines[b];
-        const int ma = std::max(oa.width, oa.height), mb = std::max(ob.width, ob.height);
-        if (ma != mb)
-            return ma > mb;
-        const long long aa = (long long)oa.width * oa.height, ab = (long long)ob.width * ob.height;
-        return aa != ab ? aa > ab : a < b;
+        return texels[a] != texels[b] ? texels[a] > texels[b] : a < b;
     });
 
     Packing packing;
     packing.placements.resize(charts.size());
-    std::vector<std::vector<int>> skylines;
+    std::vector<Page> pages;
     for (std::size_t n = 0; n < order.size(); ++n) {
-        if (n % 256 == 0 && cancel)
+        if (n % 64 == 0 && cancel)
             return Error{"cancelled", ErrorKind::Cancelled};
         const std::uint32_t i = order[n];
-        const Outline& o = outlines[i];
-        if (std::max(o.width, o.height) > pageSize)
-            return Error{"a chart is larger than a " + std::to_string(pageSize) + " texel page",
-                         ErrorKind::BadInput};
-        Profile profiles[4];
+        const Mask& m = masks[i];
+        if (m.bits.empty())
+            continue; // a point: at the first page's corner, where it covers nothing
+        if (std::min(m.width, m.height) > pageSize)
+            return tooLargeError();
+        Shape shapes[4];
         for (int rot = 0; rot < 4; ++rot)
-            profiles[rot] = rotatedProfile(o, rot);
+            shapes[rot] = rotatedShape(m, rot);
         bool placed = false;
         for (std::size_t page = 0; !placed; ++page) {
-            if (page == skylines.size()) {
-                if (skylines.size() >= maxPages)
-                    return Error{"the charts do not fit on " + std::to_string(maxPages) +
-                                     " page(s)",
-                                 ErrorKind::BadInput};
-                skylines.emplace_back(std::size_t(pageSize), 0);
+            if (page == pages.size()) {
+                if (pages.size() >= maxPages)
+                    return noRoom();
+                pages.emplace_back(pageSize);
             }
-            Spot best;
-            for (int rot = 0; rot < 4; ++rot)
-                bestSpot(skylines[page], pageSize, profiles[rot], rot, best);
-            if (best.top == LLONG_MAX)
+            auto t0 = std::chrono::steady_clock::now();
+            long long bestTop = LLONG_MAX;
+            int bestX = 0, bestY = 0, bestRotation = -1;
+            for (int rot = 0; rot < 4; ++rot) {
+                int x, y;
+                if (pages[page].firstFit(shapes[rot], bestTop, x, y)) {
+                    bestTop = y + shapes[rot].height;
+                    bestX = x;
+                    bestY = y;
+                    bestRotation = rot;
+                }
+            }
+            const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            if (getenv("UVL_DEBUG") && dt > 0.01) fprintf(stderr, "slow n=%zu %dx%d runs %zu found %d at %d,%d %.3f s\n", n, m.width, m.height, shapes[0].runs.size(), bestRotation, bestX, bestY, dt);
+            if (bestRotation < 0)
                 continue;
-            const Profile& p = profiles[best.rotation];
-            for (int c = 0; c < p.width; ++c)
-                if (p.lo[std::size_t(c)] <= p.hi[std::size_t(c)])
-                    skylines[page][std::size_t(best.x + c)] = best.y + p.hi[std::size_t(c)] + 1;
+            pages[page].place(shapes[bestRotation], bestX, bestY);
             Placement& pl = packing.placements[i];
             pl.page = std::uint32_t(page);
-            pl.rotation = best.rotation;
-            pl.x = best.x;
-            pl.y = best.y;
-            pl.origin = o.origin;
-            pl.width = o.width;
-            pl.height = o.height;
+            pl.rotation = bestRotation;
+            pl.x = bestX;
+            pl.y = bestY;
+            pl.origin = m.origin;
+            pl.width = m.width;
+            pl.height = m.height;
             placed = true;
         }
+        masks[i] = {};
     }
-    packing.pageCount = std::uint32_t(std::max<std::size_t>(skylines.size(), 1));
+    packing.pageCount = std::uint32_t(std::max<std::size_t>(pages.size(), 1));
     return packing;
 }
 
