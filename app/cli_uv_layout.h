@@ -13,7 +13,7 @@ struct UvLayoutArgs {
     unsigned threads = 0;
     float maxDeviation = 0.0f; // degrees; 0: the core's default
     float sharpEdge = 0.0f;    // degrees; 0: the core's default
-    bool keepUvs = false; // lay out even a model that has UVs (they are replaced)
+    bool keepUvs = false;      // lay out even a model that has UVs (they are replaced)
     std::string jsonOut;
     std::string out;   // the laid-out mesh as .glb
     std::string image; // the pages side by side, each chart in its own colour

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <queue>
 #include <utility>
-#include <cstdio>
-#include <cstdlib>
 
 #include <glm/geometric.hpp>
 
@@ -102,40 +100,6 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
             pushNeighbours(t);
         }
         std::sort(members.begin(), members.end());
-    }
-    if (getenv("UVL_DEBUG")) {
-        std::size_t degenerate = 0, noNeighbour = 0, noSmooth = 0, single = 0, singleCone = 0;
-        for (std::uint32_t t = 0; t < n; ++t) {
-            degenerate += surface.degenerate(t);
-            bool any = false, smooth = false;
-            for (int e = 0; e < 3; ++e) {
-                any |= topo.edgeNeighbors[t][std::size_t(e)] != kNone;
-                smooth |= joinsSmoothly(t, e);
-            }
-            noNeighbour += !any;
-            noSmooth += !smooth;
-        }
-        for (auto& c : charts) if (c.size() == 1) { single++; }
-        std::size_t opposite = 0, none = 0, toDegenerate = 0, sharp = 0, edges = 0;
-        for (std::uint32_t t = 0; t < n; ++t) {
-            if (surface.degenerate(t)) continue;
-            for (int e = 0; e < 3; ++e) {
-                ++edges;
-                const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)];
-                if (u == kNone) ++none; else if (surface.degenerate(u)) ++toDegenerate; else if (!joinsSmoothly(t, e)) { ++sharp; if (glm::dot(surface.normal[t], surface.normal[u]) < -0.9) ++opposite; }
-            }
-        }
-        std::size_t hist[6] = {};
-        for (auto& c : charts) { std::size_t k = c.size(); hist[k <= 1 ? 0 : k <= 2 ? 1 : k <= 4 ? 2 : k <= 16 ? 3 : k <= 256 ? 4 : 5]++; }
-        fprintf(stderr, "components %u opposite %zu ", topo.componentCount, opposite);
-        { std::size_t h[10] = {}; std::size_t slivers = 0;
-          for (std::uint32_t t = 0; t < n; ++t) { if (surface.degenerate(t)) continue;
-            const auto& c = topo.corners[t]; double l = 0; for (int k = 0; k < 3; ++k) l = std::max(l, glm::length(surface.position[c[k]] - surface.position[c[(k+1)%3]]));
-            const bool sliver = 2 * surface.area[t] < 1e-2 * l * l; slivers += sliver;
-            for (int e = 0; e < 3; ++e) { const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)]; if (u == kNone || surface.degenerate(u)) continue;
-              double d = std::acos(std::clamp(glm::dot(surface.normal[t], surface.normal[u]), -1.0, 1.0)) * 180 / M_PI; h[std::min(9, int(d / 20))]++; } }
-          fprintf(stderr, "slivers %zu dihedral hist:", slivers); for (auto v : h) fprintf(stderr, " %zu", v); fprintf(stderr, "\n"); } fprintf(stderr, "edges %zu none %zu toDegenerate %zu sharp %zu; charts by size 1:%zu 2:%zu 3-4:%zu 5-16:%zu 17-256:%zu more:%zu\n", edges, none, toDegenerate, sharp, hist[0], hist[1], hist[2], hist[3], hist[4], hist[5]);
-        fprintf(stderr, "triangles %u degenerate %zu noNeighbour %zu noSmooth %zu single %zu %zu\n", n, degenerate, noNeighbour, noSmooth, single, singleCone);
     }
     return charts;
 }

@@ -22,7 +22,7 @@ double signedArea(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c)
 
 /** A unit vector perpendicular to n. */
 glm::dvec3 perpendicular(const glm::dvec3& n) {
-    const glm::dvec3 a = std::fabs(n.x) < 0.6 ? glm::dvec3(1, 0, 0)
+    const glm::dvec3 a = std::fabs(n.x) < 0.6   ? glm::dvec3(1, 0, 0)
                          : std::fabs(n.y) < 0.6 ? glm::dvec3(0, 1, 0)
                                                 : glm::dvec3(0, 0, 1);
     return glm::normalize(glm::cross(n, a));
@@ -101,8 +101,11 @@ bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::ui
     return true;
 }
 
-/** True when two triangles of the chart cover one cell of a fine grid over its UV box. */
-bool overlapsItself(const Chart& chart) {
+/**
+ * True when two triangles of the chart cover one cell of a grid over its UV box with cells half
+ * a texel wide at the given density (texels per model unit).
+ */
+bool overlapsItself(const Chart& chart, double density) {
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const glm::dvec2& p : chart.uv) {
         lo = glm::min(lo, p);
@@ -111,8 +114,7 @@ bool overlapsItself(const Chart& chart) {
     const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
     if (!(extent > 0.0))
         return false;
-    const int cells = std::clamp(int(std::ceil(std::sqrt(8.0 * double(chart.triangles.size())))),
-                                 16, 2048);
+    const int cells = int(std::clamp(std::ceil(2.0 * extent * density), 16.0, 4096.0));
     std::vector<std::uint8_t> count(std::size_t(cells) * std::size_t(cells), 0u);
     bool overlap = false;
     for (std::size_t k = 0; k < chart.local.size() && !overlap; ++k) {
@@ -124,8 +126,8 @@ bool overlapsItself(const Chart& chart) {
             continue;
         uv::scanUv(r, std::max(r.minX, 0), std::min(r.maxX, cells - 1), std::max(r.minY, 0),
                    std::min(r.maxY, cells - 1), [&](int x, int y, auto, auto, auto) {
-                       std::uint8_t& cell = count[std::size_t(y) * std::size_t(cells) +
-                                                  std::size_t(x)];
+                       std::uint8_t& cell =
+                           count[std::size_t(y) * std::size_t(cells) + std::size_t(x)];
                        if (++cell > 1)
                            overlap = true;
                    });
@@ -135,7 +137,8 @@ bool overlapsItself(const Chart& chart) {
 
 } // namespace
 
-FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch) {
+FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
+                            double density) {
     const MeshTopology& topo = *surface.topology;
     chart.vertices.clear();
     for (std::uint32_t t : chart.triangles)
@@ -225,8 +228,8 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         if (surface.degenerate(t))
             continue;
         const auto& c = chart.local[k];
-        const double r = signedArea(chart.uv[c[0]], chart.uv[c[1]], chart.uv[c[2]]) /
-                         surface.area[t];
+        const double r =
+            signedArea(chart.uv[c[0]], chart.uv[c[1]], chart.uv[c[2]]) / surface.area[t];
         if (!(r > 1e-4))
             return FlattenOutcome::Flipped;
         if (std::max(r, 1.0 / r) > maxStretch)
@@ -234,7 +237,7 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     }
     if (chart.triangles.size() > 1 && stretchedArea > 0.05 * chart.area)
         return FlattenOutcome::Stretched;
-    if (chart.triangles.size() > 1 && overlapsItself(chart))
+    if (chart.triangles.size() > 1 && overlapsItself(chart, density))
         return FlattenOutcome::Overlapping;
     return FlattenOutcome::Good;
 }

@@ -3,9 +3,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -24,7 +21,9 @@ namespace {
 using uvl::Chart;
 using uvl::kNone;
 
-Error cancelled() { return Error{"the UV layout was cancelled", ErrorKind::Cancelled}; }
+Error cancelled() {
+    return Error{"the UV layout was cancelled", ErrorKind::Cancelled};
+}
 
 std::string checkOptions(const UvLayoutOptions& o) {
     if (o.resolution < 64 || o.resolution > 16384)
@@ -82,8 +81,8 @@ uvl::Surface makeSurface(const Mesh& mesh, const MeshTopology& topo, unsigned th
  */
 Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
                                       std::vector<std::vector<std::uint32_t>> pending,
-                                      const UvLayoutOptions& options, const ProgressFn& progress,
-                                      double from, double to) {
+                                      const UvLayoutOptions& options, double density,
+                                      const ProgressFn& progress, double from, double to) {
     std::vector<Chart> done;
     const double total = double(std::max<std::size_t>(surface.area.size(), 1));
     std::atomic<bool> stop{false};
@@ -104,11 +103,11 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
         const unsigned threads = resolveThreadCount(options.threads);
         parallelRanges(int(threads), threads, [&](int part, int, int) {
             for (std::size_t i = next++; i < work.size() && !stop; i = next++) {
-                outcome[i] = uvl::flattenChart(surface, work[i], double(options.maxChartStretch));
+                outcome[i] =
+                    uvl::flattenChart(surface, work[i], double(options.maxChartStretch), density);
                 doneTriangles += work[i].triangles.size();
                 if (part == 0) {
-                    const double f =
-                        double(finishedTriangles + doneTriangles.load()) / total;
+                    const double f = double(finishedTriangles + doneTriangles.load()) / total;
                     if (!reportProgress(progress, from + (to - from) * std::min(f, 1.0)))
                         stop = true;
                 }
@@ -116,12 +115,6 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
         });
         if (stop)
             return cancelled();
-        if (getenv("UVL_DEBUG")) {
-            int counts[4] = {0, 0, 0, 0};
-            std::size_t singles = 0;
-            for (std::size_t i = 0; i < work.size(); ++i) { counts[int(outcome[i])]++; singles += work[i].triangles.size() == 1; }
-            fprintf(stderr, "round %d charts %zu good %d flipped %d overlapping %d stretched %d singles %zu\n", round, work.size(), counts[0], counts[1], counts[2], counts[3], singles);
-        }
         for (std::size_t i = 0; i < work.size(); ++i) {
             if (outcome[i] == uvl::FlattenOutcome::Good || work[i].triangles.size() == 1) {
                 finishedTriangles += work[i].triangles.size();
@@ -154,9 +147,7 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
     std::atomic<bool> cancel{false};
     constexpr int kAttempts = 14;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
-        auto t0 = std::chrono::steady_clock::now();
         Result<uvl::Packing> packing = uvl::packCharts(charts, density, options, 1, cancel);
-        if (getenv("UVL_DEBUG")) fprintf(stderr, "attempt %d density %g ok %d %.3f s\n", attempt, density, int(packing.ok()), std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
         if (packing.cancelled())
             return cancelled();
         if (packing.ok()) {
@@ -209,8 +200,18 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
     std::vector<std::vector<std::uint32_t>> grown = uvl::growCharts(surface, options);
     if (!reportProgress(progress, 0.1))
         return cancelled();
+    // The density the charts will have, near enough to look for overlaps at texel size.
+    double surfaceArea = 0.0;
+    for (std::size_t t = 0; t < surface.area.size(); ++t)
+        if (!surface.degenerate(std::uint32_t(t)))
+            surfaceArea += surface.area[t];
+    const double expectedDensity =
+        options.texelsPerUnit > 0.0 ? options.texelsPerUnit
+        : surfaceArea > 0.0
+            ? std::sqrt(0.7 * double(options.resolution) * double(options.resolution) / surfaceArea)
+            : 1.0;
     Result<std::vector<Chart>> flattened =
-        flattenAll(surface, std::move(grown), options, progress, 0.1, 0.6);
+        flattenAll(surface, std::move(grown), options, expectedDensity, progress, 0.1, 0.6);
     if (!flattened)
         return flattened.takeError();
     const std::vector<Chart>& charts = flattened.value();

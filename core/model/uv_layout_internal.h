@@ -56,16 +56,18 @@ enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched };
 
 /**
  * Flattens chart (triangles set) with least-squares conformal maps, or by projection when it is
- * planar, and scales it so its UV area is its 3D area. Good, or why it has to be split.
+ * planar, and scales it so its UV area is its 3D area. Good, or why it has to be split; overlaps
+ * are looked for at half a texel of the expected density (texels per model unit).
  */
-FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch);
+FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
+                            double density);
 
 /** Where packCharts() put a chart. */
 struct Placement {
     std::uint32_t page = 0;
-    int rotation = 0; // quarter turns
-    int x = 0, y = 0; // texel offset of the chart's (rotated) mask on its page
-    glm::dvec2 origin{0.0}; // subtracted from uv × density before the rotation
+    int rotation = 0;          // quarter turns
+    int x = 0, y = 0;          // texel offset of the chart's (rotated) mask on its page
+    glm::dvec2 origin{0.0};    // subtracted from uv × density before the rotation
     int width = 0, height = 0; // the unrotated mask's size
 };
 

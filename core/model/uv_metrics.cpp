@@ -60,8 +60,8 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
                 q[k] = glm::dvec2(mesh.uvs[v]) * res;
             }
             area3d[std::size_t(t)] = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            areaUv[std::size_t(t)] =
-                0.5 * ((q[1].x - q[0].x) * (q[2].y - q[0].y) - (q[1].y - q[0].y) * (q[2].x - q[0].x));
+            areaUv[std::size_t(t)] = 0.5 * ((q[1].x - q[0].x) * (q[2].y - q[0].y) -
+                                            (q[1].y - q[0].y) * (q[2].x - q[0].x));
         }
     });
     double total3d = 0.0, totalUv = 0.0;
@@ -102,8 +102,7 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
     const std::size_t pageTexels = std::size_t(layout.resolution) * std::size_t(layout.resolution);
     std::vector<std::uint8_t> count(pageTexels * pages, 0u);
     for (std::size_t t = 0; t < n; ++t) {
-        const std::uint32_t chart =
-            t < layout.triangleChart.size() ? layout.triangleChart[t] : 0u;
+        const std::uint32_t chart = t < layout.triangleChart.size() ? layout.triangleChart[t] : 0u;
         const std::uint32_t page = chart < layout.chartPage.size() ? layout.chartPage[chart] : 0u;
         if (page >= pages)
             continue;

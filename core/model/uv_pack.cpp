@@ -8,9 +8,6 @@
 #include <cmath>
 #include <numeric>
 #include <string>
-#include <cstdio>
-#include <chrono>
-#include <cstdlib>
 
 #include <glm/common.hpp>
 
@@ -118,9 +115,9 @@ Mask maskChart(const Chart& chart, double density, int r) {
 /** A mask after `rotation` quarter turns (see placeUv) as runs of texels per row. */
 struct Shape {
     int width = 0, height = 0;
-    std::vector<int> rowBegin;                 // per row: its first run; height + 1 entries
-    std::vector<std::pair<int, int>> runs;     // first and last column, inclusive
-    std::vector<int> widestRun;                // per row
+    std::vector<int> rowBegin;             // per row: its first run; height + 1 entries
+    std::vector<std::pair<int, int>> runs; // first and last column, inclusive
+    std::vector<int> widestRun;            // per row
 };
 
 Shape rotatedShape(const Mask& m, int rotation) {
@@ -132,10 +129,18 @@ Shape rotatedShape(const Mask& m, int rotation) {
     const auto bit = [&](int x, int y) {
         int i, j;
         switch (rotation) {
-        case 0: i = x, j = y; break;
-        case 1: i = y, j = h - 1 - x; break; // texel (i, j) goes to (h − 1 − j, i)
-        case 2: i = w - 1 - x, j = h - 1 - y; break;
-        default: i = w - 1 - y, j = x; break; // (i, j) goes to (j, w − 1 − i)
+        case 0:
+            i = x, j = y;
+            break;
+        case 1:
+            i = y, j = h - 1 - x;
+            break; // texel (i, j) goes to (h − 1 − j, i)
+        case 2:
+            i = w - 1 - x, j = h - 1 - y;
+            break;
+        default:
+            i = w - 1 - y, j = x;
+            break; // (i, j) goes to (j, w − 1 − i)
         }
         return m.bits[std::size_t(j) * std::size_t(w) + std::size_t(i)] != 0;
     };
@@ -177,7 +182,7 @@ public:
     }
 
     /** The lowest row, then column, where s fits with its top below topLimit; false if none. */
-    __attribute__((noinline)) bool firstFit(const Shape& s, long long topLimit, int& outX, int& outY) {
+    bool firstFit(const Shape& s, long long topLimit, int& outX, int& outY) {
         m_lastFailed = 0;
         while (m_open < m_size && widest(m_open) == 0)
             ++m_open;
@@ -214,7 +219,7 @@ public:
         return false;
     }
 
-    __attribute__((noinline)) void place(const Shape& s, int x, int y) {
+    void place(const Shape& s, int x, int y) {
         // Charts come largest first and many are alike: one at least as small across as this
         // one starts its search a little below where this one went, not at the bottom again.
         const int side = smallSide(s);
@@ -248,7 +253,7 @@ public:
 private:
     int smallSide(const Shape& s) const { return std::min({s.width, s.height, m_size}); }
 
-    __attribute__((noinline)) bool fitsAt(const Shape& s, int x, int y) {
+    bool fitsAt(const Shape& s, int x, int y) {
         for (int j = 0; j < s.height; ++j)
             if (testRow(s, j, x, y) >= 0)
                 return false;
@@ -259,7 +264,7 @@ private:
      * -1 if row j of s fits at (x, y); else the next x worth testing (the row's run moved past
      * the taken stretch it met), and j becomes the last failed row.
      */
-    __attribute__((noinline)) int testRow(const Shape& s, int j, int x, int y) {
+    int testRow(const Shape& s, int j, int x, int y) {
         const std::int16_t* row = &m_run[index(0, y + j)];
         for (int k = s.rowBegin[std::size_t(j)]; k < s.rowBegin[std::size_t(j) + 1]; ++k) {
             const auto [a, b] = s.runs[std::size_t(k)];
@@ -274,8 +279,10 @@ private:
         return -1;
     }
 
-    std::size_t index(int x, int y) const { return std::size_t(y) * std::size_t(m_size) + std::size_t(x); }
-    __attribute__((noinline)) int widest(int y) {
+    std::size_t index(int x, int y) const {
+        return std::size_t(y) * std::size_t(m_size) + std::size_t(x);
+    }
+    int widest(int y) {
         if (m_dirty[std::size_t(y)]) {
             int w = 0;
             const std::int16_t* row = &m_run[index(0, y)];
@@ -365,10 +372,6 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
         return Error{"the charts do not fit on " + std::to_string(maxPages) + " page(s)",
                      ErrorKind::BadInput};
     };
-    if (getenv("UVL_DEBUG")) {
-        std::vector<std::size_t> t = texels; std::sort(t.rbegin(), t.rend());
-        fprintf(stderr, "charts %zu texels %.0f biggest %zu %zu %zu median %zu\n", t.size(), allTexels, t[0], t.size()>1?t[1]:0, t.size()>10?t[10]:0, t[t.size()/2]);
-    }
     if (allTexels > double(maxPages) * double(pageSize) * double(pageSize))
         return noRoom();
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
@@ -397,7 +400,6 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                     return noRoom();
                 pages.emplace_back(pageSize);
             }
-            auto t0 = std::chrono::steady_clock::now();
             long long bestTop = LLONG_MAX;
             int bestX = 0, bestY = 0, bestRotation = -1;
             for (int rot = 0; rot < 4; ++rot) {
@@ -409,8 +411,6 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                     bestRotation = rot;
                 }
             }
-            const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            if (getenv("UVL_DEBUG") && dt > 0.01) fprintf(stderr, "slow n=%zu %dx%d runs %zu found %d at %d,%d %.3f s\n", n, m.width, m.height, shapes[0].runs.size(), bestRotation, bestX, bestY, dt);
             if (bestRotation < 0)
                 continue;
             pages[page].place(shapes[bestRotation], bestX, bestY);
