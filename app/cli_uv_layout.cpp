@@ -107,6 +107,7 @@ int runUvLayout(const UvLayoutArgs& args) {
         {"packing_efficiency", m.packingEfficiency},
         {"overlapping_texels", m.overlappingTexels},
         {"flipped_triangles", m.flippedTriangles},
+        {"collapsed_triangles", m.collapsedTriangles},
         {"seam_length", m.seamLength},
         {"seam_length_unit_cube", m.seamLengthUnitCube},
         {"load_seconds", loadSeconds},

@@ -87,8 +87,13 @@ struct UvLayoutMetrics {
     double packingEfficiency = 0.0;
     /** Texels covered by more than one triangle (0 when nothing overlaps). */
     std::uint64_t overlappingTexels = 0;
-    /** Triangles with 3D area whose UV triangle has no positive signed area. */
+    /** Triangles with 3D area whose UV triangle has a negative signed area. */
     std::uint64_t flippedTriangles = 0;
+    /**
+     * Triangles with 3D area whose UV triangle has none (slivers far below a texel, rounded to
+     * a line by the float UVs); they cover no texel.
+     */
+    std::uint64_t collapsedTriangles = 0;
     /** Total 3D length of the edges between two charts, in model units and in unit-cube units. */
     double seamLength = 0.0;
     double seamLengthUnitCube = 0.0;

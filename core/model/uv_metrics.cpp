@@ -77,7 +77,7 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
         if (!(area3d[t] > degenerate))
             continue;
         if (!(areaUv[t] > 0.0)) {
-            ++m.flippedTriangles;
+            ++(areaUv[t] < 0.0 ? m.flippedTriangles : m.collapsedTriangles);
             stretch.emplace_back(std::numeric_limits<double>::infinity(), area3d[t]);
             continue;
         }
