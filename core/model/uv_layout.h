@@ -56,13 +56,13 @@ struct UvLayout {
 };
 
 /**
- * Gives a mesh an automatic UV layout (docs/architecture.md, "Automatic UV layout"): charts
- * grown by normal deviation up to sharp edges, each flattened by least-squares conformal maps
- * and split again where it folds over or stretches, scaled by its 3D area, and packed by shape
- * into texture pages with padding. Existing uvs are replaced. Deterministic: the same mesh and
- * options give the same bytes for any thread count. progress runs on the calling thread; its
- * false cancels (ErrorKind::Cancelled). An Error for an invalid mesh or options, or charts that
- * cannot fit (ErrorKind::BadInput); never throws except std::bad_alloc.
+ * Gives a mesh an automatic UV layout: charts grown by normal deviation up to sharp edges, each
+ * flattened by least-squares conformal maps and split again where it folds over or stretches,
+ * scaled by its 3D area, and packed by shape into texture pages with padding. Existing uvs are
+ * replaced. Deterministic: the same mesh and options give the same bytes for any thread count.
+ * progress runs on the calling thread; its false cancels (ErrorKind::Cancelled). An Error for an
+ * invalid mesh or options, or charts that cannot fit (ErrorKind::BadInput); never throws except
+ * std::bad_alloc.
  */
 Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options = {},
                               const ProgressFn& progress = {});
