@@ -185,8 +185,8 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
                               const ProgressFn& progress) {
     if (const std::string problem = checkOptions(options); !problem.empty())
         return Error{"cannot lay out UVs: " + problem, ErrorKind::BadInput};
-    if (const std::string problem = mesh.validate(); !problem.empty())
-        return Error{"cannot lay out UVs of the mesh: " + problem, ErrorKind::BadInput};
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{"cannot lay out UVs of the mesh: " + valid.error(), ErrorKind::BadInput};
     if (mesh.triangleCount() == 0)
         return Error{"cannot lay out UVs of a mesh without triangles", ErrorKind::BadInput};
     if (mesh.triangleCount() >= std::size_t(kNone))

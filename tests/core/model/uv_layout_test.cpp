@@ -46,7 +46,7 @@ void expectSameTriangles(const Mesh& in, const UvLayout& l) {
     ASSERT_EQ(out.triangleMaterial, in.triangleMaterial);
     ASSERT_EQ(out.uvs.size(), out.positions.size());
     ASSERT_EQ(l.sourceVertex.size(), out.positions.size());
-    EXPECT_EQ(out.validate(), "");
+    EXPECT_TRUE(out.validate().ok()) << out.validate().error();
     for (std::size_t i = 0; i < in.indices.size(); ++i) {
         const std::uint32_t v = out.indices[i];
         ASSERT_EQ(l.sourceVertex[v], in.indices[i]) << "corner " << i;
