@@ -147,7 +147,8 @@ TEST(LayoutTarget, SameLayoutEveryTimeAndAdoptedOnlyForItsMesh) {
     const std::uint64_t made = doc.meshSerial();
     doc.setMesh(coarseBox(), "box again");
     EXPECT_FALSE(doc.adoptPaintTarget(std::move(a).value(), textureOptions(), made).ok());
-    EXPECT_TRUE(doc.adoptPaintTarget(std::move(b).value(), textureOptions(), doc.meshSerial()).ok());
+    EXPECT_TRUE(
+        doc.adoptPaintTarget(std::move(b).value(), textureOptions(), doc.meshSerial()).ok());
     EXPECT_TRUE(doc.paintedMesh().hasUvs());
 }
 
@@ -166,8 +167,8 @@ TEST(LayoutTarget, ScriptOperationSetTargetTextureMakesTheLayout) {
     ASSERT_NE(doc.paintTarget(), nullptr); // vertex colours, the target the script replaces
     Host host;
     core::ScriptRunner runner(doc, host, pixelView(80, 60));
-    const core::Status status = runner.run(
-        nlohmann::json{{"op", "set-target"}, {"kind", "texture"}, {"resolution", 512}});
+    const core::Status status =
+        runner.run(nlohmann::json{{"op", "set-target"}, {"kind", "texture"}, {"resolution", 512}});
     ASSERT_TRUE(status.ok()) << status.error();
     EXPECT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::Texture);
     EXPECT_TRUE(doc.paintedMesh().hasUvs());

@@ -106,8 +106,7 @@ TEST(LayoutProject, ExportsWriteTheGeneratedUvs) {
 
     for (const core::ExportFormat format :
          {core::ExportFormat::Glb, core::ExportFormat::Obj, core::ExportFormat::Ply}) {
-        const std::string path =
-            dir.file(std::string("out") + core::exportExtension(format));
+        const std::string path = dir.file(std::string("out") + core::exportExtension(format));
         const auto written = core::exportMesh(path, format, painted);
         ASSERT_TRUE(written.ok()) << written.error();
         core::Result<core::Mesh> back = core::loadMesh(path);
