@@ -64,6 +64,14 @@ int main(int argc, char** argv) {
     addCameraOptions(paintCommand, paint.camera);
     paintCommand->add_flag("--cpu", paint.cpuCapture,
                            "Capture on the CPU instead of OpenGL (no EGL needed)");
+    paintCommand
+        ->add_option("--target", paint.target,
+                     "Paint target: texture (an automatic UV layout for a model without UVs) "
+                     "or vertex-colors; overrides the script's")
+        ->check(CLI::IsMember({"texture", "vertex-colors"}));
+    paintCommand
+        ->add_option("--resolution", paint.resolution, "Size of a new paint texture (512 to 8192)")
+        ->check(CLI::Range(512, 8192));
 
     cli::ExportArgs exportArgs;
     CLI::App* exportCommand = app.add_subcommand(
@@ -78,7 +86,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"glb", "obj", "ply", "png", "png16", "tiff", "exr"}));
     exportCommand
         ->add_option("--target", exportArgs.target,
-                     "Paint target to make for a plain model: texture or vertex-colors")
+                     "Paint target to make for a plain model: texture (an automatic UV layout "
+                     "for a model without UVs) or vertex-colors")
         ->check(CLI::IsMember({"texture", "vertex-colors"}));
     exportCommand
         ->add_option("--resolution", exportArgs.resolution,

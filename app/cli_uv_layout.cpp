@@ -14,6 +14,7 @@
 #include "core/io/image_write.h"
 #include "core/io/mesh_io.h"
 #include "core/model/uv_layout.h"
+#include "core/paint/layout_target.h"
 #include "core/paint/uv_raster.h"
 
 namespace cli {
@@ -92,6 +93,11 @@ int runUvLayout(const UvLayoutArgs& args) {
         {"vertices_in", mesh->vertexCount()},
         {"vertices_out", m.vertices},
         {"had_uvs", hadUvs},
+        {"vertex_spacing_px", core::vertexSpacingPixels(*mesh)},
+        {"default_target",
+         core::defaultTargetKind(*mesh, core::Brush{}.radius) == core::PaintTargetKind::Texture
+             ? "texture"
+             : "vertex-colors"},
         {"resolution", layout->resolution},
         {"padding", layout->padding},
         {"threads", core::resolveThreadCount(args.threads)},
