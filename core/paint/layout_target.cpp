@@ -16,9 +16,8 @@
 
 namespace core {
 
-Result<std::unique_ptr<TextureTarget>> makeLayoutTarget(const Mesh& mesh,
-                                                        const PaintTargetOptions& options,
-                                                        const ProgressFn& progress) {
+Result<std::unique_ptr<TextureTarget>>
+makeLayoutTarget(const Mesh& mesh, const PaintTargetOptions& options, const ProgressFn& progress) {
     // The layout is most of the work; making the target (coverage, seam padding) the rest.
     constexpr double kLayoutShare = 0.9;
     UvLayoutOptions layoutOptions;
@@ -88,8 +87,8 @@ double vertexSpacingPixels(const Mesh& mesh) {
         const double area = 0.5 * double(glm::length(glm::cross(b - a, c - a)));
         if (!(area > 0.0) || !std::isfinite(area))
             continue;
-        const double edge = double(
-            std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)}));
+        const double edge =
+            double(std::max({glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)}));
         edges.push_back({edge, area});
         totalArea += area;
     }
