@@ -49,6 +49,8 @@ struct PaintArgs {
     std::string out;
     CameraArgs camera;
     bool cpuCapture = false;
+    std::string target; // texture or vertex-colors: overrides the script's target
+    int resolution = 0; // of a new texture; 0: the script's or the default
 };
 
 struct ExportArgs {

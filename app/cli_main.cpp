@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_uv_layout.h"
 
 namespace {
 void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
@@ -63,6 +64,14 @@ int main(int argc, char** argv) {
     addCameraOptions(paintCommand, paint.camera);
     paintCommand->add_flag("--cpu", paint.cpuCapture,
                            "Capture on the CPU instead of OpenGL (no EGL needed)");
+    paintCommand
+        ->add_option("--target", paint.target,
+                     "Paint target: texture (an automatic UV layout for a model without UVs) "
+                     "or vertex-colors; overrides the script's")
+        ->check(CLI::IsMember({"texture", "vertex-colors"}));
+    paintCommand
+        ->add_option("--resolution", paint.resolution, "Size of a new paint texture (512 to 8192)")
+        ->check(CLI::Range(512, 8192));
 
     cli::ExportArgs exportArgs;
     CLI::App* exportCommand = app.add_subcommand(
@@ -77,7 +86,8 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"glb", "obj", "ply", "png", "png16", "tiff", "exr"}));
     exportCommand
         ->add_option("--target", exportArgs.target,
-                     "Paint target to make for a plain model: texture or vertex-colors")
+                     "Paint target to make for a plain model: texture (an automatic UV layout "
+                     "for a model without UVs) or vertex-colors")
         ->check(CLI::IsMember({"texture", "vertex-colors"}));
     exportCommand
         ->add_option("--resolution", exportArgs.resolution,
@@ -115,6 +125,39 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
 
+    cli::UvLayoutArgs uvLayout;
+    CLI::App* uvLayoutCommand = app.add_subcommand(
+        "uv-layout", "Make an automatic UV layout for a model without texture coordinates and "
+                     "print its quality figures as JSON");
+    uvLayoutCommand->add_option("MODEL", uvLayout.model, "Model file or builtin:NAME")->required();
+    uvLayoutCommand->add_option("--resolution", uvLayout.resolution, "Page size in texels")
+        ->capture_default_str()
+        ->check(CLI::Range(64, 16384));
+    uvLayoutCommand->add_option("--padding", uvLayout.padding, "Empty texels between charts")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 256));
+    uvLayoutCommand
+        ->add_option("--texels-per-unit", uvLayout.texelsPerUnit,
+                     "Texel density (default: the largest that fits one page; else as many "
+                     "pages as needed)")
+        ->check(CLI::PositiveNumber);
+    uvLayoutCommand->add_option("--threads", uvLayout.threads, "Worker threads (0: one per core)")
+        ->capture_default_str();
+    uvLayoutCommand
+        ->add_option("--max-deviation", uvLayout.maxDeviation,
+                     "Degrees a chart's normals may turn from its mean (default 50)")
+        ->check(CLI::Range(1.0f, 179.0f));
+    uvLayoutCommand
+        ->add_option("--sharp-edge", uvLayout.sharpEdge,
+                     "Edges bending more than this many degrees cut charts (default 40)")
+        ->check(CLI::Range(1.0f, 180.0f));
+    uvLayoutCommand->add_flag("--replace-uvs", uvLayout.keepUvs,
+                              "Lay out a model that has texture coordinates too");
+    uvLayoutCommand->add_option("--json", uvLayout.jsonOut, "Also write the figures to this file");
+    uvLayoutCommand->add_option("--out", uvLayout.out, "Save the laid-out mesh (.glb)");
+    uvLayoutCommand->add_option("--image", uvLayout.image,
+                                "Draw the pages' charts side by side into this image (.png)");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -130,6 +173,8 @@ int main(int argc, char** argv) {
         return cli::runExport(exportArgs);
     if (benchCommand->parsed())
         return cli::runBench(bench);
+    if (uvLayoutCommand->parsed())
+        return cli::runUvLayout(uvLayout);
     if (benchLoadCommand->parsed())
         return cli::runBenchLoad(loadModels, loadRuns);
     return 1;

@@ -61,9 +61,20 @@ int runPaint(const PaintArgs& args) {
         camera.size = *script->size;
     if (script->orbit && camera.cameraFile.empty())
         camera.orbit = *script->orbit;
-    if (script->target)
-        if (const core::Status s = doc.setPaintTarget(*script->target); !s)
-            return fail(args.script + ": " + s.error());
+    if (script->target || !args.target.empty() || args.resolution > 0) {
+        core::PaintTargetOptions options =
+            script->target ? *script->target : doc.paintTargetOptions();
+        if (args.target == "texture")
+            options.kind = core::PaintTargetKind::Texture;
+        else if (args.target == "vertex-colors")
+            options.kind = core::PaintTargetKind::VertexColors;
+        if (args.resolution > 0)
+            options.resolution = args.resolution;
+        // A texture on a model without UVs makes the automatic UV layout here.
+        if (const core::Status s = doc.setPaintTarget(options); !s)
+            return fail((script->target && args.target.empty() ? args.script : args.model) + ": " +
+                        s.error());
+    }
     // Without --orbit or --camera a project is painted from its saved view.
     const core::Camera* saved = project->state && project->state->camera ? &doc.camera() : nullptr;
     auto view = makeView(camera, doc.mesh(), saved);

@@ -189,8 +189,12 @@
         <translation>Pinselleiste</translation>
     </message>
     <message>
-        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
-        <translation>Dieses Modell hat keine Texturkoordinaten (UVs), daher gibt es keine Textur zum Bemalen: Es wird mit Vertexfarben bemalt.</translation>
+        <source>This model has no texture coordinates (UVs): a texture gets an automatic UV layout; vertex colours follow its vertices.</source>
+        <translation>Dieses Modell hat keine Texturkoordinaten (UVs): Eine Textur bekommt ein automatisches UV-Layout; Vertexfarben folgen seinen Vertices.</translation>
+    </message>
+    <message>
+        <source>Texture %1 × %1, automatic UVs</source>
+        <translation>Textur %1 × %1, automatische UVs</translation>
     </message>
 </context>
 <context>
@@ -910,6 +914,38 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Warnings while loading are shown above the view</source>
         <translation>Warnungen beim Laden stehen oben in der Ansicht</translation>
     </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs). Its vertices are far apart for the brush, so it gets an automatic UV layout to paint into a texture.</source>
+        <translation>„%1“ hat keine Texturkoordinaten (UVs). Seine Vertices liegen für den Pinsel weit auseinander, daher bekommt es ein automatisches UV-Layout, um in eine Textur zu malen.</translation>
+    </message>
+    <message>
+        <source>Making an automatic UV layout…</source>
+        <translation>Automatisches UV-Layout wird erstellt …</translation>
+    </message>
+    <message>
+        <source>The automatic UV layout was cancelled; the paint target stays as it was</source>
+        <translation>Das automatische UV-Layout wurde abgebrochen; das Malziel bleibt, wie es war</translation>
+    </message>
+    <message>
+        <source>Cannot paint into a texture with an automatic UV layout: %1</source>
+        <translation>Malen in eine Textur mit automatischem UV-Layout nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Painting into a texture with an automatic UV layout (Undo brings the previous target back)</source>
+        <translation>Es wird in eine Textur mit automatischem UV-Layout gemalt (Rückgängig holt das vorige Ziel zurück)</translation>
+    </message>
+    <message>
+        <source>Painting into a texture with an automatic UV layout</source>
+        <translation>Es wird in eine Textur mit automatischem UV-Layout gemalt</translation>
+    </message>
+    <message>
+        <source>Use Vertex Colours Instead</source>
+        <translation>Stattdessen Vertexfarben verwenden</translation>
+    </message>
+    <message>
+        <source>Paint into a Texture (Automatic UV Layout)</source>
+        <translation>In eine Textur malen (automatisches UV-Layout)</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -923,6 +959,21 @@ Konnektivität %3 ms, Regionen %4 ms
             <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
             <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::PaintTargetJob</name>
+    <message>
+        <source>Making an automatic UV layout for “%1”…</source>
+        <translation>Automatisches UV-Layout für „%1“ wird erstellt …</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Automatic UV Layout</source>
+        <translation>Automatisches UV-Layout</translation>
     </message>
 </context>
 <context>

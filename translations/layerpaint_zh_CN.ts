@@ -189,8 +189,12 @@
         <translation>画笔栏</translation>
     </message>
     <message>
-        <source>This model has no texture coordinates (UVs), so there is no texture to paint into: it is painted with vertex colours.</source>
-        <translation>此模型没有纹理坐标（UV），因此没有可绘制的纹理：它使用顶点颜色绘制。</translation>
+        <source>This model has no texture coordinates (UVs): a texture gets an automatic UV layout; vertex colours follow its vertices.</source>
+        <translation>此模型没有纹理坐标（UV）：纹理会获得自动 UV 布局；顶点颜色取决于其顶点。</translation>
+    </message>
+    <message>
+        <source>Texture %1 × %1, automatic UVs</source>
+        <translation>纹理 %1 × %1，自动 UV</translation>
     </message>
 </context>
 <context>
@@ -909,6 +913,38 @@ connectivity %3 ms, regions %4 ms
         <source>Warnings while loading are shown above the view</source>
         <translation>加载时的警告显示在视图上方</translation>
     </message>
+    <message>
+        <source>“%1” has no texture coordinates (UVs). Its vertices are far apart for the brush, so it gets an automatic UV layout to paint into a texture.</source>
+        <translation>“%1”没有纹理坐标（UV）。对画笔而言其顶点相距较远，因此为其生成自动 UV 布局，以便绘制到纹理中。</translation>
+    </message>
+    <message>
+        <source>Making an automatic UV layout…</source>
+        <translation>正在生成自动 UV 布局…</translation>
+    </message>
+    <message>
+        <source>The automatic UV layout was cancelled; the paint target stays as it was</source>
+        <translation>自动 UV 布局已取消；绘制目标保持不变</translation>
+    </message>
+    <message>
+        <source>Cannot paint into a texture with an automatic UV layout: %1</source>
+        <translation>无法绘制到带自动 UV 布局的纹理：%1</translation>
+    </message>
+    <message>
+        <source>Painting into a texture with an automatic UV layout (Undo brings the previous target back)</source>
+        <translation>正在绘制到带自动 UV 布局的纹理（撤销可恢复之前的目标）</translation>
+    </message>
+    <message>
+        <source>Painting into a texture with an automatic UV layout</source>
+        <translation>正在绘制到带自动 UV 布局的纹理</translation>
+    </message>
+    <message>
+        <source>Use Vertex Colours Instead</source>
+        <translation>改用顶点颜色</translation>
+    </message>
+    <message>
+        <source>Paint into a Texture (Automatic UV Layout)</source>
+        <translation>绘制到纹理（自动 UV 布局）</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -921,6 +957,21 @@ connectivity %3 ms, regions %4 ms
         <translation>
             <numerusform>……还有 %n 条（见工具提示）</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::PaintTargetJob</name>
+    <message>
+        <source>Making an automatic UV layout for “%1”…</source>
+        <translation>正在为“%1”生成自动 UV 布局…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>取消</translation>
+    </message>
+    <message>
+        <source>Automatic UV Layout</source>
+        <translation>自动 UV 布局</translation>
     </message>
 </context>
 <context>

@@ -343,7 +343,7 @@ bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
 
 Result<PaintTarget*> Document::ensurePaintTarget() {
     if (!m_paintTarget) {
-        auto target = makePaintTarget(m_mesh, m_topology, m_paintOptions);
+        auto target = makePaintTargetWithLayout(m_mesh, m_topology, m_paintOptions);
         if (!target)
             return target.takeError();
         m_paintTarget = std::move(target).value();
@@ -365,28 +365,45 @@ PaintTargetKind Document::paintTargetKind() const {
     return m_mesh->hasUvs() ? PaintTargetKind::Texture : PaintTargetKind::VertexColors;
 }
 
-Status Document::setPaintTarget(const PaintTargetOptions& options) {
-    auto target = makePaintTarget(m_mesh, m_topology, options);
+Status Document::setPaintTarget(const PaintTargetOptions& options, const ProgressFn& progress) {
+    auto target = makePaintTargetWithLayout(m_mesh, m_topology, options, progress);
     if (!target)
         return target.takeError();
+    installPaintTarget(std::move(target).value(), options);
+    return {};
+}
+
+Status Document::adoptPaintTarget(std::unique_ptr<PaintTarget> target,
+                                  const PaintTargetOptions& options, std::uint64_t meshSerial) {
+    if (!target || meshSerial != m_meshSerial ||
+        target->mesh().triangleCount() != m_mesh->triangleCount())
+        return Error{"the paint target was made for another model"};
+    installPaintTarget(std::move(target), options);
+    return {};
+}
+
+PaintTargetKind Document::suggestedPaintTargetKind() const {
+    return defaultTargetKind(*m_mesh, Brush{}.radius);
+}
+
+void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
+                                  const PaintTargetOptions& options) {
     if (m_tracker.inStroke())
         endStroke();
     if (m_paintTarget) {
         m_session.noteState(*this);
-        nlohmann::json op = {{"op", "set-target"},
-                             {"kind", target.value()->kind() == PaintTargetKind::VertexColors
-                                          ? "vertex-colors"
-                                          : "texture"},
-                             {"resolution", options.resolution}};
+        nlohmann::json op = {
+            {"op", "set-target"},
+            {"kind", target->kind() == PaintTargetKind::VertexColors ? "vertex-colors" : "texture"},
+            {"resolution", options.resolution}};
         m_session.add(std::move(op));
         HistoryStep step{StepKind::PaintTarget, {}};
         step.parts.emplace_back(TargetSwap{std::move(m_paintTarget), m_paintOptions});
         m_history.push(std::move(step));
     }
     m_paintOptions = options;
-    m_paintTarget = std::move(target).value();
+    m_paintTarget = std::move(target);
     ++m_targetSerial;
-    return {};
 }
 
 Result<PaintTarget*> Document::readyToPaint() {
@@ -583,9 +600,9 @@ bool Document::walkHistory(bool undo, PaintChanges& changes) {
 }
 
 Mesh Document::paintedMesh() const {
-    Mesh mesh = *m_mesh;
     if (!m_paintTarget)
-        return mesh;
+        return *m_mesh;
+    Mesh mesh = m_paintTarget->mesh();
     mesh.materials = m_paintTarget->drawMaterials();
     if (const auto* texture = dynamic_cast<const TextureTarget*>(m_paintTarget.get())) {
         mesh.textures.clear();

@@ -15,6 +15,7 @@
 #include "core/model/mesh_topology.h"
 #include "core/paint/dab.h"
 #include "core/paint/flood_fill.h"
+#include "core/paint/layout_target.h"
 #include "core/paint/paint_target.h"
 #include "core/paint/stroke_tracker.h"
 #include "core/regions/region_order.h"
@@ -171,16 +172,32 @@ public:
     bool layerAware() const { return m_tracker.layerAware(); }
     /**
      * The paint target, created on first use with options (a texture for meshes with UVs, vertex
-     * colours otherwise), or the Error saying why it cannot be made.
+     * colours otherwise; a texture asked for on a mesh without UVs gets an automatic UV layout,
+     * made on this thread), or the Error saying why it cannot be made.
      */
     Result<PaintTarget*> ensurePaintTarget();
     /** ensurePaintTarget() for callers that only need to know whether there is one: nullptr. */
     PaintTarget* paintTarget();
     /**
      * Replaces the paint target with one made with options: an undo step (the old target is
-     * kept in it) when there was a target. On failure nothing changes.
+     * kept in it) when there was a target. A texture on a mesh without UVs is painted over an
+     * automatic UV layout (makeLayoutTarget(); progress reports it, its false cancels). On
+     * failure nothing changes.
      */
-    Status setPaintTarget(const PaintTargetOptions& options);
+    Status setPaintTarget(const PaintTargetOptions& options, const ProgressFn& progress = {});
+    /**
+     * setPaintTarget() with a target made elsewhere (e.g. off the GUI thread by
+     * makePaintTargetWithLayout()) from this document's mesh at meshSerial with options. An
+     * Error, and nothing changes, when the mesh has been replaced since or the target is not one
+     * of its triangles.
+     */
+    Status adoptPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options,
+                            std::uint64_t meshSerial);
+    /**
+     * The target a mesh without UVs gets unless the user chooses: defaultTargetKind() for the
+     * default brush (a texture with an automatic layout where vertex colours would be coarse).
+     */
+    PaintTargetKind suggestedPaintTargetKind() const;
     /** Changes whenever the paint target object is replaced (made, set, undone, redone). */
     std::uint64_t paintTargetSerial() const { return m_targetSerial; }
     /**
@@ -239,7 +256,10 @@ public:
     History& history() { return m_history; }
     /** What the user did since the model was set, as a script that reproduces it. */
     const SessionLog& session() const { return m_session; }
-    /** The model as painted: target pages as textures or painted vertex colours. */
+    /**
+     * The model as painted: target pages as textures or painted vertex colours, on the target's
+     * mesh (with the automatic layout's UVs when it made one).
+     */
     Mesh paintedMesh() const;
 
 private:
@@ -253,6 +273,8 @@ private:
      * use); a stroke in progress is ended.
      */
     Result<PaintTarget*> readyToPaint();
+    /** Makes target current (with options); an undo step when it replaces one. */
+    void installPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options);
     /** undo() or redo(): ends a stroke or hide in progress, applies the next step, logs it. */
     bool walkHistory(bool undo, PaintChanges& changes);
     /** Records the order change since before as a step of kind (nothing if unchanged). */

@@ -388,7 +388,11 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
     }
     if (doc.meshSerial() == 0 || doc.mesh().triangleCount() == 0)
         return {};
-    const Status target = doc.setPaintTarget(state.target);
+    // A project keeps the UVs of a layout it was painted on; opening one never lays out anew
+    // (that can take seconds, and is the user's choice).
+    const Status target = needsUvLayout(doc.mesh(), state.target)
+                              ? Status(Error{"the model has no texture coordinates (UVs)"})
+                              : doc.setPaintTarget(state.target);
     if (target)
         return {};
     PaintTargetOptions fallback = state.target;

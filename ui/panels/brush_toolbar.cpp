@@ -11,7 +11,6 @@
 #include <QPixmap>
 #include <QScopedValueRollback>
 #include <QSpinBox>
-#include <QStandardItemModel>
 #include <QToolButton>
 
 #include <cmath>
@@ -105,19 +104,18 @@ void BrushToolBar::setBrush(const core::Brush& brush) {
 
 void BrushToolBar::setTarget(const core::PaintTargetOptions& options, bool meshHasUvs) {
     const QScopedValueRollback guard(m_updating, true);
-    const bool texture = meshHasUvs && options.kind != core::PaintTargetKind::VertexColors;
-    const QString why = tr("This model has no texture coordinates (UVs), so there is no texture "
-                           "to paint into: it is painted with vertex colours.");
+    // Without UVs a texture is painted over an automatic UV layout, made when it is chosen.
+    const bool texture =
+        options.kind ? *options.kind == core::PaintTargetKind::Texture : meshHasUvs;
+    const QString why = tr("This model has no texture coordinates (UVs): a texture gets an "
+                           "automatic UV layout; vertex colours follow its vertices.");
     m_target->setToolTip(meshHasUvs ? m_targetTip : m_targetTip + QStringLiteral("\n\n") + why);
     int current = m_target->count() - 1;
     for (int i = 0; i + 1 < m_target->count(); ++i) {
-        // Disabled items of a QComboBox stay visible but cannot be chosen.
-        auto* model = qobject_cast<QStandardItemModel*>(m_target->model());
-        if (model) {
-            model->item(i)->setEnabled(meshHasUvs);
-            model->item(i)->setToolTip(meshHasUvs ? QString() : why);
-        }
-        if (texture && m_target->itemData(i).toInt() == options.resolution)
+        const int resolution = m_target->itemData(i).toInt();
+        m_target->setItemText(i, meshHasUvs ? tr("Texture %1 × %1").arg(resolution)
+                                            : tr("Texture %1 × %1, automatic UVs").arg(resolution));
+        if (texture && resolution == options.resolution)
             current = i;
     }
     m_target->setCurrentIndex(current);

@@ -94,6 +94,8 @@ MainWindow::MainWindow(QWidget* parent)
     m_messageBar = new MessageBar(*m_viewport);
     m_builder = new LayerBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
+    m_targetJob = new PaintTargetJob(*this);
+    connect(m_targetJob, &PaintTargetJob::finished, this, &MainWindow::paintTargetMade);
 
     m_modelInfo = new ElidedLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);

@@ -17,6 +17,7 @@
 #include "core/io/project_file.h"
 #include "core/model/mesh.h"
 #include "render/layer_compositor.h"
+#include "ui/shell/paint_target_job.h"
 #include "ui/shell/preferences.h"
 #include "ui/shell/recent_files.h"
 #include "ui/tools/tool.h"
@@ -43,6 +44,7 @@ class LayerBuilder;
 class LayersPanel;
 class MessageBar;
 class ModelLoader;
+class PaintTargetJob;
 class ProjectController;
 class RegionGraphPanel;
 class RegionTools;
@@ -222,6 +224,13 @@ private:
     /** Undo/redo changed the document: show its paint, target and order. */
     void onHistoryApplied(const core::PaintChanges& changes);
     void setPaintTarget(const core::PaintTargetOptions& options);
+    /** The target made off the GUI thread (an automatic UV layout) is ready, or failed. */
+    void paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>& outcome);
+    /**
+     * For a model without UVs: the note over the view with the choice of target (a texture with
+     * an automatic UV layout, or vertex colours), and the default (Document's rule) started.
+     */
+    void offerUvLayout();
     void updateBrushBar();
     void updateBrushInfo();
     /** [ and ]: the radius a step (about 15 %) smaller or larger. */
@@ -247,7 +256,8 @@ private:
     void startProgress(const QString& source);
     void stopProgress();
     /** The status bar's model line and the notes over the view (warnings, note, no UVs). */
-    void updateModelInfo(const core::Mesh& mesh, const QString& note = {});
+    /** plainModel: a model file, not a project (which keeps its own paint target). */
+    void updateModelInfo(const core::Mesh& mesh, const QString& note = {}, bool plainModel = true);
 
     // ~MainWindow deletes the widgets that refer to it before it goes.
     std::unique_ptr<core::Document> m_document;
@@ -256,6 +266,7 @@ private:
     MessageBar* m_messageBar = nullptr;
     LayerBuilder* m_builder = nullptr;
     ModelLoader* m_loader = nullptr;
+    PaintTargetJob* m_targetJob = nullptr;
     SegmentationControls* m_segmentationControls = nullptr;
     LayersPanel* m_layersPanel = nullptr;
     RegionGraphPanel* m_graphPanel = nullptr;

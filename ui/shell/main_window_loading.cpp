@@ -53,22 +53,23 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
                 .arg(displayName(m_source),
                      QLocale().toString(QFileInfo(source).lastModified(), QLocale::ShortFormat));
     }
-    updateModelInfo(*mesh, recoveredNote);
+    updateModelInfo(*mesh, recoveredNote, !state);
     finishStroke();
     // A new model starts with the preferred size for a new texture.
     m_paintOptions.resolution = m_preferences.textureSize;
     m_document->setPaintOptions(m_paintOptions);
+    m_targetJob->cancel(); // a layout for the previous model
     // This window is the loader's only listener: the mesh moves into the document.
     m_document->setMesh(std::move(*mesh), m_source.toStdString());
     if (state) {
         applyProjectState(*state);
     } else {
         m_projectBase = {};
-        if (m_paintOptions.kind == core::PaintTargetKind::Texture && !m_document->mesh().hasUvs()) {
-            // The document keeps its target options: vertex colours for this model, and the
-            // default (a texture when there are UVs) for the next.
+        if (!m_document->mesh().hasUvs()) {
+            // Vertex colours until a texture is chosen (or its layout, made in the background,
+            // arrives); the next model starts with the default again.
             m_paintOptions.kind.reset();
-            m_document->setPaintTarget(m_paintOptions);
+            m_document->setPaintOptions(m_paintOptions);
         }
     }
     m_viewport->meshChanged();
@@ -76,6 +77,8 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
         m_viewport->paintTargetChanged();
     m_history->sync();
     updateBrushBar();
+    if (!state && !m_document->mesh().hasUvs())
+        offerUvLayout();
     m_project->documentLoaded(source, state != nullptr,
                               state ? QString::fromStdString(state->recoveryFor) : QString(),
                               state ? QString::fromStdString(state->source) : QString());
@@ -172,7 +175,7 @@ void MainWindow::stopProgress() {
     m_progress = nullptr;
 }
 
-void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
+void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note, bool plainModel) {
     const QLocale locale;
     m_modelInfo->setText(tr("%1 — %2 vertices, %3 triangles")
                              .arg(displayName(m_source),
@@ -186,8 +189,14 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note) {
     QStringList notes;
     if (!note.isEmpty())
         notes.append(note);
-    // Without UVs there is no texture to paint into (BrushToolBar::setTarget says so too).
-    if (!mesh.hasUvs())
+    // Without UVs: a texture over an automatic UV layout where vertex colours would be coarse
+    // (offerUvLayout() starts it and offers the other choice), else vertex colours.
+    if (!mesh.hasUvs() && plainModel &&
+        core::defaultTargetKind(mesh, core::Brush{}.radius) == core::PaintTargetKind::Texture)
+        notes.append(tr("“%1” has no texture coordinates (UVs). Its vertices are far apart for "
+                        "the brush, so it gets an automatic UV layout to paint into a texture.")
+                         .arg(displayName(m_source)));
+    else if (!mesh.hasUvs())
         notes.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
                         "colours: the paint's detail follows its vertices.")
                          .arg(displayName(m_source)));

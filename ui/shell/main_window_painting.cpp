@@ -26,6 +26,7 @@
 #include "ui/tools/region_tools.h"
 #include "ui/tools/tool_cursors.h"
 #include "ui/view/layer_builder.h"
+#include "ui/view/message_bar.h"
 #include "ui/view/viewport.h"
 
 namespace ui {
@@ -275,6 +276,14 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
         updateBrushBar();
         return;
     }
+    if (core::needsUvLayout(m_document->mesh(), options)) {
+        // Seconds on a big model: made off the GUI thread, adopted in paintTargetMade().
+        m_targetJob->start(m_document->sharedMesh(), m_document->sharedTopology(), options,
+                           m_document->meshSerial(), displayName(m_source));
+        statusBar()->showMessage(tr("Making an automatic UV layout…"));
+        return;
+    }
+    m_targetJob->cancel(); // a layout still running would replace this choice
     const core::Status status = m_document->setPaintTarget(options);
     if (!status) {
         statusBar()->showMessage(
@@ -290,6 +299,53 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
     }
     m_history->sync();
     updateBrushBar();
+}
+
+void MainWindow::paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>& outcome) {
+    if (outcome->cancelled) {
+        statusBar()->showMessage(tr("The automatic UV layout was cancelled; the paint target "
+                                    "stays as it was"),
+                                 kStatusMessageMs);
+        updateBrushBar();
+        return;
+    }
+    finishStroke();
+    const bool replaces = m_document->hasPaintTarget();
+    core::Status status = outcome->target
+                              ? m_document->adoptPaintTarget(std::move(outcome->target),
+                                                             outcome->options, outcome->meshSerial)
+                              : core::Status(core::Error{outcome->error});
+    if (!status) {
+        statusBar()->showMessage(tr("Cannot paint into a texture with an automatic UV layout: %1")
+                                     .arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+    } else {
+        m_paintOptions = outcome->options;
+        m_targetSerial = m_document->paintTargetSerial();
+        m_viewport->paintTargetChanged();
+        statusBar()->showMessage(replaces ? tr("Painting into a texture with an automatic UV "
+                                               "layout (Undo brings the previous target back)")
+                                          : tr("Painting into a texture with an automatic UV "
+                                               "layout"),
+                                 kStatusMessageMs);
+    }
+    m_history->sync();
+    updateBrushBar();
+}
+
+void MainWindow::offerUvLayout() {
+    // updateModelInfo() has said which target the model gets; the button offers the other.
+    const bool texture = m_document->suggestedPaintTargetKind() == core::PaintTargetKind::Texture;
+    core::PaintTargetOptions other = m_paintOptions;
+    other.kind = texture ? core::PaintTargetKind::VertexColors : core::PaintTargetKind::Texture;
+    m_messageBar->addButton(texture ? tr("Use Vertex Colours Instead")
+                                    : tr("Paint into a Texture (Automatic UV Layout)"),
+                            [this, other] { setPaintTarget(other); });
+    if (texture) {
+        core::PaintTargetOptions layout = m_paintOptions;
+        layout.kind = core::PaintTargetKind::Texture;
+        setPaintTarget(layout);
+    }
 }
 
 void MainWindow::updateBrushBar() {

@@ -66,11 +66,37 @@ void MessageBar::showMessage(Level level, const QString& title, const QStringLis
         }
         shown.append(QStringLiteral("• ") + lines.at(i));
     }
+    // Later: this may run inside one of the buttons' own click.
+    for (QToolButton* button : m_buttons) {
+        button->hide();
+        button->deleteLater();
+    }
+    m_buttons.clear();
     m_text->setText(shown.join(QLatin1Char('\n')));
     setToolTip(lines.size() > kMaxLines + 1 ? lines.join(QLatin1Char('\n')) : QString());
     show();
     raise();
     place();
+}
+
+QToolButton* MessageBar::addButton(const QString& text, std::function<void()> onClick) {
+    auto* button = new QToolButton(this);
+    button->setObjectName(QStringLiteral("messageBarButton"));
+    button->setText(text);
+    button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    button->setFocusPolicy(Qt::NoFocus); // the keys stay with the view
+    auto* row = static_cast<QHBoxLayout*>(layout());
+    row->insertWidget(row->indexOf(m_close), button, 0, Qt::AlignTop);
+    m_buttons.append(button);
+    button->show(); // the bar may be shown already
+    connect(button, &QToolButton::clicked, this, [this, onClick = std::move(onClick)] {
+        const std::function<void()> call = onClick; // the button may go while it runs
+        dismiss();
+        call();
+    });
+    if (isVisible())
+        place();
+    return button;
 }
 
 void MessageBar::dismiss() {

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
+
 #include <QFrame>
+#include <QList>
 #include <QStringList>
 
 class QLabel;
@@ -24,8 +27,16 @@ public:
     /** Over parent's top edge; follows its size. Hidden until showMessage(). */
     explicit MessageBar(QWidget& parent);
 
-    /** Shows title and the lines under it (plain text), replacing what was shown. */
+    /**
+     * Shows title and the lines under it (plain text), replacing what was shown (and its
+     * buttons).
+     */
     void showMessage(Level level, const QString& title, const QStringList& lines = {});
+    /**
+     * A button after the text of the message shown (named messageBarButton); clicking it calls
+     * onClick and dismisses the bar. Gone with the message.
+     */
+    QToolButton* addButton(const QString& text, std::function<void()> onClick);
     /** Hides the bar (as its close button does). */
     void dismiss();
     QString text() const;
@@ -41,6 +52,7 @@ private:
     QLabel* m_icon = nullptr;
     QLabel* m_text = nullptr;
     QToolButton* m_close = nullptr;
+    QList<QToolButton*> m_buttons;
     Level m_level = Level::Information;
 };
 

@@ -1,0 +1,164 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Charts for the automatic UV layout: grown over the welded surface by normal deviation, never
+// across sharp or non-manifold edges, and kept discs while they grow.
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "core/model/uv_layout_internal.h"
+
+namespace core::uvl {
+
+namespace {
+
+struct Candidate {
+    double cost;
+    std::uint32_t triangle;
+    // A strict order, so the growth does not depend on the heap's implementation.
+    bool operator>(const Candidate& o) const {
+        return cost > o.cost || (cost == o.cost && triangle > o.triangle);
+    }
+};
+
+} // namespace
+
+std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
+                                                   const UvLayoutOptions& options) {
+    const MeshTopology& topo = *surface.topology;
+    const std::uint32_t n = std::uint32_t(topo.triangleCount());
+    const double cosCone = std::cos(double(options.maxNormalDeviationDegrees) * M_PI / 180.0);
+    const double cosSharp = std::cos(double(options.sharpEdgeDegrees) * M_PI / 180.0);
+
+    std::vector<std::uint32_t> chartOf(n, kNone);
+    // vertexStamp[v] == chart + 1 while chart grows: v is one of its vertices.
+    std::vector<std::uint32_t> vertexStamp(topo.weldedVertexCount, 0u);
+    std::vector<std::vector<std::uint32_t>> charts;
+    std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> heap;
+
+    const auto joinsSmoothly = [&](std::uint32_t t, int edge) {
+        const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(edge)];
+        return u != kNone && !surface.degenerate(u) &&
+               glm::dot(surface.normal[t], surface.normal[u]) >= cosSharp;
+    };
+
+    for (std::uint32_t seed = 0; seed < n; ++seed) {
+        if (chartOf[seed] != kNone)
+            continue;
+        const std::uint32_t chart = std::uint32_t(charts.size());
+        charts.emplace_back();
+        std::vector<std::uint32_t>& members = charts.back();
+        const auto add = [&](std::uint32_t t) {
+            chartOf[t] = chart;
+            members.push_back(t);
+            for (std::uint32_t v : topo.corners[t])
+                vertexStamp[v] = chart + 1;
+        };
+        heap = {}; // what the last chart left behind is not next to this one
+        add(seed);
+        if (surface.degenerate(seed))
+            continue; // alone: it has no normal to grow by
+        glm::dvec3 normalSum = surface.normal[seed] * surface.area[seed];
+        const auto pushNeighbours = [&](std::uint32_t t) {
+            const glm::dvec3 mean = glm::normalize(normalSum);
+            for (int e = 0; e < 3; ++e) {
+                if (!joinsSmoothly(t, e))
+                    continue;
+                const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)];
+                if (chartOf[u] == kNone)
+                    heap.push({1.0 - glm::dot(surface.normal[u], mean), u});
+            }
+        };
+        pushNeighbours(seed);
+        while (!heap.empty()) {
+            const std::uint32_t t = heap.top().triangle;
+            heap.pop();
+            if (chartOf[t] != kNone)
+                continue;
+            if (glm::dot(surface.normal[t], glm::normalize(normalSum)) < cosCone)
+                continue; // may come back when another neighbour joins
+            // Disc test: a triangle joining along one edge must bring a new vertex, else the
+            // chart would close around a hole or touch itself at a vertex.
+            int shared = 0;
+            int sharedEdge = -1;
+            for (int e = 0; e < 3; ++e) {
+                const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)];
+                if (u != kNone && chartOf[u] == chart && joinsSmoothly(t, e)) {
+                    ++shared;
+                    sharedEdge = e;
+                }
+            }
+            if (shared == 1) {
+                const std::uint32_t opposite = topo.corners[t][std::size_t((sharedEdge + 2) % 3)];
+                if (vertexStamp[opposite] == chart + 1)
+                    continue;
+            }
+            add(t);
+            normalSum += surface.normal[t] * surface.area[t];
+            pushNeighbours(t);
+        }
+        std::sort(members.begin(), members.end());
+    }
+    return charts;
+}
+
+std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
+                                                     const std::vector<std::uint32_t>& triangles) {
+    const MeshTopology& topo = *surface.topology;
+    const std::size_t m = triangles.size();
+    // Local adjacency inside the chart.
+    const auto localIndex = [&](std::uint32_t t) -> std::uint32_t {
+        const auto it = std::lower_bound(triangles.begin(), triangles.end(), t);
+        return it != triangles.end() && *it == t ? std::uint32_t(it - triangles.begin()) : kNone;
+    };
+    std::vector<std::array<std::uint32_t, 3>> adjacent(m);
+    for (std::size_t i = 0; i < m; ++i)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t u = topo.edgeNeighbors[triangles[i]][std::size_t(e)];
+            adjacent[i][std::size_t(e)] = u == kNone ? kNone : localIndex(u);
+        }
+    std::vector<std::uint32_t> label(m, kNone);
+    std::vector<std::uint32_t> queue;
+    queue.reserve(m);
+    // Breadth-first from the given sources; returns the last triangle reached.
+    const auto sweep = [&](std::initializer_list<std::uint32_t> sources) {
+        std::fill(label.begin(), label.end(), kNone);
+        queue.clear();
+        std::uint32_t k = 0;
+        for (std::uint32_t s : sources) {
+            if (label[s] == kNone) {
+                label[s] = k;
+                queue.push_back(s);
+            }
+            ++k;
+        }
+        for (std::size_t head = 0; head < queue.size(); ++head) {
+            const std::uint32_t i = queue[head];
+            for (std::uint32_t j : adjacent[i])
+                if (j != kNone && label[j] == kNone) {
+                    label[j] = label[i];
+                    queue.push_back(j);
+                }
+        }
+        return queue.back();
+    };
+    const std::uint32_t a = sweep({0u});
+    const std::uint32_t b = sweep({a});
+    sweep({a, b});
+    std::array<std::vector<std::uint32_t>, 2> parts;
+    for (std::size_t i = 0; i < m; ++i) {
+        // Triangles the sweep did not reach (not edge-connected) go with the first part's seed
+        // only if they touch it; otherwise they are a part of their own in a later split.
+        const std::uint32_t l = label[i] == kNone ? 1u : label[i];
+        parts[l].push_back(triangles[i]);
+    }
+    if (parts[1].empty()) { // a == b: nothing to split by distance, halve the list
+        parts[1].assign(parts[0].begin() + std::ptrdiff_t(m / 2), parts[0].end());
+        parts[0].resize(m / 2);
+    }
+    return parts;
+}
+
+} // namespace core::uvl

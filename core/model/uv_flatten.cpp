@@ -1,0 +1,245 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Flattening one chart of the automatic UV layout: least-squares conformal maps (Lévy et al.
+// 2002) with two pinned vertices, solved as sparse normal equations; planar charts are projected.
+#include <algorithm>
+#include <cmath>
+#include <complex>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <glm/geometric.hpp>
+
+#include "core/model/uv_layout_internal.h"
+#include "core/paint/uv_raster.h"
+
+namespace core::uvl {
+
+namespace {
+
+double signedArea(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
+    return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+/** A unit vector perpendicular to n. */
+glm::dvec3 perpendicular(const glm::dvec3& n) {
+    const glm::dvec3 a = std::fabs(n.x) < 0.6   ? glm::dvec3(1, 0, 0)
+                         : std::fabs(n.y) < 0.6 ? glm::dvec3(0, 1, 0)
+                                                : glm::dvec3(0, 0, 1);
+    return glm::normalize(glm::cross(n, a));
+}
+
+/** Least-squares conformal map with vertices pinA and pinB held at their given uv. */
+bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::uint32_t pinB) {
+    const std::size_t n = chart.vertices.size();
+    std::vector<int> freeIndex(n, -1);
+    int freeCount = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        if (i != pinA && i != pinB)
+            freeIndex[i] = freeCount++;
+    using Triplet = Eigen::Triplet<double>;
+    std::vector<Triplet> triplets;
+    triplets.reserve(chart.triangles.size() * 12);
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(2 * chart.triangles.size()));
+    int row = 0;
+    for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
+        const std::uint32_t t = chart.triangles[k];
+        if (surface.degenerate(t))
+            continue;
+        const std::array<std::uint32_t, 3>& c = chart.local[k];
+        const glm::dvec3 p0 = surface.position[chart.vertices[c[0]]];
+        const glm::dvec3 p1 = surface.position[chart.vertices[c[1]]];
+        const glm::dvec3 p2 = surface.position[chart.vertices[c[2]]];
+        // The triangle in its own plane, counter-clockwise seen from its normal.
+        const glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
+        const double l1 = glm::length(e1);
+        if (!(l1 > 0.0))
+            continue;
+        const glm::dvec3 x = e1 / l1;
+        const glm::dvec3 y = glm::normalize(glm::cross(surface.normal[t], x));
+        const std::complex<double> z[3] = {
+            {0.0, 0.0}, {l1, 0.0}, {glm::dot(e2, x), glm::dot(e2, y)}};
+        const double twiceArea = l1 * z[2].imag();
+        if (!(twiceArea > 0.0))
+            continue;
+        const double weight = 1.0 / std::sqrt(twiceArea);
+        // Conformal (holomorphic) maps zero Σ_j (z_{j+2} − z_{j+1}) · U_j.
+        for (int j = 0; j < 3; ++j) {
+            const std::complex<double> w = (z[(j + 2) % 3] - z[(j + 1) % 3]) * weight;
+            const std::uint32_t v = c[std::size_t(j)];
+            if (freeIndex[v] >= 0) {
+                const int col = 2 * freeIndex[v];
+                triplets.emplace_back(row, col, w.real());
+                triplets.emplace_back(row, col + 1, -w.imag());
+                triplets.emplace_back(row + 1, col, w.imag());
+                triplets.emplace_back(row + 1, col + 1, w.real());
+            } else {
+                const glm::dvec2 u = chart.uv[v];
+                rhs[row] -= w.real() * u.x - w.imag() * u.y;
+                rhs[row + 1] -= w.imag() * u.x + w.real() * u.y;
+            }
+        }
+        row += 2;
+    }
+    if (freeCount == 0)
+        return true;
+    Eigen::SparseMatrix<double> a(row, 2 * freeCount);
+    a.setFromTriplets(triplets.begin(), triplets.end());
+    triplets = {};
+    const Eigen::SparseMatrix<double> at = a.transpose();
+    const Eigen::SparseMatrix<double> normal = at * a;
+    const Eigen::VectorXd atb = at * rhs.head(row);
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+    solver.compute(normal);
+    if (solver.info() != Eigen::Success)
+        return false;
+    const Eigen::VectorXd solution = solver.solve(atb);
+    if (solver.info() != Eigen::Success || !solution.allFinite())
+        return false;
+    for (std::size_t i = 0; i < n; ++i)
+        if (freeIndex[i] >= 0)
+            chart.uv[i] = {solution[2 * freeIndex[i]], solution[2 * freeIndex[i] + 1]};
+    return true;
+}
+
+/**
+ * True when two triangles of the chart cover one cell of a grid over its UV box with cells half
+ * a texel wide at the given density (texels per model unit).
+ */
+bool overlapsItself(const Chart& chart, double density) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    for (const glm::dvec2& p : chart.uv) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    if (!(extent > 0.0))
+        return false;
+    const int cells = int(std::clamp(std::ceil(2.0 * extent * density), 16.0, 4096.0));
+    std::vector<std::uint8_t> count(std::size_t(cells) * std::size_t(cells), 0u);
+    bool overlap = false;
+    for (std::size_t k = 0; k < chart.local.size() && !overlap; ++k) {
+        glm::vec2 uv[3];
+        for (int c = 0; c < 3; ++c)
+            uv[c] = glm::vec2((chart.uv[chart.local[k][std::size_t(c)]] - lo) / extent);
+        uv::UvTriangle r;
+        if (!uv::setUpUv(uv, cells, cells, r))
+            continue;
+        uv::scanUv(r, std::max(r.minX, 0), std::min(r.maxX, cells - 1), std::max(r.minY, 0),
+                   std::min(r.maxY, cells - 1), [&](int x, int y, auto, auto, auto) {
+                       std::uint8_t& cell =
+                           count[std::size_t(y) * std::size_t(cells) + std::size_t(x)];
+                       if (++cell > 1)
+                           overlap = true;
+                   });
+    }
+    return overlap;
+}
+
+} // namespace
+
+FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
+                            double density) {
+    const MeshTopology& topo = *surface.topology;
+    chart.vertices.clear();
+    for (std::uint32_t t : chart.triangles)
+        for (std::uint32_t v : topo.corners[t])
+            chart.vertices.push_back(v);
+    std::sort(chart.vertices.begin(), chart.vertices.end());
+    chart.vertices.erase(std::unique(chart.vertices.begin(), chart.vertices.end()),
+                         chart.vertices.end());
+    const auto localOf = [&](std::uint32_t v) {
+        return std::uint32_t(std::lower_bound(chart.vertices.begin(), chart.vertices.end(), v) -
+                             chart.vertices.begin());
+    };
+    chart.local.resize(chart.triangles.size());
+    chart.area = 0.0;
+    glm::dvec3 normalSum(0.0);
+    for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
+        const std::uint32_t t = chart.triangles[k];
+        for (int c = 0; c < 3; ++c)
+            chart.local[k][std::size_t(c)] = localOf(topo.corners[t][std::size_t(c)]);
+        if (!surface.degenerate(t)) {
+            chart.area += surface.area[t];
+            normalSum += surface.normal[t] * surface.area[t];
+        }
+    }
+    chart.uv.assign(chart.vertices.size(), glm::dvec2(0.0));
+    if (!(glm::length(normalSum) > 0.0))
+        return FlattenOutcome::Good; // no area: a point
+
+    // Projection onto the plane of the mean normal: the result for planar charts, the pins'
+    // places otherwise.
+    const glm::dvec3 mean = glm::normalize(normalSum);
+    const glm::dvec3 axisU = perpendicular(mean);
+    const glm::dvec3 axisV = glm::cross(mean, axisU);
+    const glm::dvec3 origin = surface.position[chart.vertices[0]];
+    for (std::size_t i = 0; i < chart.vertices.size(); ++i) {
+        const glm::dvec3 d = surface.position[chart.vertices[i]] - origin;
+        chart.uv[i] = {glm::dot(d, axisU), glm::dot(d, axisV)};
+    }
+    bool planar = true;
+    for (std::uint32_t t : chart.triangles)
+        if (!surface.degenerate(t) && glm::dot(surface.normal[t], mean) < 1.0 - 1e-9)
+            planar = false;
+    if (!planar) {
+        glm::dvec2 lo(1e300), hi(-1e300);
+        std::uint32_t lowest[2] = {0, 0}, highest[2] = {0, 0};
+        for (std::uint32_t i = 0; i < std::uint32_t(chart.uv.size()); ++i)
+            for (int a = 0; a < 2; ++a) {
+                if (chart.uv[i][a] < lo[a]) {
+                    lo[a] = chart.uv[i][a];
+                    lowest[a] = i;
+                }
+                if (chart.uv[i][a] > hi[a]) {
+                    hi[a] = chart.uv[i][a];
+                    highest[a] = i;
+                }
+            }
+        const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
+        if (lowest[axis] != highest[axis]) {
+            const std::vector<glm::dvec2> projected = chart.uv;
+            if (!solveLscm(surface, chart, lowest[axis], highest[axis]))
+                chart.uv = projected;
+        }
+    }
+
+    double uvArea = 0.0;
+    for (const auto& c : chart.local)
+        uvArea += signedArea(chart.uv[c[0]], chart.uv[c[1]], chart.uv[c[2]]);
+    if (uvArea < 0.0) { // mirrored: turn it over
+        for (glm::dvec2& p : chart.uv)
+            p.x = -p.x;
+        uvArea = -uvArea;
+    }
+    if (!(uvArea > 0.0) || !std::isfinite(uvArea))
+        return FlattenOutcome::Flipped;
+    const double scale = std::sqrt(chart.area / uvArea);
+    glm::dvec2 lo(1e300);
+    for (glm::dvec2& p : chart.uv) {
+        p *= scale;
+        lo = glm::min(lo, p);
+    }
+    for (glm::dvec2& p : chart.uv)
+        p -= lo;
+
+    double stretchedArea = 0.0;
+    for (std::size_t k = 0; k < chart.local.size(); ++k) {
+        const std::uint32_t t = chart.triangles[k];
+        if (surface.degenerate(t))
+            continue;
+        const auto& c = chart.local[k];
+        const double r =
+            signedArea(chart.uv[c[0]], chart.uv[c[1]], chart.uv[c[2]]) / surface.area[t];
+        if (!(r > 1e-4))
+            return FlattenOutcome::Flipped;
+        if (std::max(r, 1.0 / r) > maxStretch)
+            stretchedArea += surface.area[t];
+    }
+    if (chart.triangles.size() > 1 && stretchedArea > 0.05 * chart.area)
+        return FlattenOutcome::Stretched;
+    if (chart.triangles.size() > 1 && overlapsItself(chart, density))
+        return FlattenOutcome::Overlapping;
+    return FlattenOutcome::Good;
+}
+
+} // namespace core::uvl

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Internal to core: the steps of makeUvLayout (uv_layout.cpp) in their own files: growing and
+// splitting charts (uv_charts.cpp), flattening one chart (uv_flatten.cpp) and packing the charts
+// into pages (uv_pack.cpp).
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/base/result.h"
+#include "core/model/mesh_topology.h"
+#include "core/model/uv_layout.h"
+
+namespace core::uvl {
+
+inline constexpr std::uint32_t kNone = 0xffffffffu;
+
+/** The welded surface the layout works on, in double precision. */
+struct Surface {
+    const MeshTopology* topology = nullptr;
+    std::vector<glm::dvec3> position; // per welded vertex (its first copy's position)
+    std::vector<glm::dvec3> normal;   // per triangle, unit length (zero when degenerate)
+    std::vector<double> area;         // per triangle
+    /** Triangles with less area than this have no reliable normal and are laid out alone. */
+    double degenerateArea = 0.0;
+
+    bool degenerate(std::uint32_t t) const { return !(area[t] > degenerateArea); }
+};
+
+/** Charts as lists of triangles (ascending), grown from seeds in triangle order. */
+std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
+                                                   const UvLayoutOptions& options);
+
+/**
+ * Splits a chart of at least two triangles into two edge-connected parts grown at once from two
+ * far-apart triangles (ascending lists).
+ */
+std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
+                                                     const std::vector<std::uint32_t>& triangles);
+
+/** A chart and its flattening. */
+struct Chart {
+    std::vector<std::uint32_t> triangles;            // ascending
+    std::vector<std::uint32_t> vertices;             // welded ids of its local vertices
+    std::vector<std::array<std::uint32_t, 3>> local; // per triangle: local vertex indices
+    std::vector<glm::dvec2> uv; // per local vertex, in model units (UV area = 3D area)
+    double area = 0.0;          // 3D area
+};
+
+enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched };
+
+/**
+ * Flattens chart (triangles set) with least-squares conformal maps, or by projection when it is
+ * planar, and scales it so its UV area is its 3D area. Good, or why it has to be split; overlaps
+ * are looked for at half a texel of the expected density (texels per model unit).
+ */
+FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
+                            double density);
+
+/** Where packCharts() put a chart. */
+struct Placement {
+    std::uint32_t page = 0;
+    int rotation = 0;          // quarter turns
+    int x = 0, y = 0;          // texel offset of the chart's (rotated) mask on its page
+    glm::dvec2 origin{0.0};    // subtracted from uv × density before the rotation
+    int width = 0, height = 0; // the unrotated mask's size
+};
+
+struct Packing {
+    std::vector<Placement> placements; // per chart
+    std::uint32_t pageCount = 0;
+};
+
+/**
+ * Packs charts at density texels per model unit into pages of options.resolution, at most
+ * maxPages of them; nothing (an empty optional placement list) when they do not fit. Cancels
+ * when cancel becomes true.
+ */
+Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
+                           const UvLayoutOptions& options, std::uint32_t maxPages,
+                           const std::atomic<bool>& cancel);
+
+/** The texel position of a chart's uv after placement (rotation and offset applied). */
+glm::dvec2 placeUv(const Placement& placement, const glm::dvec2& uv, double density);
+
+} // namespace core::uvl

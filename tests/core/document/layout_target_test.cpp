@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A texture target on a mesh without UVs: the document makes the automatic UV layout (progress,
+// cancel, deterministic), paints over it, undoes and redoes the choice, replays it as a script
+// operation; and the rule that picks the default target for such a mesh.
+#include <cstdint>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "core/document/document.h"
+#include "core/document/script.h"
+#include "core/layers/cpu_capture.h"
+#include "core/model/builtin_models.h"
+#include "core/paint/layout_target.h"
+
+namespace {
+
+/** An orthographic view whose world x, y are window pixels (y down), looking down -Z. */
+core::View pixelView(int width, int height) {
+    core::View view;
+    view.width = width;
+    view.height = height;
+    view.view = glm::mat4(1.0f);
+    view.proj = glm::ortho(0.0f, float(width), float(height), 0.0f, 0.1f, 100.0f);
+    return view;
+}
+
+/**
+ * A box in window pixels (front face toward the camera at depth 4, 40 px deep), eight shared
+ * vertices, no UVs: a coarse mesh whose vertex colours cannot hold a stroke.
+ */
+core::Mesh coarseBox() {
+    core::Mesh mesh;
+    mesh.materials = {{"grey", glm::vec4(0.5f, 0.5f, 0.5f, 1.0f), -1}};
+    const float x0 = 10, x1 = 70, y0 = 10, y1 = 50, z0 = -4, z1 = -44;
+    for (int i = 0; i < 8; ++i)
+        mesh.positions.push_back({(i & 1) ? x1 : x0, (i & 2) ? y1 : y0, (i & 4) ? z1 : z0});
+    // Faces wound clockwise in window coordinates as seen from outside (front-facing here).
+    const std::uint32_t faces[6][4] = {{0, 1, 3, 2}, {5, 4, 6, 7}, {4, 0, 2, 6},
+                                       {1, 5, 7, 3}, {4, 5, 1, 0}, {2, 3, 7, 6}};
+    for (const auto& f : faces) {
+        mesh.indices.insert(mesh.indices.end(), {f[0], f[2], f[1], f[0], f[3], f[2]});
+        mesh.triangleMaterial.insert(mesh.triangleMaterial.end(), {0u, 0u});
+    }
+    mesh.computeNormals();
+    return mesh;
+}
+
+core::PaintTargetOptions textureOptions() {
+    core::PaintTargetOptions options;
+    options.kind = core::PaintTargetKind::Texture;
+    options.resolution = 512;
+    return options;
+}
+
+TEST(LayoutTarget, TextureOnAMeshWithoutUvsMakesTheLayoutAsAnUndoableStep) {
+    core::Document doc;
+    doc.setMesh(coarseBox(), "box");
+    ASSERT_FALSE(doc.mesh().hasUvs());
+    core::PaintTargetOptions colours;
+    colours.kind = core::PaintTargetKind::VertexColors;
+    ASSERT_TRUE(doc.setPaintTarget(colours).ok());
+    ASSERT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::VertexColors);
+
+    std::vector<double> progress;
+    const core::Status status = doc.setPaintTarget(textureOptions(), [&](double f) {
+        progress.push_back(f);
+        return true;
+    });
+    ASSERT_TRUE(status.ok()) << status.error();
+    ASSERT_GE(progress.size(), 2u);
+    for (std::size_t i = 1; i < progress.size(); ++i)
+        EXPECT_GE(progress[i], progress[i - 1]);
+    EXPECT_DOUBLE_EQ(progress.back(), 1.0);
+
+    // The target's mesh is the box with UVs: seams split vertices, triangles keep their corners.
+    const core::PaintTarget* target = doc.paintTarget();
+    ASSERT_EQ(target->kind(), core::PaintTargetKind::Texture);
+    const core::Mesh& laid = target->mesh();
+    const core::Mesh& box = doc.mesh();
+    EXPECT_FALSE(box.hasUvs()) << "the document's own mesh is what was loaded";
+    ASSERT_TRUE(laid.hasUvs());
+    EXPECT_GT(laid.positions.size(), box.positions.size());
+    ASSERT_EQ(laid.triangleCount(), box.triangleCount());
+    for (std::size_t i = 0; i < box.indices.size(); ++i)
+        ASSERT_EQ(laid.positions[laid.indices[i]], box.positions[box.indices[i]]) << i;
+    const core::Mesh painted = doc.paintedMesh();
+    EXPECT_TRUE(painted.hasUvs());
+    ASSERT_EQ(painted.textures.size(), 1u);
+    EXPECT_EQ(painted.textures[0].width, 512);
+
+    // A stroke paints the page.
+    core::CpuLayerCapturer capturer;
+    capturer.setMesh(doc.mesh());
+    ASSERT_TRUE(doc.buildLayers(capturer, pixelView(80, 60)).ok());
+    doc.brush().color = {1.0f, 0.0f, 0.0f, 1.0f};
+    doc.brush().radius = 6.0f;
+    core::PaintChanges changes;
+    ASSERT_TRUE(doc.beginStroke({{30.0f, 30.0f}, 1.0f}, changes).ok());
+    doc.moveStroke({{50.0f, 30.0f}, 1.0f}, changes);
+    doc.endStroke();
+    const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.paintTarget());
+    ASSERT_NE(texture, nullptr);
+    std::size_t red = 0;
+    const core::Image& page = texture->page(0);
+    for (std::size_t i = 0; i < page.rgba.size(); i += 4)
+        red += page.rgba[i] == 255 && page.rgba[i + 1] == 0 ? 1 : 0;
+    EXPECT_GT(red, 100u);
+    EXPECT_EQ(doc.pickColor(30 * 80 + 40).value_or(glm::vec4(0.0f)).r, 1.0f);
+
+    // Undo the stroke, then the choice: vertex colours again, on the mesh as loaded.
+    ASSERT_TRUE(doc.undo(changes));
+    ASSERT_TRUE(doc.undo(changes));
+    EXPECT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::VertexColors);
+    EXPECT_FALSE(doc.paintedMesh().hasUvs());
+    ASSERT_TRUE(doc.redo(changes));
+    EXPECT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::Texture);
+    EXPECT_EQ(doc.paintedMesh().uvs, laid.uvs);
+}
+
+TEST(LayoutTarget, CancelLeavesTheTargetAsItWas) {
+    core::Document doc;
+    doc.setMesh(coarseBox(), "box");
+    ASSERT_NE(doc.paintTarget(), nullptr);
+    const std::uint64_t serial = doc.paintTargetSerial();
+    int calls = 0;
+    const core::Status status =
+        doc.setPaintTarget(textureOptions(), [&](double) { return ++calls < 2; });
+    EXPECT_TRUE(status.cancelled()) << status.error();
+    EXPECT_EQ(doc.paintTargetSerial(), serial);
+    EXPECT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::VertexColors);
+    EXPECT_FALSE(doc.history().canUndo());
+}
+
+TEST(LayoutTarget, SameLayoutEveryTimeAndAdoptedOnlyForItsMesh) {
+    const auto mesh = std::make_shared<const core::Mesh>(coarseBox());
+    auto a = core::makePaintTargetWithLayout(mesh, nullptr, textureOptions());
+    auto b = core::makePaintTargetWithLayout(mesh, nullptr, textureOptions());
+    ASSERT_TRUE(a.ok()) << a.error();
+    ASSERT_TRUE(b.ok()) << b.error();
+    EXPECT_EQ(a.value()->mesh().uvs, b.value()->mesh().uvs);
+    EXPECT_EQ(a.value()->mesh().indices, b.value()->mesh().indices);
+
+    core::Document doc;
+    doc.setMesh(coarseBox(), "box");
+    const std::uint64_t made = doc.meshSerial();
+    doc.setMesh(coarseBox(), "box again");
+    EXPECT_FALSE(doc.adoptPaintTarget(std::move(a).value(), textureOptions(), made).ok());
+    EXPECT_TRUE(
+        doc.adoptPaintTarget(std::move(b).value(), textureOptions(), doc.meshSerial()).ok());
+    EXPECT_TRUE(doc.paintedMesh().hasUvs());
+}
+
+class Host final : public core::ScriptHost {
+public:
+    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+        capturer.setMesh(doc.mesh());
+        return doc.buildLayers(capturer, view);
+    }
+    core::CpuLayerCapturer capturer;
+};
+
+TEST(LayoutTarget, ScriptOperationSetTargetTextureMakesTheLayout) {
+    core::Document doc;
+    doc.setMesh(coarseBox(), "box");
+    ASSERT_NE(doc.paintTarget(), nullptr); // vertex colours, the target the script replaces
+    Host host;
+    core::ScriptRunner runner(doc, host, pixelView(80, 60));
+    const core::Status status =
+        runner.run(nlohmann::json{{"op", "set-target"}, {"kind", "texture"}, {"resolution", 512}});
+    ASSERT_TRUE(status.ok()) << status.error();
+    EXPECT_EQ(doc.paintTarget()->kind(), core::PaintTargetKind::Texture);
+    EXPECT_TRUE(doc.paintedMesh().hasUvs());
+    ASSERT_TRUE(runner.run(nlohmann::json{{"op", "undo"}}).ok());
+    EXPECT_FALSE(doc.paintedMesh().hasUvs());
+}
+
+TEST(LayoutTarget, DefaultIsATextureWhereVertexColoursWouldBeCoarse) {
+    // Eight vertices: a dab covers a sliver of one face.
+    const core::Mesh box = coarseBox();
+    EXPECT_GT(core::vertexSpacingPixels(box), 100.0);
+    EXPECT_EQ(core::defaultTargetKind(box, 32.0f), core::PaintTargetKind::Texture);
+    // The trefoil's 144K vertices are a few pixels apart in the default view.
+    core::Mesh dense = core::makeTrefoil();
+    dense.uvs.clear();
+    const double spacing = core::vertexSpacingPixels(dense);
+    EXPECT_GT(spacing, 0.5);
+    EXPECT_LT(spacing, 8.0);
+    EXPECT_EQ(core::defaultTargetKind(dense, 32.0f), core::PaintTargetKind::VertexColors);
+    // A tiny brush resolves finer than those vertices.
+    EXPECT_EQ(core::defaultTargetKind(dense, 4.0f * float(spacing) - 1.0f),
+              core::PaintTargetKind::Texture);
+    // With UVs there is nothing to decide.
+    EXPECT_EQ(core::defaultTargetKind(core::makeTrefoil(40, 12), 32.0f),
+              core::PaintTargetKind::Texture);
+    core::Document doc;
+    doc.setMesh(std::move(dense), "trefoil");
+    EXPECT_EQ(doc.suggestedPaintTargetKind(), core::PaintTargetKind::VertexColors);
+}
+
+} // namespace

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The automatic UV layout on a real file without texture coordinates, loaded as the app does.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "core/io/mesh_io.h"
+#include "core/model/uv_layout.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
+    const fs::path path = fs::path(LAYERPAINT_ASSIMP_MODELS) /
+                          "glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb";
+    if (!fs::exists(path))
+        GTEST_SKIP() << path << " is not installed";
+    const core::Result<core::Mesh> mesh = core::loadMesh(path.string());
+    ASSERT_TRUE(mesh.ok()) << mesh.error();
+    ASSERT_FALSE(mesh->hasUvs());
+
+    core::UvLayoutOptions options;
+    options.resolution = 2048;
+    auto layout = core::makeUvLayout(*mesh, options);
+    ASSERT_TRUE(layout.ok()) << layout.error();
+    const core::Mesh& out = layout->mesh;
+
+    // Triangle order, corners and materials are the file's.
+    ASSERT_EQ(out.triangleCount(), mesh->triangleCount());
+    EXPECT_EQ(out.triangleMaterial, mesh->triangleMaterial);
+    for (std::size_t i = 0; i < mesh->indices.size(); ++i)
+        ASSERT_EQ(out.positions[out.indices[i]], mesh->positions[mesh->indices[i]]) << i;
+    EXPECT_TRUE(out.validate().ok()) << out.validate().error();
+
+    const core::UvLayoutMetrics m = core::measureUvLayout(*layout);
+    EXPECT_EQ(layout->pageCount, 1u);
+    EXPECT_EQ(m.flippedTriangles, 0u);
+    // A few slivers of a thousandth of a texel round to no area in float UVs; nothing else.
+    EXPECT_LT(m.collapsedTriangles, m.triangles / 1000);
+    EXPECT_EQ(m.overlappingTexels, 0u);
+    EXPECT_LE(m.stretchP95, 1.5);
+    EXPECT_GT(m.charts, 100u);
+    EXPECT_GT(m.packingEfficiency, 0.2);
+}
+
+} // namespace
