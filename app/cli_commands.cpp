@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/document/document.h"
+#include "core/io/gltf_export.h"
 #include "core/io/image_write.h"
 #include "core/io/mesh_io.h"
+#include "core/io/ply_write.h"
 #include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "render/gl_context.h"
@@ -44,6 +46,20 @@ core::Result<glm::mat4> readMatrix(const json& value, const std::string& file, c
 
 } // namespace
 
+core::Result<std::unique_ptr<core::LayerCapturer>>
+makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context) {
+    if (cpu)
+        return std::unique_ptr<core::LayerCapturer>(std::make_unique<core::CpuLayerCapturer>());
+    auto created = render::HeadlessContext::create();
+    if (!created)
+        return core::Error{created.error() + " (use --cpu to capture without OpenGL)"};
+    context = std::move(created).value();
+    auto gl = std::make_unique<render::GlLayerCapturer>();
+    if (const core::Status s = gl->initialize(); !s)
+        return s.takeError();
+    return std::unique_ptr<core::LayerCapturer>(std::move(gl));
+}
+
 int fail(const std::string& message) {
     std::cerr << "layerpaint-cli: " << message << '\n';
     return 1;
@@ -58,7 +74,7 @@ core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh
     if (args.cameraFile.empty()) {
         auto camera = makeCamera(args, mesh, fallback);
         if (!camera)
-            return core::Error{camera.error()};
+            return camera.takeError();
         return camera->view(width, height);
     }
     std::ifstream in(args.cameraFile);
@@ -70,9 +86,9 @@ core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh
     auto view = readMatrix(value, args.cameraFile, "view");
     auto proj = readMatrix(value, args.cameraFile, "proj");
     if (!view)
-        return core::Error{view.error()};
+        return view.takeError();
     if (!proj)
-        return core::Error{proj.error()};
+        return proj.takeError();
     core::View v;
     v.view = *view;
     v.proj = *proj;
@@ -101,24 +117,12 @@ namespace {
 
 /** Writes the flattened triangles in triangle-id order as binary little-endian PLY. */
 core::Status writePly(const std::string& path, const core::Mesh& mesh) {
-    std::ofstream out(path, std::ios::binary);
-    out << "ply\nformat binary_little_endian 1.0\ncomment LayerPaint flattened mesh\n"
-        << "element vertex " << mesh.vertexCount() << "\nproperty float x\nproperty float y\n"
-        << "property float z\nelement face " << mesh.triangleCount()
-        << "\nproperty list uchar uint vertex_indices\nend_header\n";
-    // x86-64 and the other supported targets are little-endian, so values are written as is.
-    static_assert(std::endian::native == std::endian::little);
-    out.write(reinterpret_cast<const char*>(mesh.positions.data()),
-              std::streamsize(mesh.positions.size() * sizeof(glm::vec3)));
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const std::uint8_t three = 3;
-        out.write(reinterpret_cast<const char*>(&three), 1);
-        out.write(reinterpret_cast<const char*>(&mesh.indices[3 * t]), 12);
-    }
-    out.close();
-    if (!out)
-        return core::Error{path + ": write failed"};
-    return {};
+    core::PlyContents contents;
+    contents.comment = "LayerPaint flattened mesh";
+    contents.normals = false;
+    contents.uvs = false;
+    const std::string bytes = core::encodePly(mesh, contents);
+    return core::writeFileAtomically(path, bytes.data(), bytes.size(), false);
 }
 
 core::Status writeJson(const std::string& path, const json& value) {
@@ -229,7 +233,7 @@ core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& ar
     if (!args.script.empty()) {
         auto script = core::readScript(args.script);
         if (!script)
-            return core::Error{script.error()};
+            return script.takeError();
         if (const core::Status s = replayScript(*script, args.script, doc, capturer, view); !s)
             return s;
     }
@@ -262,25 +266,17 @@ int runLayers(const LayersArgs& args) {
         return fail(args.outDir + ": " + ec.message());
 
     std::unique_ptr<render::HeadlessContext> context;
-    std::unique_ptr<core::LayerCapturer> capturer;
     std::unique_ptr<render::GlConnectivityEngine> engine;
     const auto backend = render::parseConnectivityBackend(args.connectivity);
     if (args.cpuCapture && backend == render::ConnectivityBackend::Gpu)
         return fail("--connectivity gpu needs OpenGL: drop --cpu");
-    if (args.cpuCapture) {
-        capturer = std::make_unique<core::CpuLayerCapturer>();
-    } else {
-        auto created = render::HeadlessContext::create();
-        if (!created)
-            return fail(created.error() + " (use --cpu to capture without OpenGL)");
-        context = std::move(created).value();
-        auto gl = std::make_unique<render::GlLayerCapturer>();
-        if (const core::Status s = gl->initialize(); !s)
-            return fail(s.error());
-        capturer = std::move(gl);
+    auto made = makeCapturer(args.cpuCapture, context);
+    if (!made)
+        return fail(made.error());
+    std::unique_ptr<core::LayerCapturer> capturer = std::move(made).value();
+    if (!args.cpuCapture)
         engine = std::make_unique<render::GlConnectivityEngine>(
             backend.value_or(render::ConnectivityBackend::Auto));
-    }
     capturer->setMesh(*mesh);
 
     core::LayerOptions options;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,10 @@
 
 namespace core {
 class Document;
+class LayerCapturer;
+} // namespace core
+namespace render {
+class HeadlessContext;
 }
 
 namespace cli {
@@ -62,6 +67,14 @@ struct BenchArgs {
     std::string connectivity = "auto"; // the engine build_layers uses; both are timed anyway
     std::string jsonOut;
 };
+
+/**
+ * The capturer a command builds layers with: the CPU one (cpu), or the GL one in a new headless
+ * context, which is kept in context (it must outlive the capturer). The Error says why OpenGL
+ * is unavailable.
+ */
+core::Result<std::unique_ptr<core::LayerCapturer>>
+makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 
 /** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
 int fail(const std::string& message);

@@ -78,13 +78,13 @@ int runExport(const ExportArgs& args) {
     const auto exportStart = std::chrono::steady_clock::now();
     core::Result<std::vector<std::string>> files = std::vector<std::string>{};
     if (core::isTextureFormat(*format)) {
-        std::string error;
-        const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.paintTarget(&error));
+        const core::Result<core::PaintTarget*> target = doc.ensurePaintTarget();
+        if (!target)
+            return fail(args.input + ": " + target.error());
+        const auto* texture = dynamic_cast<const core::TextureTarget*>(*target);
         if (!texture)
-            return fail(args.input + ": " +
-                        (error.empty() ? "there is no paint texture to export (the model is "
-                                         "painted with vertex colours)"
-                                       : error));
+            return fail(args.input + ": there is no paint texture to export (the model is "
+                                     "painted with vertex colours)");
         std::vector<core::Image> pages;
         for (std::size_t i = 0; i < texture->pageCount(); ++i)
             pages.push_back(texture->page(i));

@@ -76,19 +76,10 @@ int runPaint(const PaintArgs& args) {
     }
 
     std::unique_ptr<render::HeadlessContext> context;
-    std::unique_ptr<core::LayerCapturer> capturer;
-    if (args.cpuCapture) {
-        capturer = std::make_unique<core::CpuLayerCapturer>();
-    } else {
-        auto created = render::HeadlessContext::create();
-        if (!created)
-            return fail(created.error() + " (use --cpu to capture without OpenGL)");
-        context = std::move(created).value();
-        auto gl = std::make_unique<render::GlLayerCapturer>();
-        if (const core::Status s = gl->initialize(); !s)
-            return fail(s.error());
-        capturer = std::move(gl);
-    }
+    auto made = makeCapturer(args.cpuCapture, context);
+    if (!made)
+        return fail(made.error());
+    std::unique_ptr<core::LayerCapturer> capturer = std::move(made).value();
     capturer->setMesh(doc.mesh());
 
     if (const core::Status s = replayScript(*script, args.script, doc, *capturer, *view); !s)

@@ -52,12 +52,10 @@ enum Binding : GLuint {
  * the CPU writes as it checks the offsets, and the links it reads back) are persistently and
  * coherently mapped, so neither needs a copy of its own.
  */
-struct Buffer : GlStorageBuffer {
+struct Buffer : GlBuffer {
     bool reserve(std::size_t size, GLbitfield mapping) {
-        if (size <= bytes && id)
-            return true;
         // A little headroom, so a view with a few more fragments does not reallocate.
-        return allocate(std::max<std::size_t>(size + size / 8, 64), mapping);
+        return GlBuffer::reserve(size, std::max<std::size_t>(size + size / 8, 64), mapping);
     }
 };
 
@@ -137,20 +135,22 @@ core::Status GpuConnectivity::initialize() {
     if (!program)
         return core::Error{program.error()};
     d.program = std::move(program).value();
-    d.size = d.program.uniform("uSize");
-    d.fragmentCount = d.program.uniform("uFragmentCount");
-    d.rowInvocations = d.program.uniform("uRowInvocations");
-    d.triangleCount = d.program.uniform("uTriangleCount");
-    d.limit = d.program.uniform("uLimit");
-    d.contactLimit = d.program.uniform("uContactLimit");
-    d.creaseCos = d.program.uniform("uCreaseCos");
-    d.smoothCos = d.program.uniform("uSmoothCos");
-    d.minRayCosine2 = d.program.uniform("uMinRayCosine2");
-    d.fail = d.program.uniform("uFail");
-    const char* rayNames[6] = {"uOrigin0",    "uOriginDx",    "uOriginDy",
-                               "uDirection0", "uDirectionDx", "uDirectionDy"};
-    for (std::size_t i = 0; i < d.rays.size(); ++i)
-        d.rays[i] = d.program.uniform(rayNames[i]);
+    d.program.locate({{&d.size, "uSize"},
+                      {&d.fragmentCount, "uFragmentCount"},
+                      {&d.rowInvocations, "uRowInvocations"},
+                      {&d.triangleCount, "uTriangleCount"},
+                      {&d.limit, "uLimit"},
+                      {&d.contactLimit, "uContactLimit"},
+                      {&d.creaseCos, "uCreaseCos"},
+                      {&d.smoothCos, "uSmoothCos"},
+                      {&d.minRayCosine2, "uMinRayCosine2"},
+                      {&d.fail, "uFail"},
+                      {&d.rays[0], "uOrigin0"},
+                      {&d.rays[1], "uOriginDx"},
+                      {&d.rays[2], "uOriginDy"},
+                      {&d.rays[3], "uDirection0"},
+                      {&d.rays[4], "uDirectionDx"},
+                      {&d.rays[5], "uDirectionDy"}});
 
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);

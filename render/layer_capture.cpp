@@ -59,9 +59,9 @@ struct alignas(64) Band {
 };
 
 /** The CPU reads the GPU's lists in place. */
-struct MappedBuffer : GlStorageBuffer {
+struct MappedBuffer : GlBuffer {
     bool allocate(std::size_t size) {
-        return GlStorageBuffer::allocate(size, GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
+        return GlBuffer::allocate(size, GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
     }
 };
 
@@ -400,11 +400,11 @@ core::Status LayerCapture::initialize() {
     if (!program)
         return core::Error{program.error()};
     d.program = std::move(program).value();
-    d.viewLocation = d.program.uniform("uView");
-    d.projLocation = d.program.uniform("uProj");
-    d.widthLocation = d.program.uniform("uWidth");
-    d.heightLocation = d.program.uniform("uHeight");
-    d.capacityLocation = d.program.uniform("uCapacity");
+    d.program.locate({{&d.viewLocation, "uView"},
+                      {&d.projLocation, "uProj"},
+                      {&d.widthLocation, "uWidth"},
+                      {&d.heightLocation, "uHeight"},
+                      {&d.capacityLocation, "uCapacity"}});
 
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// draw_layers: the compositor's program variants and its draw, which shades the fragments, picks
+// the visible ones and composes the picture (the uploads are in layer_compositor_upload.cpp).
 #include "render/layer_compositor.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <string>
-#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -16,57 +15,13 @@
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
-#include "core/layers/connectivity.h"
-#include "render/paint_texture.h"
-#include "render/shader_library.h"
+#include "render/layer_compositor_impl.h"
 
 namespace render {
 
+using namespace compositor;
+
 namespace {
-constexpr std::size_t kMinBufferBytes = 16;    // a binding needs storage even for empty data
-constexpr int kTileSize = 16;                  // pixels; only tiles holding fragments are drawn
-constexpr std::size_t kShadingWords = 3;       // per fragment, see composite_shade.comp
-constexpr std::size_t kMaxTexturePasses = 255; // the texture byte of a fragment's shading
-constexpr std::uint32_t kMaxFragments = 0x7fffffff; // Visible keeps a flag in bit 31
-constexpr GLuint kShadeGroupSize = 64;              // composite_shade.comp's local size
-
-/** Shader storage bindings, as declared in composite.frag and composite_shade.comp. */
-enum Binding : GLuint {
-    kOffsets,
-    kFragmentTriangles,
-    kFragmentDepths,
-    kFragmentRegions,
-    kFragmentLinks,
-    kRanks,
-    kTriangles,
-    kPositions,
-    kNormals,
-    kUvs,
-    kColors,
-    kMaterials,
-    kVisible,
-    kFragmentPixels,
-    kShading,
-    kTiles, // a vertex buffer, not shader storage
-    kBufferCount
-};
-constexpr GLuint kStorageBindings = kTiles;
-
-/** Features compiled into a program variant (see composite.frag, composite_shade.comp). */
-enum Variant : unsigned {
-    kShade = 1u << 0, // composite_shade.comp instead of composite.vert/.frag
-    kResolve = 1u << 1,
-    kSingleLayer = 1u << 2,
-    kTextured = 1u << 3,
-    kWithUvs = 1u << 4,
-    kWithColors = 1u << 5,
-    kSegmentation = 1u << 6,
-    kShadeSegmentation = 1u << 7,
-    kBoundaries = 1u << 8,
-    kHighlight = 1u << 9,
-    kTransparency = 1u << 10,
-    kUnder = 1u << 11,
-};
 constexpr std::pair<Variant, const char*> kDefines[] = {
     {kResolve, "RESOLVE"},
     {kSingleLayer, "SINGLE_LAYER"},
@@ -81,156 +36,40 @@ constexpr std::pair<Variant, const char*> kDefines[] = {
     {kUnder, "UNDER"},
 };
 
-/** composite.frag's Material (std430). */
-struct GpuMaterial {
-    glm::vec4 baseColorFactor;
-    std::int32_t texturePass; // -1 for none
-    std::int32_t textureWidth;
-    std::int32_t textureHeight;
-    std::int32_t pad;
-};
-
-/** A GL buffer whose storage is kept while new data fits, so a rebuild does not reallocate. */
-struct Buffer {
-    GLuint id = 0;
-    std::size_t capacity = 0;
-
-    /**
-     * Stores bytes from data (or only makes room when data is null); slack leaves room to grow.
-     * False if GL could not allocate (the buffer is then empty).
-     */
-    bool upload(const void* data, std::size_t bytes, std::size_t limit, bool slack = false) {
-        if (id == 0 || bytes > capacity) {
-            release();
-            std::size_t size = std::max(bytes, kMinBufferBytes);
-            if (slack)
-                size = std::max(size, std::min(size + size / 4, limit));
-            size = (size + 15) / 16 * 16; // whole elements for any std430 array
-            while (glGetError() != GL_NO_ERROR) {
-            }
-            glCreateBuffers(1, &id);
-            glNamedBufferStorage(id, GLsizeiptr(size), nullptr, GL_DYNAMIC_STORAGE_BIT);
-            if (glGetError() != GL_NO_ERROR) {
-                release();
-                return false;
-            }
-            capacity = size;
-        }
-        if (data && bytes > 0)
-            glNamedBufferSubData(id, 0, GLsizeiptr(bytes), data);
-        return true;
-    }
-    template <typename T>
-    bool upload(const std::vector<T>& data, std::size_t limit, bool slack = false) {
-        return upload(data.data(), data.size() * sizeof(T), limit, slack);
-    }
-    void release() {
-        if (id)
-            glDeleteBuffers(1, &id);
-        id = 0;
-        capacity = 0;
-    }
-};
-
-/** A linked program variant and the locations of its uniforms (-1 where it has none). */
-struct Program {
-    GLuint id = 0;
-    GLint width, height, tileSize, layer, regionCount, maxLayers, fragmentCount, triangleCount,
-        view;
-    GLint rayOrigin0, rayOriginDx, rayOriginDy, rayDirection0, rayDirectionDx, rayDirectionDy;
-    GLint background, highlight, highlightBox, pass, texture, opacity;
-};
-
-std::string shaderLog(GLuint object, bool program) {
-    GLint length = 0;
-    if (program)
-        glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
-    else
-        glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(std::size_t(std::max(length, 1)), '\0');
-    if (program)
-        glGetProgramInfoLog(object, length, nullptr, log.data());
-    else
-        glGetShaderInfoLog(object, length, nullptr, log.data());
-    return log.c_str();
-}
-
-/**
- * composite.vert + composite.frag, or composite_shade.comp, with the variant's defines after the
- * #version line (a #line keeps the driver's line numbers those of the file); an Error naming
- * the file on failure.
- */
+/** composite.vert + composite.frag, or composite_shade.comp, with the variant's defines. */
 core::Result<Program> buildProgram(unsigned variant) {
-    std::string defines, names;
+    std::vector<std::string> defines;
     for (const auto& [bit, name] : kDefines)
-        if (variant & bit) {
-            defines += std::string("#define ") + name + "\n";
-            names += std::string(names.empty() ? "" : " ") + name;
-        }
-    defines += "#line 2\n";
-    const GLuint id = glCreateProgram();
-    std::vector<const char*> files{"composite.vert", "composite.frag"};
-    if (variant & kShade)
-        files = {"composite_shade.comp"};
-    for (const char* file : files) {
-        std::string source(shaderSource(file));
-        const std::size_t firstLine = source.find('\n');
-        if (source.empty() || firstLine == std::string::npos) {
-            glDeleteProgram(id);
-            return core::Error{std::string("shader ") + file + ": not embedded in this build"};
-        }
-        source.insert(firstLine + 1, defines);
-        const std::string_view name(file);
-        const GLuint shader = glCreateShader(name.ends_with(".vert")   ? GL_VERTEX_SHADER
-                                             : name.ends_with(".comp") ? GL_COMPUTE_SHADER
-                                                                       : GL_FRAGMENT_SHADER);
-        const char* text = source.c_str();
-        glShaderSource(shader, 1, &text, nullptr);
-        glCompileShader(shader);
-        GLint ok = GL_FALSE;
-        glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            const std::string log = shaderLog(shader, false);
-            glDeleteShader(shader);
-            glDeleteProgram(id);
-            return core::Error{std::string("shader ") + file + " (" + names +
-                               ") failed to compile:\n" + log};
-        }
-        glAttachShader(id, shader);
-        glDeleteShader(shader); // freed with the program
-    }
-    glLinkProgram(id);
-    GLint ok = GL_FALSE;
-    glGetProgramiv(id, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        const std::string log = shaderLog(id, true);
-        glDeleteProgram(id);
-        return core::Error{std::string("shader program ") + files.front() + " (" + names +
-                           ") failed to link:\n" + log};
-    }
-    const auto at = [id](const char* name) { return glGetUniformLocation(id, name); };
-    return Program{id,
-                   at("uWidth"),
-                   at("uHeight"),
-                   at("uTileSize"),
-                   at("uLayer"),
-                   at("uRegionCount"),
-                   at("uMaxLayers"),
-                   at("uFragmentCount"),
-                   at("uTriangleCount"),
-                   at("uView"),
-                   at("uRayOrigin0"),
-                   at("uRayOriginDx"),
-                   at("uRayOriginDy"),
-                   at("uRayDirection0"),
-                   at("uRayDirectionDx"),
-                   at("uRayDirectionDy"),
-                   at("uBackground"),
-                   at("uHighlight"),
-                   at("uHighlightBox"),
-                   at("uPass"),
-                   at("uTexture"),
-                   at("uOpacity")};
+        if (variant & bit)
+            defines.emplace_back(name);
+    auto built = variant & kShade
+                     ? ShaderProgram::build({"composite_shade.comp"}, defines)
+                     : ShaderProgram::build({"composite.vert", "composite.frag"}, defines);
+    if (!built)
+        return core::Error{built.error()};
+    Program p{std::move(built).value()};
+    p.shader.locate({{&p.width, "uWidth"},
+                     {&p.height, "uHeight"},
+                     {&p.tileSize, "uTileSize"},
+                     {&p.layer, "uLayer"},
+                     {&p.regionCount, "uRegionCount"},
+                     {&p.maxLayers, "uMaxLayers"},
+                     {&p.fragmentCount, "uFragmentCount"},
+                     {&p.triangleCount, "uTriangleCount"},
+                     {&p.view, "uView"},
+                     {&p.rayOrigin0, "uRayOrigin0"},
+                     {&p.rayOriginDx, "uRayOriginDx"},
+                     {&p.rayOriginDy, "uRayOriginDy"},
+                     {&p.rayDirection0, "uRayDirection0"},
+                     {&p.rayDirectionDx, "uRayDirectionDx"},
+                     {&p.rayDirectionDy, "uRayDirectionDy"},
+                     {&p.background, "uBackground"},
+                     {&p.highlight, "uHighlight"},
+                     {&p.highlightBox, "uHighlightBox"},
+                     {&p.pass, "uPass"},
+                     {&p.texture, "uTexture"},
+                     {&p.opacity, "uOpacity"}});
+    return p;
 }
 
 /** lowbias32 (C. Wellons): a cheap integer hash with good avalanche, the same in GLSL. */
@@ -242,176 +81,18 @@ std::uint32_t hash32(std::uint32_t x) {
     x ^= x >> 16;
     return x;
 }
-
-/**
- * A normal octahedral-encoded as 2 × snorm16 (composite_shade.comp decodes it): one shader load
- * instead of three, within 0.01° of the direction. Zero or non-finite normals give +Z.
- */
-std::uint32_t octNormal(const glm::vec3& n) {
-    const float sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
-    float x = 0.0f, y = 0.0f;
-    if (sum > 0.0f && std::isfinite(sum)) {
-        x = n.x / sum;
-        y = n.y / sum;
-        if (n.z < 0.0f) {
-            const float fx = (1.0f - std::abs(y)) * (x >= 0.0f ? 1.0f : -1.0f);
-            const float fy = (1.0f - std::abs(x)) * (y >= 0.0f ? 1.0f : -1.0f);
-            x = fx;
-            y = fy;
-        }
-    }
-    const auto snorm = [](float v) {
-        return std::uint32_t(
-            std::uint16_t(std::int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f))));
-    };
-    return snorm(x) | snorm(y) << 16;
-}
-
-core::Error tooLarge(const char* what) {
-    return core::Error{std::string("layer compositor: ") + what +
-                       " exceed the GL's shader storage block size"};
-}
-core::Error outOfMemory(const char* what) {
-    return core::Error{std::string("layer compositor: out of GL memory for ") + what};
-}
 } // namespace
 
-struct LayerCompositor::Impl {
-    std::map<unsigned, Program> programs; // built on first use
-    GLuint vao = 0;
-    std::array<Buffer, kBufferCount> buffers;
-    std::size_t maxBlockBytes = 0;
-
-    // Mesh
-    bool hasMesh = false;
-    bool hasUvs = false;
-    bool hasColors = false;
-    std::uint32_t triangleCount = 0;
-    std::size_t vertexCount = 0;
-    std::vector<PaintTexture> passTextures; // the textures materials sample: one pass each
-    std::vector<int> passOfTexture;         // per mesh texture: its pass, -1 for none
-
-    // Layers
-    bool hasLayers = false;
-    int width = 0;
-    int height = 0;
-    std::size_t fragments = 0;
-    glm::mat4 view{1.0f};
-    core::PixelRays rays;
-    std::uint32_t maxLayers = 0;
-    std::vector<std::uint32_t> regionLayer; // per region, 1-based
-    std::vector<glm::ivec4> regionBox;      // per region: min x, min y, max x, max y
-    std::vector<std::uint32_t> rankData;    // the Ranks buffer: ranks, then per-layer cutoffs
-    std::vector<std::uint32_t> tiles;       // tiles with fragments: x | y << 16
-
-    // What Shading and Visible hold: the passes filling them run again when an input changed.
-    std::uint64_t geometryVersion = 1; // mesh or capture: Shading
-    std::uint64_t version = 1;         // those, segmentation or order: Visible
-    std::uint64_t shadedVersion = 0;
-    std::uint64_t resolvedVersion = 0;
-    unsigned resolvedVariant = 0;
-    std::uint32_t resolvedLayer = 0;
-
-    void releaseTextures() {
-        passTextures.clear();
-        passOfTexture.clear();
+core::Result<const Program*> LayerCompositor::Impl::program(unsigned variant) {
+    auto found = programs.find(variant);
+    if (found == programs.end()) {
+        auto built = buildProgram(variant);
+        if (!built)
+            return core::Error{built.error()};
+        found = programs.emplace(variant, std::move(built).value()).first;
     }
-
-    bool fits(std::size_t count, std::size_t elementBytes) const {
-        return count <= maxBlockBytes / elementBytes;
-    }
-
-    core::Result<const Program*> program(unsigned variant) {
-        auto found = programs.find(variant);
-        if (found == programs.end()) {
-            auto built = buildProgram(variant);
-            if (!built)
-                return core::Error{built.error()};
-            found = programs.emplace(variant, built.value()).first;
-        }
-        return &found->second;
-    }
-
-    /** The tiles holding at least one fragment (offsets only grow along a row). */
-    void findTiles(const core::LayerStack& stack) {
-        const int tilesX = (stack.width + kTileSize - 1) / kTileSize;
-        const int tilesY = (stack.height + kTileSize - 1) / kTileSize;
-        tiles.clear();
-        std::vector<char> used(static_cast<std::size_t>(tilesX));
-        for (int ty = 0; ty < tilesY; ++ty) {
-            std::fill(used.begin(), used.end(), 0);
-            for (int y = ty * kTileSize; y < std::min(stack.height, (ty + 1) * kTileSize); ++y) {
-                const std::uint32_t* row = stack.offsets.data() + std::size_t(y) * stack.width;
-                for (int tx = 0; tx < tilesX; ++tx) {
-                    const int x0 = tx * kTileSize, x1 = std::min(stack.width, x0 + kTileSize);
-                    used[std::size_t(tx)] |= row[x0] != row[x1];
-                }
-            }
-            for (int tx = 0; tx < tilesX; ++tx)
-                if (used[std::size_t(tx)])
-                    tiles.push_back(std::uint32_t(tx) | std::uint32_t(ty) << 16);
-        }
-    }
-
-    /** Ranks plus, per layer j, the lowest rank deeper than j (the shader's early exit). */
-    bool uploadRanks(const std::vector<std::uint32_t>& rank) {
-        const std::size_t regions = rank.size();
-        rankData.assign(regions + maxLayers, core::kNone);
-        std::copy(rank.begin(), rank.end(), rankData.begin());
-        std::vector<std::uint32_t> lowestOnLayer(std::size_t(maxLayers) + 2, core::kNone);
-        bool layersKnown = true;
-        for (std::size_t r = 0; r < regions; ++r) {
-            const std::uint32_t layer = regionLayer[r];
-            if (layer < 1 || layer > maxLayers)
-                layersKnown = false;
-            else
-                lowestOnLayer[layer] = std::min(lowestOnLayer[layer], rank[r]);
-        }
-        std::uint32_t deeper = core::kNone;
-        for (std::uint32_t layer = maxLayers; layer >= 1; --layer) {
-            // Unknown layers disable the early exit: a cutoff of 0 is never beaten.
-            rankData[regions + layer - 1] = layersKnown ? deeper : 0;
-            deeper = std::min(deeper, lowestOnLayer[layer]);
-        }
-        ++version;
-        return buffers[kRanks].upload(rankData, maxBlockBytes);
-    }
-
-    core::Status uploadSegmentation(const core::Layers& layers) {
-        const core::Segmentation& segmentation = layers.segmentation;
-        const core::Connectivity& connectivity = layers.connectivity;
-        bool ok;
-        if (segmentation.region.size() == fragments) {
-            ok = buffers[kFragmentRegions].upload(segmentation.region, maxBlockBytes, true);
-        } else {
-            // No (matching) segmentation: every fragment unranked, drawn front-most first.
-            const std::vector<std::uint32_t> none(fragments, core::kNone);
-            ok = buffers[kFragmentRegions].upload(none, maxBlockBytes, true);
-        }
-        // Four link bytes a fragment read as one little-endian uint: byte d = direction d.
-        if (connectivity.links.size() == 4 * fragments) {
-            ok = ok && buffers[kFragmentLinks].upload(connectivity.links, maxBlockBytes, true);
-        } else {
-            const std::vector<std::uint32_t> unlinked(fragments, 0u);
-            ok = ok && buffers[kFragmentLinks].upload(unlinked, maxBlockBytes, true);
-        }
-        const std::vector<core::Region>& regions = segmentation.graph.regions;
-        regionLayer.resize(regions.size());
-        regionBox.resize(regions.size());
-        std::vector<std::uint32_t> rank(regions.size());
-        for (std::size_t r = 0; r < regions.size(); ++r) {
-            regionLayer[r] = regions[r].layer;
-            regionBox[r] = {regions[r].minX, regions[r].minY, regions[r].maxX, regions[r].maxY};
-            rank[r] = std::uint32_t(r); // ids are ordered by layer, then scan order
-        }
-        if (!fits(rank.size() + maxLayers, sizeof(std::uint32_t)))
-            return tooLarge("the regions");
-        ok = ok && uploadRanks(rank);
-        if (!ok)
-            return outOfMemory("the segmentation");
-        return {};
-    }
-};
+    return &found->second;
+}
 
 LayerCompositor::LayerCompositor() : m_impl(std::make_unique<Impl>()) {}
 
@@ -440,173 +121,8 @@ core::Status LayerCompositor::initialize() {
     return {};
 }
 
-core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
-    Impl& d = *m_impl;
-    d.hasMesh = false;
-    ++d.version;
-    ++d.geometryVersion;
-    d.releaseTextures();
-    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
-    if (!d.fits(triangles, sizeof(glm::uvec4)) || !d.fits(vertices, sizeof(glm::vec4)) ||
-        !d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
-        return tooLarge("the mesh's triangles or vertices");
-
-    // Triangles with a bad index or material are drawn grey rather than read out of bounds.
-    std::vector<glm::uvec4> packed(triangles);
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const std::uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
-                            c = mesh.indices[3 * t + 2];
-        const std::uint32_t material =
-            t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
-        const bool valid =
-            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
-        packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
-    }
-
-    // One pass per distinct texture; textures beyond the resolved byte's range stay unsampled.
-    std::vector<int> passOf(mesh.textures.size(), -1);
-    std::vector<int> passImages;
-    std::vector<GpuMaterial> materials(mesh.materials.size());
-    for (std::size_t m = 0; m < materials.size(); ++m) {
-        const core::Material& material = mesh.materials[m];
-        const int texture = material.baseColorTexture;
-        materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
-        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
-            mesh.textures[std::size_t(texture)].empty())
-            continue;
-        int& pass = passOf[std::size_t(texture)];
-        if (pass < 0 && passImages.size() < kMaxTexturePasses) {
-            pass = int(passImages.size());
-            passImages.push_back(texture);
-        }
-        const core::Image& image = mesh.textures[std::size_t(texture)];
-        materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
-    }
-
-    const std::size_t limit = d.maxBlockBytes;
-    bool ok = d.buffers[kTriangles].upload(packed, limit) &&
-              d.buffers[kPositions].upload(mesh.positions, limit) &&
-              d.buffers[kMaterials].upload(materials, limit);
-    std::vector<std::uint32_t> normals(vertices, octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
-    if (mesh.normals.size() == vertices)
-        std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
-    ok = ok && d.buffers[kNormals].upload(normals, limit);
-    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
-    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
-    ok = ok && (d.hasUvs ? d.buffers[kUvs].upload(mesh.uvs, limit)
-                         : d.buffers[kUvs].upload(nullptr, 0, limit));
-    ok = ok && (d.hasColors ? d.buffers[kColors].upload(mesh.colors, limit)
-                            : d.buffers[kColors].upload(nullptr, 0, limit));
-    if (!ok)
-        return outOfMemory("the mesh");
-
-    // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
-    for (int texture : passImages) {
-        d.passTextures.emplace_back();
-        d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
-    }
-    d.passOfTexture = std::move(passOf);
-    d.vertexCount = vertices;
-    d.triangleCount = std::uint32_t(triangles);
-    d.hasMesh = true;
-    return {};
-}
-
-core::Status LayerCompositor::setLayers(const core::Layers& layers) {
-    Impl& d = *m_impl;
-    d.hasLayers = false;
-    ++d.version;
-    ++d.geometryVersion;
-    const core::LayerStack& stack = layers.stack;
-    const std::size_t pixels = stack.pixelCount(), fragments = stack.fragmentCount();
-    if (stack.width <= 0 || stack.height <= 0 || stack.width >= 65536 || stack.height >= 65536 ||
-        stack.offsets.size() != pixels + 1 || stack.triangle.size() != fragments ||
-        stack.depth.size() != fragments || stack.offsets.front() != 0 ||
-        stack.offsets.back() != fragments)
-        return core::Error{"layer compositor: inconsistent layer stack"};
-    if (!d.fits(pixels + 1, sizeof(std::uint32_t)) ||
-        !d.fits(fragments, kShadingWords * sizeof(std::uint32_t)) || fragments > kMaxFragments)
-        return tooLarge("the view's pixels or fragments");
-
-    d.findTiles(stack);
-    std::vector<std::uint32_t> fragmentPixel(fragments);
-    for (std::size_t p = 0; p < pixels; ++p) {
-        if (stack.offsets[p + 1] < stack.offsets[p])
-            return core::Error{"layer compositor: inconsistent layer stack"};
-        std::fill(fragmentPixel.begin() + stack.offsets[p],
-                  fragmentPixel.begin() + stack.offsets[p + 1], std::uint32_t(p));
-    }
-    const std::size_t limit = d.maxBlockBytes;
-    const bool ok =
-        d.buffers[kOffsets].upload(stack.offsets, limit, true) &&
-        d.buffers[kFragmentTriangles].upload(stack.triangle, limit, true) &&
-        d.buffers[kFragmentDepths].upload(stack.depth, limit, true) &&
-        d.buffers[kFragmentPixels].upload(fragmentPixel, limit, true) &&
-        d.buffers[kShading].upload(nullptr, fragments * kShadingWords * 4, limit, true) &&
-        // The visible fragments, then the under ones (transparency).
-        d.buffers[kVisible].upload(nullptr, 2 * pixels * sizeof(std::uint32_t), limit, true) &&
-        d.buffers[kTiles].upload(d.tiles, limit, true);
-    if (!ok)
-        return outOfMemory("the layer stack");
-    // Pixels outside the drawn tiles are never written: they read as background.
-    const std::uint32_t noFragment = 0x7fffffffu;
-    glClearNamedBufferSubData(d.buffers[kVisible].id, GL_R32UI, 0,
-                              GLsizeiptr(pixels * sizeof(std::uint32_t)), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &noFragment);
-
-    d.width = stack.width;
-    d.height = stack.height;
-    d.fragments = fragments;
-    d.view = layers.view.view;
-    // The rays of the stack's own pixels, whatever size the view says.
-    core::View view = layers.view;
-    view.width = stack.width;
-    view.height = stack.height;
-    d.rays = core::PixelRays::fromView(view);
-    d.maxLayers = stack.maxLayers();
-    const core::Status status = d.uploadSegmentation(layers);
-    d.hasLayers = status.ok();
-    return status;
-}
-
-core::Status LayerCompositor::updateSegmentation(const core::Layers& layers) {
-    Impl& d = *m_impl;
-    if (!d.hasLayers || layers.stack.fragmentCount() != d.fragments ||
-        layers.stack.width != d.width || layers.stack.height != d.height)
-        return core::Error{"layer compositor: segmentation of another capture"};
-    const core::Status status = d.uploadSegmentation(layers);
-    d.hasLayers = status.ok();
-    return status;
-}
-
-void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
-                                   const core::Image& image) {
-    Impl& d = *m_impl;
-    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
-        return;
-    d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
-}
-
-void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
-    Impl& d = *m_impl;
-    if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
-        return;
-    const std::size_t count = std::min(colors.size(), d.vertexCount - first);
-    glNamedBufferSubData(d.buffers[kColors].id, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
-                         GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
-    // The shading holds the colours; the visible fragments stay as picked.
-    ++d.geometryVersion;
-}
-
 bool LayerCompositor::hasLayers() const {
     return m_impl->hasLayers;
-}
-
-bool LayerCompositor::setRegionRanks(const std::vector<std::uint32_t>& rank) {
-    Impl& d = *m_impl;
-    if (!d.hasLayers || rank.size() != d.regionLayer.size())
-        return false;
-    return d.uploadRanks(rank);
 }
 
 void LayerCompositor::draw(const CompositeOptions& options) {
@@ -696,7 +212,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     if (shade && d.fragments > 0) {
         // Once per capture or mesh: every fragment's shading, 64 fragments a group.
         const Program& p = **shader;
-        glUseProgram(p.id);
+        p.shader.use();
         glUniform1ui(p.fragmentCount, std::uint32_t(d.fragments));
         glUniform1ui(p.width, std::uint32_t(d.width));
         glUniform1ui(p.triangleCount, d.hasMesh ? d.triangleCount : 0u);
@@ -727,7 +243,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     for (std::size_t i = 0; i < steps.size(); ++i) {
         const Step& step = steps[i];
         const Program& p = **d.program(step.variant);
-        glUseProgram(p.id);
+        p.shader.use();
         if (step.blend)
             glEnable(GL_BLEND);
         glUniform1i(p.width, d.width);
@@ -786,12 +302,10 @@ void LayerCompositor::release() {
     Impl& d = *m_impl;
     d.releaseTextures();
     for (Buffer& buffer : d.buffers)
-        buffer.release();
+        buffer.free();
     if (d.vao)
         glDeleteVertexArrays(1, &d.vao);
     d.vao = 0;
-    for (auto& [variant, program] : d.programs)
-        glDeleteProgram(program.id);
     d.programs.clear();
     d.hasMesh = false;
     d.hasLayers = false;

@@ -58,7 +58,18 @@ ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
     return *this;
 }
 
-core::Result<ShaderProgram> ShaderProgram::build(std::initializer_list<std::string_view> files) {
+core::Result<ShaderProgram> ShaderProgram::build(std::initializer_list<std::string_view> files,
+                                                 const std::vector<std::string>& defines) {
+    // The variant's defines after the #version line, and a #line that keeps the file's numbers.
+    std::string defineLines, variant;
+    for (const std::string& name : defines) {
+        defineLines += "#define " + name + "\n";
+        variant += (variant.empty() ? "" : " ") + name;
+    }
+    if (!defineLines.empty()) {
+        defineLines += "#line 2\n";
+        variant = " (" + variant + ")";
+    }
     ShaderProgram program;
     program.m_id = glCreateProgram();
     std::vector<GLuint> shaders;
@@ -67,12 +78,15 @@ core::Result<ShaderProgram> ShaderProgram::build(std::initializer_list<std::stri
             glDeleteShader(s);
     };
     for (std::string_view file : files) {
-        const std::string_view source = shaderSource(file);
+        std::string source(shaderSource(file));
         const GLenum stage = stageOf(file);
-        if (source.empty() || stage == 0) {
+        const std::size_t firstLine = source.find('\n');
+        if (source.empty() || stage == 0 || (!defines.empty() && firstLine == std::string::npos)) {
             cleanup();
             return core::Error{"shader " + std::string(file) + ": not embedded in this build"};
         }
+        if (!defineLines.empty())
+            source.insert(firstLine + 1, defineLines);
         const GLuint shader = glCreateShader(stage);
         shaders.push_back(shader);
         const char* text = source.data();
@@ -87,7 +101,7 @@ core::Result<ShaderProgram> ShaderProgram::build(std::initializer_list<std::stri
             std::string log(std::size_t(std::max(logLength, 1)), '\0');
             glGetShaderInfoLog(shader, logLength, nullptr, log.data());
             cleanup();
-            return core::Error{"shader " + std::string(file) + " failed to compile:\n" +
+            return core::Error{"shader " + std::string(file) + variant + " failed to compile:\n" +
                                withFileNames(log.c_str(), file)};
         }
         glAttachShader(program.m_id, shader);
@@ -104,7 +118,8 @@ core::Result<ShaderProgram> ShaderProgram::build(std::initializer_list<std::stri
         std::string names;
         for (std::string_view f : files)
             names += (names.empty() ? "" : ", ") + std::string(f);
-        return core::Error{"shader program (" + names + ") failed to link:\n" + log.c_str()};
+        return core::Error{"shader program (" + names + ")" + variant + " failed to link:\n" +
+                           log.c_str()};
     }
     return program;
 }
@@ -115,6 +130,11 @@ void ShaderProgram::use() const {
 
 int ShaderProgram::uniform(const char* name) const {
     return glGetUniformLocation(m_id, name);
+}
+
+void ShaderProgram::locate(std::initializer_list<std::pair<int*, const char*>> uniforms) const {
+    for (const auto& [location, name] : uniforms)
+        *location = uniform(name);
 }
 
 } // namespace render

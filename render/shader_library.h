@@ -4,6 +4,8 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "core/base/result.h"
 
@@ -34,13 +36,20 @@ public:
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
 
-    /** Compiles and links; a failure names the file and line from the driver's log. */
-    static core::Result<ShaderProgram> build(std::initializer_list<std::string_view> files);
+    /**
+     * Compiles and links; a failure names the file and line from the driver's log. Each of
+     * defines becomes a "#define NAME" line after every file's #version line (a feature variant
+     * of the same files; line numbers stay those of the file), and is named in a failure.
+     */
+    static core::Result<ShaderProgram> build(std::initializer_list<std::string_view> files,
+                                             const std::vector<std::string>& defines = {});
 
     unsigned id() const { return m_id; }
     bool valid() const { return m_id != 0; }
     void use() const;
     int uniform(const char* name) const;
+    /** Sets each location to its named uniform's (-1 where the program has none). */
+    void locate(std::initializer_list<std::pair<int*, const char*>> uniforms) const;
 
 private:
     unsigned m_id = 0;

@@ -124,21 +124,25 @@ run fuzz_loaders &
 loaders=$!
 run fuzz_project &
 project=$!
-wait "$loaders" || status=1
-wait "$project" || status=1
+# A finding makes libFuzzer exit non-zero; whether it fails is decided below by where it is. A
+# run that ended non-zero without a finding (it could not start, ...) fails.
+declare -A exited
+wait "$loaders" && exited[fuzz_loaders]=0 || exited[fuzz_loaders]=$?
+wait "$project" && exited[fuzz_project]=0 || exited[fuzz_project]=$?
 # Where a finding failed: the innermost stack frame that is not the sanitizer's, libFuzzer's or
 # the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
 # in a third-party parser, which only the importer process can contain (checked below).
 origin() {
-    awk '/ERROR: |runtime error|Test unit written/ { on = 1 } on && /#[0-9]+ 0x[0-9a-f]+ in / {
-        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x/) next
-        print ($0 ~ /\/(core|tests\/fuzz)\/[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
+    awk '/ERROR: |CHECK failed|deadly signal|runtime error|Test unit written/ { on = 1 }
+        on && /#[0-9]+ 0x[0-9a-f]+ / {
+        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x|asan_|operator (new|delete)/) next
+        print ($0 ~ /\/(core|tests\/fuzz)\/([a-z_]+\/)*[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
 }
 for name in fuzz_loaders fuzz_project; do
     echo "== $name"
     grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|INFO: fuzzed for)' \
         "$work/$name.log" | tail -n 4 || true
-    if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|runtime error|Test unit written' \
+    if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|Sanitizer: CHECK failed|runtime error|Test unit written' \
         "$work/$name.log"; then
         where=$(origin "$work/$name.log")
         echo "finding in ${where:-unknown} code:"
@@ -146,6 +150,10 @@ for name in fuzz_loaders fuzz_project; do
         # In CI a finding in our code fails; one in a third-party parser fails only if the
         # importer process does not contain it (below): it then belongs in tests/data/crashers.
         [[ -n $runs && $where != third-party ]] && status=1
+    elif ((exited[$name] != 0)); then
+        echo "$name ended with status ${exited[$name]} without a finding:"
+        tail -n 20 "$work/$name.log"
+        status=1
     fi
 done
 # Exploring, findings are expected (third-party parsers): what counts is whether the

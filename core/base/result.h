@@ -23,6 +23,11 @@ struct Error {
     ErrorKind kind = ErrorKind::Failed;
 };
 
+/** The Error of an operation that the user (or a caller's progress function) stopped. */
+inline Error cancelledError(std::string message = "cancelled") {
+    return Error{std::move(message), ErrorKind::Cancelled};
+}
+
 /** A value or an Error. Core functions return this instead of throwing. */
 template <typename T> class Result {
 public:

@@ -320,7 +320,7 @@ void Document::setLayerOptions(const LayerOptions& options) {
 Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
     auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions, m_engine);
     if (!layers)
-        return Error{layers.error()};
+        return layers.takeError();
     clearLayers();
     m_layers = std::make_unique<Layers>(std::move(layers).value());
     layersChanged();
@@ -341,18 +341,20 @@ bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
     return true;
 }
 
-PaintTarget* Document::paintTarget(std::string* error) {
+Result<PaintTarget*> Document::ensurePaintTarget() {
     if (!m_paintTarget) {
         auto target = makePaintTarget(m_mesh, m_topology, m_paintOptions);
-        if (!target) {
-            if (error)
-                *error = target.error();
-            return nullptr;
-        }
+        if (!target)
+            return target.takeError();
         m_paintTarget = std::move(target).value();
         ++m_targetSerial;
     }
     return m_paintTarget.get();
+}
+
+PaintTarget* Document::paintTarget() {
+    Result<PaintTarget*> target = ensurePaintTarget();
+    return target ? *target : nullptr;
 }
 
 PaintTargetKind Document::paintTargetKind() const {
@@ -366,7 +368,7 @@ PaintTargetKind Document::paintTargetKind() const {
 Status Document::setPaintTarget(const PaintTargetOptions& options) {
     auto target = makePaintTarget(m_mesh, m_topology, options);
     if (!target)
-        return Error{target.error()};
+        return target.takeError();
     if (m_tracker.inStroke())
         endStroke();
     if (m_paintTarget) {
@@ -387,16 +389,21 @@ Status Document::setPaintTarget(const PaintTargetOptions& options) {
     return {};
 }
 
-Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
-    changes.clear();
+Result<PaintTarget*> Document::readyToPaint() {
     if (!m_layers)
         return Error{"the layers of this view are not built yet"};
-    std::string error;
-    PaintTarget* target = paintTarget(&error);
-    if (!target)
-        return Error{error};
-    if (m_tracker.inStroke())
+    Result<PaintTarget*> target = ensurePaintTarget();
+    if (target && m_tracker.inStroke())
         endStroke();
+    return target;
+}
+
+Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    Result<PaintTarget*> ready = readyToPaint();
+    if (!ready)
+        return ready.takeError();
+    PaintTarget* target = *ready;
     m_session.noteState(*this);
     m_session.strokePoint(point);
     m_strokeOrderBefore = m_order.state();
@@ -470,14 +477,10 @@ void Document::endStroke() {
 
 Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintChanges& changes) {
     changes.clear();
-    if (!m_layers)
-        return Error{"the layers of this view are not built yet"};
-    std::string error;
-    PaintTarget* target = paintTarget(&error);
-    if (!target)
-        return Error{error};
-    if (m_tracker.inStroke())
-        endStroke();
+    Result<PaintTarget*> ready = readyToPaint();
+    if (!ready)
+        return ready.takeError();
+    PaintTarget* target = *ready;
     const LayerStack& stack = m_layers->stack;
     const auto pixel = pixelIndex(position);
     if (!pixel)
@@ -554,32 +557,28 @@ void Document::applyStep(HistoryStep& step, bool undo, PaintChanges& changes) {
 }
 
 bool Document::undo(PaintChanges& changes) {
-    changes.clear();
-    if (m_tracker.inStroke())
-        endStroke();
-    if (m_hideRanks)
-        endHide();
-    HistoryStep* step = m_history.nextUndo();
-    if (!step)
-        return false;
-    m_session.add({{"op", "undo"}});
-    applyStep(*step, true, changes);
-    m_history.undone();
-    return true;
+    return walkHistory(true, changes);
 }
 
 bool Document::redo(PaintChanges& changes) {
+    return walkHistory(false, changes);
+}
+
+bool Document::walkHistory(bool undo, PaintChanges& changes) {
     changes.clear();
     if (m_tracker.inStroke())
         endStroke();
     if (m_hideRanks)
         endHide();
-    HistoryStep* step = m_history.nextRedo();
+    HistoryStep* step = undo ? m_history.nextUndo() : m_history.nextRedo();
     if (!step)
         return false;
-    m_session.add({{"op", "redo"}});
-    applyStep(*step, false, changes);
-    m_history.redone();
+    m_session.add({{"op", undo ? "undo" : "redo"}});
+    applyStep(*step, undo, changes);
+    if (undo)
+        m_history.undone();
+    else
+        m_history.redone();
     return true;
 }
 

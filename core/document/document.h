@@ -171,9 +171,11 @@ public:
     bool layerAware() const { return m_tracker.layerAware(); }
     /**
      * The paint target, created on first use with options (a texture for meshes with UVs, vertex
-     * colours otherwise). Returns nullptr and sets error if it cannot be made.
+     * colours otherwise), or the Error saying why it cannot be made.
      */
-    PaintTarget* paintTarget(std::string* error = nullptr);
+    Result<PaintTarget*> ensurePaintTarget();
+    /** ensurePaintTarget() for callers that only need to know whether there is one: nullptr. */
+    PaintTarget* paintTarget();
     /**
      * Replaces the paint target with one made with options: an undo step (the old target is
      * kept in it) when there was a target. On failure nothing changes.
@@ -246,6 +248,13 @@ private:
     StrokePoint curved(StrokePoint point) const;
     /** Applies (undo) or re-applies (redo) one step's parts. */
     void applyStep(HistoryStep& step, bool undo, PaintChanges& changes);
+    /**
+     * What painting (a stroke, a fill) needs: built layers and the paint target (made on first
+     * use); a stroke in progress is ended.
+     */
+    Result<PaintTarget*> readyToPaint();
+    /** undo() or redo(): ends a stroke or hide in progress, applies the next step, logs it. */
+    bool walkHistory(bool undo, PaintChanges& changes);
     /** Records the order change since before as a step of kind (nothing if unchanged). */
     void pushOrderStep(StepKind kind, RegionOrderState before);
     /** The layers were replaced or re-segmented: a fresh order, the tracker told. */

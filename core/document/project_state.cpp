@@ -270,7 +270,7 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
         return Error{"extras.layerpaint is not a JSON object"};
     Result<int> version = formatVersion(layerpaint);
     if (!version)
-        return Error{version.error()};
+        return version.takeError();
     if (*version > kProjectFormatVersion)
         return Error{newerMessage(*version)};
     const Json j =

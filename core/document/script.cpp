@@ -191,7 +191,7 @@ Result<Script> parseScript(const json& value) {
     if (value.contains("target")) {
         Result<PaintTargetOptions> target = targetOptions(value["target"]);
         if (!target)
-            return Error{target.error()};
+            return target.takeError();
         script.target = *target;
     }
     return script;
@@ -206,7 +206,7 @@ Result<Script> readScript(const std::string& path) {
         return Error{path + ": not valid JSON"};
     Result<Script> script = parseScript(value);
     if (!script)
-        return Error{path + ": " + script.error()};
+        return Error{path + ": " + script.error(), script.errorKind()};
     return script;
 }
 

@@ -19,10 +19,9 @@
 #include <utility>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "core/io/gltf_export.h"
+#include "core/io/image_encode.h"
+#include "core/io/ply_write.h"
 #include "core/paint/paint_target.h"
 
 namespace core {
@@ -82,96 +81,13 @@ fs::path sibling(const fs::path& path, const std::string& suffix, const std::str
 // ---------------------------------------------------------------------------------------------
 // Images
 
-struct OiioProgress {
-    const ProgressFn* progress = nullptr;
-    bool cancelled = false;
-};
-
-bool oiioProgress(void* opaque, float done) {
-    auto* p = static_cast<OiioProgress*>(opaque);
-    if (p->progress && !reportProgress(*p->progress, double(done)))
-        p->cancelled = true;
-    return p->cancelled; // true asks OIIO to stop
-}
-
-bool opaque(const Image& image) {
-    for (std::size_t i = 3; i < image.rgba.size(); i += 4)
-        if (image.rgba[i] != 255)
-            return false;
-    return true;
-}
-
-/** image encoded as format in memory; an Error with the problem (no path). */
-Result<Bytes> encodeImage(const Image& image, ExportFormat format, const ProgressFn& progress) {
-    if (image.empty() || image.rgba.size() != std::size_t(image.width) * image.height * 4)
-        return Error{"the texture is empty"};
-    const char* formatName = format == ExportFormat::Tiff  ? "tiff"
-                             : format == ExportFormat::Exr ? "openexr"
-                                                           : "png";
-    Bytes bytes;
-    OIIO::Filesystem::IOVecOutput proxy(bytes);
-    auto out = OIIO::ImageOutput::create(formatName, &proxy);
-    if (!out)
-        return Error{std::string("no ") + formatName + " encoder (" + OIIO::geterror() + ")"};
-    if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy))
-        return Error{std::string("the ") + formatName + " encoder cannot write to memory"};
-    const int channels = opaque(image) ? 3 : 4;
-    const std::size_t pixels = std::size_t(image.width) * std::size_t(image.height);
-    OIIO::TypeDesc fileType = OIIO::TypeDesc::UINT8;
-    OIIO::TypeDesc dataType = OIIO::TypeDesc::UINT8;
-    const void* data = image.rgba.data();
-    std::vector<std::uint16_t> wide;
-    std::vector<float> linear;
-    if (format == ExportFormat::Png16) {
-        fileType = dataType = OIIO::TypeDesc::UINT16;
-        wide.resize(pixels * 4);
-        for (std::size_t i = 0; i < wide.size(); ++i)
-            wide[i] = std::uint16_t(image.rgba[i] * 257u);
-        data = wide.data();
-    } else if (format == ExportFormat::Exr) {
-        fileType = OIIO::TypeDesc::HALF;
-        dataType = OIIO::TypeDesc::FLOAT;
-        // EXR holds linear colour associated with (multiplied by) alpha.
-        linear.resize(pixels * 4);
-        for (std::size_t i = 0; i < linear.size(); i += 4) {
-            const float alpha = float(image.rgba[i + 3]) / 255.0f;
-            for (std::size_t k = 0; k < 3; ++k)
-                linear[i + k] = srgbToLinear(image.rgba[i + k]) * alpha;
-            linear[i + 3] = alpha;
-        }
-        data = linear.data();
-    }
-    OIIO::ImageSpec spec(image.width, image.height, channels, fileType);
-    if (format != ExportFormat::Exr)
-        spec.attribute("oiio:UnassociatedAlpha", 1); // PNG and TIFF: straight alpha, as given
-    // OIIO 2.4's TIFF writer produces an unreadable file through an I/O proxy when given a
-    // colour space: TIFF goes without (8-bit TIFF is read as sRGB anyway).
-    if (format != ExportFormat::Tiff)
-        spec.attribute("oiio:ColorSpace", format == ExportFormat::Exr ? "Linear" : "sRGB");
-    spec.attribute("Software", "LayerPaint");
-    if (format == ExportFormat::Tiff || format == ExportFormat::Exr)
-        spec.attribute("compression", "zip");
-    // The name only tells the encoder the format (TIFF needs it even with a proxy).
-    if (!out->open(std::string("memory") + exportExtension(format), spec))
-        return Error{out->geterror()};
-    const OIIO::stride_t pixelStride = OIIO::stride_t(dataType.size() * 4);
-    OiioProgress state{&progress};
-    const bool ok = out->write_image(dataType, data, pixelStride, OIIO::AutoStride,
-                                     OIIO::AutoStride, &oiioProgress, &state) &&
-                    out->close();
-    if (state.cancelled)
-        throw Cancelled{};
-    if (!ok || bytes.empty())
-        return Error{out->geterror().empty() ? std::string("the image cannot be encoded")
-                                             : out->geterror()};
-    return bytes;
-}
-
 Status writeImageFile(const std::string& path, const Image& image, ExportFormat format,
                       const ProgressFn& progress) {
     Result<Bytes> bytes = encodeImage(image, format, part(progress, 0.0, 0.9));
+    if (bytes.cancelled())
+        throw Cancelled{};
     if (!bytes)
-        return Error{path + ": cannot be written (" + bytes.error() + ")"};
+        return Error{path + ": cannot be written (" + bytes.error() + ")", bytes.errorKind()};
     Status written = writeFileAtomically(path, bytes->data(), bytes->size(), false);
     if (written)
         step(progress, 1.0);
@@ -323,14 +239,14 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         if (Status s =
                 writeImageFile(file, images[i], ExportFormat::Png8, part(progress, from, to));
             !s)
-            return Error{s.error()};
+            return s.takeError();
         written.push_back(file);
     }
     if (Status s = writeBytes(mtlPath.string(), mtl); !s)
-        return Error{s.error()};
+        return s.takeError();
     written.push_back(mtlPath.string());
     if (Status s = writeBytes(path.string(), obj); !s)
-        return Error{s.error()};
+        return s.takeError();
     written.push_back(path.string());
     return written;
 }
@@ -370,48 +286,12 @@ std::vector<glm::vec4> vertexColors(const Mesh& mesh, const ProgressFn& progress
 Result<std::vector<std::string>> writePly(const fs::path& path, const Mesh& mesh,
                                           const ProgressFn& progress) {
     const std::vector<glm::vec4> colors = vertexColors(mesh, part(progress, 0.0, 0.5));
-    std::string out = "ply\nformat binary_little_endian 1.0\ncomment LayerPaint export\n"
-                      "element vertex ";
-    appendInt(out, mesh.vertexCount());
-    out += "\nproperty float x\nproperty float y\nproperty float z\n"
-           "property float nx\nproperty float ny\nproperty float nz\n";
-    // UVs keep the twins of a texture seam apart (importers join identical vertices).
-    const bool uvs = mesh.hasUvs();
-    if (uvs)
-        out += "property float s\nproperty float t\n";
-    out += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n"
-           "element face ";
-    appendInt(out, mesh.triangleCount());
-    out += "\nproperty list uchar uint vertex_indices\nend_header\n";
-    const std::size_t header = out.size();
-    const std::size_t vertexBytes = 6 * 4 + (uvs ? 8 : 0) + 4;
-    out.resize(header + mesh.vertexCount() * vertexBytes + mesh.triangleCount() * 13);
-    char* p = out.data() + header;
-    for (std::size_t v = 0; v < mesh.vertexCount(); ++v) {
-        std::memcpy(p, &mesh.positions[v], 12);
-        std::memcpy(p + 12, &mesh.normals[v], 12);
-        std::size_t at = 24;
-        if (uvs) {
-            const float st[2] = {mesh.uvs[v].x, 1.0f - mesh.uvs[v].y}; // t runs up, as in OBJ
-            std::memcpy(p + at, st, 8);
-            at += 8;
-        }
-        const glm::vec4& c = colors[v];
-        const std::uint8_t rgba[4] = {
-            linearToSrgb(c.r), linearToSrgb(c.g), linearToSrgb(c.b),
-            std::uint8_t(std::lround(std::clamp(c.a, 0.0f, 1.0f) * 255.0f))};
-        std::memcpy(p + at, rgba, 4);
-        p += vertexBytes;
-    }
-    step(progress, 0.7);
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        *p++ = 3;
-        std::memcpy(p, &mesh.indices[3 * t], 12);
-        p += 12;
-    }
+    PlyContents contents;
+    contents.colors = &colors;
+    const std::string out = encodePly(mesh, contents);
     step(progress, 0.8);
     if (Status s = writeBytes(path.string(), out); !s)
-        return Error{s.error()};
+        return s.takeError();
     return std::vector<std::string>{path.string()};
 }
 
@@ -419,8 +299,9 @@ Result<std::vector<std::string>> exportModel(const std::string& path, ExportForm
                                              const Mesh& mesh, const ProgressFn& progress) {
     if (isTextureFormat(format))
         return Error{path + ": " + exportFormatName(format) + " holds a texture, not a model"};
-    if (std::string problem = mesh.validate(); !problem.empty())
-        return Error{path + ": the model cannot be exported (" + problem + ")"};
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{path + ": the model cannot be exported (" + valid.error() + ")",
+                     ErrorKind::BadInput};
     step(progress, 0.0);
     const fs::path target(path);
     Result<std::vector<std::string>> written = std::vector<std::string>{};
@@ -428,12 +309,12 @@ Result<std::vector<std::string>> exportModel(const std::string& path, ExportForm
     case ExportFormat::Glb: {
         Result<Bytes> bytes = encodeGlb(mesh, {}, part(progress, 0.0, 0.9));
         if (!bytes) {
-            if (bytes.error() == "cancelled")
+            if (bytes.cancelled())
                 throw Cancelled{};
-            return Error{path + ": " + bytes.error()};
+            return Error{path + ": " + bytes.error(), bytes.errorKind()};
         }
         if (Status s = writeFileAtomically(path, bytes->data(), bytes->size(), false); !s)
-            return Error{s.error()};
+            return s.takeError();
         written = std::vector<std::string>{path};
         break;
     }
@@ -535,7 +416,7 @@ Result<std::vector<std::string>> exportMesh(const std::string& path, ExportForma
     try {
         return exportModel(path, format, mesh, progress);
     } catch (const Cancelled&) {
-        return Error{path + ": cancelled"};
+        return cancelledError(path + ": cancelled");
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to export the model"};
     } catch (const std::exception& e) {
@@ -551,7 +432,7 @@ Status exportTexture(const std::string& path, ExportFormat format, const Image& 
         step(progress, 0.0);
         return writeImageFile(path, image, format, progress);
     } catch (const Cancelled&) {
-        return Error{path + ": cancelled"};
+        return cancelledError(path + ": cancelled");
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to export the texture"};
     } catch (const std::exception& e) {
@@ -576,7 +457,7 @@ Result<std::vector<std::string>> exportTextures(const std::string& path, ExportF
         if (Status s = exportTexture(file, format, pages[i],
                                      part(progress, double(i) / n, double(i + 1) / n));
             !s)
-            return Error{s.error()};
+            return s.takeError();
         written.push_back(file);
     }
     return written;

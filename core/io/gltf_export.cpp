@@ -2,21 +2,16 @@
 // Binary glTF 2.0 writer. The GLB container is written here with nlohmann::json rather than
 // through tinygltf's writer: the layout (one buffer, 4-byte aligned views, strides, PNG images in
 // views) is then exactly what mesh_io_gltf.cpp reads back, and no image is re-encoded behind our
-// back. Images are encoded to PNG in memory by OpenImageIO.
+// back. Images are encoded to PNG in memory by encodeImage() (image_encode.h).
 #include "core/io/gltf_export.h"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
-#include <cerrno>
 #include <cmath>
-#include <csignal>
-#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <new>
 #include <span>
@@ -25,15 +20,11 @@
 #include <system_error>
 #include <vector>
 
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <glm/common.hpp>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
+#include "core/io/atomic_write.h"
+#include "core/io/glb_container.h"
+#include "core/io/image_encode.h"
 #include "core/io/json_depth.h"
 
 static_assert(std::endian::native == std::endian::little,
@@ -47,19 +38,12 @@ namespace fs = std::filesystem;
 using Json = nlohmann::json;
 using Bytes = std::vector<std::uint8_t>;
 
-constexpr std::uint32_t kGlbMagic = 0x46546C67u;    // "glTF"
-constexpr std::uint32_t kChunkJson = 0x4E4F534Au;   // "JSON"
-constexpr std::uint32_t kChunkBin = 0x004E4942u;    // "BIN\0"
 constexpr std::uint64_t kMaxGlbBytes = 0xFFFFFFFFu; // the header's length is 32 bits
 constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
 constexpr std::uint64_t kMaxJsonBytes = 256ull << 20;
-
-std::string errnoText(int err) {
-    return std::error_code(err, std::generic_category()).message();
-}
 
 std::size_t padded4(std::size_t n) {
     return (n + 3) & ~std::size_t{3};
@@ -69,46 +53,6 @@ void putU32(Bytes& out, std::uint32_t v) {
     const auto at = out.size();
     out.resize(at + 4);
     std::memcpy(out.data() + at, &v, 4);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Images
-
-/**
- * img as PNG in memory; empty with why set if it cannot be encoded. Fully opaque images are
- * written as RGB (smaller, and decoded back to alpha 255). Alpha is straight, as glTF wants.
- */
-Bytes encodePng(const Image& img, std::string& why) {
-    Bytes png;
-    OIIO::Filesystem::IOVecOutput proxy(png);
-    auto out = OIIO::ImageOutput::create("png", &proxy);
-    if (!out) {
-        why = "no PNG encoder (" + OIIO::geterror() + ")";
-        return {};
-    }
-    if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy)) {
-        why = "the PNG encoder cannot write to memory";
-        return {};
-    }
-    bool opaque = true;
-    for (std::size_t i = 3; i < img.rgba.size() && opaque; i += 4)
-        opaque = img.rgba[i] == 255;
-    const int channels = opaque ? 3 : 4;
-    OIIO::ImageSpec spec(img.width, img.height, channels, OIIO::TypeDesc::UINT8);
-    // Without this the PNG writer would un-premultiply the colours by alpha.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    if (!out->open("memory.png", spec)) {
-        why = out->geterror();
-        return {};
-    }
-    // RGB is read out of the RGBA pixels with a 4-byte pixel stride.
-    const bool ok = out->write_image(OIIO::TypeDesc::UINT8, img.rgba.data(), 4) && out->close();
-    if (!ok || png.empty()) {
-        why = out->geterror();
-        return {};
-    }
-    return png;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -236,12 +180,12 @@ struct GlbParts {
 };
 
 Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const ProgressFn& progress) {
-    if (std::string problem = mesh.validate(); !problem.empty())
-        return Error{"the mesh cannot be saved (" + problem + ")"};
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
     if (!extras.is_null() && !extras.is_object())
         return Error{"the extras to save are not a JSON object"};
     if (!reportProgress(progress, 0.0))
-        return Error{"cancelled"};
+        return cancelledError();
 
     const std::vector<Run> runs = materialRuns(mesh);
     const RunGeometry g = gatherRuns(mesh, runs);
@@ -254,7 +198,7 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
         mesh.hasColors() ? bin.addView(g.colors.data(), g.colors.size() * 4, kArrayBuffer, 16) : -1;
     const int idxView = bin.addView(g.indices.data(), g.indices.size() * 4, kElementArrayBuffer, 0);
     if (!reportProgress(progress, 0.2))
-        return Error{"cancelled"};
+        return cancelledError();
 
     Json accessors = Json::array();
     auto addAccessor = [&](int view, std::size_t element, std::size_t first, std::size_t count,
@@ -305,19 +249,19 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
     }
     Json images = Json::array(), textures = Json::array();
     for (std::size_t k = 0; k < written.size(); ++k) {
-        std::string why;
-        const Bytes png = encodePng(mesh.textures[written[k]], why);
-        if (png.empty())
-            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG" +
-                         (why.empty() ? std::string() : " (" + why + ")")};
-        const int view = bin.addView(png.data(), png.size(), 0, 0);
+        const Result<Bytes> png = encodeImage(mesh.textures[written[k]], ExportFormat::Png8);
+        if (!png)
+            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG (" +
+                             png.error() + ")",
+                         png.errorKind()};
+        const int view = bin.addView(png->data(), png->size(), 0, 0);
         images.push_back({{"bufferView", view},
                           {"mimeType", "image/png"},
                           {"name", "texture " + std::to_string(written[k])}});
         textures.push_back({{"source", k}, {"sampler", 0}});
         if (!reportProgress(progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
                                                 static_cast<double>(written.size())))
-            return Error{"cancelled"};
+            return cancelledError();
     }
 
     Json materials = Json::array();
@@ -368,262 +312,18 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
 
     GlbParts parts;
     parts.head.reserve(28 + json.size());
-    putU32(parts.head, kGlbMagic);
+    putU32(parts.head, glb::kMagic);
     putU32(parts.head, 2);
     putU32(parts.head, static_cast<std::uint32_t>(total));
     putU32(parts.head, static_cast<std::uint32_t>(json.size()));
-    putU32(parts.head, kChunkJson);
+    putU32(parts.head, glb::kChunkJson);
     parts.head.insert(parts.head.end(), json.begin(), json.end());
     putU32(parts.head, static_cast<std::uint32_t>(bin.bytes().size()));
-    putU32(parts.head, kChunkBin);
+    putU32(parts.head, glb::kChunkBin);
     parts.bin = std::move(bin.bytes());
     if (!reportProgress(progress, 0.95))
-        return Error{"cancelled"};
+        return cancelledError();
     return parts;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Atomic writing
-
-/** Closes a file descriptor when it goes out of scope (unless released). */
-class FileDescriptor {
-public:
-    explicit FileDescriptor(int fd = -1) : m_fd(fd) {}
-    ~FileDescriptor() {
-        if (m_fd >= 0)
-            ::close(m_fd);
-    }
-    FileDescriptor(const FileDescriptor&) = delete;
-    FileDescriptor& operator=(const FileDescriptor&) = delete;
-    int get() const { return m_fd; }
-    /** Closes now; the errno of a failed close, else 0 (NFS reports write errors here). */
-    int close() {
-        const int fd = m_fd;
-        m_fd = -1;
-        return fd >= 0 && ::close(fd) != 0 ? errno : 0;
-    }
-
-private:
-    int m_fd;
-};
-
-/** Removes a file when it goes out of scope (unless released). */
-class RemoveOnExit {
-public:
-    RemoveOnExit() = default;
-    ~RemoveOnExit() {
-        if (!m_path.empty())
-            ::unlink(m_path.c_str());
-    }
-    RemoveOnExit(const RemoveOnExit&) = delete;
-    RemoveOnExit& operator=(const RemoveOnExit&) = delete;
-    void set(const std::string& path) { m_path = path; }
-    void release() { m_path.clear(); }
-
-private:
-    std::string m_path;
-};
-
-/** Writes every byte, retrying short writes and interruptions; 0 or the errno. */
-int writeAll(int fd, const std::uint8_t* data, std::size_t size) {
-    while (size > 0) {
-        const ssize_t n = ::write(fd, data, std::min<std::size_t>(size, 1u << 30));
-        if (n < 0) {
-            if (errno == EINTR)
-                continue;
-            return errno;
-        }
-        if (n == 0)
-            return EIO;
-        data += n;
-        size -= static_cast<std::size_t>(n);
-    }
-    return 0;
-}
-
-/**
- * Calls make(name) with fresh hidden names next to target until it does not fail with EEXIST;
- * make returns -1 with errno set on failure. The result of the last call.
- */
-template <typename Make>
-int withUniqueName(const fs::path& target, const char* suffix, std::string& name, Make make) {
-    static std::atomic<unsigned> counter{0};
-    // Short enough that the name stays within NAME_MAX whatever the target's name.
-    const std::string base = target.filename().string().substr(0, 160);
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        name = (target.parent_path() / ("." + base + "." + std::to_string(::getpid()) + "-" +
-                                        std::to_string(counter++) + suffix))
-                   .string();
-        const int result = make(name);
-        if (result >= 0 || errno != EEXIST)
-            return result;
-    }
-    errno = EEXIST;
-    return -1;
-}
-
-/**
- * Creates a new file next to target with a unique hidden name (mode 0666 less the umask, or
- * mode when >= 0); the descriptor, or -1 with errno set.
- */
-int createTemporary(const fs::path& target, const char* suffix, int mode, std::string& name) {
-    return withUniqueName(target, suffix, name, [mode](const std::string& n) {
-        return ::open(n.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC,
-                      mode >= 0 ? static_cast<mode_t>(mode) : 0666);
-    });
-}
-
-/**
- * Removes the temporary files that saves of target (or of its backup) by processes that no
- * longer run left behind: a save killed mid-write leaves its hidden ".NAME.PID-N.tmp". Files of
- * running processes, and anything that does not parse as such a name, are left alone.
- */
-void removeStaleTemporaries(const fs::path& target) {
-    std::error_code ec;
-    for (const std::string& base : {target.filename().string().substr(0, 160),
-                                    (target.filename().string() + ".bak").substr(0, 160)}) {
-        const std::string prefix = "." + base + ".";
-        for (fs::directory_iterator it(target.parent_path(), ec), end; !ec && it != end;
-             it.increment(ec)) {
-            const std::string name = it->path().filename().string();
-            if (name.size() <= prefix.size() + 4 || name.rfind(prefix, 0) != 0 ||
-                !name.ends_with(".tmp"))
-                continue;
-            const std::string middle =
-                name.substr(prefix.size(), name.size() - prefix.size() - 4); // "PID-N"
-            const std::size_t dash = middle.find('-');
-            if (dash == std::string::npos || dash == 0 || dash + 1 == middle.size() ||
-                !std::all_of(middle.begin(), middle.end(),
-                             [](char c) { return c == '-' || (c >= '0' && c <= '9'); }))
-                continue;
-            const long pid = std::strtol(middle.substr(0, dash).c_str(), nullptr, 10);
-            if (pid <= 0 || pid == ::getpid())
-                continue;
-            // Running (its save may be under way), or not ours to tell (EPERM): keep.
-            if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
-                continue;
-            ::unlink(it->path().c_str());
-        }
-    }
-}
-
-/** fsync's a folder so a rename in it survives a crash; failures are not fatal. */
-void syncFolder(const fs::path& folder) {
-    const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd >= 0) {
-        ::fsync(fd);
-        ::close(fd);
-    }
-}
-
-/** Writes parts into a new temporary file next to target; its name, or an Error detail. */
-Result<std::string> writeTemporary(const fs::path& target,
-                                   std::span<const std::span<const std::uint8_t>> parts, int mode,
-                                   const char* suffix) {
-    std::string name;
-    FileDescriptor fd(createTemporary(target, suffix, mode, name));
-    if (fd.get() < 0)
-        return Error{"no file can be created in the folder " + target.parent_path().string() +
-                     " (" + errnoText(errno) + ")"};
-    RemoveOnExit cleanup;
-    cleanup.set(name);
-    if (mode >= 0)
-        ::fchmod(fd.get(), static_cast<mode_t>(mode)); // the umask must not narrow the old mode
-    for (const auto& part : parts)
-        if (const int err = writeAll(fd.get(), part.data(), part.size()); err != 0)
-            return Error{"writing failed (" + errnoText(err) + ")"};
-    if (::fsync(fd.get()) != 0)
-        return Error{"writing failed (" + errnoText(errno) + ")"};
-    if (const int err = fd.close(); err != 0)
-        return Error{"writing failed (" + errnoText(err) + ")"};
-    cleanup.release();
-    return name;
-}
-
-/** Copies file from to a new temporary file next to target; its name, or an Error detail. */
-Result<std::string> copyToTemporary(const fs::path& from, const fs::path& target, int mode) {
-    std::ifstream in(from, std::ios::binary);
-    if (!in)
-        return Error{"the previous file cannot be read"};
-    Bytes bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad())
-        return Error{"the previous file cannot be read"};
-    const std::span<const std::uint8_t> one[] = {bytes};
-    return writeTemporary(target, one, mode, ".tmp");
-}
-
-/**
- * Makes backup a copy of file (a hard link when the file system has them, so nothing is copied),
- * replacing an older backup in one rename. An empty string, or what went wrong.
- */
-std::string makeBackup(const fs::path& file, const fs::path& backup, int mode) {
-    std::string temporary;
-    const int linked = withUniqueName(backup, ".tmp", temporary, [&](const std::string& n) {
-        return ::link(file.c_str(), n.c_str());
-    });
-    if (linked != 0) {
-        Result<std::string> copy = copyToTemporary(file, backup, mode);
-        if (!copy)
-            return "no backup of the previous file can be kept (" + copy.error() + ")";
-        temporary = std::move(copy).value();
-    }
-    if (::rename(temporary.c_str(), backup.c_str()) != 0) {
-        const int err = errno;
-        ::unlink(temporary.c_str());
-        return "no backup of the previous file can be kept as " + backup.string() + " (" +
-               errnoText(err) + ")";
-    }
-    // When the backup already was a link to the file (a save killed between making the backup
-    // and replacing the file), rename() does nothing and leaves the temporary link: remove it.
-    ::unlink(temporary.c_str());
-    return {};
-}
-
-Status writeAtomically(const std::string& path,
-                       std::span<const std::span<const std::uint8_t>> parts, bool backup) {
-    auto fail = [&](const std::string& detail) {
-        return Status(Error{path + ": cannot be saved: " + detail});
-    };
-    if (path.empty())
-        return Status(Error{"(no file name): no file was given"});
-    fs::path target(path);
-    std::error_code ec;
-    // Replace the file a link points to, not the link.
-    if (fs::is_symlink(target, ec)) {
-        const fs::path real = fs::canonical(target, ec);
-        if (ec)
-            return fail("it is a symbolic link to a missing file");
-        target = real;
-    }
-    if (target.parent_path().empty())
-        target = fs::path(".") / target;
-    if (!target.has_filename())
-        return fail("the path names a folder");
-
-    struct stat old {};
-    const bool exists = ::stat(target.c_str(), &old) == 0;
-    if (exists && !S_ISREG(old.st_mode))
-        return fail(S_ISDIR(old.st_mode) ? "a folder of that name exists"
-                                         : "it exists and is not a regular file");
-    const int mode = exists ? static_cast<int>(old.st_mode & 07777) : -1;
-
-    Result<std::string> temporary = writeTemporary(target, parts, mode, ".tmp");
-    if (!temporary)
-        return fail(temporary.error());
-    RemoveOnExit cleanup;
-    cleanup.set(temporary.value());
-    if (exists && backup) {
-        fs::path backupPath = target;
-        backupPath += ".bak";
-        if (std::string problem = makeBackup(target, backupPath, mode); !problem.empty())
-            return fail(problem);
-    }
-    if (::rename(temporary.value().c_str(), target.c_str()) != 0)
-        return fail("the file cannot be replaced (" + errnoText(errno) + ")");
-    cleanup.release();
-    syncFolder(target.parent_path());
-    removeStaleTemporaries(target);
-    return {};
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -632,37 +332,27 @@ Status writeAtomically(const std::string& path,
 Result<Json> readExtras(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
-        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist"};
+        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
+                     ErrorKind::Io};
     const std::uintmax_t size = fs::file_size(path, ec);
     if (ec)
-        return Error{"cannot be read (" + ec.message() + ")"};
+        return Error{"cannot be read (" + ec.message() + ")", ErrorKind::Io};
     if (size == 0)
         return Error{"is empty"};
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        return Error{"cannot be read"};
-    std::uint8_t header[20] = {};
-    in.read(reinterpret_cast<char*>(header),
-            std::min<std::streamsize>(20, static_cast<std::streamsize>(size)));
+        return Error{"cannot be read", ErrorKind::Io};
+    std::uint8_t header[glb::kHeadBytes] = {};
+    const auto headSize = std::min<std::uint64_t>(glb::kHeadBytes, size);
+    in.read(reinterpret_cast<char*>(header), static_cast<std::streamsize>(headSize));
+    const std::span<const std::uint8_t> head(header, static_cast<std::size_t>(headSize));
     std::uint64_t jsonOffset = 0, jsonLength = size;
-    auto u32 = [&](int at) {
-        std::uint32_t v = 0;
-        std::memcpy(&v, header + at, 4);
-        return v;
-    };
-    if (size >= 4 && u32(0) == kGlbMagic) {
-        if (size < 20)
-            return Error{"the binary glTF file is truncated (no JSON chunk)"};
-        if (u32(4) != 2)
-            return Error{"binary glTF version " + std::to_string(u32(4)) +
-                         " is not supported (only 2)"};
-        if (u32(16) != kChunkJson)
-            return Error{"the first chunk of the binary glTF file is not JSON"};
-        jsonOffset = 20;
-        jsonLength = u32(12);
-        const std::uint64_t declared = std::min<std::uint64_t>(u32(8), size);
-        if (jsonLength == 0 || 20 + jsonLength > declared)
-            return Error{"the binary glTF file is truncated (the JSON chunk runs past the end)"};
+    if (glb::hasMagic(head)) {
+        Result<glb::Layout> layout = glb::readHead(head, size);
+        if (!layout)
+            return layout.takeError();
+        jsonOffset = layout->jsonOffset;
+        jsonLength = layout->jsonLength;
     }
     if (jsonLength > kMaxJsonBytes)
         return Error{"the glTF JSON is too large (" + std::to_string(jsonLength) + " bytes)"};
@@ -670,7 +360,7 @@ Result<Json> readExtras(const std::string& path) {
     in.clear();
     in.seekg(static_cast<std::streamoff>(jsonOffset));
     if (!in.read(text.data(), static_cast<std::streamsize>(jsonLength)))
-        return Error{"cannot be read"};
+        return Error{"cannot be read", ErrorKind::Io};
     if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
     Json root;
@@ -700,7 +390,7 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
-            return Error{parts.error()};
+            return parts.takeError();
         Bytes out = std::move(parts->head);
         out.insert(out.end(), parts->bin.begin(), parts->bin.end());
         return out;
@@ -716,9 +406,9 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
     try {
         Result<GlbParts> parts = encodeParts(mesh, extras, progress);
         if (!parts)
-            return Status(Error{path + ": " + parts.error()});
+            return Status(Error{path + ": " + parts.error(), parts.errorKind()});
         const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
-        Status status = writeAtomically(path, spans, keepBackup);
+        Status status = writePartsAtomically(path, spans, keepBackup);
         if (status)
             reportProgress(progress, 1.0); // too late to cancel: the file is saved
         return status;
@@ -729,22 +419,11 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
     }
 }
 
-Status writeFileAtomically(const std::string& path, const void* data, std::size_t size,
-                           bool keepBackup) {
-    try {
-        const std::span<const std::uint8_t> spans[] = {
-            {static_cast<const std::uint8_t*>(data), size}};
-        return writeAtomically(path, spans, keepBackup);
-    } catch (const std::exception& e) {
-        return Status(Error{path + ": cannot be saved (" + std::string(e.what()) + ")"});
-    }
-}
-
 Result<nlohmann::json> readGlbExtras(const std::string& path) {
     try {
         Result<Json> extras = readExtras(path);
         if (!extras)
-            return Error{path + ": " + extras.error()};
+            return Error{path + ": " + extras.error(), extras.errorKind()};
         return extras;
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to read the file"};

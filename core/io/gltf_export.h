@@ -10,6 +10,7 @@
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
+#include "core/io/atomic_write.h"
 #include "core/model/mesh.h"
 
 namespace core {
@@ -47,16 +48,5 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
  * not an object.
  */
 Result<nlohmann::json> readGlbExtras(const std::string& path);
-
-/**
- * Writes size bytes to path atomically (docs/architecture.md §6): a temporary file in the same
- * folder is written, flushed and fsync'ed, then renamed over path. With keepBackup, an existing
- * file is first kept as path + ".bak" (replacing an older backup). A symbolic link at path is
- * followed, so the file it points to is replaced. The new file gets the old one's permissions (else
- * the default ones). On failure (missing or unwritable folder, disk full, ...) nothing at path
- * changes, the temporary file is removed, and the Error names path and the problem.
- */
-Status writeFileAtomically(const std::string& path, const void* data, std::size_t size,
-                           bool keepBackup = true);
 
 } // namespace core

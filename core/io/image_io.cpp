@@ -34,26 +34,28 @@ bool startsWith(const std::uint8_t* data, std::size_t size, std::string_view mag
  */
 std::string formatName(const std::uint8_t* data, std::size_t size, const std::string& name) {
     using namespace std::string_view_literals;
-    if (startsWith(data, size, "\x89PNG\r\n\x1a\n"sv))
-        return "png";
-    if (startsWith(data, size, "\xff\xd8\xff"sv))
-        return "jpeg";
-    if (startsWith(data, size, "GIF8"sv))
-        return "gif";
-    if (startsWith(data, size, "BM"sv))
-        return "bmp";
-    if (startsWith(data, size, "II*\0"sv) || startsWith(data, size, "MM\0*"sv))
-        return "tiff";
-    if (size >= 12 && startsWith(data, size, "RIFF"sv) && std::memcmp(data + 8, "WEBP", 4) == 0)
-        return "webp";
-    if (startsWith(data, size, "\x76\x2f\x31\x01"sv))
-        return "openexr";
-    if (startsWith(data, size, "#?"sv))
-        return "hdr";
-    if (startsWith(data, size, "DDS "sv))
-        return "dds";
-    if (startsWith(data, size, "8BPS"sv))
-        return "psd";
+    struct Signature {
+        std::string_view magic;
+        const char* format;
+        std::string_view at8 = {}; // what follows at byte 8, if anything
+    };
+    static constexpr Signature kSignatures[] = {
+        {"\x89PNG\r\n\x1a\n"sv, "png"},
+        {"\xff\xd8\xff"sv, "jpeg"},
+        {"GIF8"sv, "gif"},
+        {"BM"sv, "bmp"},
+        {"II*\0"sv, "tiff"},
+        {"MM\0*"sv, "tiff"},
+        {"RIFF"sv, "webp", "WEBP"sv},
+        {"\x76\x2f\x31\x01"sv, "openexr"},
+        {"#?"sv, "hdr"},
+        {"DDS "sv, "dds"},
+        {"8BPS"sv, "psd"},
+    };
+    for (const Signature& s : kSignatures)
+        if (startsWith(data, size, s.magic) &&
+            (s.at8.empty() || (size >= 8 && startsWith(data + 8, size - 8, s.at8))))
+            return s.format;
     const std::size_t dot = name.find_last_of('.');
     if (dot == std::string::npos || dot + 1 >= name.size())
         return {};
@@ -92,29 +94,31 @@ std::uint32_t bigEndian32(const std::uint8_t* p) {
  * longjmp through OpenImageIO's reader, which leaks and prints to stderr; most damage (truncated
  * or garbled files) is caught here first instead.
  */
-std::string checkPngChunks(const std::uint8_t* data, std::size_t size) {
+Status checkPngChunks(const std::uint8_t* data, std::size_t size) {
     std::size_t pos = 8;
     bool first = true, haveData = false;
     while (true) {
         if (size - pos < 12)
-            return "the PNG data is truncated";
+            return Error{"the PNG data is truncated", ErrorKind::BadInput};
         const std::uint32_t length = bigEndian32(data + pos);
         const std::uint8_t* type = data + pos + 4;
         if (length > 0x7FFFFFFFu || size - pos - 12 < length)
-            return "the PNG data is truncated";
+            return Error{"the PNG data is truncated", ErrorKind::BadInput};
         for (int k = 0; k < 4; ++k)
             if (!std::isalpha(type[k]))
-                return "the PNG data is corrupt (invalid chunk type)";
+                return Error{"the PNG data is corrupt (invalid chunk type)", ErrorKind::BadInput};
         if (crc32(type, length + 4u) != bigEndian32(type + 4 + length))
-            return "the PNG data is corrupt (a chunk checksum does not match)";
+            return Error{"the PNG data is corrupt (a chunk checksum does not match)",
+                         ErrorKind::BadInput};
         const std::string_view name(reinterpret_cast<const char*>(type), 4);
         if (first && (name != "IHDR" || length != 13))
-            return "the PNG data is corrupt (no header chunk)";
+            return Error{"the PNG data is corrupt (no header chunk)", ErrorKind::BadInput};
         first = false;
         haveData = haveData || name == "IDAT";
         pos += 12 + length;
         if (name == "IEND")
-            return haveData ? std::string() : "the PNG data has no image data";
+            return haveData ? Status()
+                            : Status(Error{"the PNG data has no image data", ErrorKind::BadInput});
     }
 }
 
@@ -130,10 +134,10 @@ Result<Image> decode(const std::uint8_t* data, std::size_t size, const std::stri
                      const std::string& name, const LoadLimits& limits) {
     const std::string format = formatName(data, size, name);
     if (format.empty())
-        return Error{label + ": unknown image format"};
+        return Error{label + ": unknown image format", ErrorKind::Unsupported};
     if (format == "png")
-        if (std::string problem = checkPngChunks(data, size); !problem.empty())
-            return Error{label + ": " + problem};
+        if (Status checked = checkPngChunks(data, size); !checked)
+            return Error{label + ": " + checked.error(), checked.errorKind()};
 
     OIIO::Filesystem::IOMemReader proxy(data, size);
     OIIO::ImageSpec config;

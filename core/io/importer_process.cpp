@@ -15,6 +15,7 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -50,6 +51,7 @@ using Clock = std::chrono::steady_clock;
 
 constexpr const char* kImporterName = "layerpaint-import";
 constexpr const char* kImporterVariable = "LAYERPAINT_IMPORTER";
+constexpr const char* kImporterStderrVariable = "LAYERPAINT_IMPORTER_STDERR";
 /** How often cancel and the deadline are checked while waiting for the importer. */
 constexpr auto kCheckInterval = std::chrono::milliseconds(100);
 
@@ -175,10 +177,14 @@ Result<Process> spawnImporter(const std::string& program) {
     ::posix_spawnattr_init(&attributes);
     ::posix_spawn_file_actions_adddup2(&actions, in[1], 0);
     ::posix_spawn_file_actions_adddup2(&actions, out[1], 1);
-    // Its messages (a decoder's warning, a sanitizer's report) go where ours go, unless that is
-    // a regular file: the importer may not write files at all (RLIMIT_FSIZE 0 would kill it).
+    // What a parser prints (a decoder's warning, the C library's "free(): invalid pointer" as a
+    // damaged heap aborts it) is not for the user: the error message says what happened. With
+    // LAYERPAINT_IMPORTER_STDERR=1 its messages (a sanitizer's report) go where ours go, unless
+    // that is a regular file: the importer may not write files (RLIMIT_FSIZE 0 would kill it).
     struct stat errStat {};
-    if (::fstat(STDERR_FILENO, &errStat) != 0 || S_ISREG(errStat.st_mode))
+    const char* passStderr = std::getenv(kImporterStderrVariable);
+    if (passStderr == nullptr || std::string_view(passStderr) != "1" ||
+        ::fstat(STDERR_FILENO, &errStat) != 0 || S_ISREG(errStat.st_mode))
         ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 34))
     ::posix_spawn_file_actions_addclosefrom_np(&actions, 3);
@@ -416,7 +422,7 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
                                        const ProgressFn& progress, const LoadLimits& limits) {
     Result<std::string> program = findImporter();
     if (!program)
-        return detail::fileError(path, program.error());
+        return detail::fileError(path, program.error(), ErrorKind::Failed);
     LoadLimits resolved = limits;
     resolved.maxSeconds = detail::importSeconds(path, limits);
     std::vector<std::string> args = limitArgs(resolved);
@@ -427,7 +433,7 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
 
     ImporterRun run(progress, resolved.maxSeconds);
     if (std::string problem = run.start(*program, args); !problem.empty())
-        return detail::fileError(path, problem);
+        return detail::fileError(path, problem, ErrorKind::Failed);
     importer::Received received =
         importer::readFrames(run, limits, [&run](double f) { return run.report(f); });
     const bool answered = received.mesh || received.image || received.error;
@@ -436,7 +442,7 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
 
     const std::string stopped = "the importer stopped: ";
     if (received.cancelled || run.stop() == ImporterRun::Stop::Cancelled)
-        return detail::fileError(path, "cancelled");
+        return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
     if (run.stop() == ImporterRun::Stop::TimedOut)
         return detail::fileError(path, stopped + "it did not finish within " +
                                            secondsText(resolved.maxSeconds));
@@ -472,12 +478,12 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
         return loadMeshInProcess(path, progress, limits);
     try {
         if (Result<fs::path> checked = detail::checkModelFile(path, limits); !checked)
-            return Error{checked.error()};
+            return checked.takeError();
         if (!reportProgress(progress, 0.0))
-            return detail::fileError(path, "cancelled");
+            return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
         Result<importer::Received> received = runImporter(path, nullptr, progress, limits);
         if (!received)
-            return Error{received.error()};
+            return received.takeError();
         if (received->error)
             return fromImporter(path, *received->error);
         if (!received->mesh)
@@ -485,17 +491,18 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
         Mesh mesh = std::move(*received->mesh);
         // Its output is checked as if it came from the file itself.
         const std::size_t warnings = mesh.warnings.size();
-        if (std::string problem = detail::finishMesh(mesh, limits); !problem.empty())
-            return detail::fileError(path, "the importer sent an invalid mesh (" + problem + ")");
+        if (const Status finished = detail::finishMesh(mesh, limits); !finished)
+            return detail::fileError(path, "the importer sent an invalid mesh (" +
+                                               finished.error() + ")");
         if (mesh.warnings.size() != warnings)
             mesh.warnings.push_back("the importer sent values that had to be repaired");
         if (!reportProgress(progress, 1.0))
-            return detail::fileError(path, "cancelled");
+            return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
         return mesh;
     } catch (const std::bad_alloc&) {
-        return detail::fileError(path, "not enough memory to load the file");
+        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
     } catch (const std::exception& e) {
-        return detail::fileError(path, e.what());
+        return detail::fileError(path, e.what(), ErrorKind::Failed);
     }
 }
 
@@ -516,16 +523,16 @@ Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits) {
     try {
         Result<importer::Received> received = runImporter(path, "--image", {}, limits);
         if (!received)
-            return Error{received.error()};
+            return received.takeError();
         if (received->error)
             return fromImporter(path, *received->error);
         if (!received->image)
             return detail::fileError(path, "the importer stopped: it sent no image");
         return std::move(*received->image);
     } catch (const std::bad_alloc&) {
-        return detail::fileError(path, "not enough memory to load the file");
+        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
     } catch (const std::exception& e) {
-        return detail::fileError(path, e.what());
+        return detail::fileError(path, e.what(), ErrorKind::Failed);
     }
 }
 

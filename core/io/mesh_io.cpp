@@ -44,28 +44,68 @@ bool finite(const glm::vec3& v) {
 
 namespace detail {
 
-Error fileError(const std::string& path, std::string problem) {
+Error fileError(const std::string& path, std::string problem, ErrorKind kind) {
     for (char& c : problem)
         if (c == '\n' || c == '\r' || c == '\t')
             c = ' ';
     while (!problem.empty() && (problem.back() == ' ' || problem.back() == '.'))
         problem.pop_back();
-    return Error{path + ": " + (problem.empty() ? std::string("cannot be loaded") : problem)};
+    return Error{path + ": " + (problem.empty() ? std::string("cannot be loaded") : problem), kind};
 }
 
-std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
+Error fileError(const std::string& path, const Error& error) {
+    return fileError(path, error.message,
+                     error.kind == ErrorKind::Failed ? ErrorKind::BadInput : error.kind);
+}
+
+Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
+                                        std::size_t vertexCount, const Mesh& mesh,
+                                        const LoadLimits& limits) {
+    UsedVertices used;
+    used.remap.assign(vertexCount, std::numeric_limits<std::uint32_t>::max());
+    for (std::uint32_t v : tris)
+        used.remap[v] = 0;
+    for (std::uint32_t& r : used.remap)
+        if (r == 0)
+            r = static_cast<std::uint32_t>(used.count++);
+    if (mesh.positions.size() + used.count > limits.maxVertices)
+        return Error{"too many vertices (more than " + std::to_string(limits.maxVertices) + ")",
+                     ErrorKind::BadInput};
+    if (mesh.triangleCount() + tris.size() / 3 > limits.maxTriangles)
+        return Error{"too many triangles (more than " + std::to_string(limits.maxTriangles) + ")",
+                     ErrorKind::BadInput};
+    return used;
+}
+
+bool toFloat(const glm::dvec3& p, glm::vec3& out) {
+    constexpr double kMax = std::numeric_limits<float>::max();
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(p[k]) || std::abs(p[k]) > kMax)
+            return false;
+    out = glm::vec3(p);
+    return true;
+}
+
+glm::vec3 unitNormal(const glm::dvec3& n) {
+    const double len = glm::length(n);
+    return std::isfinite(len) && len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f);
+}
+
+Status finishMesh(Mesh& mesh, const LoadLimits& limits) {
     if (mesh.positions.size() > limits.maxVertices)
-        return "too many vertices (" + std::to_string(mesh.positions.size()) + ")";
+        return Error{"too many vertices (" + std::to_string(mesh.positions.size()) + ")",
+                     ErrorKind::BadInput};
     if (mesh.triangleCount() > limits.maxTriangles)
-        return "too many triangles (" + std::to_string(mesh.triangleCount()) + ")";
+        return Error{"too many triangles (" + std::to_string(mesh.triangleCount()) + ")",
+                     ErrorKind::BadInput};
     if (mesh.positions.empty() || mesh.indices.empty())
-        return "the file contains no triangles";
+        return Error{"the file contains no triangles", ErrorKind::BadInput};
     for (const glm::vec3& p : mesh.positions)
         if (!finite(p))
-            return "a vertex position is not a finite number";
+            return Error{"a vertex position is not a finite number", ErrorKind::BadInput};
     for (std::uint32_t i : mesh.indices)
         if (i >= mesh.positions.size())
-            return "a vertex index is out of range";
+            return Error{"a vertex index is out of range", ErrorKind::BadInput};
     // Nothing to see or paint if every triangle is degenerate (e.g. all corners one vertex).
     bool anyArea = false;
     for (std::size_t t = 0; t + 2 < mesh.indices.size() && !anyArea; t += 3) {
@@ -75,7 +115,7 @@ std::string finishMesh(Mesh& mesh, const LoadLimits& limits) {
         anyArea = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
     }
     if (!anyArea)
-        return "the file contains only degenerate triangles (no area)";
+        return Error{"the file contains only degenerate triangles (no area)", ErrorKind::BadInput};
 
     if (mesh.materials.empty())
         mesh.materials.push_back(Material{"default", glm::vec4(1.0f), -1});
@@ -139,16 +179,16 @@ Result<std::filesystem::path> checkModelFile(const std::string& path, const Load
     const fs::path given(path);
     const fs::file_status st = fs::status(given, ec);
     if (ec && ec != std::errc::no_such_file_or_directory)
-        return fileError(path, "cannot be read (" + ec.message() + ")");
+        return fileError(path, "cannot be read (" + ec.message() + ")", ErrorKind::Io);
     if (!fs::exists(st))
-        return fileError(path, "does not exist");
+        return fileError(path, "does not exist", ErrorKind::Io);
     if (fs::is_directory(st))
         return fileError(path, "is a directory, not a file");
     if (!fs::is_regular_file(st))
         return fileError(path, "is not a regular file");
     const std::uintmax_t size = fs::file_size(given, ec);
     if (ec)
-        return fileError(path, "cannot be read (" + ec.message() + ")");
+        return fileError(path, "cannot be read (" + ec.message() + ")", ErrorKind::Io);
     if (size == 0)
         return fileError(path, "is empty");
     if (size > limits.maxFileBytes)
@@ -157,7 +197,7 @@ Result<std::filesystem::path> checkModelFile(const std::string& path, const Load
     // Canonical: external files are resolved inside the real folder of the model.
     fs::path file = fs::canonical(given, ec);
     if (ec)
-        return fileError(path, "cannot be read (" + ec.message() + ")");
+        return fileError(path, "cannot be read (" + ec.message() + ")", ErrorKind::Io);
     return file;
 }
 
@@ -171,28 +211,28 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
     if (path.rfind(kBuiltinPrefix, 0) == 0) {
         Result<Mesh> builtin = makeBuiltinModel(path.substr(std::string(kBuiltinPrefix).size()));
         if (!builtin && builtin.error().rfind(path, 0) != 0)
-            return fileError(path, builtin.error());
+            return fileError(path, builtin.takeError());
         return builtin;
     }
     Result<std::filesystem::path> checked = detail::checkModelFile(path, limits);
     if (!checked)
-        return Error{checked.error()};
+        return checked.takeError();
     const std::filesystem::path& file = *checked;
     const std::filesystem::path given(path);
 
     if (!reportProgress(progress, 0.0))
-        return fileError(path, "cancelled");
+        return fileError(path, "cancelled", ErrorKind::Cancelled);
     const std::string ext = toLower(given.extension().string());
     Result<Mesh> result = (ext == ".gltf" || ext == ".glb")
                               ? detail::loadGltf(file, progress, limits)
                               : detail::loadAssimp(file, progress, limits);
     if (!result)
-        return fileError(path, result.error());
+        return fileError(path, result.takeError());
     Mesh mesh = std::move(result).value();
-    if (const std::string problem = detail::finishMesh(mesh, limits); !problem.empty())
-        return fileError(path, problem);
+    if (const Status finished = detail::finishMesh(mesh, limits); !finished)
+        return fileError(path, finished.takeError());
     if (!reportProgress(progress, 1.0))
-        return fileError(path, "cancelled");
+        return fileError(path, "cancelled", ErrorKind::Cancelled);
     return mesh;
 }
 
@@ -203,11 +243,11 @@ Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progre
     try {
         return load(path, progress, limits);
     } catch (const std::bad_alloc&) {
-        return fileError(path, "not enough memory to load the file");
+        return fileError(path, "not enough memory to load the file", ErrorKind::Failed);
     } catch (const std::exception& e) {
-        return fileError(path, e.what());
+        return fileError(path, e.what(), ErrorKind::Failed);
     } catch (...) {
-        return fileError(path, "cannot be loaded (unexpected error)");
+        return fileError(path, "cannot be loaded (unexpected error)", ErrorKind::Failed);
     }
 }
 

@@ -4,8 +4,13 @@
 // loadImageFile() and loadProject(), which run them in that helper process.
 #pragma once
 
+#include <exception>
 #include <filesystem>
+#include <new>
 #include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
@@ -30,8 +35,54 @@ namespace detail {
 /** The importer's deadline for path: limits.maxSeconds, or 30 s plus 1 s per MiB of the file. */
 double importSeconds(const std::string& path, const LoadLimits& limits);
 
-/** "<path>: <problem>" on one line (line breaks become spaces, no final full stop). */
-Error fileError(const std::string& path, std::string problem);
+/**
+ * "<path>: <problem>" on one line (line breaks become spaces, no final full stop), of the given
+ * kind (a problem with the file unless said otherwise).
+ */
+Error fileError(const std::string& path, std::string problem, ErrorKind kind = ErrorKind::BadInput);
+
+/**
+ * error (from a format loader, which names no file) with path in front; its kind, or BadInput
+ * where the loader gave none (the loaders' errors are about the file).
+ */
+Error fileError(const std::string& path, const Error& error);
+
+/**
+ * load() (a format loader's work), with an exception it throws turned into the Error it stands
+ * for, naming no file.
+ */
+template <typename Load> Result<Mesh> catchLoadErrors(Load&& load) {
+    try {
+        return load();
+    } catch (const std::bad_alloc&) {
+        return Error{"not enough memory to load the file"};
+    } catch (const std::exception& e) {
+        return Error{std::string("cannot be loaded (") + e.what() + ")"};
+    } catch (...) {
+        return Error{"cannot be loaded (unexpected error)"};
+    }
+}
+
+/** The vertices a run of triangle corners uses, numbered in their original order. */
+struct UsedVertices {
+    std::vector<std::uint32_t> remap; // per vertex: its new index, or UINT32_MAX where unused
+    std::uint64_t count = 0;
+};
+
+/**
+ * The vertices (of vertexCount) that the triangle corners tris use, numbered in their original
+ * order, so primitives sharing one big vertex array do not multiply it; an Error (BadInput) when
+ * adding them and their triangles to mesh would pass limits.
+ */
+Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
+                                        std::size_t vertexCount, const Mesh& mesh,
+                                        const LoadLimits& limits);
+
+/** p as floats, or false if it does not fit (a double beyond float range is not castable). */
+bool toFloat(const glm::dvec3& p, glm::vec3& out);
+
+/** n normalized in double precision; zero (recomputed later) when it has no direction. */
+glm::vec3 unitNormal(const glm::dvec3& n);
 
 /**
  * The checks made before a model file is parsed: it exists, is a regular file, not empty and
@@ -41,9 +92,9 @@ Result<std::filesystem::path> checkModelFile(const std::string& path, const Load
 
 /**
  * The checks and repairs every loaded mesh goes through (counts against the limits, finite
- * values, normals, materials, Mesh::validate()); an empty string, or the problem.
+ * values, normals, materials, Mesh::validate()); the first problem as an Error (no path).
  */
-std::string finishMesh(Mesh& mesh, const LoadLimits& limits);
+Status finishMesh(Mesh& mesh, const LoadLimits& limits);
 } // namespace detail
 
 } // namespace core

@@ -47,7 +47,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
                 return Error{path + ": extras.layerpaint is not a JSON object"};
             Result<ProjectState> state = projectStateFromJson(*it, &warnings);
             if (!state)
-                return Error{path + ": " + state.error()};
+                return Error{path + ": " + state.error(), state.errorKind()};
             project.state = std::move(state).value();
         }
     }
@@ -55,7 +55,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
     strict.requireTextures = project.state.has_value(); // they hold the painting
     Result<Mesh> mesh = loadMeshWith(path, progress, strict);
     if (!mesh)
-        return Error{mesh.error()};
+        return mesh.takeError();
     project.mesh = std::move(mesh).value();
     project.mesh.warnings.insert(project.mesh.warnings.end(), warnings.begin(), warnings.end());
     return project;

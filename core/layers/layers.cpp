@@ -31,7 +31,7 @@ Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const Mesh
     CaptureStats stats;
     auto stack = capturer.capture(view, options.cullBackFaces, &stats);
     if (!stack)
-        return Error{stack.error()};
+        return stack.takeError();
     return finishLayers(std::move(stack).value(), stats, mesh, topology, view, options, engine);
 }
 

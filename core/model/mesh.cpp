@@ -46,37 +46,38 @@ static bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
-std::string Mesh::validate() const {
+Status Mesh::validate() const {
     const std::size_t n = positions.size();
     if (n == 0 || indices.empty())
-        return "the mesh has no triangles";
+        return Error{"the mesh has no triangles", ErrorKind::BadInput};
     if (indices.size() % 3 != 0)
-        return "the index count is not a multiple of 3";
+        return Error{"the index count is not a multiple of 3", ErrorKind::BadInput};
     if (normals.size() != n)
-        return "normal count differs from vertex count";
+        return Error{"normal count differs from vertex count", ErrorKind::BadInput};
     if (!uvs.empty() && uvs.size() != n)
-        return "texture coordinate count differs from vertex count";
+        return Error{"texture coordinate count differs from vertex count", ErrorKind::BadInput};
     if (!colors.empty() && colors.size() != n)
-        return "vertex color count differs from vertex count";
+        return Error{"vertex color count differs from vertex count", ErrorKind::BadInput};
     if (triangleMaterial.size() != triangleCount())
-        return "per-triangle material count differs from triangle count";
+        return Error{"per-triangle material count differs from triangle count",
+                     ErrorKind::BadInput};
     if (materials.empty())
-        return "the mesh has no material";
+        return Error{"the mesh has no material", ErrorKind::BadInput};
     for (std::uint32_t i : indices)
         if (i >= n)
-            return "a vertex index is out of range";
+            return Error{"a vertex index is out of range", ErrorKind::BadInput};
     for (std::uint32_t m : triangleMaterial)
         if (m >= materials.size())
-            return "a material index is out of range";
+            return Error{"a material index is out of range", ErrorKind::BadInput};
     for (const Material& m : materials)
         if (m.baseColorTexture >= static_cast<int>(textures.size()))
-            return "a texture index is out of range";
+            return Error{"a texture index is out of range", ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
-            return "a vertex position is not a finite number";
+            return Error{"a vertex position is not a finite number", ErrorKind::BadInput};
     for (const Image& img : textures)
         if (img.rgba.size() != static_cast<std::size_t>(img.width) * img.height * 4)
-            return "a texture's pixel data does not match its size";
+            return Error{"a texture's pixel data does not match its size", ErrorKind::BadInput};
     return {};
 }
 

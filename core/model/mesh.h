@@ -9,6 +9,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/base/result.h"
+
 namespace core {
 
 /** An 8-bit RGBA image, rows top first. Base color textures hold sRGB-encoded values. */
@@ -60,8 +62,8 @@ struct Mesh {
     Bounds bounds() const;
     /** Area-weighted vertex normals from the triangles (for files without normals). */
     void computeNormals();
-    /** Checks internal consistency (sizes, index ranges, finite values); empty string if fine. */
-    std::string validate() const;
+    /** Checks internal consistency (sizes, index ranges, finite values); the first problem. */
+    Status validate() const;
 };
 
 } // namespace core

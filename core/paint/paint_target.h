@@ -127,7 +127,7 @@ public:
     TileUndoRecord endStroke();
 
     /** What undoing or redoing record changes (the tiles it holds), for updating a GPU copy. */
-    virtual PaintChanges changes(const TileUndoRecord& record) const = 0;
+    PaintChanges changes(const TileUndoRecord& record) const;
     /**
      * The target's current, unlit colour (linear RGBA) at a point of triangle given by weights of
      * its three corners (negative ones are taken as 0, the rest normalised): the texel of its page
@@ -149,6 +149,18 @@ protected:
     /** Sets the tile layout the stroke state keeps: tiles per page, elements and bytes a tile. */
     void setUpStrokeTiles(const std::vector<std::uint32_t>& tilesPerPage,
                           std::size_t elementsPerTile, std::size_t bytesPerTile);
+    /**
+     * The checks both targets' create() make (a valid mesh); topology is computed when it is
+     * missing or belongs to another mesh.
+     */
+    static Status checkMesh(const std::shared_ptr<const Mesh>& mesh,
+                            std::shared_ptr<const MeshTopology>& topology);
+    /** Memory held by the shared dab and stroke state, in bytes (approximate). */
+    std::size_t contextBytes() const;
+    /** Adds what the tiles keys (sorted here) cover to out: texel rectangles or vertex ranges. */
+    virtual void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const = 0;
+    /** The changes of the tiles the current dab or elements touched (valid until the next call). */
+    const PaintChanges& touchedChanges();
 
     std::unique_ptr<Context> m_context;
     std::vector<Material> m_drawMaterials;
@@ -181,7 +193,6 @@ public:
     PaintTargetKind kind() const override { return PaintTargetKind::Texture; }
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
-    PaintChanges changes(const TileUndoRecord& record) const override;
     std::optional<glm::vec4> colorAt(std::uint32_t triangle,
                                      const glm::vec3& weights) const override;
     std::size_t bytes() const override;
@@ -223,6 +234,12 @@ private:
                   const PaintTargetOptions& options);
     /** Pads the seams around the tiles the current dab touched (see PaintTargetOptions). */
     void padTouched();
+    /**
+     * Raises the stroke's coverage of texel (x, y) of page pageIndex to cover (never lowers it)
+     * and blends the texel to it: the flood fill's and the seam padding's texel.
+     */
+    void coverTexel(std::uint32_t pageIndex, int x, int y, float cover);
+    void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const override;
 
     std::vector<Page> m_pages;
     std::vector<std::uint32_t> m_materialPage;
@@ -246,7 +263,6 @@ public:
     PaintTargetKind kind() const override { return PaintTargetKind::VertexColors; }
     const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
-    PaintChanges changes(const TileUndoRecord& record) const override;
     std::optional<glm::vec4> colorAt(std::uint32_t triangle,
                                      const glm::vec3& weights) const override;
     std::size_t bytes() const override;
@@ -262,6 +278,9 @@ private:
     VertexColorTarget(std::shared_ptr<const Mesh> mesh,
                       std::shared_ptr<const MeshTopology> topology,
                       const PaintTargetOptions& options);
+    void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const override;
+    /** Sets vertex v to lerp(before, the brush colour or its original, cover). */
+    void blendVertex(std::uint32_t v, const std::uint8_t* before, float cover);
 
     std::vector<glm::vec4> m_colors;
     std::vector<glm::vec4> m_original;

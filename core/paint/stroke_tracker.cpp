@@ -227,8 +227,37 @@ std::size_t StrokeTracker::placeDab(glm::vec2 center, float pressure, std::vecto
     return 1;
 }
 
-void StrokeTracker::searchPaintable(std::uint32_t pixel, std::uint32_t fragment, Dab& dab) {
+template <std::uint32_t StrokeTracker::FragmentMarks::*Mark>
+bool StrokeTracker::searchStep(const Node& n, int d, const std::uint8_t* nodeLinks,
+                               const std::uint32_t* offsets, glm::vec2 centre, float radius2,
+                               SearchStep& out) {
+    const std::uint32_t l = nodeLinks[d];
+    if (l == 0)
+        return false;
     const int w = m_stack->width, h = m_stack->height;
+    const int nx = n.x + kDx[d], ny = n.y + kDy[d];
+    if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+        return false;
+    const auto q = std::uint32_t(ny * w + nx);
+    const std::uint32_t begin = offsets[q];
+    if (l > offsets[q + 1] - begin)
+        return false; // a link past the neighbour's fragments: ignored, as segmentLayers does
+    const std::uint32_t g = begin + l - 1;
+    std::uint32_t& mark = m_fragments[g].*Mark;
+    if (mark == m_gen || isHidden(g))
+        return false;
+    mark = m_gen;
+    const float dx = float(nx) + 0.5f - centre.x, dy = float(ny) + 0.5f - centre.y;
+    out.distance2 = dx * dx + dy * dy;
+    if (out.distance2 > radius2)
+        return false;
+    out.node = {nx, ny, g, n.depth + 1};
+    out.pixel = q;
+    return true;
+}
+
+void StrokeTracker::searchPaintable(std::uint32_t pixel, std::uint32_t fragment, Dab& dab) {
+    const int w = m_stack->width;
     const std::uint32_t* offsets = m_stack->offsets.data();
     const std::uint8_t* links = m_connectivity->links.data();
     const float r2 = dab.radius * dab.radius;
@@ -266,27 +295,11 @@ void StrokeTracker::searchPaintable(std::uint32_t pixel, std::uint32_t fragment,
             continue;
         const std::uint8_t* nodeLinks = links + 4 * std::size_t(n.fragment);
         for (int d = 0; d < 4; ++d) {
-            const std::uint32_t l = nodeLinks[d];
-            if (l == 0)
+            SearchStep next;
+            if (!searchStep<&FragmentMarks::mp>(n, d, nodeLinks, offsets, c, r2, next))
                 continue;
-            const int nx = n.x + kDx[d], ny = n.y + kDy[d];
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-                continue;
-            const auto q = std::uint32_t(ny * w + nx);
-            const std::uint32_t begin = offsets[q];
-            if (l > offsets[q + 1] - begin)
-                continue; // a link past the neighbour's fragments: ignored, as segmentLayers does
-            const std::uint32_t g = begin + l - 1;
-            if (m_fragments[g].mp == gen || isHidden(g))
-                continue;
-            m_fragments[g].mp = gen;
-            const float dx = float(nx) + 0.5f - c.x, dy = float(ny) + 0.5f - c.y;
-            const float d2 = dx * dx + dy * dy;
-            // The search stays inside the disc (the paper's "within R"): no detour outside it.
-            if (d2 > r2)
-                continue;
-            m_mpQueue.push_back({nx, ny, g, n.depth + 1});
-            claim(q, g, d2);
+            m_mpQueue.push_back(next.node);
+            claim(next.pixel, next.node.fragment, next.distance2);
         }
     }
 }
@@ -297,29 +310,16 @@ bool StrokeTracker::growTrackable() {
     const Node n = m_mtQueue[m_mtHead++];
     if (n.depth >= m_trackLimit)
         return true;
-    const int w = m_stack->width, h = m_stack->height;
     const std::uint32_t* offsets = m_stack->offsets.data();
     const std::uint8_t* nodeLinks = m_connectivity->links.data() + 4 * std::size_t(n.fragment);
     const std::uint32_t gen = m_gen;
     for (int d = 0; d < 4; ++d) {
-        const std::uint32_t l = nodeLinks[d];
-        if (l == 0)
+        SearchStep next;
+        if (!searchStep<&FragmentMarks::mt>(n, d, nodeLinks, offsets, m_center, m_trackRadius2,
+                                            next))
             continue;
-        const int nx = n.x + kDx[d], ny = n.y + kDy[d];
-        if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-            continue;
-        const auto q = std::uint32_t(ny * w + nx);
-        const std::uint32_t begin = offsets[q];
-        if (l > offsets[q + 1] - begin)
-            continue;
-        const std::uint32_t g = begin + l - 1;
-        if (m_fragments[g].mt == gen || isHidden(g))
-            continue;
-        m_fragments[g].mt = gen;
-        const float dx = float(nx) + 0.5f - m_center.x, dy = float(ny) + 0.5f - m_center.y;
-        if (dx * dx + dy * dy > m_trackRadius2)
-            continue;
-        m_mtQueue.push_back({nx, ny, g, n.depth + 1});
+        m_mtQueue.push_back(next.node);
+        const std::uint32_t q = next.pixel, g = next.node.fragment;
         PixelSlot& slot = m_pixels[q];
         if (slot.mtGen != gen) {
             slot.mtGen = gen;

@@ -141,6 +141,21 @@ private:
         std::uint32_t mpGen = 0, mpFragment = 0; // Mp claim, valid when mpGen == m_gen
         std::uint32_t mtGen = 0, mtFragment = 0; // the R_max search's claim
     };
+    /** Where one step of a search leads. */
+    struct SearchStep {
+        Node node;
+        std::uint32_t pixel = 0;
+        float distance2 = 0.0f; // squared, from the dab's centre to the pixel's centre
+    };
+    /**
+     * One step of the Mp (Mark = &FragmentMarks::mp) or Mt search from n along its link d
+     * (nodeLinks: n's four links): false where there is no link or neighbour, the fragment was
+     * reached already in this search (else it is marked now) or is hidden, or its pixel centre
+     * lies outside radius2 of centre (the search stays inside the disc: no detour outside it).
+     */
+    template <std::uint32_t FragmentMarks::*Mark>
+    bool searchStep(const Node& n, int d, const std::uint8_t* nodeLinks,
+                    const std::uint32_t* offsets, glm::vec2 centre, float radius2, SearchStep& out);
 
     std::size_t placeDab(glm::vec2 center, float pressure, std::vector<Dab>& out);
     void beginMaps();

@@ -17,38 +17,21 @@
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-    int exitCode = -1;
-    std::string out, err;
-};
+using cli_test::CliRun;
+using cli_test::readFile;
 
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/** Runs layerpaint-cli with arguments (no shell expansion happens in them: they are quoted). */
+/** Runs layerpaint-cli with arguments, its output kept in a folder of this test process. */
 CliRun runCli(const std::vector<std::string>& args) {
     const fs::path dir = fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    std::string command = std::string("'") + LAYERPAINT_CLI + "'";
-    for (const std::string& a : args)
-        command += " '" + a + "'";
-    command += " >'" + (dir / "out").string() + "' 2>'" + (dir / "err").string() + "'";
-    CliRun run;
-    const int status = std::system(command.c_str());
-    run.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    run.out = readFile(dir / "out");
-    run.err = readFile(dir / "err");
-    return run;
+    return cli_test::runCli(args, dir);
 }
 
 std::vector<std::uint32_t> readUInt32Image(const fs::path& path, int& width, int& height) {
@@ -231,25 +214,84 @@ TEST(Cli, OrbitAboutKeepsThePickedPointUnderThePixel) {
     const fs::path out = fs::temp_directory_path() / "layerpaint_cli_orbit_about";
     fs::remove_all(out);
     fs::create_directories(out);
-    // Turning about the surface point under a pixel keeps a surface there (the same point).
+    // Turning about the surface point under a pixel keeps that point under the pixel.
+    constexpr int kWidth = 160, kHeight = 120, kX = 84, kY = 62;
+    constexpr float kYaw = 50.0f, kPitch = 20.0f;
     const json script = {
-        {"operations", {{{"op", "orbit-about"}, {"at", {84, 62}}, {"yaw", 50}, {"pitch", 20}}}}};
+        {"operations",
+         {{{"op", "orbit-about"}, {"at", {kX, kY}}, {"yaw", kYaw}, {"pitch", kPitch}}}}};
     std::ofstream(out / "script.json") << script.dump();
     const CliRun run =
         runCli({"layers", "builtin:row", "--orbit", "0,0,1.2", "--size", "160x120", "--cpu",
                 "--out", out.string(), "--script", (out / "script.json").string()});
     ASSERT_EQ(run.exitCode, 0) << run.err;
+    const std::size_t pixel = std::size_t(kY * kWidth + kX);
+
+    // Before the turn (the layer images and summary.json are of the starting view): the point P
+    // seen at the pixel's centre, from the tool's depth image and matrices.
     int w = 0, h = 0;
-    const auto visible = readUInt32Image(out / "visible.tif", w, h);
     const auto before = readUInt32Image(out / "tri_1.tif", w, h);
-    ASSERT_EQ(visible.size(), std::size_t(160 * 120));
-    EXPECT_NE(before[62 * 160 + 84], 0u);
-    EXPECT_EQ(visible[62 * 160 + 84], 1u);
-    // The view did turn: the surface covers other pixels now.
+    ASSERT_EQ(before.size(), std::size_t(kWidth * kHeight));
+    ASSERT_NE(before[pixel], 0u);
+    std::vector<float> depth(before.size(), 0.0f);
+    {
+        auto in = OIIO::ImageInput::open((out / "depth_1.exr").string());
+        ASSERT_TRUE(in);
+        ASSERT_TRUE(in->read_image(0, 0, 0, 1, OIIO::TypeDesc::FLOAT, depth.data()));
+    }
+    ASSERT_GT(depth[pixel], 0.0f);
+    const json summary = json::parse(readFile(out / "summary.json"));
+    const auto viewMatrix = summary["view"].get<std::vector<float>>();
+    const auto projMatrix = summary["proj"].get<std::vector<float>>();
+    ASSERT_EQ(viewMatrix.size(), 16u);
+    ASSERT_EQ(projMatrix.size(), 16u);
+    core::View view;
+    view.width = kWidth;
+    view.height = kHeight;
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r) {
+            view.view[c][r] = viewMatrix[std::size_t(c * 4 + r)];
+            view.proj[c][r] = projMatrix[std::size_t(c * 4 + r)];
+        }
+    const glm::vec2 centre(float(kX) + 0.5f, float(kY) + 0.5f);
+    const glm::vec3 point = view.unproject(centre, depth[pixel]);
+
+    // After the turn: visible.tif is the map of the view the script ended in. It must be the map
+    // of the view turned about P, whose front surface at the pixel is P's triangle at P's depth.
+    const core::View turned = view.orbitedAbout(point, kYaw, kPitch);
+    const glm::vec3 projected = turned.project(point);
+    EXPECT_NEAR(projected.x, centre.x, 0.01f);
+    EXPECT_NEAR(projected.y, centre.y, 0.01f);
+    auto mesh = core::loadMesh("builtin:row");
+    ASSERT_TRUE(mesh.ok()) << mesh.error();
+    const core::LayerStack after = core::captureLayersCpu(*mesh, turned);
+    const std::uint32_t front = after.fragment(pixel, 1);
+    ASSERT_NE(front, core::kNone);
+    EXPECT_EQ(after.triangle[front] + 1, before[pixel]);
+    const float pointDepth = -(turned.view * glm::vec4(point, 1.0f)).z;
+    EXPECT_NEAR(after.depth[front], pointDepth, 1e-4f * pointDepth);
+
+    const auto visible = readUInt32Image(out / "visible.tif", w, h);
+    ASSERT_EQ(visible.size(), before.size());
+    EXPECT_EQ(visible[pixel], 1u);
+    // The tool turned about P: its map is the turned view's, and differs from the starting
+    // view's. The tolerance is far below what a pivot one pixel to the side gives (about 100).
+    const auto differing = [&](const core::LayerStack& stack) {
+        std::size_t n = 0;
+        for (std::size_t p = 0; p < visible.size(); ++p)
+            n += (visible[p] != 0) != (stack.layerCount(p) > 0);
+        return n;
+    };
+    constexpr std::size_t kTolerance = 3;
+    EXPECT_LE(differing(after), kTolerance);
+    ASSERT_GT(depth[pixel + 1], 0.0f);
+    const glm::vec3 beside = view.unproject(centre + glm::vec2(1.0f, 0.0f), depth[pixel + 1]);
+    EXPECT_GT(differing(core::captureLayersCpu(*mesh, view.orbitedAbout(beside, kYaw, kPitch))),
+              10 * kTolerance);
     std::size_t changed = 0;
     for (std::size_t p = 0; p < visible.size(); ++p)
         changed += (visible[p] != 0) != (before[p] != 0);
-    EXPECT_GT(changed, 50u);
+    EXPECT_GT(changed, 1000u);
 }
 
 TEST(Cli, LayersOnOpenGlMatchesTheCpuCapture) {
@@ -297,15 +339,9 @@ TEST(Cli, CameraFileGivesTheSameViewAsOrbit) {
 /** builtin:row's four bodies: per body, how many triangles have rgb (±3) at their centre texel. */
 std::array<int, 4> rowTrianglesOfColor(const core::Mesh& mesh, std::array<int, 3> rgb) {
     std::array<int, 4> count{};
-    const core::Image& texture = mesh.textures.at(0);
     const std::size_t perBody = mesh.triangleCount() / 4;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        glm::vec2 uv(0.0f);
-        for (int k = 0; k < 3; ++k)
-            uv += mesh.uvs[mesh.indices[3 * t + std::size_t(k)]] / 3.0f;
-        const int x = std::clamp(int(uv.x * float(texture.width)), 0, texture.width - 1);
-        const int y = std::clamp(int(uv.y * float(texture.height)), 0, texture.height - 1);
-        const std::uint8_t* px = &texture.rgba[(std::size_t(y) * texture.width + x) * 4];
+        const std::uint8_t* px = cli_test::centreTexel(mesh, t);
         if (std::abs(px[0] - rgb[0]) <= 3 && std::abs(px[1] - rgb[1]) <= 3 &&
             std::abs(px[2] - rgb[2]) <= 3)
             ++count[std::min<std::size_t>(t / perBody, 3)];
@@ -315,15 +351,9 @@ std::array<int, 4> rowTrianglesOfColor(const core::Mesh& mesh, std::array<int, 3
 
 /** Replays script on builtin:row and loads the saved .glb. */
 core::Mesh paintRow(const json& script, const std::string& tag) {
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_cli_fill_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const CliRun run = runCli({"paint", "builtin:row", "--script", (dir / "script.json").string(),
-                               "--out", (dir / "result.glb").string()});
-    EXPECT_EQ(run.exitCode, 0) << run.err;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
-    return mesh ? std::move(mesh).value() : core::Mesh{};
+    std::optional<core::Mesh> mesh =
+        cli_test::paintScript("builtin:row", script, "cli_fill_" + tag);
+    return mesh ? std::move(*mesh) : core::Mesh{};
 }
 
 TEST(Cli, PaintFillModesFillWhatTheySayOnTheSavedModel) {

@@ -10,30 +10,21 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io.h"
 #include "core/io/project_file.h"
 #include "core/paint/paint_target.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-    int exitCode = -1;
-    std::string out, err;
-};
-
-std::string readFile(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using cli_test::CliRun;
+using cli_test::readFile;
 
 class CliProject : public ::testing::Test {
 protected:
@@ -46,18 +37,7 @@ protected:
 
     std::string file(const std::string& name) const { return (m_dir / name).string(); }
 
-    CliRun run(const std::vector<std::string>& args) const {
-        std::string command = std::string("'") + LAYERPAINT_CLI + "'";
-        for (const std::string& a : args)
-            command += " '" + a + "'";
-        command += " >'" + file("out.txt") + "' 2>'" + file("err.txt") + "'";
-        CliRun r;
-        const int status = std::system(command.c_str());
-        r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-        r.out = readFile(file("out.txt"));
-        r.err = readFile(file("err.txt"));
-        return r;
-    }
+    CliRun run(const std::vector<std::string>& args) const { return cli_test::runCli(args, m_dir); }
 
     void writeScript(const std::string& name, const json& script) const {
         std::ofstream(file(name)) << script.dump();

@@ -14,6 +14,7 @@
 #include "core/io/mesh_io.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
+#include "tests/app/cli_run.h"
 
 namespace {
 
@@ -66,19 +67,15 @@ Crossing findCrossing(const core::View& view) {
 /** Per segment along the tube: how many of its triangles are painted red in the saved model. */
 std::vector<int> paintedPerSegment(const core::Mesh& mesh) {
     std::vector<int> painted(kSegments, 0);
-    const core::Image& texture = mesh.textures.at(0);
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        glm::vec2 uv(0.0f);
-        for (int k = 0; k < 3; ++k)
-            uv += mesh.uvs[mesh.indices[3 * t + std::size_t(k)]] / 3.0f;
-        const int x = std::clamp(int(uv.x * float(texture.width)), 0, texture.width - 1);
-        const int y = std::clamp(int(uv.y * float(texture.height)), 0, texture.height - 1);
-        const std::uint8_t* px = &texture.rgba[(std::size_t(y) * texture.width + x) * 4];
+        const std::uint8_t* px = cli_test::centreTexel(mesh, t);
         if (px[0] > 200 && px[1] < 100 && px[2] < 100)
             ++painted[std::size_t(core::trefoilSegmentOfTriangle(t))];
     }
     return painted;
 }
+
+using cli_test::paintScript;
 
 std::vector<int> paintStroke(bool layerAware, const Crossing& crossing, const core::View& view,
                              const std::string& tag) {
@@ -95,15 +92,8 @@ std::vector<int> paintStroke(bool layerAware, const Crossing& crossing, const co
          {{{"op", "set-mode"}, {"layer_aware", layerAware}},
           {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 6}, {"hardness", 1.0}},
           {{"op", "stroke"}, {"points", points}}}}};
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_experiment1_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const std::string command =
-        std::string("'") + LAYERPAINT_CLI + "' paint builtin:trefoil --script '" +
-        (dir / "script.json").string() + "' --out '" + (dir / "result.glb").string() + "'";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
+    const std::optional<core::Mesh> mesh =
+        paintScript("builtin:trefoil", script, "experiment1_" + tag);
     if (!mesh)
         return {};
     EXPECT_EQ(mesh->triangleCount(), core::makeTrefoil().triangleCount());
@@ -144,23 +134,6 @@ TEST(PaperExperiments, OneLongStrokePaintsTheHiddenStrandAndNotTheOccluder) {
 
 namespace {
 
-/** Runs `paint MODEL` with script; the saved model, reloaded (nullopt and a failure if not). */
-std::optional<core::Mesh> runPaintScript(const std::string& model, const json& script,
-                                         const std::string& tag) {
-    const fs::path dir = fs::temp_directory_path() / ("layerpaint_" + tag);
-    fs::create_directories(dir);
-    std::ofstream(dir / "script.json") << script.dump();
-    const std::string command = std::string("'") + LAYERPAINT_CLI + "' paint " + model +
-                                " --script '" + (dir / "script.json").string() + "' --out '" +
-                                (dir / "result.glb").string() + "'";
-    EXPECT_EQ(std::system(command.c_str()), 0) << command;
-    auto mesh = core::loadMesh((dir / "result.glb").string());
-    EXPECT_TRUE(mesh) << mesh.error();
-    if (!mesh)
-        return std::nullopt;
-    return std::move(mesh).value();
-}
-
 /** Red texels of the saved texture inside the UV rectangle [origin, origin + size). */
 int redTexelsIn(const core::Mesh& mesh, glm::vec2 origin, float size) {
     if (mesh.textures.empty())
@@ -195,12 +168,12 @@ TEST(PaperExperiments, HexRingInnerWallIsPaintedAfterAPopUpFromTheSameView) {
         if (popUp)
             operations.push_back({{"op", "popup"}, {"at", {centre.x, centre.y}}});
         operations.push_back(mark(centre));
-        return runPaintScript("builtin:hexring",
-                              {{"size", std::to_string(kWidth) + "x" + std::to_string(kHeight)},
-                               {"orbit", "0,12,1.8"},
-                               {"target", {{"resolution", 1024}}},
-                               {"operations", operations}},
-                              tag);
+        return paintScript("builtin:hexring",
+                           {{"size", std::to_string(kWidth) + "x" + std::to_string(kHeight)},
+                            {"orbit", "0,12,1.8"},
+                            {"target", {{"resolution", 1024}}},
+                            {"operations", operations}},
+                           tag);
     };
     // Tiles of the 5 × 5 atlas: per side k the outer wall, inner wall, top and bottom caps.
     const auto wallPaint = [](const core::Mesh& mesh, int wall) {
@@ -231,13 +204,12 @@ TEST(PaperExperiments, EachBodyOfTheRowGetsItsMarkFromOneView) {
         operations.push_back({{"op", "popup"}, {"at", {centre.x, centre.y}}});
         operations.push_back(mark(centre));
     }
-    const auto mesh =
-        runPaintScript("builtin:row",
-                       {{"size", std::to_string(kWidth) + "x" + std::to_string(kHeight)},
-                        {"orbit", "0,0,2.5"},
-                        {"target", {{"resolution", 1024}}},
-                        {"operations", operations}},
-                       "experiment3");
+    const auto mesh = paintScript("builtin:row",
+                                  {{"size", std::to_string(kWidth) + "x" + std::to_string(kHeight)},
+                                   {"orbit", "0,0,2.5"},
+                                   {"target", {{"resolution", 1024}}},
+                                   {"operations", operations}},
+                                  "experiment3");
     ASSERT_TRUE(mesh);
     std::vector<int> red;
     for (int body = 0; body < 4; ++body)

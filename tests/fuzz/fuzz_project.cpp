@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             return 0;
         const std::string path = fuzz::writeInput(data, size, ".glb");
         core::Result<core::Project> project = core::loadProjectInProcess(path, {}, fuzz::limits());
-        if (project && !project->mesh.validate().empty())
+        if (project && !project->mesh.validate().ok())
             __builtin_trap();
         if (project && project->state)
             checkRoundTrip(*project->state);

@@ -3,7 +3,6 @@
 // byte-identical to core::computeConnectivity on built-in models, synthetic scenes and malformed
 // stacks; plus the backend policy and, disabled, the timing against the C++ reference.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -483,67 +482,6 @@ TEST_F(GpuConnectivityGlTest, BackendPolicy) {
             render::computeConnectivity(c.requested, c.gpu, s.stack, options, &s.geometry, &used);
         EXPECT_EQ(used, c.expected) << render::connectivityBackendName(c.requested);
         EXPECT_EQ(links.links, reference.links);
-    }
-}
-
-// ---------------------------------------------------------------------------------------------
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-// Timing for the README and the backend choice (run with --gtest_also_run_disabled_tests): the
-// built-in trefoil (144K vertices) at 1280×720, from the core timing test's view and from close
-// up (the knot fills the view), medians of 7 runs. GPU: fragment-to-pixel map, upload, dispatch
-// and readback from an idle GPU; CPU: core::computeConnectivity with 1 and 2 threads.
-TEST_F(GpuConnectivityGlTest, DISABLED_TimingTrefoil1280x720) {
-    const core::Mesh mesh = core::makeTrefoil();
-    const core::MeshTopology topology = core::buildMeshTopology(mesh);
-    using Clock = std::chrono::steady_clock;
-    for (float distance : {1.6f, 0.9f}) {
-        Scene s;
-        s.mesh = mesh;
-        s.view = orbitView(mesh, 30.0f, 20.0f, distance, 1280, 720, false);
-        s.stack = core::captureLayersCpu(mesh, s.view);
-        s.geometry = core::makeSurfaceGeometry(mesh, topology, s.view);
-        std::printf("[ timing   ] %s, distance %.1f: %zu fragments, %u layers\n",
-                    render::HeadlessContext::rendererName().c_str(), distance,
-                    s.stack.fragmentCount(), s.stack.maxLayers());
-        for (ConnectionTest test : {ConnectionTest::Surface, ConnectionTest::Plain}) {
-            core::ConnectivityOptions options;
-            options.test = test;
-            options.unitScale = core::unitScale(mesh);
-            std::vector<double> gpuMs;
-            double firstMs = 0.0;
-            for (int run = 0; run < 8; ++run) {
-                double ms = 0.0;
-                auto links = m_gpu.compute(s.stack, options, &s.geometry, &ms);
-                ASSERT_TRUE(links) << links.error();
-                if (run == 0)
-                    firstMs = ms; // includes allocating the buffers
-                else
-                    gpuMs.push_back(ms);
-            }
-            double cpuMs[2] = {};
-            for (unsigned threads : {1u, 2u}) {
-                options.threads = threads;
-                std::vector<double> runs;
-                for (int run = 0; run < 7; ++run) {
-                    const auto start = Clock::now();
-                    const core::Connectivity links =
-                        core::computeConnectivity(s.stack, options, &s.geometry);
-                    runs.push_back(
-                        std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-                    ASSERT_FALSE(links.links.empty());
-                }
-                cpuMs[threads - 1] = median(runs);
-            }
-            std::printf("[ timing   ] %-7s gpu %.2f ms (first call %.2f ms) | cpu 1 thread "
-                        "%.2f ms, 2 threads %.2f ms | gpu / cpu(2 threads) = %.2f\n",
-                        test == ConnectionTest::Surface ? "surface" : "plain", median(gpuMs),
-                        firstMs, cpuMs[0], cpuMs[1], median(gpuMs) / cpuMs[1]);
-        }
     }
 }
 

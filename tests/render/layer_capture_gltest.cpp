@@ -2,7 +2,6 @@
 // Layer capture on a headless EGL context (llvmpipe on CI): analytic scenes, the layer property,
 // a CPU rasterizer as reference, and node buffer growth.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -21,7 +20,6 @@
 #include "core/model/camera.h"
 #include "render/gl_context.h"
 #include "render/layer_capture.h"
-#include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 
 namespace {
@@ -571,57 +569,6 @@ TEST_F(LayerCaptureGlTest, FailuresAreReported) {
     auto notReady = uninitialized.capture(quadView(false), {});
     ASSERT_FALSE(notReady);
     EXPECT_NE(notReady.error().find("not initialized"), std::string::npos);
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    return values[values.size() / 2];
-}
-
-// A measurement, not a check: run with --gtest_also_run_disabled_tests. Interleaves plain z-buffer
-// passes (two-sided as the viewer draws, and back-face culled as the capture draws) with
-// captures of the same view; medians of 7 runs each.
-TEST_F(LayerCaptureGlTest, DISABLED_BenchmarkTrefoil720p) {
-    const core::Mesh mesh = core::makeTrefoil();
-    m_capture.setMesh(mesh);
-    render::MeshRenderer renderer;
-    ASSERT_TRUE(renderer.initialize());
-    renderer.setMesh(mesh);
-    constexpr int kRuns = 7;
-    for (int variant = 0; variant < 2; ++variant) {
-        core::Camera camera;
-        camera.frame(mesh.bounds());
-        if (variant == 1)
-            camera.orbit(20.0f, 15.0f);
-        const core::View view = camera.view(1280, 720);
-        render::OffscreenTarget target;
-        ASSERT_TRUE(target.create(view.width, view.height));
-        render::DrawOptions twoSided, culled;
-        culled.cullBackFaces = true;
-        std::vector<double> plain, plainCulled, gpu, resolve, total;
-        render::LayerCapture::Timings timings;
-        capture(view, true, &timings); // warm-up: buffer sizes, shader variants
-        render::timePlainPass(renderer, target, view, twoSided);
-        for (int run = 0; run < kRuns; ++run) {
-            plain.push_back(render::timePlainPass(renderer, target, view, twoSided));
-            plainCulled.push_back(render::timePlainPass(renderer, target, view, culled));
-            const auto start = std::chrono::steady_clock::now();
-            capture(view, true, &timings);
-            total.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count());
-            gpu.push_back(timings.gpuMs);
-            resolve.push_back(timings.resolveMs);
-        }
-        std::printf("%s, %s: %zu fragments, per layer", variant ? "orbit 20,15" : "framed",
-                    render::HeadlessContext::rendererName().c_str(), timings.fragments);
-        for (std::uint32_t n : timings.fragmentsPerLayer)
-            std::printf(" %u", n);
-        std::printf("\n  plain pass %.1f ms (culled %.1f ms) | capture %.1f ms = gpu %.1f + "
-                    "resolve %.1f | ratio %.2f (to culled %.2f)\n",
-                    median(plain), median(plainCulled), median(total), median(gpu), median(resolve),
-                    median(total) / median(plain), median(total) / median(plainCulled));
-    }
 }
 
 } // namespace

@@ -4,9 +4,7 @@
 // lookup of the visible fragment. Set LAYERPAINT_TEST_IMAGES=DIR to write the pictures as PNGs.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -583,7 +581,7 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
     mesh.materials = {core::Material{"red", glm::vec4(1.0f), 0},
                       core::Material{"plain", glm::vec4(0.2f, 0.8f, 0.2f, 1.0f), -1},
                       core::Material{"blue", glm::vec4(1.0f), 1}};
-    ASSERT_EQ(mesh.validate(), "");
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().error();
 
     core::Camera camera;
     camera.frame(mesh.bounds());
@@ -608,50 +606,27 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
 }
 
 /**
- * docs/architecture.md §5's draw_layers figure at 1280 × 720: the framed trefoil and a close view
- * that fills most of the screen. Reports medians of 15 draws (glFinish on both sides) and the first
- * draw after setLayers(), which also shades every fragment; asserts only that drawing works.
+ * At the paper's size (the 144K-vertex trefoil at 1280 × 720, framed and from close up): the
+ * default order draws what a plain render shows, and with the largest layer-2 region popped up
+ * the drawn fragment of every pixel is the CPU lookup's. How long these draws take is measured by
+ * the benchmarks (bench/gl_bench.cpp), not here.
  */
-TEST_F(LayerCompositorGlTest, DrawTimeAt1280x720) {
+TEST_F(LayerCompositorGlTest, TrefoilAt1280x720MatchesPlainRenderAndTheCpuLookup) {
     const core::Mesh mesh = core::makeTrefoil();
-    render::OffscreenTarget target;
-    ASSERT_TRUE(target.create(1280, 720));
-    const auto elapsedMs = [&](const render::CompositeOptions& options) {
-        glFinish();
-        const auto start = std::chrono::steady_clock::now();
-        m_compositor.draw(options);
-        glFinish();
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-            .count();
-    };
-    const auto medianMs = [&](const render::CompositeOptions& options) {
-        std::vector<double> times;
-        for (int i = 0; i < 15; ++i)
-            times.push_back(elapsedMs(options));
-        std::nth_element(times.begin(), times.begin() + 7, times.end());
-        return times[7];
-    };
     struct Case {
         const char* name;
         float yaw, pitch, zoom;
     };
     for (const Case& c : {Case{"framed", 0.0f, 0.0f, 1.0f}, Case{"close", 45.0f, 60.0f, 0.6f}}) {
+        SCOPED_TRACE(c.name);
         const core::View view = orbitView(mesh, c.yaw, c.pitch, 1280, 720, c.zoom);
         const core::Layers layers = build(mesh, view);
-        target.bind();
-        render::CompositeOptions options;
-        m_compositor.draw(options); // compiles the programs on first use
-        ASSERT_TRUE(m_compositor.setLayers(layers));
-        const double firstMs = elapsedMs(options); // shades every fragment, then picks
-        const double compositeMs = medianMs(options);
-        saveImage(target.readColor(), std::string("trefoil720_") + c.name + "_composite");
-        options.boundaries = true;
-        const double boundariesMs = medianMs(options);
-        saveImage(target.readColor(), std::string("trefoil720_") + c.name + "_boundaries");
-        options.boundaries = false;
-        options.display = render::LayerDisplay::Segmentation;
-        const double segmentationMs = medianMs(options);
-        saveImage(target.readColor(), std::string("trefoil720_") + c.name + "_segmentation");
+        ASSERT_TRUE(m_compositor.hasLayers());
+        const render::CompositeOptions options;
+        const core::Image composited = composite(layers, options);
+        const core::Image rendered = plain(view, options.background);
+        saveImage(composited, std::string("trefoil720_") + c.name + "_composite");
+        expectMatchesPlainRender(composited, rendered, layers.stack);
 
         // Popping up the largest layer-2 region defeats the early exit of the fragment search.
         const std::vector<core::Region>& regions = layers.segmentation.graph.regions;
@@ -665,18 +640,17 @@ TEST_F(LayerCompositorGlTest, DrawTimeAt1280x720) {
             ++r;
         rank[popped] = 0;
         ASSERT_TRUE(m_compositor.setRegionRanks(rank));
-        options.display = render::LayerDisplay::Composite;
-        const double poppedMs = medianMs(options);
-        saveImage(target.readColor(), std::string("trefoil720_") + c.name + "_popped");
-
-        std::printf("draw_layers 1280x720 %s: %zu fragments, %u layers, %zu regions: first %.2f "
-                    "ms, composite %.2f ms, boundaries %.2f ms, segmentation %.2f ms, "
-                    "popped-up %.2f ms\n",
-                    c.name, layers.stack.fragmentCount(), layers.stack.maxLayers(),
-                    layers.segmentation.graph.regions.size(), firstMs, compositeMs, boundariesMs,
-                    segmentationMs, poppedMs);
-        RecordProperty(std::string(c.name) + "_composite_ms", std::to_string(compositeMs));
-        EXPECT_GT(compositeMs, 0.0);
+        saveImage(composite(layers, options), std::string("trefoil720_") + c.name + "_popped");
+        const std::vector<std::uint32_t> drawn = m_compositor.readVisible();
+        ASSERT_EQ(drawn.size(), layers.stack.pixelCount());
+        std::size_t wrong = 0, poppedPixels = 0;
+        for (std::size_t p = 0; p < drawn.size(); ++p) {
+            const std::uint32_t f = visibleFragment(layers, rank, p);
+            wrong += drawn[p] != f;
+            poppedPixels += f != kNone && layers.segmentation.region[f] == popped;
+        }
+        EXPECT_EQ(wrong, 0u);
+        EXPECT_EQ(poppedPixels, regions[popped].pixels);
     }
 }
 

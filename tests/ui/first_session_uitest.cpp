@@ -19,6 +19,7 @@
 #include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
+#include <QScreen>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
@@ -661,6 +662,19 @@ TEST_F(FirstSessionTest, EveryToolShowsItsOwnCursor) {
     EXPECT_TRUE(brush.shape != fill.shape || brush.image != fill.image);
     // Back to the brush: its outline again.
     EXPECT_TRUE(choose('b').outline);
+}
+
+// Found while trying a first session on a small screen: the first window was 1280 × 800 on
+// any screen, so on a 1000 × 700 one its right column and status bar were off screen.
+TEST(FirstStart, TheWindowFitsTheScreen) {
+    QSettings().clear(); // no saved geometry: a first start
+    ui::MainWindow window;
+    const QScreen* screen = window.screen();
+    ASSERT_NE(screen, nullptr);
+    const QSize available = screen->availableGeometry().size();
+    EXPECT_LE(window.width(), std::min(1280, available.width() * 9 / 10));
+    EXPECT_LE(window.height(), std::min(800, available.height() * 9 / 10));
+    EXPECT_GE(window.width(), std::min(1280, available.width() * 9 / 10) - 1);
 }
 
 } // namespace

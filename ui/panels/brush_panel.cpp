@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/brush_panel.h"
 
+#include "ui/panels/value_spin_box.h"
+
 #include <QCheckBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -84,13 +86,10 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
                     tr("How much one dab adds towards the opacity"));
     m_spacing = addRow(tr("&Spacing"), QStringLiteral("brushPanelSpacing"), 1, 200, tr(" %"),
                        tr("Distance between dabs, in per cent of the radius"));
-    m_trackRadius = new QSpinBox(this);
-    m_trackRadius->setObjectName(QStringLiteral("brushPanelTrackRadius"));
-    m_trackRadius->setRange(0, 4000);
-    m_trackRadius->setSuffix(tr(" px"));
-    m_trackRadius->setKeyboardTracking(false);
-    m_trackRadius->setToolTip(tr("R_max: how far a layer-aware stroke looks for the surface it "
-                                 "follows from one dab to the next; 0 chooses it from the radius"));
+    m_trackRadius = makeValueSpinBox(
+        this, QStringLiteral("brushPanelTrackRadius"), 0, 4000, tr(" px"),
+        tr("R_max: how far a layer-aware stroke looks for the surface it follows from one dab to "
+           "the next; 0 chooses it from the radius"));
     m_form->addRow(tr("&Tracking (R_max)"), m_trackRadius);
     connect(m_trackRadius, &QSpinBox::valueChanged, this, &BrushPanel::readBrush);
 
@@ -140,21 +139,9 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
 
 QSpinBox* BrushPanel::addRow(const QString& label, const QString& name, int minimum, int maximum,
                              const QString& suffix, const QString& tip) {
-    auto* slider = new QSlider(Qt::Horizontal, this);
-    slider->setRange(minimum, maximum);
-    slider->setToolTip(tip);
-    auto* spin = new QSpinBox(this);
-    spin->setObjectName(name);
-    spin->setRange(minimum, maximum);
-    spin->setSuffix(suffix);
-    spin->setToolTip(tip);
-    spin->setKeyboardTracking(false);
-    connect(slider, &QSlider::valueChanged, spin, &QSpinBox::setValue);
-    connect(spin, &QSpinBox::valueChanged, slider, &QSlider::setValue);
+    QSpinBox* spin = makeValueSpinBox(this, name, minimum, maximum, suffix, tip);
+    QHBoxLayout* row = sliderRow(spin);
     connect(spin, &QSpinBox::valueChanged, this, &BrushPanel::readBrush);
-    auto* row = new QHBoxLayout;
-    row->addWidget(slider, 1);
-    row->addWidget(spin);
     m_form->addRow(label, row);
     if (auto* text = qobject_cast<QLabel*>(m_form->labelForField(row)))
         text->setBuddy(spin);

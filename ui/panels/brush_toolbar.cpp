@@ -2,6 +2,7 @@
 #include "ui/panels/brush_toolbar.h"
 
 #include "core/base/color.h"
+#include "ui/panels/value_spin_box.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -38,12 +39,7 @@ BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
         auto* text = new QLabel(label, this);
         text->setContentsMargins(6, 0, 2, 0);
         addWidget(text);
-        auto* spin = new QSpinBox(this);
-        spin->setObjectName(name);
-        spin->setRange(minimum, maximum);
-        spin->setSuffix(suffix);
-        spin->setToolTip(tip);
-        spin->setKeyboardTracking(false);
+        QSpinBox* spin = makeValueSpinBox(this, name, minimum, maximum, suffix, tip);
         text->setBuddy(spin);
         addWidget(spin);
         return spin;

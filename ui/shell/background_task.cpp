@@ -1,28 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/shell/background_task.h"
 
-#include <QMetaObject>
-
-#include <atomic>
 #include <exception>
+#include <memory>
 #include <new>
 
 namespace ui {
 
 struct BackgroundTask::State {
-    std::atomic<bool> cancel{false};
-    std::atomic<double> progress{0.0};
-    QString error;
-    std::thread thread;
+    QFuture<void> future;
+    bool ran = false; // the job started (a job cancelled before it started never does)
+    QString error;    // written by the job, read once it finished
 };
 
-BackgroundTask::BackgroundTask(QObject* parent) : QObject(parent) {}
+BackgroundTask::BackgroundTask(QObject* parent) : QObject(parent) {
+    m_pool.setMaxThreadCount(1);
+}
 
 BackgroundTask::~BackgroundTask() {
-    // The worker posts its result to this object: joining here, before ~QObject drops pending
-    // events, means none runs against a destroyed task.
-    if (m_state && m_state->thread.joinable())
-        m_state->thread.join();
+    // The job's report goes to a watcher that dies with this object; it only has to end first.
+    m_pool.waitForDone();
 }
 
 bool BackgroundTask::start(Job job) {
@@ -30,49 +27,47 @@ bool BackgroundTask::start(Job job) {
         return false;
     auto state = std::make_shared<State>();
     m_state = state;
-    state->thread = std::thread([this, state, job = std::move(job)] {
-        const core::ProgressFn progress = [raw = state.get()](double fraction) {
-            raw->progress.store(fraction, std::memory_order_relaxed);
-            return !raw->cancel.load(std::memory_order_relaxed);
-        };
-        try {
-            state->error = job(progress);
-        } catch (const std::bad_alloc&) {
-            state->error = tr("Not enough memory.");
-        } catch (const std::exception& e) {
-            state->error = QString::fromStdString(e.what());
-        }
-        QMetaObject::invokeMethod(
-            this, [this, state] { finish(state); }, Qt::QueuedConnection);
-    });
+    state->future = runInBackground(
+        m_pool, this,
+        [raw = state.get(), job = std::move(job)](const core::ProgressFn& progress) {
+            raw->ran = true;
+            try {
+                raw->error = job(progress);
+            } catch (const std::bad_alloc&) {
+                raw->error = tr("Not enough memory.");
+            } catch (const std::exception& e) {
+                raw->error = QString::fromStdString(e.what());
+            }
+        },
+        [this, state] { finish(state); });
     return true;
 }
 
 void BackgroundTask::cancel() {
     if (m_state)
-        m_state->cancel = true;
+        m_state->future.cancel();
 }
 
 double BackgroundTask::progress() const {
-    return m_state ? m_state->progress.load(std::memory_order_relaxed) : 0.0;
+    return m_state ? jobProgress(m_state->future) : 0.0;
 }
 
 void BackgroundTask::wait() {
     if (!m_state)
         return;
     const std::shared_ptr<State> state = m_state;
-    state->thread.join();
-    finish(state); // the queued call then finds the job gone and does nothing
+    state->future.waitForFinished();
+    finish(state); // the watcher's report then finds the job gone and does nothing
 }
 
 void BackgroundTask::finish(const std::shared_ptr<State>& state) {
     if (state != m_state)
         return; // already reported (wait())
-    if (state->thread.joinable())
-        state->thread.join(); // posting was its last step: returns at once
     m_state.reset();
+    if (!state->ran)
+        state->error = QStringLiteral("cancelled"); // as core says of a job stopped at once
     // A job that completed although asked to stop (too late to cancel) succeeded.
-    emit finished(state->error, !state->error.isEmpty() && state->cancel.load());
+    emit finished(state->error, !state->error.isEmpty() && state->future.isCanceled());
 }
 
 } // namespace ui

@@ -184,6 +184,13 @@ protected:
     void dropEvent(QDropEvent* event) override;
 
 private:
+    // Shared by the files the window's code is split into.
+    static constexpr int kStatusMessageMs = 10000;
+    static constexpr int kPaintMessageMs = 3000;
+    static constexpr int kProgressSteps = 1000;
+    /** A "builtin:NAME" source rather than a file. */
+    static bool isBuiltin(const QString& source);
+
     void createPanels();
     /** A dock (on the right by default) named for saveState(). */
     QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
@@ -193,6 +200,11 @@ private:
     void createPaintActions();
     void createToolActions();
     void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
+    /**
+     * Before a stroke or fill: the layers of this view (built now if missing) and a paint target
+     * (made now if there is none); false, with a message, where either cannot be had.
+     */
+    bool preparePainting();
     /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
     /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */

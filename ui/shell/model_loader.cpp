@@ -2,26 +2,27 @@
 #include "ui/shell/model_loader.h"
 
 #include <QFile>
-#include <QMetaObject>
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <new>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "core/io/mesh_io.h"
 #include "core/io/project_file.h"
+#include "ui/shell/background_task.h"
 
 namespace ui {
 
+namespace {
+// Superseded loads stop at their next progress report; until then each holds a thread.
+constexpr int kMaxLoadThreads = 8;
+} // namespace
+
 struct ModelLoader::Job {
     QString source;
-    std::atomic<bool> cancel{false};
-    std::atomic<double> progress{0.0};
-    std::thread thread;
+    QFuture<void> future;
 };
 
 struct ModelLoader::Outcome {
@@ -31,19 +32,16 @@ struct ModelLoader::Outcome {
 };
 
 ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {
+    m_pool.setMaxThreadCount(kMaxLoadThreads);
     // Files are parsed in an importer process: one started ahead spares each open its start-up.
     core::keepImporterReady();
 }
 
 ModelLoader::~ModelLoader() {
-    // Workers post their result to this object; joining them here, before ~QObject removes the
-    // pending events, guarantees none runs against a destroyed loader.
+    // Their reports go to watchers that die with this object; the jobs only have to end first.
     for (auto& job : m_jobs)
-        job->cancel = true;
-    for (auto& job : m_jobs) {
-        if (job->thread.joinable())
-            job->thread.join();
-    }
+        job->future.cancel();
+    m_pool.waitForDone();
 }
 
 void ModelLoader::load(const QString& source) {
@@ -56,38 +54,35 @@ void ModelLoader::load(const QString& source) {
 
     // QFile::encodeName gives the bytes the file system expects for the path.
     const std::string path = QFile::encodeName(source).toStdString();
-    raw->thread = std::thread([this, raw, path] {
-        auto outcome = std::make_shared<Outcome>();
-        try {
-            const core::ProgressFn progress = [raw](double fraction) {
-                raw->progress.store(fraction, std::memory_order_relaxed);
-                return !raw->cancel.load(std::memory_order_relaxed);
-            };
-            core::Result<core::Project> result = core::loadProject(path, progress);
-            if (result) {
-                outcome->mesh.emplace(std::move(result->mesh));
-                if (result->state)
-                    outcome->state =
-                        std::make_shared<const core::ProjectState>(std::move(*result->state));
-            } else {
-                outcome->error = result.error();
+    auto outcome = std::make_shared<Outcome>();
+    raw->future = runInBackground(
+        m_pool, this,
+        [outcome, path](const core::ProgressFn& progress) {
+            try {
+                core::Result<core::Project> result = core::loadProject(path, progress);
+                if (result) {
+                    outcome->mesh.emplace(std::move(result->mesh));
+                    if (result->state)
+                        outcome->state =
+                            std::make_shared<const core::ProjectState>(std::move(*result->state));
+                } else {
+                    outcome->error = result.error();
+                }
+            } catch (const std::bad_alloc&) {
+                // loadProject reports its own errors; only an allocation failure can still escape.
+                outcome->mesh.reset();
+                outcome->error = path + ": not enough memory";
+            } catch (const std::exception& e) {
+                outcome->mesh.reset();
+                outcome->error = path + ": " + e.what();
             }
-        } catch (const std::bad_alloc&) {
-            // loadProject reports its own errors; only an allocation failure can still escape.
-            outcome->mesh.reset();
-            outcome->error = path + ": not enough memory";
-        } catch (const std::exception& e) {
-            outcome->mesh.reset();
-            outcome->error = path + ": " + e.what();
-        }
-        QMetaObject::invokeMethod(
-            this, [this, raw, outcome] { finish(raw, outcome); }, Qt::QueuedConnection);
-    });
+        },
+        [this, raw, outcome] { finish(raw, outcome); });
 }
 
 void ModelLoader::cancel() {
     if (m_current)
-        m_current->cancel = true;
+        m_current->future.cancel();
 }
 
 bool ModelLoader::isLoading() const {
@@ -99,7 +94,7 @@ QString ModelLoader::currentSource() const {
 }
 
 double ModelLoader::progress() const {
-    return m_current ? m_current->progress.load(std::memory_order_relaxed) : 0.0;
+    return m_current ? jobProgress(m_current->future) : 0.0;
 }
 
 void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
@@ -109,15 +104,13 @@ void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
         return;
     std::unique_ptr<Job> owned = std::move(*it);
     m_jobs.erase(it);
-    // The worker posted this as its last step, so the join returns at once.
-    owned->thread.join();
 
     const bool current = owned.get() == m_current;
     if (!current)
         return; // superseded by a newer load
     m_current = nullptr;
     const QString source = owned->source;
-    if (owned->cancel)
+    if (owned->future.isCanceled())
         emit cancelled(source);
     else if (outcome->mesh)
         emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)),

@@ -5,8 +5,10 @@
 #include <memory>
 #include <vector>
 
+#include <QFuture>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 
 #include "core/io/project_file.h"
 #include "core/model/mesh.h"
@@ -14,9 +16,9 @@
 namespace ui {
 
 /**
- * Loads models and projects with core::loadProject on a worker thread and reports back on the GUI
- * thread, so the event loop never waits for a file. One load is current at a time: starting
- * another cancels the previous one and drops its result.
+ * Loads models and projects with core::loadProject in the background (runInBackground()) and
+ * reports back on the GUI thread, so the event loop never waits for a file. One load is current at
+ * a time: starting another cancels the previous one and drops its result.
  */
 class ModelLoader : public QObject {
     Q_OBJECT
@@ -50,6 +52,7 @@ private:
     struct Outcome;
     void finish(Job* job, const std::shared_ptr<Outcome>& outcome);
 
+    QThreadPool m_pool; // a cancelled load runs on until its next progress report
     std::vector<std::unique_ptr<Job>> m_jobs; // current one last; touched on the GUI thread only
     Job* m_current = nullptr;
 };

@@ -407,10 +407,14 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
     auto snap = std::make_shared<Snapshot>();
     if (core::isTextureFormat(format)) {
         std::string error;
-        const auto* texture =
-            canExportTexture()
-                ? dynamic_cast<const core::TextureTarget*>(m_window.document().paintTarget(&error))
-                : nullptr;
+        const core::TextureTarget* texture = nullptr;
+        if (canExportTexture()) {
+            const core::Result<core::PaintTarget*> target = m_window.document().ensurePaintTarget();
+            if (target)
+                texture = dynamic_cast<const core::TextureTarget*>(*target);
+            else
+                error = target.error();
+        }
         if (!texture) {
             const QString why = error.empty()
                                     ? tr("The model is painted with vertex colours, so there is no "

@@ -2,7 +2,6 @@
 #include "ui/view/layer_builder.h"
 
 #include <QElapsedTimer>
-#include <QMetaObject>
 
 #include <exception>
 #include <new>
@@ -11,6 +10,7 @@
 #include <utility>
 
 #include "core/document/document.h"
+#include "ui/shell/background_task.h"
 #include "ui/view/viewport.h"
 
 namespace ui {
@@ -23,12 +23,21 @@ struct LayerBuilder::Job {
     std::uint64_t viewSerial = 0;
     std::uint64_t meshSerial = 0;
     QElapsedTimer clock; // from the start of the capture
+    core::View view;
+    core::LayerOptions options;
+    core::CaptureStats stats;
     std::optional<core::Layers> layers;
     std::string error;
 };
 
+struct LayerBuilder::Captured {
+    std::shared_ptr<Job> job;
+    core::Result<core::LayerStack> stack;
+};
+
 LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject* parent)
     : QObject(parent), m_document(document), m_viewport(viewport) {
+    m_pool.setMaxThreadCount(1);
     m_settle.setSingleShot(true);
     m_settle.setInterval(kDefaultSettleMs);
     connect(&m_settle, &QTimer::timeout, this, &LayerBuilder::onSettled);
@@ -36,10 +45,8 @@ LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject
 }
 
 LayerBuilder::~LayerBuilder() {
-    // The worker posts its result to this object as its last step; joining here, before
-    // ~QObject discards the posted event, means it never reaches a destroyed builder.
-    if (m_worker.joinable())
-        m_worker.join();
+    // The worker's report goes to a watcher that dies with this object; it only has to end first.
+    m_pool.waitForDone();
 }
 
 void LayerBuilder::setSettleDelay(int milliseconds) {
@@ -86,23 +93,27 @@ void LayerBuilder::onSettled() {
     capture();
 }
 
-void LayerBuilder::capture() {
-    m_captureWhenIdle = false;
+LayerBuilder::Captured LayerBuilder::captureView() {
     auto job = std::make_shared<Job>();
     job->clock.start();
     job->viewSerial = m_viewport.viewSerial();
     job->meshSerial = m_document.meshSerial();
-    const core::View view = m_viewport.view();
-    const core::LayerOptions options = m_document.layerOptions();
-
+    job->view = m_viewport.view();
+    job->options = m_document.layerOptions();
     // The GPU part, on this thread: the viewport's context is only current here.
-    core::CaptureStats stats;
     core::Result<core::LayerStack> stack =
-        m_viewport.captureLayers(view, options.cullBackFaces, &stats);
+        m_viewport.captureLayers(job->view, job->options.cullBackFaces, &job->stats);
     ++m_captures;
-    if (!stack) {
+    return {std::move(job), std::move(stack)};
+}
+
+void LayerBuilder::capture() {
+    m_captureWhenIdle = false;
+    Captured captured = captureView();
+    const std::shared_ptr<Job>& job = captured.job;
+    if (!captured.stack) {
         m_wanted = false; // tried again at the next view change
-        emit buildFailed(QString::fromStdString(stack.error()));
+        emit buildFailed(QString::fromStdString(captured.stack.error()));
         return;
     }
 
@@ -110,8 +121,9 @@ void LayerBuilder::capture() {
     // (a choice made where the GPU is fast).
     if (core::ConnectivityEngine* engine = m_viewport.connectivityEngine()) {
         m_document.setConnectivityEngine(engine);
-        job->layers.emplace(core::finishLayers(std::move(stack).value(), stats, m_document.mesh(),
-                                               m_document.topology(), view, options, engine));
+        job->layers.emplace(core::finishLayers(std::move(captured.stack).value(), job->stats,
+                                               m_document.mesh(), m_document.topology(), job->view,
+                                               job->options, engine));
         m_job = job;
         finish(job);
         return;
@@ -122,22 +134,22 @@ void LayerBuilder::capture() {
     // move on (even to another model) while it runs.
     m_workerBusy = true;
     m_job = job;
-    m_worker = std::thread([this, job, stack = std::move(stack).value(), stats,
-                            mesh = m_document.sharedMesh(), topology = m_document.sharedTopology(),
-                            view, options]() mutable {
-        try {
-            job->layers.emplace(
-                core::finishLayers(std::move(stack), stats, *mesh, *topology, view, options));
-        } catch (const std::bad_alloc&) {
-            job->layers.reset();
-            job->error = "not enough memory for the layers of this view";
-        } catch (const std::exception& e) {
-            job->layers.reset();
-            job->error = e.what();
-        }
-        QMetaObject::invokeMethod(
-            this, [this, job] { finish(job); }, Qt::QueuedConnection);
-    });
+    m_worker = runInBackground(
+        m_pool, this,
+        [job, stack = std::move(captured.stack).value(), mesh = m_document.sharedMesh(),
+         topology = m_document.sharedTopology()](const core::ProgressFn&) mutable {
+            try {
+                job->layers.emplace(core::finishLayers(std::move(stack), job->stats, *mesh,
+                                                       *topology, job->view, job->options));
+            } catch (const std::bad_alloc&) {
+                job->layers.reset();
+                job->error = "not enough memory for the layers of this view";
+            } catch (const std::exception& e) {
+                job->layers.reset();
+                job->error = e.what();
+            }
+        },
+        [this, job] { finish(job); });
 }
 
 bool LayerBuilder::buildNow() {
@@ -148,38 +160,29 @@ bool LayerBuilder::buildNow() {
     m_settle.stop();
     m_wanted = true;
     // A worker's result for this view is as good as a new one and nearly done.
-    if (m_worker.joinable())
-        m_worker.join();
+    m_worker.waitForFinished();
     std::shared_ptr<Job> job = std::move(m_job);
     m_workerBusy = false;
     m_captureWhenIdle = false;
     if (job && job->layers && adopt(*job))
         return true;
 
-    job = std::make_shared<Job>();
-    job->clock.start();
-    job->viewSerial = m_viewport.viewSerial();
-    job->meshSerial = m_document.meshSerial();
-    const core::View view = m_viewport.view();
-    const core::LayerOptions options = m_document.layerOptions();
-    core::CaptureStats stats;
-    core::Result<core::LayerStack> stack =
-        m_viewport.captureLayers(view, options.cullBackFaces, &stats);
-    ++m_captures;
-    if (stack) {
+    Captured captured = captureView();
+    job = captured.job;
+    if (captured.stack) {
         try {
             core::ConnectivityEngine* engine = m_viewport.connectivityEngine();
             m_document.setConnectivityEngine(engine);
-            job->layers.emplace(core::finishLayers(std::move(stack).value(), stats,
-                                                   m_document.mesh(), m_document.topology(), view,
-                                                   options, engine));
+            job->layers.emplace(core::finishLayers(std::move(captured.stack).value(), job->stats,
+                                                   m_document.mesh(), m_document.topology(),
+                                                   job->view, job->options, engine));
         } catch (const std::bad_alloc&) {
             job->error = "not enough memory for the layers of this view";
         } catch (const std::exception& e) {
             job->error = e.what();
         }
     } else {
-        job->error = stack.error();
+        job->error = captured.stack.error();
     }
     if (job->layers && adopt(*job))
         return true;
@@ -201,11 +204,8 @@ bool LayerBuilder::adopt(Job& job) {
 
 void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
     if (job != m_job)
-        return; // buildNow() already joined and settled it
+        return; // buildNow() already waited for it and settled it
     m_job.reset();
-    // Posted as the worker's last step: the join returns at once.
-    if (m_worker.joinable())
-        m_worker.join();
     m_workerBusy = false;
 
     const bool current = job->viewSerial == m_viewport.viewSerial();

@@ -3,10 +3,11 @@
 
 #include <cstdint>
 #include <memory>
-#include <thread>
 
+#include <QFuture>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 #include <QTimer>
 
 #include "core/layers/layers.h"
@@ -23,9 +24,10 @@ class Viewport;
  * Runs build_layers (docs/architecture.md §3 step 2) when the view settles, without ever blocking
  * orbiting. Any view change drops the document's layers at once and restarts a short timer; when it
  * fires (and no drag is in progress), the viewport captures the fragments on the GUI thread in its
- * GL context, and a worker thread finishes them (connectivity, regions, region graph). The result
- * is adopted only if view, mesh and capture options are still those it was made for; a stale one
- * is dropped. Threshold and test changes re-segment the current layers without a capture.
+ * GL context, and a background job (runInBackground()) finishes them (connectivity, regions, region
+ * graph). The result is adopted only if view, mesh and capture options are still those it was made
+ * for; a stale one is dropped. Threshold and test changes re-segment the current layers without a
+ * capture.
  */
 class LayerBuilder : public QObject {
     Q_OBJECT
@@ -76,8 +78,11 @@ signals:
 
 private:
     struct Job;
+    struct Captured;
 
     void onSettled();
+    /** A new job for the current view and its fragments, captured on this thread. */
+    Captured captureView();
     void capture();
     void finish(const std::shared_ptr<Job>& job);
     /** Adopts a finished job's layers if still current; true when adopted. */
@@ -86,7 +91,8 @@ private:
     core::Document& m_document;
     Viewport& m_viewport;
     QTimer m_settle;
-    std::thread m_worker;
+    QThreadPool m_pool; // one thread: one worker job at a time
+    QFuture<void> m_worker;
     /** The worker's job; a finish() for any other was settled by buildNow(). */
     std::shared_ptr<Job> m_job;
     bool m_workerBusy = false;

@@ -200,7 +200,7 @@ TEST(Export, ObjBakesFactorsAndKeepsVertexColours) {
     mesh.materials = {core::Material{"tinted one", {0.5f, 1.0f, 0.25f, 1.0f}, 0},
                       core::Material{"plain", {0.1f, 0.2f, 0.3f, 0.75f}, -1}};
     mesh.textures = {gradient(16, 8, true)};
-    ASSERT_EQ(mesh.validate(), "");
+    ASSERT_TRUE(mesh.validate().ok());
     TempDir dir;
     const std::string path = dir.file("quads.obj");
     ASSERT_TRUE(core::exportMesh(path, core::ExportFormat::Obj, mesh).ok());
@@ -372,11 +372,13 @@ TEST(Export, ProgressRunsToTheEndAndCancels) {
             dir.file(std::string("c") + core::exportExtension(format));
         int calls = 0;
         const core::ProgressFn cancel = [&](double) { return ++calls < 2; };
-        const std::string error =
+        const core::Error error =
             core::isTextureFormat(format)
-                ? core::exportTexture(cancelledPath, format, painted.textures[0], cancel).error()
-                : core::exportMesh(cancelledPath, format, painted, cancel).error();
-        EXPECT_EQ(error, cancelledPath + ": cancelled");
+                ? core::exportTexture(cancelledPath, format, painted.textures[0], cancel)
+                      .takeError()
+                : core::exportMesh(cancelledPath, format, painted, cancel).takeError();
+        EXPECT_EQ(error.message, cancelledPath + ": cancelled");
+        EXPECT_EQ(error.kind, core::ErrorKind::Cancelled);
         EXPECT_FALSE(fs::exists(cancelledPath));
     }
 }

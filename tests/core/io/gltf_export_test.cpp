@@ -292,7 +292,7 @@ TEST(GltfExportTest, ManyNodesAndMaterialsRoundTrip) {
 TEST(GltfExportTest, VertexColorsMaterialRunsAndTexturesRoundTrip) {
     TempDir dir;
     const core::Mesh mesh = makeColoredMesh();
-    ASSERT_EQ(mesh.validate(), "");
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().error();
     const core::Mesh back = roundTrip(mesh, dir, "colored.glb");
     expectSameMesh(mesh, back);
     const Json json = checkGlbLayout(readFile(dir.path() / "colored.glb"));
@@ -344,7 +344,7 @@ TEST(GltfExportTest, VerticesSharedBetweenRunsKeepTriangleOrder) {
     }
     mesh.materials = {core::Material{"a", glm::vec4(1.0f), -1},
                       core::Material{"b", glm::vec4(0.5f), -1}};
-    ASSERT_EQ(mesh.validate(), "");
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().error();
     TempDir dir;
     const core::Mesh back = roundTrip(mesh, dir, "shared.glb");
     ASSERT_EQ(back.triangleCount(), mesh.triangleCount());
@@ -503,6 +503,7 @@ TEST(GltfExportTest, SaveFailuresNameTheFileAndLeaveItIntact) {
         core::saveGlb(path, makeColoredMesh(), {}, [](double f) { return f < 0.5; });
     expectFailure(path, cancelled);
     EXPECT_NE(cancelled.error().find("cancelled"), std::string::npos);
+    EXPECT_TRUE(cancelled.cancelled());
     EXPECT_EQ(readFile(path), "old content");
     EXPECT_FALSE(fs::exists(path + ".bak"));
 

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -25,6 +24,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/io/mesh_io.h"
+#include "core/io/mesh_io_in_process.h"
 #include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;
@@ -234,7 +234,7 @@ TEST_P(CorpusModel, LoadsOrFailsAsListed) {
     if (expected == expectedFailures().end()) {
         ASSERT_TRUE(mesh.ok()) << mesh.error();
         EXPECT_GT(mesh->triangleCount(), 0u);
-        EXPECT_EQ(mesh->validate(), "");
+        EXPECT_TRUE(mesh->validate().ok());
     } else {
         ASSERT_FALSE(mesh.ok()) << rel << " was expected to fail: " << expected->second;
         EXPECT_EQ(mesh.error().rfind(path + ": ", 0), 0u) << mesh.error();
@@ -1019,25 +1019,80 @@ TEST(MeshIo, ProgressIsReportedAndCancels) {
             core::loadMesh(corpus(rel), [&](double) { return ++calls < 3; });
         ASSERT_FALSE(cancelled.ok());
         EXPECT_EQ(cancelled.error(), corpus(rel) + ": cancelled");
+        EXPECT_TRUE(cancelled.cancelled()) << rel;
+
+        // The loaders themselves (in the importer process) stop with the same kind of error.
+        int inProcessCalls = 0;
+        const core::Result<core::Mesh> stopped =
+            core::loadMeshInProcess(corpus(rel), [&](double) { return ++inProcessCalls < 3; });
+        ASSERT_FALSE(stopped.ok());
+        EXPECT_EQ(stopped.error(), corpus(rel) + ": cancelled");
+        EXPECT_EQ(stopped.errorKind(), core::ErrorKind::Cancelled) << rel;
     }
 }
 
+/** Whether two loads gave the same mesh: every array, material and texture byte. */
+::testing::AssertionResult sameMesh(const core::Mesh& a, const core::Mesh& b) {
+    if (a.positions != b.positions || a.normals != b.normals || a.uvs != b.uvs ||
+        a.colors != b.colors)
+        return ::testing::AssertionFailure() << "vertex arrays differ";
+    if (a.indices != b.indices || a.triangleMaterial != b.triangleMaterial)
+        return ::testing::AssertionFailure() << "indices or triangle materials differ";
+    if (a.materials.size() != b.materials.size())
+        return ::testing::AssertionFailure() << "material counts differ";
+    for (std::size_t m = 0; m < a.materials.size(); ++m)
+        if (a.materials[m].name != b.materials[m].name ||
+            a.materials[m].baseColorFactor != b.materials[m].baseColorFactor ||
+            a.materials[m].baseColorTexture != b.materials[m].baseColorTexture)
+            return ::testing::AssertionFailure() << "material " << m << " differs";
+    if (a.textures.size() != b.textures.size())
+        return ::testing::AssertionFailure() << "texture counts differ";
+    for (std::size_t t = 0; t < a.textures.size(); ++t)
+        if (a.textures[t].width != b.textures[t].width ||
+            a.textures[t].height != b.textures[t].height ||
+            a.textures[t].rgba != b.textures[t].rgba)
+            return ::testing::AssertionFailure() << "texture " << t << " differs";
+    if (a.warnings != b.warnings)
+        return ::testing::AssertionFailure() << "warnings differ";
+    return ::testing::AssertionSuccess();
+}
+
 TEST(MeshIo, ConcurrentLoadsAgree) {
-    const std::string glb = corpus("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb");
-    const std::string obj = corpus("OBJ/spider.obj");
-    std::atomic<int> failures{0};
+    // Each file loaded alone is the reference; four threads then load both files three times
+    // each at once, and every load must give the reference mesh byte for byte.
+    const std::string files[2] = {corpus("OBJ/spider.obj"),
+                                  corpus("glTF2/BoxTextured-glTF-Binary/BoxTextured.glb")};
+    std::vector<core::Mesh> reference;
+    for (const std::string& file : files) {
+        core::Result<core::Mesh> m = core::loadMesh(file);
+        ASSERT_TRUE(m.ok()) << m.error();
+        ASSERT_FALSE(m->textures.empty()) << file; // so that texture bytes are compared too
+        reference.push_back(std::move(m).value());
+    }
+    constexpr int kThreads = 4, kLoads = 3;
+    std::vector<core::Mesh> meshes(kThreads * kLoads);
+    std::vector<std::string> errors(kThreads * kLoads);
     std::vector<std::thread> threads;
-    for (int t = 0; t < 4; ++t)
+    for (int t = 0; t < kThreads; ++t)
         threads.emplace_back([&, t] {
-            for (int i = 0; i < 3; ++i) {
-                const core::Result<core::Mesh> m = core::loadMesh(t % 2 ? glb : obj);
-                if (!m.ok() || m->textures.empty())
-                    ++failures;
+            for (int i = 0; i < kLoads; ++i) {
+                core::Result<core::Mesh> m = core::loadMesh(files[t % 2]);
+                const std::size_t slot = std::size_t(t * kLoads + i);
+                if (m.ok())
+                    meshes[slot] = std::move(m).value();
+                else
+                    errors[slot] = m.error();
             }
         });
     for (std::thread& t : threads)
         t.join();
-    EXPECT_EQ(failures.load(), 0);
+    for (int t = 0; t < kThreads; ++t)
+        for (int i = 0; i < kLoads; ++i) {
+            const std::size_t slot = std::size_t(t * kLoads + i);
+            SCOPED_TRACE(files[t % 2] + ", thread " + std::to_string(t));
+            ASSERT_EQ(errors[slot], "");
+            EXPECT_TRUE(sameMesh(meshes[slot], reference[std::size_t(t % 2)]));
+        }
 }
 
 TEST(MeshIo, BuiltinModelsAreDispatched) {

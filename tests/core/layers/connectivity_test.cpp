@@ -2,7 +2,6 @@
 // Connectivity on CPU-captured synthetic and built-in meshes; mesh topology; CPU capture; pixel
 // rays. The golden cases are in segmentation_test.cpp.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -386,58 +385,6 @@ TEST(LayerStack, CountsLayers) {
     EXPECT_EQ(stack.fragment(1, 1), core::kNone);
     EXPECT_EQ(core::LayerStack{}.maxLayers(), 0u);
     EXPECT_TRUE(core::LayerStack{}.fragmentsPerLayer().empty());
-}
-
-// ---------------------------------------------------------------------------------------------
-
-double medianMs(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-// Timing for the README (run with --gtest_also_run_disabled_tests): the built-in trefoil
-// (144K vertices) at 1280×720: connectivity and segmentation, medians of 11 runs.
-TEST(ConnectivityTiming, DISABLED_Trefoil1280x720) {
-    const core::Mesh mesh = core::makeTrefoil();
-    const core::MeshTopology topology = core::buildMeshTopology(mesh);
-    const core::View view =
-        core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 1.6f).view(1280, 720);
-    const core::LayerStack stack = core::captureLayersCpu(mesh, view);
-    const core::SurfaceGeometry geometry = core::makeSurfaceGeometry(mesh, topology, view);
-    // Per fragment, and per pixel-layer slot (width × height × layers, docs/architecture.md §5's
-    // unit).
-    const double fragments = double(stack.fragmentCount());
-    const double slots = double(stack.pixelCount()) * double(stack.maxLayers());
-    std::printf("[ timing   ] %zu fragments, %u layers, %.0f pixel-layer slots\n",
-                stack.fragmentCount(), stack.maxLayers(), slots);
-    using Clock = std::chrono::steady_clock;
-    auto ms = [](Clock::time_point a, Clock::time_point b) {
-        return std::chrono::duration<double, std::milli>(b - a).count();
-    };
-    for (ConnectionTest test : {ConnectionTest::Surface, ConnectionTest::Plain})
-        for (unsigned threads : {1u, 2u}) {
-            core::ConnectivityOptions options;
-            options.test = test;
-            options.unitScale = core::unitScale(mesh);
-            options.threads = threads;
-            std::vector<double> conn, seg;
-            for (int run = 0; run < 11; ++run) {
-                const auto t0 = Clock::now();
-                const core::Connectivity c = core::computeConnectivity(stack, options, &geometry);
-                const auto t1 = Clock::now();
-                const core::Segmentation s = core::segmentLayers(stack, c, threads);
-                const auto t2 = Clock::now();
-                conn.push_back(ms(t0, t1));
-                seg.push_back(ms(t1, t2));
-                ASSERT_GT(s.graph.regions.size(), 0u);
-            }
-            const double c = medianMs(conn), s = medianMs(seg);
-            std::printf("[ timing   ] %-7s %u thread(s): connectivity %.2f ms (%.1f ns/fragment, "
-                        "%.2f ns/slot), segmentation %.2f ms (%.1f ns/fragment, %.2f ns/slot)\n",
-                        test == ConnectionTest::Surface ? "surface" : "plain", threads, c,
-                        c * 1e6 / fragments, c * 1e6 / slots, s, s * 1e6 / fragments,
-                        s * 1e6 / slots);
-        }
 }
 
 } // namespace

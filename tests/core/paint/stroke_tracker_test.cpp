@@ -4,7 +4,6 @@
 // trefoil that follows a strand under a crossing.
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -709,80 +708,6 @@ TEST(StrokeTrefoil, LongStrokeFollowsTheStrandUnderACrossing) {
     std::printf("[          ] %zu dabs, %zu layer-2 fragments painted, painted parameters within "
                 "%.3f rad of the stroke\n",
                 dabs.size(), layer2Fragments, worst);
-}
-
-// ---------------------------------------------------------------------------------------------
-
-double medianMs(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-// Timing for the README and docs/architecture.md §5 (run with --gtest_also_run_disabled_tests): the
-// built-in trefoil (144K vertices) at 1280×720, R = 32 px; start_stroke at points along a
-// strand, move_stroke for 5 px moves (a 200 Hz tablet at 1000 px/s) across a crossing.
-TEST(StrokeTiming, DISABLED_Trefoil1280x720) {
-    const TrefoilScene s = trefoilScene(399, 119, 1280, 720);
-    ASSERT_GT(s.layers.stack.fragmentCount(), 0u);
-    std::printf("[ timing   ] %zu fragments, %u layers, build_layers %.1f ms (CPU capture)\n",
-                s.layers.stack.fragmentCount(), s.layers.stack.maxLayers(),
-                s.layers.timings.totalMs());
-    StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.layers));
-    using Clock = std::chrono::steady_clock;
-    auto ms = [](Clock::time_point a, Clock::time_point b) {
-        return std::chrono::duration<double, std::milli>(b - a).count();
-    };
-    std::vector<StrokePoint> path;
-    for (float dt = -0.8f; dt <= 0.8f; dt += 0.0005f) {
-        const glm::vec3 q = s.layers.view.project(trefoilCentre(s.underT + dt));
-        if (path.empty() || glm::length(glm::vec2(q) - path.back().position) >= 5.0f)
-            path.push_back({glm::vec2(q), 1.0f});
-    }
-    const core::Brush brush = testBrush(32.0f);
-    std::vector<double> start, move, complete, moveWithOverlay;
-    std::vector<std::uint8_t> overlay(4 * s.layers.stack.pixelCount());
-    std::size_t dabCount = 0, mpPixels = 0, layer2 = 0;
-    for (int round = 0; round < 5; ++round) {
-        for (std::size_t i = 0; i < path.size(); i += 4) {
-            std::vector<Dab> dabs;
-            const auto t0 = Clock::now();
-            tracker.startStroke(path[i], brush, dabs);
-            start.push_back(ms(t0, Clock::now()));
-        }
-        std::vector<Dab> dabs;
-        tracker.startStroke(path.front(), brush, dabs);
-        for (std::size_t i = 1; i < path.size(); ++i) {
-            dabs.clear();
-            const auto t0 = Clock::now();
-            tracker.moveStroke(path[i], dabs);
-            const auto t1 = Clock::now();
-            move.push_back(ms(t0, t1));
-            dabCount += dabs.size();
-            for (const Dab& d : dabs) {
-                mpPixels += d.paintable.size();
-                layer2 += d.layer == 2;
-            }
-            if (round == 0) {
-                const auto t2 = Clock::now();
-                tracker.completeTrackableMap();
-                const auto t3 = Clock::now();
-                tracker.fillOverlay(overlay);
-                complete.push_back(ms(t2, t3));
-                moveWithOverlay.push_back(ms(t0, t1) + ms(t2, Clock::now()));
-            }
-        }
-    }
-    std::sort(move.begin(), move.end());
-    std::printf("[ timing   ] R = 32: start_stroke median %.3f ms; move_stroke (5 px) median "
-                "%.3f ms, 95%% %.3f ms, max %.3f ms; %.2f dabs a move, %.0f Mp pixels a dab, "
-                "%zu dabs on layer 2\n",
-                medianMs(start), medianMs(move), move[move.size() * 95 / 100], move.back(),
-                double(dabCount) / double(move.size()), double(mpPixels) / double(dabCount),
-                layer2 / 5);
-    std::printf("[ timing   ] complete Mt (R_max = 128) median %.3f ms; move_stroke + complete Mt "
-                "+ overlay median %.3f ms\n",
-                medianMs(complete), medianMs(moveWithOverlay));
 }
 
 } // namespace

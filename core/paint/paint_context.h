@@ -1,0 +1,266 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The projection context both paint targets share (used inside core/paint only): the sRGB texel
+// blend, the current view's projected vertices and triangle setups, the dab's window onto the
+// paintable map, and the tiles a stroke touched with their coverage and stroke-start bytes.
+// PaintTarget::Context is defined here; its methods are in paint_context.cpp.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/base/color.h"
+#include "core/layers/connectivity.h"
+#include "core/layers/layers.h"
+#include "core/paint/paint_target.h"
+
+namespace core {
+
+// ---------------------------------------------------------------------------------------------
+// sRGB
+
+inline std::uint8_t encodeUnorm(float x) {
+    if (!(x > 0.0f))
+        return 0;
+    if (x >= 1.0f)
+        return 255;
+    return std::uint8_t(x * 255.0f + 0.5f);
+}
+
+/**
+ * Sets the texel at dst to lerp(before, target, cover) in linear colour (alpha linear as
+ * stored). The target is given as bytes (sRGB colour, unorm alpha) and, when targetLinear is not
+ * nullptr, as the exact linear values the bytes round; coverage 1 gives the target bytes exactly.
+ */
+inline void blendTexel(const SrgbTables& srgb, std::uint8_t* dst, const std::uint8_t* before,
+                       const std::uint8_t* targetBytes, const float* targetLinear, float cover) {
+    if (cover >= 1.0f) {
+        std::memcpy(dst, targetBytes, 4);
+        return;
+    }
+    for (int k = 0; k < 3; ++k) {
+        const float from = srgb.decode[before[k]];
+        const float to = targetLinear ? targetLinear[k] : srgb.decode[targetBytes[k]];
+        dst[k] = srgb.encode(from + (to - from) * cover);
+    }
+    const float from = float(before[3]) / 255.0f;
+    const float to = targetLinear ? targetLinear[3] : float(targetBytes[3]) / 255.0f;
+    dst[3] = encodeUnorm(from + (to - from) * cover);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Projection
+
+/** Clip w at or below which a vertex is at or behind the eye. */
+constexpr float kMinW = 1e-6f;
+
+/** A vertex in the current view: view-space position and window position × clip w. */
+struct ProjectedVertex {
+    glm::vec3 view{0.0f};
+    float sx = 0.0f, sy = 0.0f, w = 0.0f; // window x = sx / w, y = sy / w
+};
+
+/** A triangle taking part in the current dab. */
+struct TriangleSetup {
+    std::uint32_t triangle = 0;
+    std::array<std::uint32_t, 3> vertex{};
+    glm::vec2 screen[3];
+    glm::vec4 plane{0.0f}; // view space: unit normal, offset (zero when degenerate)
+};
+
+struct StrokeTile {
+    TileKey key;
+    std::vector<float> alpha;         // stroke coverage per element
+    std::vector<std::uint8_t> before; // the tile at stroke start
+    std::uint32_t dab = 0;            // the last dab that touched it
+};
+
+struct PaintTarget::Context {
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const MeshTopology> topology;
+    PaintTargetOptions options;
+
+    // The view the cached projections belong to.
+    bool haveView = false;
+    View view;
+    std::uint32_t viewSerial = 0;
+    float halfWidth = 0.5f, halfHeight = 0.5f;
+    PixelRays rays;
+    float footprintScale = 0.0f, footprintOffset = 0.0f;
+    std::vector<ProjectedVertex> vertices;
+    std::vector<std::uint32_t> vertexView;
+
+    // The dab being painted.
+    std::uint32_t dab = 0;
+    bool cullBackFaces = true;
+    std::vector<std::uint32_t> triangleDab;   // per triangle: the last dab that looked at it
+    std::vector<std::uint32_t> triangleLocal; // index into setups, or kNone (rejected)
+    std::vector<TriangleSetup> setups;
+    // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
+    std::vector<std::uint32_t> window;
+    int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
+    glm::vec2 center{0.0f};
+    float radius = 0.0f;
+    float dabOpacity = 0.0f;
+    float flowOpacity = 0.0f;
+    float toleranceScale = 0.0f, toleranceOffset = 0.0f; // per unit of depth, constant
+
+    // The stroke.
+    bool inStroke = false;
+    Brush brush;
+    glm::vec4 colorLinear{0.0f};
+    std::array<std::uint8_t, 4> colorBytes{};
+    std::size_t elementsPerTile = 0, bytesPerTile = 0;
+    std::vector<std::vector<std::int32_t>> tileSlot; // per page and tile: stroke slot or -1
+    std::vector<StrokeTile> slots;                   // a pool reused from stroke to stroke
+    std::size_t slotsUsed = 0;
+    std::vector<std::uint32_t> touched; // slots the current dab touched
+    std::vector<TileKey> keys;          // scratch
+    std::vector<std::uint8_t> scratch;
+    PaintChanges changes;
+
+    void updateView(const View& v);
+    const ProjectedVertex& vertex(std::uint32_t v);
+    bool setUpTriangle(std::uint32_t t, TriangleSetup& s);
+    /** A new dab number (the per-triangle and per-tile marks compare with it). */
+    void nextDab() {
+        if (++dab == 0) {
+            std::fill(triangleDab.begin(), triangleDab.end(), 0u);
+            for (StrokeTile& s : slots)
+                s.dab = 0;
+            dab = 1;
+        }
+    }
+    bool beginDab(const Layers& layers, const Dab& d);
+    /**
+     * Starts a paintElements() call: a new dab number, nothing touched yet. Returns the coverage
+     * the elements get, the stroke's opacity (0 when there is nothing to paint).
+     */
+    float beginElements() {
+        changes.clear();
+        touched.clear();
+        if (!inStroke)
+            return 0.0f;
+        nextDab();
+        return std::isfinite(brush.opacity) ? std::clamp(brush.opacity, 0.0f, 1.0f) : 0.0f;
+    }
+    bool overlapsMap(const TriangleSetup& s) const;
+    /**
+     * The setup of the map's fragment at window position (px, py), or kNone. Truncating the
+     * non-negative offset from the window's integer corner is the floor: the pixel (x, y)
+     * covering [x, x + 1) × [y, y + 1).
+     */
+    std::uint32_t mapAt(float px, float py) const {
+        const float fx = px - float(windowX), fy = py - float(windowY);
+        if (!(fx >= 0.0f && fx < float(windowW) && fy >= 0.0f && fy < float(windowH)))
+            return kNone;
+        return window[std::size_t(fy) * std::size_t(windowW) + std::size_t(fx)];
+    }
+    /**
+     * Whether view-space point p of the triangle of setup own, seen in a pixel whose map
+     * fragment lies on the triangle of setup mapped, is that fragment's surface.
+     */
+    bool onMapSurface(std::uint32_t own, const glm::vec3& p, std::uint32_t mapped) const {
+        // A planar triangle meets a pixel's ray once: the same triangle is the same point.
+        if (own == mapped)
+            return true;
+        // Another triangle (a neighbour, or another surface): compare with its plane, which is
+        // exact across the pixel at any slope where the depth at the pixel centre is not.
+        const glm::vec4& plane = setups[mapped].plane;
+        const float depth = -p.z;
+        return plane != glm::vec4(0.0f) && std::fabs(glm::dot(glm::vec3(plane), p) + plane.w) <=
+                                               depth * toleranceScale + toleranceOffset;
+    }
+    /** The setup of the map's fragment at pixel (x, y), or kNone (also outside the window). */
+    std::uint32_t mapAtPixel(int x, int y) const {
+        const int wx = x - windowX, wy = y - windowY;
+        if (wx < 0 || wy < 0 || wx >= windowW || wy >= windowH)
+            return kNone;
+        return window[std::size_t(wy) * std::size_t(windowW) + std::size_t(wx)];
+    }
+    /**
+     * Whether view-space point p of the triangle of setup own, seen at window position (px, py)
+     * in a pixel whose centre saw no fragment of the map on its surface, is still on the map's
+     * surface where the pixel is only partly covered by it: a neighbouring pixel of the 2 × 2
+     * block of pixel centres around the position has the map on its surface, and the pixel's
+     * centre saw nothing in front of the point and nothing on its surface, unless the centre
+     * lies outside the dab's disc (the map ends there for the radius alone). Such points are
+     * painted as if their pixel were in the map, so the paint ends at the surface's outline and
+     * at the dab's circle, not at the saw-tooth of whole pixels around them.
+     */
+    bool coveredAtEdge(const LayerStack& stack, std::uint32_t own, const glm::vec3& p, float px,
+                       float py) const {
+        const float fx = std::floor(px), fy = std::floor(py);
+        const int x = int(fx), y = int(fy);
+        const int nx = px - fx < 0.5f ? x - 1 : x + 1;
+        const int ny = py - fy < 0.5f ? y - 1 : y + 1;
+        const int neighbours[3][2] = {{nx, y}, {x, ny}, {nx, ny}};
+        bool beside = false;
+        for (const auto& q : neighbours) {
+            const std::uint32_t mapped = mapAtPixel(q[0], q[1]);
+            if (mapped != kNone && onMapSurface(own, p, mapped)) {
+                beside = true;
+                break;
+            }
+        }
+        if (!beside)
+            return false;
+        if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
+            return true;
+        const std::size_t pixel = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+        const glm::vec2 centreOffset = glm::vec2(fx + 0.5f, fy + 0.5f) - center;
+        const bool outsideDisc = glm::dot(centreOffset, centreOffset) >= radius * radius;
+        const float depth = -p.z;
+        const float tolerance = depth * toleranceScale + toleranceOffset;
+        for (std::uint32_t f = stack.offsets[pixel]; f < stack.offsets[pixel + 1]; ++f) {
+            const std::uint32_t t = stack.triangle[f];
+            const bool onSurface =
+                t < triangleDab.size() && triangleDab[t] == dab && triangleLocal[t] != kNone
+                    ? onMapSurface(own, p, triangleLocal[t])
+                    : std::fabs(stack.depth[f] - depth) <= tolerance;
+            // The centre saw this surface, yet it is not in the map: hidden, too far along the
+            // surface, or another layer chosen there; or only outside the disc.
+            if (onSurface ? !outsideDisc : stack.depth[f] < depth)
+                return false;
+        }
+        return true;
+    }
+    bool windowPreimage(const TriangleSetup& s, const glm::dvec2 texel[3], double& minX,
+                        double& maxX, double& minY, double& maxY) const;
+    std::int32_t slotFor(TileStore& store, std::uint32_t page, std::uint32_t tile);
+    void touch(std::int32_t slot) {
+        StrokeTile& s = slots[std::size_t(slot)];
+        if (s.dab != dab) {
+            s.dab = dab;
+            touched.push_back(std::uint32_t(slot));
+        }
+    }
+    /** New coverage of an element after this dab at falloff weight, or old if unchanged. */
+    float coverAfter(float old, float weight) const {
+        return std::max(old, std::min(dabOpacity, old + flowOpacity * weight));
+    }
+};
+
+/** Weights for colorAt: negative ones dropped, normalised; false if none are usable. */
+inline bool normalizedWeights(const Mesh& mesh, std::uint32_t triangle, glm::vec3 w,
+                              glm::vec3& out) {
+    if (triangle >= mesh.triangleCount() || !std::isfinite(w.x) || !std::isfinite(w.y) ||
+        !std::isfinite(w.z))
+        return false;
+    w = glm::max(w, glm::vec3(0.0f));
+    const float sum = w.x + w.y + w.z;
+    if (!(sum > 0.0f) || !std::isfinite(sum))
+        return false;
+    out = w / sum;
+    return true;
+}
+
+} // namespace core

@@ -1,0 +1,601 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Projection painting into textures (TextureTarget): pages made from the mesh's textures or new,
+// seam padding, the texel loop of a dab, fills, undo tiles of kTextureTile² texels.
+#include <utility>
+
+#include <glm/common.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "core/paint/paint_context.h"
+#include "core/paint/uv_raster.h"
+
+namespace core {
+
+using uv::scanUv;
+using uv::setUpUv;
+using uv::UvTriangle;
+using uv::wrapIndex;
+
+namespace {
+
+/** Tiles of kTextureTile texels → merged rectangles along tile rows (keys sorted). */
+void texelRectsFromTiles(std::vector<TileKey>& keys, const std::vector<TextureTarget::Page>& pages,
+                         std::vector<TexelRect>& out) {
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size();) {
+        const TextureTarget::Page& page = pages[keys[i].page];
+        const std::uint32_t row = keys[i].tile / std::uint32_t(page.tilesX);
+        std::size_t j = i + 1;
+        while (j < keys.size() && keys[j].page == keys[i].page &&
+               keys[j].tile == keys[j - 1].tile + 1 &&
+               keys[j].tile / std::uint32_t(page.tilesX) == row)
+            ++j;
+        const int tx0 = int(keys[i].tile % std::uint32_t(page.tilesX));
+        const int tx1 = int(keys[j - 1].tile % std::uint32_t(page.tilesX));
+        TexelRect rect;
+        rect.page = keys[i].page;
+        rect.x = tx0 * kTextureTile;
+        rect.y = int(row) * kTextureTile;
+        rect.width = std::min((tx1 + 1) * kTextureTile, page.image.width) - rect.x;
+        rect.height = std::min(rect.y + kTextureTile, page.image.height) - rect.y;
+        out.push_back(rect);
+        i = j;
+    }
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// TextureTarget
+
+namespace {
+
+/** Seam padding of one page: which uncovered texels copy which covered one (docs/architecture.md
+ * §3). */
+void buildPadding(TextureTarget::Page& page, int padding) {
+    const int width = page.image.width, height = page.image.height;
+    std::vector<std::uint8_t>& coverage = page.coverage;
+    std::vector<TextureTarget::PadPair> frontier, next, pairs;
+    const auto at = [&](int x, int y) {
+        return std::uint32_t(wrapIndex(y, height)) * std::uint32_t(width) +
+               std::uint32_t(wrapIndex(x, width));
+    };
+    static constexpr int kOrthogonal[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
+    static constexpr int kDiagonal[4][2] = {{1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+    if (padding > 0) {
+        for (int y = 0; y < height; ++y) {
+            for (int x = 0; x < width; ++x) {
+                const std::uint32_t t = std::uint32_t(y) * std::uint32_t(width) + std::uint32_t(x);
+                if (coverage[t] != 1)
+                    continue;
+                bool border = false;
+                for (const auto& d : kOrthogonal)
+                    border = border || coverage[at(x + d[0], y + d[1])] == 0;
+                for (const auto& d : kDiagonal)
+                    border = border || coverage[at(x + d[0], y + d[1])] == 0;
+                if (border)
+                    frontier.push_back({t, t});
+            }
+        }
+    }
+    // Ring by ring, orthogonal neighbours before diagonal ones, so each padded texel copies a
+    // near covered texel; the scan order makes the choice deterministic.
+    for (int ring = 0; ring < padding && !frontier.empty(); ++ring) {
+        next.clear();
+        for (const auto* directions : {kOrthogonal, kDiagonal}) {
+            for (const TextureTarget::PadPair& f : frontier) {
+                const int x = int(f.padded % std::uint32_t(width));
+                const int y = int(f.padded / std::uint32_t(width));
+                for (int k = 0; k < 4; ++k) {
+                    const std::uint32_t n = at(x + directions[k][0], y + directions[k][1]);
+                    if (coverage[n] != 0)
+                        continue;
+                    coverage[n] = 2;
+                    pairs.push_back({n, f.source});
+                    next.push_back({n, f.source});
+                }
+            }
+        }
+        frontier.swap(next);
+    }
+    // Group by the source texel's tile: a dab pads from the tiles it painted.
+    const auto tileOf = [&](std::uint32_t texel) {
+        const std::uint32_t x = texel % std::uint32_t(width), y = texel / std::uint32_t(width);
+        return (y / kTextureTile) * std::uint32_t(page.tilesX) + x / kTextureTile;
+    };
+    const std::size_t tiles = std::size_t(page.tilesX) * std::size_t(page.tilesY);
+    page.padOffsets.assign(tiles + 1, 0u);
+    for (const TextureTarget::PadPair& p : pairs)
+        ++page.padOffsets[tileOf(p.source) + 1];
+    for (std::size_t i = 0; i < tiles; ++i)
+        page.padOffsets[i + 1] += page.padOffsets[i];
+    page.padPairs.resize(pairs.size());
+    std::vector<std::uint32_t> cursor(page.padOffsets.begin(), page.padOffsets.end() - 1);
+    for (const TextureTarget::PadPair& p : pairs)
+        page.padPairs[cursor[tileOf(p.source)]++] = p;
+}
+
+bool isWhite(const glm::vec4& v) {
+    return v == glm::vec4(1.0f);
+}
+
+} // namespace
+
+TextureTarget::TextureTarget(std::shared_ptr<const Mesh> mesh,
+                             std::shared_ptr<const MeshTopology> topology,
+                             const PaintTargetOptions& options)
+    : PaintTarget(std::move(mesh), std::move(topology), options) {}
+
+TextureTarget::~TextureTarget() = default;
+
+Result<std::unique_ptr<TextureTarget>>
+TextureTarget::create(std::shared_ptr<const Mesh> mesh,
+                      std::shared_ptr<const MeshTopology> topology,
+                      const PaintTargetOptions& options) {
+    if (const Status paintable = checkMesh(mesh, topology); !paintable)
+        return paintable.takeError();
+    if (!mesh->hasUvs())
+        return Error{"the mesh has no texture coordinates to paint a texture with",
+                     ErrorKind::BadInput};
+    std::unique_ptr<TextureTarget> target(new TextureTarget(mesh, topology, options));
+    target->m_padding = std::clamp(options.padding, 0, kTextureTile);
+    const SrgbTables& srgb = SrgbTables::get();
+
+    // Vertex colours other than white have to be baked in; white ones change nothing.
+    const bool bakeColors =
+        mesh->hasColors() && std::any_of(mesh->colors.begin(), mesh->colors.end(),
+                                         [](const glm::vec4& c) { return !isWhite(c); });
+
+    // Pages: one per (texture, factor) of textured materials, one shared new page for the rest.
+    std::vector<Page>& pages = target->m_pages;
+    target->m_materialPage.assign(mesh->materials.size(), 0u);
+    std::uint32_t newPage = kNone;
+    const int resolution = std::clamp(options.resolution, 512, 8192);
+    for (std::size_t m = 0; m < mesh->materials.size(); ++m) {
+        const Material& material = mesh->materials[m];
+        const int texture = material.baseColorTexture;
+        // Texel indices are 32-bit: a texture beyond 16384² is baked into a new page instead.
+        const bool textured = options.reuseTextures && texture >= 0 &&
+                              !mesh->textures[std::size_t(texture)].empty() &&
+                              std::int64_t(mesh->textures[std::size_t(texture)].width) *
+                                      mesh->textures[std::size_t(texture)].height <=
+                                  std::int64_t(16384) * 16384;
+        std::uint32_t index = kNone;
+        if (textured) {
+            for (std::size_t p = 0; p < pages.size(); ++p)
+                if (pages[p].source == texture && pages[p].factor == material.baseColorFactor)
+                    index = std::uint32_t(p);
+        } else {
+            index = newPage;
+        }
+        if (index == kNone) {
+            index = std::uint32_t(pages.size());
+            Page page;
+            page.factor = material.baseColorFactor;
+            if (textured) {
+                page.source = texture;
+                page.image = mesh->textures[std::size_t(texture)];
+                if (!isWhite(page.factor)) {
+                    for (std::size_t i = 0; i < page.image.rgba.size(); i += 4) {
+                        std::uint8_t* px = &page.image.rgba[i];
+                        for (int k = 0; k < 3; ++k)
+                            px[k] = srgb.encode(srgb.decode[px[k]] * page.factor[k]);
+                        px[3] = encodeUnorm(float(px[3]) / 255.0f * page.factor[3]);
+                    }
+                }
+            } else {
+                newPage = index;
+                page.image.width = page.image.height = resolution;
+                page.image.rgba.resize(std::size_t(resolution) * std::size_t(resolution) * 4);
+                const std::uint8_t fill[4] = {
+                    srgb.encode(page.factor.r), srgb.encode(page.factor.g),
+                    srgb.encode(page.factor.b), encodeUnorm(page.factor.a)};
+                for (std::size_t i = 0; i < page.image.rgba.size(); i += 4)
+                    std::memcpy(&page.image.rgba[i], fill, 4);
+            }
+            page.tilesX = (page.image.width + kTextureTile - 1) / kTextureTile;
+            page.tilesY = (page.image.height + kTextureTile - 1) / kTextureTile;
+            page.coverage.assign(std::size_t(page.image.width) * std::size_t(page.image.height),
+                                 0u);
+            pages.push_back(std::move(page));
+        }
+        target->m_materialPage[m] = index;
+        target->m_drawMaterials[m].baseColorTexture = int(index);
+    }
+
+    // Coverage of every page, baking factor × vertex colours (× texture) into the texels of new
+    // and baked pages; a page that is its texture byte for byte only records coverage.
+    for (std::size_t t = 0; t < mesh->triangleCount(); ++t) {
+        const Material& material = mesh->materials[mesh->triangleMaterial[t]];
+        Page& page = pages[target->m_materialPage[mesh->triangleMaterial[t]]];
+        const int width = page.image.width, height = page.image.height;
+        glm::vec2 uv[3];
+        glm::vec4 colors[3];
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t v = mesh->indices[3 * t + std::size_t(c)];
+            uv[c] = mesh->uvs[v];
+            colors[c] = bakeColors ? mesh->colors[v] : glm::vec4(1.0f);
+        }
+        UvTriangle r;
+        if (!setUpUv(uv, width, height, r))
+            continue;
+        // Triangles spread over many repeats of the texture would take forever to visit.
+        if (double(r.maxX - r.minX + 1) * double(r.maxY - r.minY + 1) >
+            4.0 * double(width) * double(height))
+            continue;
+        // A textured page bakes from the mesh's texture, not from the page, so a texel that
+        // overlapping charts visit twice is not multiplied twice.
+        const bool bake = bakeColors || page.source < 0;
+        const std::uint8_t* source =
+            page.source >= 0 ? mesh->textures[std::size_t(page.source)].rgba.data() : nullptr;
+        const glm::vec4 factor = page.source < 0 ? material.baseColorFactor : page.factor;
+        const double invArea = 1.0 / double(r.area);
+        scanUv(r, r.minX, r.maxX, r.minY, r.maxY,
+               [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+                   const std::size_t texel =
+                       std::size_t(wrapIndex(y, height)) * std::size_t(width) +
+                       std::size_t(wrapIndex(x, width));
+                   page.coverage[texel] = 1;
+                   if (!bake)
+                       return;
+                   const float l0 = float(double(e0) * invArea), l1 = float(double(e1) * invArea),
+                               l2 = float(double(e2) * invArea);
+                   const glm::vec4 color =
+                       factor * (l0 * colors[r.corner[0]] + l1 * colors[r.corner[1]] +
+                                 l2 * colors[r.corner[2]]);
+                   std::uint8_t* px = &page.image.rgba[texel * 4];
+                   if (source) {
+                       const std::uint8_t* in = source + texel * 4;
+                       for (int k = 0; k < 3; ++k)
+                           px[k] = srgb.encode(srgb.decode[in[k]] * color[k]);
+                       px[3] = encodeUnorm(float(in[3]) / 255.0f * color[3]);
+                   } else {
+                       for (int k = 0; k < 3; ++k)
+                           px[k] = srgb.encode(color[k]);
+                       px[3] = encodeUnorm(color[3]);
+                   }
+               });
+    }
+    for (Page& page : pages) {
+        buildPadding(page, target->m_padding);
+        // A page made here gets its padding texels from the charts, so filtering at chart
+        // borders shows the surface's colour; a texture kept byte for byte stays as it was.
+        const bool baked = page.source < 0 || bakeColors; // baked texel by texel
+        if (baked)
+            for (const PadPair& p : page.padPairs)
+                std::memcpy(&page.image.rgba[std::size_t(p.padded) * 4],
+                            &page.image.rgba[std::size_t(p.source) * 4], 4);
+        page.original = page.image;
+    }
+
+    std::vector<std::uint32_t> tilesPerPage;
+    for (const Page& page : pages)
+        tilesPerPage.push_back(std::uint32_t(page.tilesX * page.tilesY));
+    target->setUpStrokeTiles(tilesPerPage, std::size_t(kTextureTile) * kTextureTile,
+                             std::size_t(kTextureTile) * kTextureTile * 4);
+    return Result<std::unique_ptr<TextureTarget>>(std::move(target));
+}
+
+std::uint32_t TextureTarget::trianglePage(std::size_t t) const {
+    return m_materialPage[mesh().triangleMaterial[t]];
+}
+
+std::optional<glm::vec4> TextureTarget::colorAt(std::uint32_t triangle,
+                                                const glm::vec3& weights) const {
+    const Mesh& m = mesh();
+    glm::vec3 w;
+    if (!normalizedWeights(m, triangle, weights, w))
+        return std::nullopt;
+    glm::vec2 uv(0.0f);
+    for (int c = 0; c < 3; ++c)
+        uv += w[c] * m.uvs[m.indices[3 * std::size_t(triangle) + std::size_t(c)]];
+    const Image& image = m_pages[trianglePage(triangle)].image;
+    if (image.empty())
+        return std::nullopt;
+    // The texel whose square holds the point (UVs repeat, as when painting).
+    const double u = double(uv.x) - std::floor(double(uv.x));
+    const double v = double(uv.y) - std::floor(double(uv.y));
+    const int x = std::clamp(int(u * image.width), 0, image.width - 1);
+    const int y = std::clamp(int(v * image.height), 0, image.height - 1);
+    const std::uint8_t* texel =
+        &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+    return glm::vec4(srgbToLinear(texel[0]), srgbToLinear(texel[1]), srgbToLinear(texel[2]),
+                     float(texel[3]) / 255.0f);
+}
+
+std::size_t TextureTarget::bytes() const {
+    std::size_t total = sizeof(*this);
+    for (const Page& p : m_pages)
+        total += p.image.rgba.capacity() + p.original.rgba.capacity() + p.coverage.capacity() +
+                 p.padOffsets.capacity() * sizeof(std::uint32_t) +
+                 p.padPairs.capacity() * sizeof(PadPair);
+    return total + contextBytes();
+}
+
+std::size_t TextureTarget::tileBytes(TileKey key) const {
+    if (key.page >= m_pages.size())
+        return 0;
+    const Page& p = m_pages[key.page];
+    if (key.tile >= std::uint32_t(p.tilesX * p.tilesY))
+        return 0;
+    const int tx = int(key.tile % std::uint32_t(p.tilesX)),
+              ty = int(key.tile / std::uint32_t(p.tilesX));
+    const int w = std::min(kTextureTile, p.image.width - tx * kTextureTile);
+    const int h = std::min(kTextureTile, p.image.height - ty * kTextureTile);
+    return std::size_t(w) * std::size_t(h) * 4;
+}
+
+namespace {
+
+/**
+ * Calls fn(byte offset in the page, byte offset in the tile, bytes) for each row of tile of page
+ * p, whose bytes are size (tileBytes()).
+ */
+template <typename Fn>
+void forEachTileRow(const TextureTarget::Page& p, std::uint32_t tile, std::size_t size, Fn&& fn) {
+    const int tx = int(tile % std::uint32_t(p.tilesX)), ty = int(tile / std::uint32_t(p.tilesX));
+    const int w = std::min(kTextureTile, p.image.width - tx * kTextureTile);
+    const std::size_t rowBytes = std::size_t(w) * 4;
+    for (std::size_t r = 0; r < size / rowBytes; ++r) {
+        const std::size_t y = std::size_t(ty * kTextureTile) + r;
+        fn((y * std::size_t(p.image.width) + std::size_t(tx * kTextureTile)) * 4, r * rowBytes,
+           rowBytes);
+    }
+}
+
+} // namespace
+
+bool TextureTarget::readTile(TileKey key, std::span<std::uint8_t> out) const {
+    const std::size_t size = tileBytes(key);
+    if (size == 0 || out.size() != size)
+        return false;
+    const Page& p = m_pages[key.page];
+    forEachTileRow(p, key.tile, size, [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
+        std::memcpy(out.data() + tileAt, &p.image.rgba[pageAt], n);
+    });
+    return true;
+}
+
+bool TextureTarget::writeTile(TileKey key, std::span<const std::uint8_t> bytes) {
+    const std::size_t size = tileBytes(key);
+    if (size == 0 || bytes.size() != size)
+        return false;
+    Page& p = m_pages[key.page];
+    forEachTileRow(p, key.tile, size, [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
+        std::memcpy(&p.image.rgba[pageAt], bytes.data() + tileAt, n);
+    });
+    return true;
+}
+
+void TextureTarget::addChanges(std::vector<TileKey>& keys, PaintChanges& out) const {
+    texelRectsFromTiles(keys, m_pages, out.texels);
+}
+
+void TextureTarget::padTouched() {
+    Context& c = *m_context;
+    // Seam padding: uncovered texels next to charts take the coverage of the texel they copy,
+    // blended over their own stroke-start value, so the eraser restores them exactly too.
+    const std::size_t paintedTiles = c.touched.size(); // padding adds to the list
+    for (std::size_t i = 0; i < paintedTiles; ++i) {
+        const TileKey key = c.slots[c.touched[i]].key;
+        Page& page = m_pages[key.page];
+        const int width = page.image.width;
+        const std::uint32_t begin = page.padOffsets[key.tile], end = page.padOffsets[key.tile + 1];
+        if (begin == end)
+            continue;
+        const std::size_t sourceSlot = c.touched[i];
+        const int sourceTileX = int(key.tile % std::uint32_t(page.tilesX)) * kTextureTile;
+        const int sourceTileY = int(key.tile / std::uint32_t(page.tilesX)) * kTextureTile;
+        const int sourceWidth = std::min(kTextureTile, width - sourceTileX);
+        for (std::uint32_t j = begin; j < end; ++j) {
+            const PadPair pair = page.padPairs[j];
+            const int sx = int(pair.source % std::uint32_t(width)) - sourceTileX;
+            const int sy = int(pair.source / std::uint32_t(width)) - sourceTileY;
+            const float sourceCover =
+                c.slots[sourceSlot]
+                    .alpha[std::size_t(sy) * std::size_t(sourceWidth) + std::size_t(sx)];
+            if (!(sourceCover > 0.0f))
+                continue;
+            coverTexel(key.page, int(pair.padded % std::uint32_t(width)),
+                       int(pair.padded / std::uint32_t(width)), sourceCover);
+        }
+    }
+}
+
+void TextureTarget::coverTexel(std::uint32_t pageIndex, int x, int y, float cover) {
+    Context& c = *m_context;
+    Page& page = m_pages[pageIndex];
+    const int width = page.image.width;
+    const std::uint32_t tile = std::uint32_t(y / kTextureTile) * std::uint32_t(page.tilesX) +
+                               std::uint32_t(x / kTextureTile);
+    const std::int32_t slot = c.slotFor(*this, pageIndex, tile);
+    StrokeTile& st = c.slots[std::size_t(slot)];
+    const int tileWidth = std::min(kTextureTile, width - (x / kTextureTile) * kTextureTile);
+    const std::size_t local =
+        std::size_t(y % kTextureTile) * std::size_t(tileWidth) + std::size_t(x % kTextureTile);
+    if (!(cover > st.alpha[local]))
+        return;
+    st.alpha[local] = cover;
+    c.touch(slot);
+    const std::size_t at = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
+    const bool eraser = c.brush.eraser;
+    blendTexel(SrgbTables::get(), &page.image.rgba[at], &st.before[local * 4],
+               eraser ? &page.original.rgba[at] : c.colorBytes.data(),
+               eraser ? nullptr : &c.colorLinear[0], cover);
+}
+
+const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> elements) {
+    Context& c = *m_context;
+    const float cover = c.beginElements();
+    if (!(cover > 0.0f))
+        return c.changes;
+    for (const PaintElement& e : elements) {
+        if (e.page >= m_pages.size())
+            continue;
+        Page& page = m_pages[e.page];
+        const int width = page.image.width;
+        if (std::size_t(e.index) >= std::size_t(width) * std::size_t(page.image.height))
+            continue;
+        coverTexel(e.page, int(e.index % std::uint32_t(width)), int(e.index / std::uint32_t(width)),
+                   cover);
+    }
+    padTouched();
+    return touchedChanges();
+}
+
+const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
+    Context& c = *m_context;
+    c.changes.clear();
+    if (!c.inStroke || !c.beginDab(layers, dab))
+        return c.changes;
+    const Mesh& m = *c.mesh;
+    const SrgbTables& srgb = SrgbTables::get();
+    const Brush& brush = c.brush;
+    const bool eraser = brush.eraser;
+
+    // Sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush colour, or the
+    // original for the eraser.
+    const Page* blendPage = nullptr; // the page blend() writes to
+    const auto blend = [&](std::uint8_t* pixels, std::size_t texel, const std::uint8_t* before,
+                           float cover) {
+        blendTexel(srgb, pixels + texel * 4, before,
+                   eraser ? &blendPage->original.rgba[texel * 4] : c.colorBytes.data(),
+                   eraser ? nullptr : &c.colorLinear[0], cover);
+    };
+
+    // The dab's constants as locals, which the compiler can keep in registers across the
+    // texel loop (members would be reloaded after every texel store).
+    const std::uint32_t* window = c.window.data();
+    const float windowX = float(c.windowX), windowY = float(c.windowY);
+    const float windowW = float(c.windowW), windowH = float(c.windowH);
+    const std::size_t windowStride = std::size_t(c.windowW);
+    const TriangleSetup* setups = c.setups.data();
+    const glm::vec2 center = c.center;
+    const float radius = c.radius, dabOpacity = c.dabOpacity, flowOpacity = c.flowOpacity;
+    const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
+    const LayerStack& stack = layers.stack;
+
+    for (std::size_t si = 0; si < c.setups.size(); ++si) {
+        const TriangleSetup s = c.setups[si];
+        const auto own = std::uint32_t(si);
+        const std::uint32_t pageIndex = m_materialPage[m.triangleMaterial[s.triangle]];
+        Page& page = m_pages[pageIndex];
+        blendPage = &page;
+        const int width = page.image.width, height = page.image.height;
+        const auto tilesX = std::uint32_t(page.tilesX);
+        glm::vec2 uv[3];
+        for (int k = 0; k < 3; ++k)
+            uv[k] = m.uvs[s.vertex[std::size_t(k)]];
+        UvTriangle r;
+        if (!setUpUv(uv, width, height, r))
+            continue;
+        int x0 = r.minX, x1 = r.maxX, y0 = r.minY, y1 = r.maxY;
+        // A triangle larger than the dab: visit only the texels that can land in the map.
+        const float sMinX = std::min({s.screen[0].x, s.screen[1].x, s.screen[2].x});
+        const float sMaxX = std::max({s.screen[0].x, s.screen[1].x, s.screen[2].x});
+        const float sMinY = std::min({s.screen[0].y, s.screen[1].y, s.screen[2].y});
+        const float sMaxY = std::max({s.screen[0].y, s.screen[1].y, s.screen[2].y});
+        const bool inside =
+            sMinX >= float(c.windowX - 2) && sMaxX <= float(c.windowX + c.windowW + 2) &&
+            sMinY >= float(c.windowY - 2) && sMaxY <= float(c.windowY + c.windowH + 2);
+        if (!inside && double(x1 - x0 + 1) * double(y1 - y0 + 1) > 64.0) {
+            glm::dvec2 texel[3];
+            for (int k = 0; k < 3; ++k)
+                texel[k] = glm::dvec2(double(uv[k].x) * width, double(uv[k].y) * height);
+            double minX, maxX, minY, maxY;
+            if (c.windowPreimage(s, texel, minX, maxX, minY, maxY)) {
+                x0 = std::max(x0, int(std::floor(minX)) - 1);
+                x1 = std::min(x1, int(std::floor(maxX)) + 1);
+                y0 = std::max(y0, int(std::floor(minY)) - 1);
+                y1 = std::min(y1, int(std::floor(maxY)) + 1);
+            }
+        }
+        if (x0 > x1 || y0 > y1)
+            continue;
+        if (double(x1 - x0 + 1) * double(y1 - y0 + 1) > 4.0 * double(width) * double(height))
+            continue; // spread over many repeats of the texture (see create())
+        const bool wrap = x0 < 0 || y0 < 0 || x1 >= width || y1 >= height;
+
+        ProjectedVertex p[3];
+        for (int k = 0; k < 3; ++k)
+            p[k] = c.vertices[s.vertex[std::size_t(r.corner[k])]];
+        const float invArea = float(1.0 / double(r.area));
+        std::uint8_t* pixels = page.image.rgba.data();
+        std::uint32_t lastTile = kNone;
+        std::int32_t slot = -1;
+        float* alpha = nullptr;
+        const std::uint8_t* before = nullptr;
+        bool tileTouched = false;
+        int tileWidth = 0;
+
+        scanUv(
+            r, x0, x1, y0, y1,
+            [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+                const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
+                            l2 = float(e2) * invArea;
+                const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
+                if (!(w > kMinW))
+                    return;
+                const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
+                const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
+                // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
+                // pixel outside the map's box can be at its surface's outline.
+                const float fx = px - windowX, fy = py - windowY;
+                if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
+                    return;
+                const std::uint32_t mapped =
+                    fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
+                        ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
+                        : kNone;
+                // On its surface (as Context::onMapSurface()).
+                bool onMap = mapped == own;
+                if (!onMap && mapped != kNone) {
+                    const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
+                    const glm::vec4& plane = setups[mapped].plane;
+                    onMap = plane != glm::vec4(0.0f) &&
+                            std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
+                                -point.z * toleranceScale + toleranceOffset;
+                }
+                const float distance = glm::length(glm::vec2(px, py) - center);
+                if (!(distance < radius))
+                    return;
+                if (!onMap &&
+                    !c.coveredAtEdge(stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view,
+                                     px, py))
+                    return;
+                const float weight = brush.falloff(distance, radius);
+                if (!(weight > 0.0f))
+                    return;
+                const int tx = wrap ? wrapIndex(x, width) : x;
+                const int ty = wrap ? wrapIndex(y, height) : y;
+                const std::uint32_t tile =
+                    std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
+                if (tile != lastTile) {
+                    lastTile = tile;
+                    slot = c.slotFor(*this, pageIndex, tile);
+                    alpha = c.slots[std::size_t(slot)].alpha.data();
+                    before = c.slots[std::size_t(slot)].before.data();
+                    tileTouched = false;
+                    tileWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
+                }
+                const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(tileWidth) +
+                                          std::size_t(tx % kTextureTile);
+                const float old = alpha[local];
+                const float cover = std::max(old, std::min(dabOpacity, old + flowOpacity * weight));
+                if (!(cover > old))
+                    return;
+                alpha[local] = cover;
+                if (!tileTouched) {
+                    tileTouched = true;
+                    c.touch(slot);
+                }
+                blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
+                      before + local * 4, cover);
+            });
+    }
+
+    padTouched();
+    return touchedChanges();
+}
+
+} // namespace core

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The compositor's uploads: the mesh (vertices, triangles, materials, textures), one build's
+// fragments and segmentation, the region order, and painting's texel and vertex colour updates.
+#include "render/layer_compositor.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
+
+#include "render/layer_compositor_impl.h"
+
+namespace render {
+
+using namespace compositor;
+
+namespace {
+/**
+ * A normal octahedral-encoded as 2 × snorm16 (composite_shade.comp decodes it): one shader load
+ * instead of three, within 0.01° of the direction. Zero or non-finite normals give +Z.
+ */
+std::uint32_t octNormal(const glm::vec3& n) {
+    const float sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    float x = 0.0f, y = 0.0f;
+    if (sum > 0.0f && std::isfinite(sum)) {
+        x = n.x / sum;
+        y = n.y / sum;
+        if (n.z < 0.0f) {
+            const float fx = (1.0f - std::abs(y)) * (x >= 0.0f ? 1.0f : -1.0f);
+            const float fy = (1.0f - std::abs(x)) * (y >= 0.0f ? 1.0f : -1.0f);
+            x = fx;
+            y = fy;
+        }
+    }
+    const auto snorm = [](float v) {
+        return std::uint32_t(
+            std::uint16_t(std::int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f))));
+    };
+    return snorm(x) | snorm(y) << 16;
+}
+
+core::Error tooLarge(const char* what) {
+    return core::Error{std::string("layer compositor: ") + what +
+                       " exceed the GL's shader storage block size"};
+}
+core::Error outOfMemory(const char* what) {
+    return core::Error{std::string("layer compositor: out of GL memory for ") + what};
+}
+} // namespace
+
+void LayerCompositor::Impl::findTiles(const core::LayerStack& stack) {
+    const int tilesX = (stack.width + kTileSize - 1) / kTileSize;
+    const int tilesY = (stack.height + kTileSize - 1) / kTileSize;
+    tiles.clear();
+    std::vector<char> used(static_cast<std::size_t>(tilesX));
+    for (int ty = 0; ty < tilesY; ++ty) {
+        std::fill(used.begin(), used.end(), 0);
+        for (int y = ty * kTileSize; y < std::min(stack.height, (ty + 1) * kTileSize); ++y) {
+            const std::uint32_t* row = stack.offsets.data() + std::size_t(y) * stack.width;
+            for (int tx = 0; tx < tilesX; ++tx) {
+                const int x0 = tx * kTileSize, x1 = std::min(stack.width, x0 + kTileSize);
+                used[std::size_t(tx)] |= row[x0] != row[x1];
+            }
+        }
+        for (int tx = 0; tx < tilesX; ++tx)
+            if (used[std::size_t(tx)])
+                tiles.push_back(std::uint32_t(tx) | std::uint32_t(ty) << 16);
+    }
+}
+
+bool LayerCompositor::Impl::uploadRanks(const std::vector<std::uint32_t>& rank) {
+    const std::size_t regions = rank.size();
+    rankData.assign(regions + maxLayers, core::kNone);
+    std::copy(rank.begin(), rank.end(), rankData.begin());
+    std::vector<std::uint32_t> lowestOnLayer(std::size_t(maxLayers) + 2, core::kNone);
+    bool layersKnown = true;
+    for (std::size_t r = 0; r < regions; ++r) {
+        const std::uint32_t layer = regionLayer[r];
+        if (layer < 1 || layer > maxLayers)
+            layersKnown = false;
+        else
+            lowestOnLayer[layer] = std::min(lowestOnLayer[layer], rank[r]);
+    }
+    std::uint32_t deeper = core::kNone;
+    for (std::uint32_t layer = maxLayers; layer >= 1; --layer) {
+        // Unknown layers disable the early exit: a cutoff of 0 is never beaten.
+        rankData[regions + layer - 1] = layersKnown ? deeper : 0;
+        deeper = std::min(deeper, lowestOnLayer[layer]);
+    }
+    ++version;
+    return buffers[kRanks].upload(rankData, maxBlockBytes);
+}
+
+core::Status LayerCompositor::Impl::uploadSegmentation(const core::Layers& layers) {
+    const core::Segmentation& segmentation = layers.segmentation;
+    const core::Connectivity& connectivity = layers.connectivity;
+    bool ok;
+    if (segmentation.region.size() == fragments) {
+        ok = buffers[kFragmentRegions].upload(segmentation.region, maxBlockBytes, true);
+    } else {
+        // No (matching) segmentation: every fragment unranked, drawn front-most first.
+        const std::vector<std::uint32_t> none(fragments, core::kNone);
+        ok = buffers[kFragmentRegions].upload(none, maxBlockBytes, true);
+    }
+    // Four link bytes a fragment read as one little-endian uint: byte d = direction d.
+    if (connectivity.links.size() == 4 * fragments) {
+        ok = ok && buffers[kFragmentLinks].upload(connectivity.links, maxBlockBytes, true);
+    } else {
+        const std::vector<std::uint32_t> unlinked(fragments, 0u);
+        ok = ok && buffers[kFragmentLinks].upload(unlinked, maxBlockBytes, true);
+    }
+    const std::vector<core::Region>& regions = segmentation.graph.regions;
+    regionLayer.resize(regions.size());
+    regionBox.resize(regions.size());
+    std::vector<std::uint32_t> rank(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+        regionLayer[r] = regions[r].layer;
+        regionBox[r] = {regions[r].minX, regions[r].minY, regions[r].maxX, regions[r].maxY};
+        rank[r] = std::uint32_t(r); // ids are ordered by layer, then scan order
+    }
+    if (!fits(rank.size() + maxLayers, sizeof(std::uint32_t)))
+        return tooLarge("the regions");
+    ok = ok && uploadRanks(rank);
+    if (!ok)
+        return outOfMemory("the segmentation");
+    return {};
+}
+
+core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
+    Impl& d = *m_impl;
+    d.hasMesh = false;
+    ++d.version;
+    ++d.geometryVersion;
+    d.releaseTextures();
+    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+    if (!d.fits(triangles, sizeof(glm::uvec4)) || !d.fits(vertices, sizeof(glm::vec4)) ||
+        !d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
+        return tooLarge("the mesh's triangles or vertices");
+
+    // Triangles with a bad index or material are drawn grey rather than read out of bounds.
+    std::vector<glm::uvec4> packed(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
+                            c = mesh.indices[3 * t + 2];
+        const std::uint32_t material =
+            t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
+        const bool valid =
+            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
+        packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
+    }
+
+    // One pass per distinct texture; textures beyond the resolved byte's range stay unsampled.
+    std::vector<int> passOf(mesh.textures.size(), -1);
+    std::vector<int> passImages;
+    std::vector<GpuMaterial> materials(mesh.materials.size());
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        const core::Material& material = mesh.materials[m];
+        const int texture = material.baseColorTexture;
+        materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
+        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
+            mesh.textures[std::size_t(texture)].empty())
+            continue;
+        int& pass = passOf[std::size_t(texture)];
+        if (pass < 0 && passImages.size() < kMaxTexturePasses) {
+            pass = int(passImages.size());
+            passImages.push_back(texture);
+        }
+        const core::Image& image = mesh.textures[std::size_t(texture)];
+        materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
+    }
+
+    const std::size_t limit = d.maxBlockBytes;
+    bool ok = d.buffers[kTriangles].upload(packed, limit) &&
+              d.buffers[kPositions].upload(mesh.positions, limit) &&
+              d.buffers[kMaterials].upload(materials, limit);
+    std::vector<std::uint32_t> normals(vertices, octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
+    if (mesh.normals.size() == vertices)
+        std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
+    ok = ok && d.buffers[kNormals].upload(normals, limit);
+    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
+    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
+    ok = ok && (d.hasUvs ? d.buffers[kUvs].upload(mesh.uvs, limit)
+                         : d.buffers[kUvs].upload(nullptr, 0, limit));
+    ok = ok && (d.hasColors ? d.buffers[kColors].upload(mesh.colors, limit)
+                            : d.buffers[kColors].upload(nullptr, 0, limit));
+    if (!ok)
+        return outOfMemory("the mesh");
+
+    // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
+    for (int texture : passImages) {
+        d.passTextures.emplace_back();
+        d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
+    }
+    d.passOfTexture = std::move(passOf);
+    d.vertexCount = vertices;
+    d.triangleCount = std::uint32_t(triangles);
+    d.hasMesh = true;
+    return {};
+}
+
+core::Status LayerCompositor::setLayers(const core::Layers& layers) {
+    Impl& d = *m_impl;
+    d.hasLayers = false;
+    ++d.version;
+    ++d.geometryVersion;
+    const core::LayerStack& stack = layers.stack;
+    const std::size_t pixels = stack.pixelCount(), fragments = stack.fragmentCount();
+    if (stack.width <= 0 || stack.height <= 0 || stack.width >= 65536 || stack.height >= 65536 ||
+        stack.offsets.size() != pixels + 1 || stack.triangle.size() != fragments ||
+        stack.depth.size() != fragments || stack.offsets.front() != 0 ||
+        stack.offsets.back() != fragments)
+        return core::Error{"layer compositor: inconsistent layer stack"};
+    if (!d.fits(pixels + 1, sizeof(std::uint32_t)) ||
+        !d.fits(fragments, kShadingWords * sizeof(std::uint32_t)) || fragments > kMaxFragments)
+        return tooLarge("the view's pixels or fragments");
+
+    d.findTiles(stack);
+    std::vector<std::uint32_t> fragmentPixel(fragments);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        if (stack.offsets[p + 1] < stack.offsets[p])
+            return core::Error{"layer compositor: inconsistent layer stack"};
+        std::fill(fragmentPixel.begin() + stack.offsets[p],
+                  fragmentPixel.begin() + stack.offsets[p + 1], std::uint32_t(p));
+    }
+    const std::size_t limit = d.maxBlockBytes;
+    const bool ok =
+        d.buffers[kOffsets].upload(stack.offsets, limit, true) &&
+        d.buffers[kFragmentTriangles].upload(stack.triangle, limit, true) &&
+        d.buffers[kFragmentDepths].upload(stack.depth, limit, true) &&
+        d.buffers[kFragmentPixels].upload(fragmentPixel, limit, true) &&
+        d.buffers[kShading].upload(nullptr, fragments * kShadingWords * 4, limit, true) &&
+        // The visible fragments, then the under ones (transparency).
+        d.buffers[kVisible].upload(nullptr, 2 * pixels * sizeof(std::uint32_t), limit, true) &&
+        d.buffers[kTiles].upload(d.tiles, limit, true);
+    if (!ok)
+        return outOfMemory("the layer stack");
+    // Pixels outside the drawn tiles are never written: they read as background.
+    const std::uint32_t noFragment = 0x7fffffffu;
+    glClearNamedBufferSubData(d.buffers[kVisible].id, GL_R32UI, 0,
+                              GLsizeiptr(pixels * sizeof(std::uint32_t)), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &noFragment);
+
+    d.width = stack.width;
+    d.height = stack.height;
+    d.fragments = fragments;
+    d.view = layers.view.view;
+    // The rays of the stack's own pixels, whatever size the view says.
+    core::View view = layers.view;
+    view.width = stack.width;
+    view.height = stack.height;
+    d.rays = core::PixelRays::fromView(view);
+    d.maxLayers = stack.maxLayers();
+    const core::Status status = d.uploadSegmentation(layers);
+    d.hasLayers = status.ok();
+    return status;
+}
+
+core::Status LayerCompositor::updateSegmentation(const core::Layers& layers) {
+    Impl& d = *m_impl;
+    if (!d.hasLayers || layers.stack.fragmentCount() != d.fragments ||
+        layers.stack.width != d.width || layers.stack.height != d.height)
+        return core::Error{"layer compositor: segmentation of another capture"};
+    const core::Status status = d.uploadSegmentation(layers);
+    d.hasLayers = status.ok();
+    return status;
+}
+
+void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                                   const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
+        return;
+    d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
+}
+
+void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
+        return;
+    const std::size_t count = std::min(colors.size(), d.vertexCount - first);
+    glNamedBufferSubData(d.buffers[kColors].id, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
+                         GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
+    // The shading holds the colours; the visible fragments stay as picked.
+    ++d.geometryVersion;
+}
+
+bool LayerCompositor::setRegionRanks(const std::vector<std::uint32_t>& rank) {
+    Impl& d = *m_impl;
+    if (!d.hasLayers || rank.size() != d.regionLayer.size())
+        return false;
+    return d.uploadRanks(rank);
+}
+
+} // namespace render

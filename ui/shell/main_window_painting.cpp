@@ -1,0 +1,350 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The main window's tool dispatch and painting: the viewport's press, move and release go to the
+// current tool (stroke, fill, eyedropper, region tools); the history bridge is synced after every
+// change; the brush and paint target settings.
+#include "ui/shell/main_window.h"
+
+#include <QAction>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLocale>
+#include <QSettings>
+#include <QStatusBar>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "ui/commands/history_bridge.h"
+#include "ui/panels/brush_panel.h"
+#include "ui/panels/brush_toolbar.h"
+#include "ui/panels/color_panel.h"
+#include "ui/panels/fill_panel.h"
+#include "ui/panels/segmentation_controls.h"
+#include "ui/shell/elided_label.h"
+#include "ui/shell/project_controller.h"
+#include "ui/tools/region_tools.h"
+#include "ui/tools/tool_cursors.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
+
+namespace ui {
+
+namespace {
+constexpr float kMinBrushRadius = 1.0f;
+constexpr float kMaxBrushRadius = 500.0f; // as the brush bar and panel offer
+
+double elapsedMs(const QElapsedTimer& clock) {
+    return double(clock.nsecsElapsed()) / 1e6;
+}
+} // namespace
+
+void MainWindow::setTool(Tool tool) {
+    QAction* action = toolAction(tool);
+    if (!action->isEnabled())
+        return;
+    finishStroke();
+    action->setChecked(true);
+    if (tool == m_tool)
+        return;
+    // Paint-to-hide works on the segmentation map; leaving it brings the display back.
+    if (tool == Tool::Hide) {
+        m_displayBeforeHide = m_viewport->display();
+        setDisplay(render::LayerDisplay::Segmentation);
+    } else if (m_tool == Tool::Hide &&
+               m_viewport->display() == render::LayerDisplay::Segmentation) {
+        setDisplay(m_displayBeforeHide);
+    }
+    m_tool = tool;
+    m_viewport->setHoverHighlight(tool == Tool::Hide || tool == Tool::PopUp);
+    m_viewport->setToolCursor(toolCursor(tool), toolShowsBrushOutline(tool));
+    emit toolChanged(tool);
+}
+
+void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers) {
+    finishStroke();
+    m_picking = false;
+    if (m_document->meshSerial() == 0 || m_document->mesh().triangleCount() == 0)
+        return;
+    // The pen's eraser end erases, whatever tool is chosen.
+    const Tool tool = m_viewport->pressPointer() == PointerKind::Eraser
+                          ? Tool::Eraser
+                          : toolForPress(m_tool, modifiers);
+    if (!toolAction(tool)->isEnabled())
+        return;
+    switch (tool) {
+    case Tool::Brush:
+    case Tool::Eraser:
+        beginPaintStroke(pixel, pressure, tool == Tool::Eraser);
+        return;
+    case Tool::Hide:
+        m_regionTools->beginHide(pixel, m_document->brush().radius);
+        return;
+    case Tool::PopUp:
+        m_regionTools->popUpAt(pixel);
+        return;
+    case Tool::Fill:
+        fillAt(pixel);
+        return;
+    case Tool::Eyedropper:
+        m_picking = true;
+        pickColor(pixel);
+        return;
+    }
+}
+
+void MainWindow::pickColor(QPointF pixel) {
+    // Never pick from the layers of another view: build them now if they are not there.
+    if (!m_builder->buildNow())
+        return; // buildFailed() reported why
+    const core::Layers* layers = m_document->layers();
+    if (!layers)
+        return;
+    const double x = std::floor(pixel.x()), y = std::floor(pixel.y());
+    std::optional<glm::vec4> color;
+    if (x >= 0.0 && y >= 0.0 && x < layers->stack.width && y < layers->stack.height) {
+        const bool hadTarget = m_document->hasPaintTarget();
+        color = m_document->pickColor(std::size_t(y) * std::size_t(layers->stack.width) +
+                                      std::size_t(x));
+        if (!hadTarget && m_document->hasPaintTarget())
+            m_viewport->paintTargetChanged();
+    }
+    if (!color) {
+        statusBar()->showMessage(tr("No surface here to pick a colour from"), kPaintMessageMs);
+        return;
+    }
+    // As the colour panel shows it (sRGB bytes): a painted texel comes back exactly.
+    const QColor picked = BrushToolBar::toQColor(*color);
+    core::Brush brush = m_document->brush();
+    brush.color = BrushToolBar::toLinear(picked);
+    setBrush(brush);
+    statusBar()->showMessage(tr("Picked %1").arg(ColorPanel::hexName(picked)), kPaintMessageMs);
+}
+
+bool MainWindow::preparePainting() {
+    // Never paint with the layers of another view: build them now if they are not there.
+    if (!m_builder->buildNow())
+        return false; // buildFailed() reported why
+    const bool hadTarget = m_document->hasPaintTarget();
+    if (const core::Result<core::PaintTarget*> target = m_document->ensurePaintTarget(); !target) {
+        statusBar()->showMessage(
+            tr("Cannot paint this model: %1").arg(QString::fromStdString(target.error())),
+            kStatusMessageMs);
+        return false;
+    }
+    if (!hadTarget)
+        m_viewport->paintTargetChanged();
+    return true;
+}
+
+void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
+    QElapsedTimer clock;
+    clock.start();
+    m_strokeStats = {};
+    if (!preparePainting())
+        return;
+    m_document->brush().eraser = eraser;
+    m_lastPressure = float(pressure);
+    core::PaintChanges changes;
+    m_regionTools->beginStroke();
+    const core::Status status =
+        m_document->beginStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
+    if (!status) {
+        m_regionTools->endStroke();
+        statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+        return;
+    }
+    m_painting = true;
+    m_regionTools->strokeMoved(); // the first dab may have popped a region up
+    if (!eraser)
+        m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->brushMapsChanged();
+    m_strokeStats.pressMs = elapsedMs(clock);
+}
+
+void MainWindow::fillAt(QPointF pixel) {
+    QElapsedTimer clock;
+    clock.start();
+    if (!preparePainting())
+        return;
+    const std::uint64_t revision = m_document->history().revision();
+    core::PaintChanges changes;
+    const core::Status status =
+        m_document->fill({float(pixel.x()), float(pixel.y())}, m_fillPanel->mode(),
+                         m_fillPanel->tolerance(), changes);
+    if (!status) {
+        statusBar()->showMessage(tr("Cannot fill: %1").arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+        return;
+    }
+    m_viewport->applyPaintChanges(changes);
+    if (m_document->history().revision() != revision) {
+        m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
+        statusBar()->showMessage(
+            tr("Filled in %1 ms").arg(QLocale().toString(elapsedMs(clock), 'f', 0)),
+            kPaintMessageMs);
+    } else {
+        statusBar()->showMessage(tr("Nothing to fill there"), kPaintMessageMs);
+    }
+    m_history->sync();
+}
+
+void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
+    if (m_regionTools->isHiding())
+        m_regionTools->moveHide(pixel);
+    if (m_picking) {
+        pickColor(pixel); // the eyedropper follows while held
+        return;
+    }
+    if (!m_painting)
+        return;
+    QElapsedTimer clock;
+    clock.start();
+    core::PaintChanges changes;
+    m_lastPressure = float(pressure);
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->brushMapsChanged();
+    m_regionTools->strokeMoved(); // automatic pop-up
+    const double ms = elapsedMs(clock);
+    ++m_strokeStats.moves;
+    m_strokeStats.totalMs += ms;
+    m_strokeStats.maxMs = std::max(m_strokeStats.maxMs, ms);
+}
+
+void MainWindow::onPaintReleased(QPointF pixel) {
+    m_picking = false;
+    if (m_regionTools->isHiding()) {
+        m_regionTools->moveHide(pixel);
+        m_regionTools->endHide();
+    }
+    if (!m_painting)
+        return;
+    core::PaintChanges changes;
+    // A release carries no pressure: the end keeps the last sample's, so a pen stroke's tail
+    // does not swell.
+    m_document->moveStroke({{float(pixel.x()), float(pixel.y())}, m_lastPressure}, changes);
+    m_viewport->applyPaintChanges(changes);
+    finishStroke();
+}
+
+void MainWindow::finishStroke() {
+    if (!m_painting)
+        return;
+    m_painting = false;
+    // The stroke and the pop-ups it made are one step of the document's history.
+    m_document->endStroke();
+    m_regionTools->endStroke();
+    m_history->sync();
+}
+
+void MainWindow::showDocumentState() {
+    setBrush(m_document->brush());
+    m_layerAwareAction->setChecked(m_document->layerAware());
+    m_regionTools->autoPopUpAction()->setChecked(m_document->autoPopUp());
+    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_brushPanel->setPressureCurve(m_document->pressureCurve());
+    m_targetSerial = m_document->paintTargetSerial();
+    m_paintOptions = m_document->paintTargetOptions();
+    if (m_document->hasPaintTarget())
+        m_viewport->paintTargetChanged();
+    updateBrushBar();
+    m_viewport->cameraMoved();
+    m_regionTools->orderApplied();
+    m_history->sync();
+    m_project->markModified();
+}
+
+void MainWindow::onHistoryApplied(const core::PaintChanges& changes) {
+    m_viewport->applyPaintChanges(changes);
+    if (m_document->paintTargetSerial() != m_targetSerial) {
+        m_targetSerial = m_document->paintTargetSerial();
+        m_paintOptions = m_document->paintTargetOptions();
+        m_viewport->paintTargetChanged();
+        updateBrushBar();
+    }
+    m_regionTools->orderApplied();
+}
+
+void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
+    finishStroke();
+    if (m_document->meshSerial() == 0) {
+        m_paintOptions = options;
+        updateBrushBar();
+        return;
+    }
+    const core::Status status = m_document->setPaintTarget(options);
+    if (!status) {
+        statusBar()->showMessage(
+            tr("Cannot paint into that target: %1").arg(QString::fromStdString(status.error())),
+            kStatusMessageMs);
+    } else {
+        m_paintOptions = options;
+        m_targetSerial = m_document->paintTargetSerial();
+        m_viewport->paintTargetChanged();
+        statusBar()->showMessage(tr("Painting into a new target (Undo brings the previous one "
+                                    "back)"),
+                                 kStatusMessageMs);
+    }
+    m_history->sync();
+    updateBrushBar();
+}
+
+void MainWindow::updateBrushBar() {
+    const bool hasUvs = m_document->meshSerial() == 0 || m_document->mesh().hasUvs();
+    m_brushBar->setTarget(m_paintOptions, hasUvs);
+}
+
+void MainWindow::setBrush(const core::Brush& brush) {
+    m_document->brush() = brush; // the next stroke uses it
+    m_brushBar->setBrush(brush);
+    m_brushPanel->setBrush(brush);
+    const QColor color = BrushToolBar::toQColor(brush.color);
+    if (color != m_colorPanel->foreground())
+        m_colorPanel->setForeground(color);
+    m_viewport->setBrushRadius(brush.radius);
+    updateBrushInfo();
+    if (m_project && m_document->meshSerial() != 0)
+        m_project->markModified();
+}
+
+void MainWindow::updateBrushInfo() {
+    const core::Brush& brush = m_document->brush();
+    const QLocale locale;
+    m_brushInfo->setText(tr("Brush %1 px · %2 % hard")
+                             .arg(locale.toString(std::lround(brush.radius)),
+                                  locale.toString(std::lround(brush.hardness * 100.0f))));
+    m_brushInfo->setToolTip(tr("Brush radius and hardness ([ ] and Shift+[ ] change them)"));
+}
+
+void MainWindow::stepBrushRadius(int direction) {
+    core::Brush brush = m_document->brush();
+    // Steps of 15 %, at least a pixel, on whole pixels as the spin boxes show; a step up and
+    // one down come back to the same size.
+    constexpr float kFactor = 1.15f;
+    const float radius = std::round(brush.radius);
+    const float next = direction > 0 ? std::max(radius + 1.0f, std::round(radius * kFactor))
+                                     : std::min(radius - 1.0f, std::round(radius / kFactor));
+    brush.radius = std::clamp(next, kMinBrushRadius, kMaxBrushRadius);
+    setBrush(brush);
+}
+
+void MainWindow::stepBrushHardness(int direction) {
+    core::Brush brush = m_document->brush();
+    brush.hardness =
+        std::clamp(std::round(brush.hardness * 10.0f + float(direction)) / 10.0f, 0.0f, 1.0f);
+    setBrush(brush);
+}
+
+void MainWindow::setPressureCurve(const core::PressureCurve& curve) {
+    m_document->setPressureCurve(curve);
+    m_brushPanel->setPressureCurve(curve);
+    if (m_preferences.pressureGamma != curve.gamma) {
+        m_preferences.pressureGamma = curve.gamma;
+        QSettings().setValue(Preferences::kPressureGammaKey, double(curve.gamma));
+    }
+}
+
+} // namespace ui
