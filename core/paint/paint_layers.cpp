@@ -117,8 +117,12 @@ PaintLayerStack::PaintLayerStack(std::vector<PageSize> pages,
             m_baseMetallicRoughness[p].resize(texels * 4, 255);
         }
     }
-    m_compositeColor = m_baseColor;
-    m_compositeMr = m_baseMetallicRoughness;
+    for (std::size_t p = 0; p < m_pages.size(); ++p) {
+        m_compositeColor.push_back({m_pages[p].width, m_pages[p].height, m_baseColor[p]});
+        if (hasMaterialChannels())
+            m_compositeMr.push_back(
+                {m_pages[p].width, m_pages[p].height, m_baseMetallicRoughness[p]});
+    }
 }
 
 std::optional<std::size_t> PaintLayerStack::indexOf(std::uint64_t id) const {
@@ -250,20 +254,21 @@ void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
         for (int x = x0; x < x1; ++x) {
             const std::size_t i = (std::size_t(y) * std::size_t(size.width) + std::size_t(x)) * 4;
             if (end == 0) {
-                std::copy_n(m_baseColor[page].data() + i, 4, m_compositeColor[page].data() + i);
+                std::copy_n(m_baseColor[page].data() + i, 4,
+                            m_compositeColor[page].rgba.data() + i);
                 if (hasMaterialChannels())
                     std::copy_n(m_baseMetallicRoughness[page].data() + i, 4,
-                                m_compositeMr[page].data() + i);
+                                m_compositeMr[page].rgba.data() + i);
                 continue;
             }
             compositeTexel(page, x, y, end, values);
-            std::uint8_t* color = m_compositeColor[page].data() + i;
+            std::uint8_t* color = m_compositeColor[page].rgba.data() + i;
             color[0] = toByte(values[0]);
             color[1] = toByte(values[1]);
             color[2] = toByte(values[2]);
             color[3] = m_baseColor[page][i + 3];
             if (hasMaterialChannels()) {
-                std::uint8_t* mr = m_compositeMr[page].data() + i;
+                std::uint8_t* mr = m_compositeMr[page].rgba.data() + i;
                 mr[0] = m_baseMetallicRoughness[page][i];
                 mr[1] = toByte(values[3]);
                 mr[2] = toByte(values[4]);
@@ -272,7 +277,7 @@ void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
         }
 }
 
-void PaintLayerStack::updateAll() {
+std::vector<TileKey> PaintLayerStack::allTiles() const {
     std::vector<TileKey> tiles;
     for (std::uint32_t p = 0; p < m_pages.size(); ++p) {
         const std::uint32_t across = std::uint32_t((m_pages[p].width + kTile - 1) / kTile);
@@ -280,13 +285,33 @@ void PaintLayerStack::updateAll() {
         for (std::uint32_t t = 0; t < across * down; ++t)
             tiles.push_back({p, t});
     }
+    return tiles;
+}
+
+std::vector<TileKey> PaintLayerStack::tilesCovered(const PaintLayer& layer) const {
+    if (layer.settings.kind == PaintLayerKind::Fill)
+        return allTiles();
+    std::vector<TileKey> tiles;
+    for (const auto& plane : layer.channels)
+        if (plane) {
+            const std::vector<TileKey> written = plane->writtenTiles();
+            tiles.insert(tiles.end(), written.begin(), written.end());
+        }
+    std::sort(tiles.begin(), tiles.end());
+    tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
+    return tiles;
+}
+
+void PaintLayerStack::updateAll() {
+    const std::vector<TileKey> tiles = allTiles();
     parallelRanges(int(tiles.size()), 0, [&](int, int begin, int end) {
         for (int k = begin; k < end; ++k)
             updateTile(tiles[std::size_t(k)].page, tiles[std::size_t(k)].tile);
     });
 }
 
-bool PaintLayerStack::mergeDown(std::size_t index) {
+bool PaintLayerStack::mergeDown(std::size_t index,
+                                std::vector<std::unique_ptr<PaintLayer>>* removed) {
     if (index == 0 || index >= m_layers.size())
         return false;
     PaintLayer& upper = *m_layers[index];
@@ -340,12 +365,17 @@ bool PaintLayerStack::mergeDown(std::size_t index) {
         if (plane->allocatedTiles() > 0)
             merged->channels[c] = std::move(plane);
     }
+    if (removed) {
+        removed->clear();
+        removed->push_back(std::move(m_layers[index - 1]));
+        removed->push_back(std::move(m_layers[index]));
+    }
     m_layers[index - 1] = std::move(merged);
     m_layers.erase(m_layers.begin() + std::ptrdiff_t(index));
     return true;
 }
 
-void PaintLayerStack::flatten(std::string name) {
+void PaintLayerStack::flatten(std::string name, std::vector<std::unique_ptr<PaintLayer>>* removed) {
     PaintLayerSettings settings;
     settings.name = std::move(name);
     std::unique_ptr<PaintLayer> flat = makeLayer(std::move(settings));
@@ -381,14 +411,25 @@ void PaintLayerStack::flatten(std::string name) {
         if (plane->allocatedTiles() > 0)
             flat->channels[c] = std::move(plane);
     }
+    if (removed)
+        *removed = std::move(m_layers);
     m_layers.clear();
     m_layers.push_back(std::move(flat));
 }
 
 const std::vector<std::uint8_t>&
 PaintLayerStack::compositeMetallicRoughness(std::uint32_t page) const {
-    static const std::vector<std::uint8_t> none;
+    return compositeMetallicRoughnessImage(page).rgba;
+}
+
+const Image& PaintLayerStack::compositeMetallicRoughnessImage(std::uint32_t page) const {
+    static const Image none;
     return hasMaterialChannels() ? m_compositeMr[page] : none;
+}
+
+const std::vector<std::uint8_t>& PaintLayerStack::baseMetallicRoughness(std::uint32_t page) const {
+    static const std::vector<std::uint8_t> none;
+    return hasMaterialChannels() ? m_baseMetallicRoughness[page] : none;
 }
 
 std::size_t PaintLayerStack::layerBytes() const {

@@ -11,6 +11,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/model/mesh.h"
 #include "core/paint/blend_modes.h"
 #include "core/paint/tiled_plane.h"
 
@@ -113,17 +114,22 @@ public:
      * visibility; the result has opacity 1 and no mask and looks the same over a normal lower
      * layer. Returns false (nothing changed) for index 0 or out of range.
      */
-    bool mergeDown(std::size_t index);
+    bool mergeDown(std::size_t index, std::vector<std::unique_ptr<PaintLayer>>* removed = nullptr);
     /**
      * Replaces every layer with one normal paint layer that gives the same composite: the
      * composite where any visible layer covers, nothing elsewhere. Hidden layers are dropped.
+     * removed, if given, receives the layers replaced (bottom first).
      */
-    void flatten(std::string name);
+    void flatten(std::string name, std::vector<std::unique_ptr<PaintLayer>>* removed = nullptr);
 
     /** The plane of a channel of layer index, made on first use (nullptr: no such channel). */
     TiledPlane* channelPlane(std::size_t index, PaintChannel channel);
     /** The mask of layer index, made (all showing) on first use. */
     TiledPlane& maskPlane(std::size_t index);
+    /** Sets the mask of layer index (nullptr: none). */
+    void setMask(std::size_t index, std::unique_ptr<TiledPlane> mask) {
+        m_layers.at(index)->mask = std::move(mask);
+    }
     /** Removes the mask of layer index; the layer shows everywhere again. */
     std::unique_ptr<TiledPlane> takeMask(std::size_t index);
 
@@ -132,10 +138,32 @@ public:
     /** Recomputes the whole composite (on several threads). */
     void updateAll();
     const std::vector<std::uint8_t>& compositeBaseColor(std::uint32_t page) const {
-        return m_compositeColor[page];
+        return m_compositeColor[page].rgba;
     }
     /** Empty without material channels. */
     const std::vector<std::uint8_t>& compositeMetallicRoughness(std::uint32_t page) const;
+    /** The composite base colour of page as an image (what a viewport shows). */
+    const Image& compositeImage(std::uint32_t page) const { return m_compositeColor[page]; }
+    /** The composite metallic-roughness image of page (empty without material channels). */
+    const Image& compositeMetallicRoughnessImage(std::uint32_t page) const;
+
+    /**
+     * The base's texels of page (RGBA8). Writable for painting on the base; call updateTile()
+     * for what changed.
+     */
+    std::vector<std::uint8_t>& baseColor(std::uint32_t page) { return m_baseColor[page]; }
+    const std::vector<std::uint8_t>& baseColor(std::uint32_t page) const {
+        return m_baseColor[page];
+    }
+    /** The base's metallic-roughness texels of page (empty without material channels). */
+    const std::vector<std::uint8_t>& baseMetallicRoughness(std::uint32_t page) const;
+    /**
+     * The tiles (TiledPlane tiling, plane 0) where layer can change the composite: every tile
+     * for a fill layer, else the tiles its channel planes hold.
+     */
+    std::vector<TileKey> tilesCovered(const PaintLayer& layer) const;
+    /** Every tile of every page. */
+    std::vector<TileKey> allTiles() const;
 
     /** Bytes held by the layers' planes (not the base or the composite). */
     std::size_t layerBytes() const;
@@ -151,8 +179,8 @@ private:
     std::vector<std::vector<std::uint8_t>> m_baseColor;
     std::vector<std::vector<std::uint8_t>> m_baseMetallicRoughness;
     std::vector<std::unique_ptr<PaintLayer>> m_layers;
-    std::vector<std::vector<std::uint8_t>> m_compositeColor;
-    std::vector<std::vector<std::uint8_t>> m_compositeMr;
+    std::vector<Image> m_compositeColor;
+    std::vector<Image> m_compositeMr;
     std::uint64_t m_nextId = 1;
 };
 
