@@ -343,6 +343,10 @@
         <source>Run Script</source>
         <translation>Skript ausführen</translation>
     </message>
+    <message>
+        <source>Change Paint Layers</source>
+        <translation>Malschichten ändern</translation>
+    </message>
 </context>
 <context>
     <name>ui::HsvPicker</name>

@@ -342,6 +342,10 @@
         <source>Run Script</source>
         <translation>运行脚本</translation>
     </message>
+    <message>
+        <source>Change Paint Layers</source>
+        <translation>更改绘画层</translation>
+    </message>
 </context>
 <context>
     <name>ui::HsvPicker</name>

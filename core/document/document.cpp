@@ -559,6 +559,8 @@ void Document::applyStep(HistoryStep& step, bool undo, PaintChanges& changes) {
             if (m_layers && order->layersSerial == m_layersSerial &&
                 m_order.setState(undo ? order->before : order->after))
                 orderChanged();
+        } else if (auto* layerChange = std::get_if<LayerChange>(&part)) {
+            applyLayerChange(*layerChange, changes);
         } else if (auto* swap = std::get_if<TargetSwap>(&part)) {
             std::swap(m_paintTarget, swap->other);
             std::swap(m_paintOptions, swap->otherOptions);

@@ -254,6 +254,39 @@ public:
     bool redo(PaintChanges& changes);
     const History& history() const { return m_history; }
     History& history() { return m_history; }
+
+    // Paint layers of a texture target (docs/architecture.md §3 step 6). Each operation makes the
+    // target if there is none yet, is one undo step (StepKind::PaintLayers), is written to the
+    // session log, and puts what the composite changed in changes. Layers are named by id
+    // (PaintLayer::id); index 0 is the layer right above the base. An Error (nothing changed)
+    // for a vertex colour target, an unknown id or an operation that does not apply.
+
+    /** The texture target (made on first use), or an Error for a vertex colour target. */
+    Result<TextureTarget*> layerTarget();
+    /**
+     * Adds a layer right above the selected one (above the base: at the bottom) and selects it.
+     * Returns its id.
+     */
+    Result<std::uint64_t> addPaintLayer(PaintLayerSettings settings, PaintChanges& changes);
+    /** A copy right above layer id, selected. Returns its id. */
+    Result<std::uint64_t> duplicatePaintLayer(std::uint64_t id, PaintChanges& changes);
+    /** Deletes layer id; the selection moves to the layer below it (or the base). */
+    Status deletePaintLayer(std::uint64_t id, PaintChanges& changes);
+    /** Moves layer id to index (clamped to the stack). */
+    Status movePaintLayer(std::uint64_t id, std::size_t index, PaintChanges& changes);
+    /** Name, opacity, blend mode, visibility, lock transparency, fill values of layer id. */
+    Status setPaintLayerSettings(std::uint64_t id, PaintLayerSettings settings,
+                                 PaintChanges& changes);
+    /** Merges layer id into the one below (PaintLayerStack::mergeDown()), which is selected. */
+    Status mergePaintLayerDown(std::uint64_t id, PaintChanges& changes);
+    /** Flattens every layer into one (PaintLayerStack::flatten()), which is selected. */
+    Status flattenPaintLayers(std::string name, PaintChanges& changes);
+    /** Gives layer id a mask (all showing) and selects the mask. */
+    Status addPaintLayerMask(std::uint64_t id, PaintChanges& changes);
+    /** Removes the mask of layer id. */
+    Status deletePaintLayerMask(std::uint64_t id, PaintChanges& changes);
+    /** Where painting goes: the base (layer 0), a layer, or its mask (one undo step). */
+    Status selectPaint(PaintSelection selection);
     /** What the user did since the model was set, as a script that reproduces it. */
     const SessionLog& session() const { return m_session; }
     /**
@@ -266,6 +299,12 @@ private:
     void paintDabs(PaintChanges& changes);
     /** point with the pressure curve applied. */
     StrokePoint curved(StrokePoint point) const;
+    /** Applies a paint-layer change (both directions: it swaps), adding what changed. */
+    void applyLayerChange(LayerChange& change, PaintChanges& changes);
+    /** Applies change, records it as a step and logs op. */
+    void pushLayerChange(LayerChange change, nlohmann::json op, PaintChanges& changes);
+    /** The index of layer id in the texture target's stack, or an Error. */
+    Result<std::size_t> paintLayerIndex(std::uint64_t id);
     /** Applies (undo) or re-applies (redo) one step's parts. */
     void applyStep(HistoryStep& step, bool undo, PaintChanges& changes);
     /**

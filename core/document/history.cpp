@@ -34,6 +34,8 @@ const char* stepKindName(StepKind kind) {
         return "paint-target";
     case StepKind::Script:
         return "script";
+    case StepKind::PaintLayers:
+        return "paint-layers";
     }
     return "step";
 }
@@ -44,6 +46,13 @@ std::size_t OrderChange::bytes() const {
 
 std::size_t TargetSwap::bytes() const {
     return sizeof(TargetSwap) + (other ? other->bytes() : 0);
+}
+
+std::size_t LayerChange::bytes() const {
+    std::size_t total = sizeof(LayerChange) + settings.name.capacity();
+    for (const auto& layer : held)
+        total += sizeof(PaintLayer) + layer->bytes();
+    return total + (mask ? mask->allocatedBytes() : 0);
 }
 
 std::size_t HistoryStep::bytes() const {

@@ -25,6 +25,7 @@ enum class StepKind : std::uint8_t {
     ResetOrder,  // back to the original region order
     PaintTarget, // the paint target replaced (another kind or resolution)
     Script,      // a script replayed as one step
+    PaintLayers, // paint layers added, removed, reordered, changed, merged, or selected
 };
 
 /** A stable lower-case name of kind ("stroke", "pop-up", ...), e.g. for scripts and logs. */
@@ -47,8 +48,32 @@ struct TargetSwap {
     std::size_t bytes() const;
 };
 
+/**
+ * A change of the texture target's paint layers. Applying it swaps the state held here with the
+ * target's, so the same call undoes and redoes it:
+ * - Swap: the count layers at index are exchanged with held (add, delete, duplicate, merge down,
+ *   flatten);
+ * - Move: the layer at from moves to to (and from, to swap);
+ * - Settings: the settings of the layer with id are exchanged with settings;
+ * - Mask: the mask of the layer with id is exchanged with mask (nullptr: none);
+ * and, always, the target's selection is exchanged with selection.
+ */
+struct LayerChange {
+    enum class Kind : std::uint8_t { Swap, Move, Settings, Mask, Select };
+    Kind kind = Kind::Select;
+    std::size_t index = 0, count = 0;
+    std::vector<std::unique_ptr<PaintLayer>> held;
+    std::size_t from = 0, to = 0;
+    std::uint64_t id = 0;
+    PaintLayerSettings settings;
+    std::unique_ptr<TiledPlane> mask;
+    PaintSelection selection;
+
+    std::size_t bytes() const;
+};
+
 /** One part of a step: paint tiles, a region order change or a paint target swap. */
-using StepPart = std::variant<TileUndoRecord, OrderChange, TargetSwap>;
+using StepPart = std::variant<TileUndoRecord, OrderChange, TargetSwap, LayerChange>;
 
 /** One undoable step: its parts are undone last to first and redone first to last. */
 struct HistoryStep {

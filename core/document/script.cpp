@@ -12,6 +12,7 @@
 #include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/document/project_state.h"
+#include "core/document/script_layers.h"
 #include "core/paint/flood_fill.h"
 
 namespace core {
@@ -258,7 +259,8 @@ json setBrushOperation(const Brush& b, const PressureCurve& curve) {
             {"eraser", b.eraser},
             {"pressure_radius", b.pressureRadius},
             {"pressure_opacity", b.pressureOpacity},
-            {"pressure_curve", curve.gamma}};
+            {"pressure_curve", curve.gamma},
+            {"channels", brushChannelsJson(b)}};
 }
 
 json viewOperation(const Camera& c, const View& view) {
@@ -329,6 +331,10 @@ Status ScriptRunner::run(const json& op) {
             m_doc.setAutoPopUp(boolean(op, "auto_pop_up", m_doc.autoPopUp()));
         } else if (name == "set-brush") {
             Brush b = m_doc.brush();
+            // The channels first: a colour given beside them is the base colour's value.
+            if (op.contains("channels"))
+                if (Status st = applyBrushChannels(b, op["channels"]); !st)
+                    throw OpError{st.error()};
             if (op.contains("color"))
                 b.color = color(op["color"]);
             if (op.contains("color_linear")) {
@@ -509,6 +515,9 @@ Status ScriptRunner::run(const json& op) {
                 throw OpError{"no surface to orbit about at [" + std::to_string(int(at.x)) + ", " +
                               std::to_string(int(at.y)) + "]"};
             setView(m_view.orbitedAbout(*pivot, yaw, pitch));
+        } else if (const std::optional<Status> layerOp = runLayerOperation(m_doc, name, op)) {
+            if (!*layerOp)
+                throw OpError{layerOp->error()};
         } else {
             throw OpError{"unknown operation \"" + name + "\""};
         }

@@ -40,6 +40,13 @@ struct Brush {
     bool pressureRadius = true;
     bool pressureOpacity = false;
     float trackRadius = 0.0f; // R_max in pixels; 0 = max(4R, 64)
+    // The material channels a stroke paints into a paint layer and their values (0..1);
+    // the base colour is color. Vertex colours and the base have the base colour only.
+    bool paintBaseColor = true;
+    bool paintRoughness = false;
+    bool paintMetallic = false;
+    float roughness = 0.5f;
+    float metallic = 0.0f;
 
     friend bool operator==(const Brush&, const Brush&) = default;
 

@@ -235,7 +235,7 @@ std::int32_t PaintTarget::Context::slotFor(TileStore& store, std::uint32_t page,
         slots.back().before.resize(bytesPerTile);
     }
     StrokeTile& s = slots[slotsUsed];
-    s.key = {page, tile};
+    s.key = {page, tile, strokePlane};
     s.dab = 0;
     std::fill(s.alpha.begin(), s.alpha.end(), 0.0f);
     const std::size_t size = store.tileBytes(s.key);

@@ -116,6 +116,7 @@ struct PaintTarget::Context {
     // The stroke.
     bool inStroke = false;
     Brush brush;
+    std::uint64_t strokePlane = 0; // TileKey::plane of the tiles the stroke paints
     glm::vec4 colorLinear{0.0f};
     std::array<std::uint8_t, 4> colorBytes{};
     std::size_t elementsPerTile = 0, bytesPerTile = 0;

@@ -95,6 +95,7 @@ void PaintTarget::beginStroke(const Brush& brush) {
         endStroke();
     c.inStroke = true;
     c.brush = brush;
+    c.strokePlane = 0;
     const SrgbTables& t = SrgbTables::get();
     for (int k = 0; k < 4; ++k) {
         c.colorLinear[k] =
@@ -102,6 +103,7 @@ void PaintTarget::beginStroke(const Brush& brush) {
         c.colorBytes[std::size_t(k)] =
             k < 3 ? t.encode(c.colorLinear[k]) : encodeUnorm(c.colorLinear[k]);
     }
+    strokeStarted();
 }
 
 bool PaintTarget::inStroke() const {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "core/model/mesh.h"
 #include "core/model/mesh_topology.h"
 #include "core/paint/dab.h"
+#include "core/paint/paint_layers.h"
 #include "core/paint/undo_tiles.h"
 
 namespace core {
@@ -63,6 +65,14 @@ struct PaintElement {
 };
 
 enum class PaintTargetKind : std::uint8_t { Texture, VertexColors };
+
+/** Where painting goes: the base (layer 0) or the paint layer with that id, or its mask. */
+struct PaintSelection {
+    std::uint64_t layer = 0;
+    bool mask = false;
+
+    friend bool operator==(const PaintSelection&, const PaintSelection&) = default;
+};
 
 struct PaintTargetOptions {
     /** Empty: a texture if the mesh has UVs, else vertex colours. */
@@ -144,6 +154,9 @@ public:
 protected:
     struct Context; // the shared dab and stroke machinery, defined in paint_target.cpp
 
+    /** Called by beginStroke() once the brush is set: the target picks the stroke's plane. */
+    virtual void strokeStarted() {}
+
     PaintTarget(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
                 const PaintTargetOptions& options);
     /** Sets the tile layout the stroke state keeps: tiles per page, elements and bytes a tile. */
@@ -198,10 +211,38 @@ public:
     std::size_t bytes() const override;
 
     std::size_t pageCount() const { return m_pages.size(); }
-    /** The painted texture of page i. */
-    const Image& page(std::size_t i) const { return m_pages[i].image; }
-    /** Page i as created (what the eraser restores). */
+    /** The texture of page i as shown: the paint layers flattened over the base. */
+    const Image& page(std::size_t i) const;
+    /** The glTF metallic-roughness texture of page i as shown (G roughness, B metallic). */
+    const Image& metallicRoughnessPage(std::size_t i) const;
+    /** The base's texels of page i (RGBA8): painting with no paint layer selected goes here. */
+    const std::vector<std::uint8_t>& basePixels(std::size_t i) const;
+    /** Page i as created (what the eraser restores on the base). */
     const Image& originalPage(std::size_t i) const { return m_pages[i].original; }
+
+    /**
+     * The paint layers over the base. Change them through the Document (its history); after a
+     * change made directly, call refresh() with the tiles it affected.
+     */
+    PaintLayerStack& layerStack() { return *m_stack; }
+    const PaintLayerStack& layerStack() const { return *m_stack; }
+    /** Where the next stroke or fill paints. A selection of a missing layer paints nothing. */
+    const PaintSelection& selection() const { return m_selection; }
+    void setSelection(PaintSelection selection) { m_selection = selection; }
+    /** The TileKey::plane of a paint layer's channels (mask false) or of its mask. */
+    static std::uint64_t planeKey(std::uint64_t layer, bool mask) {
+        return layer == 0 ? 0 : layer * 2 + (mask ? 1 : 0);
+    }
+    /**
+     * Recomputes the composite in tiles (plane ignored; duplicates allowed) and returns the
+     * texel rectangles that changed, for the GPU copy.
+     */
+    PaintChanges refresh(std::vector<TileKey> tiles);
+    /**
+     * The colour of the current paint layer (its base colour over nothing, linear RGBA with
+     * the layer's coverage as alpha; the base's colour when the base is selected), as colorAt().
+     */
+    std::optional<glm::vec4> layerColorAt(std::uint32_t triangle, const glm::vec3& weights) const;
     /** The mesh texture page i was made from, or -1 for a new page. */
     int pageSource(std::size_t i) const { return m_pages[i].source; }
     /** Per texel of page i: 0 outside every triangle, 1 covered, 2 seam padding. */
@@ -219,7 +260,7 @@ public:
         std::uint32_t source = 0; // the covered texel it copies
     };
     struct Page {
-        Image image;
+        Image image; // the page's size; its texels are the layer stack's base once created
         Image original;
         std::vector<std::uint8_t> coverage;
         int source = -1;
@@ -240,10 +281,31 @@ private:
      */
     void coverTexel(std::uint32_t pageIndex, int x, int y, float cover);
     void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const override;
+    void strokeStarted() override;
+    /** Writes texel (x, y) of page pageIndex for the stroke at coverage cover (see paint()). */
+    void writeTexel(std::uint32_t pageIndex, int x, int y, const std::uint8_t* before,
+                    std::size_t local, std::size_t tileTexels, float cover);
+    /** Recomputes the composite of the tiles the current dab touched. */
+    void refreshTouched();
+    /** The layer index and whether the mask is meant for a plane key; nullopt if missing. */
+    std::optional<std::size_t> layerOfPlane(std::uint64_t plane) const;
+    /** The texel (x, y, in the page's pixels) of triangle's page at weights, or false. */
+    bool texelAt(std::uint32_t triangle, const glm::vec3& weights, int& x, int& y) const;
+
+    enum class StrokeMode : std::uint8_t { Base, Channels, Mask, Nothing };
 
     std::vector<Page> m_pages;
     std::vector<std::uint32_t> m_materialPage;
     int m_padding = 4;
+    std::unique_ptr<PaintLayerStack> m_stack;
+    PaintSelection m_selection;
+    // The stroke's plane (strokeStarted()).
+    StrokeMode m_mode = StrokeMode::Base;
+    bool m_lock = false;
+    std::array<TiledPlane*, kPaintChannels> m_planes{};
+    TiledPlane* m_mask = nullptr;
+    std::array<float, 5> m_values{}; // sRGB base colour, roughness, metallic (0..1)
+    std::uint8_t m_maskValue = 255;
 };
 
 /**

@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "core/base/parallel.h"
 #include "core/paint/paint_context.h"
 #include "core/paint/uv_raster.h"
 
@@ -117,6 +118,15 @@ void buildPadding(TextureTarget::Page& page, int padding) {
 
 bool isWhite(const glm::vec4& v) {
     return v == glm::vec4(1.0f);
+}
+
+static_assert(TiledPlane::kPlaneTile == kTextureTile, "paint layers tile as the pages do");
+
+/** Bytes per texel of a paint layer's channels as one undo tile: RGBA, roughness, metallic. */
+constexpr std::size_t kLayerTexelBytes = 8;
+/** Where a channel's plane starts in such a tile of n texels, and its bytes per texel. */
+std::size_t channelOffset(std::size_t channel, std::size_t n) {
+    return channel == 0 ? 0 : channel == 1 ? n * 4 : n * 6;
 }
 
 } // namespace
@@ -268,11 +278,31 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
         page.original = page.image;
     }
 
+    // The pages become the base of the paint layers: no roughness or metal painted yet (rough,
+    // not metallic, as a surface without a metallic-roughness texture usually is meant).
+    std::vector<PageSize> sizes;
+    std::vector<std::vector<std::uint8_t>> baseColor, baseMr;
+    for (Page& page : pages) {
+        sizes.push_back({page.image.width, page.image.height});
+        baseMr.emplace_back(page.image.rgba.size());
+        for (std::size_t i = 0; i < baseMr.back().size(); i += 4) {
+            std::uint8_t* mr = &baseMr.back()[i];
+            mr[0] = 0;
+            mr[1] = 255;
+            mr[2] = 0;
+            mr[3] = 255;
+        }
+        baseColor.push_back(std::move(page.image.rgba));
+        page.image.rgba.clear();
+    }
+    target->m_stack = std::make_unique<PaintLayerStack>(std::move(sizes), std::move(baseColor),
+                                                        std::move(baseMr));
+
     std::vector<std::uint32_t> tilesPerPage;
     for (const Page& page : pages)
         tilesPerPage.push_back(std::uint32_t(page.tilesX * page.tilesY));
     target->setUpStrokeTiles(tilesPerPage, std::size_t(kTextureTile) * kTextureTile,
-                             std::size_t(kTextureTile) * kTextureTile * 4);
+                             std::size_t(kTextureTile) * kTextureTile * kLayerTexelBytes);
     return Result<std::unique_ptr<TextureTarget>>(std::move(target));
 }
 
@@ -280,36 +310,90 @@ std::uint32_t TextureTarget::trianglePage(std::size_t t) const {
     return m_materialPage[mesh().triangleMaterial[t]];
 }
 
-std::optional<glm::vec4> TextureTarget::colorAt(std::uint32_t triangle,
-                                                const glm::vec3& weights) const {
+bool TextureTarget::texelAt(std::uint32_t triangle, const glm::vec3& weights, int& x,
+                            int& y) const {
     const Mesh& m = mesh();
     glm::vec3 w;
     if (!normalizedWeights(m, triangle, weights, w))
-        return std::nullopt;
+        return false;
     glm::vec2 uv(0.0f);
     for (int c = 0; c < 3; ++c)
         uv += w[c] * m.uvs[m.indices[3 * std::size_t(triangle) + std::size_t(c)]];
     const Image& image = m_pages[trianglePage(triangle)].image;
     if (image.empty())
-        return std::nullopt;
+        return false;
     // The texel whose square holds the point (UVs repeat, as when painting).
     const double u = double(uv.x) - std::floor(double(uv.x));
     const double v = double(uv.y) - std::floor(double(uv.y));
-    const int x = std::clamp(int(u * image.width), 0, image.width - 1);
-    const int y = std::clamp(int(v * image.height), 0, image.height - 1);
+    x = std::clamp(int(u * image.width), 0, image.width - 1);
+    y = std::clamp(int(v * image.height), 0, image.height - 1);
+    return true;
+}
+
+std::optional<glm::vec4> TextureTarget::colorAt(std::uint32_t triangle,
+                                                const glm::vec3& weights) const {
+    int x = 0, y = 0;
+    if (!texelAt(triangle, weights, x, y))
+        return std::nullopt;
+    const Image& image = page(trianglePage(triangle));
     const std::uint8_t* texel =
         &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
     return glm::vec4(srgbToLinear(texel[0]), srgbToLinear(texel[1]), srgbToLinear(texel[2]),
                      float(texel[3]) / 255.0f);
 }
 
+std::optional<glm::vec4> TextureTarget::layerColorAt(std::uint32_t triangle,
+                                                     const glm::vec3& weights) const {
+    int x = 0, y = 0;
+    if (!texelAt(triangle, weights, x, y))
+        return std::nullopt;
+    const std::uint32_t p = trianglePage(triangle);
+    const std::optional<std::size_t> index = m_stack->indexOf(m_selection.layer);
+    if (m_selection.layer == 0 || !index) {
+        const std::uint8_t* texel = &m_stack->baseColor(
+            p)[(std::size_t(y) * std::size_t(m_pages[p].image.width) + std::size_t(x)) * 4];
+        return glm::vec4(srgbToLinear(texel[0]), srgbToLinear(texel[1]), srgbToLinear(texel[2]),
+                         float(texel[3]) / 255.0f);
+    }
+    const PaintLayer& layer = m_stack->layer(*index);
+    if (layer.settings.kind == PaintLayerKind::Fill) {
+        if (!layer.settings.fill.baseColor)
+            return glm::vec4(0.0f);
+        const glm::vec3 c = *layer.settings.fill.baseColor;
+        const SrgbTables& srgb = SrgbTables::get();
+        return glm::vec4(srgb.decode[encodeUnorm(c.r)], srgb.decode[encodeUnorm(c.g)],
+                         srgb.decode[encodeUnorm(c.b)], 1.0f);
+    }
+    const TiledPlane* plane = layer.channels[0].get();
+    if (plane == nullptr)
+        return glm::vec4(0.0f);
+    const std::uint8_t* texel = plane->texel(p, x, y);
+    return glm::vec4(srgbToLinear(texel[0]), srgbToLinear(texel[1]), srgbToLinear(texel[2]),
+                     float(texel[3]) / 255.0f);
+}
+
+const Image& TextureTarget::page(std::size_t i) const {
+    return m_stack->compositeImage(std::uint32_t(i));
+}
+
+const Image& TextureTarget::metallicRoughnessPage(std::size_t i) const {
+    return m_stack->compositeMetallicRoughnessImage(std::uint32_t(i));
+}
+
+const std::vector<std::uint8_t>& TextureTarget::basePixels(std::size_t i) const {
+    return m_stack->baseColor(std::uint32_t(i));
+}
+
 std::size_t TextureTarget::bytes() const {
     std::size_t total = sizeof(*this);
     for (const Page& p : m_pages)
-        total += p.image.rgba.capacity() + p.original.rgba.capacity() + p.coverage.capacity() +
+        total += p.original.rgba.capacity() + p.coverage.capacity() +
                  p.padOffsets.capacity() * sizeof(std::uint32_t) +
                  p.padPairs.capacity() * sizeof(PadPair);
-    return total + contextBytes();
+    for (std::uint32_t p = 0; p < m_pages.size(); ++p)
+        total += m_stack->baseColor(p).capacity() + m_stack->baseMetallicRoughness(p).capacity() +
+                 page(p).rgba.capacity() + metallicRoughnessPage(p).rgba.capacity();
+    return total + m_stack->layerBytes() + contextBytes();
 }
 
 std::size_t TextureTarget::tileBytes(TileKey key) const {
@@ -322,7 +406,16 @@ std::size_t TextureTarget::tileBytes(TileKey key) const {
               ty = int(key.tile / std::uint32_t(p.tilesX));
     const int w = std::min(kTextureTile, p.image.width - tx * kTextureTile);
     const int h = std::min(kTextureTile, p.image.height - ty * kTextureTile);
-    return std::size_t(w) * std::size_t(h) * 4;
+    const std::size_t texels = std::size_t(w) * std::size_t(h);
+    if (key.plane == 0)
+        return texels * 4;
+    if (!layerOfPlane(key.plane))
+        return 0;
+    return texels * ((key.plane & 1) != 0 ? 1 : kLayerTexelBytes);
+}
+
+std::optional<std::size_t> TextureTarget::layerOfPlane(std::uint64_t plane) const {
+    return m_stack->indexOf(plane / 2);
 }
 
 namespace {
@@ -349,9 +442,30 @@ bool TextureTarget::readTile(TileKey key, std::span<std::uint8_t> out) const {
     const std::size_t size = tileBytes(key);
     if (size == 0 || out.size() != size)
         return false;
+    const TileKey planeTile{key.page, key.tile};
+    if (key.plane != 0) {
+        const PaintLayer& layer = m_stack->layer(*layerOfPlane(key.plane));
+        if ((key.plane & 1) != 0) {
+            if (layer.mask)
+                return layer.mask->readTile(planeTile, out);
+            std::fill(out.begin(), out.end(), std::uint8_t(255));
+            return true;
+        }
+        const std::size_t n = size / kLayerTexelBytes;
+        for (std::size_t c = 0; c < kPaintChannels; ++c) {
+            const std::size_t bytes = n * std::size_t(channelTexelBytes(PaintChannel(c)));
+            const std::span<std::uint8_t> part = out.subspan(channelOffset(c, n), bytes);
+            if (layer.channels[c])
+                layer.channels[c]->readTile(planeTile, part);
+            else
+                std::fill(part.begin(), part.end(), std::uint8_t(0));
+        }
+        return true;
+    }
     const Page& p = m_pages[key.page];
+    const std::vector<std::uint8_t>& base = m_stack->baseColor(key.page);
     forEachTileRow(p, key.tile, size, [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
-        std::memcpy(out.data() + tileAt, &p.image.rgba[pageAt], n);
+        std::memcpy(out.data() + tileAt, &base[pageAt], n);
     });
     return true;
 }
@@ -360,15 +474,159 @@ bool TextureTarget::writeTile(TileKey key, std::span<const std::uint8_t> bytes) 
     const std::size_t size = tileBytes(key);
     if (size == 0 || bytes.size() != size)
         return false;
-    Page& p = m_pages[key.page];
-    forEachTileRow(p, key.tile, size, [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
-        std::memcpy(&p.image.rgba[pageAt], bytes.data() + tileAt, n);
-    });
+    const TileKey planeTile{key.page, key.tile};
+    if (key.plane != 0) {
+        const std::size_t index = *layerOfPlane(key.plane);
+        if ((key.plane & 1) != 0) {
+            m_stack->maskPlane(index).writeTile(planeTile, bytes);
+        } else {
+            const std::size_t n = size / kLayerTexelBytes;
+            for (std::size_t c = 0; c < kPaintChannels; ++c) {
+                const auto channel = PaintChannel(c);
+                const std::span<const std::uint8_t> part =
+                    bytes.subspan(channelOffset(c, n), n * std::size_t(channelTexelBytes(channel)));
+                const bool blank =
+                    std::all_of(part.begin(), part.end(), [](std::uint8_t b) { return b == 0; });
+                if (!blank || m_stack->layer(index).channels[c])
+                    m_stack->channelPlane(index, channel)->writeTile(planeTile, part);
+            }
+        }
+    } else {
+        Page& p = m_pages[key.page];
+        std::vector<std::uint8_t>& base = m_stack->baseColor(key.page);
+        forEachTileRow(p, key.tile, size,
+                       [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
+                           std::memcpy(&base[pageAt], bytes.data() + tileAt, n);
+                       });
+    }
+    // Undo and redo write tiles outside strokes: the composite follows at once.
+    if (!inStroke())
+        m_stack->updateTile(key.page, key.tile);
     return true;
 }
 
 void TextureTarget::addChanges(std::vector<TileKey>& keys, PaintChanges& out) const {
+    // The composite changes where any plane of a tile did.
+    for (TileKey& key : keys)
+        key.plane = 0;
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     texelRectsFromTiles(keys, m_pages, out.texels);
+}
+
+PaintChanges TextureTarget::refresh(std::vector<TileKey> tiles) {
+    for (TileKey& key : tiles)
+        key.plane = 0;
+    std::sort(tiles.begin(), tiles.end());
+    tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
+    tiles.erase(std::remove_if(tiles.begin(), tiles.end(),
+                               [&](const TileKey& k) {
+                                   return k.page >= m_pages.size() ||
+                                          k.tile >= std::uint32_t(m_pages[k.page].tilesX *
+                                                                  m_pages[k.page].tilesY);
+                               }),
+                tiles.end());
+    parallelRanges(int(tiles.size()), 0, [&](int, int begin, int end) {
+        for (int k = begin; k < end; ++k)
+            m_stack->updateTile(tiles[std::size_t(k)].page, tiles[std::size_t(k)].tile);
+    });
+    PaintChanges changes;
+    addChanges(tiles, changes);
+    return changes;
+}
+
+void TextureTarget::refreshTouched() {
+    Context& c = *m_context;
+    for (const std::uint32_t slot : c.touched)
+        m_stack->updateTile(c.slots[slot].key.page, c.slots[slot].key.tile);
+}
+
+void TextureTarget::strokeStarted() {
+    Context& c = *m_context;
+    const Brush& brush = c.brush;
+    m_mode = StrokeMode::Base;
+    m_planes = {};
+    m_mask = nullptr;
+    c.strokePlane = 0;
+    if (m_selection.layer == 0) {
+        if (!brush.paintBaseColor && !brush.eraser)
+            m_mode = StrokeMode::Nothing;
+        return;
+    }
+    const std::optional<std::size_t> index = m_stack->indexOf(m_selection.layer);
+    if (!index) {
+        m_mode = StrokeMode::Nothing;
+        return;
+    }
+    const PaintLayer& layer = m_stack->layer(*index);
+    c.strokePlane = planeKey(m_selection.layer, m_selection.mask);
+    if (m_selection.mask) {
+        m_mode = StrokeMode::Mask;
+        m_mask = &m_stack->maskPlane(*index);
+        // A mask takes the brush colour's lightness: white shows, black hides.
+        const glm::vec4 lin = c.colorLinear;
+        m_maskValue = SrgbTables::get().encode(0.2126f * lin.r + 0.7152f * lin.g + 0.0722f * lin.b);
+        return;
+    }
+    if (layer.settings.kind == PaintLayerKind::Fill) {
+        m_mode = StrokeMode::Nothing; // uniform values: only its mask can be painted
+        return;
+    }
+    m_mode = StrokeMode::Channels;
+    m_lock = layer.settings.lockTransparency;
+    const bool on[kPaintChannels] = {brush.paintBaseColor, brush.paintRoughness,
+                                     brush.paintMetallic};
+    for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
+        // The eraser clears whatever the layer holds; paint goes into the brush's channels.
+        if (brush.eraser ? layer.channels[ch] != nullptr : on[ch])
+            m_planes[ch] = m_stack->channelPlane(*index, PaintChannel(ch));
+    }
+    if (std::all_of(m_planes.begin(), m_planes.end(), [](TiledPlane* p) { return !p; }))
+        m_mode = StrokeMode::Nothing;
+    for (int k = 0; k < 3; ++k)
+        m_values[std::size_t(k)] = float(c.colorBytes[std::size_t(k)]) / 255.0f;
+    m_values[3] = std::clamp(std::isfinite(brush.roughness) ? brush.roughness : 0.0f, 0.0f, 1.0f);
+    m_values[4] = std::clamp(std::isfinite(brush.metallic) ? brush.metallic : 0.0f, 0.0f, 1.0f);
+}
+
+void TextureTarget::writeTexel(std::uint32_t pageIndex, int x, int y, const std::uint8_t* before,
+                               std::size_t local, std::size_t tileTexels, float cover) {
+    Context& c = *m_context;
+    const bool eraser = c.brush.eraser;
+    switch (m_mode) {
+    case StrokeMode::Base: {
+        const std::size_t at =
+            (std::size_t(y) * std::size_t(m_pages[pageIndex].image.width) + std::size_t(x)) * 4;
+        blendTexel(SrgbTables::get(), &m_stack->baseColor(pageIndex)[at], before + local * 4,
+                   eraser ? &m_pages[pageIndex].original.rgba[at] : c.colorBytes.data(),
+                   eraser ? nullptr : &c.colorLinear[0], cover);
+        return;
+    }
+    case StrokeMode::Channels:
+        for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
+            TiledPlane* plane = m_planes[ch];
+            if (plane == nullptr)
+                continue;
+            const int n = ch == 0 ? 3 : 1;
+            const std::uint8_t* start =
+                before + channelOffset(ch, tileTexels) + local * std::size_t(n + 1);
+            std::uint8_t* texel = plane->writableTexel(pageIndex, x, y);
+            if (eraser)
+                eraseTexel(texel, start, n, cover);
+            else
+                paintTexel(texel, start, n, &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock);
+        }
+        return;
+    case StrokeMode::Mask: {
+        const float from = float(before[local]);
+        const float to = eraser ? 255.0f : float(m_maskValue);
+        *m_mask->writableTexel(pageIndex, x, y) =
+            std::uint8_t(std::lround(from + (to - from) * std::clamp(cover, 0.0f, 1.0f)));
+        return;
+    }
+    case StrokeMode::Nothing:
+        return;
+    }
 }
 
 void TextureTarget::padTouched() {
@@ -417,17 +675,16 @@ void TextureTarget::coverTexel(std::uint32_t pageIndex, int x, int y, float cove
         return;
     st.alpha[local] = cover;
     c.touch(slot);
-    const std::size_t at = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
-    const bool eraser = c.brush.eraser;
-    blendTexel(SrgbTables::get(), &page.image.rgba[at], &st.before[local * 4],
-               eraser ? &page.original.rgba[at] : c.colorBytes.data(),
-               eraser ? nullptr : &c.colorLinear[0], cover);
+    const int tileHeight =
+        std::min(kTextureTile, page.image.height - (y / kTextureTile) * kTextureTile);
+    writeTexel(pageIndex, x, y, st.before.data(), local,
+               std::size_t(tileWidth) * std::size_t(tileHeight), cover);
 }
 
 const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> elements) {
     Context& c = *m_context;
     const float cover = c.beginElements();
-    if (!(cover > 0.0f))
+    if (!(cover > 0.0f) || m_mode == StrokeMode::Nothing)
         return c.changes;
     for (const PaintElement& e : elements) {
         if (e.page >= m_pages.size())
@@ -440,21 +697,23 @@ const PaintChanges& TextureTarget::paintElements(std::span<const PaintElement> e
                    cover);
     }
     padTouched();
+    refreshTouched();
     return touchedChanges();
 }
 
 const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     Context& c = *m_context;
     c.changes.clear();
-    if (!c.inStroke || !c.beginDab(layers, dab))
+    if (!c.inStroke || m_mode == StrokeMode::Nothing || !c.beginDab(layers, dab))
         return c.changes;
     const Mesh& m = *c.mesh;
     const SrgbTables& srgb = SrgbTables::get();
     const Brush& brush = c.brush;
     const bool eraser = brush.eraser;
+    const bool onBase = m_mode == StrokeMode::Base;
 
-    // Sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush colour, or the
-    // original for the eraser.
+    // On the base: sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush
+    // colour, or the original for the eraser. On a paint layer or mask: writeTexel().
     const Page* blendPage = nullptr; // the page blend() writes to
     const auto blend = [&](std::uint8_t* pixels, std::size_t texel, const std::uint8_t* before,
                            float cover) {
@@ -520,13 +779,14 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         for (int k = 0; k < 3; ++k)
             p[k] = c.vertices[s.vertex[std::size_t(r.corner[k])]];
         const float invArea = float(1.0 / double(r.area));
-        std::uint8_t* pixels = page.image.rgba.data();
+        std::uint8_t* pixels = m_stack->baseColor(pageIndex).data();
         std::uint32_t lastTile = kNone;
         std::int32_t slot = -1;
         float* alpha = nullptr;
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
         int tileWidth = 0;
+        std::size_t tileTexels = 0;
 
         scanUv(
             r, x0, x1, y0, y1,
@@ -577,6 +837,9 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     before = c.slots[std::size_t(slot)].before.data();
                     tileTouched = false;
                     tileWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
+                    tileTexels = std::size_t(tileWidth) *
+                                 std::size_t(std::min(kTextureTile,
+                                                      height - (ty / kTextureTile) * kTextureTile));
                 }
                 const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(tileWidth) +
                                           std::size_t(tx % kTextureTile);
@@ -589,12 +852,16 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     tileTouched = true;
                     c.touch(slot);
                 }
-                blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
-                      before + local * 4, cover);
+                if (onBase)
+                    blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
+                          before + local * 4, cover);
+                else
+                    writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
             });
     }
 
     padTouched();
+    refreshTouched();
     return touchedChanges();
 }
 

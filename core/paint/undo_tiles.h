@@ -8,10 +8,15 @@
 
 namespace core {
 
-/** One tile of a tiled store: a texture tile of one page, or a block of vertex colours. */
+/**
+ * One tile of a tiled store: a texture tile of one page, or a block of vertex colours. plane says
+ * which of a store's planes it belongs to: 0 for the store's own data; a texture target keys its
+ * paint layers' tiles by layer (see TextureTarget::planeKey()).
+ */
 struct TileKey {
     std::uint32_t page = 0;
     std::uint32_t tile = 0;
+    std::uint64_t plane = 0;
 
     friend bool operator==(const TileKey&, const TileKey&) = default;
     friend auto operator<=>(const TileKey&, const TileKey&) = default;

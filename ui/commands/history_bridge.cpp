@@ -60,6 +60,8 @@ QString HistoryBridge::stepText(core::StepKind kind) {
         return tr("Change Paint Target");
     case core::StepKind::Script:
         return tr("Run Script");
+    case core::StepKind::PaintLayers:
+        return tr("Change Paint Layers");
     }
     return {};
 }

@@ -215,3 +215,118 @@ TEST(Script, RunAllCanBeCancelled) {
 }
 
 } // namespace
+
+namespace {
+
+/** Every byte of every paint layer of a session's texture target, with the shown pages. */
+std::vector<std::uint8_t> layerBytes(core::Document& doc) {
+    const auto& target = *dynamic_cast<const core::TextureTarget*>(doc.paintTarget());
+    std::vector<std::uint8_t> out = target.page(0).rgba;
+    const auto& mr = target.metallicRoughnessPage(0).rgba;
+    out.insert(out.end(), mr.begin(), mr.end());
+    const core::PaintLayerStack& stack = target.layerStack();
+    for (std::size_t i = 0; i < stack.size(); ++i) {
+        const core::PaintLayer& layer = stack.layer(i);
+        out.insert(out.end(), layer.settings.name.begin(), layer.settings.name.end());
+        out.push_back(std::uint8_t(layer.settings.blend));
+        out.push_back(std::uint8_t(layer.settings.visible));
+        out.push_back(std::uint8_t(layer.settings.opacity * 255.0f));
+        for (const core::TiledPlane* plane : {layer.channels[0].get(), layer.channels[1].get(),
+                                              layer.channels[2].get(), layer.mask.get()}) {
+            if (!plane)
+                continue;
+            for (const core::TileKey key : plane->writtenTiles()) {
+                const std::uint8_t* t = plane->tile(key.page, key.tile);
+                out.insert(out.end(), t, t + plane->tileBytes(key));
+            }
+        }
+    }
+    return out;
+}
+
+} // namespace
+
+TEST(Script, PaintLayerOperations) {
+    Session s;
+    const json ops = json::parse(R"json([
+        {"op": "layer-add", "name": "Colour"},
+        {"op": "set-brush", "color": "#20c040", "radius": 5, "hardness": 1},
+        {"op": "stroke", "points": [[14, 30], [30, 30]]},
+        {"op": "layer-add", "name": "Metal", "kind": "paint"},
+        {"op": "set-brush", "channels": {"roughness": 0.3, "metallic": 1.0}},
+        {"op": "stroke", "points": [[14, 20], [30, 20]]},
+        {"op": "layer-add", "name": "Tint", "kind": "fill",
+         "values": {"base_color": "#ff8000"}},
+        {"op": "layer-set", "layer": "Tint", "opacity": 0.5, "blend": "multiply"},
+        {"op": "mask-add", "layer": "Tint"},
+        {"op": "set-brush", "channels": {"base_color": "#000000"}},
+        {"op": "stroke", "points": [[14, 40], [30, 40]]},
+        {"op": "layer-select", "layer": "Colour"},
+        {"op": "layer-move", "index": 2},
+        {"op": "layer-set", "layer": 0, "visible": false, "name": "Metal (hidden)"},
+        {"op": "mask-select", "layer": "Tint"},
+        {"op": "layer-merge-down", "layer": "Colour"}
+    ])json");
+    ASSERT_TRUE(s.run(ops).ok());
+    const auto& target = *dynamic_cast<const core::TextureTarget*>(s.doc.paintTarget());
+    const core::PaintLayerStack& stack = target.layerStack();
+    ASSERT_EQ(stack.size(), 2u);
+    EXPECT_EQ(stack.layer(0).settings.name, "Metal (hidden)");
+    EXPECT_FALSE(stack.layer(0).settings.visible);
+    EXPECT_EQ(stack.layer(1).settings.name, "Tint");
+    EXPECT_EQ(stack.layer(1).settings.kind, core::PaintLayerKind::Paint) << "merged";
+    EXPECT_EQ(target.selection().layer, stack.layer(1).id);
+    EXPECT_EQ(s.doc.brush().paintBaseColor, true);
+    EXPECT_EQ(s.doc.brush().paintRoughness, false);
+
+    // Errors name the operation and what is wrong.
+    core::Status bad = s.run(json::array({{{"op", "layer-set"}, {"blend", "sideways"}}}));
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().find("blend"), std::string::npos) << bad.error();
+    bad = s.run(json::array({{{"op", "layer-select"}, {"layer", "Nope"}}}));
+    EXPECT_NE(bad.error().find("Nope"), std::string::npos) << bad.error();
+    bad = s.run(json::array({{{"op", "set-brush"}, {"channels", {{"gloss", 1}}}}}));
+    EXPECT_NE(bad.error().find("gloss"), std::string::npos) << bad.error();
+    bad = s.run(json::array({{{"op", "layer-merge-down"}, {"layer", 0}}}));
+    EXPECT_FALSE(bad.ok());
+}
+
+TEST(Script, ARecordedSessionWithPaintLayersReplaysToTheSameLayers) {
+    Session user;
+    ASSERT_TRUE(user.host.buildLayers(user.doc, pixelView(kWidth, kHeight)).ok());
+    core::PaintChanges changes;
+    core::PaintLayerSettings settings;
+    settings.name = "One";
+    auto one = user.doc.addPaintLayer(settings, changes);
+    ASSERT_TRUE(one.ok());
+    user.doc.brush().radius = 6.0f;
+    user.doc.brush().paintRoughness = true;
+    user.doc.brush().roughness = 0.1f;
+    ASSERT_TRUE(user.doc.beginStroke({{14.0f, 30.0f}, 1.0f}, changes).ok());
+    user.doc.moveStroke({{50.0f, 33.0f}, 1.0f}, changes);
+    user.doc.endStroke();
+    auto two = user.doc.duplicatePaintLayer(*one, changes);
+    ASSERT_TRUE(two.ok());
+    settings = user.doc.layerTarget().value()->layerStack().layer(1).settings;
+    settings.blend = core::BlendMode::Screen;
+    settings.opacity = 0.5f;
+    ASSERT_TRUE(user.doc.setPaintLayerSettings(*two, settings, changes).ok());
+    ASSERT_TRUE(user.doc.addPaintLayerMask(*two, changes).ok());
+    user.doc.brush().color = {0.0f, 0.0f, 0.0f, 1.0f};
+    ASSERT_TRUE(user.doc.beginStroke({{20.0f, 30.0f}, 1.0f}, changes).ok());
+    user.doc.moveStroke({{26.0f, 30.0f}, 1.0f}, changes);
+    user.doc.endStroke();
+    ASSERT_TRUE(user.doc.selectPaint({0, false}).ok());
+    ASSERT_TRUE(user.doc.movePaintLayer(*one, 1, changes).ok());
+    ASSERT_TRUE(user.doc.undo(changes));
+    ASSERT_TRUE(user.doc.mergePaintLayerDown(*two, changes).ok());
+
+    const core::Result<core::Script> parsed =
+        core::parseScript(json::parse(core::scriptToJson(user.doc.session().script()).dump()));
+    ASSERT_TRUE(parsed.ok()) << parsed.error();
+    Session replay;
+    ASSERT_TRUE(replay.runner.runAll(*parsed).ok());
+    EXPECT_EQ(layerBytes(replay.doc), layerBytes(user.doc));
+    EXPECT_EQ(replay.doc.brush(), user.doc.brush());
+    EXPECT_EQ(replay.doc.history().undoCount(), user.doc.history().undoCount());
+}

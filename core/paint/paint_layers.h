@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/model/mesh.h"
+#include "core/paint/blend_modes.h"
+#include "core/paint/tiled_plane.h"
+
+namespace core {
+
+/** The material channels paint goes into (glTF metallic-roughness). */
+enum class PaintChannel : std::uint8_t { BaseColor, Roughness, Metallic };
+inline constexpr std::size_t kPaintChannels = 3;
+
+/** A value for each channel, or none where a brush or a fill layer leaves the channel alone. */
+struct ChannelValues {
+    std::optional<glm::vec3> baseColor; // sRGB-encoded, 0..1
+    std::optional<float> roughness;     // 0..1
+    std::optional<float> metallic;      // 0..1
+
+    friend bool operator==(const ChannelValues&, const ChannelValues&) = default;
+};
+
+enum class PaintLayerKind : std::uint8_t {
+    Paint, // what brushes and fills put there, texel by texel
+    Fill,  // uniform channel values everywhere (shaped by its mask)
+};
+
+/** What a paint layer is, apart from its texels. */
+struct PaintLayerSettings {
+    std::string name;
+    PaintLayerKind kind = PaintLayerKind::Paint;
+    float opacity = 1.0f;
+    BlendMode blend = BlendMode::Normal;
+    bool visible = true;
+    /** Painting changes the colour of what is there, never how much is there. */
+    bool lockTransparency = false;
+    /** The values of a fill layer. */
+    ChannelValues fill;
+
+    friend bool operator==(const PaintLayerSettings&, const PaintLayerSettings&) = default;
+};
+
+/**
+ * One paint layer: settings, a plane per channel it was painted in (base colour RGBA8 with A the
+ * coverage; roughness and metallic as value and coverage bytes) and an optional mask (one byte,
+ * 255 shows, 0 hides; unwritten texels show). Planes exist only once painted.
+ */
+struct PaintLayer {
+    std::uint64_t id = 0;
+    PaintLayerSettings settings;
+    std::array<std::unique_ptr<TiledPlane>, kPaintChannels> channels;
+    std::unique_ptr<TiledPlane> mask;
+
+    /** Bytes of texel data held by its planes. */
+    std::size_t bytes() const;
+};
+
+/** Bytes per texel of a channel's plane in a paint layer (value components + coverage). */
+int channelTexelBytes(PaintChannel channel);
+
+/**
+ * The stack of paint layers of a paint target over its read-only base (the model's own textures
+ * or vertex colours as loaded), and the flattened result. Index 0 is the layer right above the
+ * base. The composite is kept per page as RGBA8 base colour (the base's alpha kept) and, with
+ * material channels, an RGBA8 metallic-roughness image as glTF stores it (G roughness, B
+ * metallic); updateTile() recomputes one tile of it, so a stroke updates what it touched only.
+ *
+ * A texel's channel value c starts at the base's; each visible layer with coverage a (its
+ * plane's coverage, 1 for a fill layer's set channel) under opacity o and mask m moves it to
+ * c + a·o·m·(blend(mode, c, v) - c), v the layer's value.
+ */
+class PaintLayerStack {
+public:
+    /**
+     * pages: the target's page sizes. baseColor: per page, width·height RGBA8 texels.
+     * baseMetallicRoughness: per page RGBA8 (G roughness, B metallic), or empty for the material
+     * without channels (vertex colours: base colour only).
+     */
+    PaintLayerStack(std::vector<PageSize> pages, std::vector<std::vector<std::uint8_t>> baseColor,
+                    std::vector<std::vector<std::uint8_t>> baseMetallicRoughness);
+
+    const std::vector<PageSize>& pages() const { return m_pages; }
+    /** Whether roughness and metallic can be painted (texture targets). */
+    bool hasMaterialChannels() const { return !m_baseMetallicRoughness.empty(); }
+
+    std::size_t size() const { return m_layers.size(); }
+    const PaintLayer& layer(std::size_t index) const { return *m_layers[index]; }
+    /** The index of the layer with id, or nothing. */
+    std::optional<std::size_t> indexOf(std::uint64_t id) const;
+
+    /** Adds a layer at index (clamped; size() puts it on top); returns its index. */
+    std::size_t add(PaintLayerSettings settings, std::size_t index);
+    /** A copy of layer index right above it, named "NAME copy"; returns the copy's index. */
+    std::size_t duplicate(std::size_t index);
+    /** Takes layer index out of the stack (for an undo step to keep). */
+    std::unique_ptr<PaintLayer> take(std::size_t index);
+    /** Puts a layer taken before back at index (clamped). */
+    void insert(std::unique_ptr<PaintLayer> layer, std::size_t index);
+    /** Moves layer from to index to (both clamped). */
+    void move(std::size_t from, std::size_t to);
+    void setSettings(std::size_t index, PaintLayerSettings settings);
+    /**
+     * Merges layer index into the one below (index - 1), which keeps its name, blend mode and
+     * visibility; the result has opacity 1 and no mask and looks the same over a normal lower
+     * layer. Returns false (nothing changed) for index 0 or out of range.
+     */
+    bool mergeDown(std::size_t index, std::vector<std::unique_ptr<PaintLayer>>* removed = nullptr);
+    /**
+     * Replaces every layer with one normal paint layer that gives the same composite: the
+     * composite where any visible layer covers, nothing elsewhere. Hidden layers are dropped.
+     * removed, if given, receives the layers replaced (bottom first).
+     */
+    void flatten(std::string name, std::vector<std::unique_ptr<PaintLayer>>* removed = nullptr);
+
+    /** The plane of a channel of layer index, made on first use (nullptr: no such channel). */
+    TiledPlane* channelPlane(std::size_t index, PaintChannel channel);
+    /** The mask of layer index, made (all showing) on first use. */
+    TiledPlane& maskPlane(std::size_t index);
+    /** Sets the mask of layer index (nullptr: none). */
+    void setMask(std::size_t index, std::unique_ptr<TiledPlane> mask) {
+        m_layers.at(index)->mask = std::move(mask);
+    }
+    /** Removes the mask of layer index; the layer shows everywhere again. */
+    std::unique_ptr<TiledPlane> takeMask(std::size_t index);
+
+    /** Recomputes tile (TiledPlane tiling) of page in the composite. */
+    void updateTile(std::uint32_t page, std::uint32_t tile);
+    /** Recomputes the whole composite (on several threads). */
+    void updateAll();
+    const std::vector<std::uint8_t>& compositeBaseColor(std::uint32_t page) const {
+        return m_compositeColor[page].rgba;
+    }
+    /** Empty without material channels. */
+    const std::vector<std::uint8_t>& compositeMetallicRoughness(std::uint32_t page) const;
+    /** The composite base colour of page as an image (what a viewport shows). */
+    const Image& compositeImage(std::uint32_t page) const { return m_compositeColor[page]; }
+    /** The composite metallic-roughness image of page (empty without material channels). */
+    const Image& compositeMetallicRoughnessImage(std::uint32_t page) const;
+
+    /**
+     * The base's texels of page (RGBA8). Writable for painting on the base; call updateTile()
+     * for what changed.
+     */
+    std::vector<std::uint8_t>& baseColor(std::uint32_t page) { return m_baseColor[page]; }
+    const std::vector<std::uint8_t>& baseColor(std::uint32_t page) const {
+        return m_baseColor[page];
+    }
+    /** The base's metallic-roughness texels of page (empty without material channels). */
+    const std::vector<std::uint8_t>& baseMetallicRoughness(std::uint32_t page) const;
+    /**
+     * The tiles (TiledPlane tiling, plane 0) where layer can change the composite: every tile
+     * for a fill layer, else the tiles its channel planes hold.
+     */
+    std::vector<TileKey> tilesCovered(const PaintLayer& layer) const;
+    /** Every tile of every page. */
+    std::vector<TileKey> allTiles() const;
+
+    /** Bytes held by the layers' planes (not the base or the composite). */
+    std::size_t layerBytes() const;
+
+private:
+    std::unique_ptr<PaintLayer> makeLayer(PaintLayerSettings settings);
+    std::unique_ptr<TiledPlane> makePlane(int texelBytes, std::array<std::uint8_t, 4> fill) const;
+    /** The composite values of texel i of page over layers [0, end) (linear 0..1 each). */
+    void compositeTexel(std::uint32_t page, int x, int y, std::size_t end,
+                        std::array<float, 5>& values) const;
+
+    std::vector<PageSize> m_pages;
+    std::vector<std::vector<std::uint8_t>> m_baseColor;
+    std::vector<std::vector<std::uint8_t>> m_baseMetallicRoughness;
+    std::vector<std::unique_ptr<PaintLayer>> m_layers;
+    std::vector<Image> m_compositeColor;
+    std::vector<Image> m_compositeMr;
+    std::uint64_t m_nextId = 1;
+};
+
+/**
+ * A paint layer's texel after a stroke's paint of value (components 1 or 3, 0..1) with stroke
+ * coverage a (0..1) over its value at the stroke's start: source-over (the coverage grows) or,
+ * with lockTransparency, only the colour moves towards value in proportion to a. texel and start
+ * have components + 1 bytes (the last is the coverage).
+ */
+void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components, const float* value,
+                float a, bool lockTransparency);
+/** A paint layer's texel after erasing with coverage a: its coverage falls to start·(1 - a). */
+void eraseTexel(std::uint8_t* texel, const std::uint8_t* start, int components, float a);
+
+} // namespace core
