@@ -216,8 +216,13 @@ int main(int argc, char** argv) {
     sandbox.readable = readablePaths(o);
     sandbox.maxSeconds = core::detail::importSeconds(o.file, o.limits);
     const importer::SandboxReport report = importer::applySandbox(sandbox);
-    if (o.probe)
-        return probe(o, report);
+    if (o.probe) {
+        // Ends like a load does: without exit-time work (a sanitizer's leak check at exit needs
+        // system calls the sandbox denies, and would end the process before stdout is flushed).
+        const int status = probe(o, report);
+        std::fflush(stdout);
+        ::_exit(status);
+    }
 
     core::importer::FrameWriter out(STDOUT_FILENO);
     bool sent = false;
