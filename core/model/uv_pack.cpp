@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Packing the charts of the automatic UV layout into texture pages by their shape: each chart is
-// rasterized conservatively into a texel mask grown by half the padding, and put at the lowest
+// rasterized into a mask of the texels it fills, grown by half the padding, and put at the lowest
 // free place of a page (first fit, row by row) in the quarter turn that keeps its top lowest, so
 // small charts fill the gaps and holes that big ones leave.
 #include <algorithm>
@@ -18,16 +18,21 @@ namespace core::uvl {
 
 namespace {
 
-/** A chart's mask, conservatively rasterized and grown by half the padding. */
+/** A chart's mask: the texels it fills, grown by half the padding. */
 struct Mask {
     int width = 0, height = 0;
     glm::dvec2 origin{0.0}; // texel position (uv × density) of the mask's corner
     std::vector<std::uint8_t> bits;
 };
 
-/** Marks the texels of mask (width w) that triangle a, b, c touches at all. */
-void rasterizeConservative(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c,
-                           std::vector<std::uint8_t>& mask, int w, int h) {
+/**
+ * Marks the texels of mask (width w) whose centre triangle a, b, c covers, or lies within kSlack
+ * texels of: the texels painting fills (its fill rule takes texel centres), with room for the
+ * rounding of the float UVs. A triangle covering no centre marks none.
+ */
+constexpr double kSlack = 0.05;
+void rasterizeCentres(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c,
+                      std::vector<std::uint8_t>& mask, int w, int h) {
     const glm::dvec2 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
     const int x0 = std::max(0, int(std::floor(lo.x))), x1 = std::min(w - 1, int(std::floor(hi.x)));
     const int y0 = std::max(0, int(std::floor(lo.y))), y1 = std::min(h - 1, int(std::floor(hi.y)));
@@ -36,16 +41,14 @@ void rasterizeConservative(const glm::dvec2& a, const glm::dvec2& b, const glm::
     const glm::dvec2 p[3] = {a, b, c};
     for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
-            bool inside = true;
-            if (area != 0.0) {
-                const glm::dvec2 centre(x + 0.5, y + 0.5);
-                // Separating axis test of the texel square against each edge's line.
-                for (int k = 0; k < 3 && inside; ++k) {
-                    const glm::dvec2 e0 = p[k], e1 = p[(k + 1) % 3];
-                    const double dx = e1.x - e0.x, dy = e1.y - e0.y;
-                    const double f = sign * (dx * (centre.y - e0.y) - dy * (centre.x - e0.x));
-                    inside = f + 0.5 * (std::fabs(dx) + std::fabs(dy)) >= 0.0;
-                }
+            bool inside = area != 0.0;
+            const glm::dvec2 centre(x + 0.5, y + 0.5);
+            // The centre's distance to each edge's line, positive inside.
+            for (int k = 0; k < 3 && inside; ++k) {
+                const glm::dvec2 e0 = p[k], e1 = p[(k + 1) % 3];
+                const double dx = e1.x - e0.x, dy = e1.y - e0.y;
+                const double f = sign * (dx * (centre.y - e0.y) - dy * (centre.x - e0.x));
+                inside = f + kSlack * std::sqrt(dx * dx + dy * dy) >= 0.0;
             }
             if (inside)
                 mask[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 1;
@@ -87,10 +90,16 @@ Mask maskChart(const Chart& chart, double density, int r) {
     std::vector<std::uint8_t> bits(std::size_t(w) * std::size_t(h), 0u);
     const glm::dvec2 shift = lo - margin;
     for (const auto& c : chart.local)
-        rasterizeConservative(chart.uv[c[0]] * density - shift, chart.uv[c[1]] * density - shift,
-                              chart.uv[c[2]] * density - shift, bits, w, h);
-    if (std::find(bits.begin(), bits.end(), 1u) == bits.end())
-        bits[std::size_t(r + 1) * std::size_t(w) + std::size_t(r + 1)] = 1;
+        rasterizeCentres(chart.uv[c[0]] * density - shift, chart.uv[c[1]] * density - shift,
+                         chart.uv[c[2]] * density - shift, bits, w, h);
+    // The texels of the corners too, so the chart's UVs stay inside its mask's bounds (and the
+    // page) even where a sliver covers no texel centre.
+    for (const glm::dvec2& uv : chart.uv) {
+        const glm::dvec2 q = uv * density - shift;
+        const int x = std::clamp(int(std::floor(q.x)), 0, w - 1);
+        const int y = std::clamp(int(std::floor(q.y)), 0, h - 1);
+        bits[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 1;
+    }
     dilate(bits, w, h, r);
     int x0 = w, x1 = -1, y0 = h, y1 = -1;
     for (int y = 0; y < h; ++y)
