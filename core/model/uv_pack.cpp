@@ -4,6 +4,7 @@
 // free place of a page (first fit, row by row) in the quarter turn that keeps its top lowest, so
 // small charts fill the gaps and holes that big ones leave.
 #include <algorithm>
+#include <bit>
 #include <climits>
 #include <cmath>
 #include <numeric>
@@ -186,7 +187,7 @@ public:
             for (int x = 0; x < size; ++x)
                 m_run[index(x, y)] = std::int16_t(size - x);
         m_widest.assign(std::size_t(size), size);
-        m_searchFrom.assign(std::size_t(size) + 1, 0);
+        m_searchFrom.assign(kBuckets * kBuckets, 0);
         m_dirty.assign(std::size_t(size), 0u);
     }
 
@@ -198,7 +199,7 @@ public:
         // Tall charts try every step-th row, then slide down from where they fit: far fewer
         // tests, and at most a step higher than the lowest place.
         const int step = std::max(1, s.height / 16);
-        const int from = std::max(m_open, m_searchFrom[std::size_t(smallSide(s))]);
+        const int from = std::max(m_open, m_searchFrom[bucketPair(s)]);
         for (int y = from; y + s.height <= m_size && y + s.height < topLimit; y += step) {
             bool rowsFit = true;
             for (int j = 0; j < s.height && rowsFit; ++j)
@@ -229,12 +230,18 @@ public:
     }
 
     void place(const Shape& s, int x, int y) {
-        // Charts come largest first and many are alike: one at least as small across as this
-        // one starts its search a little below where this one went, not at the bottom again.
+        // Charts come largest first and many are alike: one at least as large both ways (by
+        // powers of two) starts its search a little below where this one went, not at the
+        // first row again. Keyed by one side only, a small chart placed low sent every wider one
+        // below it, past the gaps it could have filled.
         const int side = smallSide(s);
         const int from = std::max(0, y - side);
-        for (std::size_t k = std::size_t(side); k < m_searchFrom.size(); ++k)
-            m_searchFrom[k] = std::max(m_searchFrom[k], from);
+        const int small = bucket(side), large = bucket(std::max(s.width, s.height));
+        for (int i = small; i < kBuckets; ++i)
+            for (int j = std::max(i, large); j < kBuckets; ++j) {
+                int& f = m_searchFrom[std::size_t(i * kBuckets + j)];
+                f = std::max(f, from);
+            }
         for (int j = 0; j < s.height; ++j) {
             std::int16_t* row = &m_run[index(0, y + j)];
             for (int k = s.rowBegin[std::size_t(j)]; k < s.rowBegin[std::size_t(j) + 1]; ++k) {
@@ -261,6 +268,15 @@ public:
 
 private:
     int smallSide(const Shape& s) const { return std::min({s.width, s.height, m_size}); }
+    /** Sizes by powers of two: a chart in a higher bucket on both sides is larger both ways. */
+    static int bucket(int side) {
+        return std::min(kBuckets - 1, int(std::bit_width(unsigned(side))));
+    }
+    static std::size_t bucketPair(const Shape& s) {
+        const int a = bucket(std::min(s.width, s.height)), b = bucket(std::max(s.width, s.height));
+        return std::size_t(a * kBuckets + b);
+    }
+    static constexpr int kBuckets = 16;
 
     bool fitsAt(const Shape& s, int x, int y) {
         for (int j = 0; j < s.height; ++j)
@@ -307,7 +323,7 @@ private:
     std::vector<std::int16_t> m_run;
     std::vector<int> m_widest;
     std::vector<std::uint8_t> m_dirty;
-    std::vector<int> m_searchFrom; // per smaller side of a chart: the row its search starts at
+    std::vector<int> m_searchFrom; // per bucket pair of a chart's sides: where its search starts
     int m_open = 0;
     int m_lastFailed = 0;
 };
