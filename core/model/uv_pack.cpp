@@ -232,8 +232,8 @@ public:
     void place(const Shape& s, int x, int y) {
         // Charts come largest first and many are alike: one at least as large both ways (by
         // powers of two) starts its search a little below where this one went, not at the
-        // first row again. Keyed by one side only, a small chart placed low sent every wider one
-        // below it, past the gaps it could have filled.
+        // first row again. Keyed by one side only, a small chart placed low sent every wider
+        // one below it, past the gaps it could have filled.
         const int side = smallSide(s);
         const int from = std::max(0, y - side);
         const int small = bucket(side), large = bucket(std::max(s.width, s.height));
