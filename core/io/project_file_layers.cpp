@@ -81,8 +81,8 @@ Result<Json> encodePlane(const TiledPlane& plane, std::vector<Bytes>& attachment
                          {"image", attachments.size() - 1}});
     }
     Json fill = Json::array();
-    for (int k = 0; k < tb; ++k)
-        fill.push_back(plane.fill()[std::size_t(k)]);
+    for (const std::uint8_t v : plane.fill())
+        fill.push_back(v);
     return Json{{"texel_bytes", tb}, {"fill", std::move(fill)}, {"pages", std::move(pages)}};
 }
 
@@ -111,8 +111,8 @@ public:
             return Error{"has texel_bytes other than " + std::to_string(expected)};
         std::array<std::uint8_t, 4> fill{};
         const auto f = j.find("fill");
-        if (f == j.end() || !f->is_array() || f->size() != std::size_t(*tb))
-            return Error{"has no fill value of " + std::to_string(*tb) + " bytes"};
+        if (f == j.end() || !f->is_array() || f->size() != fill.size())
+            return Error{"has no fill value of 4 bytes"};
         for (std::size_t k = 0; k < f->size(); ++k) {
             if (!(*f)[k].is_number_unsigned() || (*f)[k].get<unsigned>() > 255)
                 return Error{"has a fill value that is not bytes"};
