@@ -102,11 +102,16 @@ TEST(ChannelExport, ObjNamesRoughnessAndMetallicInTheMtl) {
     EXPECT_NE(mtl.find("map_Pm knot_1_metallic.png\n"), std::string::npos) << mtl;
     expectChannel(image(dir.file("knot_1_roughness.png")), p.channels.metallicRoughness[0], 1);
     expectChannel(image(dir.file("knot_1_metallic.png")), p.channels.metallicRoughness[0], 2);
-    // The model still loads, with its base colour texture.
+    // The model still loads, with the same base colour texture as without the channels.
     core::Result<core::Mesh> back = core::loadMesh(path);
     ASSERT_TRUE(back.ok()) << back.error();
+    const std::string plainPath = dir.file("plain.obj");
+    ASSERT_TRUE(core::exportMesh(plainPath, core::ExportFormat::Obj, p.mesh).ok());
+    core::Result<core::Mesh> plain = core::loadMesh(plainPath);
+    ASSERT_TRUE(plain.ok()) << plain.error();
     ASSERT_EQ(back->textures.size(), 1u);
-    EXPECT_TRUE(back->textures[0].rgba == p.mesh.textures[0].rgba);
+    ASSERT_EQ(plain->textures.size(), 1u);
+    EXPECT_TRUE(back->textures[0].rgba == plain->textures[0].rgba);
 }
 
 TEST(ChannelExport, TextureFormatsWriteAnImagePerChannel) {
