@@ -30,7 +30,7 @@ bool isGltfPath(const std::string& path) {
 using MeshLoader = Result<Mesh> (*)(const std::string&, const ProgressFn&, const LoadLimits&);
 
 Result<Project> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits,
-                     MeshLoader loadMeshWith) {
+                     MeshLoader loadMeshWith, GlbImageLoader loadImagesWith) {
     Project project;
     std::vector<std::string> warnings;
     Result<Json> extras = Json::object();
@@ -63,7 +63,9 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
         // The textures are the composite; the base and the layers' planes are images beside it.
         auto layers = std::make_shared<SavedPaintLayers>(*project.state->paintLayers);
         const Json& json = (*extras)[kProjectExtrasKey]["paint_layers"];
-        if (Status read = readPaintLayerImages(path, json, limits, project.mesh, *layers); !read)
+        if (Status read =
+                readPaintLayerImages(path, json, limits, project.mesh, *layers, loadImagesWith);
+            !read)
             return Error{path + ": " + read.error(), read.errorKind()};
         project.state->paintLayers = std::move(layers);
     }
@@ -72,9 +74,10 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
 }
 
 Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progress,
-                                const LoadLimits& limits, MeshLoader loadMeshWith) {
+                                const LoadLimits& limits, MeshLoader loadMeshWith,
+                                GlbImageLoader loadImagesWith) {
     try {
-        return load(path, progress, limits, loadMeshWith);
+        return load(path, progress, limits, loadMeshWith, loadImagesWith);
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to load the file"};
     } catch (const std::exception& e) {
@@ -86,12 +89,12 @@ Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progr
 
 Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
                             const LoadLimits& limits) {
-    return loadProjectWith(path, progress, limits, &loadMesh);
+    return loadProjectWith(path, progress, limits, &loadMesh, &loadGlbImages);
 }
 
 Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress,
                                      const LoadLimits& limits) {
-    return loadProjectWith(path, progress, limits, &loadMeshInProcess);
+    return loadProjectWith(path, progress, limits, &loadMeshInProcess, &loadGlbImagesInProcess);
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,

@@ -223,7 +223,8 @@ Status addPaintLayerImages(const SavedPaintLayers& saved, const std::vector<Page
 }
 
 Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
-                            const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved) {
+                            const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved,
+                            GlbImageLoader loadImages) {
     // The page sizes the planes were saved with are the model's textures, in order.
     std::vector<PageSize> pages;
     const auto sizes = paintLayers.find("pages");
@@ -249,18 +250,10 @@ Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
             views.push_back(v.get<int>());
         }
     }
-    Result<std::vector<Bytes>> files = readGlbViews(path, views, limits.maxFileBytes);
-    if (!files)
-        return files.takeError();
-    std::vector<Image> images;
-    for (std::size_t k = 0; k < files->size(); ++k) {
-        Result<Image> image = decodeImage((*files)[k].data(), (*files)[k].size(),
-                                          "paint layer image " + std::to_string(k), limits);
-        if (!image)
-            return image.takeError();
-        images.push_back(std::move(image).value());
-        (*files)[k] = {};
-    }
+    Result<std::vector<Image>> decoded = loadImages(path, views, limits);
+    if (!decoded)
+        return decoded.takeError();
+    const std::vector<Image> images = std::move(decoded).value();
 
     const PlaneReader reader(pages, images);
     const auto layersIt = paintLayers.find("layers");

@@ -16,6 +16,11 @@
 
 namespace core {
 
+/** Decodes images stored in buffer views of a binary glTF (loadGlbImages() or in process). */
+using GlbImageLoader = Result<std::vector<Image>> (*)(const std::string& path,
+                                                      const std::vector<int>& views,
+                                                      const LoadLimits& limits);
+
 /**
  * Adds the planes and the base of saved to paintLayers (extras.layerpaint.paint_layers as
  * paintLayersToJson() wrote it): "pages" (the page sizes), per layer "channels" and "mask"
@@ -30,9 +35,10 @@ Status addPaintLayerImages(const SavedPaintLayers& saved, const std::vector<Page
  * Reads the planes and the base of the paint layers of the project at path (paintLayers: its
  * extras.layerpaint.paint_layers) into saved, whose layers came from paintLayersFromJson(), and
  * puts the base into mesh's textures (page p is texture p). An Error (no path) saying what
- * does not fit.
+ * does not fit. The images are decoded by loadImages (loadGlbImages(): in the importer process).
  */
 Status readPaintLayerImages(const std::string& path, const nlohmann::json& paintLayers,
-                            const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved);
+                            const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved,
+                            GlbImageLoader loadImages);
 
 } // namespace core

@@ -17,6 +17,7 @@
 
 #include "core/document/document.h"
 #include "core/io/gltf_export.h"
+#include "core/io/mesh_io_in_process.h"
 #include "core/io/project_file.h"
 #include "core/layers/cpu_capture.h"
 #include "core/model/builtin_models.h"
@@ -296,6 +297,42 @@ TEST_F(PaintLayersProjectTest, DamagedLayerDataIsAClearErrorNamingTheFile) {
     project = core::loadProject(path);
     ASSERT_FALSE(project.ok());
     EXPECT_NE(project.error().find("id"), std::string::npos) << project.error();
+}
+
+// The layers' PNG images are untrusted bytes like any file's: the importer process decodes them
+// (loadGlbImages), with the same result as decoding here, and a damaged one is an error naming
+// the file, never a crash of the application.
+TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
+    buildStack();
+    TempDir dir;
+    const std::string path = dir.file("layers.glb");
+    ASSERT_TRUE(core::saveProject(path, m_doc, core::captureProjectState(m_doc)).ok());
+    core::Result<Json> extras = core::readGlbExtras(path);
+    ASSERT_TRUE(extras.ok()) << extras.error();
+    const std::vector<int> views =
+        (*extras)["layerpaint"]["paint_layers"]["images"].get<std::vector<int>>();
+    ASSERT_FALSE(views.empty());
+
+    const core::Result<std::vector<core::Image>> outside = core::loadGlbImages(path, views);
+    ASSERT_TRUE(outside.ok()) << outside.error();
+    const core::Result<std::vector<core::Image>> inside = core::loadGlbImagesInProcess(path, views);
+    ASSERT_TRUE(inside.ok()) << inside.error();
+    ASSERT_EQ(outside->size(), views.size());
+    ASSERT_EQ(inside->size(), views.size());
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        EXPECT_EQ((*outside)[k].width, (*inside)[k].width) << k;
+        EXPECT_TRUE((*outside)[k].rgba == (*inside)[k].rgba) << k;
+    }
+
+    // A view that is not an image.
+    const core::Result<std::vector<core::Image>> notImage =
+        core::loadGlbImages(path, {views.front(), 0});
+    ASSERT_FALSE(notImage.ok());
+    EXPECT_EQ(notImage.error().rfind(path + ": ", 0), 0u) << notImage.error();
+    // A view that does not exist.
+    const core::Result<std::vector<core::Image>> missing = core::loadGlbImages(path, {100000});
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().rfind(path + ": ", 0), 0u) << missing.error();
 }
 
 } // namespace
