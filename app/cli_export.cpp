@@ -85,12 +85,19 @@ int runExport(const ExportArgs& args) {
         if (!texture)
             return fail(args.input + ": there is no paint texture to export (the model is "
                                      "painted with vertex colours)");
-        std::vector<core::Image> pages;
-        for (std::size_t i = 0; i < texture->pageCount(); ++i)
+        std::vector<core::Image> pages, metallicRoughness;
+        for (std::size_t i = 0; i < texture->pageCount(); ++i) {
             pages.push_back(texture->page(i));
-        files = core::exportTextures(args.out, *format, pages);
+            metallicRoughness.push_back(texture->metallicRoughnessPage(i));
+        }
+        files = core::exportChannelTextures(args.out, *format, pages, metallicRoughness);
     } else {
-        files = core::exportMesh(args.out, *format, doc.paintedMesh());
+        // The painted mesh's texture i is page i: its roughness and metallic go beside it.
+        core::MaterialChannels channels;
+        if (const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.paintTarget()))
+            for (std::size_t i = 0; i < texture->pageCount(); ++i)
+                channels.metallicRoughness.push_back(texture->metallicRoughnessPage(i));
+        files = core::exportMaterial(args.out, *format, doc.paintedMesh(), channels);
     }
     if (!files)
         return fail(files.error());

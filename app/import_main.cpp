@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // layerpaint-import: the importer process. Parses one model file (or, with --image, one image
-// file) in a sandbox (import_sandbox.h) and writes the result to standard output as frames
-// (core/import_protocol.h): progress, warnings, then the mesh, the image or an error. Started by
-// core::loadMesh() and core::loadImageFile(); its output is binary, not for reading by hand.
+// file; with --glb-images, the images in buffer views of a project's binary glTF) in a sandbox
+// (import_sandbox.h) and writes the result to standard output as frames (core/import_protocol.h):
+// progress, warnings, then the mesh, the image(s) or an error. Started by core::loadMesh(),
+// core::loadImageFile() and core::loadGlbImages(); its output is binary, not for reading by hand.
 //
 //   layerpaint-import [--max-file-bytes N] [--max-vertices N] [--max-triangles N]
 //                     [--max-image-pixels N] [--max-seconds S] [--require-textures]
-//                     [--image] -- FILE
+//                     [--image | --glb-images V,V,...] -- FILE
 //   layerpaint-import --stdin    (the same arguments from standard input, each ended by a NUL,
 //                                 then an empty one: a process started before it is needed)
 //   layerpaint-import --probe OTHER_FILE -- FILE   (tests: what the sandbox allows, as text)
@@ -39,6 +40,7 @@ namespace fs = std::filesystem;
 struct Options {
     core::LoadLimits limits;
     bool image = false;
+    std::optional<std::vector<int>> glbImages; // buffer views of a binary glTF holding images
     std::optional<std::string> probe;
     std::string file;
 };
@@ -47,8 +49,8 @@ int usage(const char* problem) {
     std::fprintf(stderr,
                  "layerpaint-import: %s\nusage: layerpaint-import [--max-file-bytes N] "
                  "[--max-vertices N] [--max-triangles N] [--max-image-pixels N] [--max-seconds S] "
-                 "[--require-textures] [--image] -- FILE\n(run by LayerPaint to read files; it "
-                 "writes binary frames to its standard output)\n",
+                 "[--require-textures] [--image | --glb-images V,V,...] -- FILE\n(run by "
+                 "LayerPaint to read files; it writes binary frames to its standard output)\n",
                  problem);
     return 2;
 }
@@ -112,6 +114,22 @@ std::vector<std::string> readRequest() {
     }
 }
 
+/** "3,7,12": buffer view indices; nothing when malformed. */
+std::optional<std::vector<int>> viewList(const char* text) {
+    std::vector<int> views;
+    const std::string list(text);
+    std::size_t start = 0;
+    while (start <= list.size()) {
+        const std::size_t end = std::min(list.find(',', start), list.size());
+        std::uint64_t n = 0;
+        if (!number(list.substr(start, end - start).c_str(), n) || n > 0x7FFFFFFF)
+            return std::nullopt;
+        views.push_back(static_cast<int>(n));
+        start = end + 1;
+    }
+    return views;
+}
+
 std::optional<Options> parse(const std::vector<std::string>& argv) {
     Options o;
     const std::size_t argc = argv.size();
@@ -131,6 +149,10 @@ std::optional<Options> parse(const std::vector<std::string>& argv) {
             std::uint64_t n = 0;
             if (arg == "--probe") {
                 o.probe = value;
+            } else if (arg == "--glb-images") {
+                o.glbImages = viewList(value);
+                if (!o.glbImages)
+                    return std::nullopt;
             } else if (arg == "--max-seconds") {
                 char* end = nullptr;
                 o.limits.maxSeconds = std::strtod(value, &end);
@@ -226,7 +248,15 @@ int main(int argc, char** argv) {
 
     core::importer::FrameWriter out(STDOUT_FILENO);
     bool sent = false;
-    if (o.image) {
+    if (o.glbImages) {
+        // A project's paint-layer images: sent as the textures of a mesh without triangles.
+        core::Result<std::vector<core::Image>> images =
+            core::loadGlbImagesInProcess(o.file, *o.glbImages, o.limits);
+        core::Mesh carrier;
+        if (images)
+            carrier.textures = std::move(images).value();
+        sent = images ? out.mesh(carrier) : out.text(core::importer::Tag::Error, images.error());
+    } else if (o.image) {
         const core::Result<core::Image> image = core::loadImageFileInProcess(o.file, o.limits);
         sent = image ? out.image(*image) : out.text(core::importer::Tag::Error, image.error());
     } else {

@@ -207,6 +207,8 @@ public:
     const PaintTargetOptions& paintOptions() const { return m_paintOptions; }
     void setPaintOptions(const PaintTargetOptions& options) { m_paintOptions = options; }
     bool hasPaintTarget() const { return m_paintTarget != nullptr; }
+    /** The paint target if there is one (never makes one). */
+    const PaintTarget* currentPaintTarget() const { return m_paintTarget.get(); }
     /** The options the paint target is (or will be) made with. */
     const PaintTargetOptions& paintTargetOptions() const { return m_paintOptions; }
     /** The current paint target's kind; before one exists, the kind it will have. */

@@ -247,6 +247,8 @@ Json projectStateToJson(const ProjectState& s) {
     j["pop_up"] = {{"automatic", s.autoPopUp}, {"transparency", s.popUpTransparency}};
     if (!s.recoveryFor.empty())
         j["recovery_for"] = s.recoveryFor;
+    if (s.paintLayers)
+        j["paint_layers"] = paintLayersToJson(*s.paintLayers);
     return j;
 }
 
@@ -259,7 +261,12 @@ Json upgradeProjectJson(Json j, int from) {
         j.erase("model");
         from = 2;
     }
-    // Later upgrades go here: if (from == 2) { ...; from = 3; }
+    if (from == 2) {
+        // Version 2 had no paint layers: the painting is all in the base (the textures).
+        j.erase("paint_layers");
+        from = 3;
+    }
+    // Later upgrades go here: if (from == 3) { ...; from = 4; }
     j["version"] = from;
     return j;
 }
@@ -346,6 +353,12 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
         r.boolean("automatic", s.autoPopUp);
         r.boolean("transparency", s.popUpTransparency);
     }
+    if (const auto it = j.find("paint_layers"); it != j.end()) {
+        Result<SavedPaintLayers> layers = paintLayersFromJson(*it, warnings);
+        if (!layers)
+            return layers.takeError(); // the planes in the file could not be matched
+        s.paintLayers = std::make_shared<const SavedPaintLayers>(std::move(layers).value());
+    }
     return s;
 }
 
@@ -365,6 +378,7 @@ ProjectState captureProjectState(const Document& doc, ProjectState base) {
         s.target.kind = doc.paintTargetKind();
     s.layerAware = doc.layerAware();
     s.autoPopUp = doc.autoPopUp();
+    s.paintLayers = capturePaintLayers(doc);
     return s;
 }
 
@@ -393,8 +407,13 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
     const Status target = needsUvLayout(doc.mesh(), state.target)
                               ? Status(Error{"the model has no texture coordinates (UVs)"})
                               : doc.setPaintTarget(state.target);
-    if (target)
+    if (target) {
+        if (!state.paintLayers)
+            return {};
+        if (const Status restored = restorePaintLayers(doc, *state.paintLayers); !restored)
+            return Error{"the paint layers cannot be restored (" + restored.error() + ")"};
         return {};
+    }
     PaintTargetOptions fallback = state.target;
     fallback.kind.reset();
     if (const Status automatic = doc.setPaintTarget(fallback); !automatic)

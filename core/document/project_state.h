@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +16,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "core/paint/dab.h"
+#include "core/paint/paint_layers.h"
 #include "core/paint/paint_target.h"
 
 namespace core {
@@ -23,12 +26,42 @@ class Document;
 /**
  * The project format version this build writes and the newest it reads. Version 1 is what
  * `layerpaint-cli paint` wrote before projects existed (extras.layerpaint with "script" and
- * "model" only); version 2 holds the whole ProjectState.
+ * "model" only); version 2 holds the whole ProjectState; version 3 adds the paint layers
+ * (extras.layerpaint.paint_layers). Older versions open with no paint layers.
  */
-inline constexpr int kProjectFormatVersion = 2;
+inline constexpr int kProjectFormatVersion = 3;
 
 /** The key of the project state in the glTF asset's extras. */
 inline constexpr const char* kProjectExtrasKey = "layerpaint";
+
+/** A paint layer as a project keeps it: its id, settings and planes (null: never painted). */
+struct SavedPaintLayer {
+    std::uint64_t id = 0;
+    PaintLayerSettings settings;
+    std::array<std::shared_ptr<const TiledPlane>, kPaintChannels> channels;
+    std::shared_ptr<const TiledPlane> mask;
+};
+
+/**
+ * The paint-layer stack of a texture target as a project keeps it. The structure (ids, settings,
+ * order, selection) is JSON under extras.layerpaint.paint_layers; the planes and the base are
+ * images in the file (core/io/project_file), so projectStateFromJson() gives the layers without
+ * planes and loadProject() fills them in.
+ */
+struct SavedPaintLayers {
+    std::vector<SavedPaintLayer> layers; // bottom first
+    PaintSelection selection;
+    /**
+     * Per page, the base's colour (sRGB RGBA8) where it differs from the composite, else empty:
+     * the file's base colour textures are the composite, so the base is kept beside them.
+     */
+    std::vector<Image> base;
+    /**
+     * Per page, the composite metallic-roughness image (empty without material channels); saved
+     * as the materials' metallicRoughnessTexture.
+     */
+    std::vector<Image> metallicRoughness;
+};
 
 /**
  * The app state a project keeps beside the painted mesh (docs/architecture.md §3 step 7), stored
@@ -56,6 +89,11 @@ struct ProjectState {
     bool popUpTransparency = false;
     /** Autosaves only: the project file the recovered work belongs to (empty: never saved). */
     std::string recoveryFor;
+    /**
+     * The texture target's paint layers (null: none, or not a texture target). Shared, so that
+     * copies of a state do not copy the planes.
+     */
+    std::shared_ptr<const SavedPaintLayers> paintLayers;
 
     static constexpr std::size_t kMaxPaletteColors = 256;
 };
@@ -78,11 +116,29 @@ Result<ProjectState> projectStateFromJson(const nlohmann::json& layerpaint,
  */
 nlohmann::json upgradeProjectJson(nlohmann::json layerpaint, int from);
 
+/** extras.layerpaint.paint_layers for layers: settings, ids, order and selection, no planes. */
+nlohmann::json paintLayersToJson(const SavedPaintLayers& layers);
+/**
+ * The paint layers in extras.layerpaint.paint_layers, without their planes. A value of the wrong
+ * type keeps its default with a warning; a layer without a valid unique id is an Error (its
+ * planes could not be matched).
+ */
+Result<SavedPaintLayers> paintLayersFromJson(const nlohmann::json& paintLayers,
+                                             std::vector<std::string>* warnings = nullptr);
+/** The paint layers of doc's texture target (copies of the planes), or null for none. */
+std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc);
+/**
+ * Replaces the paint layers of doc's texture target with layers (not an undo step: a project
+ * being opened). An Error, and nothing changed, when there is no texture target or a plane does
+ * not fit its pages.
+ */
+Status restorePaintLayers(Document& doc, const SavedPaintLayers& layers);
+
 /**
  * base with the document's share of a project's state filled in: camera, brush, layer options,
- * paint target, layer-aware mode, automatic pop-up, and the source (the document's name) if base
- * has none. What the document does not hold (colours, palette, see-through pop-ups) stays as in
- * base.
+ * paint target, paint layers, layer-aware mode, automatic pop-up, and the source (the document's
+ * name) if base has none. What the document does not hold (colours, palette, see-through pop-ups)
+ * stays as in base.
  */
 ProjectState captureProjectState(const Document& doc, ProjectState base = {});
 

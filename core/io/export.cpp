@@ -112,6 +112,7 @@ bool finiteFactor(float v) {
 }
 
 Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh,
+                                          const MaterialChannels& channels,
                                           const ProgressFn& progress) {
     const std::string stem = token(path.stem().string());
     const fs::path mtlPath = path.parent_path() / (stem + ".mtl");
@@ -120,6 +121,7 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
     std::vector<std::string> names(mesh.materials.size());
     std::vector<int> materialImage(mesh.materials.size(), -1);
     std::vector<Image> images;
+    std::vector<int> imageSource; // the mesh texture of each image
     std::map<std::pair<int, std::array<float, 3>>, int> baked;
     for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
         const Material& mat = mesh.materials[m];
@@ -141,10 +143,22 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         images.push_back(rgb == std::array<float, 3>{1.0f, 1.0f, 1.0f}
                              ? source
                              : bakeFactor(source, glm::vec4(rgb[0], rgb[1], rgb[2], 1.0f)));
+        imageSource.push_back(t);
         materialImage[m] = int(images.size() - 1);
         baked.emplace(key, materialImage[m]);
     }
     auto imageName = [&](int i) { return stem + "_" + std::to_string(i + 1) + ".png"; };
+    // The roughness and metallic of an image's texture, where the material has them.
+    auto channelsOf = [&](int i) -> const Image* {
+        const int t = imageSource[std::size_t(i)];
+        return std::size_t(t) < channels.metallicRoughness.size() &&
+                       !channels.metallicRoughness[std::size_t(t)].empty()
+                   ? &channels.metallicRoughness[std::size_t(t)]
+                   : nullptr;
+    };
+    auto channelName = [&](int i, const char* channel) {
+        return stem + "_" + std::to_string(i + 1) + "_" + channel + ".png";
+    };
 
     std::string mtl = "# LayerPaint export\n";
     for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
@@ -160,6 +174,9 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         mtl += "\nillum 1\n";
         if (materialImage[m] >= 0)
             mtl += "map_Kd " + imageName(materialImage[m]) + "\n";
+        if (materialImage[m] >= 0 && channelsOf(materialImage[m]))
+            mtl += "map_Pr " + channelName(materialImage[m], "roughness") + "\nmap_Pm " +
+                   channelName(materialImage[m], "metallic") + "\n";
     }
 
     std::string obj;
@@ -241,6 +258,17 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
             !s)
             return s.takeError();
         written.push_back(file);
+        if (const Image* mr = channelsOf(int(i))) {
+            for (const auto& [channel, component] : {std::pair{"roughness", 1}, {"metallic", 2}}) {
+                const std::string name =
+                    (path.parent_path() / channelName(int(i), channel)).string();
+                if (Status s =
+                        writeImageFile(name, channelImage(*mr, component), ExportFormat::Png8, {});
+                    !s)
+                    return s.takeError();
+                written.push_back(name);
+            }
+        }
     }
     if (Status s = writeBytes(mtlPath.string(), mtl); !s)
         return s.takeError();
@@ -296,7 +324,8 @@ Result<std::vector<std::string>> writePly(const fs::path& path, const Mesh& mesh
 }
 
 Result<std::vector<std::string>> exportModel(const std::string& path, ExportFormat format,
-                                             const Mesh& mesh, const ProgressFn& progress) {
+                                             const Mesh& mesh, const MaterialChannels& channels,
+                                             const ProgressFn& progress) {
     if (isTextureFormat(format))
         return Error{path + ": " + exportFormatName(format) + " holds a texture, not a model"};
     if (const Status valid = mesh.validate(); !valid)
@@ -307,7 +336,11 @@ Result<std::vector<std::string>> exportModel(const std::string& path, ExportForm
     Result<std::vector<std::string>> written = std::vector<std::string>{};
     switch (format) {
     case ExportFormat::Glb: {
-        Result<Bytes> bytes = encodeGlb(mesh, {}, part(progress, 0.0, 0.9));
+        GlbAdditions additions;
+        additions.metallicRoughness = channels.metallicRoughness;
+        for (const Material& m : mesh.materials)
+            additions.materialMetallicRoughness.push_back(m.baseColorTexture);
+        Result<Bytes> bytes = encodeGlbWith(mesh, additions, part(progress, 0.0, 0.9));
         if (!bytes) {
             if (bytes.cancelled())
                 throw Cancelled{};
@@ -319,7 +352,7 @@ Result<std::vector<std::string>> exportModel(const std::string& path, ExportForm
         break;
     }
     case ExportFormat::Obj:
-        written = writeObj(target, mesh, progress);
+        written = writeObj(target, mesh, channels, progress);
         break;
     case ExportFormat::Ply:
         written = writePly(target, mesh, progress);
@@ -413,8 +446,14 @@ glm::vec4 sampleTexture(const Image& image, glm::vec2 uv) {
 
 Result<std::vector<std::string>> exportMesh(const std::string& path, ExportFormat format,
                                             const Mesh& mesh, const ProgressFn& progress) {
+    return exportMaterial(path, format, mesh, {}, progress);
+}
+
+Result<std::vector<std::string>> exportMaterial(const std::string& path, ExportFormat format,
+                                                const Mesh& mesh, const MaterialChannels& channels,
+                                                const ProgressFn& progress) {
     try {
-        return exportModel(path, format, mesh, progress);
+        return exportModel(path, format, mesh, channels, progress);
     } catch (const Cancelled&) {
         return cancelledError(path + ": cancelled");
     } catch (const std::bad_alloc&) {
@@ -459,6 +498,51 @@ Result<std::vector<std::string>> exportTextures(const std::string& path, ExportF
             !s)
             return s.takeError();
         written.push_back(file);
+    }
+    return written;
+}
+
+Image channelImage(const Image& metallicRoughness, int component) {
+    Image out = metallicRoughness;
+    for (std::size_t i = 0; i + 3 < out.rgba.size(); i += 4) {
+        const std::uint8_t v = metallicRoughness.rgba[i + std::size_t(component)];
+        out.rgba[i] = out.rgba[i + 1] = out.rgba[i + 2] = v;
+        out.rgba[i + 3] = 255;
+    }
+    return out;
+}
+
+Result<std::vector<std::string>> exportChannelTextures(const std::string& path, ExportFormat format,
+                                                       const std::vector<Image>& pages,
+                                                       const std::vector<Image>& metallicRoughness,
+                                                       const ProgressFn& progress) {
+    Result<std::vector<std::string>> written =
+        exportTextures(path, format, pages, part(progress, 0.0, 0.5));
+    if (!written)
+        return written;
+    const fs::path first(path);
+    const std::size_t n = std::min(pages.size(), metallicRoughness.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        if (metallicRoughness[i].empty())
+            continue;
+        const std::string page = i == 0 ? std::string() : "_" + std::to_string(i + 1);
+        for (const auto& [channel, component] : {std::pair{"_roughness", 1}, {"_metallic", 2}}) {
+            Image image = channelImage(metallicRoughness[i], component);
+            if (format == ExportFormat::Exr) {
+                // The EXR writer decodes sRGB colour to linear; these values are linear already.
+                for (std::size_t k = 0; k + 3 < image.rgba.size(); k += 4)
+                    image.rgba[k] = image.rgba[k + 1] = image.rgba[k + 2] =
+                        linearToSrgb(float(image.rgba[k]) / 255.0f);
+            }
+            const std::string file =
+                sibling(first, page + channel, first.extension().string()).string();
+            if (Status s = exportTexture(file, format, image,
+                                         part(progress, 0.5 + 0.5 * double(i) / double(n),
+                                              0.5 + 0.5 * double(i + 1) / double(n)));
+                !s)
+                return s.takeError();
+            written->push_back(file);
+        }
     }
     return written;
 }

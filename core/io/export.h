@@ -48,6 +48,39 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
 Result<std::vector<std::string>> exportMesh(const std::string& path, ExportFormat format,
                                             const Mesh& mesh, const ProgressFn& progress = {});
 
+/** A painted material's channels beside a mesh's base colour textures. */
+struct MaterialChannels {
+    /**
+     * Per mesh texture, the glTF metallic-roughness image (linear; G roughness, B metallic) of
+     * the materials that use it, or an empty image for none.
+     */
+    std::vector<Image> metallicRoughness;
+};
+
+/**
+ * exportMesh() with the material's roughness and metallic: Glb gets each as the materials'
+ * metallicRoughnessTexture (metallic and roughness factors 1); Obj writes STEM_N_roughness.png
+ * and STEM_N_metallic.png (grey, linear) beside STEM_N.png and names them in the MTL with
+ * map_Pr and map_Pm; Ply has no such channels.
+ */
+Result<std::vector<std::string>> exportMaterial(const std::string& path, ExportFormat format,
+                                                const Mesh& mesh, const MaterialChannels& channels,
+                                                const ProgressFn& progress = {});
+
+/** The roughness (G) or metallic (B) of a metallic-roughness image as a grey opaque image. */
+Image channelImage(const Image& metallicRoughness, int component);
+
+/**
+ * exportTextures() of the base colour pages, then, for pages with a metallic-roughness image,
+ * STEM_roughness.EXT and STEM_metallic.EXT (page i from 2: STEM_i_roughness.EXT, ...) as grey
+ * images of the linear values (Exr: the values, within 8-bit rounding). Returns every path
+ * written, or the first Error.
+ */
+Result<std::vector<std::string>> exportChannelTextures(const std::string& path, ExportFormat format,
+                                                       const std::vector<Image>& pages,
+                                                       const std::vector<Image>& metallicRoughness,
+                                                       const ProgressFn& progress = {});
+
 /**
  * Writes image (a paint texture page: sRGB RGBA8, rows top first) as Png8, Png16 (each value ×
  * 257), Tiff (8 bits) or Exr (half float; colour decoded to linear and associated with alpha,

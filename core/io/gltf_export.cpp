@@ -14,6 +14,7 @@
 #include <fstream>
 #include <limits>
 #include <new>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -179,7 +180,9 @@ struct GlbParts {
     Bytes bin;  // BIN chunk data, 4-byte aligned
 };
 
-Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const ProgressFn& progress) {
+Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
+                             const ProgressFn& progress) {
+    Json extras = additions.extras;
     if (const Status valid = mesh.validate(); !valid)
         return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
     if (!extras.is_null() && !extras.is_object())
@@ -264,13 +267,52 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
             return cancelledError();
     }
 
+    // Metallic-roughness images the materials use, after the base colour textures.
+    std::vector<int> mrTexture(additions.metallicRoughness.size(), -1);
+    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
+        const int source = mi < additions.materialMetallicRoughness.size()
+                               ? additions.materialMetallicRoughness[mi]
+                               : -1;
+        if (source < 0 || std::size_t(source) >= mrTexture.size() ||
+            mrTexture[std::size_t(source)] >= 0 ||
+            additions.metallicRoughness[std::size_t(source)].empty())
+            continue;
+        const Result<Bytes> png =
+            encodeImage(additions.metallicRoughness[std::size_t(source)], ExportFormat::Png8);
+        if (!png)
+            return Error{"metallic-roughness texture " + std::to_string(source) +
+                             " cannot be encoded as PNG (" + png.error() + ")",
+                         png.errorKind()};
+        const int view = bin.addView(png->data(), png->size(), 0, 0);
+        images.push_back({{"bufferView", view},
+                          {"mimeType", "image/png"},
+                          {"name", "metallic-roughness " + std::to_string(source)}});
+        mrTexture[std::size_t(source)] = static_cast<int>(textures.size());
+        textures.push_back({{"source", images.size() - 1}, {"sampler", 0}});
+    }
+    if (!additions.attachments.empty() && extras.is_object()) {
+        Json views = Json::array();
+        for (const Bytes& blob : additions.attachments)
+            views.push_back(bin.addView(blob.data(), blob.size(), 0, 0));
+        extras[additions.attachmentsAt] = std::move(views);
+    }
+
     Json materials = Json::array();
-    for (const Material& m : mesh.materials) {
+    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
+        const Material& m = mesh.materials[mi];
+        const int mrSource = mi < additions.materialMetallicRoughness.size()
+                                 ? additions.materialMetallicRoughness[mi]
+                                 : -1;
+        const int mr = mrSource >= 0 && std::size_t(mrSource) < mrTexture.size()
+                           ? mrTexture[std::size_t(mrSource)]
+                           : -1;
         Json pbr = {{"baseColorFactor",
                      Json::array({factor(m.baseColorFactor.r), factor(m.baseColorFactor.g),
                                   factor(m.baseColorFactor.b), factor(m.baseColorFactor.a)})},
-                    {"metallicFactor", 0.0},
+                    {"metallicFactor", mr >= 0 ? 1.0 : 0.0},
                     {"roughnessFactor", 1.0}};
+        if (mr >= 0)
+            pbr["metallicRoughnessTexture"] = {{"index", mr}};
         if (m.baseColorTexture >= 0 &&
             textureIndex[static_cast<std::size_t>(m.baseColorTexture)] >= 0)
             pbr["baseColorTexture"] = {
@@ -329,7 +371,13 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const Json& extras, const Progres
 // ---------------------------------------------------------------------------------------------
 // Reading extras
 
-Result<Json> readExtras(const std::string& path) {
+/** The glTF JSON of path and, for a binary file, where its BIN chunk's data is. */
+struct GltfRoot {
+    Json root;
+    std::uint64_t binOffset = 0, binLength = 0; // 0, 0: no BIN chunk
+};
+
+Result<GltfRoot> readRoot(const std::string& path) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
@@ -374,7 +422,30 @@ Result<Json> readExtras(const std::string& path) {
     }
     if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
         return Error{"is not a glTF file (no asset)"};
-    const Json& asset = root["asset"];
+    GltfRoot out;
+    const std::uint64_t binHead = jsonOffset + jsonLength;
+    if (glb::hasMagic(head) && binHead + 8 <= size) {
+        std::uint8_t chunk[8] = {};
+        in.seekg(static_cast<std::streamoff>(binHead));
+        if (in.read(reinterpret_cast<char*>(chunk), 8)) {
+            std::uint32_t length = 0, type = 0;
+            std::memcpy(&length, chunk, 4);
+            std::memcpy(&type, chunk + 4, 4);
+            if (type == glb::kChunkBin && binHead + 8 + length <= size) {
+                out.binOffset = binHead + 8;
+                out.binLength = length;
+            }
+        }
+    }
+    out.root = std::move(root);
+    return out;
+}
+
+Result<Json> readExtras(const std::string& path) {
+    Result<GltfRoot> gltf = readRoot(path);
+    if (!gltf)
+        return gltf.takeError();
+    const Json& asset = gltf->root["asset"];
     const auto it = asset.find("extras");
     if (it == asset.end())
         return Json::object();
@@ -387,8 +458,15 @@ Result<Json> readExtras(const std::string& path) {
 
 Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::json& extras,
                                             const ProgressFn& progress) {
+    GlbAdditions additions;
+    additions.extras = extras;
+    return encodeGlbWith(mesh, additions, progress);
+}
+
+Result<std::vector<std::uint8_t>> encodeGlbWith(const Mesh& mesh, const GlbAdditions& additions,
+                                                const ProgressFn& progress) {
     try {
-        Result<GlbParts> parts = encodeParts(mesh, extras, progress);
+        Result<GlbParts> parts = encodeParts(mesh, additions, progress);
         if (!parts)
             return parts.takeError();
         Bytes out = std::move(parts->head);
@@ -403,8 +481,15 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
 
 Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras,
                const ProgressFn& progress, bool keepBackup) {
+    GlbAdditions additions;
+    additions.extras = extras;
+    return saveGlbWith(path, mesh, additions, progress, keepBackup);
+}
+
+Status saveGlbWith(const std::string& path, const Mesh& mesh, const GlbAdditions& additions,
+                   const ProgressFn& progress, bool keepBackup) {
     try {
-        Result<GlbParts> parts = encodeParts(mesh, extras, progress);
+        Result<GlbParts> parts = encodeParts(mesh, additions, progress);
         if (!parts)
             return Status(Error{path + ": " + parts.error(), parts.errorKind()});
         const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
@@ -425,6 +510,66 @@ Result<nlohmann::json> readGlbExtras(const std::string& path) {
         if (!extras)
             return Error{path + ": " + extras.error(), extras.errorKind()};
         return extras;
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to read the file"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
+    }
+}
+
+namespace {
+
+Result<std::vector<Bytes>> readViews(const std::string& path, const std::vector<int>& wanted,
+                                     std::uint64_t maxBytes) {
+    Result<GltfRoot> gltf = readRoot(path);
+    if (!gltf)
+        return gltf.takeError();
+    const Json& root = gltf->root;
+    const auto views = root.find("bufferViews");
+    std::vector<Bytes> out;
+    std::uint64_t total = 0;
+    std::ifstream in(path, std::ios::binary);
+    for (const int v : wanted) {
+        const std::string name = "buffer view " + std::to_string(v);
+        if (views == root.end() || !views->is_array() || v < 0 || std::size_t(v) >= views->size() ||
+            !(*views)[std::size_t(v)].is_object())
+            return Error{name + " is missing"};
+        const Json& view = (*views)[std::size_t(v)];
+        const auto number = [&](const char* key) -> std::optional<std::uint64_t> {
+            const auto it = view.find(key);
+            if (it == view.end())
+                return std::uint64_t{0};
+            if (!it->is_number_unsigned())
+                return std::nullopt;
+            return it->get<std::uint64_t>();
+        };
+        const std::optional<std::uint64_t> offset = number("byteOffset"),
+                                           length = number("byteLength");
+        if (!offset || !length || view.value("buffer", Json(-1)) != Json(0) ||
+            *offset > gltf->binLength || *length > gltf->binLength - *offset)
+            return Error{name + " lies outside the binary chunk"};
+        total += *length;
+        if (total > maxBytes)
+            return Error{"the paint layer images are too large (over " + std::to_string(maxBytes) +
+                         " bytes)"};
+        Bytes bytes(static_cast<std::size_t>(*length));
+        in.seekg(static_cast<std::streamoff>(gltf->binOffset + *offset));
+        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(*length)))
+            return Error{"cannot be read", ErrorKind::Io};
+        out.push_back(std::move(bytes));
+    }
+    return out;
+}
+
+} // namespace
+
+Result<std::vector<std::vector<std::uint8_t>>>
+readGlbViews(const std::string& path, const std::vector<int>& views, std::uint64_t maxBytes) {
+    try {
+        Result<std::vector<Bytes>> out = readViews(path, views, maxBytes);
+        if (!out)
+            return Error{path + ": " + out.error(), out.errorKind()};
+        return out;
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to read the file"};
     } catch (const std::exception& e) {

@@ -34,6 +34,29 @@ namespace core {
 Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::json& extras = {},
                                             const ProgressFn& progress = {});
 
+/** What a glTF file holds beyond the mesh: material channels and binary attachments. */
+struct GlbAdditions {
+    /** asset.extras (a JSON object, or null for none). */
+    nlohmann::json extras;
+    /**
+     * glTF metallic-roughness images (linear; G roughness, B metallic), and per material an
+     * index into them or -1. A material with one gets it as metallicRoughnessTexture with
+     * metallic and roughness factors 1.
+     */
+    std::vector<Image> metallicRoughness;
+    std::vector<int> materialMetallicRoughness;
+    /**
+     * Encoded files (PNG images) stored as buffer views after the textures; the array of their
+     * view indices is written into extras at attachmentsAt.
+     */
+    std::vector<std::vector<std::uint8_t>> attachments;
+    nlohmann::json::json_pointer attachmentsAt;
+};
+
+/** encodeGlb() with additions. */
+Result<std::vector<std::uint8_t>> encodeGlbWith(const Mesh& mesh, const GlbAdditions& additions,
+                                                const ProgressFn& progress = {});
+
 /**
  * Saves mesh as a binary glTF file at path (see encodeGlb), atomically (writeFileAtomically),
  * keeping the previous file as path + ".bak" unless keepBackup is false. On failure the old file
@@ -41,6 +64,9 @@ Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::js
  */
 Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras = {},
                const ProgressFn& progress = {}, bool keepBackup = true);
+/** saveGlb() with additions. */
+Status saveGlbWith(const std::string& path, const Mesh& mesh, const GlbAdditions& additions,
+                   const ProgressFn& progress = {}, bool keepBackup = true);
 
 /**
  * The asset.extras object of a glTF file (binary or JSON); reads only the JSON. An empty object
@@ -48,5 +74,13 @@ Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& 
  * not an object.
  */
 Result<nlohmann::json> readGlbExtras(const std::string& path);
+
+/**
+ * The bytes of buffer views of a binary glTF file (of its BIN chunk), in the order asked; reads
+ * only the JSON and those bytes. An Error naming path if the file is not a binary glTF, a view
+ * is missing or lies outside the chunk, or the views add up to more than maxBytes.
+ */
+Result<std::vector<std::vector<std::uint8_t>>>
+readGlbViews(const std::string& path, const std::vector<int>& views, std::uint64_t maxBytes);
 
 } // namespace core

@@ -16,6 +16,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "core/io/gltf_export.h"
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_io_in_process.h"
 
@@ -254,6 +255,30 @@ Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& 
         if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
             return Error{path + ": cannot be read"};
         return decodeImage(bytes.data(), bytes.size(), path, limits);
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to load the file"};
+    }
+}
+
+Result<std::vector<Image>> loadGlbImagesInProcess(const std::string& path,
+                                                  const std::vector<int>& views,
+                                                  const LoadLimits& limits) {
+    try {
+        Result<std::vector<std::vector<std::uint8_t>>> files =
+            readGlbViews(path, views, limits.maxFileBytes);
+        if (!files)
+            return files.takeError();
+        std::vector<Image> images;
+        images.reserve(files->size());
+        for (std::size_t k = 0; k < files->size(); ++k) {
+            Result<Image> image = decodeImage((*files)[k].data(), (*files)[k].size(),
+                                              "paint layer image " + std::to_string(k), limits);
+            if (!image)
+                return Error{path + ": " + image.error(), image.errorKind()};
+            images.push_back(std::move(image).value());
+            (*files)[k] = {};
+        }
+        return images;
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to load the file"};
     }

@@ -417,8 +417,9 @@ Error fromImporter(const std::string& path, const std::string& message) {
     return detail::fileError(path, message);
 }
 
-/** Runs the importer on path; mode is "--image" or empty. */
-Result<importer::Received> runImporter(const std::string& path, const char* mode,
+/** Runs the importer on path; mode is empty (a model), {"--image"} or {"--glb-images", LIST}. */
+Result<importer::Received> runImporter(const std::string& path,
+                                       const std::vector<std::string>& mode,
                                        const ProgressFn& progress, const LoadLimits& limits) {
     Result<std::string> program = findImporter();
     if (!program)
@@ -426,8 +427,7 @@ Result<importer::Received> runImporter(const std::string& path, const char* mode
     LoadLimits resolved = limits;
     resolved.maxSeconds = detail::importSeconds(path, limits);
     std::vector<std::string> args = limitArgs(resolved);
-    if (mode != nullptr)
-        args.emplace_back(mode);
+    args.insert(args.end(), mode.begin(), mode.end());
     args.emplace_back("--");
     args.push_back(path);
 
@@ -481,7 +481,7 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
             return checked.takeError();
         if (!reportProgress(progress, 0.0))
             return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
-        Result<importer::Received> received = runImporter(path, nullptr, progress, limits);
+        Result<importer::Received> received = runImporter(path, {}, progress, limits);
         if (!received)
             return received.takeError();
         if (received->error)
@@ -521,7 +521,7 @@ Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits) {
     if (path.empty())
         return Error{"(no file name): no file was given"};
     try {
-        Result<importer::Received> received = runImporter(path, "--image", {}, limits);
+        Result<importer::Received> received = runImporter(path, {"--image"}, {}, limits);
         if (!received)
             return received.takeError();
         if (received->error)
@@ -529,6 +529,31 @@ Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits) {
         if (!received->image)
             return detail::fileError(path, "the importer stopped: it sent no image");
         return std::move(*received->image);
+    } catch (const std::bad_alloc&) {
+        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
+    } catch (const std::exception& e) {
+        return detail::fileError(path, e.what(), ErrorKind::Failed);
+    }
+}
+
+Result<std::vector<Image>> loadGlbImages(const std::string& path, const std::vector<int>& views,
+                                         const LoadLimits& limits) {
+    if (views.empty())
+        return std::vector<Image>{};
+    try {
+        std::string list;
+        for (int view : views)
+            list += (list.empty() ? "" : ",") + std::to_string(view);
+        Result<importer::Received> received = runImporter(path, {"--glb-images", list}, {}, limits);
+        if (!received)
+            return received.takeError();
+        if (received->error)
+            return fromImporter(path, *received->error);
+        // The images come as the textures of a mesh without triangles.
+        if (!received->mesh || received->mesh->textures.size() != views.size() ||
+            !received->mesh->positions.empty() || !received->mesh->indices.empty())
+            return detail::fileError(path, "the importer stopped: it sent no images");
+        return std::move(received->mesh->textures);
     } catch (const std::bad_alloc&) {
         return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
     } catch (const std::exception& e) {

@@ -62,6 +62,14 @@ void keepImporterReady(bool keep = true);
 Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits = {});
 
 /**
+ * Decodes the images stored in the buffer views views of the binary glTF file path (a project's
+ * paint-layer images), in the importer process like loadImageFile(): the images in views' order,
+ * or an Error "FILE: problem". Never throws.
+ */
+Result<std::vector<Image>> loadGlbImages(const std::string& path, const std::vector<int>& views,
+                                         const LoadLimits& limits = {});
+
+/**
  * Decodes an image file held in memory (PNG, JPEG, ...) to RGBA8 through OpenImageIO, in this
  * process (the loaders call it inside the importer).
  */

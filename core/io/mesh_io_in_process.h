@@ -27,6 +27,11 @@ Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progre
 /** loadImageFile() in this process. */
 Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits = {});
 
+/** loadGlbImages() in this process. */
+Result<std::vector<Image>> loadGlbImagesInProcess(const std::string& path,
+                                                  const std::vector<int>& views,
+                                                  const LoadLimits& limits = {});
+
 /** loadProject() with the mesh read by loadMeshInProcess(). */
 Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress = {},
                                      const LoadLimits& limits = {});

@@ -12,6 +12,7 @@
 #include "core/document/document.h"
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io_in_process.h"
+#include "core/io/project_file_layers.h"
 
 namespace core {
 
@@ -29,12 +30,13 @@ bool isGltfPath(const std::string& path) {
 using MeshLoader = Result<Mesh> (*)(const std::string&, const ProgressFn&, const LoadLimits&);
 
 Result<Project> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits,
-                     MeshLoader loadMeshWith) {
+                     MeshLoader loadMeshWith, GlbImageLoader loadImagesWith) {
     Project project;
     std::vector<std::string> warnings;
+    Result<Json> extras = Json::object();
     if (isGltfPath(path) && path.rfind("builtin:", 0) != 0) {
         // The JSON alone first: a newer project is refused before its textures are decoded.
-        Result<Json> extras = readGlbExtras(path);
+        extras = readGlbExtras(path);
         if (!extras) {
             // Not a glTF file at all: the model loader says what is wrong in plainer words.
             if (Result<Mesh> mesh = loadMeshWith(path, progress, limits); !mesh)
@@ -57,14 +59,25 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
     if (!mesh)
         return mesh.takeError();
     project.mesh = std::move(mesh).value();
+    if (project.state && project.state->paintLayers) {
+        // The textures are the composite; the base and the layers' planes are images beside it.
+        auto layers = std::make_shared<SavedPaintLayers>(*project.state->paintLayers);
+        const Json& json = (*extras)[kProjectExtrasKey]["paint_layers"];
+        if (Status read =
+                readPaintLayerImages(path, json, limits, project.mesh, *layers, loadImagesWith);
+            !read)
+            return Error{path + ": " + read.error(), read.errorKind()};
+        project.state->paintLayers = std::move(layers);
+    }
     project.mesh.warnings.insert(project.mesh.warnings.end(), warnings.begin(), warnings.end());
     return project;
 }
 
 Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progress,
-                                const LoadLimits& limits, MeshLoader loadMeshWith) {
+                                const LoadLimits& limits, MeshLoader loadMeshWith,
+                                GlbImageLoader loadImagesWith) {
     try {
-        return load(path, progress, limits, loadMeshWith);
+        return load(path, progress, limits, loadMeshWith, loadImagesWith);
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to load the file"};
     } catch (const std::exception& e) {
@@ -76,23 +89,40 @@ Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progr
 
 Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
                             const LoadLimits& limits) {
-    return loadProjectWith(path, progress, limits, &loadMesh);
+    return loadProjectWith(path, progress, limits, &loadMesh, &loadGlbImages);
 }
 
 Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress,
                                      const LoadLimits& limits) {
-    return loadProjectWith(path, progress, limits, &loadMeshInProcess);
+    return loadProjectWith(path, progress, limits, &loadMeshInProcess, &loadGlbImagesInProcess);
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
                    const ProgressFn& progress, bool keepBackup) {
-    Json extras;
+    GlbAdditions additions;
     try {
-        extras = {{kProjectExtrasKey, projectStateToJson(state)}};
+        additions.extras = {{kProjectExtrasKey, projectStateToJson(state)}};
+        if (const SavedPaintLayers* layers = state.paintLayers.get()) {
+            std::vector<PageSize> pages;
+            for (const Image& texture : paintedMesh.textures)
+                pages.push_back({texture.width, texture.height});
+            Json& json = additions.extras[kProjectExtrasKey]["paint_layers"];
+            if (Status images = addPaintLayerImages(*layers, pages, json, additions.attachments);
+                !images)
+                return Error{path + ": " + images.error(), images.errorKind()};
+            additions.attachmentsAt =
+                Json::json_pointer("/" + std::string(kProjectExtrasKey) + "/paint_layers/images");
+            // The painted mesh's texture p is page p: its metallic-roughness goes beside it.
+            additions.metallicRoughness = layers->metallicRoughness;
+            for (const Material& m : paintedMesh.materials)
+                additions.materialMetallicRoughness.push_back(m.baseColorTexture);
+        }
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to save the file"};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be saved (" + std::string(e.what()) + ")"};
     }
-    return saveGlb(path, paintedMesh, extras, progress, keepBackup);
+    return saveGlbWith(path, paintedMesh, additions, progress, keepBackup);
 }
 
 Status saveProject(const std::string& path, const Document& doc, const ProjectState& state,

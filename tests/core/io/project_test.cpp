@@ -277,7 +277,7 @@ TEST(ProjectState, Version1IsUpgraded) {
     // What `layerpaint-cli paint` wrote before projects had a version.
     const Json v1 = {{"script", "strokes.json"}, {"model", "builtin:trefoil"}};
     const Json upgraded = core::upgradeProjectJson(v1, 1);
-    EXPECT_EQ(upgraded["version"], 2);
+    EXPECT_EQ(upgraded["version"], core::kProjectFormatVersion);
     EXPECT_EQ(upgraded["source"], "builtin:trefoil");
     EXPECT_FALSE(upgraded.contains("model"));
     EXPECT_EQ(upgraded["script"], "strokes.json");

@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Projects with paint layers: five layers (paint and fill, masks, multiply/screen/overlay, a
+// hidden and a locked one) saved and reopened give the same stack, the same bytes per layer and
+// the same composite; the file is plain glTF to tinygltf and Assimp, and its material's two
+// textures are the composite. Older projects open with no paint layers.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include "core/document/document.h"
+#include "core/io/gltf_export.h"
+#include "core/io/mesh_io_in_process.h"
+#include "core/io/project_file.h"
+#include "core/layers/cpu_capture.h"
+#include "core/model/builtin_models.h"
+#include "tests/core/test_files.h"
+
+namespace {
+
+using core_test::TempDir;
+using Json = nlohmann::json;
+
+/** Every layer's id, settings and written tiles (with their bytes), the selection, the pages. */
+struct Snapshot {
+    std::vector<std::uint64_t> ids;
+    std::vector<core::PaintLayerSettings> settings;
+    std::vector<std::vector<std::uint8_t>> planes;
+    core::PaintSelection selection;
+    std::vector<std::uint8_t> base, color, mr;
+
+    friend bool operator==(const Snapshot&, const Snapshot&) = default;
+};
+
+std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
+    std::vector<std::uint8_t> out;
+    if (!plane)
+        return {42};
+    out.push_back(std::uint8_t(plane->texelBytes()));
+    out.insert(out.end(), plane->fill().begin(), plane->fill().end());
+    for (const core::TileKey key : plane->writtenTiles()) {
+        for (int k = 0; k < 4; ++k)
+            out.push_back(std::uint8_t(key.tile >> (8 * k)));
+        const std::uint8_t* t = plane->tile(key.page, key.tile);
+        out.insert(out.end(), t, t + plane->tileBytes(key));
+    }
+    return out;
+}
+
+Snapshot snapshot(const core::Document& doc) {
+    const auto& target = dynamic_cast<const core::TextureTarget&>(*doc.currentPaintTarget());
+    Snapshot s;
+    const core::PaintLayerStack& stack = target.layerStack();
+    for (std::size_t i = 0; i < stack.size(); ++i) {
+        const core::PaintLayer& layer = stack.layer(i);
+        s.ids.push_back(layer.id);
+        s.settings.push_back(layer.settings);
+        for (const auto& plane : layer.channels)
+            s.planes.push_back(planeBytes(plane.get()));
+        s.planes.push_back(planeBytes(layer.mask.get()));
+    }
+    s.selection = target.selection();
+    s.base = target.basePixels(0);
+    s.color = target.page(0).rgba;
+    s.mr = target.metallicRoughnessPage(0).rgba;
+    return s;
+}
+
+class PaintLayersProjectTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_doc.setMesh(core::makeTrefoil(60, 16), "builtin:trefoil");
+        core::PaintTargetOptions options;
+        options.resolution = 512;
+        ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
+        m_doc.camera() = core::Camera::fromOrbit(m_doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
+        core::CpuLayerCapturer capturer;
+        capturer.setMesh(m_doc.mesh());
+        ASSERT_TRUE(m_doc.buildLayers(capturer, m_doc.camera().view(kWidth, kHeight)).ok());
+        m_doc.brush().radius = 9.0f;
+        m_doc.brush().hardness = 0.7f;
+    }
+
+    /** A horizontal stroke across the model at row y. */
+    void stroke(int y, glm::vec4 color) {
+        m_doc.brush().color = color;
+        const core::LayerStack& stack = m_doc.layers()->stack;
+        int first = -1, last = -1;
+        for (int x = 0; x < kWidth; ++x)
+            if (stack.layerCount(std::size_t(y) * kWidth + std::size_t(x)) > 0) {
+                if (first < 0)
+                    first = x;
+                last = x;
+            }
+        ASSERT_GT(last - first, 20) << "row " << y;
+        core::PaintChanges changes;
+        ASSERT_TRUE(
+            m_doc.beginStroke({{float(first) + 2.5f, float(y) + 0.5f}, 1.0f}, changes).ok());
+        for (int x = first + 4; x < last - 2; x += 3)
+            m_doc.moveStroke({{float(x) + 0.5f, float(y) + 0.5f}, 1.0f}, changes);
+        m_doc.endStroke();
+    }
+
+    std::uint64_t add(std::string name, core::PaintLayerKind kind, core::BlendMode blend) {
+        core::PaintLayerSettings s;
+        s.name = std::move(name);
+        s.kind = kind;
+        s.blend = blend;
+        if (kind == core::PaintLayerKind::Fill) {
+            s.fill.baseColor = glm::vec3(0.2f, 0.6f, 0.9f);
+            s.fill.roughness = 0.3f;
+        }
+        core::PaintChanges changes;
+        core::Result<std::uint64_t> id = m_doc.addPaintLayer(s, changes);
+        EXPECT_TRUE(id.ok()) << id.error();
+        return id.ok() ? *id : 0;
+    }
+
+    void set(std::uint64_t id, void (*change)(core::PaintLayerSettings&)) {
+        const auto& target = dynamic_cast<const core::TextureTarget&>(*m_doc.currentPaintTarget());
+        core::PaintLayerSettings s =
+            target.layerStack().layer(*target.layerStack().indexOf(id)).settings;
+        change(s);
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.setPaintLayerSettings(id, s, changes).ok());
+    }
+
+    /** Five layers: paint, fill with a mask, multiply, screen (hidden), overlay (locked). */
+    void buildStack() {
+        stroke(100, {0.9f, 0.9f, 0.2f, 1.0f}); // the base
+        const std::uint64_t paint =
+            add("Paint", core::PaintLayerKind::Paint, core::BlendMode::Normal);
+        m_doc.brush().paintRoughness = true;
+        m_doc.brush().roughness = 0.2f;
+        m_doc.brush().paintMetallic = true;
+        m_doc.brush().metallic = 1.0f;
+        stroke(110, {0.8f, 0.1f, 0.1f, 1.0f});
+        m_doc.brush().paintRoughness = m_doc.brush().paintMetallic = false;
+        const std::uint64_t fill = add("Fill", core::PaintLayerKind::Fill, core::BlendMode::Normal);
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.addPaintLayerMask(fill, changes).ok());
+        stroke(130, {0.0f, 0.0f, 0.0f, 1.0f}); // black hides the fill there
+        const std::uint64_t multiply =
+            add("Multiply", core::PaintLayerKind::Paint, core::BlendMode::Multiply);
+        stroke(120, {0.3f, 0.9f, 0.4f, 1.0f});
+        set(multiply, [](core::PaintLayerSettings& s) { s.opacity = 0.75f; });
+        const std::uint64_t screen =
+            add("Screen", core::PaintLayerKind::Paint, core::BlendMode::Screen);
+        stroke(140, {0.2f, 0.3f, 0.9f, 1.0f});
+        set(screen, [](core::PaintLayerSettings& s) { s.visible = false; });
+        const std::uint64_t overlay =
+            add("Overlay", core::PaintLayerKind::Paint, core::BlendMode::Overlay);
+        stroke(125, {0.7f, 0.5f, 0.9f, 1.0f});
+        set(overlay, [](core::PaintLayerSettings& s) { s.lockTransparency = true; });
+        ASSERT_TRUE(m_doc.addPaintLayerMask(multiply, changes).ok());
+        stroke(115, {0.4f, 0.4f, 0.4f, 1.0f}); // a grey mask on the multiply layer
+        ASSERT_TRUE(m_doc.selectPaint({paint, false}).ok());
+        (void)paint;
+    }
+
+    static constexpr int kWidth = 320, kHeight = 240;
+    core::Document m_doc;
+};
+
+TEST_F(PaintLayersProjectTest, SaveAndReopenRestoresEveryLayerByteForByte) {
+    buildStack();
+    const Snapshot before = snapshot(m_doc);
+    ASSERT_EQ(before.ids.size(), 5u);
+    EXPECT_NE(before.base, before.color) << "the layers change the look";
+
+    TempDir dir;
+    const std::string path = dir.file("layers.glb");
+    const core::ProjectState state = core::captureProjectState(m_doc);
+    ASSERT_TRUE(state.paintLayers);
+    ASSERT_TRUE(core::saveProject(path, m_doc, state).ok());
+
+    core::Result<core::Project> project = core::loadProject(path);
+    ASSERT_TRUE(project.ok()) << project.error();
+    ASSERT_TRUE(project->state.has_value());
+    EXPECT_EQ(project->state->formatVersion, core::kProjectFormatVersion);
+    core::Document reopened;
+    reopened.setMesh(std::move(project->mesh), path);
+    const core::Status applied = core::applyProjectState(reopened, *project->state);
+    ASSERT_TRUE(applied.ok()) << applied.error();
+    const Snapshot after = snapshot(reopened);
+    EXPECT_EQ(after.ids, before.ids);
+    EXPECT_TRUE(after.settings == before.settings);
+    EXPECT_EQ(after.selection, before.selection);
+    ASSERT_EQ(after.planes.size(), before.planes.size());
+    for (std::size_t i = 0; i < after.planes.size(); ++i)
+        EXPECT_TRUE(after.planes[i] == before.planes[i])
+            << "plane " << i << ": " << after.planes[i].size() << " bytes, was "
+            << before.planes[i].size() << [&] {
+                   for (std::size_t k = 0; k < after.planes[i].size(); ++k)
+                       if (after.planes[i][k] != before.planes[i][k])
+                           return " at " + std::to_string(k) + ": " +
+                                  std::to_string(after.planes[i][k]) + " was " +
+                                  std::to_string(before.planes[i][k]);
+                   return std::string();
+               }();
+    EXPECT_TRUE(after.base == before.base);
+    EXPECT_TRUE(after.color == before.color);
+    EXPECT_TRUE(after.mr == before.mr);
+    // What the reopened stack does next is as before: a new layer gets a fresh id.
+    core::PaintChanges changes;
+    core::Result<std::uint64_t> next = reopened.addPaintLayer({}, changes);
+    ASSERT_TRUE(next.ok());
+    for (std::uint64_t id : before.ids)
+        EXPECT_NE(*next, id);
+
+    // Other tools: tinygltf reads the file, the material's two textures are the composite.
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    ASSERT_TRUE(loader.LoadBinaryFromFile(&model, &err, &warn, path)) << err;
+    EXPECT_TRUE(err.empty()) << err;
+    ASSERT_EQ(model.materials.size(), 1u);
+    const auto& pbr = model.materials[0].pbrMetallicRoughness;
+    ASSERT_GE(pbr.baseColorTexture.index, 0);
+    ASSERT_GE(pbr.metallicRoughnessTexture.index, 0);
+    const auto& color =
+        model.images[std::size_t(model.textures[std::size_t(pbr.baseColorTexture.index)].source)];
+    const auto& mr = model.images[std::size_t(
+        model.textures[std::size_t(pbr.metallicRoughnessTexture.index)].source)];
+    ASSERT_EQ(color.component, 4);
+    EXPECT_TRUE(color.image == before.color);
+    // An opaque image is stored as RGB; tinygltf gives it back as RGBA with A 255.
+    ASSERT_EQ(mr.component, 4);
+    EXPECT_TRUE(mr.image == before.mr);
+    EXPECT_EQ(pbr.metallicFactor, 1.0);
+    EXPECT_EQ(pbr.roughnessFactor, 1.0);
+
+    // Assimp validates and reads it, with both textures on the material.
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
+    ASSERT_NE(scene, nullptr) << importer.GetErrorString();
+    ASSERT_GE(scene->mNumMaterials, 1u);
+    EXPECT_GE(scene->mMaterials[0]->GetTextureCount(aiTextureType_BASE_COLOR) +
+                  scene->mMaterials[0]->GetTextureCount(aiTextureType_DIFFUSE),
+              1u);
+    EXPECT_GE(scene->mMaterials[0]->GetTextureCount(aiTextureType_METALNESS) +
+                  scene->mMaterials[0]->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) +
+                  scene->mMaterials[0]->GetTextureCount(aiTextureType_UNKNOWN),
+              1u);
+}
+
+TEST_F(PaintLayersProjectTest, OlderProjectsOpenWithNoPaintLayers) {
+    // Version 2 as written before paint layers: the painted texture and the state, nothing else.
+    stroke(100, {0.9f, 0.2f, 0.2f, 1.0f});
+    core::ProjectState state = core::captureProjectState(m_doc);
+    EXPECT_FALSE(state.paintLayers) << "no paint layer yet";
+    Json v2 = core::projectStateToJson(state);
+    v2["version"] = 2;
+    TempDir dir;
+    const std::string path = dir.file("v2.glb");
+    ASSERT_TRUE(core::saveGlb(path, m_doc.paintedMesh(), {{"layerpaint", v2}}).ok());
+    const std::vector<std::uint8_t> painted = m_doc.paintedMesh().textures[0].rgba;
+    for (const Json& old : {v2, Json{{"script", Json::array()}, {"model", "builtin:trefoil"}}}) {
+        ASSERT_TRUE(core::saveGlb(path, m_doc.paintedMesh(), {{"layerpaint", old}}).ok());
+        core::Result<core::Project> project = core::loadProject(path);
+        ASSERT_TRUE(project.ok()) << project.error();
+        ASSERT_TRUE(project->state.has_value());
+        EXPECT_FALSE(project->state->paintLayers);
+        core::Document reopened;
+        reopened.setMesh(std::move(project->mesh), path);
+        ASSERT_TRUE(core::applyProjectState(reopened, *project->state).ok());
+        const auto& target =
+            dynamic_cast<const core::TextureTarget&>(*reopened.currentPaintTarget());
+        EXPECT_EQ(target.layerStack().size(), 0u);
+        EXPECT_TRUE(target.page(0).rgba == painted);
+    }
+}
+
+TEST_F(PaintLayersProjectTest, DamagedLayerDataIsAClearErrorNamingTheFile) {
+    buildStack();
+    TempDir dir;
+    const std::string path = dir.file("layers.glb");
+    const core::ProjectState state = core::captureProjectState(m_doc);
+    // The structure without the images behind it: the planes cannot be found.
+    ASSERT_TRUE(
+        core::saveGlb(path, m_doc.paintedMesh(), {{"layerpaint", core::projectStateToJson(state)}})
+            .ok());
+    core::Result<core::Project> project = core::loadProject(path);
+    ASSERT_FALSE(project.ok());
+    EXPECT_EQ(project.error().rfind(path + ": ", 0), 0u) << project.error();
+    // Duplicate ids.
+    Json bad = core::projectStateToJson(state);
+    bad["paint_layers"]["layers"][1]["id"] = bad["paint_layers"]["layers"][0]["id"];
+    ASSERT_TRUE(core::saveGlb(path, m_doc.paintedMesh(), {{"layerpaint", bad}}).ok());
+    project = core::loadProject(path);
+    ASSERT_FALSE(project.ok());
+    EXPECT_NE(project.error().find("id"), std::string::npos) << project.error();
+}
+
+// The layers' PNG images are untrusted bytes like any file's: the importer process decodes them
+// (loadGlbImages), with the same result as decoding here, and a damaged one is an error naming
+// the file, never a crash of the application.
+TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
+    buildStack();
+    TempDir dir;
+    const std::string path = dir.file("layers.glb");
+    ASSERT_TRUE(core::saveProject(path, m_doc, core::captureProjectState(m_doc)).ok());
+    core::Result<Json> extras = core::readGlbExtras(path);
+    ASSERT_TRUE(extras.ok()) << extras.error();
+    const std::vector<int> views =
+        (*extras)["layerpaint"]["paint_layers"]["images"].get<std::vector<int>>();
+    ASSERT_FALSE(views.empty());
+
+    const core::Result<std::vector<core::Image>> outside = core::loadGlbImages(path, views);
+    ASSERT_TRUE(outside.ok()) << outside.error();
+    const core::Result<std::vector<core::Image>> inside = core::loadGlbImagesInProcess(path, views);
+    ASSERT_TRUE(inside.ok()) << inside.error();
+    ASSERT_EQ(outside->size(), views.size());
+    ASSERT_EQ(inside->size(), views.size());
+    for (std::size_t k = 0; k < views.size(); ++k) {
+        EXPECT_EQ((*outside)[k].width, (*inside)[k].width) << k;
+        EXPECT_TRUE((*outside)[k].rgba == (*inside)[k].rgba) << k;
+    }
+
+    // A view that is not an image.
+    const core::Result<std::vector<core::Image>> notImage =
+        core::loadGlbImages(path, {views.front(), 0});
+    ASSERT_FALSE(notImage.ok());
+    EXPECT_EQ(notImage.error().rfind(path + ": ", 0), 0u) << notImage.error();
+    // A view that does not exist.
+    const core::Result<std::vector<core::Image>> missing = core::loadGlbImages(path, {100000});
+    ASSERT_FALSE(missing.ok());
+    EXPECT_EQ(missing.error().rfind(path + ": ", 0), 0u) << missing.error();
+}
+
+} // namespace
