@@ -26,6 +26,7 @@
 #include "ui/panels/color_panel.h"
 #include "ui/panels/fill_panel.h"
 #include "ui/panels/hidden_regions_panel.h"
+#include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
@@ -86,6 +87,7 @@ void MainWindow::createPaintActions() {
         brush.color = BrushToolBar::toLinear(color);
         setBrush(brush);
     });
+    createPaintLayersPanel();
     // The colour panel's own colour, rounded to what it shows, is the brush's from the start.
     m_colorPanel->setForeground(BrushToolBar::toQColor(m_document->brush().color));
     {
@@ -268,6 +270,27 @@ void MainWindow::createToolActions() {
     m_viewport->setToolCursor(toolCursor(m_tool), toolShowsBrushOutline(m_tool));
 }
 
+void MainWindow::createPaintLayersPanel() {
+    m_paintLayersPanel = new PaintLayersPanel(*m_document, this);
+    m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"),
+                                 m_paintLayersPanel, Qt::LeftDockWidgetArea);
+    connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
+            [this](const core::PaintChanges& changes) {
+                // As after a stroke: the composite's texels to the view, then the undo stack.
+                if (m_document->paintTargetSerial() != m_targetSerial) {
+                    m_targetSerial = m_document->paintTargetSerial();
+                    m_viewport->paintTargetChanged();
+                } else {
+                    m_viewport->applyPaintChanges(changes);
+                }
+                m_history->sync();
+            });
+    connect(m_paintLayersPanel, &PaintLayersPanel::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    // Strokes, fills, undo and redo change the stack and the thumbnails.
+    connect(m_history, &HistoryBridge::changed, m_paintLayersPanel, &PaintLayersPanel::refresh);
+}
+
 void MainWindow::createMenus() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
 
@@ -330,8 +353,8 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_segmentationDock, m_layersDock,
-                              m_graphDock, m_hiddenDock, m_fillDock})
+    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_paintLayersDock, m_segmentationDock,
+                              m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(m_brushBar->toggleViewAction());
@@ -351,6 +374,15 @@ void MainWindow::createMenus() {
     paintMenu->addSeparator();
     paintMenu->addActions(m_brushStepActions);
     paintMenu->addAction(m_swapColorsAction);
+
+    QMenu* paintLayersMenu = menuBar()->addMenu(tr("Paint &Layers"));
+    paintLayersMenu->setObjectName(QStringLiteral("paintLayersMenu"));
+    for (QAction* action : m_paintLayersPanel->operationActions()) {
+        if (action)
+            paintLayersMenu->addAction(action);
+        else
+            paintLayersMenu->addSeparator();
+    }
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =
