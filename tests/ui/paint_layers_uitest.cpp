@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTest>
@@ -48,6 +49,11 @@ protected:
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
         ASSERT_NE(doc().layers(), nullptr);
+        // The panel shares its place with the Depth Layers: its tab to the front.
+        auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("paintLayersDock"));
+        ASSERT_NE(dock, nullptr);
+        dock->raise();
+        QApplication::processEvents();
     }
     void TearDown() override {
         m_window.reset();

@@ -14,6 +14,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -75,8 +76,13 @@ void MainWindow::createPaintActions() {
     // The panels: the full brush settings and the colours, on the left of the view.
     m_brushPanel = new BrushPanel(this);
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
+    // Scrolled where the window is too low for all its rows (the channels made it taller).
+    auto* brushScroll = new QScrollArea(this);
+    brushScroll->setWidget(m_brushPanel);
+    brushScroll->setWidgetResizable(true);
+    brushScroll->setFrameShape(QFrame::NoFrame);
     m_brushDock =
-        makeDock(tr("Brush"), QStringLiteral("brushDock"), m_brushPanel, Qt::LeftDockWidgetArea);
+        makeDock(tr("Brush"), QStringLiteral("brushDock"), brushScroll, Qt::LeftDockWidgetArea);
     connect(m_brushPanel, &BrushPanel::brushChanged, this, &MainWindow::setBrush);
     connect(m_brushPanel, &BrushPanel::pressureCurveChanged, this, &MainWindow::setPressureCurve);
     m_colorPanel = new ColorPanel(this);
@@ -272,8 +278,17 @@ void MainWindow::createToolActions() {
 
 void MainWindow::createPaintLayersPanel() {
     m_paintLayersPanel = new PaintLayersPanel(*m_document, this);
-    m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"),
-                                 m_paintLayersPanel, Qt::LeftDockWidgetArea);
+    // In a scroll area: the dock may get smaller than the panel's controls need, so the window
+    // keeps the minimum size it had.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(m_paintLayersPanel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"), scroll);
+    // A tab beside the Depth Layers: the columns keep their size, and the two stacks sit apart
+    // by name.
+    tabifyDockWidget(m_layersDock, m_paintLayersDock);
+    m_layersDock->raise();
     connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
             [this](const core::PaintChanges& changes) {
                 // As after a stroke: the composite's texels to the view, then the undo stack.
