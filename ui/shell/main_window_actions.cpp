@@ -15,6 +15,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -39,6 +40,17 @@ namespace ui {
 
 namespace {
 const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
+
+/**
+ * A dock's scroll area with a minimum size of its own (the panel's width, a few rows high): what
+ * the panel shows later (a model, more rows) never changes the window's minimum size.
+ */
+void fixScrollMinimum(QScrollArea& scroll) {
+    scroll.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll.setMinimumSize(scroll.widget()->minimumSizeHint().width() +
+                              scroll.verticalScrollBar()->sizeHint().width(),
+                          120);
+}
 } // namespace
 
 void MainWindow::createPaintActions() {
@@ -81,6 +93,7 @@ void MainWindow::createPaintActions() {
     brushScroll->setWidget(m_brushPanel);
     brushScroll->setWidgetResizable(true);
     brushScroll->setFrameShape(QFrame::NoFrame);
+    fixScrollMinimum(*brushScroll);
     m_brushDock =
         makeDock(tr("Brush"), QStringLiteral("brushDock"), brushScroll, Qt::LeftDockWidgetArea);
     connect(m_brushPanel, &BrushPanel::brushChanged, this, &MainWindow::setBrush);
@@ -284,6 +297,7 @@ void MainWindow::createPaintLayersPanel() {
     scroll->setWidget(m_paintLayersPanel);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    fixScrollMinimum(*scroll);
     m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"), scroll);
     // A tab beside the Depth Layers: the columns keep their size, and the two stacks sit apart
     // by name.
