@@ -125,6 +125,30 @@
         <source>Automatic (%1 px)</source>
         <translation>Automatisch (%1 px)</translation>
     </message>
+    <message>
+        <source>Base co&amp;lour</source>
+        <translation>Grundfar&amp;be</translation>
+    </message>
+    <message>
+        <source>Strokes paint the base colour (the Colour panel&apos;s)</source>
+        <translation>Striche malen die Grundfarbe (die des Farbbedienfelds)</translation>
+    </message>
+    <message>
+        <source>R&amp;oughness</source>
+        <translation>Rauh&amp;eit</translation>
+    </message>
+    <message>
+        <source>Strokes paint this roughness (0: glossy, 1: matt)</source>
+        <translation>Striche malen diese Rauheit (0: glänzend, 1: matt)</translation>
+    </message>
+    <message>
+        <source>&amp;Metallic</source>
+        <translation>&amp;Metallisch</translation>
+    </message>
+    <message>
+        <source>Strokes paint this metalness (0: dielectric, 1: metal)</source>
+        <translation>Striche malen diesen Metallanteil (0: Nichtmetall, 1: Metall)</translation>
+    </message>
 </context>
 <context>
     <name>ui::BrushToolBar</name>
@@ -358,22 +382,6 @@
 <context>
     <name>ui::LayersPanel</name>
     <message>
-        <source>Layers appear when the view stays still.</source>
-        <translation>Die Ebenen erscheinen, sobald die Ansicht stillsteht.</translation>
-    </message>
-    <message>
-        <source>Click a layer to see it alone; “All layers” shows the whole view.</source>
-        <translation>Klicken Sie auf eine Ebene, um sie allein zu sehen; „Alle Ebenen“ zeigt die ganze Ansicht.</translation>
-    </message>
-    <message>
-        <source>All layers
-Layers: %1
-Regions: %2</source>
-        <translation>Alle Ebenen
-Ebenen: %1
-Regionen: %2</translation>
-    </message>
-    <message>
         <source>The whole view, front to back</source>
         <translation>Die ganze Ansicht, von vorn nach hinten</translation>
     </message>
@@ -388,6 +396,22 @@ Regionen: %3</translation>
     <message>
         <source>Show layer %1 alone</source>
         <translation>Ebene %1 allein zeigen</translation>
+    </message>
+    <message>
+        <source>Depth layers appear when the view stays still.</source>
+        <translation>Die Tiefenebenen erscheinen, sobald die Ansicht stillsteht.</translation>
+    </message>
+    <message>
+        <source>Click a depth layer to see it alone; “All layers” shows the whole view.</source>
+        <translation>Klicken Sie auf eine Tiefenebene, um sie allein zu sehen; „Alle Ebenen“ zeigt die ganze Ansicht.</translation>
+    </message>
+    <message>
+        <source>All layers
+Depth layers: %1
+Regions: %2</source>
+        <translation>Alle Ebenen
+Tiefenebenen: %1
+Regionen: %2</translation>
     </message>
 </context>
 <context>
@@ -425,10 +449,6 @@ Regionen: %3</translation>
         <translation>Segmentierung</translation>
     </message>
     <message>
-        <source>Layers</source>
-        <translation>Ebenen</translation>
-    </message>
-    <message>
         <source>Region Graph</source>
         <translation>Regionsgraph</translation>
     </message>
@@ -443,10 +463,6 @@ Regionen: %3</translation>
     <message>
         <source>Single &amp;Layer</source>
         <translation>Einzelne &amp;Ebene</translation>
-    </message>
-    <message>
-        <source>Show one depth layer alone (choose it in the Layers panel)</source>
-        <translation>Eine Tiefenebene allein zeigen (im Bedienfeld Ebenen wählen)</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
@@ -467,10 +483,6 @@ Regionen: %3</translation>
     <message>
         <source>Building layers…</source>
         <translation>Ebenen werden erstellt …</translation>
-    </message>
-    <message>
-        <source>Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
-        <translation>Ebenen: %1 · Fragmente: %2 · Regionen: %3 · Erstellt in %4 ms</translation>
     </message>
     <message>
         <source>build_layers of this view:
@@ -950,6 +962,30 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Paint into a Texture (Automatic UV Layout)</source>
         <translation>In eine Textur malen (automatisches UV-Layout)</translation>
     </message>
+    <message>
+        <source>Depth Layers</source>
+        <translation>Tiefenebenen</translation>
+    </message>
+    <message>
+        <source>Show one depth layer alone (choose it in the Depth Layers panel)</source>
+        <translation>Eine Tiefenebene allein zeigen (im Bedienfeld Tiefenebenen wählen)</translation>
+    </message>
+    <message>
+        <source>Depth layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
+        <translation>Tiefenebenen: %1 · Fragmente: %2 · Regionen: %3 · Erstellt in %4 ms</translation>
+    </message>
+    <message>
+        <source>Paint Layers</source>
+        <translation>Malschichten</translation>
+    </message>
+    <message>
+        <source>Paint &amp;Layers</source>
+        <translation>Mal&amp;schichten</translation>
+    </message>
+    <message>
+        <source>Vertex colours hold base colour only: roughness and metallic need a texture as the paint target.</source>
+        <translation>Vertexfarben tragen nur die Grundfarbe: Rauheit und Metallisch brauchen eine Textur als Malziel.</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -963,6 +999,241 @@ Konnektivität %3 ms, Regionen %4 ms
             <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
             <numerusform>… und %n weitere (siehe Tooltip)</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::PaintLayersPanel</name>
+    <message>
+        <source>Normal</source>
+        <translation>Normal</translation>
+    </message>
+    <message>
+        <source>Multiply</source>
+        <translation>Multiplizieren</translation>
+    </message>
+    <message>
+        <source>Screen</source>
+        <translation>Negativ multiplizieren</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>Ineinanderkopieren</translation>
+    </message>
+    <message>
+        <source>Soft Light</source>
+        <translation>Weiches Licht</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Addieren</translation>
+    </message>
+    <message>
+        <source>Subtract</source>
+        <translation>Subtrahieren</translation>
+    </message>
+    <message>
+        <source>Darken</source>
+        <translation>Abdunkeln</translation>
+    </message>
+    <message>
+        <source>Lighten</source>
+        <translation>Aufhellen</translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation>Differenz</translation>
+    </message>
+    <message>
+        <source>The paint layers, the uppermost on top. Click a row to paint on it, its eye to show or hide it, its mask to paint the mask; double-click a name to rename it; drag rows to reorder them.</source>
+        <translation>Die Malschichten, die oberste oben. Klicken Sie auf eine Zeile, um darauf zu malen, auf ihr Auge, um sie zu zeigen oder auszublenden, auf ihre Maske, um die Maske zu malen; Doppelklick auf einen Namen benennt um; Zeilen ziehen ordnet sie um.</translation>
+    </message>
+    <message>
+        <source>How much of the current paint layer shows</source>
+        <translation>Wie viel von der aktuellen Malschicht sichtbar ist</translation>
+    </message>
+    <message>
+        <source>&amp;Opacity</source>
+        <translation>&amp;Deckkraft</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>How the current paint layer combines with what lies under it</source>
+        <translation>Wie sich die aktuelle Malschicht mit dem darunter Liegenden verbindet</translation>
+    </message>
+    <message>
+        <source>&amp;Blend mode</source>
+        <translation>&amp;Mischmodus</translation>
+    </message>
+    <message>
+        <source>Lock &amp;transparency</source>
+        <translation>&amp;Transparenz sperren</translation>
+    </message>
+    <message>
+        <source>Painting changes the colour of what is on the layer, never where it is or how much</source>
+        <translation>Malen ändert die Farbe dessen, was auf der Schicht ist, nie wo es ist oder wie viel</translation>
+    </message>
+    <message>
+        <source>&amp;New Paint Layer</source>
+        <translation>&amp;Neue Malschicht</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>Neu</translation>
+    </message>
+    <message>
+        <source>Add a paint layer above the current one</source>
+        <translation>Eine Malschicht über der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>New F&amp;ill Layer</source>
+        <translation>Neue &amp;Füllschicht</translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation>Füllen</translation>
+    </message>
+    <message>
+        <source>Add a layer of uniform channel values (the brush&apos;s) above the current one</source>
+        <translation>Eine Schicht mit einheitlichen Kanalwerten (denen des Pinsels) über der aktuellen hinzufügen</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Paint Layer</source>
+        <translation>Malschicht &amp;duplizieren</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplizieren</translation>
+    </message>
+    <message>
+        <source>Copy the current paint layer</source>
+        <translation>Die aktuelle Malschicht kopieren</translation>
+    </message>
+    <message>
+        <source>D&amp;elete Paint Layer</source>
+        <translation>Malschicht &amp;löschen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the current paint layer</source>
+        <translation>Die aktuelle Malschicht löschen</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Down</source>
+        <translation>Nach unten &amp;zusammenführen</translation>
+    </message>
+    <message>
+        <source>Merge</source>
+        <translation>Zusammenführen</translation>
+    </message>
+    <message>
+        <source>Merge the current paint layer into the one below</source>
+        <translation>Die aktuelle Malschicht mit der darunter zusammenführen</translation>
+    </message>
+    <message>
+        <source>&amp;Flatten Paint Layers</source>
+        <translation>Malschichten &amp;reduzieren</translation>
+    </message>
+    <message>
+        <source>Flatten</source>
+        <translation>Reduzieren</translation>
+    </message>
+    <message>
+        <source>Merge every visible paint layer into one</source>
+        <translation>Alle sichtbaren Malschichten zu einer zusammenführen</translation>
+    </message>
+    <message>
+        <source>Flattened</source>
+        <translation>Reduziert</translation>
+    </message>
+    <message>
+        <source>Add M&amp;ask</source>
+        <translation>&amp;Maske hinzufügen</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>Maske</translation>
+    </message>
+    <message>
+        <source>Give the current paint layer a mask (black hides, white shows)</source>
+        <translation>Der aktuellen Malschicht eine Maske geben (Schwarz verbirgt, Weiß zeigt)</translation>
+    </message>
+    <message>
+        <source>Delete Mas&amp;k</source>
+        <translation>Maske &amp;entfernen</translation>
+    </message>
+    <message>
+        <source>No Mask</source>
+        <translation>Keine Maske</translation>
+    </message>
+    <message>
+        <source>Remove the current paint layer&apos;s mask</source>
+        <translation>Die Maske der aktuellen Malschicht entfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Rename…</source>
+        <translation>&amp;Umbenennen…</translation>
+    </message>
+    <message>
+        <source>Open a model to paint in paint layers.</source>
+        <translation>Öffnen Sie ein Modell, um in Malschichten zu malen.</translation>
+    </message>
+    <message>
+        <source>Vertex colours have no paint layers: choose a texture as the paint target (in the brush bar) to paint in paint layers.</source>
+        <translation>Vertexfarben haben keine Malschichten: Wählen Sie eine Textur als Malziel (in der Pinselleiste), um in Malschichten zu malen.</translation>
+    </message>
+    <message>
+        <source>Shown: click to hide</source>
+        <translation>Sichtbar: Klicken zum Ausblenden</translation>
+    </message>
+    <message>
+        <source>Hidden: click to show</source>
+        <translation>Ausgeblendet: Klicken zum Zeigen</translation>
+    </message>
+    <message>
+        <source>fill layer</source>
+        <translation>Füllschicht</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>, </translation>
+    </message>
+    <message>
+        <source>Painting the mask (black hides, white shows)</source>
+        <translation>Die Maske wird bemalt (Schwarz verbirgt, Weiß zeigt)</translation>
+    </message>
+    <message>
+        <source>Mask: click to paint it</source>
+        <translation>Maske: Klicken, um sie zu bemalen</translation>
+    </message>
+    <message>
+        <source>Base</source>
+        <translation>Basis</translation>
+    </message>
+    <message>
+        <source>The model&apos;s own surface (painting here changes it directly)</source>
+        <translation>Die eigene Oberfläche des Modells (Malen hier ändert sie direkt)</translation>
+    </message>
+    <message>
+        <source>Paint layers: %1</source>
+        <translation>Malschichten: %1</translation>
+    </message>
+    <message>
+        <source>Fill %1</source>
+        <translation>Füllung %1</translation>
+    </message>
+    <message>
+        <source>Paint Layer %1</source>
+        <translation>Malschicht %1</translation>
     </message>
 </context>
 <context>

@@ -125,6 +125,30 @@
         <source>Automatic (%1 px)</source>
         <translation>自动（%1 像素）</translation>
     </message>
+    <message>
+        <source>Base co&amp;lour</source>
+        <translation>基础颜色(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Strokes paint the base colour (the Colour panel&apos;s)</source>
+        <translation>笔画绘制基础颜色（颜色面板中的颜色）</translation>
+    </message>
+    <message>
+        <source>R&amp;oughness</source>
+        <translation>粗糙度(&amp;O)</translation>
+    </message>
+    <message>
+        <source>Strokes paint this roughness (0: glossy, 1: matt)</source>
+        <translation>笔画绘制此粗糙度（0：光滑，1：哑光）</translation>
+    </message>
+    <message>
+        <source>&amp;Metallic</source>
+        <translation>金属度(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Strokes paint this metalness (0: dielectric, 1: metal)</source>
+        <translation>笔画绘制此金属度（0：非金属，1：金属）</translation>
+    </message>
 </context>
 <context>
     <name>ui::BrushToolBar</name>
@@ -357,22 +381,6 @@
 <context>
     <name>ui::LayersPanel</name>
     <message>
-        <source>Layers appear when the view stays still.</source>
-        <translation>视图静止后将显示图层。</translation>
-    </message>
-    <message>
-        <source>Click a layer to see it alone; “All layers” shows the whole view.</source>
-        <translation>点击某个图层可单独查看；“所有图层”显示整个视图。</translation>
-    </message>
-    <message>
-        <source>All layers
-Layers: %1
-Regions: %2</source>
-        <translation>所有图层
-图层：%1
-区域：%2</translation>
-    </message>
-    <message>
         <source>The whole view, front to back</source>
         <translation>整个视图，由前到后</translation>
     </message>
@@ -387,6 +395,22 @@ Regions: %3</source>
     <message>
         <source>Show layer %1 alone</source>
         <translation>单独显示图层 %1</translation>
+    </message>
+    <message>
+        <source>Depth layers appear when the view stays still.</source>
+        <translation>视图静止后将显示深度层。</translation>
+    </message>
+    <message>
+        <source>Click a depth layer to see it alone; “All layers” shows the whole view.</source>
+        <translation>单击一个深度层可单独查看；“所有图层”显示整个视图。</translation>
+    </message>
+    <message>
+        <source>All layers
+Depth layers: %1
+Regions: %2</source>
+        <translation>所有图层
+深度层：%1
+区域：%2</translation>
     </message>
 </context>
 <context>
@@ -424,10 +448,6 @@ Regions: %3</source>
         <translation>分割</translation>
     </message>
     <message>
-        <source>Layers</source>
-        <translation>图层</translation>
-    </message>
-    <message>
         <source>Region Graph</source>
         <translation>区域图</translation>
     </message>
@@ -442,10 +462,6 @@ Regions: %3</source>
     <message>
         <source>Single &amp;Layer</source>
         <translation>单个图层(&amp;L)</translation>
-    </message>
-    <message>
-        <source>Show one depth layer alone (choose it in the Layers panel)</source>
-        <translation>单独显示一个深度图层（在“图层”面板中选择）</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
@@ -466,10 +482,6 @@ Regions: %3</source>
     <message>
         <source>Building layers…</source>
         <translation>正在构建图层…</translation>
-    </message>
-    <message>
-        <source>Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
-        <translation>图层：%1 · 片元：%2 · 区域：%3 · 用时 %4 毫秒</translation>
     </message>
     <message>
         <source>build_layers of this view:
@@ -949,6 +961,30 @@ connectivity %3 ms, regions %4 ms
         <source>Paint into a Texture (Automatic UV Layout)</source>
         <translation>绘制到纹理（自动 UV 布局）</translation>
     </message>
+    <message>
+        <source>Depth Layers</source>
+        <translation>深度层</translation>
+    </message>
+    <message>
+        <source>Show one depth layer alone (choose it in the Depth Layers panel)</source>
+        <translation>单独显示一个深度层（在“深度层”面板中选择）</translation>
+    </message>
+    <message>
+        <source>Depth layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms</source>
+        <translation>深度层：%1 · 片元：%2 · 区域：%3 · 构建耗时 %4 毫秒</translation>
+    </message>
+    <message>
+        <source>Paint Layers</source>
+        <translation>绘画层</translation>
+    </message>
+    <message>
+        <source>Paint &amp;Layers</source>
+        <translation>绘画层(&amp;L)</translation>
+    </message>
+    <message>
+        <source>Vertex colours hold base colour only: roughness and metallic need a texture as the paint target.</source>
+        <translation>顶点颜色只包含基础颜色：粗糙度和金属度需要以纹理作为绘画目标。</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -961,6 +997,241 @@ connectivity %3 ms, regions %4 ms
         <translation>
             <numerusform>……还有 %n 条（见工具提示）</numerusform>
         </translation>
+    </message>
+</context>
+<context>
+    <name>ui::PaintLayersPanel</name>
+    <message>
+        <source>Normal</source>
+        <translation>正常</translation>
+    </message>
+    <message>
+        <source>Multiply</source>
+        <translation>正片叠底</translation>
+    </message>
+    <message>
+        <source>Screen</source>
+        <translation>滤色</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>叠加</translation>
+    </message>
+    <message>
+        <source>Soft Light</source>
+        <translation>柔光</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>相加</translation>
+    </message>
+    <message>
+        <source>Subtract</source>
+        <translation>减去</translation>
+    </message>
+    <message>
+        <source>Darken</source>
+        <translation>变暗</translation>
+    </message>
+    <message>
+        <source>Lighten</source>
+        <translation>变亮</translation>
+    </message>
+    <message>
+        <source>Difference</source>
+        <translation>差值</translation>
+    </message>
+    <message>
+        <source>The paint layers, the uppermost on top. Click a row to paint on it, its eye to show or hide it, its mask to paint the mask; double-click a name to rename it; drag rows to reorder them.</source>
+        <translation>绘画层，最上层在顶部。单击一行以在其上绘画，单击眼睛以显示或隐藏，单击蒙版以绘制蒙版；双击名称可重命名；拖动行可调整顺序。</translation>
+    </message>
+    <message>
+        <source>How much of the current paint layer shows</source>
+        <translation>当前绘画层的显示程度</translation>
+    </message>
+    <message>
+        <source>&amp;Opacity</source>
+        <translation>不透明度(&amp;O)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1%</translation>
+    </message>
+    <message>
+        <source>How the current paint layer combines with what lies under it</source>
+        <translation>当前绘画层与其下方内容的混合方式</translation>
+    </message>
+    <message>
+        <source>&amp;Blend mode</source>
+        <translation>混合模式(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;transparency</source>
+        <translation>锁定透明度(&amp;T)</translation>
+    </message>
+    <message>
+        <source>Painting changes the colour of what is on the layer, never where it is or how much</source>
+        <translation>绘画只改变图层上已有内容的颜色，不改变其位置或多少</translation>
+    </message>
+    <message>
+        <source>&amp;New Paint Layer</source>
+        <translation>新建绘画层(&amp;N)</translation>
+    </message>
+    <message>
+        <source>New</source>
+        <translation>新建</translation>
+    </message>
+    <message>
+        <source>Add a paint layer above the current one</source>
+        <translation>在当前层之上添加一个绘画层</translation>
+    </message>
+    <message>
+        <source>New F&amp;ill Layer</source>
+        <translation>新建填充层(&amp;I)</translation>
+    </message>
+    <message>
+        <source>Fill</source>
+        <translation>填充</translation>
+    </message>
+    <message>
+        <source>Add a layer of uniform channel values (the brush&apos;s) above the current one</source>
+        <translation>在当前层之上添加一个统一通道值（画笔的值）的图层</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate Paint Layer</source>
+        <translation>复制绘画层(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>复制</translation>
+    </message>
+    <message>
+        <source>Copy the current paint layer</source>
+        <translation>复制当前绘画层</translation>
+    </message>
+    <message>
+        <source>D&amp;elete Paint Layer</source>
+        <translation>删除绘画层(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete the current paint layer</source>
+        <translation>删除当前绘画层</translation>
+    </message>
+    <message>
+        <source>&amp;Merge Down</source>
+        <translation>向下合并(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Merge</source>
+        <translation>合并</translation>
+    </message>
+    <message>
+        <source>Merge the current paint layer into the one below</source>
+        <translation>将当前绘画层合并到下方的层</translation>
+    </message>
+    <message>
+        <source>&amp;Flatten Paint Layers</source>
+        <translation>拼合绘画层(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Flatten</source>
+        <translation>拼合</translation>
+    </message>
+    <message>
+        <source>Merge every visible paint layer into one</source>
+        <translation>将所有可见绘画层合并为一层</translation>
+    </message>
+    <message>
+        <source>Flattened</source>
+        <translation>已拼合</translation>
+    </message>
+    <message>
+        <source>Add M&amp;ask</source>
+        <translation>添加蒙版(&amp;A)</translation>
+    </message>
+    <message>
+        <source>Mask</source>
+        <translation>蒙版</translation>
+    </message>
+    <message>
+        <source>Give the current paint layer a mask (black hides, white shows)</source>
+        <translation>为当前绘画层添加蒙版（黑色隐藏，白色显示）</translation>
+    </message>
+    <message>
+        <source>Delete Mas&amp;k</source>
+        <translation>删除蒙版(&amp;K)</translation>
+    </message>
+    <message>
+        <source>No Mask</source>
+        <translation>无蒙版</translation>
+    </message>
+    <message>
+        <source>Remove the current paint layer&apos;s mask</source>
+        <translation>移除当前绘画层的蒙版</translation>
+    </message>
+    <message>
+        <source>&amp;Rename…</source>
+        <translation>重命名(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>Open a model to paint in paint layers.</source>
+        <translation>打开一个模型以在绘画层中绘画。</translation>
+    </message>
+    <message>
+        <source>Vertex colours have no paint layers: choose a texture as the paint target (in the brush bar) to paint in paint layers.</source>
+        <translation>顶点颜色没有绘画层：请（在画笔栏中）选择纹理作为绘画目标，以在绘画层中绘画。</translation>
+    </message>
+    <message>
+        <source>Shown: click to hide</source>
+        <translation>显示中：单击以隐藏</translation>
+    </message>
+    <message>
+        <source>Hidden: click to show</source>
+        <translation>已隐藏：单击以显示</translation>
+    </message>
+    <message>
+        <source>fill layer</source>
+        <translation>填充层</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1（%2）</translation>
+    </message>
+    <message>
+        <source>, </source>
+        <translation>，</translation>
+    </message>
+    <message>
+        <source>Painting the mask (black hides, white shows)</source>
+        <translation>正在绘制蒙版（黑色隐藏，白色显示）</translation>
+    </message>
+    <message>
+        <source>Mask: click to paint it</source>
+        <translation>蒙版：单击以绘制</translation>
+    </message>
+    <message>
+        <source>Base</source>
+        <translation>基础</translation>
+    </message>
+    <message>
+        <source>The model&apos;s own surface (painting here changes it directly)</source>
+        <translation>模型自身的表面（在此绘画会直接改变它）</translation>
+    </message>
+    <message>
+        <source>Paint layers: %1</source>
+        <translation>绘画层：%1</translation>
+    </message>
+    <message>
+        <source>Fill %1</source>
+        <translation>填充 %1</translation>
+    </message>
+    <message>
+        <source>Paint Layer %1</source>
+        <translation>绘画层 %1</translation>
     </message>
 </context>
 <context>

@@ -287,7 +287,10 @@ public:
     Status addPaintLayerMask(std::uint64_t id, PaintChanges& changes);
     /** Removes the mask of layer id. */
     Status deletePaintLayerMask(std::uint64_t id, PaintChanges& changes);
-    /** Where painting goes: the base (layer 0), a layer, or its mask (one undo step). */
+    /**
+     * Where painting goes: the base (layer 0), a layer, or its mask. Logged in the session but no
+     * undo step; undoing an operation brings back the selection it found.
+     */
     Status selectPaint(PaintSelection selection);
     /** What the user did since the model was set, as a script that reproduces it. */
     const SessionLog& session() const { return m_session; }

@@ -94,11 +94,19 @@ void Document::applyLayerChange(LayerChange& change, PaintChanges& changes) {
             covered(stack.layer(*index));
         }
         break;
-    case LayerChange::Kind::Select:
-        break;
     }
+    // Selecting is no step of its own, so the selection kept here is the one at the time of the
+    // operation (undo) or of its undo (redo); it is checked against the stack all the same.
     const PaintSelection selection = target->selection();
-    target->setSelection(change.selection);
+    PaintSelection next = change.selection;
+    if (next.layer != 0) {
+        const auto index = stack.indexOf(next.layer);
+        if (!index)
+            next = {stack.size() > 0 ? stack.layer(stack.size() - 1).id : 0, false};
+        else if (next.mask && !stack.layer(*index).mask)
+            next.mask = false;
+    }
+    target->setSelection(next);
     change.selection = selection;
     const PaintChanges refreshed = target->refresh(std::move(tiles));
     changes.texels.insert(changes.texels.end(), refreshed.texels.begin(), refreshed.texels.end());
@@ -346,11 +354,11 @@ Status Document::selectPaint(PaintSelection selection) {
         op["layer"] = "base";
     else
         op["layer"] = layerRef(*target.layerStack().indexOf(selection.layer));
-    LayerChange change;
-    change.kind = LayerChange::Kind::Select;
-    change.selection = selection;
-    PaintChanges none;
-    pushLayerChange(std::move(change), std::move(op), none);
+    // Logged so a replayed session paints where the user did, but no undo step: clicks on layers
+    // would otherwise fill Edit > Undo (an operation's undo restores the selection it had).
+    m_session.noteState(*this);
+    m_session.add(std::move(op));
+    target.setSelection(selection);
     return {};
 }
 

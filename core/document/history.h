@@ -56,11 +56,12 @@ struct TargetSwap {
  * - Move: the layer at from moves to to (and from, to swap);
  * - Settings: the settings of the layer with id are exchanged with settings;
  * - Mask: the mask of the layer with id is exchanged with mask (nullptr: none);
- * and, always, the target's selection is exchanged with selection.
+ * and, always, the target's selection is exchanged with selection (selecting alone is no change:
+ * it makes no undo step).
  */
 struct LayerChange {
-    enum class Kind : std::uint8_t { Swap, Move, Settings, Mask, Select };
-    Kind kind = Kind::Select;
+    enum class Kind : std::uint8_t { Swap, Move, Settings, Mask };
+    Kind kind = Kind::Swap;
     std::size_t index = 0, count = 0;
     std::vector<std::unique_ptr<PaintLayer>> held;
     std::size_t from = 0, to = 0;

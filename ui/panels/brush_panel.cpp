@@ -4,6 +4,7 @@
 #include "ui/panels/value_spin_box.h"
 
 #include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -108,6 +109,40 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     for (QCheckBox* box : {m_pressureRadius, m_pressureOpacity})
         connect(box, &QCheckBox::toggled, this, &BrushPanel::readBrush);
 
+    // The material channels a stroke paints, each with its own value (base colour: the Colour
+    // panel's).
+    m_paintBaseColor = new QCheckBox(tr("Base co&lour"), this);
+    m_paintBaseColor->setObjectName(QStringLiteral("brushPanelPaintBaseColor"));
+    m_paintBaseColor->setToolTip(tr("Strokes paint the base colour (the Colour panel's)"));
+    m_form->addRow(m_paintBaseColor);
+    const auto channelRow = [this](const QString& text, const QString& name, const QString& tip,
+                                   QCheckBox*& box, QDoubleSpinBox*& value) {
+        box = new QCheckBox(text, this);
+        box->setObjectName(name);
+        box->setToolTip(tip);
+        value = new QDoubleSpinBox(this);
+        value->setObjectName(name + QStringLiteral("Value"));
+        value->setRange(0.0, 1.0);
+        value->setSingleStep(0.05);
+        value->setDecimals(2);
+        value->setToolTip(tip);
+        m_form->addRow(box, value);
+        connect(box, &QCheckBox::toggled, this, &BrushPanel::readBrush);
+        connect(value, &QDoubleSpinBox::valueChanged, this, &BrushPanel::readBrush);
+    };
+    channelRow(tr("R&oughness"), QStringLiteral("brushPanelPaintRoughness"),
+               tr("Strokes paint this roughness (0: glossy, 1: matt)"), m_paintRoughness,
+               m_roughness);
+    channelRow(tr("&Metallic"), QStringLiteral("brushPanelPaintMetallic"),
+               tr("Strokes paint this metalness (0: dielectric, 1: metal)"), m_paintMetallic,
+               m_metallic);
+    connect(m_paintBaseColor, &QCheckBox::toggled, this, &BrushPanel::readBrush);
+    m_channelNote = new QLabel(this);
+    m_channelNote->setObjectName(QStringLiteral("brushPanelChannelNote"));
+    m_channelNote->setWordWrap(true);
+    m_channelNote->hide();
+    m_form->addRow(m_channelNote);
+
     m_gamma = new QSlider(Qt::Horizontal, this);
     m_gamma->setObjectName(QStringLiteral("brushPanelPressureCurve"));
     m_gamma->setRange(-kGammaSteps, kGammaSteps);
@@ -159,6 +194,11 @@ void BrushPanel::readBrush() {
     m_brush.trackRadius = float(m_trackRadius->value());
     m_brush.pressureRadius = m_pressureRadius->isChecked();
     m_brush.pressureOpacity = m_pressureOpacity->isChecked();
+    m_brush.paintBaseColor = m_paintBaseColor->isChecked();
+    m_brush.paintRoughness = m_paintRoughness->isChecked();
+    m_brush.paintMetallic = m_paintMetallic->isChecked();
+    m_brush.roughness = float(m_roughness->value());
+    m_brush.metallic = float(m_metallic->value());
     updateAutoTrackText();
     emit brushChanged(m_brush);
 }
@@ -181,7 +221,26 @@ void BrushPanel::setBrush(const core::Brush& brush) {
     m_trackRadius->setValue(int(std::lround(brush.trackRadius)));
     m_pressureRadius->setChecked(brush.pressureRadius);
     m_pressureOpacity->setChecked(brush.pressureOpacity);
+    m_paintBaseColor->setChecked(brush.paintBaseColor);
+    m_paintRoughness->setChecked(brush.paintRoughness);
+    m_paintMetallic->setChecked(brush.paintMetallic);
+    m_roughness->setValue(double(brush.roughness));
+    m_metallic->setValue(double(brush.metallic));
     updateAutoTrackText();
+}
+
+void BrushPanel::setMaterialChannels(bool available, const QString& why) {
+    for (QWidget* widget : std::initializer_list<QWidget*>{m_paintRoughness, m_roughness,
+                                                           m_paintMetallic, m_metallic}) {
+        widget->setEnabled(available);
+        // The tip says why while disabled; the first part of it is the channel's own.
+        QString tip = widget->toolTip().section(QStringLiteral("\n\n"), 0, 0);
+        if (!available && !why.isEmpty())
+            tip += QStringLiteral("\n\n") + why;
+        widget->setToolTip(tip);
+    }
+    m_channelNote->setText(why);
+    m_channelNote->setVisible(!available && !why.isEmpty());
 }
 
 void BrushPanel::setPressureCurve(const core::PressureCurve& curve) {

@@ -6,6 +6,7 @@
 #include "core/paint/dab.h"
 
 class QCheckBox;
+class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
 class QSlider;
@@ -31,7 +32,8 @@ private:
 
 /**
  * The Brush panel (a dock): every setting of core::Brush — radius, hardness, opacity, flow,
- * spacing, R_max (0 = automatic) and what pen pressure changes — and the pressure curve. Every
+ * spacing, R_max (0 = automatic), what pen pressure changes, the material channels it paints
+ * (base colour, roughness, metallic, each on or off with its value) — and the pressure curve. Every
  * change emits at once; setBrush() and setPressureCurve() show values without emitting, so the
  * window can keep this panel, the brush bar and the document in step.
  */
@@ -45,6 +47,11 @@ public:
     const core::Brush& brush() const { return m_brush; }
     void setPressureCurve(const core::PressureCurve& curve);
     const core::PressureCurve& pressureCurve() const { return m_curve; }
+    /**
+     * Whether roughness and metallic can be painted (texture targets); without, they are shown
+     * disabled with why as their tip.
+     */
+    void setMaterialChannels(bool available, const QString& why = {});
 
 signals:
     void brushChanged(const core::Brush& brush);
@@ -67,6 +74,12 @@ private:
     QSpinBox* m_trackRadius = nullptr;
     QCheckBox* m_pressureRadius = nullptr;
     QCheckBox* m_pressureOpacity = nullptr;
+    QCheckBox* m_paintBaseColor = nullptr;
+    QCheckBox* m_paintRoughness = nullptr;
+    QCheckBox* m_paintMetallic = nullptr;
+    QDoubleSpinBox* m_roughness = nullptr;
+    QDoubleSpinBox* m_metallic = nullptr;
+    QLabel* m_channelNote = nullptr;
     QSlider* m_gamma = nullptr;
     QLabel* m_gammaText = nullptr;
     PressureCurveView* m_curveView = nullptr;

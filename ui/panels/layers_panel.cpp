@@ -35,7 +35,7 @@ QRgb toRgb(const glm::vec4& c) {
 } // namespace
 
 LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
-    m_hint = new QLabel(tr("Layers appear when the view stays still."), this);
+    m_hint = new QLabel(tr("Depth layers appear when the view stays still."), this);
     m_hint->setObjectName(QStringLiteral("layersHint"));
     m_hint->setWordWrap(true);
     m_hint->setAlignment(Qt::AlignCenter);
@@ -48,7 +48,8 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     m_list->setSelectionMode(QAbstractItemView::SingleSelection);
     m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_list->setSpacing(1);
-    m_list->setToolTip(tr("Click a layer to see it alone; “All layers” shows the whole view."));
+    m_list->setToolTip(
+        tr("Click a depth layer to see it alone; “All layers” shows the whole view."));
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -135,7 +136,7 @@ void LayersPanel::rebuild(const core::Layers& layers) {
     m_updating = true;
     m_list->clear();
     auto* all = new QListWidgetItem(
-        icon(1), tr("All layers\nLayers: %1\nRegions: %2")
+        icon(1), tr("All layers\nDepth layers: %1\nRegions: %2")
                      .arg(locale.toString(qulonglong(fragments.size())),
                           locale.toString(qulonglong(layers.segmentation.graph.regions.size()))));
     all->setData(kLayerRole, 0u);

@@ -245,7 +245,7 @@ void MainWindow::createPanels() {
                                .toString());
 
     m_layersPanel = new LayersPanel(this);
-    m_layersDock = makeDock(tr("Layers"), QStringLiteral("layersDock"), m_layersPanel);
+    m_layersDock = makeDock(tr("Depth Layers"), QStringLiteral("layersDock"), m_layersPanel);
     connect(m_layersPanel, &LayersPanel::layerActivated, this, [this](std::uint32_t layer) {
         if (layer == 0)
             setDisplay(m_allLayersDisplay);
@@ -289,7 +289,7 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
                    tr("Show the model shaded, all layers"), render::LayerDisplay::Composite);
     m_singleLayerAction =
         addDisplay(tr("Single &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
-                   tr("Show one depth layer alone (choose it in the Layers panel)"),
+                   tr("Show one depth layer alone (choose it in the Depth Layers panel)"),
                    render::LayerDisplay::SingleLayer);
     m_segmentationAction =
         addDisplay(tr("Se&gmentation Map"), QStringLiteral("actionDisplaySegmentation"), 3,
@@ -402,7 +402,7 @@ void MainWindow::updateLayerInfo() {
     const core::LayerTimings& t = layers->timings;
     // Label style ("Regions: 1") reads right in English for any count without plural forms.
     m_layerInfo->setText(
-        tr("Layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms")
+        tr("Depth layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms")
             .arg(locale.toString(layers->stack.maxLayers()),
                  locale.toString(qulonglong(layers->stack.fragmentCount())),
                  locale.toString(qulonglong(layers->segmentation.graph.regions.size())),

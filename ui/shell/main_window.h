@@ -44,6 +44,7 @@ class LayerBuilder;
 class LayersPanel;
 class MessageBar;
 class ModelLoader;
+class PaintLayersPanel;
 class PaintTargetJob;
 class ProjectController;
 class RegionGraphPanel;
@@ -53,8 +54,9 @@ class Viewport;
 
 /**
  * The application window: owns the core::Document (model, camera, layers) and shows it in the
- * viewport and the Segmentation, Layers, Region Graph, Paint to Hide, Fill, Brush and Colour
- * panels (all dockable, the layout kept in QSettings); the File/Edit/View/Paint/Help menus, the
+ * viewport and the Segmentation, Depth Layers, Region Graph, Paint to Hide, Fill, Brush, Colour
+ * and Paint Layers panels (all dockable, the layout kept in QSettings); the
+ * File/Edit/View/Paint/Paint Layers/Help menus, the
  * brush and tool bars, the status bar, the Preferences and the background loading of models.
  * Painting: the viewport's left button (or pen) drives the document's strokes and fills; every
  * change is a step of the document's one history, which the undo stack mirrors (HistoryBridge).
@@ -95,6 +97,7 @@ public:
     FillPanel* fillPanel() const { return m_fillPanel; }
     BrushPanel* brushPanel() const { return m_brushPanel; }
     ColorPanel* colorPanel() const { return m_colorPanel; }
+    PaintLayersPanel* paintLayersPanel() const { return m_paintLayersPanel; }
     QUndoStack* undoStack() const { return m_undoStack; }
     /** Save, export, unsaved-changes tracking, autosave and recovery. */
     ProjectController* projectController() const { return m_project; }
@@ -231,7 +234,10 @@ private:
      * an automatic UV layout, or vertex colours), and the default (Document's rule) started.
      */
     void offerUvLayout();
+    /** The brush bar's target, and what the Brush and Paint Layers panels can offer for it. */
     void updateBrushBar();
+    /** The Paint Layers panel, its dock and what its operations change. */
+    void createPaintLayersPanel();
     void updateBrushInfo();
     /** [ and ]: the radius a step (about 15 %) smaller or larger. */
     void stepBrushRadius(int direction);
@@ -283,6 +289,8 @@ private:
     ColorPanel* m_colorPanel = nullptr;
     QDockWidget* m_brushDock = nullptr;
     QDockWidget* m_colorDock = nullptr;
+    PaintLayersPanel* m_paintLayersPanel = nullptr;
+    QDockWidget* m_paintLayersDock = nullptr;
     QActionGroup* m_displayGroup = nullptr;
     QAction* m_shadedAction = nullptr;
     QAction* m_singleLayerAction = nullptr;

@@ -14,6 +14,8 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
@@ -26,6 +28,7 @@
 #include "ui/panels/color_panel.h"
 #include "ui/panels/fill_panel.h"
 #include "ui/panels/hidden_regions_panel.h"
+#include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
@@ -37,6 +40,17 @@ namespace ui {
 
 namespace {
 const QString kOpenDirectoryKey = QStringLiteral("mainWindow/openDirectory");
+
+/**
+ * A dock's scroll area with a minimum size of its own (the panel's width, a few rows high): what
+ * the panel shows later (a model, more rows) never changes the window's minimum size.
+ */
+void fixScrollMinimum(QScrollArea& scroll) {
+    scroll.setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll.setMinimumSize(scroll.widget()->minimumSizeHint().width() +
+                              scroll.verticalScrollBar()->sizeHint().width(),
+                          120);
+}
 } // namespace
 
 void MainWindow::createPaintActions() {
@@ -74,8 +88,14 @@ void MainWindow::createPaintActions() {
     // The panels: the full brush settings and the colours, on the left of the view.
     m_brushPanel = new BrushPanel(this);
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
+    // Scrolled where the window is too low for all its rows (the channels made it taller).
+    auto* brushScroll = new QScrollArea(this);
+    brushScroll->setWidget(m_brushPanel);
+    brushScroll->setWidgetResizable(true);
+    brushScroll->setFrameShape(QFrame::NoFrame);
+    fixScrollMinimum(*brushScroll);
     m_brushDock =
-        makeDock(tr("Brush"), QStringLiteral("brushDock"), m_brushPanel, Qt::LeftDockWidgetArea);
+        makeDock(tr("Brush"), QStringLiteral("brushDock"), brushScroll, Qt::LeftDockWidgetArea);
     connect(m_brushPanel, &BrushPanel::brushChanged, this, &MainWindow::setBrush);
     connect(m_brushPanel, &BrushPanel::pressureCurveChanged, this, &MainWindow::setPressureCurve);
     m_colorPanel = new ColorPanel(this);
@@ -86,6 +106,7 @@ void MainWindow::createPaintActions() {
         brush.color = BrushToolBar::toLinear(color);
         setBrush(brush);
     });
+    createPaintLayersPanel();
     // The colour panel's own colour, rounded to what it shows, is the brush's from the start.
     m_colorPanel->setForeground(BrushToolBar::toQColor(m_document->brush().color));
     {
@@ -268,6 +289,37 @@ void MainWindow::createToolActions() {
     m_viewport->setToolCursor(toolCursor(m_tool), toolShowsBrushOutline(m_tool));
 }
 
+void MainWindow::createPaintLayersPanel() {
+    m_paintLayersPanel = new PaintLayersPanel(*m_document, this);
+    // In a scroll area: the dock may get smaller than the panel's controls need, so the window
+    // keeps the minimum size it had.
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(m_paintLayersPanel);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    fixScrollMinimum(*scroll);
+    m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"), scroll);
+    // A tab beside the Depth Layers: the columns keep their size, and the two stacks sit apart
+    // by name.
+    tabifyDockWidget(m_layersDock, m_paintLayersDock);
+    m_layersDock->raise();
+    connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
+            [this](const core::PaintChanges& changes) {
+                // As after a stroke: the composite's texels to the view, then the undo stack.
+                if (m_document->paintTargetSerial() != m_targetSerial) {
+                    m_targetSerial = m_document->paintTargetSerial();
+                    m_viewport->paintTargetChanged();
+                } else {
+                    m_viewport->applyPaintChanges(changes);
+                }
+                m_history->sync();
+            });
+    connect(m_paintLayersPanel, &PaintLayersPanel::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    // Strokes, fills, undo and redo change the stack and the thumbnails.
+    connect(m_history, &HistoryBridge::changed, m_paintLayersPanel, &PaintLayersPanel::refresh);
+}
+
 void MainWindow::createMenus() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
 
@@ -330,8 +382,8 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_segmentationDock, m_layersDock,
-                              m_graphDock, m_hiddenDock, m_fillDock})
+    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_paintLayersDock, m_segmentationDock,
+                              m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(m_brushBar->toggleViewAction());
@@ -351,6 +403,15 @@ void MainWindow::createMenus() {
     paintMenu->addSeparator();
     paintMenu->addActions(m_brushStepActions);
     paintMenu->addAction(m_swapColorsAction);
+
+    QMenu* paintLayersMenu = menuBar()->addMenu(tr("Paint &Layers"));
+    paintLayersMenu->setObjectName(QStringLiteral("paintLayersMenu"));
+    for (QAction* action : m_paintLayersPanel->operationActions()) {
+        if (action)
+            paintLayersMenu->addAction(action);
+        else
+            paintLayersMenu->addSeparator();
+    }
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     QAction* aboutAction =

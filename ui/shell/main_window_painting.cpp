@@ -20,6 +20,7 @@
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
 #include "ui/panels/fill_panel.h"
+#include "ui/panels/paint_layers_panel.h"
 #include "ui/panels/segmentation_controls.h"
 #include "ui/shell/elided_label.h"
 #include "ui/shell/project_controller.h"
@@ -351,6 +352,13 @@ void MainWindow::offerUvLayout() {
 void MainWindow::updateBrushBar() {
     const bool hasUvs = m_document->meshSerial() == 0 || m_document->mesh().hasUvs();
     m_brushBar->setTarget(m_paintOptions, hasUvs);
+    const bool texture = m_document->meshSerial() == 0 ||
+                         m_document->paintTargetKind() == core::PaintTargetKind::Texture;
+    m_brushPanel->setMaterialChannels(
+        texture, texture ? QString()
+                         : tr("Vertex colours hold base colour only: roughness and metallic "
+                              "need a texture as the paint target."));
+    m_paintLayersPanel->refresh();
 }
 
 void MainWindow::setBrush(const core::Brush& brush) {

@@ -1,0 +1,538 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ui/panels/paint_layers_panel.h"
+
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDropEvent>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QKeySequence>
+#include <QLabel>
+#include <QLocale>
+#include <QMenu>
+#include <QScopedValueRollback>
+#include <QSlider>
+#include <QTimer>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+
+#include "core/base/color.h"
+#include "core/document/document.h"
+#include "ui/panels/paint_layer_thumbnails.h"
+
+namespace ui {
+
+namespace {
+
+constexpr int kThumbnail = 32;
+constexpr int kEye = 18;
+constexpr int kIdRole = Qt::UserRole;
+
+/**
+ * The list of rows. A drop moves nothing itself: it reports which layer went to which row and
+ * the panel asks the document (one undo step), then shows the stack again.
+ */
+class PaintLayerList : public QTreeWidget {
+public:
+    explicit PaintLayerList(QWidget* parent) : QTreeWidget(parent) {}
+    std::function<void(std::uint64_t id, int row)> onDrop;
+
+protected:
+    void dropEvent(QDropEvent* event) override {
+        QTreeWidgetItem* source = currentItem();
+        const std::uint64_t id = source ? source->data(0, kIdRole).toULongLong() : 0;
+        QTreeWidgetItem* over = itemAt(event->position().toPoint());
+        // The row it goes to among the layer rows (the last row, Base, stays last).
+        int row = topLevelItemCount() - 1;
+        if (over) {
+            row = indexOfTopLevelItem(over);
+            const QRect rect = visualItemRect(over);
+            if (dropIndicatorPosition() == BelowItem ||
+                (dropIndicatorPosition() == OnItem && event->position().y() > rect.center().y()))
+                ++row;
+        }
+        event->setDropAction(Qt::IgnoreAction);
+        event->accept();
+        if (id == 0 || !onDrop)
+            return;
+        const int from = indexOfTopLevelItem(source);
+        if (row > from)
+            --row;
+        // Applied after the drag has ended: the rows are made anew then.
+        QTimer::singleShot(0, this, [this, id, row] { onDrop(id, row); });
+    }
+};
+
+QString blendModeText(core::BlendMode mode) {
+    switch (mode) {
+    case core::BlendMode::Normal:
+        return PaintLayersPanel::tr("Normal");
+    case core::BlendMode::Multiply:
+        return PaintLayersPanel::tr("Multiply");
+    case core::BlendMode::Screen:
+        return PaintLayersPanel::tr("Screen");
+    case core::BlendMode::Overlay:
+        return PaintLayersPanel::tr("Overlay");
+    case core::BlendMode::SoftLight:
+        return PaintLayersPanel::tr("Soft Light");
+    case core::BlendMode::Add:
+        return PaintLayersPanel::tr("Add");
+    case core::BlendMode::Subtract:
+        return PaintLayersPanel::tr("Subtract");
+    case core::BlendMode::Darken:
+        return PaintLayersPanel::tr("Darken");
+    case core::BlendMode::Lighten:
+        return PaintLayersPanel::tr("Lighten");
+    case core::BlendMode::Difference:
+        return PaintLayersPanel::tr("Difference");
+    }
+    return {};
+}
+
+} // namespace
+
+PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    createActions();
+    auto* layout = new QVBoxLayout(this);
+
+    m_reason = new QLabel(this);
+    m_reason->setObjectName(QStringLiteral("paintLayersReason"));
+    m_reason->setWordWrap(true);
+    m_reason->hide();
+    layout->addWidget(m_reason);
+
+    auto* list = new PaintLayerList(this);
+    m_list = list;
+    m_list->setObjectName(QStringLiteral("paintLayersList"));
+    m_list->setColumnCount(4);
+    m_list->setHeaderHidden(true);
+    m_list->setRootIsDecorated(false);
+    m_list->setIndentation(0);
+    m_list->setUniformRowHeights(true);
+    m_list->setIconSize(QSize(kThumbnail, kThumbnail));
+    m_list->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_list->setEditTriggers(QAbstractItemView::NoEditTriggers); // double-click on the name only
+    m_list->setDragDropMode(QAbstractItemView::InternalMove);
+    m_list->setDefaultDropAction(Qt::MoveAction);
+    m_list->setContextMenuPolicy(Qt::CustomContextMenu);
+    m_list->header()->setStretchLastSection(false);
+    m_list->header()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
+    for (const int column : {EyeColumn, ThumbnailColumn, MaskColumn})
+        m_list->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
+    m_list->setToolTip(tr("The paint layers, the uppermost on top. Click a row to paint on it, "
+                          "its eye to show or hide it, its mask to paint the mask; double-click "
+                          "a name to rename it; drag rows to reorder them."));
+    list->onDrop = [this](std::uint64_t id, int row) { moveToRow(id, row); };
+    connect(m_list, &QTreeWidget::itemClicked, this, &PaintLayersPanel::onItemClicked);
+    connect(m_list, &QTreeWidget::itemChanged, this, &PaintLayersPanel::onItemChanged);
+    connect(m_list, &QTreeWidget::itemDoubleClicked, this,
+            [this](QTreeWidgetItem* item, int column) {
+                if (column == NameColumn && item->data(0, kIdRole).toULongLong() != 0)
+                    m_list->editItem(item, NameColumn);
+            });
+    connect(m_list, &QWidget::customContextMenuRequested, this, &PaintLayersPanel::showContextMenu);
+    layout->addWidget(m_list, 1);
+
+    // The current layer's settings.
+    m_controls = new QWidget(this);
+    auto* form = new QFormLayout(m_controls);
+    form->setContentsMargins(0, 0, 0, 0);
+    m_opacity = new QSlider(Qt::Horizontal, m_controls);
+    m_opacity->setObjectName(QStringLiteral("paintLayerOpacity"));
+    m_opacity->setRange(0, 100);
+    m_opacity->setTracking(false); // one undo step per change, not one per pixel dragged
+    m_opacity->setToolTip(tr("How much of the current paint layer shows"));
+    m_opacityText = new QLabel(m_controls);
+    m_opacityText->setMinimumWidth(fontMetrics().horizontalAdvance(QStringLiteral("100 %")));
+    auto* opacityRow = new QHBoxLayout;
+    opacityRow->addWidget(m_opacity, 1);
+    opacityRow->addWidget(m_opacityText);
+    form->addRow(tr("&Opacity"), opacityRow);
+    if (auto* text = qobject_cast<QLabel*>(form->labelForField(opacityRow)))
+        text->setBuddy(m_opacity);
+    connect(m_opacity, &QSlider::sliderMoved, this,
+            [this](int value) { m_opacityText->setText(tr("%1 %").arg(value)); });
+    connect(m_opacity, &QSlider::valueChanged, this, [this](int value) {
+        m_opacityText->setText(tr("%1 %").arg(value));
+        if (!m_updating)
+            editSettings(selectedLayer(), [value](core::PaintLayerSettings& settings) {
+                settings.opacity = float(value) / 100.0f;
+            });
+    });
+    m_blend = new QComboBox(m_controls);
+    m_blend->setObjectName(QStringLiteral("paintLayerBlend"));
+    m_blend->setToolTip(tr("How the current paint layer combines with what lies under it"));
+    for (const core::BlendMode mode : core::kBlendModes)
+        m_blend->addItem(blendModeText(mode), int(mode));
+    form->addRow(tr("&Blend mode"), m_blend);
+    connect(m_blend, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (m_updating || index < 0)
+            return;
+        const auto mode = core::BlendMode(m_blend->itemData(index).toInt());
+        editSettings(selectedLayer(),
+                     [mode](core::PaintLayerSettings& settings) { settings.blend = mode; });
+    });
+    m_lock = new QCheckBox(tr("Lock &transparency"), m_controls);
+    m_lock->setObjectName(QStringLiteral("paintLayerLock"));
+    m_lock->setToolTip(tr("Painting changes the colour of what is on the layer, never where it "
+                          "is or how much"));
+    form->addRow(m_lock);
+    connect(m_lock, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_updating)
+            editSettings(selectedLayer(), [on](core::PaintLayerSettings& settings) {
+                settings.lockTransparency = on;
+            });
+    });
+    layout->addWidget(m_controls);
+
+    // A button for every operation.
+    auto* buttons = new QGridLayout;
+    buttons->setSpacing(2);
+    int slot = 0;
+    for (QAction* action : operationActions()) {
+        if (!action)
+            continue;
+        auto* button = new QToolButton(this);
+        button->setDefaultAction(action);
+        button->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        button->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Fixed);
+        buttons->addWidget(button, slot / 4, slot % 4);
+        ++slot;
+    }
+    layout->addLayout(buttons);
+
+    refresh();
+}
+
+void PaintLayersPanel::createActions() {
+    const auto make = [this](const QString& text, const QString& iconText, const QString& name,
+                             const QString& tip, const QKeySequence& key = {}) {
+        auto* action = new QAction(text, this);
+        action->setIconText(iconText);
+        action->setObjectName(name);
+        action->setShortcut(key);
+        action->setShortcutContext(Qt::WindowShortcut);
+        action->setStatusTip(tip);
+        action->setToolTip(key.isEmpty() ? tip
+                                         : QStringLiteral("%1 (%2)").arg(
+                                               tip, key.toString(QKeySequence::NativeText)));
+        return action;
+    };
+    m_newLayer = make(tr("&New Paint Layer"), tr("New"), QStringLiteral("actionNewPaintLayer"),
+                      tr("Add a paint layer above the current one"),
+                      QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
+    connect(m_newLayer, &QAction::triggered, this, [this] { addLayer(false); });
+    m_newFill = make(tr("New F&ill Layer"), tr("Fill"), QStringLiteral("actionNewFillLayer"),
+                     tr("Add a layer of uniform channel values (the brush's) above the current "
+                        "one"));
+    connect(m_newFill, &QAction::triggered, this, [this] { addLayer(true); });
+    m_duplicate = make(tr("&Duplicate Paint Layer"), tr("Duplicate"),
+                       QStringLiteral("actionDuplicatePaintLayer"),
+                       tr("Copy the current paint layer"), QKeySequence(Qt::CTRL | Qt::Key_J));
+    connect(m_duplicate, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        const auto copy = m_document.duplicatePaintLayer(selectedLayer(), changes);
+        finish(copy ? core::Status{} : core::Status{core::Error{copy.error()}}, changes);
+    });
+    m_delete = make(tr("D&elete Paint Layer"), tr("Delete"),
+                    QStringLiteral("actionDeletePaintLayer"), tr("Delete the current paint layer"));
+    connect(m_delete, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        finish(m_document.deletePaintLayer(selectedLayer(), changes), changes);
+    });
+    m_mergeDown = make(tr("&Merge Down"), tr("Merge"), QStringLiteral("actionMergePaintLayerDown"),
+                       tr("Merge the current paint layer into the one below"),
+                       QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(m_mergeDown, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        finish(m_document.mergePaintLayerDown(selectedLayer(), changes), changes);
+    });
+    m_flatten =
+        make(tr("&Flatten Paint Layers"), tr("Flatten"), QStringLiteral("actionFlattenPaintLayers"),
+             tr("Merge every visible paint layer into one"));
+    connect(m_flatten, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        finish(m_document.flattenPaintLayers(tr("Flattened").toStdString(), changes), changes);
+    });
+    m_addMask = make(tr("Add M&ask"), tr("Mask"), QStringLiteral("actionAddPaintLayerMask"),
+                     tr("Give the current paint layer a mask (black hides, white shows)"));
+    connect(m_addMask, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        finish(m_document.addPaintLayerMask(selectedLayer(), changes), changes);
+    });
+    m_deleteMask =
+        make(tr("Delete Mas&k"), tr("No Mask"), QStringLiteral("actionDeletePaintLayerMask"),
+             tr("Remove the current paint layer's mask"));
+    connect(m_deleteMask, &QAction::triggered, this, [this] {
+        core::PaintChanges changes;
+        finish(m_document.deletePaintLayerMask(selectedLayer(), changes), changes);
+    });
+    m_rename = new QAction(tr("&Rename…"), this);
+    m_rename->setObjectName(QStringLiteral("actionRenamePaintLayer"));
+    connect(m_rename, &QAction::triggered, this, [this] {
+        if (QTreeWidgetItem* item = rowOf(selectedLayer()); item && selectedLayer() != 0)
+            m_list->editItem(item, NameColumn);
+    });
+}
+
+QList<QAction*> PaintLayersPanel::operationActions() const {
+    return {m_newLayer,  m_newFill, m_duplicate, m_delete,  nullptr,
+            m_mergeDown, m_flatten, nullptr,     m_addMask, m_deleteMask};
+}
+
+const core::TextureTarget* PaintLayersPanel::target() const {
+    if (m_document.meshSerial() == 0 || !m_document.hasPaintTarget())
+        return nullptr;
+    return dynamic_cast<const core::TextureTarget*>(m_document.paintTarget());
+}
+
+QString PaintLayersPanel::disabledReason() const {
+    if (m_document.meshSerial() == 0)
+        return tr("Open a model to paint in paint layers.");
+    if (m_document.paintTargetKind() != core::PaintTargetKind::Texture)
+        return tr("Vertex colours have no paint layers: choose a texture as the paint target "
+                  "(in the brush bar) to paint in paint layers.");
+    return {};
+}
+
+std::uint64_t PaintLayersPanel::selectedLayer() const {
+    const core::TextureTarget* texture = target();
+    return texture ? texture->selection().layer : 0;
+}
+
+QTreeWidgetItem* PaintLayersPanel::rowOf(std::uint64_t id) const {
+    for (int i = 0; i < m_list->topLevelItemCount(); ++i) {
+        QTreeWidgetItem* item = m_list->topLevelItem(i);
+        if (item->data(0, kIdRole).toULongLong() == id)
+            return item;
+    }
+    return nullptr;
+}
+
+void PaintLayersPanel::refresh() {
+    const QScopedValueRollback guard(m_updating, true);
+    const QString reason = disabledReason();
+    m_reason->setText(reason);
+    m_reason->setVisible(!reason.isEmpty());
+    m_list->setEnabled(reason.isEmpty());
+    m_list->clear();
+
+    const core::TextureTarget* texture = target();
+    const core::PaintSelection selection = texture ? texture->selection() : core::PaintSelection{};
+    if (reason.isEmpty()) {
+        if (texture) {
+            const core::PaintLayerStack& stack = texture->layerStack();
+            for (std::size_t i = stack.size(); i-- > 0;) {
+                const core::PaintLayer& layer = stack.layer(i);
+                auto* item = new QTreeWidgetItem(m_list);
+                item->setData(0, kIdRole, QVariant::fromValue<qulonglong>(layer.id));
+                item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable |
+                               Qt::ItemIsDragEnabled);
+                item->setIcon(EyeColumn,
+                              QIcon(QPixmap::fromImage(eyeIcon(layer.settings.visible, kEye))));
+                item->setToolTip(EyeColumn, layer.settings.visible ? tr("Shown: click to hide")
+                                                                   : tr("Hidden: click to show"));
+                item->setIcon(ThumbnailColumn,
+                              QIcon(QPixmap::fromImage(layerThumbnail(layer, kThumbnail))));
+                QString name = QString::fromStdString(layer.settings.name);
+                item->setText(NameColumn, name);
+                QStringList notes;
+                if (layer.settings.kind == core::PaintLayerKind::Fill)
+                    notes << tr("fill layer");
+                if (layer.settings.blend != core::BlendMode::Normal)
+                    notes << blendModeText(layer.settings.blend);
+                if (layer.settings.opacity < 1.0f)
+                    notes << tr("%1 %").arg(std::lround(layer.settings.opacity * 100.0f));
+                item->setToolTip(NameColumn, notes.isEmpty()
+                                                 ? name
+                                                 : tr("%1 (%2)").arg(name, notes.join(tr(", "))));
+                if (layer.mask) {
+                    const bool maskSelected = selection == core::PaintSelection{layer.id, true};
+                    item->setIcon(MaskColumn, QIcon(QPixmap::fromImage(maskThumbnail(
+                                                  *layer.mask, kThumbnail, maskSelected))));
+                    item->setToolTip(MaskColumn, maskSelected
+                                                     ? tr("Painting the mask (black hides, white "
+                                                          "shows)")
+                                                     : tr("Mask: click to paint it"));
+                }
+            }
+        }
+        auto* base = new QTreeWidgetItem(m_list);
+        base->setData(0, kIdRole, QVariant::fromValue<qulonglong>(0));
+        base->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable);
+        base->setText(NameColumn, tr("Base"));
+        base->setToolTip(NameColumn, tr("The model's own surface (painting here changes it "
+                                        "directly)"));
+        if (texture)
+            base->setIcon(ThumbnailColumn, QIcon(QPixmap::fromImage(
+                                               baseThumbnail(texture->layerStack(), kThumbnail))));
+        if (QTreeWidgetItem* current = rowOf(selection.layer))
+            m_list->setCurrentItem(current);
+    }
+    updateControls();
+}
+
+void PaintLayersPanel::updateControls() {
+    const QScopedValueRollback guard(m_updating, true);
+    const core::TextureTarget* texture = target();
+    const bool enabled = disabledReason().isEmpty();
+    const core::PaintLayer* layer = nullptr;
+    std::size_t index = 0, count = 0;
+    if (texture) {
+        const core::PaintLayerStack& stack = texture->layerStack();
+        count = stack.size();
+        if (const auto at = stack.indexOf(texture->selection().layer)) {
+            index = *at;
+            layer = &stack.layer(*at);
+        }
+    }
+    m_controls->setEnabled(layer != nullptr);
+    const core::PaintLayerSettings settings = layer ? layer->settings : core::PaintLayerSettings{};
+    m_opacity->setValue(int(std::lround(settings.opacity * 100.0f)));
+    m_opacityText->setText(tr("%1 %").arg(m_opacity->value()));
+    m_blend->setCurrentIndex(m_blend->findData(int(settings.blend)));
+    m_lock->setChecked(settings.lockTransparency);
+
+    m_newLayer->setEnabled(enabled);
+    m_newFill->setEnabled(enabled);
+    m_duplicate->setEnabled(layer != nullptr);
+    m_delete->setEnabled(layer != nullptr);
+    m_mergeDown->setEnabled(layer != nullptr && index > 0);
+    m_flatten->setEnabled(enabled && count > 0);
+    m_addMask->setEnabled(layer != nullptr && !layer->mask);
+    m_deleteMask->setEnabled(layer != nullptr && layer->mask != nullptr);
+    m_rename->setEnabled(layer != nullptr);
+}
+
+void PaintLayersPanel::finish(const core::Status& status, const core::PaintChanges& changes) {
+    if (!status)
+        emit message(tr("Paint layers: %1").arg(QString::fromStdString(status.error())));
+    refresh();
+    if (status)
+        emit changed(changes);
+}
+
+void PaintLayersPanel::addLayer(bool fill) {
+    core::PaintLayerSettings settings;
+    if (fill) {
+        settings.kind = core::PaintLayerKind::Fill;
+        settings.name = tr("Fill %1").arg(m_nextNumber++).toStdString();
+        // The brush's channels: what it would paint, everywhere.
+        const core::Brush& brush = m_document.brush();
+        const glm::vec3 srgb{core::linearToSrgb(brush.color.r) / 255.0f,
+                             core::linearToSrgb(brush.color.g) / 255.0f,
+                             core::linearToSrgb(brush.color.b) / 255.0f};
+        if (brush.paintBaseColor)
+            settings.fill.baseColor = srgb;
+        if (brush.paintRoughness)
+            settings.fill.roughness = brush.roughness;
+        if (brush.paintMetallic)
+            settings.fill.metallic = brush.metallic;
+        if (settings.fill == core::ChannelValues{})
+            settings.fill.baseColor = srgb;
+    } else {
+        settings.name = tr("Paint Layer %1").arg(m_nextNumber++).toStdString();
+    }
+    core::PaintChanges changes;
+    const auto id = m_document.addPaintLayer(std::move(settings), changes);
+    finish(id ? core::Status{} : core::Status{core::Error{id.error()}}, changes);
+}
+
+void PaintLayersPanel::select(std::uint64_t id, bool mask) {
+    const core::Status status = m_document.selectPaint({id, mask});
+    if (!status)
+        emit message(tr("Paint layers: %1").arg(QString::fromStdString(status.error())));
+    refresh();
+    emit selectionChanged();
+}
+
+void PaintLayersPanel::onItemClicked(QTreeWidgetItem* item, int column) {
+    if (m_updating || !item)
+        return;
+    const std::uint64_t id = item->data(0, kIdRole).toULongLong();
+    const core::TextureTarget* texture = target();
+    const core::PaintLayer* layer = nullptr;
+    if (texture && id != 0)
+        if (const auto index = texture->layerStack().indexOf(id))
+            layer = &texture->layerStack().layer(*index);
+    if (layer && column == EyeColumn) {
+        const bool visible = !layer->settings.visible;
+        editSettings(id,
+                     [visible](core::PaintLayerSettings& settings) { settings.visible = visible; });
+        return;
+    }
+    select(id, layer && layer->mask && column == MaskColumn);
+}
+
+void PaintLayersPanel::onItemChanged(QTreeWidgetItem* item, int column) {
+    if (m_updating || column != NameColumn)
+        return;
+    const QString name = item->text(NameColumn).trimmed();
+    const std::uint64_t id = item->data(0, kIdRole).toULongLong();
+    if (name.isEmpty()) {
+        // Deferred: the editor is still closing.
+        QTimer::singleShot(0, this, &PaintLayersPanel::refresh);
+        return;
+    }
+    QTimer::singleShot(0, this, [this, id, name] {
+        editSettings(id, [&name](core::PaintLayerSettings& settings) {
+            settings.name = name.toStdString();
+        });
+    });
+}
+
+template <typename Edit> void PaintLayersPanel::editSettings(std::uint64_t id, Edit edit) {
+    const core::TextureTarget* texture = target();
+    if (!texture || id == 0)
+        return;
+    const auto index = texture->layerStack().indexOf(id);
+    if (!index)
+        return;
+    core::PaintLayerSettings settings = texture->layerStack().layer(*index).settings;
+    edit(settings);
+    core::PaintChanges changes;
+    finish(m_document.setPaintLayerSettings(id, std::move(settings), changes), changes);
+}
+
+void PaintLayersPanel::moveToRow(std::uint64_t id, int row) {
+    const core::TextureTarget* texture = target();
+    if (!texture)
+        return;
+    const int count = int(texture->layerStack().size());
+    if (count == 0)
+        return;
+    row = std::clamp(row, 0, count - 1);
+    core::PaintChanges changes;
+    finish(m_document.movePaintLayer(id, std::size_t(count - 1 - row), changes), changes);
+}
+
+void PaintLayersPanel::showContextMenu(const QPoint& position) {
+    if (!disabledReason().isEmpty())
+        return;
+    if (QTreeWidgetItem* item = m_list->itemAt(position)) {
+        const std::uint64_t id = item->data(0, kIdRole).toULongLong();
+        if (id != selectedLayer())
+            select(id, false);
+    }
+    QMenu menu(this);
+    for (QAction* action : operationActions()) {
+        if (action)
+            menu.addAction(action);
+        else
+            menu.addSeparator();
+    }
+    menu.addSeparator();
+    menu.addAction(m_rename);
+    menu.exec(m_list->viewport()->mapToGlobal(position));
+}
+
+} // namespace ui

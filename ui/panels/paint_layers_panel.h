@@ -1,0 +1,112 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+
+#include <QWidget>
+
+#include "core/paint/paint_target.h"
+
+class QAction;
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QSlider;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace core {
+class Document;
+}
+
+namespace ui {
+
+/**
+ * The Paint Layers panel (a dock): the document's paint-layer stack, the uppermost layer on top
+ * and the read-only Base at the bottom. Per row an eye (click: show or hide), a thumbnail of the
+ * layer's tiles, the name (double-click: rename) and, with a mask, the mask's thumbnail (click:
+ * paint the mask). Below: opacity, blend mode and lock transparency of the current layer, and
+ * buttons for every operation (also in the context menu and, through actions(), a menu of the
+ * window). Rows are dragged to reorder. Each operation is a call on the document (one undo step);
+ * changed() then reports what the composite changed. Selecting a row is no undo step.
+ * For a model painted in vertex colours the panel is disabled and says why.
+ */
+class PaintLayersPanel : public QWidget {
+    Q_OBJECT
+
+public:
+    explicit PaintLayersPanel(core::Document& document, QWidget* parent = nullptr);
+
+    /** Shows the document's stack as it is now (call after strokes, undo, a new model, ...). */
+    void refresh();
+
+    QAction* newLayerAction() const { return m_newLayer; }
+    QAction* newFillLayerAction() const { return m_newFill; }
+    QAction* duplicateAction() const { return m_duplicate; }
+    QAction* deleteAction() const { return m_delete; }
+    QAction* mergeDownAction() const { return m_mergeDown; }
+    QAction* flattenAction() const { return m_flatten; }
+    QAction* addMaskAction() const { return m_addMask; }
+    QAction* deleteMaskAction() const { return m_deleteMask; }
+    /** Every operation, in menu order (nullptr: a separator). */
+    QList<QAction*> operationActions() const;
+
+    /** The list (top row: the uppermost layer; last row: Base), for tests. */
+    QTreeWidget* list() const { return m_list; }
+    /** The row of the layer with id (0: Base), or nullptr. */
+    QTreeWidgetItem* rowOf(std::uint64_t id) const;
+    /** Why the panel is disabled (empty while it is enabled). */
+    QString disabledReason() const;
+
+    /** The list's columns. */
+    enum Column { EyeColumn, ThumbnailColumn, NameColumn, MaskColumn };
+
+signals:
+    /** An operation changed the document; changes is what the composite changed. */
+    void changed(const core::PaintChanges& changes);
+    /** Where painting goes changed (no undo step). */
+    void selectionChanged();
+    /** An operation could not be done: why, for the status bar. */
+    void message(const QString& text);
+
+private:
+    void createActions();
+    /** The target's stack, or nullptr (no model, vertex colours, or no target made yet). */
+    const core::TextureTarget* target() const;
+    /** The selected layer's id (0: Base). */
+    std::uint64_t selectedLayer() const;
+    /** Reports an operation's result: changed() when it worked, message() when not. */
+    void finish(const core::Status& status, const core::PaintChanges& changes);
+    void addLayer(bool fill);
+    void select(std::uint64_t id, bool mask);
+    void onItemClicked(QTreeWidgetItem* item, int column);
+    void onItemChanged(QTreeWidgetItem* item, int column);
+    /** Applies a change of the current layer's settings made by edit. */
+    template <typename Edit> void editSettings(std::uint64_t id, Edit edit);
+    /** A drop put the layer with id at top-down row (of the layer rows). */
+    void moveToRow(std::uint64_t id, int row);
+    void showContextMenu(const QPoint& position);
+    void updateControls();
+
+    core::Document& m_document;
+    QLabel* m_reason = nullptr;
+    QTreeWidget* m_list = nullptr;
+    QWidget* m_controls = nullptr;
+    QSlider* m_opacity = nullptr;
+    QLabel* m_opacityText = nullptr;
+    QComboBox* m_blend = nullptr;
+    QCheckBox* m_lock = nullptr;
+    QAction* m_newLayer = nullptr;
+    QAction* m_newFill = nullptr;
+    QAction* m_duplicate = nullptr;
+    QAction* m_delete = nullptr;
+    QAction* m_mergeDown = nullptr;
+    QAction* m_flatten = nullptr;
+    QAction* m_addMask = nullptr;
+    QAction* m_deleteMask = nullptr;
+    QAction* m_rename = nullptr;
+    bool m_updating = false;
+    int m_nextNumber = 1;
+};
+
+} // namespace ui
