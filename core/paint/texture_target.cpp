@@ -8,6 +8,7 @@
 
 #include "core/base/parallel.h"
 #include "core/paint/paint_context.h"
+#include "core/paint/texture_tile_layout.h"
 #include "core/paint/uv_raster.h"
 
 namespace core {
@@ -16,35 +17,6 @@ using uv::scanUv;
 using uv::setUpUv;
 using uv::UvTriangle;
 using uv::wrapIndex;
-
-namespace {
-
-/** Tiles of kTextureTile texels → merged rectangles along tile rows (keys sorted). */
-void texelRectsFromTiles(std::vector<TileKey>& keys, const std::vector<TextureTarget::Page>& pages,
-                         std::vector<TexelRect>& out) {
-    std::sort(keys.begin(), keys.end());
-    for (std::size_t i = 0; i < keys.size();) {
-        const TextureTarget::Page& page = pages[keys[i].page];
-        const std::uint32_t row = keys[i].tile / std::uint32_t(page.tilesX);
-        std::size_t j = i + 1;
-        while (j < keys.size() && keys[j].page == keys[i].page &&
-               keys[j].tile == keys[j - 1].tile + 1 &&
-               keys[j].tile / std::uint32_t(page.tilesX) == row)
-            ++j;
-        const int tx0 = int(keys[i].tile % std::uint32_t(page.tilesX));
-        const int tx1 = int(keys[j - 1].tile % std::uint32_t(page.tilesX));
-        TexelRect rect;
-        rect.page = keys[i].page;
-        rect.x = tx0 * kTextureTile;
-        rect.y = int(row) * kTextureTile;
-        rect.width = std::min((tx1 + 1) * kTextureTile, page.image.width) - rect.x;
-        rect.height = std::min(rect.y + kTextureTile, page.image.height) - rect.y;
-        out.push_back(rect);
-        i = j;
-    }
-}
-
-} // namespace
 
 // ---------------------------------------------------------------------------------------------
 // TextureTarget
@@ -118,15 +90,6 @@ void buildPadding(TextureTarget::Page& page, int padding) {
 
 bool isWhite(const glm::vec4& v) {
     return v == glm::vec4(1.0f);
-}
-
-static_assert(TiledPlane::kPlaneTile == kTextureTile, "paint layers tile as the pages do");
-
-/** Bytes per texel of a paint layer's channels as one undo tile: RGBA, roughness, metallic. */
-constexpr std::size_t kLayerTexelBytes = 8;
-/** Where a channel's plane starts in such a tile of n texels, and its bytes per texel. */
-std::size_t channelOffset(std::size_t channel, std::size_t n) {
-    return channel == 0 ? 0 : channel == 1 ? n * 4 : n * 6;
 }
 
 } // namespace
@@ -382,163 +345,6 @@ const Image& TextureTarget::metallicRoughnessPage(std::size_t i) const {
 
 const std::vector<std::uint8_t>& TextureTarget::basePixels(std::size_t i) const {
     return m_stack->baseColor(std::uint32_t(i));
-}
-
-std::size_t TextureTarget::bytes() const {
-    std::size_t total = sizeof(*this);
-    for (const Page& p : m_pages)
-        total += p.original.rgba.capacity() + p.coverage.capacity() +
-                 p.padOffsets.capacity() * sizeof(std::uint32_t) +
-                 p.padPairs.capacity() * sizeof(PadPair);
-    for (std::uint32_t p = 0; p < m_pages.size(); ++p)
-        total += m_stack->baseColor(p).capacity() + m_stack->baseMetallicRoughness(p).capacity() +
-                 page(p).rgba.capacity() + metallicRoughnessPage(p).rgba.capacity();
-    return total + m_stack->layerBytes() + contextBytes();
-}
-
-std::size_t TextureTarget::tileBytes(TileKey key) const {
-    if (key.page >= m_pages.size())
-        return 0;
-    const Page& p = m_pages[key.page];
-    if (key.tile >= std::uint32_t(p.tilesX * p.tilesY))
-        return 0;
-    const int tx = int(key.tile % std::uint32_t(p.tilesX)),
-              ty = int(key.tile / std::uint32_t(p.tilesX));
-    const int w = std::min(kTextureTile, p.image.width - tx * kTextureTile);
-    const int h = std::min(kTextureTile, p.image.height - ty * kTextureTile);
-    const std::size_t texels = std::size_t(w) * std::size_t(h);
-    if (key.plane == 0)
-        return texels * 4;
-    if (!layerOfPlane(key.plane))
-        return 0;
-    return texels * ((key.plane & 1) != 0 ? 1 : kLayerTexelBytes);
-}
-
-std::optional<std::size_t> TextureTarget::layerOfPlane(std::uint64_t plane) const {
-    return m_stack->indexOf(plane / 2);
-}
-
-namespace {
-
-/**
- * Calls fn(byte offset in the page, byte offset in the tile, bytes) for each row of tile of page
- * p, whose bytes are size (tileBytes()).
- */
-template <typename Fn>
-void forEachTileRow(const TextureTarget::Page& p, std::uint32_t tile, std::size_t size, Fn&& fn) {
-    const int tx = int(tile % std::uint32_t(p.tilesX)), ty = int(tile / std::uint32_t(p.tilesX));
-    const int w = std::min(kTextureTile, p.image.width - tx * kTextureTile);
-    const std::size_t rowBytes = std::size_t(w) * 4;
-    for (std::size_t r = 0; r < size / rowBytes; ++r) {
-        const std::size_t y = std::size_t(ty * kTextureTile) + r;
-        fn((y * std::size_t(p.image.width) + std::size_t(tx * kTextureTile)) * 4, r * rowBytes,
-           rowBytes);
-    }
-}
-
-} // namespace
-
-bool TextureTarget::readTile(TileKey key, std::span<std::uint8_t> out) const {
-    const std::size_t size = tileBytes(key);
-    if (size == 0 || out.size() != size)
-        return false;
-    const TileKey planeTile{key.page, key.tile};
-    if (key.plane != 0) {
-        const PaintLayer& layer = m_stack->layer(*layerOfPlane(key.plane));
-        if ((key.plane & 1) != 0) {
-            if (layer.mask)
-                return layer.mask->readTile(planeTile, out);
-            std::fill(out.begin(), out.end(), std::uint8_t(255));
-            return true;
-        }
-        const std::size_t n = size / kLayerTexelBytes;
-        for (std::size_t c = 0; c < kPaintChannels; ++c) {
-            const std::size_t bytes = n * std::size_t(channelTexelBytes(PaintChannel(c)));
-            const std::span<std::uint8_t> part = out.subspan(channelOffset(c, n), bytes);
-            if (layer.channels[c])
-                layer.channels[c]->readTile(planeTile, part);
-            else
-                std::fill(part.begin(), part.end(), std::uint8_t(0));
-        }
-        return true;
-    }
-    const Page& p = m_pages[key.page];
-    const std::vector<std::uint8_t>& base = m_stack->baseColor(key.page);
-    forEachTileRow(p, key.tile, size, [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
-        std::memcpy(out.data() + tileAt, &base[pageAt], n);
-    });
-    return true;
-}
-
-bool TextureTarget::writeTile(TileKey key, std::span<const std::uint8_t> bytes) {
-    const std::size_t size = tileBytes(key);
-    if (size == 0 || bytes.size() != size)
-        return false;
-    const TileKey planeTile{key.page, key.tile};
-    if (key.plane != 0) {
-        const std::size_t index = *layerOfPlane(key.plane);
-        if ((key.plane & 1) != 0) {
-            m_stack->maskPlane(index).writeTile(planeTile, bytes);
-        } else {
-            const std::size_t n = size / kLayerTexelBytes;
-            for (std::size_t c = 0; c < kPaintChannels; ++c) {
-                const auto channel = PaintChannel(c);
-                const std::span<const std::uint8_t> part =
-                    bytes.subspan(channelOffset(c, n), n * std::size_t(channelTexelBytes(channel)));
-                const bool blank =
-                    std::all_of(part.begin(), part.end(), [](std::uint8_t b) { return b == 0; });
-                if (!blank || m_stack->layer(index).channels[c])
-                    m_stack->channelPlane(index, channel)->writeTile(planeTile, part);
-            }
-        }
-    } else {
-        Page& p = m_pages[key.page];
-        std::vector<std::uint8_t>& base = m_stack->baseColor(key.page);
-        forEachTileRow(p, key.tile, size,
-                       [&](std::size_t pageAt, std::size_t tileAt, std::size_t n) {
-                           std::memcpy(&base[pageAt], bytes.data() + tileAt, n);
-                       });
-    }
-    // Undo and redo write tiles outside strokes: the composite follows at once.
-    if (!inStroke())
-        m_stack->updateTile(key.page, key.tile);
-    return true;
-}
-
-void TextureTarget::addChanges(std::vector<TileKey>& keys, PaintChanges& out) const {
-    // The composite changes where any plane of a tile did.
-    for (TileKey& key : keys)
-        key.plane = 0;
-    std::sort(keys.begin(), keys.end());
-    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-    texelRectsFromTiles(keys, m_pages, out.texels);
-}
-
-PaintChanges TextureTarget::refresh(std::vector<TileKey> tiles) {
-    for (TileKey& key : tiles)
-        key.plane = 0;
-    std::sort(tiles.begin(), tiles.end());
-    tiles.erase(std::unique(tiles.begin(), tiles.end()), tiles.end());
-    tiles.erase(std::remove_if(tiles.begin(), tiles.end(),
-                               [&](const TileKey& k) {
-                                   return k.page >= m_pages.size() ||
-                                          k.tile >= std::uint32_t(m_pages[k.page].tilesX *
-                                                                  m_pages[k.page].tilesY);
-                               }),
-                tiles.end());
-    parallelRanges(int(tiles.size()), 0, [&](int, int begin, int end) {
-        for (int k = begin; k < end; ++k)
-            m_stack->updateTile(tiles[std::size_t(k)].page, tiles[std::size_t(k)].tile);
-    });
-    PaintChanges changes;
-    addChanges(tiles, changes);
-    return changes;
-}
-
-void TextureTarget::refreshTouched() {
-    Context& c = *m_context;
-    for (const std::uint32_t slot : c.touched)
-        m_stack->updateTile(c.slots[slot].key.page, c.slots[slot].key.tile);
 }
 
 void TextureTarget::strokeStarted() {
