@@ -393,11 +393,7 @@ bool AssimpFlattener::run(Mesh& out) {
         m_mesh.materials.empty())
         m_mesh.materials.push_back(Material{"default", glm::vec4(1.0f), -1});
 
-    if (!m_anyUv)
-        m_mesh.uvs.clear();
-    if (!m_anyColor)
-        m_mesh.colors.clear();
-    fillMissingNormals(m_mesh, m_hasNormal);
+    finishFlattened(m_mesh, m_anyUv, m_anyColor, m_hasNormal);
     out = std::move(m_mesh);
     return true;
 }

@@ -581,12 +581,7 @@ bool GltfFlattener::run(Mesh& out) {
             m_mesh.triangleMaterial.end())
         m_mesh.materials.pop_back();
 
-    if (!m_anyUv)
-        m_mesh.uvs.clear();
-    if (!m_anyColor)
-        m_mesh.colors.clear();
-    // Vertices of primitives without normals get normals computed from the triangles.
-    fillMissingNormals(m_mesh, m_hasNormal);
+    finishFlattened(m_mesh, m_anyUv, m_anyColor, m_hasNormal);
     out = std::move(m_mesh);
     return true;
 }

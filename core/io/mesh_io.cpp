@@ -77,7 +77,11 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
     return used;
 }
 
-void fillMissingNormals(Mesh& mesh, const std::vector<char>& hasNormal) {
+void finishFlattened(Mesh& mesh, bool anyUv, bool anyColor, const std::vector<char>& hasNormal) {
+    if (!anyUv)
+        mesh.uvs.clear();
+    if (!anyColor)
+        mesh.colors.clear();
     const auto withNormal =
         static_cast<std::size_t>(std::count(hasNormal.begin(), hasNormal.end(), 1));
     if (withNormal == 0) {

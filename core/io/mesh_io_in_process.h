@@ -84,11 +84,12 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
                                         const LoadLimits& limits);
 
 /**
- * The normals of a flattened mesh whose primitives came with (hasNormal[v] = 1) or without them:
- * none came with normals, so all are left for loadMesh to compute (normals cleared); some did, so
- * the vertices of the others get normals computed from the triangles.
+ * The last step of flattening a scene into mesh: UVs and colours are dropped where no primitive
+ * had them (anyUv, anyColor); for normals, hasNormal[v] says whether vertex v came with one: none
+ * did, so all are left for loadMesh to compute (normals cleared); some did, so the others get
+ * normals computed from the triangles.
  */
-void fillMissingNormals(Mesh& mesh, const std::vector<char>& hasNormal);
+void finishFlattened(Mesh& mesh, bool anyUv, bool anyColor, const std::vector<char>& hasNormal);
 
 /** p as floats, or false if it does not fit (a double beyond float range is not castable). */
 bool toFloat(const glm::dvec3& p, glm::vec3& out);
