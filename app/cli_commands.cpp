@@ -60,6 +60,15 @@ makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context) {
     return std::unique_ptr<core::LayerCapturer>(std::move(gl));
 }
 
+void applyTargetArgs(const std::string& target, int resolution, core::PaintTargetOptions& options) {
+    if (target == "texture")
+        options.kind = core::PaintTargetKind::Texture;
+    else if (target == "vertex-colors")
+        options.kind = core::PaintTargetKind::VertexColors;
+    if (resolution > 0)
+        options.resolution = resolution;
+}
+
 int fail(const std::string& message) {
     std::cerr << "layerpaint-cli: " << message << '\n';
     return 1;

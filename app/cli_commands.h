@@ -80,6 +80,12 @@ makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 
 /** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
 int fail(const std::string& message);
+
+/**
+ * The command line's --target ("texture", "vertex-colors" or empty: unchanged) and --resolution
+ * (0: unchanged) applied to options.
+ */
+void applyTargetArgs(const std::string& target, int resolution, core::PaintTargetOptions& options);
 /**
  * The view of --orbit / --camera / --size for mesh; without either, fallback if given, else the
  * mesh framed, turned 30° and raised 20°.

@@ -64,12 +64,7 @@ int runExport(const ExportArgs& args) {
     }
     if (!args.target.empty() || args.resolution > 0) {
         core::PaintTargetOptions options = doc.paintTargetOptions();
-        if (args.target == "texture")
-            options.kind = core::PaintTargetKind::Texture;
-        else if (args.target == "vertex-colors")
-            options.kind = core::PaintTargetKind::VertexColors;
-        if (args.resolution > 0)
-            options.resolution = args.resolution;
+        applyTargetArgs(args.target, args.resolution, options);
         if (const core::Status s = doc.setPaintTarget(options); !s)
             return fail(args.input + ": " + s.error());
     }

@@ -64,12 +64,7 @@ int runPaint(const PaintArgs& args) {
     if (script->target || !args.target.empty() || args.resolution > 0) {
         core::PaintTargetOptions options =
             script->target ? *script->target : doc.paintTargetOptions();
-        if (args.target == "texture")
-            options.kind = core::PaintTargetKind::Texture;
-        else if (args.target == "vertex-colors")
-            options.kind = core::PaintTargetKind::VertexColors;
-        if (args.resolution > 0)
-            options.resolution = args.resolution;
+        applyTargetArgs(args.target, args.resolution, options);
         // A texture on a model without UVs makes the automatic UV layout here.
         if (const core::Status s = doc.setPaintTarget(options); !s)
             return fail((script->target && args.target.empty() ? args.script : args.model) + ": " +
