@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <future>
 #include <mutex>
 #include <new>
 #include <string>
@@ -242,10 +243,24 @@ void refillSpare(const std::string& program) {
     if (!p)
         return;
     std::lock_guard lock(g_spareMutex);
-    if (g_spare.pid > 0)
+    if (!g_keepSpare || g_spare.pid > 0)
         discard(*p);
     else
         g_spare = std::move(*p);
+}
+
+/**
+ * refillSpare() on another thread, so that a load does not wait for the next importer to start
+ * (posix_spawn returns only once the program runs). At most one at a time; the last is waited
+ * for when the program ends.
+ */
+void refillSpareLater(const std::string& program) {
+    static std::mutex refillMutex;
+    static std::future<void> refill;
+    std::lock_guard lock(refillMutex);
+    if (refill.valid() && refill.wait_for(std::chrono::seconds(0)) != std::future_status::ready)
+        return;
+    refill = std::async(std::launch::async, [program] { refillSpare(program); });
 }
 
 /**
@@ -438,7 +453,7 @@ Result<importer::Received> runImporter(const std::string& path,
         importer::readFrames(run, limits, [&run](double f) { return run.report(f); });
     const bool answered = received.mesh || received.image || received.error;
     const int status = run.finish(!answered || !received.malformed.empty());
-    refillSpare(*program); // now: while loading, it would compete for the processor
+    refillSpareLater(*program); // now: while loading, it would compete for the processor
 
     const std::string stopped = "the importer stopped: ";
     if (received.cancelled || run.stop() == ImporterRun::Stop::Cancelled)
