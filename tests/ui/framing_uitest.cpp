@@ -254,7 +254,9 @@ TEST_F(FramingTest, SmallestWindowKeepsAUsableViewAndWholeStatusTexts) {
         EXPECT_NEAR(restored[std::size_t(i)], widths[std::size_t(i)], 2)
             << docks[i]->objectName().toStdString();
     EXPECT_NEAR(viewport()->width(), viewWidth, 2);
-    // With room, the texts are whole again.
+    // With room, the texts are whole again (once the status bar has laid them out).
+    (void)QTest::qWaitFor(
+        [&] { return layerInfo->property("shownText").toString() == layerInfo->text(); }, 2000);
     EXPECT_EQ(layerInfo->property("shownText").toString(), layerInfo->text());
 }
 
