@@ -38,6 +38,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/brush_panel.h"
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
@@ -94,39 +95,9 @@ public:
     }
 };
 
-class ArtistTest : public ::testing::Test {
+class ArtistTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        createWindow();
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    void createWindow() {
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1180, 760);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
-
-    void openTrefoil() {
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
-    }
+    ArtistTest() : WindowTest({1180, 760}) {}
 
     const core::TextureTarget* texture() {
         return dynamic_cast<const core::TextureTarget*>(document().paintTarget());
@@ -219,8 +190,6 @@ protected:
     QAction* action(const char* name) const {
         return m_window->findChild<QAction*>(QString::fromLatin1(name));
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(ArtistTest, PenPressureWidensTheStrokeAndTheEraserEndErasesIt) {
@@ -539,7 +508,7 @@ TEST_F(ArtistTest, DockLayoutSurvivesARestart) {
     ASSERT_TRUE(m_window->close()); // saves the layout, as quitting does
     m_window.reset();
 
-    createWindow();
+    showWindow();
     brushDock = m_window->findChild<QDockWidget*>(QStringLiteral("brushDock"));
     colorDock = m_window->findChild<QDockWidget*>(QStringLiteral("colorDock"));
     graphDock = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
@@ -614,7 +583,7 @@ TEST_F(ArtistTest, PreferencesRoundTrip) {
 
     // A new window starts with them, and the dialog shows them again.
     m_window.reset();
-    createWindow();
+    showWindow();
     EXPECT_EQ(m_window->preferences().undoBudgetMiB, 64);
     EXPECT_EQ(m_window->preferences().language, QStringLiteral("zh_CN"));
     EXPECT_EQ(viewport()->cameraMapping(), ui::CameraMapping::Blender);
@@ -651,7 +620,7 @@ TEST_F(ArtistTest, RecentColoursArePersisted) {
     EXPECT_EQ(colors->recentColors().size(), ui::ColorPanel::kMaxRecent);
     const QList<QColor> recent = colors->recentColors();
     m_window.reset();
-    createWindow();
+    showWindow();
     EXPECT_EQ(m_window->colorPanel()->recentColors(), recent);
     // A click on one makes it the brush colour.
     auto* button = m_window->colorPanel()->findChild<QToolButton*>(QStringLiteral("recentColor1"));

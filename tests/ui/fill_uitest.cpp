@@ -24,6 +24,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/fill_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/tools/tool.h"
@@ -34,36 +35,9 @@ namespace {
 
 using namespace ui_test;
 
-class FillTest : public ::testing::Test {
+class FillTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1100, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
-    QUndoStack* undoStack() const { return m_window->undoStack(); }
-
-    void openTrefoil() {
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
-    }
+    FillTest() : WindowTest({1100, 720}) {}
 
     const core::TextureTarget& texture() {
         return dynamic_cast<const core::TextureTarget&>(*document().paintTarget());
@@ -129,8 +103,6 @@ protected:
         QApplication::sendEvent(viewport(), &leave);
         QApplication::processEvents();
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 bool greenish(QRgb c) {

@@ -42,6 +42,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/project_file.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
 #include "ui/shell/main_window.h"
@@ -108,29 +109,21 @@ void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {
     return true;
 }
 
-class FirstSessionTest : public ::testing::Test {
+class FirstSessionTest : public WindowTest {
 protected:
+    FirstSessionTest() : WindowTest({1260, 900}) {}
+
     void SetUp() override {
-        QSettings().clear();
         QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
         ASSERT_TRUE(m_dir.isValid());
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 900);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        WindowTest::SetUp();
     }
 
     void TearDown() override {
-        m_window.reset();
+        WindowTest::TearDown();
         QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
-        QSettings().clear();
     }
 
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
     QString path(const QString& name) const { return m_dir.filePath(name); }
     QAction* action(const char* name) const {
         return m_window->findChild<QAction*>(QString::fromLatin1(name));
@@ -231,7 +224,6 @@ protected:
     void selectAllText() { key(Qt::Key_A, Qt::ControlModifier, QStringLiteral("\x01")); }
 
     QTemporaryDir m_dir;
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 // Item 4: a layer-aware stroke and the pop-ups it caused are one undo step, and undoing back to

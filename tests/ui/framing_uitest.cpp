@@ -21,6 +21,7 @@
 #include <glm/geometric.hpp>
 
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/viewport.h"
 
@@ -33,23 +34,9 @@ QString enginePath() {
                           "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
 }
 
-class FramingTest : public ::testing::Test {
+class FramingTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1000, 700);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
+    FramingTest() : WindowTest({1000, 700}) {}
 
     bool openAndWait(const QString& source) {
         QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
@@ -66,8 +53,6 @@ protected:
         QTest::qWait(50);
         QApplication::processEvents();
     }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
 
     /**
      * How far inside the view (device pixels) the nearest projected corner of the model's
@@ -115,8 +100,6 @@ protected:
             QTest::mouseMove(viewport(), start + delta * i / 10);
         QTest::mouseRelease(viewport(), Qt::MiddleButton, modifiers, start + delta);
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(FramingTest, FrameAllFitsTheEngineInWideAndTallViews) {

@@ -25,6 +25,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
@@ -36,27 +37,9 @@ using namespace ui_test;
 const QString kCrasher =
     QStringLiteral(LAYERPAINT_TEST_DATA) + QStringLiteral("/crashers/off-assimp-segv.off");
 
-class ImporterTest : public ::testing::Test {
+class ImporterTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1100, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
-    QImage grab() const { return viewport()->grabFramebuffer(); }
+    ImporterTest() : WindowTest({1100, 720}) {}
 
     std::vector<std::uint8_t> pageBytes() const {
         const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
@@ -88,8 +71,6 @@ protected:
             }
         return {};
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 /**

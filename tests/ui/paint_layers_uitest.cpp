@@ -21,6 +21,7 @@
 
 #include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/brush_panel.h"
 #include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/main_window.h"
@@ -32,17 +33,14 @@ namespace {
 using namespace ui_test;
 using Panel = ui::PaintLayersPanel;
 
-class PaintLayersUiTest : public ::testing::Test {
+class PaintLayersUiTest : public WindowTest {
 protected:
+    PaintLayersUiTest() : WindowTest({1260, 860}) {}
+
     void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 860);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow(); // shortcuts reach the active window only
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        WindowTest::SetUp();
+        if (HasFatalFailure())
+            return;
         QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
         QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
         m_window->openFile(QStringLiteral("builtin:trefoil"));
@@ -54,10 +52,6 @@ protected:
         ASSERT_NE(dock, nullptr);
         dock->raise();
         QApplication::processEvents();
-    }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
     }
 
     core::Document& doc() { return m_window->document(); }
@@ -113,8 +107,6 @@ protected:
         return item->icon(Panel::ThumbnailColumn).pixmap(32, 32).toImage();
     }
     void undo() { QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier); }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(PaintLayersUiTest, AddPaintMultiplyHideAndUndoEachStep) {

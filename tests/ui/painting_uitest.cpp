@@ -26,6 +26,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
@@ -34,37 +35,14 @@ namespace {
 
 using namespace ui_test;
 
-class PaintingTest : public ::testing::Test {
+class PaintingTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
-    core::Document& document() const { return m_window->document(); }
-    QUndoStack* undoStack() const { return m_window->undoStack(); }
-    QImage grab() const { return viewport()->grabFramebuffer(); }
+    PaintingTest() : WindowTest({1260, 720}) {}
 
     void openTrefoil() {
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        WindowTest::openTrefoil();
+        if (HasFatalFailure())
+            return;
         ASSERT_TRUE(viewport()->isShowingLayers());
     }
 
@@ -135,8 +113,6 @@ protected:
         if (frameMs)
             *frameMs = total / steps;
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(PaintingTest, DragPaintsAndUndoRedoRestoreTheTextureExactly) {

@@ -24,6 +24,7 @@
 
 #include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
@@ -38,22 +39,9 @@ QString enginePath() {
                           "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb");
 }
 
-class RegionGraphTest : public ::testing::Test {
+class RegionGraphTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 900);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
+    RegionGraphTest() : WindowTest({1260, 900}) {}
 
     ui::RegionGraphPanel* panel() const { return m_window->regionGraphPanel(); }
     QGraphicsView* view() const { return panel()->graphicsView(); }
@@ -104,8 +92,6 @@ protected:
                     return {x, y};
         return {-1, -1};
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(RegionGraphTest, ZoomPanFitFilterHoverAndClickOnTheEngine) {

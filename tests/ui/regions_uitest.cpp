@@ -21,6 +21,7 @@
 
 #include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/hidden_regions_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/tools/region_tools.h"
@@ -31,36 +32,22 @@ namespace {
 
 using namespace ui_test;
 
-class RegionsTest : public ::testing::Test {
+class RegionsTest : public WindowTest {
 protected:
+    RegionsTest() : WindowTest({1100, 720}) {}
+
     void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1100, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        WindowTest::SetUp();
+        if (HasFatalFailure())
+            return;
+        WindowTest::openTrefoil();
+        if (HasFatalFailure())
+            return;
         ASSERT_TRUE(viewport()->isShowingLayers());
         // Device pixels are logical ones here, so the layers' pixels are the widget's.
         ASSERT_EQ(viewport()->devicePixelRatioF(), 1.0);
     }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
 
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
-    core::Document& document() const { return m_window->document(); }
-    QUndoStack* undoStack() const { return m_window->undoStack(); }
     const core::LayerStack& stack() const { return document().layers()->stack; }
 
     /** Layer (1-based) of the visible fragment at p, 0 for background. */
@@ -88,8 +75,6 @@ protected:
             }
         return best;
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(RegionsTest, ShiftClickCyclesThroughTheRegionsAtAPixelAndUndoRestores) {

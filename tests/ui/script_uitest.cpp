@@ -21,6 +21,7 @@
 #include "core/document/document.h"
 #include "core/io/project_file.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
@@ -34,23 +35,16 @@ using namespace ui_test;
 constexpr int kSaveTimeoutMs = 60000;
 constexpr int kCliTimeoutMs = 300000;
 
-class ScriptSessionTest : public ::testing::Test {
+class ScriptSessionTest : public WindowTest {
 protected:
+    ScriptSessionTest() : WindowTest({1260, 900}) {}
+
     void SetUp() override {
-        QSettings().clear();
         ASSERT_TRUE(m_dir.isValid());
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 900);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        WindowTest::SetUp();
+        if (HasFatalFailure())
+            return;
         open();
-    }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
     }
 
     void open() {
@@ -63,8 +57,6 @@ protected:
         ASSERT_EQ(viewport()->devicePixelRatioF(), 1.0);
     }
 
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
     const core::LayerStack& stack() const { return document().layers()->stack; }
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
@@ -114,7 +106,6 @@ protected:
     }
 
     QTemporaryDir m_dir;
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(ScriptSessionTest, TheHeadlessToolReplaysAGuiSessionToTheSameProject) {

@@ -34,6 +34,7 @@
 #include "core/document/document.h"
 #include "render/layer_compositor.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/panels/layers_panel.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/panels/segmentation_controls.h"
@@ -70,18 +71,14 @@ int hueOf(std::uint32_t region) {
     return QColor::fromRgbF(c.r, c.g, c.b).hsvHue();
 }
 
-class SegmentationTest : public ::testing::Test {
+class SegmentationTest : public WindowTest {
 protected:
+    SegmentationTest() : WindowTest({1100, 720}) {}
+
     void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1100, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        // Window shortcuts only fire in the active window.
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        WindowTest::SetUp();
+        if (HasFatalFailure())
+            return;
         // Every adopted build must describe the view on screen at that moment.
         QObject::connect(builder(), &ui::LayerBuilder::layersBuilt, [this] {
             const core::Layers* layers = document().layers();
@@ -94,25 +91,13 @@ protected:
         });
     }
 
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
-    core::Document& document() const { return m_window->document(); }
     ui::RegionGraphPanel* graph() const { return m_window->regionGraphPanel(); }
-    QImage grab() const { return viewport()->grabFramebuffer(); }
 
     /** Opens the trefoil and waits until the layers of its first view are shown. */
     void openTrefoil() {
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        WindowTest::openTrefoil();
+        if (HasFatalFailure())
+            return;
         ASSERT_TRUE(viewport()->isShowingLayers());
     }
 
@@ -123,8 +108,6 @@ protected:
             QTest::mouseMove(viewport(), start + delta * i / 5);
         QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, start + delta);
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(SegmentationTest, BuildsLayersWhenTheViewSettles) {

@@ -23,19 +23,20 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
 namespace {
 
-using ui_test::kBuildTimeoutMs;
-using ui_test::kLoadTimeoutMs;
+using namespace ui_test;
 
-class UvLayoutUiTest : public ::testing::Test {
+class UvLayoutUiTest : public WindowTest {
 protected:
+    UvLayoutUiTest() : WindowTest({1260, 720}) {}
+
     void SetUp() override {
-        QSettings().clear();
         ASSERT_TRUE(m_dir.isValid());
         // A box of eight vertices without texture coordinates: vertex colours would be coarse.
         QFile obj(m_dir.filePath(QStringLiteral("box.obj")));
@@ -45,21 +46,9 @@ protected:
                   "f 5 6 8\nf 5 8 7\nf 2 1 3\nf 2 3 4\nf 1 5 7\nf 1 7 3\n"
                   "f 6 2 4\nf 6 4 8\nf 7 8 4\nf 7 4 3\nf 1 2 6\nf 1 6 5\n");
         obj.close();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
+        WindowTest::SetUp();
     }
 
-    core::Document& document() const { return m_window->document(); }
-    ui::Viewport* viewport() const { return m_window->viewport(); }
     const core::TextureTarget* texture() const {
         return document().hasPaintTarget()
                    ? dynamic_cast<const core::TextureTarget*>(document().paintTarget())
@@ -67,7 +56,6 @@ protected:
     }
 
     QTemporaryDir m_dir;
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(UvLayoutUiTest, ModelWithoutUvsGetsAnAutomaticLayoutAndTheChoiceIsUndoable) {

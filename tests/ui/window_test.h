@@ -1,0 +1,75 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSize>
+#include <QTest>
+#include <QUndoStack>
+
+#include <memory>
+
+#include "core/document/document.h"
+#include "tests/ui/ui_test_util.h"
+#include "ui/shell/main_window.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
+
+namespace ui_test {
+
+/**
+ * A test with its own main window: settings cleared before and after, the window shown at the
+ * fixture's size and active (shortcuts reach the active window only), error dialogs off.
+ */
+class WindowTest : public ::testing::Test {
+protected:
+    explicit WindowTest(QSize size) : m_size(size) {}
+
+    void SetUp() override {
+        QSettings().clear();
+        showWindow();
+    }
+
+    void TearDown() override {
+        m_window.reset();
+        QSettings().clear();
+    }
+
+    /** A new window in place of the current one (as a new start of the application). */
+    void showWindow() {
+        m_window.reset();
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(m_size);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
+    core::Document& document() const { return m_window->document(); }
+    QUndoStack* undoStack() const { return m_window->undoStack(); }
+    QImage grab() const { return viewport()->grabFramebuffer(); }
+
+    /** Opens the built-in trefoil and waits until its depth layers are built. */
+    void openTrefoil() {
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+        m_window->openFile(QStringLiteral("builtin:trefoil"));
+        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+    }
+
+    std::unique_ptr<ui::MainWindow> m_window;
+
+private:
+    QSize m_size;
+};
+
+} // namespace ui_test
