@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "core/document/document.h"
+#include "core/document/project_state.h"
 #include "core/document/script.h"
 #include "tests/core/test_scenes.h"
 
@@ -202,6 +203,30 @@ TEST(StrokeTools, ScriptOperationsSetTheStabilizerAndDrawLines) {
     EXPECT_FALSE(s.runner.run({{"op", "line"}, {"to", {1, 2}}}).ok());
     EXPECT_FALSE(s.runner.run({{"op", "line"}, {"from", {1, 2}}, {"to", {1, 2, 7}}}).ok());
     EXPECT_EQ(s.doc.history().undoCount(), 2u);
+}
+
+TEST(StrokeTools, AProjectKeepsTheStabilizerSettings) {
+    core::ProjectState state;
+    state.brush.stabilizer = true;
+    state.brush.stabilizerLength = 55.0f;
+    state.brush.stabilizerSmoothing = 0.25f;
+    state.brush.stabilizerCatchUp = false;
+    const core::Result<core::ProjectState> back =
+        core::projectStateFromJson(core::projectStateToJson(state));
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_TRUE(back->brush.stabilizer);
+    EXPECT_EQ(back->brush.stabilizerLength, 55.0f);
+    EXPECT_EQ(back->brush.stabilizerSmoothing, 0.25f);
+    EXPECT_FALSE(back->brush.stabilizerCatchUp);
+
+    // A value out of range keeps the default, with a warning.
+    nlohmann::json j = core::projectStateToJson(state);
+    j["stabilizer"]["length"] = -4;
+    std::vector<std::string> warnings;
+    const core::Result<core::ProjectState> bad = core::projectStateFromJson(j, &warnings);
+    ASSERT_TRUE(bad.ok()) << bad.error();
+    EXPECT_EQ(bad->brush.stabilizerLength, core::Brush{}.stabilizerLength);
+    EXPECT_FALSE(warnings.empty());
 }
 
 } // namespace
