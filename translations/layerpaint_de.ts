@@ -707,16 +707,8 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>&amp;Pinsel</translation>
     </message>
     <message>
-        <source>Paint strokes with the brush</source>
-        <translation>Mit dem Pinsel Striche malen</translation>
-    </message>
-    <message>
         <source>&amp;Eraser</source>
         <translation>&amp;Radierer</translation>
-    </message>
-    <message>
-        <source>Erase paint back to the model&apos;s original colours</source>
-        <translation>Farbe bis auf die ursprünglichen Farben des Modells wegradieren</translation>
     </message>
     <message>
         <source>&amp;Fill</source>
@@ -745,10 +737,6 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>&amp;Pop Up</source>
         <translation>&amp;Hervorholen</translation>
-    </message>
-    <message>
-        <source>Bring the region below the visible one to the front (or Shift+click); click again to cycle</source>
-        <translation>Die Region unter der sichtbaren nach vorn holen (oder Umschalt+Klick); erneut klicken, um durchzuschalten</translation>
     </message>
     <message>
         <source>Cannot fill: %1</source>
@@ -985,6 +973,34 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Vertex colours hold base colour only: roughness and metallic need a texture as the paint target.</source>
         <translation>Vertexfarben tragen nur die Grundfarbe: Rauheit und Metallisch brauchen eine Textur als Malziel.</translation>
+    </message>
+    <message>
+        <source>Paint strokes with the brush; Shift+click draws a straight line on from the last stroke</source>
+        <translation>Mit dem Pinsel Striche malen; Umschalt+Klick zieht eine gerade Linie vom Ende des letzten Strichs</translation>
+    </message>
+    <message>
+        <source>Erase paint back to the model&apos;s original colours; Shift+click erases along a straight line from the last stroke</source>
+        <translation>Farbe bis auf die ursprünglichen Farben des Modells wegradieren; Umschalt+Klick radiert entlang einer geraden Linie vom letzten Strich</translation>
+    </message>
+    <message>
+        <source>Bring the region below the visible one to the front (or Ctrl+Shift+click); click again to cycle</source>
+        <translation>Die Region unter der sichtbaren nach vorn holen (oder Strg+Umschalt+Klick); erneut klicken, um durchzuschalten</translation>
+    </message>
+    <message>
+        <source>Straight line from the end of the last stroke</source>
+        <translation>Gerade Linie vom Ende des letzten Strichs</translation>
+    </message>
+    <message>
+        <source>No stroke to go on from: a dot here; the next Shift+click draws a line from it</source>
+        <translation>Kein Strich zum Fortsetzen: hier ein Punkt; der nächste Umschalt+Klick zieht eine Linie von ihm aus</translation>
+    </message>
+    <message>
+        <source>Stroke Stabili&amp;zer</source>
+        <translation>Strich-Stabi&amp;lisator</translation>
+    </message>
+    <message>
+        <source>Strokes follow the pointer on a string, smoothing out wobbles (length and smoothing in the Brush panel)</source>
+        <translation>Striche folgen dem Zeiger an einer Schnur und glätten Zittern (Länge und Glättung im Pinsel-Bedienfeld)</translation>
     </message>
 </context>
 <context>
@@ -1837,6 +1853,49 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     <message>
         <source>Automatic (%1)</source>
         <translation>Automatisch (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::StabilizerBox</name>
+    <message>
+        <source>Stroke sta&amp;bilizer</source>
+        <translation>Strich-&amp;Stabilisator</translation>
+    </message>
+    <message>
+        <source>The brush follows the pointer on a string: small wobbles never reach the stroke, for pen and mouse alike</source>
+        <translation>Der Pinsel folgt dem Zeiger an einer Schnur: kleines Zittern erreicht den Strich nie, mit Stift wie mit Maus</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Length of the string: how far the pointer moves before the brush follows</source>
+        <translation>Länge der Schnur: wie weit sich der Zeiger bewegt, bevor der Pinsel folgt</translation>
+    </message>
+    <message>
+        <source>Len&amp;gth</source>
+        <translation>&amp;Länge</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Averages the pointer&apos;s positions before the string pulls: 0 takes each as it comes</source>
+        <translation>Mittelt die Zeigerpositionen, bevor die Schnur zieht: 0 nimmt jede, wie sie kommt</translation>
+    </message>
+    <message>
+        <source>Smoothi&amp;ng</source>
+        <translation>Glä&amp;ttung</translation>
+    </message>
+    <message>
+        <source>C&amp;atch up at release</source>
+        <translation>Beim Loslassen &amp;nachziehen</translation>
+    </message>
+    <message>
+        <source>On release the stroke goes on to where the pointer is; off, it ends where the brush was</source>
+        <translation>Beim Loslassen führt der Strich bis zum Zeiger weiter; sonst endet er, wo der Pinsel war</translation>
     </message>
 </context>
 <context>

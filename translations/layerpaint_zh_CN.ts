@@ -706,16 +706,8 @@ connectivity %3 ms, regions %4 ms
         <translation>画笔(&amp;B)</translation>
     </message>
     <message>
-        <source>Paint strokes with the brush</source>
-        <translation>用画笔画出笔画</translation>
-    </message>
-    <message>
         <source>&amp;Eraser</source>
         <translation>橡皮擦(&amp;E)</translation>
-    </message>
-    <message>
-        <source>Erase paint back to the model&apos;s original colours</source>
-        <translation>擦除颜料，恢复模型原来的颜色</translation>
     </message>
     <message>
         <source>&amp;Fill</source>
@@ -744,10 +736,6 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>&amp;Pop Up</source>
         <translation>弹出(&amp;P)</translation>
-    </message>
-    <message>
-        <source>Bring the region below the visible one to the front (or Shift+click); click again to cycle</source>
-        <translation>将可见区域下面的区域提到最前（或按住 Shift 点击）；再次点击可依次切换</translation>
     </message>
     <message>
         <source>Cannot fill: %1</source>
@@ -984,6 +972,34 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Vertex colours hold base colour only: roughness and metallic need a texture as the paint target.</source>
         <translation>顶点颜色只包含基础颜色：粗糙度和金属度需要以纹理作为绘画目标。</translation>
+    </message>
+    <message>
+        <source>Paint strokes with the brush; Shift+click draws a straight line on from the last stroke</source>
+        <translation>用画笔画出笔画；按住 Shift 点击从上一笔的末端画一条直线</translation>
+    </message>
+    <message>
+        <source>Erase paint back to the model&apos;s original colours; Shift+click erases along a straight line from the last stroke</source>
+        <translation>擦除颜料，恢复模型原来的颜色；按住 Shift 点击沿从上一笔起的直线擦除</translation>
+    </message>
+    <message>
+        <source>Bring the region below the visible one to the front (or Ctrl+Shift+click); click again to cycle</source>
+        <translation>将可见区域下面的区域提到最前（或按住 Ctrl+Shift 点击）；再次点击可依次切换</translation>
+    </message>
+    <message>
+        <source>Straight line from the end of the last stroke</source>
+        <translation>从上一笔末端画出的直线</translation>
+    </message>
+    <message>
+        <source>No stroke to go on from: a dot here; the next Shift+click draws a line from it</source>
+        <translation>没有可接续的笔画：此处画一个点；下一次按住 Shift 点击将从这里画线</translation>
+    </message>
+    <message>
+        <source>Stroke Stabili&amp;zer</source>
+        <translation>笔画稳定器(&amp;Z)</translation>
+    </message>
+    <message>
+        <source>Strokes follow the pointer on a string, smoothing out wobbles (length and smoothing in the Brush panel)</source>
+        <translation>笔画用一根绳子跟随指针，消除抖动（长度和平滑在画笔面板中设置）</translation>
     </message>
 </context>
 <context>
@@ -1830,6 +1846,49 @@ Smaller splits the view into more regions.</source>
     <message>
         <source>Automatic (%1)</source>
         <translation>自动（%1）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::StabilizerBox</name>
+    <message>
+        <source>Stroke sta&amp;bilizer</source>
+        <translation>笔画稳定器(&amp;B)</translation>
+    </message>
+    <message>
+        <source>The brush follows the pointer on a string: small wobbles never reach the stroke, for pen and mouse alike</source>
+        <translation>画笔用一根绳子跟随指针：细小的抖动不会进入笔画，数位笔和鼠标都一样</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> 像素</translation>
+    </message>
+    <message>
+        <source>Length of the string: how far the pointer moves before the brush follows</source>
+        <translation>绳子的长度：指针移动多远之后画笔才跟随</translation>
+    </message>
+    <message>
+        <source>Len&amp;gth</source>
+        <translation>长度(&amp;G)</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Averages the pointer&apos;s positions before the string pulls: 0 takes each as it comes</source>
+        <translation>在绳子拉动之前对指针位置取平均：0 表示逐个直接使用</translation>
+    </message>
+    <message>
+        <source>Smoothi&amp;ng</source>
+        <translation>平滑(&amp;N)</translation>
+    </message>
+    <message>
+        <source>C&amp;atch up at release</source>
+        <translation>松开时追上(&amp;A)</translation>
+    </message>
+    <message>
+        <source>On release the stroke goes on to where the pointer is; off, it ends where the brush was</source>
+        <translation>松开时笔画延续到指针所在处；关闭时笔画在画笔所在处结束</translation>
     </message>
 </context>
 <context>

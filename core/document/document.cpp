@@ -49,6 +49,7 @@ void Document::clearLayers() {
         m_history.dropStaleOrders(m_layersSerial);
     }
     m_tracker.clearLayers();
+    m_lineStart.reset(); // pixels of another view
     m_layers.reset();
     m_order = {};
     m_ranks.clear();
@@ -425,7 +426,9 @@ Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
     m_session.strokePoint(point);
     m_strokeOrderBefore = m_order.state();
     m_dabs.clear();
-    m_tracker.startStroke(curved(point), m_brush, m_dabs);
+    m_strokeEnd.reset();
+    const StrokePoint start = m_stabilizer.begin(curved(point), m_brush);
+    m_tracker.startStroke(start, m_brush, m_dabs);
     target->beginStroke(m_brush);
     paintDabs(changes);
     return {};
@@ -437,7 +440,8 @@ void Document::moveStroke(const StrokePoint& point, PaintChanges& changes) {
         return;
     m_session.strokePoint(point);
     m_dabs.clear();
-    m_tracker.moveStroke(curved(point), m_dabs);
+    if (const std::optional<StrokePoint> tip = m_stabilizer.move(curved(point)))
+        m_tracker.moveStroke(*tip, m_dabs);
     paintDabs(changes);
 }
 
@@ -448,6 +452,8 @@ StrokePoint Document::curved(StrokePoint point) const {
 
 void Document::paintDabs(PaintChanges& changes) {
     const auto start = std::chrono::steady_clock::now();
+    if (!m_dabs.empty())
+        m_strokeEnd = LineStart{m_dabs.back().center, m_dabs.back().layer};
     for (const Dab& dab : m_dabs) {
         if (m_autoPopUp && m_tracker.layerAware())
             popUpUnder(dab);
@@ -477,8 +483,79 @@ void Document::popUpUnder(const Dab& dab) {
 }
 
 void Document::endStroke() {
+    PaintChanges changes;
+    endStroke(changes);
+}
+
+void Document::endStroke(PaintChanges& changes) {
+    changes.clear();
+    // Catch-up: the tip goes the rest of the string to where the pointer was released.
+    const std::optional<StrokePoint> rest = m_stabilizer.release();
+    if (rest && m_tracker.inStroke() && m_paintTarget && m_paintTarget->inStroke() && m_layers) {
+        m_dabs.clear();
+        m_tracker.moveStroke(*rest, m_dabs);
+        paintDabs(changes);
+    }
     m_tracker.endStroke();
     m_session.endStroke();
+    if (m_strokeEnd)
+        m_lineStart = m_strokeEnd;
+    m_strokeEnd.reset();
+    pushStrokeStep();
+}
+
+Status Document::lineTo(const StrokePoint& point, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_session.noteState(*this);
+    m_session.add(
+        {{"op", "line-to"}, {"to", {point.position.x, point.position.y, point.pressure}}});
+    if (!m_lineStart)
+        return paintLine(point, 0, point, changes);
+    const StrokePoint from{m_lineStart->position, point.pressure};
+    return paintLine(from, m_lineStart->layer, point, changes);
+}
+
+Status Document::line(const StrokePoint& from, const StrokePoint& to, PaintChanges& changes) {
+    changes.clear();
+    if (!m_layers)
+        return Error{"the layers of this view are not built yet"};
+    if (m_tracker.inStroke())
+        endStroke();
+    m_session.noteState(*this);
+    m_session.add({{"op", "line"},
+                   {"from", {from.position.x, from.position.y, from.pressure}},
+                   {"to", {to.position.x, to.position.y, to.pressure}}});
+    return paintLine(from, 0, to, changes);
+}
+
+Status Document::paintLine(const StrokePoint& from, std::uint32_t layer, const StrokePoint& to,
+                           PaintChanges& changes) {
+    Result<PaintTarget*> ready = readyToPaint();
+    if (!ready)
+        return ready.takeError();
+    PaintTarget* target = *ready;
+    m_strokeOrderBefore = m_order.state();
+    m_strokeEnd.reset();
+    m_dabs.clear();
+    m_tracker.startStroke(curved(from), m_brush, m_dabs, layer);
+    target->beginStroke(m_brush);
+    paintDabs(changes);
+    m_dabs.clear();
+    m_tracker.moveStroke(curved(to), m_dabs);
+    paintDabs(changes); // adds to what the first dab painted
+    m_tracker.endStroke();
+    if (m_strokeEnd)
+        m_lineStart = m_strokeEnd;
+    m_strokeEnd.reset();
+    pushStrokeStep();
+    return {};
+}
+
+void Document::pushStrokeStep() {
     if (!m_paintTarget || !m_paintTarget->inStroke())
         return;
     // The stroke and the pop-ups it caused are one step.

@@ -17,6 +17,7 @@
 #include "core/paint/flood_fill.h"
 #include "core/paint/layout_target.h"
 #include "core/paint/paint_target.h"
+#include "core/paint/stroke_stabilizer.h"
 #include "core/paint/stroke_tracker.h"
 #include "core/regions/region_order.h"
 
@@ -222,9 +223,33 @@ public:
     Status beginStroke(const StrokePoint& point, PaintChanges& changes);
     /** On-Mouse-Drag: tracks and paints the dabs up to point; changes gets what they touched. */
     void moveStroke(const StrokePoint& point, PaintChanges& changes);
-    /** Ends the stroke and records it, with the pop-ups it caused, as one undo step. */
+    /**
+     * Ends the stroke and records it, with the pop-ups it caused, as one undo step. A stabilized
+     * stroke with catch-up (Brush::stabilizerCatchUp) first paints on to the last input point;
+     * changes receives what that painted.
+     */
+    void endStroke(PaintChanges& changes);
     void endStroke();
     bool inStroke() const { return m_tracker.inStroke(); }
+    /**
+     * The stroke stabilizer of the stroke in progress (Brush::stabilizer): the input points of
+     * beginStroke() and moveStroke() pass through it, so the GUI and scripts share it; the GUI
+     * draws its string from here.
+     */
+    const StrokeStabilizer& stabilizer() const { return m_stabilizer; }
+    /**
+     * A straight line (Shift+click) from the end of the previous stroke or line to point, as one
+     * undo step: tracked like a stroke, layer-aware from the depth layer the previous stroke
+     * ended on, so a line can run on behind an occluder. Without a previous stroke in this
+     * view it paints one dab at point. Needs layers (an Error otherwise).
+     */
+    Status lineTo(const StrokePoint& point, PaintChanges& changes);
+    /** A straight line from from (starting on the surface visible there) to to; one step. */
+    Status line(const StrokePoint& from, const StrokePoint& to, PaintChanges& changes);
+    /** Where the next lineTo() starts (the last dab of the previous stroke), if anywhere. */
+    std::optional<glm::vec2> lineStart() const {
+        return m_lineStart ? std::optional<glm::vec2>(m_lineStart->position) : std::nullopt;
+    }
     /** Dabs painted by the last beginStroke()/moveStroke() and the time spent on the target. */
     struct DabStats {
         std::size_t dabs = 0;
@@ -302,6 +327,11 @@ public:
 
 private:
     void paintDabs(PaintChanges& changes);
+    /** The straight stroke of line() and lineTo(), starting on layer (0: the visible one). */
+    Status paintLine(const StrokePoint& from, std::uint32_t layer, const StrokePoint& to,
+                     PaintChanges& changes);
+    /** Records the stroke painted on the target as one step (with its pop-ups). */
+    void pushStrokeStep();
     /** point with the pressure curve applied. */
     StrokePoint curved(StrokePoint point) const;
     /** Applies a paint-layer change (both directions: it swaps), adding what changed. */
@@ -354,7 +384,15 @@ private:
     Brush m_brush;
     PressureCurve m_pressureCurve;
     StrokeTracker m_tracker;
-    std::vector<Dab> m_dabs; // reused between calls
+    StrokeStabilizer m_stabilizer;
+    /** The last dab of a stroke: where a straight line goes on from. */
+    struct LineStart {
+        glm::vec2 position{0.0f};
+        std::uint32_t layer = 0; // 0: conventional, start on the visible surface
+    };
+    std::optional<LineStart> m_strokeEnd; // of the stroke in progress
+    std::optional<LineStart> m_lineStart; // of the previous stroke
+    std::vector<Dab> m_dabs;              // reused between calls
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;

@@ -243,6 +243,11 @@ Json projectStateToJson(const ProjectState& s) {
                                       ? "vertex-colors"
                                       : "texture"},
                          {"resolution", s.target.resolution}};
+    // The stroke stabilizer (Brush's stabilizer fields), beside the brush's other settings.
+    j["stabilizer"] = {{"on", s.brush.stabilizer},
+                       {"length", num(s.brush.stabilizerLength)},
+                       {"smoothing", num(s.brush.stabilizerSmoothing)},
+                       {"catch_up", s.brush.stabilizerCatchUp}};
     j["layer_aware"] = s.layerAware;
     j["pop_up"] = {{"automatic", s.autoPopUp}, {"transparency", s.popUpTransparency}};
     if (!s.recoveryFor.empty())
@@ -346,6 +351,13 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
         else if (kind != "auto")
             r.warn("kind", "is not \"texture\", \"vertex-colors\" or \"auto\"");
         r.integer("resolution", s.target.resolution, 512, 8192);
+    }
+    {
+        Reader r = root.child("stabilizer");
+        r.boolean("on", s.brush.stabilizer);
+        r.number("length", s.brush.stabilizerLength, 0.0f, 1000.0f);
+        r.number("smoothing", s.brush.stabilizerSmoothing, 0.0f, 1.0f);
+        r.boolean("catch_up", s.brush.stabilizerCatchUp);
     }
     root.boolean("layer_aware", s.layerAware);
     {

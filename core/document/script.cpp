@@ -13,6 +13,7 @@
 #include "core/document/document.h"
 #include "core/document/project_state.h"
 #include "core/document/script_layers.h"
+#include "core/document/script_stroke.h"
 #include "core/paint/flood_fill.h"
 
 namespace core {
@@ -260,7 +261,8 @@ json setBrushOperation(const Brush& b, const PressureCurve& curve) {
             {"pressure_radius", b.pressureRadius},
             {"pressure_opacity", b.pressureOpacity},
             {"pressure_curve", curve.gamma},
-            {"channels", brushChannelsJson(b)}};
+            {"channels", brushChannelsJson(b)},
+            {"stabilizer", brushStabilizerJson(b)}};
 }
 
 json viewOperation(const Camera& c, const View& view) {
@@ -358,6 +360,9 @@ Status ScriptRunner::run(const json& op) {
             b.eraser = boolean(op, "eraser", b.eraser);
             b.pressureRadius = boolean(op, "pressure_radius", b.pressureRadius);
             b.pressureOpacity = boolean(op, "pressure_opacity", b.pressureOpacity);
+            if (op.contains("stabilizer"))
+                if (Status st = applyBrushStabilizer(b, op["stabilizer"]); !st)
+                    throw OpError{st.error()};
             PressureCurve curve = m_doc.pressureCurve();
             curve.gamma = number(op, "pressure_curve", curve.gamma, PressureCurve::kMinGamma,
                                  PressureCurve::kMaxGamma);
@@ -515,6 +520,10 @@ Status ScriptRunner::run(const json& op) {
                 throw OpError{"no surface to orbit about at [" + std::to_string(int(at.x)) + ", " +
                               std::to_string(int(at.y)) + "]"};
             setView(m_view.orbitedAbout(*pivot, yaw, pitch));
+        } else if (isLineOperation(name)) {
+            need();
+            if (const std::optional<Status> lineOp = runLineOperation(m_doc, name, op); !*lineOp)
+                throw OpError{lineOp->error()};
         } else if (const std::optional<Status> layerOp = runLayerOperation(m_doc, name, op)) {
             if (!*layerOp)
                 throw OpError{layerOp->error()};

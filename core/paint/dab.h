@@ -47,6 +47,13 @@ struct Brush {
     bool paintMetallic = false;
     float roughness = 0.5f;
     float metallic = 0.0f;
+    // The stroke stabilizer (core/paint/stroke_stabilizer.h): a lazy-mouse string of
+    // stabilizerLength pixels, the input averaged by stabilizerSmoothing (0 none .. 1 most)
+    // first; with stabilizerCatchUp the stroke reaches the release point.
+    bool stabilizer = false;
+    float stabilizerLength = 30.0f;
+    float stabilizerSmoothing = 0.0f;
+    bool stabilizerCatchUp = true;
 
     friend bool operator==(const Brush&, const Brush&) = default;
 

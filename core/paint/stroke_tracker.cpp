@@ -100,9 +100,10 @@ void StrokeTracker::clearLayers() {
 }
 
 std::size_t StrokeTracker::startStroke(const StrokePoint& point, const Brush& brush,
-                                       std::vector<Dab>& out) {
+                                       std::vector<Dab>& out, std::uint32_t layer) {
     m_inStroke = false;
     m_tracking = false;
+    m_startLayer = layer;
     if (!sane(point.position))
         return 0;
     m_brush = brush;
@@ -200,9 +201,19 @@ std::size_t StrokeTracker::placeDab(glm::vec2 center, float pressure, std::vecto
         return 0; // background
     // On-Mouse-Down takes the visible layer, On-Mouse-Drag the previous dab's Mt. A sample on
     // background or outside Mt leaves the tracking state at the last painted dab.
-    const std::uint32_t fragment = m_tracking ? trackedFragment(pixel) : visibleFragment(pixel);
+    std::uint32_t fragment = kNone;
+    if (m_tracking) {
+        fragment = trackedFragment(pixel);
+    } else if (m_startLayer > 0) {
+        fragment = m_stack->fragment(pixel, m_startLayer);
+        if (fragment == kNone || isHidden(fragment))
+            fragment = visibleFragment(pixel);
+    } else {
+        fragment = visibleFragment(pixel);
+    }
     if (fragment == kNone)
         return 0;
+    m_startLayer = 0;
 
     beginMaps();
     m_center = center;

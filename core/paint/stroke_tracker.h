@@ -94,9 +94,13 @@ public:
     /**
      * On-Mouse-Down: starts a stroke with brush at point and appends its first dab to out unless
      * the point is ignored (background, or nothing visible there). Until a layer-aware dab has
-     * been painted, later dabs start the tracking the same way. Returns the dabs appended (0, 1).
+     * been painted, later dabs start the tracking the same way. A layer (1-based, layer-aware
+     * mode) starts on that depth layer's fragment of the pixel instead of the visible one (where
+     * the pixel has one that is not hidden), as a straight line from the end of a stroke behind
+     * an occluder does. Returns the dabs appended (0, 1).
      */
-    std::size_t startStroke(const StrokePoint& point, const Brush& brush, std::vector<Dab>& out);
+    std::size_t startStroke(const StrokePoint& point, const Brush& brush, std::vector<Dab>& out,
+                            std::uint32_t layer = 0);
     /**
      * On-Mouse-Drag: continues the stroke to point. The path is resampled every Brush::spacing ×
      * radius (radius after pressure, pressure interpolated along the path) and each sample is
@@ -182,9 +186,10 @@ private:
     // The stroke and its resampling.
     bool m_inStroke = false;
     Brush m_brush;
-    StrokePoint m_last;         // the end of the input path so far
-    double m_carry = 0.0;       // path length from the last dab to m_last
-    float m_dabPressure = 1.0f; // pressure at the last dab (sets the spacing)
+    StrokePoint m_last;             // the end of the input path so far
+    double m_carry = 0.0;           // path length from the last dab to m_last
+    float m_dabPressure = 1.0f;     // pressure at the last dab (sets the spacing)
+    std::uint32_t m_startLayer = 0; // the layer the tracking starts on, 0 = the visible one
 
     // The maps of the last painted dab (generation m_gen).
     bool m_tracking = false; // the last painted dab was layer-aware: its Mt answers lookups

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The region operations in the GUI through real Qt event delivery: Shift+click and the pop-up
+// The region operations in the GUI through real Qt event delivery: Ctrl+Shift+click and the pop-up
 // tool cycle the regions at a pixel, paint-to-hide on the segmentation map with its panel,
 // undo of order changes, reset, and layer-aware rotation about a popped-up surface point.
 // Needs a display with OpenGL 4.5 (run under xvfb-run; Mesa llvmpipe is enough).
@@ -77,14 +77,14 @@ protected:
     }
 };
 
-TEST_F(RegionsTest, ShiftClickCyclesThroughTheRegionsAtAPixelAndUndoRestores) {
+TEST_F(RegionsTest, CtrlShiftClickCyclesThroughTheRegionsAtAPixelAndUndoRestores) {
     const QPoint p = deepPixel(2);
     ASSERT_GE(p.x(), 0) << "no pixel with two layers";
     const std::uint32_t layers = stack().layerCount(std::size_t(p.y()) * stack().width + p.x());
     const QImage before = viewport()->grabFramebuffer();
     ASSERT_EQ(visibleLayer(p), 1u);
 
-    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, p);
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier | Qt::ShiftModifier, p);
     EXPECT_EQ(visibleLayer(p), 2u);
     EXPECT_EQ(undoStack()->count(), 1);
     EXPECT_GT(differingFraction(before, viewport()->grabFramebuffer()), 0.001);
@@ -169,7 +169,7 @@ TEST_F(RegionsTest, PaintToHideRevealsWhatLiesBehindAndThePanelUnhides) {
 TEST_F(RegionsTest, OrbitTurnsAboutThePoppedUpSurfacePointUnderTheCursor) {
     const QPoint p = deepPixel(2);
     ASSERT_GE(p.x(), 0);
-    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, p);
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier | Qt::ShiftModifier, p);
     ASSERT_EQ(visibleLayer(p), 2u);
     const std::size_t pixel = std::size_t(p.y()) * std::size_t(stack().width) + p.x();
     const float depth = stack().depth[stack().offsets[pixel] + 1];

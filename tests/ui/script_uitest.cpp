@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // One history, one script runner: a session driven with real Qt events (layer-aware strokes,
-// Shift+click pop-ups, paint-to-hide, undo and redo) is copied as a script; the headless tool
+// Ctrl+Shift+click pop-ups, paint-to-hide, undo and redo) is copied as a script; the headless tool
 // replays it and saves the same picture byte for byte, and File ▸ Run Script replays it in the
 // window as one undo step. Needs a display with OpenGL 4.5 (xvfb-run; llvmpipe is enough).
 #include <gtest/gtest.h>
@@ -115,10 +115,11 @@ TEST_F(ScriptSessionTest, TheHeadlessToolReplaysAGuiSessionToTheSameProject) {
     ASSERT_GE(c.x(), 0);
     const QPoint middle = (a + b) / 2;
 
-    drag(a, b);                                                               // layer-aware
-    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, middle); // pop-up
-    drag(c, d);                                                               // another stroke ...
-    key(Qt::Key_Z, Qt::ControlModifier);                                      // ... undone
+    drag(a, b); // layer-aware
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ControlModifier | Qt::ShiftModifier,
+                      middle);                // pop-up
+    drag(c, d);                               // another stroke ...
+    key(Qt::Key_Z, Qt::ControlModifier);      // ... undone
     drag(c + QPoint(0, 3), d + QPoint(0, 3)); // and one in its place
     key(Qt::Key_H);                           // paint-to-hide over the pop-up
     drag(middle, middle + QPoint(6, 0));

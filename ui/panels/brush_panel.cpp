@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/brush_panel.h"
 
+#include "ui/panels/stabilizer_box.h"
 #include "ui/panels/value_spin_box.h"
 
 #include <QCheckBox>
@@ -166,6 +167,7 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
         m_curveView->setCurve(m_curve);
         emit pressureCurveChanged(m_curve);
     });
+    addStabilizerBox(layout);
     layout->addStretch(1);
 
     setBrush(m_brush);
@@ -199,6 +201,7 @@ void BrushPanel::readBrush() {
     m_brush.paintMetallic = m_paintMetallic->isChecked();
     m_brush.roughness = float(m_roughness->value());
     m_brush.metallic = float(m_metallic->value());
+    m_stabilizer->readInto(m_brush);
     updateAutoTrackText();
     emit brushChanged(m_brush);
 }
@@ -226,6 +229,7 @@ void BrushPanel::setBrush(const core::Brush& brush) {
     m_paintMetallic->setChecked(brush.paintMetallic);
     m_roughness->setValue(double(brush.roughness));
     m_metallic->setValue(double(brush.metallic));
+    m_stabilizer->setBrush(brush);
     updateAutoTrackText();
 }
 
@@ -249,6 +253,12 @@ void BrushPanel::setPressureCurve(const core::PressureCurve& curve) {
     m_gamma->setValue(gammaToSlider(curve.gamma));
     m_gammaText->setText(tr("γ %1").arg(QLocale().toString(curve.gamma, 'f', 2)));
     m_curveView->setCurve(curve);
+}
+
+void BrushPanel::addStabilizerBox(QLayout* layout) {
+    m_stabilizer = new StabilizerBox(this);
+    layout->addWidget(m_stabilizer);
+    connect(m_stabilizer, &StabilizerBox::changed, this, &BrushPanel::readBrush);
 }
 
 } // namespace ui

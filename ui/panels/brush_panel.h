@@ -13,6 +13,10 @@ class QSlider;
 class QSpinBox;
 
 namespace ui {
+class StabilizerBox;
+}
+
+namespace ui {
 
 /** A small plot of a pressure curve: pen pressure to the right, stroke pressure up. */
 class PressureCurveView : public QWidget {
@@ -33,7 +37,8 @@ private:
 /**
  * The Brush panel (a dock): every setting of core::Brush — radius, hardness, opacity, flow,
  * spacing, R_max (0 = automatic), what pen pressure changes, the material channels it paints
- * (base colour, roughness, metallic, each on or off with its value) — and the pressure curve. Every
+ * (base colour, roughness, metallic, each on or off with its value), the stroke stabilizer — and
+ * the pressure curve. Every
  * change emits at once; setBrush() and setPressureCurve() show values without emitting, so the
  * window can keep this panel, the brush bar and the document in step.
  */
@@ -62,6 +67,8 @@ private:
                      const QString& suffix, const QString& tip);
     void readBrush();
     void updateAutoTrackText();
+    /** The stroke stabilizer's group box, below the other settings. */
+    void addStabilizerBox(QLayout* layout);
 
     core::Brush m_brush;
     core::PressureCurve m_curve;
@@ -84,6 +91,7 @@ private:
     QLabel* m_gammaText = nullptr;
     PressureCurveView* m_curveView = nullptr;
     bool m_updating = false;
+    StabilizerBox* m_stabilizer = nullptr;
 };
 
 } // namespace ui

@@ -212,6 +212,10 @@ private:
     bool preparePainting();
     /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
+    /** Shift+click with the brush or eraser: a straight line on from the last stroke. */
+    void paintLine(QPointF pixel, qreal pressure, bool eraser);
+    /** Paint ▸ Stroke Stabilizer: the brush's stabilizer on or off. */
+    QAction* createStabilizerAction();
     /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
     void fillAt(QPointF pixel);
     /** The eyedropper: the brush takes the surface colour under pixel. */
@@ -309,6 +313,7 @@ private:
     QAction* m_layerAwareAction = nullptr;
     QCheckBox* m_layerAwareCheck = nullptr;
     QAction* m_swapColorsAction = nullptr;
+    QAction* m_stabilizerAction = nullptr;
     QAction* m_preferencesAction = nullptr;
     QList<QAction*> m_brushStepActions; // [ ] Shift+[ Shift+]
     QAction* m_brushMapsAction = nullptr;

@@ -260,9 +260,11 @@ void MainWindow::createToolActions() {
     };
     const ToolInfo tools[] = {
         {Tool::Brush, QStringLiteral("Brush"), tr("&Brush"), QKeySequence(Qt::Key_B),
-         tr("Paint strokes with the brush")},
+         tr("Paint strokes with the brush; Shift+click draws a straight line on from the last "
+            "stroke")},
         {Tool::Eraser, QStringLiteral("Eraser"), tr("&Eraser"), QKeySequence(Qt::Key_E),
-         tr("Erase paint back to the model's original colours")},
+         tr("Erase paint back to the model's original colours; Shift+click erases along a "
+            "straight line from the last stroke")},
         {Tool::Fill, QStringLiteral("Fill"), tr("&Fill"), QKeySequence(Qt::Key_G),
          tr("Flood fill with the brush colour")},
         {Tool::Eyedropper, QStringLiteral("Eyedropper"), tr("E&yedropper"), QKeySequence(Qt::Key_I),
@@ -270,8 +272,8 @@ void MainWindow::createToolActions() {
         {Tool::Hide, QStringLiteral("Hide"), tr("Paint to &Hide"), QKeySequence(Qt::Key_H),
          tr("Hide every region the brush touches, revealing what lies behind")},
         {Tool::PopUp, QStringLiteral("PopUp"), tr("&Pop Up"), QKeySequence(Qt::Key_P),
-         tr("Bring the region below the visible one to the front (or Shift+click); click again "
-            "to cycle")},
+         tr("Bring the region below the visible one to the front (or Ctrl+Shift+click); click "
+            "again to cycle")},
     };
     for (const ToolInfo& info : tools) {
         QAction* action = new QAction(info.text, m_toolGroup);
@@ -403,6 +405,7 @@ void MainWindow::createMenus() {
     paintMenu->addSeparator();
     paintMenu->addActions(m_brushStepActions);
     paintMenu->addAction(m_swapColorsAction);
+    paintMenu->addAction(createStabilizerAction());
 
     QMenu* paintLayersMenu = menuBar()->addMenu(tr("Paint &Layers"));
     paintLayersMenu->setObjectName(QStringLiteral("paintLayersMenu"));

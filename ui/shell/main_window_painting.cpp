@@ -74,6 +74,10 @@ void MainWindow::onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModif
                           : toolForPress(m_tool, modifiers);
     if (!toolAction(tool)->isEnabled())
         return;
+    if (pressDrawsLine(tool, modifiers)) {
+        paintLine(pixel, pressure, tool == Tool::Eraser);
+        return;
+    }
     switch (tool) {
     case Tool::Brush:
     case Tool::Eraser:
@@ -166,6 +170,49 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     m_strokeStats.pressMs = elapsedMs(clock);
 }
 
+void MainWindow::paintLine(QPointF pixel, qreal pressure, bool eraser) {
+    if (!preparePainting())
+        return;
+    m_document->brush().eraser = eraser;
+    const bool fromStroke = m_document->lineStart().has_value();
+    core::PaintChanges changes;
+    m_regionTools->beginStroke();
+    const core::Status status =
+        m_document->lineTo({{float(pixel.x()), float(pixel.y())}, float(pressure)}, changes);
+    m_regionTools->endStroke(); // a line into a hidden surface may have popped it up
+    if (!status) {
+        statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
+                                 kStatusMessageMs);
+        return;
+    }
+    if (!eraser)
+        m_colorPanel->addRecent(BrushToolBar::toQColor(m_document->brush().color));
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->brushMapsChanged();
+    statusBar()->showMessage(fromStroke ? tr("Straight line from the end of the last stroke")
+                                        : tr("No stroke to go on from: a dot here; the next "
+                                             "Shift+click draws a line from it"),
+                             kPaintMessageMs);
+    m_history->sync();
+}
+
+QAction* MainWindow::createStabilizerAction() {
+    m_stabilizerAction = new QAction(tr("Stroke Stabili&zer"), this);
+    m_stabilizerAction->setObjectName(QStringLiteral("actionStabilizer"));
+    m_stabilizerAction->setCheckable(true);
+    m_stabilizerAction->setChecked(m_document->brush().stabilizer);
+    m_stabilizerAction->setStatusTip(tr("Strokes follow the pointer on a string, smoothing out "
+                                        "wobbles (length and smoothing in the Brush panel)"));
+    connect(m_stabilizerAction, &QAction::toggled, this, [this](bool on) {
+        if (on == m_document->brush().stabilizer)
+            return;
+        core::Brush brush = m_document->brush();
+        brush.stabilizer = on;
+        setBrush(brush);
+    });
+    return m_stabilizerAction;
+}
+
 void MainWindow::fillAt(QPointF pixel) {
     QElapsedTimer clock;
     clock.start();
@@ -236,8 +283,12 @@ void MainWindow::finishStroke() {
     if (!m_painting)
         return;
     m_painting = false;
-    // The stroke and the pop-ups it made are one step of the document's history.
-    m_document->endStroke();
+    // The stroke and the pop-ups it made are one step of the document's history; a stabilized
+    // stroke's catch-up paints its last stretch here.
+    core::PaintChanges changes;
+    m_document->endStroke(changes);
+    m_viewport->applyPaintChanges(changes);
+    m_viewport->update(); // the stabilizer's string goes
     m_regionTools->endStroke();
     m_history->sync();
 }
@@ -365,6 +416,8 @@ void MainWindow::setBrush(const core::Brush& brush) {
     m_document->brush() = brush; // the next stroke uses it
     m_brushBar->setBrush(brush);
     m_brushPanel->setBrush(brush);
+    if (m_stabilizerAction)
+        m_stabilizerAction->setChecked(brush.stabilizer);
     const QColor color = BrushToolBar::toQColor(brush.color);
     if (color != m_colorPanel->foreground())
         m_colorPanel->setForeground(color);

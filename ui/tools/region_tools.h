@@ -50,7 +50,8 @@ public:
     QAction* resetOrderAction() const { return m_resetOrder; }
     QAction* unhideAllAction() const { return m_unhideAll; }
 
-    /** Intentional pop-up at a window pixel (device pixels): the pop-up tool or Shift+click. */
+    /** Intentional pop-up at a window pixel (device pixels): the pop-up tool or Ctrl+Shift+click.
+     */
     void popUpAt(QPointF pixel);
     /** Intentional pop-up of a region (a click in the region graph). */
     void popUpRegion(std::uint32_t region);

@@ -7,6 +7,7 @@
 #include <QMetaObject>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
+#include <QPainter>
 #include <QResizeEvent>
 
 #include <algorithm>
@@ -517,8 +518,10 @@ void Viewport::paintGL() {
         flushPaint(m_rendererPaint, false);
         m_renderer->draw(current, options);
     }
-    if (!m_overlay)
+    if (!m_overlay) {
+        drawStabilizerString();
         return;
+    }
     render::BrushOverlayOptions overlay;
     overlay.viewWidth = current.width;
     overlay.viewHeight = current.height;
@@ -534,6 +537,27 @@ void Viewport::paintGL() {
         overlay.radius = m_brushRadius;
     }
     m_overlay->draw(overlay);
+    drawStabilizerString();
+}
+
+void Viewport::drawStabilizerString() {
+    const core::StrokeStabilizer& stabilizer = m_document.stabilizer();
+    if (m_drag != Drag::Paint || !stabilizer.stabilizing())
+        return;
+    // Device pixels (as the stroke's points) to the painter's logical ones.
+    const qreal scale = 1.0 / devicePixelRatioF();
+    const QPointF tip(stabilizer.tip().x * scale, stabilizer.tip().y * scale);
+    const QPointF pointer(stabilizer.pointer().x * scale, stabilizer.pointer().y * scale);
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    // A dark line under a light one, so the string shows on any surface.
+    for (const auto& [color, width] :
+         {std::pair{QColor(0, 0, 0, 160), 3.0}, std::pair{QColor(255, 255, 255, 230), 1.5}}) {
+        painter.setPen(QPen(color, width, Qt::SolidLine, Qt::RoundCap));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawLine(tip, pointer);
+        painter.drawEllipse(tip, 3.0, 3.0);
+    }
 }
 
 /** The compute pass in the viewport's context, for build_layers on the GUI thread. */

@@ -209,6 +209,8 @@ protected:
     void resizeGL(int w, int h) override;
     void resizeEvent(QResizeEvent* event) override;
     void paintGL() override;
+    /** The stroke stabilizer's string from the brush tip to the pointer, while it pulls. */
+    void drawStabilizerString();
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;

@@ -111,6 +111,8 @@ bool Viewport::pointerMove(QPointF position, qreal pressure) {
         break;
     case Drag::Paint:
         emit paintMoved(toDevicePixels(position), pressure);
+        if (m_document.stabilizer().stabilizing())
+            update(); // the string follows the pointer even where nothing is painted
         return true;
     case Drag::None:
         break;

@@ -1,0 +1,238 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The stroke tools in the GUI through real Qt event delivery: a stabilized drag paints a smoother
+// path than its jittered input and draws its string while it pulls, and a Shift+click draws a
+// straight line on from the end of the last stroke as one undo step.
+// Needs a display with OpenGL 4.5 (run under xvfb-run; Mesa llvmpipe is enough).
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QGroupBox>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include "core/document/document.h"
+#include "tests/ui/ui_test_util.h"
+#include "ui/shell/main_window.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
+
+namespace {
+
+using namespace ui_test;
+
+class StrokeToolsTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(1260, 720);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        m_window->openFile(QStringLiteral("builtin:trefoil"));
+        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+        core::Brush brush = document().brush();
+        brush.radius = 4.0f;
+        brush.hardness = 1.0f;
+        brush.color = {1.0f, 0.0f, 0.0f, 1.0f};
+        m_window->setBrush(brush);
+    }
+    void TearDown() override {
+        m_window.reset();
+        QSettings().clear();
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    core::Document& document() const { return m_window->document(); }
+    QImage grab() const { return viewport()->grabFramebuffer(); }
+
+    /** Whether pixel p and its (2 margin + 1)² neighbourhood all show the model. */
+    bool solid(QPoint p, int margin) const {
+        const core::LayerStack& stack = document().layers()->stack;
+        for (int dy = -margin; dy <= margin; ++dy)
+            for (int dx = -margin; dx <= margin; ++dx) {
+                const int x = p.x() + dx, y = p.y() + dy;
+                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
+                    return false;
+                const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+                if (stack.offsets[i + 1] == stack.offsets[i])
+                    return false;
+            }
+        return true;
+    }
+    /** A horizontal run over the model, at least minLength long, clear by margin on all sides. */
+    std::pair<QPoint, QPoint> runAcrossTheKnot(int minLength, int margin) const {
+        const core::LayerStack& stack = document().layers()->stack;
+        for (int k = 0; k < stack.height / 2; k += 5) {
+            for (int y : {stack.height / 2 - k, stack.height / 2 + k}) {
+                int start = -1;
+                for (int x = 0; x <= stack.width; ++x) {
+                    const bool inside = x < stack.width && solid({x, y}, margin);
+                    if (inside && start < 0)
+                        start = x;
+                    if (!inside && start >= 0) {
+                        if (x - start >= minLength)
+                            return {{start + 2, y}, {x - 3, y}};
+                        start = -1;
+                    }
+                }
+            }
+        }
+        return {};
+    }
+    /** The jittered hand: from a to b in 3-pixel steps, every other sample 5 px up, then down. */
+    std::vector<QPoint> zigzag(QPoint a, QPoint b) const {
+        std::vector<QPoint> points;
+        for (int x = a.x(); x <= b.x(); x += 3)
+            points.emplace_back(x, a.y() + (points.size() % 2 == 0 ? 5 : -5));
+        points.front() = a;
+        return points;
+    }
+    /** Presses at the first point, moves through the rest (calling during after each move). */
+    template <typename During> void drag(const std::vector<QPoint>& points, During during) {
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, points.front());
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            QTest::mouseMove(viewport(), points[i]);
+            during(i);
+        }
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, points.back());
+        // The pointer leaves, taking the brush outline along: pictures compare the model only.
+        QEvent leave(QEvent::Leave);
+        QApplication::sendEvent(viewport(), &leave);
+    }
+    /** The mean height of the painted band over columns x0..x1 (pixels that changed). */
+    static double bandHeight(const QImage& before, const QImage& after, int x0, int x1, int y,
+                             int reach) {
+        double total = 0.0;
+        int columns = 0;
+        for (int x = x0; x <= x1; ++x) {
+            int top = -1, bottom = -1;
+            for (int yy = y - reach; yy <= y + reach; ++yy) {
+                if (channelDifference(before.pixel(x, yy), after.pixel(x, yy)) > 40) {
+                    if (top < 0)
+                        top = yy;
+                    bottom = yy;
+                }
+            }
+            if (top >= 0) {
+                total += bottom - top + 1;
+                ++columns;
+            }
+        }
+        return columns ? total / columns : 0.0;
+    }
+
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+TEST_F(StrokeToolsTest, AStabilizedDragPaintsASmootherPathAndDrawsItsString) {
+    const auto [a, b] = runAcrossTheKnot(110, 12);
+    ASSERT_GT(b.x() - a.x(), 100) << "no run across the knot";
+    const std::vector<QPoint> input = zigzag(a, b);
+    QApplication::processEvents();
+    const QImage before = grab();
+
+    // The raw hand first: its zigzag is painted.
+    drag(input, [](std::size_t) {});
+    QApplication::processEvents();
+    const double raw = bandHeight(before, grab(), a.x() + 30, b.x() - 30, a.y(), 14);
+    ASSERT_EQ(m_window->undoStack()->count(), 1);
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QApplication::processEvents();
+    EXPECT_LT(differingFraction(before, grab()), 0.001) << "undone";
+
+    // Paint ▸ Stroke Stabilizer and the Brush panel's string length.
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionStabilizer"));
+    ASSERT_NE(action, nullptr);
+    action->trigger();
+    EXPECT_TRUE(document().brush().stabilizer);
+    auto* box = m_window->findChild<QGroupBox*>(QStringLiteral("brushPanelStabilizer"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_TRUE(box->isChecked()) << "the panel follows the menu";
+    auto* length = box->findChild<QSpinBox*>(QStringLiteral("brushPanelStabilizerLength"));
+    ASSERT_NE(length, nullptr);
+    length->setValue(20);
+    EXPECT_EQ(document().brush().stabilizerLength, 20.0f);
+
+    // The same hand, stabilized; half-way the string is on screen.
+    QImage midway;
+    glm::vec2 tip(0.0f), pointer(0.0f);
+    drag(input, [&](std::size_t i) {
+        if (i == input.size() / 2) {
+            ASSERT_TRUE(document().stabilizer().stabilizing());
+            tip = document().stabilizer().tip();
+            pointer = document().stabilizer().pointer();
+            midway = grab();
+        }
+    });
+    QApplication::processEvents();
+    const QImage after = grab();
+    const double stabilized = bandHeight(before, after, a.x() + 30, b.x() - 30, a.y(), 14);
+    std::printf("[ stabilizer ] painted band: raw %.1f px, stabilized %.1f px high\n", raw,
+                stabilized);
+    EXPECT_GT(raw, 15.0) << "the zigzag (10 px) and the dab (8 px) were painted";
+    EXPECT_LT(stabilized, raw - 6.0);
+    EXPECT_EQ(m_window->undoStack()->count(), 1);
+
+    // The string: light on dark along the line from the tip to the pointer, gone after release.
+    ASSERT_FALSE(midway.isNull());
+    EXPECT_NEAR(glm::distance(tip, pointer), 20.0f, 0.5f);
+    const glm::vec2 middle = 0.5f * (tip + pointer);
+    const QPoint m(int(std::lround(middle.x)), int(std::lround(middle.y)));
+    const QRgb string = midway.pixel(m);
+    EXPECT_GT(qGray(string), 200) << "the string's light core";
+    EXPECT_GT(channelDifference(string, after.pixel(m)), 40) << "gone after release";
+    const QString shot =
+        QDir::current().absoluteFilePath(QStringLiteral("stroke_tools_uitest.png"));
+    EXPECT_TRUE(midway.save(shot));
+}
+
+TEST_F(StrokeToolsTest, ShiftClickDrawsALineOnFromTheLastStroke) {
+    const auto [a, b] = runAcrossTheKnot(110, 8);
+    ASSERT_GT(b.x() - a.x(), 100) << "no run across the knot";
+    const QPoint m((a.x() + b.x()) / 2, a.y());
+    QApplication::processEvents();
+    const QImage before = grab();
+    drag({a, a + (m - a) / 2, m}, [](std::size_t) {});
+    QApplication::processEvents();
+    const QImage stroke = grab();
+    const QPoint between((m.x() + b.x()) / 2, a.y());
+    EXPECT_LT(channelDifference(before.pixel(between), stroke.pixel(between)), 24)
+        << "the stroke ended at the middle";
+
+    QTest::mouseClick(viewport(), Qt::LeftButton, Qt::ShiftModifier, b);
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(viewport(), &leave);
+    QApplication::processEvents();
+    const QImage line = grab();
+    for (const QPoint p : {between, QPoint((m.x() + between.x()) / 2, a.y()), b - QPoint(4, 0)})
+        EXPECT_GT(channelDifference(stroke.pixel(p), line.pixel(p)), 40)
+            << "the line painted " << p.x() << ", " << p.y();
+    EXPECT_EQ(m_window->undoStack()->count(), 2) << "the line is one step";
+    ASSERT_TRUE(document().lineStart());
+    EXPECT_LT(glm::distance(*document().lineStart(), glm::vec2(b.x(), b.y())), 2.0f);
+    EXPECT_EQ(document().history().undoKind(), core::StepKind::Stroke)
+        << "Shift+click paints now; it no longer pops a region up";
+
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    QApplication::processEvents();
+    EXPECT_LT(differingFraction(stroke, grab()), 0.001) << "undo takes the line only";
+}
+
+} // namespace
