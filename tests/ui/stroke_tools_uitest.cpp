@@ -22,6 +22,7 @@
 
 #include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
@@ -30,37 +31,23 @@ namespace {
 
 using namespace ui_test;
 
-class StrokeToolsTest : public ::testing::Test {
+class StrokeToolsTest : public WindowTest {
 protected:
+    StrokeToolsTest() : WindowTest({1260, 720}) {}
+
     void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        WindowTest::SetUp();
+        if (HasFatalFailure())
+            return;
+        openTrefoil();
+        if (HasFatalFailure())
+            return;
         core::Brush brush = document().brush();
         brush.radius = 4.0f;
         brush.hardness = 1.0f;
         brush.color = {1.0f, 0.0f, 0.0f, 1.0f};
         m_window->setBrush(brush);
     }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
-    QImage grab() const { return viewport()->grabFramebuffer(); }
 
     /** Whether pixel p and its (2 margin + 1)² neighbourhood all show the model. */
     bool solid(QPoint p, int margin) const {
@@ -137,8 +124,6 @@ protected:
         }
         return columns ? total / columns : 0.0;
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(StrokeToolsTest, AStabilizedDragPaintsASmootherPathAndDrawsItsString) {
