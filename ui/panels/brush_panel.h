@@ -11,8 +11,11 @@ class QFormLayout;
 class QLabel;
 class QSlider;
 class QSpinBox;
+class QVBoxLayout;
 
 namespace ui {
+
+class BrushTipBox;
 
 /** A small plot of a pressure curve: pen pressure to the right, stroke pressure up. */
 class PressureCurveView : public QWidget {
@@ -52,6 +55,8 @@ public:
      * disabled with why as their tip.
      */
     void setMaterialChannels(bool available, const QString& why = {});
+    /** The tip settings (the brush's tip, its angle and jitter). */
+    BrushTipBox* tipBox() const { return m_tipBox; }
 
 signals:
     void brushChanged(const core::Brush& brush);
@@ -62,6 +67,7 @@ private:
                      const QString& suffix, const QString& tip);
     void readBrush();
     void updateAutoTrackText();
+    void addTipBox(QVBoxLayout* layout);
 
     core::Brush m_brush;
     core::PressureCurve m_curve;
@@ -83,6 +89,7 @@ private:
     QSlider* m_gamma = nullptr;
     QLabel* m_gammaText = nullptr;
     PressureCurveView* m_curveView = nullptr;
+    BrushTipBox* m_tipBox = nullptr;
     bool m_updating = false;
 };
 
