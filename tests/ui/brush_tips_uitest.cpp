@@ -11,6 +11,7 @@
 #include <QScrollArea>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
 
 #include <cstdio>
@@ -161,7 +162,15 @@ TEST_F(BrushTipsTest, AChosenTipPaintsTheStroke) {
     EXPECT_NE(round, star);
     QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
 
-    // Three tips, three strokes: each adds paint (the picture is kept for a look).
+    // Three tips, three strokes with the dabs apart: each adds paint (the picture is kept for a
+    // look).
+    auto* spacing = m_window->findChild<QSpinBox*>(QStringLiteral("brushPanelSpacing"));
+    ASSERT_NE(spacing, nullptr);
+    QTest::mouseDClick(spacing, Qt::LeftButton);
+    QTest::keyClick(spacing, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(spacing, QStringLiteral("90"));
+    QTest::keyClick(spacing, Qt::Key_Return);
+    ASSERT_FLOAT_EQ(document().brush().spacing, 0.9f);
     std::vector<std::uint8_t> before = pageBytes();
     const QString tips[] = {QStringLiteral("star"), QStringLiteral("bristle"),
                             QStringLiteral("spatter")};
