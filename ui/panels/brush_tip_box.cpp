@@ -99,7 +99,7 @@ BrushTipBox::BrushTipBox(QWidget* parent) : QGroupBox(tr("Brush tip"), parent) {
     layout->addWidget(m_tips);
     connect(m_tips, &QListWidget::currentItemChanged, this, [this] { readControls(); });
 
-    m_load = new QPushButton(tr("Load &Tip…"), this);
+    m_load = new QPushButton(tr("Load T&ip…"), this);
     m_load->setObjectName(QStringLiteral("brushTipLoad"));
     m_load->setToolTip(tr("Use a PNG or TIFF image as the tip (dark paints); it is kept in the "
                           "project"));
@@ -118,7 +118,7 @@ BrushTipBox::BrushTipBox(QWidget* parent) : QGroupBox(tr("Brush tip"), parent) {
     m_angleMode->addItem(tr("Random"), int(core::TipAngleMode::Random));
     m_angleMode->setToolTip(tr("How the tip is turned: by the angle, along the stroke's "
                                "direction plus the angle, or at random per dab"));
-    form->addRow(tr("Tip t&urn"), m_angleMode);
+    form->addRow(tr("Tip tur&n"), m_angleMode);
     connect(m_angleMode, &QComboBox::currentIndexChanged, this, [this] { readControls(); });
 
     const auto spinRow = [&](const QString& label, const QString& name, int lo, int hi,
@@ -136,9 +136,9 @@ BrushTipBox::BrushTipBox(QWidget* parent) : QGroupBox(tr("Brush tip"), parent) {
     m_jitterSize = spinRow(tr("Size &jitter"), QStringLiteral("brushTipJitterSize"), 0, 100,
                            tr(" %"), tr("Each dab is up to this much smaller, at random"));
     m_jitterOpacity =
-        spinRow(tr("Opacity j&itter"), QStringLiteral("brushTipJitterOpacity"), 0, 100, tr(" %"),
+        spinRow(tr("Opacit&y jitter"), QStringLiteral("brushTipJitterOpacity"), 0, 100, tr(" %"),
                 tr("Each dab is up to this much more transparent, at random"));
-    m_jitterAngle = spinRow(tr("Angle jitte&r"), QStringLiteral("brushTipJitterAngle"), 0, 180,
+    m_jitterAngle = spinRow(tr("An&gle jitter"), QStringLiteral("brushTipJitterAngle"), 0, 180,
                             tr("°"), tr("Each dab turns up to this far either way, at random"));
     m_jitterScatter =
         spinRow(tr("Scatt&er"), QStringLiteral("brushTipJitterScatter"), 0, 400, tr(" %"),
