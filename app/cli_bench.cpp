@@ -151,6 +151,7 @@ int runBench(const BenchArgs& args) {
                 return fail(s.error());
 
             Samples samples;
+            std::vector<double> tipMoves; // move_stroke with a textured tip turning along the path
             std::size_t fragments = 0, regions = 0, layerCount = 0;
             // One warm-up round (shader compilation, buffer growth), then the measured runs,
             // alternating the baseline with the measured work so load affects both alike.
@@ -205,8 +206,15 @@ int runBench(const BenchArgs& args) {
                                              &gpuConnectivityMs))
                     gpuConnectivityMs = -1.0;
                 const StrokeTimes stroke = timeStroke(doc, *view);
+                const core::Brush roundBrush = doc.brush();
+                doc.brush().tip = "chalk";
+                doc.brush().angleMode = core::TipAngleMode::Stroke;
+                doc.brush().jitter.angle = 20.0f;
+                const StrokeTimes tipStroke = timeStroke(doc, *view);
+                doc.brush() = roundBrush;
                 if (run < 0)
                     continue;
+                tipMoves.insert(tipMoves.end(), tipStroke.moves.begin(), tipStroke.moves.end());
                 samples.startStroke.insert(samples.startStroke.end(), stroke.starts.begin(),
                                            stroke.starts.end());
                 samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
@@ -261,6 +269,7 @@ int runBench(const BenchArgs& args) {
                 {"move_stroke_ms", median(samples.moveStroke)},
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
                 {"dab_on_target_ms", median(samples.dab)},
+                {"move_stroke_textured_tip_ms", median(tipMoves)},
             };
             std::cerr << model << ' ' << size << ": build_layers " << build
                       << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain

@@ -11,6 +11,7 @@
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io.h"
 #include "core/io/project_file.h"
+#include "core/io/project_file_tip.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 
@@ -22,6 +23,9 @@ public:
     explicit CapturerHost(core::LayerCapturer& capturer) : m_capturer(capturer) {}
     core::Status buildLayers(core::Document& doc, const core::View& view) override {
         return doc.buildLayers(m_capturer, view);
+    }
+    core::Result<std::shared_ptr<const core::TipImage>> loadTip(const std::string& path) override {
+        return core::loadTipImageFile(path);
     }
 
 private:

@@ -151,6 +151,149 @@
     </message>
 </context>
 <context>
+    <name>ui::BrushTipBox</name>
+    <message>
+        <source>Round</source>
+        <translation>Rund</translation>
+    </message>
+    <message>
+        <source>Round soft</source>
+        <translation>Rund weich</translation>
+    </message>
+    <message>
+        <source>Round hard</source>
+        <translation>Rund hart</translation>
+    </message>
+    <message>
+        <source>Square</source>
+        <translation>Quadrat</translation>
+    </message>
+    <message>
+        <source>Spatter</source>
+        <translation>Spritzer</translation>
+    </message>
+    <message>
+        <source>Chalk</source>
+        <translation>Kreide</translation>
+    </message>
+    <message>
+        <source>Bristle</source>
+        <translation>Borsten</translation>
+    </message>
+    <message>
+        <source>Star</source>
+        <translation>Stern</translation>
+    </message>
+    <message>
+        <source>Noise</source>
+        <translation>Rauschen</translation>
+    </message>
+    <message>
+        <source>Brush tip</source>
+        <translation>Pinselspitze</translation>
+    </message>
+    <message>
+        <source>The tip&apos;s shape: every channel painted is weighted by it</source>
+        <translation>Die Form der Spitze: jeder gemalte Kanal wird mit ihr gewichtet</translation>
+    </message>
+    <message>
+        <source>Load T&amp;ip…</source>
+        <translation>Spi&amp;tze laden…</translation>
+    </message>
+    <message>
+        <source>Use a PNG or TIFF image as the tip (dark paints); it is kept in the project</source>
+        <translation>Ein PNG- oder TIFF-Bild als Spitze verwenden (Dunkles malt); es wird im Projekt gespeichert</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Fest</translation>
+    </message>
+    <message>
+        <source>Follow the stroke</source>
+        <translation>Dem Strich folgen</translation>
+    </message>
+    <message>
+        <source>Random</source>
+        <translation>Zufällig</translation>
+    </message>
+    <message>
+        <source>How the tip is turned: by the angle, along the stroke&apos;s direction plus the angle, or at random per dab</source>
+        <translation>Wie die Spitze gedreht wird: um den Winkel, in Strichrichtung plus Winkel oder zufällig je Tupfer</translation>
+    </message>
+    <message>
+        <source>Tip tur&amp;n</source>
+        <translation>Drehu&amp;ng</translation>
+    </message>
+    <message>
+        <source>&amp;Angle</source>
+        <translation>W&amp;inkel</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>The tip&apos;s turn, clockwise</source>
+        <translation>Die Drehung der Spitze, im Uhrzeigersinn</translation>
+    </message>
+    <message>
+        <source>Size &amp;jitter</source>
+        <translation>&amp;Jitter Größe</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Each dab is up to this much smaller, at random</source>
+        <translation>Jeder Tupfer ist zufällig bis zu so viel kleiner</translation>
+    </message>
+    <message>
+        <source>Opacit&amp;y jitter</source>
+        <translation>Jitter De&amp;ckkraft</translation>
+    </message>
+    <message>
+        <source>Each dab is up to this much more transparent, at random</source>
+        <translation>Jeder Tupfer ist zufällig bis zu so viel durchsichtiger</translation>
+    </message>
+    <message>
+        <source>An&amp;gle jitter</source>
+        <translation>Jitter Winke&amp;l</translation>
+    </message>
+    <message>
+        <source>Each dab turns up to this far either way, at random</source>
+        <translation>Jeder Tupfer dreht sich zufällig bis zu so weit in jede Richtung</translation>
+    </message>
+    <message>
+        <source>Scatt&amp;er</source>
+        <translation>&amp;Streuung</translation>
+    </message>
+    <message>
+        <source>Each dab moves up to this far from the stroke, in per cent of the radius</source>
+        <translation>Jeder Tupfer rückt bis zu so weit vom Strich ab, in Prozent des Radius</translation>
+    </message>
+    <message>
+        <source>The random jitter&apos;s seed: the same seed paints the same stroke again</source>
+        <translation>Startwert des Zufalls: derselbe Startwert malt denselben Strich noch einmal</translation>
+    </message>
+    <message>
+        <source>See&amp;d</source>
+        <translation>Start&amp;wert</translation>
+    </message>
+    <message>
+        <source>Loaded</source>
+        <translation>Geladen</translation>
+    </message>
+    <message>
+        <source>Load Brush Tip</source>
+        <translation>Pinselspitze laden</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.tif *.tiff);;All files (*)</source>
+        <translation>Bilder (*.png *.tif *.tiff);;Alle Dateien (*)</translation>
+    </message>
+</context>
+<context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush colour</source>

@@ -151,6 +151,149 @@
     </message>
 </context>
 <context>
+    <name>ui::BrushTipBox</name>
+    <message>
+        <source>Round</source>
+        <translation>圆形</translation>
+    </message>
+    <message>
+        <source>Round soft</source>
+        <translation>柔和圆形</translation>
+    </message>
+    <message>
+        <source>Round hard</source>
+        <translation>硬边圆形</translation>
+    </message>
+    <message>
+        <source>Square</source>
+        <translation>方形</translation>
+    </message>
+    <message>
+        <source>Spatter</source>
+        <translation>飞溅</translation>
+    </message>
+    <message>
+        <source>Chalk</source>
+        <translation>粉笔</translation>
+    </message>
+    <message>
+        <source>Bristle</source>
+        <translation>鬃毛</translation>
+    </message>
+    <message>
+        <source>Star</source>
+        <translation>星形</translation>
+    </message>
+    <message>
+        <source>Noise</source>
+        <translation>噪点</translation>
+    </message>
+    <message>
+        <source>Brush tip</source>
+        <translation>笔尖</translation>
+    </message>
+    <message>
+        <source>The tip&apos;s shape: every channel painted is weighted by it</source>
+        <translation>笔尖的形状：绘制的每个通道都按它加权</translation>
+    </message>
+    <message>
+        <source>Load T&amp;ip…</source>
+        <translation>载入笔尖(&amp;I)…</translation>
+    </message>
+    <message>
+        <source>Use a PNG or TIFF image as the tip (dark paints); it is kept in the project</source>
+        <translation>使用 PNG 或 TIFF 图像作为笔尖（深色处绘制）；它保存在项目中</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>固定</translation>
+    </message>
+    <message>
+        <source>Follow the stroke</source>
+        <translation>跟随笔画</translation>
+    </message>
+    <message>
+        <source>Random</source>
+        <translation>随机</translation>
+    </message>
+    <message>
+        <source>How the tip is turned: by the angle, along the stroke&apos;s direction plus the angle, or at random per dab</source>
+        <translation>笔尖如何旋转：按角度、沿笔画方向加角度，或每个笔触随机</translation>
+    </message>
+    <message>
+        <source>Tip tur&amp;n</source>
+        <translation>笔尖旋转(&amp;N)</translation>
+    </message>
+    <message>
+        <source>&amp;Angle</source>
+        <translation>角度(&amp;A)</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>The tip&apos;s turn, clockwise</source>
+        <translation>笔尖的旋转，顺时针</translation>
+    </message>
+    <message>
+        <source>Size &amp;jitter</source>
+        <translation>大小抖动(&amp;J)</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Each dab is up to this much smaller, at random</source>
+        <translation>每个笔触随机缩小至多这么多</translation>
+    </message>
+    <message>
+        <source>Opacit&amp;y jitter</source>
+        <translation>不透明度抖动(&amp;Y)</translation>
+    </message>
+    <message>
+        <source>Each dab is up to this much more transparent, at random</source>
+        <translation>每个笔触随机更透明至多这么多</translation>
+    </message>
+    <message>
+        <source>An&amp;gle jitter</source>
+        <translation>角度抖动(&amp;G)</translation>
+    </message>
+    <message>
+        <source>Each dab turns up to this far either way, at random</source>
+        <translation>每个笔触随机向任一方向旋转至多这么多</translation>
+    </message>
+    <message>
+        <source>Scatt&amp;er</source>
+        <translation>散布(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Each dab moves up to this far from the stroke, in per cent of the radius</source>
+        <translation>每个笔触偏离笔画至多这么远，以半径的百分比计</translation>
+    </message>
+    <message>
+        <source>The random jitter&apos;s seed: the same seed paints the same stroke again</source>
+        <translation>随机抖动的种子：相同的种子再次绘制相同的笔画</translation>
+    </message>
+    <message>
+        <source>See&amp;d</source>
+        <translation>种子(&amp;D)</translation>
+    </message>
+    <message>
+        <source>Loaded</source>
+        <translation>已载入</translation>
+    </message>
+    <message>
+        <source>Load Brush Tip</source>
+        <translation>载入笔尖</translation>
+    </message>
+    <message>
+        <source>Images (*.png *.tif *.tiff);;All files (*)</source>
+        <translation>图像 (*.png *.tif *.tiff);;所有文件 (*)</translation>
+    </message>
+</context>
+<context>
     <name>ui::BrushToolBar</name>
     <message>
         <source>Brush colour</source>

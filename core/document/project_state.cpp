@@ -92,6 +92,16 @@ public:
         }
         warn(key, "is not a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
     }
+    void integer64(const char* key, long long& out, long long lo, long long hi) {
+        const Json* v = find(key);
+        if (!v)
+            return;
+        if (v->is_number_integer() && v->get<long long>() >= lo && v->get<long long>() <= hi) {
+            out = v->get<long long>();
+            return;
+        }
+        warn(key, "is not a whole number from " + std::to_string(lo) + " to " + std::to_string(hi));
+    }
     void boolean(const char* key, bool& out) {
         const Json* v = find(key);
         if (!v)
@@ -185,6 +195,43 @@ private:
     inline static const Json m_empty = Json::object();
 };
 
+/** The brush tip settings of brush into its JSON object (a loaded tip's image is the io's). */
+void brushTipToJson(const Brush& b, Json& j) {
+    j["tip"] = b.tip;
+    if (b.tip == kUserTip)
+        j["tip_name"] = b.userTipName;
+    j["angle"] = num(b.angle);
+    j["angle_mode"] = tipAngleModeName(b.angleMode);
+    j["jitter"] = {{"size", num(b.jitter.size)},
+                   {"opacity", num(b.jitter.opacity)},
+                   {"angle", num(b.jitter.angle)},
+                   {"scatter", num(b.jitter.scatter)}};
+    j["seed"] = b.seed;
+}
+
+void readBrushTip(Reader& r, Brush& b) {
+    std::string tip = b.tip;
+    r.string("tip", tip);
+    if (isBuiltinTip(tip) || tip == kUserTip)
+        b.tip = tip;
+    else
+        r.warn("tip", "is not a brush tip");
+    r.string("tip_name", b.userTipName);
+    r.number("angle", b.angle, -360.0f, 360.0f);
+    std::string mode = tipAngleModeName(b.angleMode);
+    r.string("angle_mode", mode);
+    if (!tipAngleModeFromName(mode, b.angleMode))
+        r.warn("angle_mode", "is not fixed, stroke or random");
+    Reader j = r.child("jitter");
+    j.number("size", b.jitter.size, 0.0f, 1.0f);
+    j.number("opacity", b.jitter.opacity, 0.0f, 1.0f);
+    j.number("angle", b.jitter.angle, 0.0f, 180.0f);
+    j.number("scatter", b.jitter.scatter, 0.0f, 4.0f);
+    long long seed = b.seed;
+    r.integer64("seed", seed, 0, 0xFFFFFFFFll);
+    b.seed = std::uint32_t(seed);
+}
+
 /** extras.layerpaint.version: 1 when absent (the CLI's first files), else a whole number ≥ 1. */
 Result<int> formatVersion(const Json& layerpaint) {
     const auto it = layerpaint.find("version");
@@ -229,6 +276,7 @@ Json projectStateToJson(const ProjectState& s) {
                   {"pressure_radius", b.pressureRadius},
                   {"pressure_opacity", b.pressureOpacity},
                   {"track_radius", num(b.trackRadius)}};
+    brushTipToJson(b, j["brush"]);
     Json palette = Json::array();
     for (std::size_t i = 0; i < s.palette.size() && i < ProjectState::kMaxPaletteColors; ++i)
         palette.push_back(vec4Json(s.palette[i]));
@@ -317,6 +365,7 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
         r.boolean("pressure_radius", b.pressureRadius);
         r.boolean("pressure_opacity", b.pressureOpacity);
         r.number("track_radius", b.trackRadius, 0.0f, 1e5f);
+        readBrushTip(r, b);
         s.foreground = b.color; // files without colours: the brush's is the foreground
     }
     {

@@ -14,6 +14,7 @@
 #include "core/document/project_state.h"
 #include "core/document/script_layers.h"
 #include "core/document/script_stroke.h"
+#include "core/document/script_tips.h"
 #include "core/paint/flood_fill.h"
 
 namespace core {
@@ -249,20 +250,22 @@ Result<Camera> parseOrbitCamera(const std::string& orbit, const Bounds& bounds) 
 }
 
 json setBrushOperation(const Brush& b, const PressureCurve& curve) {
-    return {{"op", "set-brush"},
-            {"color_linear", {b.color.r, b.color.g, b.color.b, b.color.a}},
-            {"radius", b.radius},
-            {"hardness", b.hardness},
-            {"opacity", b.opacity},
-            {"flow", b.flow},
-            {"spacing", b.spacing},
-            {"track_radius", b.trackRadius},
-            {"eraser", b.eraser},
-            {"pressure_radius", b.pressureRadius},
-            {"pressure_opacity", b.pressureOpacity},
-            {"pressure_curve", curve.gamma},
-            {"channels", brushChannelsJson(b)},
-            {"stabilizer", brushStabilizerJson(b)}};
+    json op = {{"op", "set-brush"},
+               {"color_linear", {b.color.r, b.color.g, b.color.b, b.color.a}},
+               {"radius", b.radius},
+               {"hardness", b.hardness},
+               {"opacity", b.opacity},
+               {"flow", b.flow},
+               {"spacing", b.spacing},
+               {"track_radius", b.trackRadius},
+               {"eraser", b.eraser},
+               {"pressure_radius", b.pressureRadius},
+               {"pressure_opacity", b.pressureOpacity},
+               {"pressure_curve", curve.gamma},
+               {"channels", brushChannelsJson(b)},
+               {"stabilizer", brushStabilizerJson(b)}};
+    addBrushTipJson(b, op);
+    return op;
 }
 
 json viewOperation(const Camera& c, const View& view) {
@@ -363,6 +366,10 @@ Status ScriptRunner::run(const json& op) {
             if (op.contains("stabilizer"))
                 if (Status st = applyBrushStabilizer(b, op["stabilizer"]); !st)
                     throw OpError{st.error()};
+            if (Status st = applyBrushTip(
+                    b, op, [this](const std::string& path) { return m_host.loadTip(path); });
+                !st)
+                throw OpError{st.error()};
             PressureCurve curve = m_doc.pressureCurve();
             curve.gamma = number(op, "pressure_curve", curve.gamma, PressureCurve::kMinGamma,
                                  PressureCurve::kMaxGamma);

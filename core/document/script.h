@@ -64,6 +64,10 @@ public:
     virtual Status buildLayers(Document& doc, const View& view) = 0;
     /** The script moved the camera (orbit, orbit-about, view); the view it paints in now. */
     virtual void viewChanged(const View& view) { (void)view; }
+    /** Decodes an image file into a brush tip (set-brush "tip"); an Error naming the file. */
+    virtual Result<std::shared_ptr<const TipImage>> loadTip(const std::string& path) {
+        return Error{path + ": image tips cannot be loaded here"};
+    }
 };
 
 /**

@@ -13,6 +13,7 @@
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io_in_process.h"
 #include "core/io/project_file_layers.h"
+#include "core/io/project_file_tip.h"
 
 namespace core {
 
@@ -69,6 +70,15 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
             return Error{path + ": " + read.error(), read.errorKind()};
         project.state->paintLayers = std::move(layers);
     }
+    if (project.state && project.state->brush.tip == kUserTip) {
+        // The loaded brush tip; without it the brush falls back to the round tip.
+        if (Status tip = readBrushTipImage(path, (*extras)[kProjectExtrasKey], limits,
+                                           loadImagesWith, project.state->brush);
+            !tip) {
+            warnings.push_back(path + ": " + tip.error() + "; the brush uses the round tip");
+            project.state->brush.tip = std::string(kRoundTip);
+        }
+    }
     project.mesh.warnings.insert(project.mesh.warnings.end(), warnings.begin(), warnings.end());
     return project;
 }
@@ -117,6 +127,10 @@ Status saveProject(const std::string& path, const Mesh& paintedMesh, const Proje
             for (const Material& m : paintedMesh.materials)
                 additions.materialMetallicRoughness.push_back(m.baseColorTexture);
         }
+        if (Status tip =
+                addBrushTipImage(state.brush, additions.extras[kProjectExtrasKey], additions);
+            !tip)
+            return Error{path + ": " + tip.error(), tip.errorKind()};
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to save the file"};
     } catch (const std::exception& e) {

@@ -7,15 +7,21 @@
 namespace core {
 
 float Brush::falloff(float d, float r) const {
-    if (!(r > 0.0f) || d >= r)
+    return roundFalloff(d, r, hardness);
+}
+
+float Brush::tipHardness() const {
+    if (tip == "round-soft")
         return 0.0f;
-    const float t = d / r;
-    const float h = std::clamp(hardness, 0.0f, 1.0f);
-    if (t <= h)
+    if (tip == "round-hard")
         return 1.0f;
-    // Smooth from full weight at the hard core to nothing at the rim.
-    const float s = (t - h) / (1.0f - h);
-    return 1.0f - s * s * (3.0f - 2.0f * s);
+    return hardness;
+}
+
+const TipImage* Brush::tipImage() const {
+    if (tip == kUserTip)
+        return userTip.get();
+    return builtinTipImage(tip);
 }
 
 float PressureCurve::apply(float pressure) const {

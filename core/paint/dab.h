@@ -2,10 +2,14 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
+
+#include "core/paint/brush_tips.h"
 
 namespace core {
 
@@ -24,6 +28,7 @@ struct Dab {
     glm::vec2 center{0.0f};  // pixels, y down
     float radius = 0.0f;     // screen radius R in pixels (after pressure)
     float opacity = 1.0f;    // after pressure
+    float angle = 0.0f;      // the tip's turn, radians, clockwise on screen
     std::uint32_t layer = 0; // 1-based layer of the centre's fragment
     std::vector<MapPixel> paintable;
 };
@@ -36,7 +41,17 @@ struct Brush {
     float opacity = 1.0f;  // the most a stroke can reach
     float flow = 1.0f;     // how much one dab adds towards it
     float spacing = 0.15f; // dab distance as a fraction of the radius
-    bool eraser = false;   // restores the original surface colour
+    // The tip (brush_tips.h): a built-in name, or kUserTip for userTip; its turn and the jitter
+    // per dab, drawn from seed (mixed with the stroke's first point, so strokes differ but a
+    // replayed script repeats them exactly).
+    std::string tip{kRoundTip};
+    TipAngleMode angleMode = TipAngleMode::Fixed;
+    float angle = 0.0f; // degrees, clockwise on screen
+    BrushJitter jitter;
+    std::uint32_t seed = 0;
+    std::shared_ptr<const TipImage> userTip; // a loaded image (kUserTip), shared between copies
+    std::string userTipName;                 // its file name, for display
+    bool eraser = false;                     // restores the original surface colour
     bool pressureRadius = true;
     bool pressureOpacity = false;
     float trackRadius = 0.0f; // R_max in pixels; 0 = max(4R, 64)
@@ -62,6 +77,10 @@ struct Brush {
     }
     /** Falloff weight in [0, 1] at distance d (pixels) from a dab of radius r. */
     float falloff(float d, float r) const;
+    /** The hardness of the round falloff the tip uses (round-soft 0, round-hard 1). */
+    float tipHardness() const;
+    /** The tip's image; nullptr for a round tip (or kUserTip with none loaded). */
+    const TipImage* tipImage() const;
 };
 
 /**

@@ -91,6 +91,7 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
     nextDab();
     center = d.center;
     radius = d.radius;
+    tip.setup(brush.tipImage(), brush.tipHardness(), radius, d.angle);
     dabOpacity = std::clamp(d.opacity, 0.0f, 1.0f);
     flowOpacity = std::clamp(brush.flow, 0.0f, 1.0f) * dabOpacity;
     toleranceScale = options.relativeTolerance + options.pixelTolerance * footprintScale;

@@ -109,6 +109,7 @@ struct PaintTarget::Context {
     int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
     glm::vec2 center{0.0f};
     float radius = 0.0f;
+    TipSampler tip; // the dab's weight per screen offset
     float dabOpacity = 0.0f;
     float flowOpacity = 0.0f;
     float toleranceScale = 0.0f, toleranceOffset = 0.0f; // per unit of depth, constant

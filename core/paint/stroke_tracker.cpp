@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -117,6 +118,13 @@ std::size_t StrokeTracker::startStroke(const StrokePoint& point, const Brush& br
     m_last = {point.position, pressure};
     m_carry = 0.0;
     m_dabPressure = pressure;
+    // The stroke's seed: the brush's, mixed with the first point's exact position.
+    std::uint32_t xBits = 0, yBits = 0;
+    std::memcpy(&xBits, &point.position.x, sizeof xBits);
+    std::memcpy(&yBits, &point.position.y, sizeof yBits);
+    m_rng = SplitMix64{std::uint64_t(m_brush.seed) << 32 ^ (std::uint64_t(xBits) << 16) ^ yBits};
+    m_pathAngle = 0.0f;
+    m_sizeFactor = 1.0f;
     return placeDab(point.position, pressure, out);
 }
 
@@ -129,6 +137,7 @@ std::size_t StrokeTracker::moveStroke(const StrokePoint& point, std::vector<Dab>
     const double length = glm::length(b - a);
     std::size_t added = 0;
     if (length > 0.0) {
+        m_pathAngle = float(std::atan2(b.y - a.y, b.x - a.x));
         // Dabs sit at fixed path lengths from the previous one, wherever the input events fall,
         // so the dabs of a path do not depend on how finely it was sampled.
         double t = 0.0;
@@ -151,7 +160,7 @@ std::size_t StrokeTracker::moveStroke(const StrokePoint& point, std::vector<Dab>
 }
 
 float StrokeTracker::stepFor(float pressure) const {
-    const float radius = m_brush.radius * (m_brush.pressureRadius ? pressure : 1.0f);
+    const float radius = m_brush.radius * (m_brush.pressureRadius ? pressure : 1.0f) * m_sizeFactor;
     const float step = m_brush.spacing * radius;
     // Below half a pixel more dabs change nothing on a pixel map; the floor also keeps a zero
     // radius or spacing from looping forever.
@@ -179,6 +188,7 @@ std::size_t StrokeTracker::placeDab(glm::vec2 center, float pressure, std::vecto
     dab.radius = m_brush.radius * (m_brush.pressureRadius ? pressure : 1.0f);
     dab.opacity =
         std::clamp(m_brush.opacity, 0.0f, 1.0f) * (m_brush.pressureOpacity ? pressure : 1.0f);
+    jitterDab(center, dab);
 
     if (!m_layerAware) {
         // Conventional: no tracking across layers; a later layer-aware dab starts afresh.
@@ -236,6 +246,35 @@ std::size_t StrokeTracker::placeDab(glm::vec2 center, float pressure, std::vecto
 
     out.push_back(std::move(dab));
     return 1;
+}
+
+void StrokeTracker::jitterDab(glm::vec2& center, Dab& dab) {
+    // Every sample draws the same numbers, painted or not, so a dab's jitter depends only on the
+    // seed and its place in the stroke.
+    const float uSize = m_rng.unit(), uOpacity = m_rng.unit(), uAngle = m_rng.unit();
+    const float uTurn = m_rng.unit(), uScatter = m_rng.unit(), uDirection = m_rng.unit();
+    const BrushJitter& j = m_brush.jitter;
+    constexpr float kPi = 3.14159265358979f;
+    if (j.size > 0.0f) {
+        m_sizeFactor = 1.0f - std::clamp(j.size, 0.0f, 1.0f) * uSize;
+        dab.radius *= m_sizeFactor;
+    }
+    if (j.opacity > 0.0f)
+        dab.opacity *= 1.0f - std::clamp(j.opacity, 0.0f, 1.0f) * uOpacity;
+    float degrees = std::isfinite(m_brush.angle) ? m_brush.angle : 0.0f;
+    if (m_brush.angleMode == TipAngleMode::Random)
+        degrees += 360.0f * uTurn;
+    if (j.angle > 0.0f)
+        degrees += std::clamp(j.angle, 0.0f, 180.0f) * (2.0f * uAngle - 1.0f);
+    dab.angle =
+        degrees * (kPi / 180.0f) + (m_brush.angleMode == TipAngleMode::Stroke ? m_pathAngle : 0.0f);
+    if (j.scatter > 0.0f) {
+        // Uniform over the disc of scatter radii around the path point.
+        const float r = std::clamp(j.scatter, 0.0f, 4.0f) * dab.radius * std::sqrt(uScatter);
+        const float a = 2.0f * kPi * uDirection;
+        center += glm::vec2(r * std::cos(a), r * std::sin(a));
+        dab.center = center;
+    }
 }
 
 template <std::uint32_t StrokeTracker::FragmentMarks::*Mark>

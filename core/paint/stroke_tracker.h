@@ -172,6 +172,8 @@ private:
         return fragment - m_stack->offsets[pixel] + 1;
     }
     float stepFor(float pressure) const;
+    /** Draws the dab's jitter and angle; moves center by the scatter. */
+    void jitterDab(glm::vec2& center, Dab& dab);
 
     const LayerStack* m_stack = nullptr;
     const Connectivity* m_connectivity = nullptr;
@@ -190,6 +192,11 @@ private:
     double m_carry = 0.0;           // path length from the last dab to m_last
     float m_dabPressure = 1.0f;     // pressure at the last dab (sets the spacing)
     std::uint32_t m_startLayer = 0; // the layer the tracking starts on, 0 = the visible one
+    // The tip's turn and jitter: a PRNG seeded per stroke, the path's direction (radians) and
+    // the last dab's size jitter (the spacing follows the jittered size).
+    SplitMix64 m_rng;
+    float m_pathAngle = 0.0f;
+    float m_sizeFactor = 1.0f;
 
     // The maps of the last painted dab (generation m_gen).
     bool m_tracking = false; // the last painted dab was layer-aware: its Mt answers lookups

@@ -536,6 +536,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const std::size_t windowStride = std::size_t(c.windowW);
     const TriangleSetup* setups = c.setups.data();
     const glm::vec2 center = c.center;
+    const TipSampler& tip = c.tip;
     const float radius = c.radius, dabOpacity = c.dabOpacity, flowOpacity = c.flowOpacity;
     const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
     const LayerStack& stack = layers.stack;
@@ -629,7 +630,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     !c.coveredAtEdge(stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view,
                                      px, py))
                     return;
-                const float weight = brush.falloff(distance, radius);
+                const float weight = tip.weight(glm::vec2(px, py) - center, distance);
                 if (!(weight > 0.0f))
                     return;
                 const int tx = wrap ? wrapIndex(x, width) : x;

@@ -146,7 +146,6 @@ const PaintChanges& VertexColorTarget::paint(const Layers& layers, const Dab& da
     c.changes.clear();
     if (!c.inStroke || !c.beginDab(layers, dab))
         return c.changes;
-    const Brush& brush = c.brush;
     for (std::size_t si = 0; si < c.setups.size(); ++si) {
         const TriangleSetup& s = c.setups[si];
         for (const std::uint32_t v : s.vertex) {
@@ -163,7 +162,8 @@ const PaintChanges& VertexColorTarget::paint(const Layers& layers, const Dab& da
             const bool corner = corners[0] == v || corners[1] == v || corners[2] == v;
             if (!corner && !c.onMapSurface(std::uint32_t(si), p.view, mapped))
                 continue;
-            const float weight = brush.falloff(glm::length(glm::vec2(px, py) - c.center), c.radius);
+            const glm::vec2 offset = glm::vec2(px, py) - c.center;
+            const float weight = c.tip.weight(offset, glm::length(offset));
             if (!(weight > 0.0f))
                 continue;
             const std::int32_t slot = c.slotFor(*this, 0, v / kVertexBlock);

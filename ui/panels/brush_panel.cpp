@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/panels/brush_panel.h"
 
+#include "ui/panels/brush_tip_box.h"
 #include "ui/panels/stabilizer_box.h"
 #include "ui/panels/value_spin_box.h"
 
@@ -167,11 +168,21 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
         m_curveView->setCurve(m_curve);
         emit pressureCurveChanged(m_curve);
     });
+    addTipBox(layout);
     addStabilizerBox(layout);
     layout->addStretch(1);
 
     setBrush(m_brush);
     setPressureCurve(m_curve);
+}
+
+void BrushPanel::addTipBox(QVBoxLayout* layout) {
+    m_tipBox = new BrushTipBox(this);
+    layout->addWidget(m_tipBox);
+    connect(m_tipBox, &BrushTipBox::changed, this, [this] {
+        m_tipBox->apply(m_brush);
+        emit brushChanged(m_brush);
+    });
 }
 
 QSpinBox* BrushPanel::addRow(const QString& label, const QString& name, int minimum, int maximum,
@@ -230,6 +241,7 @@ void BrushPanel::setBrush(const core::Brush& brush) {
     m_roughness->setValue(double(brush.roughness));
     m_metallic->setValue(double(brush.metallic));
     m_stabilizer->setBrush(brush);
+    m_tipBox->show(brush);
     updateAutoTrackText();
 }
 

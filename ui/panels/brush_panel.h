@@ -11,12 +11,12 @@ class QFormLayout;
 class QLabel;
 class QSlider;
 class QSpinBox;
+class QVBoxLayout;
 
 namespace ui {
+
+class BrushTipBox;
 class StabilizerBox;
-}
-
-namespace ui {
 
 /** A small plot of a pressure curve: pen pressure to the right, stroke pressure up. */
 class PressureCurveView : public QWidget {
@@ -57,6 +57,8 @@ public:
      * disabled with why as their tip.
      */
     void setMaterialChannels(bool available, const QString& why = {});
+    /** The tip settings (the brush's tip, its angle and jitter). */
+    BrushTipBox* tipBox() const { return m_tipBox; }
 
 signals:
     void brushChanged(const core::Brush& brush);
@@ -69,6 +71,7 @@ private:
     void updateAutoTrackText();
     /** The stroke stabilizer's group box, below the other settings. */
     void addStabilizerBox(QLayout* layout);
+    void addTipBox(QVBoxLayout* layout);
 
     core::Brush m_brush;
     core::PressureCurve m_curve;
@@ -90,6 +93,7 @@ private:
     QSlider* m_gamma = nullptr;
     QLabel* m_gammaText = nullptr;
     PressureCurveView* m_curveView = nullptr;
+    BrushTipBox* m_tipBox = nullptr;
     bool m_updating = false;
     StabilizerBox* m_stabilizer = nullptr;
 };

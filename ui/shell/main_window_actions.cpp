@@ -24,6 +24,7 @@
 #include "core/model/builtin_models.h"
 #include "ui/commands/history_bridge.h"
 #include "ui/panels/brush_panel.h"
+#include "ui/panels/brush_tip_box.h"
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
 #include "ui/panels/fill_panel.h"
@@ -88,6 +89,7 @@ void MainWindow::createPaintActions() {
     // The panels: the full brush settings and the colours, on the left of the view.
     m_brushPanel = new BrushPanel(this);
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
+    m_brushPanel->tipBox()->restore(m_document->brush()); // the tip settings of the last session
     // Scrolled where the window is too low for all its rows (the channels made it taller).
     auto* brushScroll = new QScrollArea(this);
     brushScroll->setWidget(m_brushPanel);

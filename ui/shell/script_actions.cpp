@@ -13,6 +13,7 @@
 #include <QStatusBar>
 
 #include "core/document/document.h"
+#include "core/io/project_file_tip.h"
 #include "ui/commands/history_bridge.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
@@ -48,6 +49,9 @@ public:
         return {};
     }
     void viewChanged(const core::View&) override { m_window.viewport()->cameraMoved(); }
+    core::Result<std::shared_ptr<const core::TipImage>> loadTip(const std::string& path) override {
+        return core::loadTipImageFile(path);
+    }
 
 private:
     MainWindow& m_window;

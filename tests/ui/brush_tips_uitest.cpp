@@ -1,0 +1,187 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Brush tips in the GUI through real Qt event delivery: clicking a tip in the Brush panel's
+// chooser sets the document's brush, and a drag paints with it (a textured tip paints other
+// bytes than the round one on the same path). Needs a display with OpenGL 4.5 (xvfb-run).
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QListWidget>
+#include <QScrollArea>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "core/document/document.h"
+#include "core/paint/paint_target.h"
+#include "tests/ui/ui_test_util.h"
+#include "ui/shell/main_window.h"
+#include "ui/view/layer_builder.h"
+#include "ui/view/viewport.h"
+
+namespace {
+
+using namespace ui_test;
+
+class BrushTipsTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        QSettings().clear();
+        m_window = std::make_unique<ui::MainWindow>();
+        m_window->setErrorDialogsEnabled(false);
+        m_window->resize(1260, 720);
+        m_window->show();
+        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
+        m_window->activateWindow();
+        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
+    }
+    void TearDown() override {
+        m_window.reset();
+        QSettings().clear();
+    }
+
+    ui::Viewport* viewport() const { return m_window->viewport(); }
+    core::Document& document() const { return m_window->document(); }
+    std::vector<std::uint8_t> pageBytes() const {
+        const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
+        return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
+    }
+
+    void openTrefoil() {
+        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        m_window->openFile(QStringLiteral("builtin:trefoil"));
+        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+        ASSERT_NE(document().layers(), nullptr);
+    }
+
+    /** Whether the 11 × 11 pixels around p all show the model. */
+    bool solid(int px, int py) const {
+        const core::LayerStack& stack = document().layers()->stack;
+        for (int dy = -5; dy <= 5; ++dy)
+            for (int dx = -5; dx <= 5; ++dx) {
+                const int x = px + dx, y = py + dy;
+                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
+                    return false;
+                const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
+                if (stack.offsets[i + 1] == stack.offsets[i])
+                    return false;
+            }
+        return true;
+    }
+
+    /** Horizontal runs across the model at least 70 px long, rows 50 px apart or more. */
+    std::vector<std::pair<QPoint, QPoint>> runs() const {
+        const core::LayerStack& stack = document().layers()->stack;
+        std::vector<std::pair<QPoint, QPoint>> out;
+        for (int y = 20; y < stack.height - 20; y += 5) {
+            if (!out.empty() && y - out.back().first.y() < 50)
+                continue;
+            int start = -1;
+            for (int x = 0; x <= stack.width; ++x) {
+                const bool inside = x < stack.width && solid(x, y);
+                if (inside && start < 0)
+                    start = x;
+                if (!inside && start >= 0) {
+                    if (x - start >= 70) {
+                        out.push_back({{start + 4, y}, {std::min(x - 5, start + 160), y}});
+                        break;
+                    }
+                    start = -1;
+                }
+            }
+        }
+        return out;
+    }
+
+    void drag(QPoint a, QPoint b) {
+        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, a);
+        const int steps = std::max(1, (b - a).manhattanLength() / 4);
+        for (int i = 1; i <= steps; ++i) {
+            QTest::mouseMove(viewport(), a + (b - a) * i / steps);
+            QApplication::processEvents();
+        }
+        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, b);
+        QApplication::processEvents();
+    }
+
+    /** Clicks the tip named name (its data) in the Brush panel's chooser. */
+    void chooseTip(const QString& name) {
+        auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("brushDock"));
+        ASSERT_NE(dock, nullptr);
+        dock->show();
+        dock->raise();
+        auto* list = m_window->findChild<QListWidget*>(QStringLiteral("brushTipList"));
+        ASSERT_NE(list, nullptr);
+        if (auto* scroll = qobject_cast<QScrollArea*>(dock->widget()))
+            scroll->ensureWidgetVisible(list);
+        QApplication::processEvents();
+        QListWidgetItem* item = nullptr;
+        for (int i = 0; i < list->count(); ++i)
+            if (list->item(i)->data(Qt::UserRole).toString() == name)
+                item = list->item(i);
+        ASSERT_NE(item, nullptr) << name.toStdString();
+        list->scrollToItem(item);
+        QApplication::processEvents();
+        const QRect r = list->visualItemRect(item);
+        ASSERT_TRUE(list->viewport()->rect().contains(r.center())) << name.toStdString();
+        QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, r.center());
+        ASSERT_EQ(document().brush().tip, name.toStdString());
+    }
+
+    std::unique_ptr<ui::MainWindow> m_window;
+};
+
+} // namespace
+
+TEST_F(BrushTipsTest, AChosenTipPaintsTheStroke) {
+    openTrefoil();
+    const auto paths = runs();
+    ASSERT_GE(paths.size(), 3u) << "no three runs across the knot";
+    const std::vector<std::uint8_t> original = pageBytes();
+    ASSERT_FALSE(original.empty());
+
+    // The same path with the star and with the round tip paints different texels.
+    chooseTip(QStringLiteral("star"));
+    drag(paths[0].first, paths[0].second);
+    const std::vector<std::uint8_t> star = pageBytes();
+    EXPECT_NE(star, original);
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    ASSERT_EQ(pageBytes(), original);
+    chooseTip(QStringLiteral("round"));
+    drag(paths[0].first, paths[0].second);
+    const std::vector<std::uint8_t> round = pageBytes();
+    EXPECT_NE(round, original);
+    EXPECT_NE(round, star);
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+
+    // Three tips, three strokes with the dabs apart: each adds paint (the picture is kept for a
+    // look).
+    auto* spacing = m_window->findChild<QSpinBox*>(QStringLiteral("brushPanelSpacing"));
+    ASSERT_NE(spacing, nullptr);
+    QTest::mouseDClick(spacing, Qt::LeftButton);
+    QTest::keyClick(spacing, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(spacing, QStringLiteral("90"));
+    QTest::keyClick(spacing, Qt::Key_Return);
+    ASSERT_FLOAT_EQ(document().brush().spacing, 0.9f);
+    std::vector<std::uint8_t> before = pageBytes();
+    const QString tips[] = {QStringLiteral("star"), QStringLiteral("bristle"),
+                            QStringLiteral("spatter")};
+    for (int i = 0; i < 3; ++i) {
+        chooseTip(tips[i]);
+        drag(paths[std::size_t(i)].first, paths[std::size_t(i)].second);
+        const std::vector<std::uint8_t> after = pageBytes();
+        EXPECT_NE(after, before) << tips[i].toStdString();
+        before = after;
+    }
+    const QString shot = QDir::temp().filePath(QStringLiteral("layerpaint_brush_tips.png"));
+    if (viewport()->grabFramebuffer().save(shot))
+        std::printf("[ picture ] %s\n", qPrintable(shot));
+}
