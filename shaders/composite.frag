@@ -227,9 +227,16 @@ vec3 shadeMaterial(vec3 lit, float headlight, float roughness, float metallic, v
         vec3 fresnel = f0 + (1.0 - f0) * pow(1.0 - max(dot(v, h), 0.0), 5.0);
         specular += power[i] * nl * ggx * visibility * fresnel;
     }
+    // The environment: sky over dark ground and two soft boxes where the key and the fill
+    // light are, wider and dimmer the rougher the surface, so curved metal shows bands.
     vec3 reflected = reflect(-v, n);
     float sky = smoothstep(-0.3, 0.5, reflected.y);
-    vec3 environment = mix(mix(vec3(0.06), vec3(0.95), sky), vec3(0.45), r);
+    float width = mix(0.03, 0.7, r);
+    float boxes = 2.5 * smoothstep(1.0 - width - 0.04, 1.0 - 0.5 * width,
+                                   dot(reflected, normalize(lights[0]))) +
+                  1.2 * smoothstep(1.0 - width - 0.04, 1.0 - 0.5 * width,
+                                   dot(reflected, normalize(lights[1])));
+    vec3 environment = mix(vec3(mix(0.06, 0.8, sky) + boxes * (1.0 - 0.8 * r)), vec3(0.45), r * r);
     vec3 fresnelEnv = f0 + (max(vec3(1.0 - r), f0) - f0) * pow(1.0 - nv, 5.0);
     // A rough dielectric's environment is the headlight shading's ambient already.
     float environmentWeight = mix(1.0 - r, 1.0, metallic);

@@ -206,6 +206,26 @@ TEST_F(MaterialUiTest, GlbExportFromTheGuiHasTheMetallicRoughnessComposite) {
     for (std::size_t i = 2; i < composite.rgba.size() && !metal; i += 4)
         metal = composite.rgba[i] == 255;
     EXPECT_TRUE(metal);
+
+    // Wide strokes to look at in the Material view: smooth metal down the right loop, rough
+    // orange down the left one (where the framed trefoil is in a 1260 × 860 window).
+    ui::Viewport* viewport = m_window->viewport();
+    const auto wide = [&](QPoint from, float roughness, float metallic, bool color) {
+        core::Brush brush = doc().brush();
+        brush.radius = 22.0f;
+        brush.paintBaseColor = color;
+        brush.color = {0.9f, 0.35f, 0.05f, 1.0f};
+        brush.roughness = roughness;
+        brush.metallic = metallic;
+        m_window->setBrush(brush);
+        QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, from);
+        for (int step = 1; step <= 12; ++step)
+            QTest::mouseMove(viewport, from + QPoint(0, 5 * step));
+        QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, from + QPoint(0, 60));
+    };
+    wide(QPoint(482, 260), 0.15f, 1.0f, false);
+    wide(QPoint(145, 280), 1.0f, 0.0f, true);
+    grabView().save(QDir::current().absoluteFilePath(QStringLiteral("material_uitest.png")));
 }
 
 } // namespace
