@@ -5,6 +5,7 @@
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <string>
 #include <thread>
 
 #include <epoxy/gl.h>
@@ -14,6 +15,7 @@
 #include "core/document/document.h"
 #include "core/io/mesh_io.h"
 #include "core/layers/layers.h"
+#include "core/paint/paint_target.h"
 #include "render/gl_context.h"
 #include "render/gl_layer_capturer.h"
 #include "render/gpu_connectivity.h"
@@ -103,6 +105,71 @@ StrokeTimes timeStroke(core::Document& doc, const core::View& view) {
         doc.undo(changes);
     return times;
 }
+constexpr int kPaintLayerTexture = 4096;
+constexpr int kPaintLayers = 8;
+
+struct PaintLayerTimes {
+    std::vector<double> moveNone, dabNone, moveLayers, dabLayers;
+    std::size_t stackBytes = 0, targetBytes = 0;
+    std::string error;
+};
+
+/**
+ * The paint-layer stack's cost on a kPaintLayerTexture² texture target: the bench stroke on the
+ * base, then with kPaintLayers paint layers painting the top one in all three channels (each dab
+ * recomputes the composite's touched tiles), and the stack's memory after it. Leaves the
+ * document's target replaced.
+ */
+PaintLayerTimes timePaintLayers(core::Document& doc, const core::View& view, int runs) {
+    PaintLayerTimes times;
+    core::PaintTargetOptions options = doc.paintTargetOptions();
+    options.kind = core::PaintTargetKind::Texture;
+    options.resolution = kPaintLayerTexture;
+    if (const core::Status s = doc.setPaintTarget(options); !s) {
+        times.error = s.error();
+        return times;
+    }
+    const core::Brush brush = doc.brush();
+    for (int run = 0; run < std::max(1, runs / 2); ++run) {
+        const StrokeTimes none = timeStroke(doc, view);
+        times.moveNone.insert(times.moveNone.end(), none.moves.begin(), none.moves.end());
+        times.dabNone.insert(times.dabNone.end(), none.dabs.begin(), none.dabs.end());
+    }
+    core::PaintChanges changes;
+    for (int i = 0; i < kPaintLayers; ++i) {
+        core::PaintLayerSettings settings;
+        settings.name = "layer " + std::to_string(i + 1);
+        if (auto added = doc.addPaintLayer(settings, changes); !added) {
+            times.error = added.error();
+            return times;
+        }
+    }
+    doc.brush().paintBaseColor = true;
+    doc.brush().paintRoughness = true;
+    doc.brush().paintMetallic = true;
+    for (int run = 0; run < std::max(1, runs / 2); ++run) {
+        const StrokeTimes layered = timeStroke(doc, view);
+        times.moveLayers.insert(times.moveLayers.end(), layered.moves.begin(), layered.moves.end());
+        times.dabLayers.insert(times.dabLayers.end(), layered.dabs.begin(), layered.dabs.end());
+    }
+    // Painted once more and kept, for the memory the layers hold.
+    core::PaintChanges kept;
+    const int y = view.height / 2;
+    const core::LayerStack& stack = doc.layers()->stack;
+    for (int x = view.width / 10; x < view.width * 9 / 10; ++x)
+        if (stack.layerCount(std::size_t(y) * view.width + x) > 0) {
+            if (doc.beginStroke({{float(x) + 0.5f, float(y) + 0.5f}, 1.0f}, kept))
+                doc.endStroke();
+            break;
+        }
+    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget())) {
+        times.stackBytes = texture->layerStack().layerBytes();
+        times.targetBytes = texture->bytes();
+    }
+    doc.brush() = brush;
+    return times;
+}
+
 } // namespace
 
 int runBench(const BenchArgs& args) {
@@ -239,6 +306,7 @@ int runBench(const BenchArgs& args) {
                 regions = layers->segmentation.graph.regions.size();
                 layerCount = layers->stack.maxLayers();
             }
+            const PaintLayerTimes paintLayers = timePaintLayers(doc, *view, runs);
             const double plain = median(samples.plain), build = median(samples.buildLayers);
             json row = {
                 {"model", model},
@@ -270,6 +338,16 @@ int runBench(const BenchArgs& args) {
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
                 {"dab_on_target_ms", median(samples.dab)},
                 {"move_stroke_textured_tip_ms", median(tipMoves)},
+                {"paint_layers",
+                 {{"texture", kPaintLayerTexture},
+                  {"layers", kPaintLayers},
+                  {"move_stroke_no_layers_ms", median(paintLayers.moveNone)},
+                  {"dab_no_layers_ms", median(paintLayers.dabNone)},
+                  {"move_stroke_ms", median(paintLayers.moveLayers)},
+                  {"dab_on_top_layer_ms", median(paintLayers.dabLayers)},
+                  {"stack_bytes", paintLayers.stackBytes},
+                  {"target_bytes", paintLayers.targetBytes},
+                  {"error", paintLayers.error}}},
             };
             std::cerr << model << ' ' << size << ": build_layers " << build
                       << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain

@@ -56,9 +56,10 @@ struct PaintArgs {
 struct ExportArgs {
     std::string input; // a model, a project or builtin:NAME
     std::string out;
-    std::string format; // empty: from the extension of out
-    std::string target; // "", "texture" or "vertex-colors": paint target of a plain model
-    int resolution = 0; // > 0: size of a new paint texture
+    std::string format;    // empty: from the extension of out
+    std::string target;    // "", "texture" or "vertex-colors": paint target of a plain model
+    int resolution = 0;    // > 0: size of a new paint texture
+    bool perLayer = false; // also every paint layer's channels and mask as images
 };
 
 struct BenchArgs {

@@ -12,6 +12,7 @@
 #include "app/cli_commands.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
+#include "core/io/layer_export.h"
 #include "core/io/project_file.h"
 
 namespace cli {
@@ -96,6 +97,16 @@ int runExport(const ExportArgs& args) {
     }
     if (!files)
         return fail(files.error());
+    if (args.perLayer) {
+        const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget());
+        if (!texture)
+            return fail(args.input + ": there are no paint layers to export (they need a paint "
+                                     "texture)");
+        auto layers = core::exportPaintLayerImages(args.out, texture->layerStack());
+        if (!layers)
+            return fail(layers.error());
+        files->insert(files->end(), layers->begin(), layers->end());
+    }
     const nlohmann::json out = {{"format", core::exportFormatName(*format)},
                                 {"files", *files},
                                 {"load_ms", loadMs},

@@ -93,6 +93,9 @@ int main(int argc, char** argv) {
         ->add_option("--resolution", exportArgs.resolution,
                      "Size of a new paint texture (512 to 8192)")
         ->check(CLI::Range(512, 8192));
+    exportCommand->add_flag("--per-layer", exportArgs.perLayer,
+                            "Also write each paint layer's channels and mask as PNG images "
+                            "beside the export");
 
     cli::BenchArgs bench;
     CLI::App* benchCommand = app.add_subcommand(

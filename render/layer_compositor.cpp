@@ -34,6 +34,10 @@ constexpr std::pair<Variant, const char*> kDefines[] = {
     {kHighlight, "HIGHLIGHT"},
     {kTransparency, "TRANSPARENCY"},
     {kUnder, "UNDER"},
+    {kMaterial, "MATERIAL"},
+    {kChannelBase, "CHANNEL_BASE"},
+    {kChannelRough, "CHANNEL_ROUGHNESS"},
+    {kChannelMetal, "CHANNEL_METALLIC"},
 };
 
 /** composite.vert + composite.frag, or composite_shade.comp, with the variant's defines. */
@@ -68,7 +72,8 @@ core::Result<Program> buildProgram(unsigned variant) {
                      {&p.highlightBox, "uHighlightBox"},
                      {&p.pass, "uPass"},
                      {&p.texture, "uTexture"},
-                     {&p.opacity, "uOpacity"}});
+                     {&p.opacity, "uOpacity"},
+                     {&p.metallicRoughness, "uMetallicRoughness"}});
     return p;
 }
 
@@ -165,6 +170,21 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         composeVariant |= kSegmentation | (options.shadeSegmentation ? kShadeSegmentation : 0u);
     else if (textured)
         composeVariant |= kTextured;
+    if (!segmentation) {
+        switch (options.channel) {
+        case MaterialChannel::Material:
+            break;
+        case MaterialChannel::BaseColor:
+            composeVariant |= kChannelBase;
+            break;
+        case MaterialChannel::Roughness:
+            composeVariant |= kChannelRough;
+            break;
+        case MaterialChannel::Metallic:
+            composeVariant |= kChannelMetal;
+            break;
+        }
+    }
     if (options.boundaries)
         composeVariant |= kBoundaries;
     if (options.highlightRegion != core::kNone)
@@ -192,8 +212,18 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     if (transparent)
         for (std::size_t pass = 0; pass < passes; ++pass)
             steps.push_back({(composeVariant & ~(kHighlight | kBoundaries)) | kUnder, pass, false});
+    // A pass with a metallic-roughness texture samples it (only then: llvmpipe pays for code).
+    const auto passVariant = [&](unsigned variant, std::size_t pass) {
+        return (variant & kTextured) && pass < d.passMetallicRoughness.size() &&
+                       d.passMetallicRoughness[pass].id() != 0
+                   ? variant | kMaterial
+                   : variant;
+    };
+    if (transparent)
+        for (Step& step : steps)
+            step.variant = passVariant(step.variant, step.pass);
     for (std::size_t pass = 0; pass < passes; ++pass)
-        steps.push_back({composeVariant, pass, transparent});
+        steps.push_back({passVariant(composeVariant, pass), pass, transparent});
     if (resolve)
         steps.front().variant |= resolveVariant | kResolve;
     auto shader = d.program(shadeVariant);
@@ -259,10 +289,13 @@ void LayerCompositor::draw(const CompositeOptions& options) {
                                    : glm::ivec4(0, 0, -1, -1);
         glUniform4iv(p.highlightBox, 1, glm::value_ptr(box));
         glUniform1i(p.texture, 0);
+        glUniform1i(p.metallicRoughness, 1);
         glUniform1i(p.pass, int(step.pass));
         glUniform1f(p.opacity, std::clamp(options.popUpOpacity, 0.0f, 1.0f));
         if (composeVariant & kTextured)
             glBindTextureUnit(0, d.passTextures[step.pass].id());
+        if (step.variant & kMaterial)
+            glBindTextureUnit(1, d.passMetallicRoughness[step.pass].id());
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(d.tiles.size()));
         if (i == 0 && resolve) {
             d.resolvedVersion = d.version;
@@ -273,6 +306,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         }
     }
     glDisable(GL_BLEND);
+    glBindTextureUnit(1, 0);
 
     glBindVertexArray(0);
     for (GLuint binding = 0; binding < kStorageBindings; ++binding)

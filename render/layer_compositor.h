@@ -23,8 +23,18 @@ enum class LayerDisplay {
     Segmentation, // the visible fragment coloured by its region (the paper's Figure 2)
 };
 
+/**
+ * Which material channel Composite and SingleLayer show. Material lights base colour with the
+ * metallic-roughness textures given by setMetallicRoughness() (GGX specular from a key, fill and
+ * rim light and a sky-and-ground environment that metal reflects); fragments without one shade
+ * as roughness 1, metal 0, which is the plain headlight shading. The others show one channel
+ * unlit: the base colour, or roughness or metallic as grey (the texel's byte as the grey level).
+ */
+enum class MaterialChannel { Material, BaseColor, Roughness, Metallic };
+
 struct CompositeOptions {
     LayerDisplay display = LayerDisplay::Composite;
+    MaterialChannel channel = MaterialChannel::Material;
     std::uint32_t layer = 1; // for SingleLayer (1-based)
     /**
      * Overlay region boundaries (the paper's Figure 3 contour lines): darkens the visible
@@ -61,7 +71,8 @@ struct CompositeOptions {
  * over all fragments), picking the visible fragments once per region order, picked layer or
  * boundary setting, and composing (texture, region colours, overlays) on every draw. Only
  * 16 × 16 tiles holding fragments are drawn; the rest is cleared. GPU memory: 8 bytes a pixel,
- * 32 a fragment, up to 40 a vertex, 16 a triangle, plus copies of the base color textures.
+ * 36 a fragment, up to 40 a vertex, 16 a triangle, plus copies of the base color and
+ * metallic-roughness textures.
  * Needs a current GL context for every call, the one it was initialized in.
  */
 class LayerCompositor {
@@ -86,6 +97,15 @@ public:
      */
     void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
                       const core::Image& image);
+    /**
+     * The glTF metallic-roughness texture (linear RGBA8: G roughness, B metallic) that goes with
+     * mesh texture `texture`: uploaded with its mip levels, sampled like the base colour where
+     * that texture is. Ignored for a texture no material samples; setMesh() drops them all.
+     */
+    void setMetallicRoughness(std::uint32_t texture, const core::Image& image);
+    /** Painting: as updateTexels() for the metallic-roughness texture of `texture`. */
+    void updateMetallicRoughness(std::uint32_t texture, int x, int y, int width, int height,
+                                 const core::Image& image);
     /**
      * Painting: replaces the colours of vertices [first, first + colors.size()) (clamped to the
      * mesh; ignored if setMesh() had no vertex colours). Fragments are shaded with them, so the

@@ -27,7 +27,7 @@ namespace render::compositor {
 
 constexpr std::size_t kMinBufferBytes = 16;    // a binding needs storage even for empty data
 constexpr int kTileSize = 16;                  // pixels; only tiles holding fragments are drawn
-constexpr std::size_t kShadingWords = 3;       // per fragment, see composite_shade.comp
+constexpr std::size_t kShadingWords = 4;       // per fragment, see composite_shade.comp
 constexpr std::size_t kMaxTexturePasses = 255; // the texture byte of a fragment's shading
 constexpr std::uint32_t kMaxFragments = 0x7fffffff; // Visible keeps a flag in bit 31
 constexpr GLuint kShadeGroupSize = 64;              // composite_shade.comp's local size
@@ -68,6 +68,10 @@ enum Variant : unsigned {
     kHighlight = 1u << 9,
     kTransparency = 1u << 10,
     kUnder = 1u << 11,
+    kMaterial = 1u << 12,     // the pass has a metallic-roughness texture
+    kChannelBase = 1u << 13,  // MaterialChannel::BaseColor
+    kChannelRough = 1u << 14, // MaterialChannel::Roughness
+    kChannelMetal = 1u << 15, // MaterialChannel::Metallic
 };
 
 /** composite.frag's Material (std430). */
@@ -106,7 +110,8 @@ struct Program {
           fragmentCount = -1, triangleCount = -1, view = -1;
     GLint rayOrigin0 = -1, rayOriginDx = -1, rayOriginDy = -1, rayDirection0 = -1,
           rayDirectionDx = -1, rayDirectionDy = -1;
-    GLint background = -1, highlight = -1, highlightBox = -1, pass = -1, texture = -1, opacity = -1;
+    GLint background = -1, highlight = -1, highlightBox = -1, pass = -1, texture = -1, opacity = -1,
+          metallicRoughness = -1;
 };
 
 } // namespace render::compositor
@@ -125,8 +130,9 @@ struct LayerCompositor::Impl {
     bool hasColors = false;
     std::uint32_t triangleCount = 0;
     std::size_t vertexCount = 0;
-    std::vector<PaintTexture> passTextures; // the textures materials sample: one pass each
-    std::vector<int> passOfTexture;         // per mesh texture: its pass, -1 for none
+    std::vector<PaintTexture> passTextures;          // the textures materials sample: one pass each
+    std::vector<int> passOfTexture;                  // per mesh texture: its pass, -1 for none
+    std::vector<PaintTexture> passMetallicRoughness; // per pass; id 0 where it has none
 
     // Layers
     bool hasLayers = false;
@@ -152,6 +158,7 @@ struct LayerCompositor::Impl {
     void releaseTextures() {
         passTextures.clear();
         passOfTexture.clear();
+        passMetallicRoughness.clear();
     }
 
     bool fits(std::size_t count, std::size_t elementBytes) const {

@@ -279,6 +279,25 @@ void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int widt
     d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
 }
 
+void LayerCompositor::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0 ||
+        image.empty())
+        return;
+    d.passMetallicRoughness.resize(d.passTextures.size());
+    d.passMetallicRoughness[std::size_t(d.passOfTexture[texture])].create(image, true);
+}
+
+void LayerCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
+                                              int height, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
+        return;
+    const auto pass = std::size_t(d.passOfTexture[texture]);
+    if (pass < d.passMetallicRoughness.size())
+        d.passMetallicRoughness[pass].update(image, x, y, width, height);
+}
+
 void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
     Impl& d = *m_impl;
     if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())

@@ -25,7 +25,7 @@ PaintTexture::~PaintTexture() {
 
 PaintTexture::PaintTexture(PaintTexture&& other) noexcept
     : m_id(std::exchange(other.m_id, 0u)), m_width(other.m_width), m_height(other.m_height),
-      m_levels(other.m_levels), m_mips(std::move(other.m_mips)) {}
+      m_levels(other.m_levels), m_linear(other.m_linear), m_mips(std::move(other.m_mips)) {}
 
 PaintTexture& PaintTexture::operator=(PaintTexture&& other) noexcept {
     if (this != &other) {
@@ -34,20 +34,23 @@ PaintTexture& PaintTexture::operator=(PaintTexture&& other) noexcept {
         m_width = other.m_width;
         m_height = other.m_height;
         m_levels = other.m_levels;
+        m_linear = other.m_linear;
         m_mips = std::move(other.m_mips);
     }
     return *this;
 }
 
-void PaintTexture::create(const core::Image& image) {
+void PaintTexture::create(const core::Image& image, bool linear) {
     release();
+    m_linear = linear;
     m_width = image.width;
     m_height = image.height;
     m_levels = 1;
     for (int size = std::max(image.width, image.height); size > 1; size /= 2)
         ++m_levels;
     glCreateTextures(GL_TEXTURE_2D, 1, &m_id);
-    glTextureStorage2D(m_id, m_levels, GL_SRGB8_ALPHA8, image.width, image.height);
+    glTextureStorage2D(m_id, m_levels, linear ? GL_RGBA8 : GL_SRGB8_ALPHA8, image.width,
+                       image.height);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glTextureSubImage2D(m_id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                         image.rgba.data());
@@ -84,7 +87,10 @@ void PaintTexture::update(const core::Image& image, int x, int y, int width, int
     }
 
     // A 2 × 2 box filter in linear space, level by level, over the texels above the rectangle.
-    const std::array<float, 256>& toLinear = core::SrgbTables::get().decode;
+    std::array<float, 256> identity{};
+    for (std::size_t i = 0; i < identity.size(); ++i)
+        identity[i] = float(i);
+    const std::array<float, 256>& toLinear = m_linear ? identity : core::SrgbTables::get().decode;
     const std::uint8_t* source = image.rgba.data();
     int sourceWidth = m_width, sourceHeight = m_height;
     for (int level = 1; level < m_levels; ++level) {
@@ -109,7 +115,8 @@ void PaintTexture::update(const core::Image& image, int x, int y, int width, int
                 }
                 std::uint8_t* out = mip.data() + (std::size_t(ty) * w + tx) * 4;
                 for (int c = 0; c < 3; ++c)
-                    out[c] = core::linearToSrgb(0.25f * sum[c]);
+                    out[c] = m_linear ? std::uint8_t(std::min(255.0f, 0.25f * sum[c] + 0.5f))
+                                      : core::linearToSrgb(0.25f * sum[c]);
                 out[3] = std::uint8_t(std::min(255.0f, 0.25f * sum[3] + 0.5f));
             }
         }

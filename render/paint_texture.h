@@ -23,8 +23,11 @@ public:
     PaintTexture(const PaintTexture&) = delete;
     PaintTexture& operator=(const PaintTexture&) = delete;
 
-    /** Uploads image (sRGB RGBA8, rows top first) with its mip levels. */
-    void create(const core::Image& image);
+    /**
+     * Uploads image (sRGB RGBA8, rows top first) with its mip levels; with linear, the bytes are
+     * plain values (GL_RGBA8, e.g. glTF metallic-roughness), filtered as they are.
+     */
+    void create(const core::Image& image, bool linear = false);
     /**
      * Replaces texels [x, x + width) × [y, y + height) with those of image (the same size as the
      * texture; the rectangle is clamped to it) and updates the mip levels above them, filtered
@@ -42,6 +45,7 @@ private:
     int m_width = 0;
     int m_height = 0;
     int m_levels = 0;
+    bool m_linear = false;
     /** Levels 1.. as the GL holds them (RGBA8 rows); empty until the first update. */
     std::vector<std::vector<std::uint8_t>> m_mips;
 };

@@ -9,7 +9,9 @@
 //   keeps, where the visible fragment is not on layer 1, the next one in the order ("under") in
 //   the second half of Visible. UNDER passes draw those opaque; the normal passes then blend
 //   the visible fragment over them with uOpacity.
-// - the picture: shaded colour, texture (TEXTURED, one pass per texture), SEGMENTATION colours
+// - the picture: shaded colour, texture (TEXTURED, one pass per texture; MATERIAL: the pass has
+//   a metallic-roughness texture and lights the surface with it), one channel alone
+//   (CHANNEL_BASE, CHANNEL_ROUGHNESS, CHANNEL_METALLIC), SEGMENTATION colours
 //   (SHADE_SEGMENTATION: lit lightly), BOUNDARIES and HIGHLIGHT overlays, so repainting the
 //   texture or the overlays costs no picking.
 // llvmpipe executes both sides of every branch, uniform or not, which is why features are
@@ -46,7 +48,7 @@ layout(std430, binding = 12) buffer Visible {
 };
 const uint kNoFragment = 0x7fffffffu;
 const uint kBoundaryBit = 0x80000000u;
-// composite_shade.comp's output, 3 words a fragment.
+// composite_shade.comp's output, 4 words a fragment.
 layout(std430, binding = 14) readonly buffer Shading {
     uint shading[];
 };
@@ -165,6 +167,7 @@ uniform ivec4 uHighlightBox; // HIGHLIGHT: its pixels' bounding box, min x, min 
 uniform int uPass;        // TEXTURED: the pass; its texture is uTexture
 uniform float uOpacity;   // TRANSPARENCY: of visible fragments drawn over an under one
 uniform sampler2D uTexture; // GL_SRGB8_ALPHA8: sampled as linear
+uniform sampler2D uMetallicRoughness; // MATERIAL: GL_RGBA8, G roughness, B metallic (glTF)
 
 vec3 srgbToLinear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
@@ -186,6 +189,60 @@ vec3 regionColor(uint region) {
                    0.0, 1.0);
     return value * mix(vec3(1.0), k, saturation);
 }
+
+#ifdef MATERIAL
+const float kPi = 3.14159265;
+
+vec3 decodeNormal(uint word) {
+    vec2 e = unpackSnorm2x16(word);
+    vec3 v = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+    if (v.z < 0.0)
+        v.xy = (1.0 - abs(v.yx)) * vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
+    return normalize(v);
+}
+
+// Metallic-roughness in view space with the viewer along +z: Lambert as the headlight shading
+// already gives it (lit, with its ambient), GGX specular from a key, a fill and a rim light, and
+// a sky-over-ground environment blurred by roughness that metal reflects tinted by its colour.
+vec3 shadeMaterial(vec3 lit, float headlight, float roughness, float metallic, vec3 n) {
+    vec3 albedo = lit / (0.25 + 0.75 * headlight);
+    vec3 f0 = mix(vec3(0.04), albedo, metallic);
+    float r = clamp(roughness, 0.05, 1.0);
+    float a2 = r * r * r * r;
+    float k = 0.5 * r * r;
+    const vec3 v = vec3(0.0, 0.0, 1.0);
+    float nv = max(n.z, 1e-3);
+    const vec3 lights[3] = vec3[3](vec3(-0.5, 0.6, 0.62), vec3(0.78, -0.1, 0.62),
+                                   vec3(0.2, 0.48, -0.85));
+    const float power[3] = float[3](2.4, 0.6, 1.6);
+    vec3 specular = vec3(0.0);
+    for (int i = 0; i < 3; ++i) {
+        vec3 l = normalize(lights[i]);
+        vec3 h = normalize(l + v);
+        float nl = max(dot(n, l), 0.0);
+        float nh = max(dot(n, h), 0.0);
+        float d = nh * nh * (a2 - 1.0) + 1.0;
+        float ggx = a2 / (kPi * d * d);
+        float visibility = 1.0 / (4.0 * (nl * (1.0 - k) + k) * (nv * (1.0 - k) + k));
+        vec3 fresnel = f0 + (1.0 - f0) * pow(1.0 - max(dot(v, h), 0.0), 5.0);
+        specular += power[i] * nl * ggx * visibility * fresnel;
+    }
+    // The environment: sky over dark ground and two soft boxes where the key and the fill
+    // light are, wider and dimmer the rougher the surface, so curved metal shows bands.
+    vec3 reflected = reflect(-v, n);
+    float sky = smoothstep(-0.3, 0.5, reflected.y);
+    float width = mix(0.03, 0.7, r);
+    float boxes = 2.5 * smoothstep(1.0 - width - 0.04, 1.0 - 0.5 * width,
+                                   dot(reflected, normalize(lights[0]))) +
+                  1.2 * smoothstep(1.0 - width - 0.04, 1.0 - 0.5 * width,
+                                   dot(reflected, normalize(lights[1])));
+    vec3 environment = mix(vec3(mix(0.06, 0.8, sky) + boxes * (1.0 - 0.8 * r)), vec3(0.45), r * r);
+    vec3 fresnelEnv = f0 + (max(vec3(1.0 - r), f0) - f0) * pow(1.0 - nv, 5.0);
+    // A rough dielectric's environment is the headlight shading's ambient already.
+    float environmentWeight = mix(1.0 - r, 1.0, metallic);
+    return lit * (1.0 - metallic) + specular + environment * fresnelEnv * environmentWeight;
+}
+#endif
 
 void main() {
     ivec2 pix = ivec2(pixelCentre());
@@ -219,7 +276,7 @@ void main() {
     vec4 color = uBackground;
     uint region = kNone;
     if (chosen != kNoFragment) {
-        uint shade = shading[3u * chosen];
+        uint shade = shading[4u * chosen];
 #if defined(SEGMENTATION) || defined(HIGHLIGHT)
         region = fragmentRegion[chosen];
 #endif
@@ -227,21 +284,48 @@ void main() {
         vec3 c = region == kNone ? vec3(0.5) : regionColor(region);
 #ifdef SHADE_SEGMENTATION
         // Light shading keeps the shape readable without drowning the hue.
-        c *= 0.6 + 0.4 * float((shading[3u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+        c *= 0.6 + 0.4 * float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
 #endif
         color = vec4(c, 1.0);
 #else
         color = vec4(unpackUnorm4x8(shade).rgb, 1.0);
+        // Untextured fragments and those without metallic-roughness: roughness 1, metal 0.
+        float roughness = 1.0;
+        float metallic = 0.0;
+        bool textured = false;
+        vec3 lit = srgbToLinear(color.rgb); // the base colour lit by the headlight
 #ifdef TEXTURED
         // The first pass takes the untextured pixels too, later passes only their texture's.
         uint slot = shade >> 24;
         if (slot == 0u ? uPass != 0 : int(slot) - 1 != uPass)
             discard;
         if (slot != 0u) {
-            vec2 uv = unpackUnorm2x16(shading[3u * chosen + 1u]);
-            float lod = (float(shading[3u * chosen + 2u] & 0xffffu) - 32768.0) / 1024.0;
-            vec3 texel = textureLod(uTexture, uv, lod).rgb;
-            color.rgb = linearToSrgb(clamp(srgbToLinear(color.rgb) * texel, 0.0, 1.0));
+            textured = true;
+            vec2 uv = unpackUnorm2x16(shading[4u * chosen + 1u]);
+            float lod = (float(shading[4u * chosen + 2u] & 0xffffu) - 32768.0) / 1024.0;
+            lit *= textureLod(uTexture, uv, lod).rgb;
+#ifdef MATERIAL
+            vec2 mr = textureLod(uMetallicRoughness, uv, lod).gb;
+            roughness = mr.x;
+            metallic = mr.y;
+#endif
+        }
+#endif
+#if defined(CHANNEL_ROUGHNESS)
+        color.rgb = vec3(roughness);
+#elif defined(CHANNEL_METALLIC)
+        color.rgb = vec3(metallic);
+#elif defined(CHANNEL_BASE)
+        float headlight = float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+        color.rgb = linearToSrgb(clamp(lit / (0.25 + 0.75 * headlight), 0.0, 1.0));
+#else
+        if (textured) {
+#ifdef MATERIAL
+            float headlight = float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+            lit = shadeMaterial(lit, headlight, roughness, metallic,
+                                decodeNormal(shading[4u * chosen + 3u]));
+#endif
+            color.rgb = linearToSrgb(clamp(lit, 0.0, 1.0));
         }
 #endif
 #endif

@@ -56,15 +56,23 @@ layout(std430, binding = 11) readonly buffer Materials {
 layout(std430, binding = 13) readonly buffer FragmentPixels {
     uint fragmentPixel[];
 };
-// 3 words a fragment: [0] lit base colour, sRGB rgb in bytes 0-2 and in byte 3 the texture
+// 4 words a fragment: [0] lit base colour, sRGB rgb in bytes 0-2 and in byte 3 the texture
 // pass + 1 (0: untextured); [1] fract(uv) as 2 × unorm16; [2] bits 0-15 the texture LOD × 1024
-// + 32768, bits 16-23 the headlight term |n · v|.
+// + 32768, bits 16-23 the headlight term |n · v|; [3] the view-space unit normal turned towards
+// the viewer, octahedral as 2 × snorm16 (the material's lights).
 layout(std430, binding = 14) writeonly buffer Shading {
     uint shading[];
 };
 
 vec3 linearToSrgb(vec3 c) {
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
+}
+
+uint octEncode(vec3 n) {
+    n /= abs(n.x) + abs(n.y) + abs(n.z);
+    vec2 e = n.z >= 0.0 ? n.xy
+                        : (1.0 - abs(n.yx)) * vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+    return packSnorm2x16(e);
 }
 
 vec3 position(uint i) {
@@ -122,6 +130,7 @@ void main() {
     uint slot = 0u;
     uint uvWord = 0u;
     uint lodWord = 32768u;
+    vec3 facing = vec3(0.0, 0.0, 1.0);
     if (triangle.w != kNone) {
         // Member by member: each field read is a load per fragment on llvmpipe.
         base = materials[triangle.w].baseColorFactor;
@@ -144,7 +153,9 @@ void main() {
         if (!(dot(n, n) > 1e-24))
             n = cross(e1, e2);
         // Two-sided headlight, as mesh.frag.
-        diffuse = abs(dot(normalize(n), normalize(-viewPosition)));
+        float nv = dot(normalize(n), normalize(-viewPosition));
+        diffuse = abs(nv);
+        facing = nv < 0.0 ? -normalize(n) : normalize(n);
 #ifdef COLORS
         base *= bary.x * colors[triangle.x] + bary.y * colors[triangle.y] +
                 bary.z * colors[triangle.z];
@@ -178,7 +189,8 @@ void main() {
 #endif
     }
     vec3 lit = clamp(base.rgb * (0.25 + 0.75 * diffuse), 0.0, 1.0);
-    shading[3u * f] = (packUnorm4x8(vec4(linearToSrgb(lit), 0.0)) & 0xffffffu) | (slot << 24);
-    shading[3u * f + 1u] = uvWord;
-    shading[3u * f + 2u] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
+    shading[4u * f] = (packUnorm4x8(vec4(linearToSrgb(lit), 0.0)) & 0xffffffu) | (slot << 24);
+    shading[4u * f + 1u] = uvWord;
+    shading[4u * f + 2u] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
+    shading[4u * f + 3u] = octEncode(facing);
 }

@@ -1145,6 +1145,42 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Strokes follow the pointer on a string, smoothing out wobbles (length and smoothing in the Brush panel)</source>
         <translation>Striche folgen dem Zeiger an einer Schnur und glätten Zittern (Länge und Glättung im Pinsel-Bedienfeld)</translation>
     </message>
+    <message>
+        <source>&amp;Channel</source>
+        <translation>Ka&amp;nal</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>&amp;Material</translation>
+    </message>
+    <message>
+        <source>Show the paint lit as a metallic-roughness material</source>
+        <translation>Die Farbe als beleuchtetes Metallic-Roughness-Material zeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Base Colour</source>
+        <translation>&amp;Grundfarbe</translation>
+    </message>
+    <message>
+        <source>Show the base colour alone, unlit</source>
+        <translation>Nur die Grundfarbe zeigen, unbeleuchtet</translation>
+    </message>
+    <message>
+        <source>&amp;Roughness</source>
+        <translation>&amp;Rauheit</translation>
+    </message>
+    <message>
+        <source>Show roughness as grey: black smooth, white rough</source>
+        <translation>Rauheit als Grau zeigen: schwarz glatt, weiß rau</translation>
+    </message>
+    <message>
+        <source>M&amp;etallic</source>
+        <translation>M&amp;etallisch</translation>
+    </message>
+    <message>
+        <source>Show metallic as grey: black non-metal, white metal</source>
+        <translation>Metallisch als Grau zeigen: schwarz Nichtmetall, weiß Metall</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

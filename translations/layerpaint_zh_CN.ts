@@ -1144,6 +1144,42 @@ connectivity %3 ms, regions %4 ms
         <source>Strokes follow the pointer on a string, smoothing out wobbles (length and smoothing in the Brush panel)</source>
         <translation>笔画用一根绳子跟随指针，消除抖动（长度和平滑在画笔面板中设置）</translation>
     </message>
+    <message>
+        <source>&amp;Channel</source>
+        <translation>通道(&amp;C)</translation>
+    </message>
+    <message>
+        <source>&amp;Material</source>
+        <translation>材质(&amp;M)</translation>
+    </message>
+    <message>
+        <source>Show the paint lit as a metallic-roughness material</source>
+        <translation>将绘制结果显示为受光照的金属度-粗糙度材质</translation>
+    </message>
+    <message>
+        <source>&amp;Base Colour</source>
+        <translation>基础色(&amp;B)</translation>
+    </message>
+    <message>
+        <source>Show the base colour alone, unlit</source>
+        <translation>仅显示基础色，不受光照</translation>
+    </message>
+    <message>
+        <source>&amp;Roughness</source>
+        <translation>粗糙度(&amp;R)</translation>
+    </message>
+    <message>
+        <source>Show roughness as grey: black smooth, white rough</source>
+        <translation>以灰度显示粗糙度：黑色光滑，白色粗糙</translation>
+    </message>
+    <message>
+        <source>M&amp;etallic</source>
+        <translation>金属度(&amp;E)</translation>
+    </message>
+    <message>
+        <source>Show metallic as grey: black non-metal, white metal</source>
+        <translation>以灰度显示金属度：黑色非金属，白色金属</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -238,6 +238,19 @@ Status Document::setPaintLayerSettings(std::uint64_t id, PaintLayerSettings sett
         op["visible"] = settings.visible;
     if (settings.lockTransparency != old.lockTransparency)
         op["lock"] = settings.lockTransparency;
+    if (settings.fill != old.fill) {
+        // Every channel: a value, or null for one the fill leaves alone.
+        const ChannelValues& v = settings.fill;
+        nlohmann::json values = {
+            {"base_color", nullptr}, {"roughness", nullptr}, {"metallic", nullptr}};
+        if (v.baseColor)
+            values["base_color"] = {v.baseColor->x, v.baseColor->y, v.baseColor->z};
+        if (v.roughness)
+            values["roughness"] = *v.roughness;
+        if (v.metallic)
+            values["metallic"] = *v.metallic;
+        op["values"] = std::move(values);
+    }
     LayerChange change;
     change.kind = LayerChange::Kind::Settings;
     change.id = id;

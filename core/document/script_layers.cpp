@@ -190,6 +190,27 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
             }
             s.visible = flag(op, "visible", s.visible);
             s.lockTransparency = flag(op, "lock", s.lockTransparency);
+            if (op.contains("values")) {
+                // A fill layer's values: the channels named change, null leaves one alone.
+                const json& v = op["values"];
+                if (!v.is_object())
+                    throw LayerOpError{"\"values\" must be an object"};
+                if (s.kind != PaintLayerKind::Fill)
+                    throw LayerOpError{"\"values\" are a fill layer's; this is a paint layer"};
+                if (v.contains("base_color"))
+                    s.fill.baseColor =
+                        v["base_color"].is_null()
+                            ? std::nullopt
+                            : std::optional(srgbColor(v["base_color"], "base_color"));
+                if (v.contains("roughness"))
+                    s.fill.roughness = v["roughness"].is_null()
+                                           ? std::nullopt
+                                           : std::optional(unitValue(v["roughness"], "roughness"));
+                if (v.contains("metallic"))
+                    s.fill.metallic = v["metallic"].is_null()
+                                          ? std::nullopt
+                                          : std::optional(unitValue(v["metallic"], "metallic"));
+            }
             check(doc.setPaintLayerSettings(id, std::move(s), changes));
         } else if (name == "layer-move") {
             const std::uint64_t id = layerId(target, op, false);

@@ -197,3 +197,64 @@ TEST_F(CliProject, NewerProjectIsRefusedByPaintAndExport) {
     EXPECT_FALSE(fs::exists(file("x.glb")));
     EXPECT_FALSE(fs::exists(file("x.obj")));
 }
+
+TEST_F(CliProject, ExportPerLayerWritesEachPaintLayersChannelsAndMask) {
+    json script = kFirstScript;
+    script["operations"] = {
+        {{"op", "set-mode"}, {"layer_aware", false}},
+        {{"op", "layer-add"}, {"name", "Rust & chrome/1"}},
+        {{"op", "set-brush"},
+         {"radius", 9},
+         {"hardness", 1.0},
+         {"channels", {{"base_color", "#00ff00"}, {"roughness", 0.2}, {"metallic", 1.0}}}},
+        {{"op", "stroke"}, {"points", {{120, 100}, {140, 120}, {160, 140}}}},
+        {{"op", "mask-add"}},
+        {{"op", "layer-add"},
+         {"name", "tint"},
+         {"kind", "fill"},
+         {"values", {{"roughness", 0.6}}}}};
+    writeScript("layers.json", script);
+    ASSERT_EQ(run({"paint", "builtin:trefoil", "--script", file("layers.json"), "--out",
+                   file("layers.glb"), "--cpu"})
+                  .exitCode,
+              0);
+    const CliRun r = run({"export", file("layers.glb"), "--out", file("out.png"), "--per-layer"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json report = json::parse(r.out);
+    std::vector<std::string> files;
+    for (const auto& f : report.at("files"))
+        files.push_back(fs::path(f.get<std::string>()).filename().string());
+    for (const char* expected :
+         {"out.png", "out_roughness.png", "out_metallic.png",
+          "out_layer-1-Rust-chrome-1_basecolor.png", "out_layer-1-Rust-chrome-1_roughness.png",
+          "out_layer-1-Rust-chrome-1_metallic.png", "out_layer-1-Rust-chrome-1_mask.png",
+          "out_layer-2-tint_roughness.png"})
+        EXPECT_NE(std::find(files.begin(), files.end(), expected), files.end())
+            << expected << " not in " << r.out;
+    // The fill layer has roughness only.
+    EXPECT_FALSE(fs::exists(file("out_layer-2-tint_basecolor.png")));
+
+    // The painted layer's roughness: 0.2 where painted (covered), nothing elsewhere.
+    core::Result<core::Image> rough =
+        core::loadImageFile(file("out_layer-1-Rust-chrome-1_roughness.png"));
+    ASSERT_TRUE(rough) << rough.error();
+    std::size_t painted = 0, clear = 0;
+    for (std::size_t i = 0; i < rough->rgba.size(); i += 4) {
+        if (rough->rgba[i + 3] == 255) {
+            ++painted;
+            EXPECT_EQ(rough->rgba[i], 51);
+        } else if (rough->rgba[i + 3] == 0) {
+            ++clear;
+        }
+    }
+    EXPECT_GT(painted, 50u);
+    EXPECT_GT(clear, rough->rgba.size() / 8);
+    core::Result<core::Image> fill = core::loadImageFile(file("out_layer-2-tint_roughness.png"));
+    ASSERT_TRUE(fill) << fill.error();
+    EXPECT_EQ(fill->rgba[0], 153);
+
+    // Without a paint texture there are no paint layers: a clear error.
+    const CliRun none = run({"export", "builtin:hexring", "--out", file("ring.png"), "--target",
+                             "vertex-colors", "--per-layer"});
+    EXPECT_NE(none.exitCode, 0);
+}

@@ -21,6 +21,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
@@ -29,37 +30,13 @@ namespace {
 
 using namespace ui_test;
 
-class BrushTipsTest : public ::testing::Test {
+class BrushTipsTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = std::make_unique<ui::MainWindow>();
-        m_window->setErrorDialogsEnabled(false);
-        m_window->resize(1260, 720);
-        m_window->show();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
+    BrushTipsTest() : WindowTest({1260, 720}) {}
 
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-    core::Document& document() const { return m_window->document(); }
     std::vector<std::uint8_t> pageBytes() const {
         const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
         return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
-    }
-
-    void openTrefoil() {
-        QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
-        m_window->openFile(QStringLiteral("builtin:trefoil"));
-        ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
-        ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
     }
 
     /** Whether the 11 × 11 pixels around p all show the model. */
@@ -135,8 +112,6 @@ protected:
         QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, r.center());
         ASSERT_EQ(document().brush().tip, name.toStdString());
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 } // namespace

@@ -479,8 +479,12 @@ TEST_F(ProjectTest, ExportsRunOffTheGuiThreadWithProgress) {
     EXPECT_TRUE(eventLoopRan) << "the event loop was blocked during the export";
     std::printf("[ export  ] progress dialog %s during the 4096² 16-bit PNG export\n",
                 progressShown ? "shown" : "not shown (finished within its delay)");
+    // The base colour, then the material channels beside it (as the headless export writes).
+    const QString folder = QFileInfo(png).absolutePath();
     EXPECT_EQ(exported.first().first().toStringList(),
-              QStringList{QFileInfo(png).absoluteFilePath()});
+              (QStringList{QFileInfo(png).absoluteFilePath(),
+                           QDir(folder).filePath(QStringLiteral("paint_roughness.png")),
+                           QDir(folder).filePath(QStringLiteral("paint_metallic.png"))}));
 
     // The model formats, read back.
     for (const auto format : {core::ExportFormat::Obj, core::ExportFormat::Glb}) {

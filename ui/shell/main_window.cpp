@@ -50,6 +50,7 @@ const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kThresholdKey = QStringLiteral("segmentation/threshold");
 const QString kTestKey = QStringLiteral("segmentation/test");
 const QString kTwoSidedKey = QStringLiteral("segmentation/twoSided");
+const QString kChannelKey = QStringLiteral("view/channel");
 
 /** The first local file among dragged URLs, or empty. */
 QString droppedFile(const QMimeData* mime) {
@@ -305,6 +306,44 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
                                         "neighbours on the same layer"));
     connect(m_boundariesAction, &QAction::toggled, m_viewport, &Viewport::setBoundariesVisible);
     viewMenu->addAction(m_brushMapsAction);
+    createChannelActions(viewMenu);
+}
+
+void MainWindow::createChannelActions(QMenu* viewMenu) {
+    QMenu* menu = viewMenu->addMenu(tr("&Channel"));
+    menu->setObjectName(QStringLiteral("menuChannel"));
+    auto* group = new QActionGroup(this);
+    group->setExclusive(true);
+    const int saved = QSettings().value(kChannelKey, 0).toInt();
+    const auto addChannel = [&](const QString& text, const QString& name, const QString& tip,
+                                render::MaterialChannel channel) {
+        QAction* action = menu->addAction(text);
+        action->setObjectName(name);
+        action->setCheckable(true);
+        action->setStatusTip(tip);
+        group->addAction(action);
+        connect(action, &QAction::triggered, this, [this, channel] {
+            m_viewport->setChannel(channel);
+            QSettings().setValue(kChannelKey, int(channel));
+        });
+        if (saved == int(channel)) {
+            action->setChecked(true);
+            m_viewport->setChannel(channel);
+        }
+    };
+    addChannel(tr("&Material"), QStringLiteral("actionChannelMaterial"),
+               tr("Show the paint lit as a metallic-roughness material"),
+               render::MaterialChannel::Material);
+    addChannel(tr("&Base Colour"), QStringLiteral("actionChannelBaseColor"),
+               tr("Show the base colour alone, unlit"), render::MaterialChannel::BaseColor);
+    addChannel(tr("&Roughness"), QStringLiteral("actionChannelRoughness"),
+               tr("Show roughness as grey: black smooth, white rough"),
+               render::MaterialChannel::Roughness);
+    addChannel(tr("M&etallic"), QStringLiteral("actionChannelMetallic"),
+               tr("Show metallic as grey: black non-metal, white metal"),
+               render::MaterialChannel::Metallic);
+    if (!group->checkedAction())
+        group->actions().front()->setChecked(true);
 }
 
 void MainWindow::setDisplay(render::LayerDisplay display, std::uint32_t layer) {

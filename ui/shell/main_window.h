@@ -202,6 +202,8 @@ private:
                           Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
     void createMenus();
     void createDisplayActions(QMenu* viewMenu);
+    /** View ▸ Channel: the material or one of its channels, remembered in the settings. */
+    void createChannelActions(QMenu* viewMenu);
     void createPaintActions();
     void createToolActions();
     void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);

@@ -21,6 +21,7 @@
 #include <cstring>
 
 #include "core/document/document.h"
+#include "core/io/export.h"
 #include "core/io/gltf_export.h"
 #include "core/io/project_file.h"
 #include "core/model/builtin_models.h"
@@ -53,6 +54,8 @@ struct ProjectController::Snapshot {
     core::Mesh mesh;
     core::ProjectState state;
     std::vector<core::Image> pages; // texture exports only
+    /** Per page (texture exports) or mesh texture: the metallic-roughness composite. */
+    std::vector<core::Image> metallicRoughness;
     quint64 serial = 0;
 };
 
@@ -424,10 +427,17 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
             emit exportFailed(why);
             return false;
         }
-        for (std::size_t i = 0; i < texture->pageCount(); ++i)
+        for (std::size_t i = 0; i < texture->pageCount(); ++i) {
             snap->pages.push_back(texture->page(i));
+            snap->metallicRoughness.push_back(texture->metallicRoughnessPage(i));
+        }
     } else {
         snap->mesh = doc.paintedMesh();
+        // The painted mesh's texture i is page i: its roughness and metallic go beside it.
+        if (const auto* texture =
+                dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget()))
+            for (std::size_t i = 0; i < texture->pageCount(); ++i)
+                snap->metallicRoughness.push_back(texture->metallicRoughnessPage(i));
     }
     startProgress(tr("Exporting %1…").arg(QFileInfo(path).fileName()));
     auto files = std::make_shared<QStringList>();
@@ -457,8 +467,10 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
     m_task->start([snap, files, file, format](const core::ProgressFn& progress) {
         core::Result<std::vector<std::string>> written =
             core::isTextureFormat(format)
-                ? core::exportTextures(file, format, snap->pages, progress)
-                : core::exportMesh(file, format, snap->mesh, progress);
+                ? core::exportChannelTextures(file, format, snap->pages, snap->metallicRoughness,
+                                              progress)
+                : core::exportMaterial(file, format, snap->mesh,
+                                       core::MaterialChannels{snap->metallicRoughness}, progress);
         if (!written)
             return fromCore(written.error());
         // Read on the GUI thread only after the job finished.

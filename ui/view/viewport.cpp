@@ -146,6 +146,13 @@ void Viewport::setBoundariesVisible(bool visible) {
     update();
 }
 
+void Viewport::setChannel(render::MaterialChannel channel) {
+    if (m_composite.channel == channel)
+        return;
+    m_composite.channel = channel;
+    update();
+}
+
 void Viewport::setBrushMapsVisible(bool visible) {
     if (m_brushMapsVisible == visible)
         return;
@@ -229,10 +236,13 @@ void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
             const core::TexelRect& r = pending.pages[page];
             if (r.width <= 0 || page >= texture->pageCount())
                 continue;
-            if (compositor)
+            if (compositor) {
                 m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
                                            texture->page(page));
-            else
+                m_compositor->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width,
+                                                      r.height,
+                                                      texture->metallicRoughnessPage(page));
+            } else
                 m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
                                          texture->page(page));
         }
@@ -484,6 +494,10 @@ void Viewport::uploadMeshIfDirty() {
     if (m_compositor) {
         const core::Status status = m_compositor->setMesh(mesh);
         m_compositorHasMesh = status.ok();
+        if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target))
+            for (std::size_t page = 0; status.ok() && page < texture->pageCount(); ++page)
+                m_compositor->setMetallicRoughness(std::uint32_t(page),
+                                                   texture->metallicRoughnessPage(page));
         if (!status)
             reportLayerError(status);
     }

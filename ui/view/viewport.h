@@ -126,6 +126,9 @@ public:
      */
     void setPopUpTransparency(bool on);
     bool popUpTransparency() const { return m_composite.popUpOpacity < 1.0f; }
+    /** What the shaded views show: the lit material or one channel of it alone. */
+    void setChannel(render::MaterialChannel channel);
+    render::MaterialChannel channel() const { return m_composite.channel; }
     /**
      * Layer-aware rotation (default on): an orbit that starts on a surface point of the shown
      * layers (any layer: what is visible there, popped-up or revealed) turns about that point.

@@ -330,3 +330,45 @@ TEST(Script, ARecordedSessionWithPaintLayersReplaysToTheSameLayers) {
     EXPECT_EQ(replay.doc.brush(), user.doc.brush());
     EXPECT_EQ(replay.doc.history().undoCount(), user.doc.history().undoCount());
 }
+
+TEST(Script, FillLayerValuesChangeAfterCreationAsOneUndoStep) {
+    Session s;
+    ASSERT_TRUE(s.run(json::parse(R"json([
+        {"op": "layer-add", "name": "Gloss", "kind": "fill", "values": {"roughness": 0.3}}
+    ])json"))
+                    .ok());
+    const auto& target = *dynamic_cast<const core::TextureTarget*>(s.doc.paintTarget());
+    const std::vector<std::uint8_t> before = target.metallicRoughnessPage(0).rgba;
+    ASSERT_EQ(before[1], 77); // roughness 0.3 everywhere
+    const std::size_t steps = s.doc.history().undoCount();
+
+    ASSERT_TRUE(s.run(json::parse(R"json([
+        {"op": "layer-set", "layer": "Gloss", "values": {"roughness": 0.8, "metallic": 1}}
+    ])json"))
+                    .ok());
+    const core::PaintLayerStack& stack = target.layerStack();
+    EXPECT_EQ(stack.layer(0).settings.fill.roughness, 0.8f);
+    EXPECT_EQ(stack.layer(0).settings.fill.metallic, 1.0f);
+    EXPECT_FALSE(stack.layer(0).settings.fill.baseColor.has_value());
+    const std::vector<std::uint8_t>& after = target.metallicRoughnessPage(0).rgba;
+    EXPECT_EQ(after[1], 204);
+    EXPECT_EQ(after[2], 255);
+    EXPECT_EQ(s.doc.history().undoCount(), steps + 1);
+    // The session records it so that a replay gives the same values.
+    EXPECT_NE(s.doc.session().script().operations.dump().find("\"values\""), std::string::npos);
+
+    // null leaves a channel alone again; values on a paint layer are an error.
+    ASSERT_TRUE(
+        s.run(json::parse(
+                  R"json([{"op": "layer-set", "layer": 0, "values": {"metallic": null}}])json"))
+            .ok());
+    EXPECT_FALSE(stack.layer(0).settings.fill.metallic.has_value());
+    EXPECT_EQ(target.metallicRoughnessPage(0).rgba[2], 0);
+    ASSERT_TRUE(s.run(json::parse(R"json([{"op": "undo"}, {"op": "undo"}])json")).ok());
+    EXPECT_EQ(target.metallicRoughnessPage(0).rgba, before);
+    ASSERT_TRUE(s.run(json::parse(R"json([{"op": "layer-add", "name": "Paint"}])json")).ok());
+    const core::Status bad = s.run(json::parse(
+        R"json([{"op": "layer-set", "layer": "Paint", "values": {"roughness": 1}}])json"));
+    EXPECT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().find("fill layer"), std::string::npos) << bad.error();
+}
