@@ -44,8 +44,8 @@ Result<BrushPreset> brushPresetFromJson(const json& value, const TipLoader& load
     if (!value.is_object())
         return Error{"a brush preset must be a JSON object"};
     if (!value.contains("format") || value["format"] != kBrushPresetFormat)
-        return Error{std::string("not a brush preset (\"format\" must be \"") +
-                     kBrushPresetFormat + "\")"};
+        return Error{std::string("not a brush preset (\"format\" must be \"") + kBrushPresetFormat +
+                     "\")"};
     if (value.contains("version") &&
         (!value["version"].is_number_integer() || value["version"].get<long long>() != 1))
         return Error{"unsupported brush preset version (this version reads 1)"};
@@ -66,8 +66,8 @@ Result<BrushPreset> brushPresetFromJson(const json& value, const TipLoader& load
     if (Status s = runner.run(op); !s) {
         // The runner names the operation ("operation 1: ..."); a preset has only the brush.
         std::string message = s.error();
-        if (const auto colon = message.find(": "); message.rfind("operation ", 0) == 0 &&
-                                                   colon != std::string::npos)
+        if (const auto colon = message.find(": ");
+            message.rfind("operation ", 0) == 0 && colon != std::string::npos)
             message = message.substr(colon + 2);
         return Error{"\"brush\": " + message};
     }

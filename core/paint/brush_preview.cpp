@@ -19,7 +19,8 @@ std::vector<std::uint8_t> renderBrushPreview(const Brush& brush, int width, int 
     const float margin = base * (1.0f + std::clamp(brush.jitter.scatter, 0.0f, 4.0f) * 0.5f);
     const auto path = [&](float t) {
         const float x = margin + t * (w - 2.0f * margin);
-        const float y = 0.5f * h - (0.5f * h - margin) * std::sin(2.0f * std::numbers::pi_v<float> * t);
+        const float y =
+            0.5f * h - (0.5f * h - margin) * std::sin(2.0f * std::numbers::pi_v<float> * t);
         return glm::vec2(x, y);
     };
 

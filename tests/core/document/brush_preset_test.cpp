@@ -72,8 +72,8 @@ TEST(BrushPresetTest, BadFilesGiveOneErrorNamingTheFile) {
 }
 
 TEST(BrushPresetTest, MissingKeysKeepTheDefaultBrush) {
-    const json minimal = {{"format", "layerpaint-brush"}, {"name", "Tiny"},
-                          {"brush", {{"radius", 3}}}};
+    const json minimal = {
+        {"format", "layerpaint-brush"}, {"name", "Tiny"}, {"brush", {{"radius", 3}}}};
     core::Result<core::BrushPreset> r = core::brushPresetFromJson(minimal, {});
     ASSERT_TRUE(r) << r.error();
     core::Brush expected;
@@ -88,7 +88,8 @@ TEST(BrushPresetTest, PreviewsShowTheBrushShape) {
     for (const core::BrushPreset& preset : presets) {
         std::vector<std::uint8_t> image = core::renderBrushPreview(preset.brush, 96, 48);
         ASSERT_EQ(image.size(), 96u * 48u);
-        const auto painted = std::count_if(image.begin(), image.end(), [](auto v) { return v > 0; });
+        const auto painted =
+            std::count_if(image.begin(), image.end(), [](auto v) { return v > 0; });
         // A stroke, not a blank and not a filled box.
         EXPECT_GT(painted, 96 * 48 / 20) << preset.name;
         EXPECT_LT(painted, 96 * 48 * 9 / 10) << preset.name;
@@ -96,8 +97,10 @@ TEST(BrushPresetTest, PreviewsShowTheBrushShape) {
     }
     // The hard ink is sharper than the soft round: more of its painted pixels are full.
     const auto full = [](const std::vector<std::uint8_t>& image) {
-        const auto painted = std::count_if(image.begin(), image.end(), [](auto v) { return v > 0; });
-        const auto solid = std::count_if(image.begin(), image.end(), [](auto v) { return v > 240; });
+        const auto painted =
+            std::count_if(image.begin(), image.end(), [](auto v) { return v > 0; });
+        const auto solid =
+            std::count_if(image.begin(), image.end(), [](auto v) { return v > 240; });
         return double(solid) / double(painted);
     };
     EXPECT_GT(full(previews[1]), full(previews[0]) + 0.2);
