@@ -46,7 +46,7 @@ void MainWindow::createHelpAndPresets() {
     showHint(m_tool);
     connect(this, &MainWindow::toolChanged, this, showHint);
 
-    m_quickGuideAction = new QAction(tr("&Quick Guide"), this);
+    m_quickGuideAction = new QAction(tr("Quick &Guide"), this);
     m_quickGuideAction->setObjectName(QStringLiteral("actionQuickGuide"));
     m_quickGuideAction->setShortcut(QKeySequence(Qt::Key_F1));
     m_quickGuideAction->setStatusTip(
