@@ -122,5 +122,6 @@ int main(int argc, char* argv[]) {
     // After a crash, the autosaved work comes first.
     if (!window.projectController()->offerRecovery())
         window.openFromCommandLine(parser.positionalArguments());
+    window.showQuickGuideAtStart(); // a first start opens it once
     return QApplication::exec();
 }

@@ -2,6 +2,68 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de">
 <context>
+    <name>BrushPresetsPanel</name>
+    <message>
+        <source>Soft Round</source>
+        <translation>Weich rund</translation>
+    </message>
+    <message>
+        <source>Hard Ink</source>
+        <translation>Harte Tinte</translation>
+    </message>
+    <message>
+        <source>Chalk</source>
+        <translation>Kreide</translation>
+    </message>
+    <message>
+        <source>Spatter</source>
+        <translation>Spritzer</translation>
+    </message>
+    <message>
+        <source>Metal Paint</source>
+        <translation>Metallfarbe</translation>
+    </message>
+    <message>
+        <source>Rough Matte</source>
+        <translation>Rau matt</translation>
+    </message>
+    <message>
+        <source>Eraser Soft</source>
+        <translation>Radierer weich</translation>
+    </message>
+    <message>
+        <source>Stabilized Liner</source>
+        <translation>Stabilisierter Liner</translation>
+    </message>
+</context>
+<context>
+    <name>ToolHints</name>
+    <message>
+        <source>Brush: drag to paint; Shift+click draws a straight line on from the last stroke; Ctrl+click picks a colour; Alt+drag moves the camera</source>
+        <translation>Pinsel: Ziehen malt; Umschalt+Klick zieht eine gerade Linie vom letzten Strich aus; Strg+Klick nimmt eine Farbe auf; Alt+Ziehen bewegt die Kamera</translation>
+    </message>
+    <message>
+        <source>Eraser: drag to bring back the original surface; Shift+click erases a straight line; Alt+drag moves the camera</source>
+        <translation>Radierer: Ziehen bringt die ursprüngliche Oberfläche zurück; Umschalt+Klick radiert eine gerade Linie; Alt+Ziehen bewegt die Kamera</translation>
+    </message>
+    <message>
+        <source>Fill: click to fill with the brush colour (options in the Fill panel); Ctrl+click picks a colour</source>
+        <translation>Füllen: Klick füllt mit der Pinselfarbe (Optionen im Füllen-Bedienfeld); Strg+Klick nimmt eine Farbe auf</translation>
+    </message>
+    <message>
+        <source>Eyedropper: click to take the painted colour of the surface under the cursor</source>
+        <translation>Pipette: Klick übernimmt die gemalte Farbe der Oberfläche unter dem Zeiger</translation>
+    </message>
+    <message>
+        <source>Paint to Hide: paint over regions to hide them and see what lies behind; Shift+H unhides all</source>
+        <translation>Zum Ausblenden malen: über Regionen malen, um sie auszublenden und dahinter zu sehen; Umschalt+H blendet alle wieder ein</translation>
+    </message>
+    <message>
+        <source>Pop Up: click to bring the region below the visible one to the front; click again to go deeper (Ctrl+Shift+click with any tool)</source>
+        <translation>Hervorholen: Klick holt die Region unter der sichtbaren nach vorn; erneuter Klick geht tiefer (Strg+Umschalt+Klick mit jedem Werkzeug)</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Layer-aware 3D painting of meshes.</source>
@@ -148,6 +210,89 @@
     <message>
         <source>Strokes paint this metalness (0: dielectric, 1: metal)</source>
         <translation>Striche malen diesen Metallanteil (0: Nichtmetall, 1: Metall)</translation>
+    </message>
+</context>
+<context>
+    <name>ui::BrushPresetsPanel</name>
+    <message>
+        <source>New from Current</source>
+        <translation>Neu aus aktuellem</translation>
+    </message>
+    <message>
+        <source>Save the current brush as a preset</source>
+        <translation>Den aktuellen Pinsel als Vorgabe speichern</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>Umbenennen</translation>
+    </message>
+    <message>
+        <source>Rename the chosen preset</source>
+        <translation>Die gewählte Vorgabe umbenennen</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the chosen preset</source>
+        <translation>Die gewählte Vorgabe löschen</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Add a preset from a .lpbrush file</source>
+        <translation>Eine Vorgabe aus einer .lpbrush-Datei hinzufügen</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Write the chosen preset to a .lpbrush file</source>
+        <translation>Die gewählte Vorgabe in eine .lpbrush-Datei schreiben</translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened (%2)</source>
+        <translation>%1: kann nicht geöffnet werden (%2)</translation>
+    </message>
+    <message>
+        <source>%1: too large for a brush preset</source>
+        <translation>%1: zu groß für eine Pinselvorgabe</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1: kann nicht geschrieben werden (%2)</translation>
+    </message>
+    <message>
+        <source>New Brush Preset</source>
+        <translation>Neue Pinselvorgabe</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>My Brush</source>
+        <translation>Mein Pinsel</translation>
+    </message>
+    <message>
+        <source>Import Brush Preset</source>
+        <translation>Pinselvorgabe importieren</translation>
+    </message>
+    <message>
+        <source>Brush presets (*.lpbrush);;All files (*)</source>
+        <translation>Pinselvorgaben (*.lpbrush);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Export Brush Preset</source>
+        <translation>Pinselvorgabe exportieren</translation>
+    </message>
+    <message>
+        <source>Brush presets (*.lpbrush)</source>
+        <translation>Pinselvorgaben (*.lpbrush)</translation>
     </message>
 </context>
 <context>
@@ -1181,6 +1326,22 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Show metallic as grey: black non-metal, white metal</source>
         <translation>Metallisch als Grau zeigen: schwarz Nichtmetall, weiß Metall</translation>
     </message>
+    <message>
+        <source>Brush Presets</source>
+        <translation>Pinselvorgaben</translation>
+    </message>
+    <message>
+        <source>Brush preset: %1</source>
+        <translation>Pinselvorgabe: %1</translation>
+    </message>
+    <message>
+        <source>One page on layer-aware painting, pop-up, paint to hide, orbiting and the keys</source>
+        <translation>Eine Seite über ebenenbewusstes Malen, Hervorholen, Ausblenden durch Malen, Drehen und die Tasten</translation>
+    </message>
+    <message>
+        <source>Quick &amp;Guide</source>
+        <translation>Kurz&amp;anleitung</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -1720,6 +1881,49 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Could not export to “%1”.</source>
         <translation>Export nach „%1“ nicht möglich.</translation>
+    </message>
+</context>
+<context>
+    <name>ui::QuickGuideDialog</name>
+    <message>
+        <source>Quick Guide</source>
+        <translation>Kurzanleitung</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;LayerPaint in one page&lt;/h2&gt;&lt;p&gt;LayerPaint splits the view into &lt;b&gt;depth layers&lt;/b&gt; (the first, second, … surface under each pixel) and regions, so you can paint surfaces that others hide. Turn &lt;i&gt;Layer-aware&lt;/i&gt; on with &lt;b&gt;L&lt;/b&gt; or the check box in the tool bar.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;LayerPaint auf einer Seite&lt;/h2&gt;&lt;p&gt;LayerPaint teilt die Ansicht in &lt;b&gt;Tiefenebenen&lt;/b&gt; (die erste, zweite, … Oberfläche unter jedem Pixel) und Regionen, sodass Sie Oberflächen bemalen können, die andere verdecken. Schalten Sie &lt;i&gt;Ebenenbewusst&lt;/i&gt; mit &lt;b&gt;L&lt;/b&gt; oder dem Kontrollkästchen in der Werkzeugleiste ein.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Layer-aware stroke&lt;/h3&gt;&lt;p&gt;Drag with the brush (&lt;b&gt;B&lt;/b&gt;). With layer-aware painting on, the stroke stays on the surface it started on, also where it goes behind another one. Shift+click draws a straight line on from the end of the last stroke.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Ebenenbewusster Strich&lt;/h3&gt;&lt;p&gt;Ziehen Sie mit dem Pinsel (&lt;b&gt;B&lt;/b&gt;). Mit ebenenbewusstem Malen bleibt der Strich auf der Oberfläche, auf der er begann, auch wo er hinter eine andere geht. Umschalt+Klick zieht eine gerade Linie vom Ende des letzten Strichs.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Pop-up&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Ctrl+Shift+click&lt;/b&gt; with any tool, or a click with the Pop Up tool (&lt;b&gt;P&lt;/b&gt;), brings the region under the visible one to the front. Click the same spot again to go deeper; after the last it starts from the top. &lt;b&gt;R&lt;/b&gt; resets the order.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Hervorholen&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Strg+Umschalt+Klick&lt;/b&gt; mit jedem Werkzeug oder ein Klick mit dem Werkzeug Hervorholen (&lt;b&gt;P&lt;/b&gt;) holt die Region unter der sichtbaren nach vorn. Ein erneuter Klick an derselben Stelle geht tiefer; nach der letzten beginnt es wieder oben. &lt;b&gt;R&lt;/b&gt; setzt die Reihenfolge zurück.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Paint to hide&lt;/h3&gt;&lt;p&gt;With the Paint to Hide tool (&lt;b&gt;H&lt;/b&gt;) paint over regions on the segmentation map: they are hidden and what lies behind shows. The Paint to Hide panel unhides them, &lt;b&gt;Shift+H&lt;/b&gt; all at once.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Zum Ausblenden malen&lt;/h3&gt;&lt;p&gt;Malen Sie mit dem Werkzeug Zum Ausblenden malen (&lt;b&gt;H&lt;/b&gt;) über Regionen auf der Segmentierungskarte: Sie werden ausgeblendet und das Dahinterliegende wird sichtbar. Das Bedienfeld Zum Ausblenden malen blendet sie wieder ein, &lt;b&gt;Umschalt+H&lt;/b&gt; alle auf einmal.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Orbit about a surface point&lt;/h3&gt;&lt;p&gt;With View ▸ Orbit About Surface Point on, an orbit (middle drag, or Alt+left drag) that starts on the model turns about that point, on whatever depth layer is shown there.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Um einen Oberflächenpunkt drehen&lt;/h3&gt;&lt;p&gt;Mit Ansicht ▸ Um Oberflächenpunkt drehen dreht sich eine Drehung (Ziehen mit der mittleren Taste oder Alt+links), die auf dem Modell beginnt, um diesen Punkt, auf welcher Tiefenebene er dort auch gezeigt wird.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Drawing…</source>
+        <translation>Wird gezeichnet…</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Keys&lt;/h3&gt;&lt;table cellspacing=&quot;4&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;B&lt;/b&gt; / &lt;b&gt;E&lt;/b&gt; / &lt;b&gt;G&lt;/b&gt; / &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;brush, eraser, fill, eyedropper (Ctrl+click with any tool)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt; / &lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;paint to hide, pop up&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;layer-aware painting on or off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt; / Shift+&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;brush size / hardness&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;X&lt;/b&gt;&lt;/td&gt;&lt;td&gt;swap foreground and background colours&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; / &lt;b&gt;O&lt;/b&gt;&lt;/td&gt;&lt;td&gt;frame the model / orthographic&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Middle drag, Shift+, Ctrl+, wheel&lt;/td&gt;&lt;td&gt;orbit, pan, zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Alt+left / right / middle drag&lt;/td&gt;&lt;td&gt;orbit, zoom, pan (for tablets)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt; / &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo / redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;h3&gt;Tasten&lt;/h3&gt;&lt;table cellspacing=&quot;4&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;B&lt;/b&gt; / &lt;b&gt;E&lt;/b&gt; / &lt;b&gt;G&lt;/b&gt; / &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Pinsel, Radierer, Füllen, Pipette (Strg+Klick mit jedem Werkzeug)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt; / &lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;zum Ausblenden malen, hervorholen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;ebenenbewusstes Malen ein oder aus&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt; / Umschalt+&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Pinselgröße / Härte&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;X&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Vorder- und Hintergrundfarbe tauschen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; / &lt;b&gt;O&lt;/b&gt;&lt;/td&gt;&lt;td&gt;Modell einpassen / orthografisch&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Ziehen mit der mittleren Taste, Umschalt+, Strg+, Mausrad&lt;/td&gt;&lt;td&gt;drehen, verschieben, zoomen&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Alt+links / rechts / Mitte ziehen&lt;/td&gt;&lt;td&gt;drehen, zoomen, verschieben (für Tablets)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Strg+Z&lt;/b&gt; / &lt;b&gt;Strg+Umschalt+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;rückgängig / wiederholen&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Show at start</source>
+        <translation>Beim &amp;Start zeigen</translation>
+    </message>
+    <message>
+        <source>(no picture)</source>
+        <translation>(kein Bild)</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,68 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="zh_CN">
 <context>
+    <name>BrushPresetsPanel</name>
+    <message>
+        <source>Soft Round</source>
+        <translation>柔和圆形</translation>
+    </message>
+    <message>
+        <source>Hard Ink</source>
+        <translation>硬墨水</translation>
+    </message>
+    <message>
+        <source>Chalk</source>
+        <translation>粉笔</translation>
+    </message>
+    <message>
+        <source>Spatter</source>
+        <translation>喷溅</translation>
+    </message>
+    <message>
+        <source>Metal Paint</source>
+        <translation>金属漆</translation>
+    </message>
+    <message>
+        <source>Rough Matte</source>
+        <translation>粗糙哑光</translation>
+    </message>
+    <message>
+        <source>Eraser Soft</source>
+        <translation>柔和橡皮擦</translation>
+    </message>
+    <message>
+        <source>Stabilized Liner</source>
+        <translation>稳定勾线笔</translation>
+    </message>
+</context>
+<context>
+    <name>ToolHints</name>
+    <message>
+        <source>Brush: drag to paint; Shift+click draws a straight line on from the last stroke; Ctrl+click picks a colour; Alt+drag moves the camera</source>
+        <translation>画笔：拖动绘画；Shift+单击从上一笔画出直线；Ctrl+单击拾取颜色；Alt+拖动移动相机</translation>
+    </message>
+    <message>
+        <source>Eraser: drag to bring back the original surface; Shift+click erases a straight line; Alt+drag moves the camera</source>
+        <translation>橡皮擦：拖动恢复原始表面；Shift+单击擦除一条直线；Alt+拖动移动相机</translation>
+    </message>
+    <message>
+        <source>Fill: click to fill with the brush colour (options in the Fill panel); Ctrl+click picks a colour</source>
+        <translation>填充：单击用画笔颜色填充（选项在填充面板中）；Ctrl+单击拾取颜色</translation>
+    </message>
+    <message>
+        <source>Eyedropper: click to take the painted colour of the surface under the cursor</source>
+        <translation>吸管：单击拾取光标下表面的绘制颜色</translation>
+    </message>
+    <message>
+        <source>Paint to Hide: paint over regions to hide them and see what lies behind; Shift+H unhides all</source>
+        <translation>绘制隐藏：在区域上绘制以隐藏它们并看到后面的内容；Shift+H 全部取消隐藏</translation>
+    </message>
+    <message>
+        <source>Pop Up: click to bring the region below the visible one to the front; click again to go deeper (Ctrl+Shift+click with any tool)</source>
+        <translation>弹出：单击将可见区域下方的区域移到最前；再次单击则更深入（任何工具下 Ctrl+Shift+单击）</translation>
+    </message>
+</context>
+<context>
     <name>main</name>
     <message>
         <source>Layer-aware 3D painting of meshes.</source>
@@ -148,6 +210,89 @@
     <message>
         <source>Strokes paint this metalness (0: dielectric, 1: metal)</source>
         <translation>笔画绘制此金属度（0：非金属，1：金属）</translation>
+    </message>
+</context>
+<context>
+    <name>ui::BrushPresetsPanel</name>
+    <message>
+        <source>New from Current</source>
+        <translation>从当前新建</translation>
+    </message>
+    <message>
+        <source>Save the current brush as a preset</source>
+        <translation>将当前画笔保存为预设</translation>
+    </message>
+    <message>
+        <source>Rename</source>
+        <translation>重命名</translation>
+    </message>
+    <message>
+        <source>Rename the chosen preset</source>
+        <translation>重命名所选预设</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>删除</translation>
+    </message>
+    <message>
+        <source>Delete the chosen preset</source>
+        <translation>删除所选预设</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>导入…</translation>
+    </message>
+    <message>
+        <source>Add a preset from a .lpbrush file</source>
+        <translation>从 .lpbrush 文件添加预设</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>导出…</translation>
+    </message>
+    <message>
+        <source>Write the chosen preset to a .lpbrush file</source>
+        <translation>将所选预设写入 .lpbrush 文件</translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened (%2)</source>
+        <translation>%1：无法打开（%2）</translation>
+    </message>
+    <message>
+        <source>%1: too large for a brush preset</source>
+        <translation>%1：作为画笔预设过大</translation>
+    </message>
+    <message>
+        <source>%1: cannot be written (%2)</source>
+        <translation>%1：无法写入（%2）</translation>
+    </message>
+    <message>
+        <source>New Brush Preset</source>
+        <translation>新建画笔预设</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>名称：</translation>
+    </message>
+    <message>
+        <source>My Brush</source>
+        <translation>我的画笔</translation>
+    </message>
+    <message>
+        <source>Import Brush Preset</source>
+        <translation>导入画笔预设</translation>
+    </message>
+    <message>
+        <source>Brush presets (*.lpbrush);;All files (*)</source>
+        <translation>画笔预设 (*.lpbrush);;所有文件 (*)</translation>
+    </message>
+    <message>
+        <source>Export Brush Preset</source>
+        <translation>导出画笔预设</translation>
+    </message>
+    <message>
+        <source>Brush presets (*.lpbrush)</source>
+        <translation>画笔预设 (*.lpbrush)</translation>
     </message>
 </context>
 <context>
@@ -1180,6 +1325,22 @@ connectivity %3 ms, regions %4 ms
         <source>Show metallic as grey: black non-metal, white metal</source>
         <translation>以灰度显示金属度：黑色非金属，白色金属</translation>
     </message>
+    <message>
+        <source>Brush Presets</source>
+        <translation>画笔预设</translation>
+    </message>
+    <message>
+        <source>Brush preset: %1</source>
+        <translation>画笔预设：%1</translation>
+    </message>
+    <message>
+        <source>One page on layer-aware painting, pop-up, paint to hide, orbiting and the keys</source>
+        <translation>一页介绍分层感知绘画、弹出、绘制隐藏、环绕和快捷键</translation>
+    </message>
+    <message>
+        <source>Quick &amp;Guide</source>
+        <translation>快速指南(&amp;G)</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -1717,6 +1878,49 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Could not export to “%1”.</source>
         <translation>无法导出到“%1”。</translation>
+    </message>
+</context>
+<context>
+    <name>ui::QuickGuideDialog</name>
+    <message>
+        <source>Quick Guide</source>
+        <translation>快速指南</translation>
+    </message>
+    <message>
+        <source>&lt;h2&gt;LayerPaint in one page&lt;/h2&gt;&lt;p&gt;LayerPaint splits the view into &lt;b&gt;depth layers&lt;/b&gt; (the first, second, … surface under each pixel) and regions, so you can paint surfaces that others hide. Turn &lt;i&gt;Layer-aware&lt;/i&gt; on with &lt;b&gt;L&lt;/b&gt; or the check box in the tool bar.&lt;/p&gt;</source>
+        <translation>&lt;h2&gt;一页了解 LayerPaint&lt;/h2&gt;&lt;p&gt;LayerPaint 将视图分为&lt;b&gt;深度层&lt;/b&gt;（每个像素下的第一、第二……个表面）和区域，因此您可以绘制被其他表面遮挡的表面。用 &lt;b&gt;L&lt;/b&gt; 或工具栏中的复选框打开&lt;i&gt;分层感知&lt;/i&gt;。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Layer-aware stroke&lt;/h3&gt;&lt;p&gt;Drag with the brush (&lt;b&gt;B&lt;/b&gt;). With layer-aware painting on, the stroke stays on the surface it started on, also where it goes behind another one. Shift+click draws a straight line on from the end of the last stroke.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;分层感知笔画&lt;/h3&gt;&lt;p&gt;用画笔（&lt;b&gt;B&lt;/b&gt;）拖动。打开分层感知绘画后，笔画会停留在起始的表面上，即使经过其他表面的后方。Shift+单击从上一笔的末端画出直线。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Pop-up&lt;/h3&gt;&lt;p&gt;&lt;b&gt;Ctrl+Shift+click&lt;/b&gt; with any tool, or a click with the Pop Up tool (&lt;b&gt;P&lt;/b&gt;), brings the region under the visible one to the front. Click the same spot again to go deeper; after the last it starts from the top. &lt;b&gt;R&lt;/b&gt; resets the order.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;弹出&lt;/h3&gt;&lt;p&gt;任何工具下 &lt;b&gt;Ctrl+Shift+单击&lt;/b&gt;，或用弹出工具（&lt;b&gt;P&lt;/b&gt;）单击，将可见区域下方的区域移到最前。在同一位置再次单击则更深入；到最后一层后从顶部重新开始。&lt;b&gt;R&lt;/b&gt; 重置顺序。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Paint to hide&lt;/h3&gt;&lt;p&gt;With the Paint to Hide tool (&lt;b&gt;H&lt;/b&gt;) paint over regions on the segmentation map: they are hidden and what lies behind shows. The Paint to Hide panel unhides them, &lt;b&gt;Shift+H&lt;/b&gt; all at once.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;绘制隐藏&lt;/h3&gt;&lt;p&gt;用绘制隐藏工具（&lt;b&gt;H&lt;/b&gt;）在分割图上的区域上绘制：这些区域被隐藏，显示出后面的内容。绘制隐藏面板可取消隐藏，&lt;b&gt;Shift+H&lt;/b&gt; 一次全部取消。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Orbit about a surface point&lt;/h3&gt;&lt;p&gt;With View ▸ Orbit About Surface Point on, an orbit (middle drag, or Alt+left drag) that starts on the model turns about that point, on whatever depth layer is shown there.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;围绕表面点环绕&lt;/h3&gt;&lt;p&gt;打开 视图 ▸ 围绕表面点环绕 后，从模型上开始的环绕（中键拖动或 Alt+左键拖动）会围绕该点旋转，无论该处显示的是哪个深度层。&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Drawing…</source>
+        <translation>正在绘制…</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Keys&lt;/h3&gt;&lt;table cellspacing=&quot;4&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;B&lt;/b&gt; / &lt;b&gt;E&lt;/b&gt; / &lt;b&gt;G&lt;/b&gt; / &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;brush, eraser, fill, eyedropper (Ctrl+click with any tool)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt; / &lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;paint to hide, pop up&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;layer-aware painting on or off&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt; / Shift+&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;brush size / hardness&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;X&lt;/b&gt;&lt;/td&gt;&lt;td&gt;swap foreground and background colours&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; / &lt;b&gt;O&lt;/b&gt;&lt;/td&gt;&lt;td&gt;frame the model / orthographic&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Middle drag, Shift+, Ctrl+, wheel&lt;/td&gt;&lt;td&gt;orbit, pan, zoom&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Alt+left / right / middle drag&lt;/td&gt;&lt;td&gt;orbit, zoom, pan (for tablets)&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt; / &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;undo / redo&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</source>
+        <translation>&lt;h3&gt;快捷键&lt;/h3&gt;&lt;table cellspacing=&quot;4&quot;&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;B&lt;/b&gt; / &lt;b&gt;E&lt;/b&gt; / &lt;b&gt;G&lt;/b&gt; / &lt;b&gt;I&lt;/b&gt;&lt;/td&gt;&lt;td&gt;画笔、橡皮擦、填充、吸管（任何工具下 Ctrl+单击）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;H&lt;/b&gt; / &lt;b&gt;P&lt;/b&gt;&lt;/td&gt;&lt;td&gt;绘制隐藏、弹出&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;L&lt;/b&gt;&lt;/td&gt;&lt;td&gt;打开或关闭分层感知绘画&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt; / Shift+&lt;b&gt;[&lt;/b&gt; &lt;b&gt;]&lt;/b&gt;&lt;/td&gt;&lt;td&gt;画笔大小 / 硬度&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;X&lt;/b&gt;&lt;/td&gt;&lt;td&gt;交换前景色和背景色&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;F&lt;/b&gt; / &lt;b&gt;O&lt;/b&gt;&lt;/td&gt;&lt;td&gt;框选模型 / 正交&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;中键拖动、Shift+、Ctrl+、滚轮&lt;/td&gt;&lt;td&gt;环绕、平移、缩放&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;Alt+左键 / 右键 / 中键拖动&lt;/td&gt;&lt;td&gt;环绕、缩放、平移（适用于数位板）&lt;/td&gt;&lt;/tr&gt;&lt;tr&gt;&lt;td&gt;&lt;b&gt;Ctrl+Z&lt;/b&gt; / &lt;b&gt;Ctrl+Shift+Z&lt;/b&gt;&lt;/td&gt;&lt;td&gt;撤销 / 重做&lt;/td&gt;&lt;/tr&gt;&lt;/table&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Show at start</source>
+        <translation>启动时显示(&amp;S)</translation>
+    </message>
+    <message>
+        <source>(no picture)</source>
+        <translation>（无图片）</translation>
     </message>
 </context>
 <context>

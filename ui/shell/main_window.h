@@ -35,6 +35,7 @@ class QUndoStack;
 namespace ui {
 
 class BrushPanel;
+class BrushPresetsPanel;
 class BrushToolBar;
 class ColorPanel;
 class FillPanel;
@@ -46,6 +47,7 @@ class MessageBar;
 class ModelLoader;
 class PaintLayersPanel;
 class PaintTargetJob;
+class QuickGuideDialog;
 class ProjectController;
 class RegionGraphPanel;
 class RegionTools;
@@ -98,6 +100,13 @@ public:
     BrushPanel* brushPanel() const { return m_brushPanel; }
     ColorPanel* colorPanel() const { return m_colorPanel; }
     PaintLayersPanel* paintLayersPanel() const { return m_paintLayersPanel; }
+    BrushPresetsPanel* brushPresetsPanel() const { return m_presetsPanel; }
+    /** Help ▸ Quick Guide: opens (or raises) the guide, not modal. */
+    void showQuickGuide();
+    /** The guide while it is open; nullptr otherwise. */
+    QuickGuideDialog* quickGuide() const;
+    /** At start (after show()): opens the guide on a first start, or when it asks to be shown. */
+    void showQuickGuideAtStart();
     QUndoStack* undoStack() const { return m_undoStack; }
     /** Save, export, unsaved-changes tracking, autosave and recovery. */
     ProjectController* projectController() const { return m_project; }
@@ -242,6 +251,8 @@ private:
     void offerUvLayout();
     /** The brush bar's target, and what the Brush and Paint Layers panels can offer for it. */
     void updateBrushBar();
+    /** The Brush Presets panel, the tool hint in the status bar and Help ▸ Quick Guide. */
+    void createHelpAndPresets();
     /** The Paint Layers panel, its dock and what its operations change. */
     void createPaintLayersPanel();
     void updateBrushInfo();
@@ -347,6 +358,12 @@ private:
     /** The state last opened: keeps what no panel of this window shows yet (projectState()). */
     core::ProjectState m_projectBase;
     QMenu* m_exportMenu = nullptr;
+
+    BrushPresetsPanel* m_presetsPanel = nullptr;
+    QDockWidget* m_presetsDock = nullptr;
+    QLabel* m_toolHint = nullptr;
+    QAction* m_quickGuideAction = nullptr;
+    QPointer<QuickGuideDialog> m_guide;
 };
 
 } // namespace ui

@@ -108,6 +108,7 @@ void MainWindow::createPaintActions() {
         brush.color = BrushToolBar::toLinear(color);
         setBrush(brush);
     });
+    createHelpAndPresets();
     createPaintLayersPanel();
     // The colour panel's own colour, rounded to what it shows, is the brush's from the start.
     m_colorPanel->setForeground(BrushToolBar::toQColor(m_document->brush().color));
@@ -386,8 +387,9 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     QMenu* panelsMenu = viewMenu->addMenu(tr("&Panels"));
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
-    for (QDockWidget* dock : {m_brushDock, m_colorDock, m_paintLayersDock, m_segmentationDock,
-                              m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
+    for (QDockWidget* dock :
+         {m_brushDock, m_presetsDock, m_colorDock, m_paintLayersDock, m_segmentationDock,
+          m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(m_brushBar->toggleViewAction());
@@ -419,6 +421,8 @@ void MainWindow::createMenus() {
     }
 
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
+    helpMenu->addAction(m_quickGuideAction);
+    helpMenu->addSeparator();
     QAction* aboutAction =
         helpMenu->addAction(tr("&About LayerPaint"), this, &MainWindow::showAbout);
     aboutAction->setMenuRole(QAction::AboutRole);
