@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/document/document.h"
+#include "core/document/script_symmetry.h"
 #include "core/paint/symmetry.h"
 
 namespace {
@@ -231,6 +232,28 @@ TEST(Symmetry, TransformsAndNames) {
     const glm::vec3 q(t[0] * glm::vec4(1.5f, 0.0f, 0.0f, 1.0f));
     EXPECT_NEAR(q.x, 0.5f, 1e-5f);
     EXPECT_TRUE(core::symmetryReflects(t[0]));
+}
+
+TEST(Symmetry, ScriptSettingsRoundTripAndBadInputIsOneError) {
+    core::Brush brush;
+    ASSERT_TRUE(core::applyBrushSymmetry(
+                    brush, nlohmann::json::parse(
+                               R"({"mirror": "xz", "center": "origin", "radial": 4, "axis": "z"})"))
+                    .ok());
+    EXPECT_TRUE(brush.symmetry.mirrorX && !brush.symmetry.mirrorY && brush.symmetry.mirrorZ);
+    EXPECT_EQ(brush.symmetry.center, core::BrushSymmetry::Center::Origin);
+    EXPECT_EQ(brush.symmetry.radial, 4);
+    EXPECT_EQ(brush.symmetry.axis, 2);
+    core::Brush copy;
+    ASSERT_TRUE(core::applyBrushSymmetry(copy, core::brushSymmetryJson(brush)).ok());
+    EXPECT_EQ(copy.symmetry, brush.symmetry);
+    const core::Status bad =
+        core::applyBrushSymmetry(copy, nlohmann::json::parse(R"({"radial": 40})"));
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().find("radial"), std::string::npos);
+    EXPECT_EQ(copy.symmetry, brush.symmetry); // unchanged
+    ASSERT_TRUE(core::applyBrushSymmetry(copy, false).ok());
+    EXPECT_FALSE(copy.symmetry.active());
 }
 
 } // namespace
