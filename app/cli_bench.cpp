@@ -219,6 +219,7 @@ int runBench(const BenchArgs& args) {
 
             Samples samples;
             std::vector<double> tipMoves; // move_stroke with a textured tip turning along the path
+            std::vector<double> symmetricMoves; // and with 4-way symmetry
             std::size_t fragments = 0, regions = 0, layerCount = 0;
             // One warm-up round (shader compilation, buffer growth), then the measured runs,
             // alternating the baseline with the measured work so load affects both alike.
@@ -278,10 +279,16 @@ int runBench(const BenchArgs& args) {
                 doc.brush().angleMode = core::TipAngleMode::Stroke;
                 doc.brush().jitter.angle = 20.0f;
                 const StrokeTimes tipStroke = timeStroke(doc, *view);
+                // The same textured tip with 4-way symmetry (mirror X and Z: three copies).
+                doc.brush().symmetry.mirrorX = true;
+                doc.brush().symmetry.mirrorZ = true;
+                const StrokeTimes symmetricStroke = timeStroke(doc, *view);
                 doc.brush() = roundBrush;
                 if (run < 0)
                     continue;
                 tipMoves.insert(tipMoves.end(), tipStroke.moves.begin(), tipStroke.moves.end());
+                symmetricMoves.insert(symmetricMoves.end(), symmetricStroke.moves.begin(),
+                                      symmetricStroke.moves.end());
                 samples.startStroke.insert(samples.startStroke.end(), stroke.starts.begin(),
                                            stroke.starts.end());
                 samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
@@ -338,6 +345,7 @@ int runBench(const BenchArgs& args) {
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
                 {"dab_on_target_ms", median(samples.dab)},
                 {"move_stroke_textured_tip_ms", median(tipMoves)},
+                {"move_stroke_symmetric_4_ms", median(symmetricMoves)},
                 {"paint_layers",
                  {{"texture", kPaintLayerTexture},
                   {"layers", kPaintLayers},

@@ -2282,6 +2282,73 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     </message>
 </context>
 <context>
+    <name>ui::SymmetryBox</name>
+    <message>
+        <source>Symmetry</source>
+        <translation>Symmetrie</translation>
+    </message>
+    <message>
+        <source>Every dab is repeated on the mirrored or turned surface, also where that side is hidden or faces away in this view</source>
+        <translation>Jeder Tupfer wird auf der gespiegelten oder gedrehten Oberfläche wiederholt, auch wo diese Seite in dieser Ansicht verdeckt oder abgewandt ist</translation>
+    </message>
+    <message>
+        <source>&amp;X</source>
+        <translation>&amp;X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Mirror across the model&apos;s plane across this axis</source>
+        <translation>An der Ebene des Modells quer zu dieser Achse spiegeln</translation>
+    </message>
+    <message>
+        <source>Mirror</source>
+        <translation>Spiegeln</translation>
+    </message>
+    <message>
+        <source>Bounding-box centre</source>
+        <translation>Mitte des Begrenzungsquaders</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>Ursprung</translation>
+    </message>
+    <message>
+        <source>Where the mirror planes and the radial axis pass through</source>
+        <translation>Wodurch die Spiegelebenen und die radiale Achse verlaufen</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>Mitte</translation>
+    </message>
+    <message>
+        <source>Copies turned about the axis, the stroke included; 1 for none</source>
+        <translation>Um die Achse gedrehte Kopien, den Strich eingeschlossen; 1 für keine</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>X-Achse</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Y-Achse</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z-Achse</translation>
+    </message>
+    <message>
+        <source>Radial</source>
+        <translation>Radial</translation>
+    </message>
+</context>
+<context>
     <name>ui::Viewport</name>
     <message>
         <source>The layer capture is not available.</source>

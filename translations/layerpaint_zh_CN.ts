@@ -2275,6 +2275,73 @@ Smaller splits the view into more regions.</source>
     </message>
 </context>
 <context>
+    <name>ui::SymmetryBox</name>
+    <message>
+        <source>Symmetry</source>
+        <translation>对称</translation>
+    </message>
+    <message>
+        <source>Every dab is repeated on the mirrored or turned surface, also where that side is hidden or faces away in this view</source>
+        <translation>每个笔触都会在镜像或旋转后的表面上重复，即使该面在此视图中被遮挡或背向相机</translation>
+    </message>
+    <message>
+        <source>&amp;X</source>
+        <translation>&amp;X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Mirror across the model&apos;s plane across this axis</source>
+        <translation>沿垂直于此轴的模型平面镜像</translation>
+    </message>
+    <message>
+        <source>Mirror</source>
+        <translation>镜像</translation>
+    </message>
+    <message>
+        <source>Bounding-box centre</source>
+        <translation>包围盒中心</translation>
+    </message>
+    <message>
+        <source>Origin</source>
+        <translation>原点</translation>
+    </message>
+    <message>
+        <source>Where the mirror planes and the radial axis pass through</source>
+        <translation>镜像平面和径向轴经过的位置</translation>
+    </message>
+    <message>
+        <source>Centre</source>
+        <translation>中心</translation>
+    </message>
+    <message>
+        <source>Copies turned about the axis, the stroke included; 1 for none</source>
+        <translation>绕轴旋转的副本数（含笔画本身）；1 表示无</translation>
+    </message>
+    <message>
+        <source>X axis</source>
+        <translation>X 轴</translation>
+    </message>
+    <message>
+        <source>Y axis</source>
+        <translation>Y 轴</translation>
+    </message>
+    <message>
+        <source>Z axis</source>
+        <translation>Z 轴</translation>
+    </message>
+    <message>
+        <source>Radial</source>
+        <translation>径向</translation>
+    </message>
+</context>
+<context>
     <name>ui::Viewport</name>
     <message>
         <source>The layer capture is not available.</source>

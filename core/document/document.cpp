@@ -430,6 +430,7 @@ Status Document::beginStroke(const StrokePoint& point, PaintChanges& changes) {
     const StrokePoint start = m_stabilizer.begin(curved(point), m_brush);
     m_tracker.startStroke(start, m_brush, m_dabs);
     target->beginStroke(m_brush);
+    startSymmetry();
     paintDabs(changes);
     return {};
 }
@@ -457,11 +458,15 @@ void Document::paintDabs(PaintChanges& changes) {
     for (const Dab& dab : m_dabs) {
         if (m_autoPopUp && m_tracker.layerAware())
             popUpUnder(dab);
+        if (!m_copies.empty())
+            m_paintTarget->beginDabGroup();
         const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
         changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
                               dabChanges.texels.end());
         changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
                                 dabChanges.vertices.end());
+        if (!m_copies.empty())
+            paintCopies(dab, changes);
     }
     m_dabStats = {m_dabs.size(), std::chrono::duration<double, std::milli>(
                                      std::chrono::steady_clock::now() - start)
@@ -543,6 +548,7 @@ Status Document::paintLine(const StrokePoint& from, std::uint32_t layer, const S
     m_dabs.clear();
     m_tracker.startStroke(curved(from), m_brush, m_dabs, layer);
     target->beginStroke(m_brush);
+    startSymmetry();
     paintDabs(changes);
     m_dabs.clear();
     m_tracker.moveStroke(curved(to), m_dabs);

@@ -256,6 +256,12 @@ public:
         double targetMs = 0.0;
     };
     const DabStats& lastDabStats() const { return m_dabStats; }
+    /**
+     * The views the symmetric copies of the brush (Brush::symmetry) are painted through, made
+     * for the current layers at the first symmetric stroke (captured on the CPU here unless
+     * supplied by setSymmetryLayers()); empty without symmetry.
+     */
+    std::vector<const Layers*> symmetryLayers() const;
     const StrokeTracker& strokeTracker() const { return m_tracker; }
     /**
      * The paper's Figure 4 overlay of the last dab's maps (StrokeTracker::fillOverlay: Mp red,
@@ -356,6 +362,13 @@ private:
     /** The layers were replaced or re-segmented: a fresh order, the tracker told. */
     void layersChanged();
     void orderChanged();
+    /**
+     * Readies the symmetric copies for a stroke (document_symmetry.cpp): their views' layers
+     * (built when the layers, the model or the symmetry changed) and fresh trackers.
+     */
+    void startSymmetry();
+    /** Paints the symmetric copies of dab, adding what they touched to changes. */
+    void paintCopies(const Dab& dab, PaintChanges& changes);
     /** Automatic pop-up of the region under a dab's centre when it is not the visible one. */
     void popUpUnder(const Dab& dab);
     /** y * width + x of a window pixel of the layers' view, or nullopt outside it. */
@@ -393,6 +406,20 @@ private:
     std::optional<LineStart> m_strokeEnd; // of the stroke in progress
     std::optional<LineStart> m_lineStart; // of the previous stroke
     std::vector<Dab> m_dabs;              // reused between calls
+    /** A symmetric copy of the stroke, painted through its own (mirrored or turned) view. */
+    struct SymmetryCopy {
+        glm::mat4 transform{1.0f};
+        bool reflects = false;
+        std::unique_ptr<Layers> layers;
+        StrokeTracker tracker;
+        bool started = false;
+    };
+    std::vector<std::unique_ptr<SymmetryCopy>> m_copies;
+    BrushSymmetry m_copiesSymmetry;       // what m_copies were made for
+    std::uint64_t m_copiesLayers = ~0ull; // m_layersSerial they were made for
+    std::uint64_t m_copiesMesh = ~0ull;   // m_meshSerial they were made for
+    bool m_copiesLayerAware = true;
+    std::vector<Dab> m_copyDabs;
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;

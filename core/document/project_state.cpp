@@ -16,6 +16,7 @@
 #include <new>
 
 #include "core/document/document.h"
+#include "core/document/script_symmetry.h"
 
 namespace core {
 
@@ -291,6 +292,7 @@ Json projectStateToJson(const ProjectState& s) {
                                       ? "vertex-colors"
                                       : "texture"},
                          {"resolution", s.target.resolution}};
+    j["symmetry"] = brushSymmetryJson(s.brush);
     // The stroke stabilizer (Brush's stabilizer fields), beside the brush's other settings.
     j["stabilizer"] = {{"on", s.brush.stabilizer},
                        {"length", num(s.brush.stabilizerLength)},
@@ -408,6 +410,9 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
         r.number("smoothing", s.brush.stabilizerSmoothing, 0.0f, 1.0f);
         r.boolean("catch_up", s.brush.stabilizerCatchUp);
     }
+    if (const Json* symmetry = root.object("symmetry"))
+        if (Status st = applyBrushSymmetry(s.brush, *symmetry); !st)
+            root.warn("symmetry", st.error());
     root.boolean("layer_aware", s.layerAware);
     {
         Reader r = root.child("pop_up");

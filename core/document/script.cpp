@@ -14,6 +14,7 @@
 #include "core/document/project_state.h"
 #include "core/document/script_layers.h"
 #include "core/document/script_stroke.h"
+#include "core/document/script_symmetry.h"
 #include "core/document/script_tips.h"
 #include "core/paint/flood_fill.h"
 
@@ -263,7 +264,8 @@ json setBrushOperation(const Brush& b, const PressureCurve& curve) {
                {"pressure_opacity", b.pressureOpacity},
                {"pressure_curve", curve.gamma},
                {"channels", brushChannelsJson(b)},
-               {"stabilizer", brushStabilizerJson(b)}};
+               {"stabilizer", brushStabilizerJson(b)},
+               {"symmetry", brushSymmetryJson(b)}};
     addBrushTipJson(b, op);
     return op;
 }
@@ -365,6 +367,9 @@ Status ScriptRunner::run(const json& op) {
             b.pressureOpacity = boolean(op, "pressure_opacity", b.pressureOpacity);
             if (op.contains("stabilizer"))
                 if (Status st = applyBrushStabilizer(b, op["stabilizer"]); !st)
+                    throw OpError{st.error()};
+            if (op.contains("symmetry"))
+                if (Status st = applyBrushSymmetry(b, op["symmetry"]); !st)
                     throw OpError{st.error()};
             if (Status st = applyBrushTip(
                     b, op, [this](const std::string& path) { return m_host.loadTip(path); });

@@ -10,6 +10,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/paint/brush_tips.h"
+#include "core/paint/symmetry.h"
 
 namespace core {
 
@@ -69,6 +70,8 @@ struct Brush {
     float stabilizerLength = 30.0f;
     float stabilizerSmoothing = 0.0f;
     bool stabilizerCatchUp = true;
+    // Mirror and radial copies of every dab (core/paint/symmetry.h).
+    BrushSymmetry symmetry;
 
     friend bool operator==(const Brush&, const Brush&) = default;
 

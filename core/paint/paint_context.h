@@ -81,6 +81,8 @@ struct StrokeTile {
     std::vector<float> alpha;         // stroke coverage per element
     std::vector<std::uint8_t> before; // the tile at stroke start
     std::uint32_t dab = 0;            // the last dab that touched it
+    std::vector<float> groupAlpha;    // alpha when the current dab group first touched it
+    std::uint32_t group = 0;          // that group
 };
 
 struct PaintTarget::Context {
@@ -116,6 +118,7 @@ struct PaintTarget::Context {
 
     // The stroke.
     bool inStroke = false;
+    std::uint32_t group = 0, groupSerial = 0; // the dab group in progress (0 none) and the last
     Brush brush;
     std::uint64_t strokePlane = 0; // TileKey::plane of the tiles the stroke paints
     glm::vec4 colorLinear{0.0f};
@@ -244,6 +247,20 @@ struct PaintTarget::Context {
             s.dab = dab;
             touched.push_back(std::uint32_t(slot));
         }
+    }
+    /**
+     * The coverage a dab builds on in slot's tile: the stroke's so far, or within a dab group
+     * (PaintTarget::beginDabGroup()) what it was before the group touched the tile.
+     */
+    const float* coverBase(std::int32_t slot) {
+        StrokeTile& s = slots[std::size_t(slot)];
+        if (group == 0)
+            return s.alpha.data();
+        if (s.group != group) {
+            s.group = group;
+            s.groupAlpha.assign(s.alpha.begin(), s.alpha.end());
+        }
+        return s.groupAlpha.data();
     }
     /** New coverage of an element after this dab at falloff weight, or old if unchanged. */
     float coverAfter(float old, float weight) const {

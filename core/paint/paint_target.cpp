@@ -94,6 +94,7 @@ void PaintTarget::beginStroke(const Brush& brush) {
     if (c.inStroke)
         endStroke();
     c.inStroke = true;
+    c.group = 0;
     c.brush = brush;
     c.strokePlane = 0;
     const SrgbTables& t = SrgbTables::get();
@@ -104,6 +105,16 @@ void PaintTarget::beginStroke(const Brush& brush) {
             k < 3 ? t.encode(c.colorLinear[k]) : encodeUnorm(c.colorLinear[k]);
     }
     strokeStarted();
+}
+
+void PaintTarget::beginDabGroup() {
+    Context& c = *m_context;
+    if (++c.groupSerial == 0) {
+        for (StrokeTile& s : c.slots)
+            s.group = 0;
+        c.groupSerial = 1;
+    }
+    c.group = c.groupSerial;
 }
 
 bool PaintTarget::inStroke() const {

@@ -133,6 +133,12 @@ public:
      * empty outside a stroke.
      */
     virtual const PaintChanges& paintElements(std::span<const PaintElement> elements) = 0;
+    /**
+     * Starts a group of dabs painted as one (a dab and its symmetric copies): within it, an
+     * element takes the most any of them gives it, not their sum, so copies that overlap (near a
+     * mirror plane) do not paint twice. The group lasts until the next call or the stroke's end.
+     */
+    void beginDabGroup();
     /** Ends the stroke: the record of the tiles it changed (empty if none, or no stroke). */
     TileUndoRecord endStroke();
 

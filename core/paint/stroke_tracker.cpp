@@ -189,7 +189,28 @@ std::size_t StrokeTracker::placeDab(glm::vec2 center, float pressure, std::vecto
     dab.opacity =
         std::clamp(m_brush.opacity, 0.0f, 1.0f) * (m_brush.pressureOpacity ? pressure : 1.0f);
     jitterDab(center, dab);
+    return trackDab(center, dab, out);
+}
 
+void StrokeTracker::startCopy(const Brush& brush, std::uint32_t layer) {
+    m_brush = brush;
+    m_inStroke = true;
+    m_tracking = false;
+    m_startLayer = layer;
+}
+
+std::size_t StrokeTracker::followDab(const Dab& like, std::vector<Dab>& out) {
+    if (!m_inStroke || !m_stack || !sane(like.center))
+        return 0;
+    Dab dab;
+    dab.center = like.center;
+    dab.radius = like.radius;
+    dab.opacity = like.opacity;
+    dab.angle = like.angle;
+    return trackDab(like.center, dab, out);
+}
+
+std::size_t StrokeTracker::trackDab(glm::vec2 center, Dab& dab, std::vector<Dab>& out) {
     if (!m_layerAware) {
         // Conventional: no tracking across layers; a later layer-aware dab starts afresh.
         m_tracking = false;

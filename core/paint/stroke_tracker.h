@@ -108,6 +108,15 @@ public:
      * moves. Samples on background or outside Mt are ignored. Returns the dabs appended.
      */
     std::size_t moveStroke(const StrokePoint& point, std::vector<Dab>& out);
+    /**
+     * A copy of a dab of another stroke (a symmetric copy, painted through its own view): a dab
+     * at like's centre with its radius, opacity and angle, no jitter of its own. The first one
+     * after startCopy() starts on depth layer startLayer (or the visible surface), later ones are
+     * tracked from the previous copy. Returns the dabs appended (0, 1).
+     */
+    std::size_t followDab(const Dab& like, std::vector<Dab>& out);
+    /** Starts a stroke of copies (followDab()) with brush, the first on depth layer layer. */
+    void startCopy(const Brush& brush, std::uint32_t layer);
     /** Ends the stroke; the maps of its last dab stay readable. */
     void endStroke() { m_inStroke = false; }
     bool inStroke() const { return m_inStroke; }
@@ -162,6 +171,8 @@ private:
                     const std::uint32_t* offsets, glm::vec2 centre, float radius2, SearchStep& out);
 
     std::size_t placeDab(glm::vec2 center, float pressure, std::vector<Dab>& out);
+    /** Tracks dab (its brush state drawn) at center and appends it; returns 0 or 1. */
+    std::size_t trackDab(glm::vec2 center, Dab& dab, std::vector<Dab>& out);
     void beginMaps();
     void searchPaintable(std::uint32_t pixel, std::uint32_t fragment, Dab& dab);
     void paintVisible(Dab& dab);

@@ -590,6 +590,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         std::uint32_t lastTile = kNone;
         std::int32_t slot = -1;
         float* alpha = nullptr;
+        const float* base = nullptr;
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
         int tileWidth = 0;
@@ -641,6 +642,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     lastTile = tile;
                     slot = c.slotFor(*this, pageIndex, tile);
                     alpha = c.slots[std::size_t(slot)].alpha.data();
+                    base = c.coverBase(slot);
                     before = c.slots[std::size_t(slot)].before.data();
                     tileTouched = false;
                     tileWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
@@ -651,7 +653,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(tileWidth) +
                                           std::size_t(tx % kTextureTile);
                 const float old = alpha[local];
-                const float cover = std::max(old, std::min(dabOpacity, old + flowOpacity * weight));
+                const float cover =
+                    std::max(old, std::min(dabOpacity, base[local] + flowOpacity * weight));
                 if (!(cover > old))
                     return;
                 alpha[local] = cover;

@@ -170,7 +170,8 @@ const PaintChanges& VertexColorTarget::paint(const Layers& layers, const Dab& da
             StrokeTile& st = c.slots[std::size_t(slot)];
             const std::size_t local = v % kVertexBlock;
             const float old = st.alpha[local];
-            const float cover = c.coverAfter(old, weight);
+            const float cover = std::max(
+                old, std::min(c.dabOpacity, c.coverBase(slot)[local] + c.flowOpacity * weight));
             if (!(cover > old))
                 continue;
             st.alpha[local] = cover;

@@ -3,6 +3,7 @@
 
 #include "ui/panels/brush_tip_box.h"
 #include "ui/panels/stabilizer_box.h"
+#include "ui/panels/symmetry_box.h"
 #include "ui/panels/value_spin_box.h"
 
 #include <QCheckBox>
@@ -170,6 +171,7 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     });
     addTipBox(layout);
     addStabilizerBox(layout);
+    addSymmetryBox(layout);
     layout->addStretch(1);
 
     setBrush(m_brush);
@@ -213,6 +215,7 @@ void BrushPanel::readBrush() {
     m_brush.roughness = float(m_roughness->value());
     m_brush.metallic = float(m_metallic->value());
     m_stabilizer->readInto(m_brush);
+    m_symmetry->readInto(m_brush);
     updateAutoTrackText();
     emit brushChanged(m_brush);
 }
@@ -241,6 +244,7 @@ void BrushPanel::setBrush(const core::Brush& brush) {
     m_roughness->setValue(double(brush.roughness));
     m_metallic->setValue(double(brush.metallic));
     m_stabilizer->setBrush(brush);
+    m_symmetry->setBrush(brush);
     m_tipBox->show(brush);
     updateAutoTrackText();
 }
@@ -271,6 +275,12 @@ void BrushPanel::addStabilizerBox(QLayout* layout) {
     m_stabilizer = new StabilizerBox(this);
     layout->addWidget(m_stabilizer);
     connect(m_stabilizer, &StabilizerBox::changed, this, &BrushPanel::readBrush);
+}
+
+void BrushPanel::addSymmetryBox(QLayout* layout) {
+    m_symmetry = new SymmetryBox(this);
+    layout->addWidget(m_symmetry);
+    connect(m_symmetry, &SymmetryBox::changed, this, &BrushPanel::readBrush);
 }
 
 } // namespace ui

@@ -17,6 +17,7 @@ namespace ui {
 
 class BrushTipBox;
 class StabilizerBox;
+class SymmetryBox;
 
 /** A small plot of a pressure curve: pen pressure to the right, stroke pressure up. */
 class PressureCurveView : public QWidget {
@@ -71,6 +72,7 @@ private:
     void updateAutoTrackText();
     /** The stroke stabilizer's group box, below the other settings. */
     void addStabilizerBox(QLayout* layout);
+    void addSymmetryBox(QLayout* layout);
     void addTipBox(QVBoxLayout* layout);
 
     core::Brush m_brush;
@@ -96,6 +98,7 @@ private:
     BrushTipBox* m_tipBox = nullptr;
     bool m_updating = false;
     StabilizerBox* m_stabilizer = nullptr;
+    SymmetryBox* m_symmetry = nullptr;
 };
 
 } // namespace ui

@@ -30,6 +30,7 @@
 #include "ui/panels/fill_panel.h"
 #include "ui/panels/hidden_regions_panel.h"
 #include "ui/panels/paint_layers_panel.h"
+#include "ui/panels/symmetry_box.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
@@ -90,6 +91,7 @@ void MainWindow::createPaintActions() {
     m_brushPanel = new BrushPanel(this);
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
     m_brushPanel->tipBox()->restore(m_document->brush()); // the tip settings of the last session
+    SymmetryBox::restore(m_document->brush());
     // Scrolled where the window is too low for all its rows (the channels made it taller).
     auto* brushScroll = new QScrollArea(this);
     brushScroll->setWidget(m_brushPanel);
