@@ -19,6 +19,24 @@ const char* kindName(PaintLayerKind kind) {
     return kind == PaintLayerKind::Fill ? "fill" : "paint";
 }
 
+/**
+ * The change of an operation that replaced the layers in removed by the one layer now at index
+ * (merge down, flatten): that layer goes into held and the removed ones back into the stack, so
+ * that applying the change (a swap) does the operation and undoing it puts them back.
+ */
+LayerChange swapBack(PaintLayerStack& stack, std::size_t index,
+                     std::vector<std::unique_ptr<PaintLayer>>& removed) {
+    LayerChange change;
+    change.kind = LayerChange::Kind::Swap;
+    change.index = index;
+    change.count = removed.size();
+    change.held.push_back(stack.take(index));
+    change.selection = {change.held.back()->id, false};
+    for (std::size_t i = 0; i < removed.size(); ++i)
+        stack.insert(std::move(removed[i]), index + i);
+    return change;
+}
+
 } // namespace
 
 Result<TextureTarget*> Document::layerTarget() {
@@ -273,16 +291,8 @@ Status Document::mergePaintLayerDown(std::uint64_t id, PaintChanges& changes) {
     // Merged here, then put back as it was, so the change applies (and undoes) as a swap.
     std::vector<std::unique_ptr<PaintLayer>> removed;
     stack.mergeDown(*index, &removed);
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
-    change.index = *index - 1;
-    change.count = 2;
-    change.held.push_back(stack.take(*index - 1));
-    change.selection = {change.held.back()->id, false};
-    for (std::size_t i = 0; i < removed.size(); ++i)
-        stack.insert(std::move(removed[i]), *index - 1 + i);
-    pushLayerChange(std::move(change), {{"op", "layer-merge-down"}, {"layer", layerRef(*index)}},
-                    changes);
+    pushLayerChange(swapBack(stack, *index - 1, removed),
+                    {{"op", "layer-merge-down"}, {"layer", layerRef(*index)}}, changes);
     return {};
 }
 
@@ -297,15 +307,7 @@ Status Document::flattenPaintLayers(std::string name, PaintChanges& changes) {
     nlohmann::json op = {{"op", "layer-flatten"}, {"name", name}};
     std::vector<std::unique_ptr<PaintLayer>> removed;
     stack.flatten(std::move(name), &removed);
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
-    change.index = 0;
-    change.count = removed.size();
-    change.held.push_back(stack.take(0));
-    change.selection = {change.held.back()->id, false};
-    for (std::size_t i = 0; i < removed.size(); ++i)
-        stack.insert(std::move(removed[i]), i);
-    pushLayerChange(std::move(change), std::move(op), changes);
+    pushLayerChange(swapBack(stack, 0, removed), std::move(op), changes);
     return {};
 }
 
