@@ -101,35 +101,20 @@ Status checkRawScene(const aiScene& scene, const LoadLimits& limits) {
 
 namespace {
 
-class AssimpFlattener {
+class AssimpFlattener : public Flattener {
 public:
     AssimpFlattener(const aiScene& scene, fs::path folder, const LoadLimits& limits)
         : m_scene(scene), m_folder(std::move(folder)), m_limits(limits) {}
 
     bool run(Mesh& out);
-    const Error& error() const { return m_error; }
 
 private:
     const aiScene& m_scene;
     fs::path m_folder;
     const LoadLimits& m_limits;
-    Error m_error;
-    Mesh m_mesh;
-    std::set<std::string> m_warned;
-    bool m_anyUv = false, m_anyColor = false;
-    std::vector<char> m_hasNormal;
     std::size_t m_skippedFaces = 0;
     std::map<std::string, int> m_textureCache;
 
-    bool fail(std::string msg, ErrorKind kind = ErrorKind::BadInput) {
-        if (m_error.message.empty())
-            m_error = Error{std::move(msg), kind};
-        return false;
-    }
-    void warnOnce(const std::string& msg) {
-        if (m_warned.insert(msg).second)
-            m_mesh.warnings.push_back(msg);
-    }
     bool addMesh(unsigned meshIndex, const glm::dmat4& transform);
     void addMaterials();
     int loadTexture(const std::string& path);
@@ -393,8 +378,7 @@ bool AssimpFlattener::run(Mesh& out) {
         m_mesh.materials.empty())
         m_mesh.materials.push_back(Material{"default", glm::vec4(1.0f), -1});
 
-    finishFlattened(m_mesh, m_anyUv, m_anyColor, m_hasNormal);
-    out = std::move(m_mesh);
+    finish(out);
     return true;
 }
 

@@ -36,7 +36,7 @@ struct Instance {
     glm::dmat4 transform{1.0};
 };
 
-class GltfFlattener {
+class GltfFlattener : public Flattener {
 public:
     GltfFlattener(const tinygltf::Model& model, const Json& json, const FileAccess& access,
                   bool quantized, const ProgressFn& progress, const LoadLimits& limits)
@@ -45,7 +45,6 @@ public:
 
     /** Flattens into out; false with error() on failure. */
     bool run(Mesh& out);
-    const Error& error() const { return m_error; }
 
 private:
     const tinygltf::Model& m_model;
@@ -53,24 +52,9 @@ private:
     const FileAccess& m_access;
     const ProgressFn& m_progress;
     const LoadLimits& m_limits;
-    Error m_error;
     bool m_quantized;
-    std::set<std::string> m_warned;
-    Mesh m_mesh;
-    std::vector<char> m_hasNormal;
-    bool m_anyUv = false, m_anyColor = false;
     std::size_t m_skippedPrimitives = 0;
     std::map<int, int> m_imageToTexture; // glTF image -> Mesh::textures index (-1: failed)
-
-    bool fail(std::string msg, ErrorKind kind = ErrorKind::BadInput) {
-        if (m_error.message.empty())
-            m_error = Error{std::move(msg), kind};
-        return false;
-    }
-    void warnOnce(const std::string& msg) {
-        if (m_warned.insert(msg).second)
-            m_mesh.warnings.push_back(msg);
-    }
 
     bool collectInstances(std::vector<Instance>& instances);
     bool localTransform(int nodeIndex, glm::dmat4& out);
@@ -581,8 +565,7 @@ bool GltfFlattener::run(Mesh& out) {
             m_mesh.triangleMaterial.end())
         m_mesh.materials.pop_back();
 
-    finishFlattened(m_mesh, m_anyUv, m_anyColor, m_hasNormal);
-    out = std::move(m_mesh);
+    finish(out);
     return true;
 }
 

@@ -77,26 +77,26 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
     return used;
 }
 
-void finishFlattened(Mesh& mesh, bool anyUv, bool anyColor, const std::vector<char>& hasNormal) {
-    if (!anyUv)
+void Flattener::finish(Mesh& out) {
+    Mesh& mesh = m_mesh;
+    if (!m_anyUv)
         mesh.uvs.clear();
-    if (!anyColor)
+    if (!m_anyColor)
         mesh.colors.clear();
     const auto withNormal =
-        static_cast<std::size_t>(std::count(hasNormal.begin(), hasNormal.end(), 1));
+        static_cast<std::size_t>(std::count(m_hasNormal.begin(), m_hasNormal.end(), 1));
     if (withNormal == 0) {
         mesh.normals.clear(); // loadMesh computes them all
-        return;
+    } else if (withNormal != m_hasNormal.size()) {
+        Mesh computed;
+        computed.positions = mesh.positions;
+        computed.indices = mesh.indices;
+        computed.computeNormals();
+        for (std::size_t i = 0; i < m_hasNormal.size(); ++i)
+            if (!m_hasNormal[i])
+                mesh.normals[i] = computed.normals[i];
     }
-    if (withNormal == hasNormal.size())
-        return;
-    Mesh computed;
-    computed.positions = mesh.positions;
-    computed.indices = mesh.indices;
-    computed.computeNormals();
-    for (std::size_t i = 0; i < hasNormal.size(); ++i)
-        if (!hasNormal[i])
-            mesh.normals[i] = computed.normals[i];
+    out = std::move(mesh);
 }
 
 bool toFloat(const glm::dvec3& p, glm::vec3& out) {

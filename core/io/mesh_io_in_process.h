@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 #include <new>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -84,12 +85,38 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
                                         const LoadLimits& limits);
 
 /**
- * The last step of flattening a scene into mesh: UVs and colours are dropped where no primitive
- * had them (anyUv, anyColor); for normals, hasNormal[v] says whether vertex v came with one: none
- * did, so all are left for loadMesh to compute (normals cleared); some did, so the others get
- * normals computed from the triangles.
+ * What the glTF and the Assimp flattener share: the mesh being built, the first error, warnings
+ * said once, and which vertices came with UVs, colours and normals.
  */
-void finishFlattened(Mesh& mesh, bool anyUv, bool anyColor, const std::vector<char>& hasNormal);
+class Flattener {
+public:
+    const Error& error() const { return m_error; }
+
+protected:
+    /** Keeps the first error; returns false for `return fail(...)`. */
+    bool fail(std::string msg, ErrorKind kind = ErrorKind::BadInput) {
+        if (m_error.message.empty())
+            m_error = Error{std::move(msg), kind};
+        return false;
+    }
+    void warnOnce(const std::string& msg) {
+        if (m_warned.insert(msg).second)
+            m_mesh.warnings.push_back(msg);
+    }
+    /**
+     * The last step, the mesh moved into out: UVs and colours are dropped where no primitive had
+     * them; for normals, m_hasNormal[v] says whether vertex v came with one: none did, so all are
+     * left for loadMesh to compute (normals cleared); some did, so the others get normals computed
+     * from the triangles.
+     */
+    void finish(Mesh& out);
+
+    Mesh m_mesh;
+    Error m_error;
+    std::set<std::string> m_warned;
+    std::vector<char> m_hasNormal;
+    bool m_anyUv = false, m_anyColor = false;
+};
 
 /** p as floats, or false if it does not fit (a double beyond float range is not castable). */
 bool toFloat(const glm::dvec3& p, glm::vec3& out);
