@@ -488,9 +488,12 @@ TEST(Project, CorruptedProjectsAreRefusedWithClearMessages) {
     }
     // Bad JSON.
     {
+        // A colon in the middle of the JSON becomes a brace: never valid JSON, whatever the
+        // project holds (a byte overwritten inside a string value may well be).
         std::string b = bytes;
-        b[20 + jsonLength / 2] = '{';
-        b[20 + jsonLength / 3] = '"';
+        const std::size_t colon = b.find(':', 20 + jsonLength / 2);
+        ASSERT_LT(colon, 20 + std::size_t(jsonLength));
+        b[colon] = '{';
         cases.push_back({"bad JSON", b, "malformed at line 1"});
         b = bytes;
         const std::size_t extrasAt = jsonText.find("\"layerpaint\"");
