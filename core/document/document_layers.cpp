@@ -20,6 +20,23 @@ const char* kindName(PaintLayerKind kind) {
 }
 
 /**
+ * A fill layer's values as script JSON; a channel the fill leaves alone is missing, or null with
+ * `nulls` (so that a change can say it was taken away).
+ */
+nlohmann::json fillValuesJson(const ChannelValues& v, bool nulls) {
+    nlohmann::json values = nlohmann::json::object();
+    if (nulls)
+        values = {{"base_color", nullptr}, {"roughness", nullptr}, {"metallic", nullptr}};
+    if (v.baseColor)
+        values["base_color"] = {v.baseColor->x, v.baseColor->y, v.baseColor->z};
+    if (v.roughness)
+        values["roughness"] = *v.roughness;
+    if (v.metallic)
+        values["metallic"] = *v.metallic;
+    return values;
+}
+
+/**
  * The change of an operation that replaced the layers in removed by the one layer now at index
  * (merge down, flatten): that layer goes into held and the removed ones back into the stack, so
  * that applying the change (a swap) does the operation and undoing it puts them back.
@@ -155,17 +172,8 @@ Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, Paint
         std::isfinite(settings.opacity) ? std::clamp(settings.opacity, 0.0f, 1.0f) : 1.0f;
     nlohmann::json op = {
         {"op", "layer-add"}, {"name", settings.name}, {"kind", kindName(settings.kind)}};
-    if (settings.kind == PaintLayerKind::Fill) {
-        const ChannelValues& v = settings.fill;
-        nlohmann::json values = nlohmann::json::object();
-        if (v.baseColor)
-            values["base_color"] = {v.baseColor->x, v.baseColor->y, v.baseColor->z};
-        if (v.roughness)
-            values["roughness"] = *v.roughness;
-        if (v.metallic)
-            values["metallic"] = *v.metallic;
-        op["values"] = std::move(values);
-    }
+    if (settings.kind == PaintLayerKind::Fill)
+        op["values"] = fillValuesJson(settings.fill, false);
     index = stack.add(std::move(settings), index);
     LayerChange change;
     change.kind = LayerChange::Kind::Swap;
@@ -256,19 +264,8 @@ Status Document::setPaintLayerSettings(std::uint64_t id, PaintLayerSettings sett
         op["visible"] = settings.visible;
     if (settings.lockTransparency != old.lockTransparency)
         op["lock"] = settings.lockTransparency;
-    if (settings.fill != old.fill) {
-        // Every channel: a value, or null for one the fill leaves alone.
-        const ChannelValues& v = settings.fill;
-        nlohmann::json values = {
-            {"base_color", nullptr}, {"roughness", nullptr}, {"metallic", nullptr}};
-        if (v.baseColor)
-            values["base_color"] = {v.baseColor->x, v.baseColor->y, v.baseColor->z};
-        if (v.roughness)
-            values["roughness"] = *v.roughness;
-        if (v.metallic)
-            values["metallic"] = *v.metallic;
-        op["values"] = std::move(values);
-    }
+    if (settings.fill != old.fill)
+        op["values"] = fillValuesJson(settings.fill, true);
     LayerChange change;
     change.kind = LayerChange::Kind::Settings;
     change.id = id;
