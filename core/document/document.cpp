@@ -509,15 +509,23 @@ void Document::endStroke(PaintChanges& changes) {
     pushStrokeStep();
 }
 
-Status Document::lineTo(const StrokePoint& point, PaintChanges& changes) {
+Status Document::startLine(nlohmann::json op, PaintChanges& changes) {
     changes.clear();
     if (!m_layers)
         return Error{"the layers of this view are not built yet"};
     if (m_tracker.inStroke())
         endStroke();
     m_session.noteState(*this);
-    m_session.add(
-        {{"op", "line-to"}, {"to", {point.position.x, point.position.y, point.pressure}}});
+    m_session.add(std::move(op));
+    return {};
+}
+
+Status Document::lineTo(const StrokePoint& point, PaintChanges& changes) {
+    if (Status started = startLine(
+            {{"op", "line-to"}, {"to", {point.position.x, point.position.y, point.pressure}}},
+            changes);
+        !started)
+        return started;
     if (!m_lineStart)
         return paintLine(point, 0, point, changes);
     const StrokePoint from{m_lineStart->position, point.pressure};
@@ -525,15 +533,12 @@ Status Document::lineTo(const StrokePoint& point, PaintChanges& changes) {
 }
 
 Status Document::line(const StrokePoint& from, const StrokePoint& to, PaintChanges& changes) {
-    changes.clear();
-    if (!m_layers)
-        return Error{"the layers of this view are not built yet"};
-    if (m_tracker.inStroke())
-        endStroke();
-    m_session.noteState(*this);
-    m_session.add({{"op", "line"},
-                   {"from", {from.position.x, from.position.y, from.pressure}},
-                   {"to", {to.position.x, to.position.y, to.pressure}}});
+    if (Status started = startLine({{"op", "line"},
+                                    {"from", {from.position.x, from.position.y, from.pressure}},
+                                    {"to", {to.position.x, to.position.y, to.pressure}}},
+                                   changes);
+        !started)
+        return started;
     return paintLine(from, 0, to, changes);
 }
 

@@ -333,6 +333,8 @@ public:
 
 private:
     void paintDabs(PaintChanges& changes);
+    /** What line() and lineTo() do first: ends a stroke, logs op; an error without layers. */
+    Status startLine(nlohmann::json op, PaintChanges& changes);
     /** The straight stroke of line() and lineTo(), starting on layer (0: the visible one). */
     Status paintLine(const StrokePoint& from, std::uint32_t layer, const StrokePoint& to,
                      PaintChanges& changes);
