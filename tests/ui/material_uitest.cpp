@@ -53,27 +53,6 @@ protected:
 
     core::Document& doc() { return m_window->document(); }
 
-    /** A pixel whose 21 × 21 neighbourhood all shows the model. */
-    std::optional<QPoint> solidPixel() {
-        const core::LayerStack& layers = doc().layers()->stack;
-        const auto covered = [&](int x, int y) {
-            if (x < 0 || y < 0 || x >= layers.width || y >= layers.height)
-                return false;
-            const std::size_t i = std::size_t(y) * std::size_t(layers.width) + std::size_t(x);
-            return layers.offsets[i + 1] != layers.offsets[i];
-        };
-        for (int y = layers.height / 4; y < layers.height * 3 / 4; y += 3)
-            for (int x = layers.width / 4; x < layers.width * 3 / 4; x += 3) {
-                bool inside = true;
-                for (int dy = -10; inside && dy <= 10; dy += 2)
-                    for (int dx = -10; inside && dx <= 22; dx += 2)
-                        inside = covered(x + dx, y + dy);
-                if (inside)
-                    return QPoint(x, y);
-            }
-        return std::nullopt;
-    }
-
     /** Ctrl+Shift+N (a paint layer), then a stroke painting roughness 0.2 and metal 1 only. */
     void paintMetal() {
         QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <QPoint>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSize>
@@ -11,8 +12,10 @@
 #include <QUndoStack>
 
 #include <memory>
+#include <optional>
 
 #include "core/document/document.h"
+#include "core/layers/layer_stack.h"
 #include "tests/ui/ui_test_util.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/layer_builder.h"
@@ -64,6 +67,30 @@ protected:
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
         ASSERT_NE(document().layers(), nullptr);
+    }
+
+    /**
+     * A pixel near the middle whose neighbourhood (21 × 21, and 32 px to the right) all shows
+     * the model; nothing when none does.
+     */
+    std::optional<QPoint> solidPixel() {
+        const core::LayerStack& layers = document().layers()->stack;
+        const auto covered = [&](int x, int y) {
+            if (x < 0 || y < 0 || x >= layers.width || y >= layers.height)
+                return false;
+            const std::size_t i = std::size_t(y) * std::size_t(layers.width) + std::size_t(x);
+            return layers.offsets[i + 1] != layers.offsets[i];
+        };
+        for (int y = layers.height / 4; y < layers.height * 3 / 4; y += 3)
+            for (int x = layers.width / 4; x < layers.width * 3 / 4; x += 3) {
+                bool inside = true;
+                for (int dy = -10; inside && dy <= 10; dy += 2)
+                    for (int dx = -10; inside && dx <= 22; dx += 2)
+                        inside = covered(x + dx, y + dy);
+                if (inside)
+                    return QPoint(x, y);
+            }
+        return std::nullopt;
     }
 
     std::unique_ptr<ui::MainWindow> m_window;
