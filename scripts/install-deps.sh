@@ -17,6 +17,8 @@ if [[ "${1:-}" == "--test" ]]; then
     # clang and its runtime (libFuzzer, sanitizers) for the fuzz targets (scripts/fuzz.sh).
     packages+=(xvfb xauth assimp-testmodels clang-format appstream desktop-file-utils
         qt6-base-private-dev clang libclang-rt-14-dev)
+    # dpkg-dev (dpkg-shlibdeps) and lintian for the Debian package test (tests/app/deb_test.cmake).
+    packages+=(dpkg-dev lintian)
 fi
 
 missing=()
