@@ -491,13 +491,30 @@ TEST(GltfCompression, DracoSampleFromTheCorpusLoads) {
     EXPECT_EQ(draco->triangleCount(), plain->triangleCount() - degenerate);
 }
 
-/** Writes the damaged files of the crash corpus (run once by hand with the disabled tests on). */
-TEST(GltfCompression, DISABLED_WriteCrashCorpusFiles) {
-    const char* out = std::getenv("LAYERPAINT_CRASHERS_DIR");
-    ASSERT_NE(out, nullptr);
+const fs::path kData = LAYERPAINT_TEST_DATA;
+
+/**
+ * The committed files made by DISABLED_WriteDataFiles (fuzz seeds and the crash corpus) are
+ * still what the encoders make of the 5 × 5 grid, and load or fail as they should.
+ */
+TEST(GltfCompression, CommittedFilesLoadOrFail) {
     const Grid g = makeGrid(5);
-    writeDraco(g, fs::path(out) / "glb-draco-truncated.glb", 30);
-    writeMeshopt(g, fs::path(out) / "glb-meshopt-wrong-count.glb", 6);
+    for (const char* name : {"grid-draco.glb", "grid-meshopt.glb"}) {
+        const core::Result<core::Mesh> mesh = core::loadMesh((kData / "gltf" / name).string());
+        ASSERT_TRUE(mesh.ok()) << mesh.error();
+        expectSameMesh(*mesh, g, 2.0f / 4095.0f, 1.0f / 4095.0f);
+    }
+    expectRefused(kData / "crashers/glb-draco-truncated.glb", "Draco");
+    expectRefused(kData / "crashers/glb-meshopt-wrong-count.glb", "byteLength");
+}
+
+/** Rewrites those files (run by hand: --gtest_also_run_disabled_tests). */
+TEST(GltfCompression, DISABLED_WriteDataFiles) {
+    const Grid g = makeGrid(5);
+    writeDraco(g, kData / "gltf/grid-draco.glb");
+    writeMeshopt(g, kData / "gltf/grid-meshopt.glb");
+    writeDraco(g, kData / "crashers/glb-draco-truncated.glb", 30);
+    writeMeshopt(g, kData / "crashers/glb-meshopt-wrong-count.glb", 6);
 }
 
 } // namespace
