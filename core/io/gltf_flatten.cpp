@@ -69,7 +69,6 @@ private:
     template <typename T>
     bool readAccessor(int accessorIndex, Semantic semantic, int& components, std::vector<T>& out);
     bool addPrimitive(const Instance& inst, std::size_t primIndex);
-    bool readMaterialTransforms();
     /** The primitive's KHR_draco_mesh_compression object in the JSON, or nullptr. */
     const Json* dracoExtension(int mesh, std::size_t primIndex) const;
     bool decodeDracoPrimitive(const Json& ext, const std::string& where, const std::string& uvName,
@@ -631,40 +630,16 @@ bool GltfFlattener::addMaterials() {
     return true;
 }
 
-bool GltfFlattener::readMaterialTransforms() {
-    const auto materials = m_json.find("materials");
-    if (materials == m_json.end())
-        return true;
-    for (std::size_t i = 0; i < materials->size(); ++i) {
-        const Json pbr = (*materials)[i].value("pbrMetallicRoughness", Json::object());
-        const std::string where = "materials[" + str(i) + "].pbrMetallicRoughness";
-        TextureTransform base;
-        if (const auto t = pbr.find("baseColorTexture"); t != pbr.end()) {
-            Result<TextureTransform> r = readTextureTransform(*t, where + ".baseColorTexture");
-            if (!r)
-                return fail(r.error());
-            base = *r;
-        }
-        if (const auto t = pbr.find("metallicRoughnessTexture"); t != pbr.end()) {
-            Result<TextureTransform> r =
-                readTextureTransform(*t, where + ".metallicRoughnessTexture");
-            if (!r)
-                return fail(r.error());
-            if (pbr.contains("baseColorTexture") && !(*r == base))
-                warnOnce("a material's metallic-roughness texture is placed differently from its "
-                         "base color texture; the base color texture's placement is used");
-        }
-        m_uvTransforms.push_back(base);
-    }
-    return true;
-}
-
 bool GltfFlattener::run(Mesh& out) {
     std::vector<Instance> instances;
     if (!collectInstances(instances))
         return false;
-    if (!readMaterialTransforms())
-        return false;
+    Result<MaterialTransforms> transforms = readMaterialTransforms(m_json);
+    if (!transforms)
+        return fail(transforms.error());
+    m_uvTransforms = std::move(transforms->transforms);
+    for (const std::string& w : transforms->warnings)
+        warnOnce(w);
     std::size_t primTotal = 0, primDone = 0;
     for (const Instance& inst : instances)
         primTotal += m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives.size();

@@ -76,4 +76,36 @@ Result<TextureTransform> readTextureTransform(const Json& textureInfo, const std
     return out;
 }
 
+Result<MaterialTransforms> readMaterialTransforms(const Json& root) {
+    MaterialTransforms out;
+    const auto materials = root.find("materials");
+    if (materials == root.end())
+        return out;
+    for (std::size_t i = 0; i < materials->size(); ++i) {
+        const Json pbr = (*materials)[i].value("pbrMetallicRoughness", Json::object());
+        const std::string where = "materials[" + str(i) + "].pbrMetallicRoughness";
+        TextureTransform base;
+        const auto baseInfo = pbr.find("baseColorTexture");
+        if (baseInfo != pbr.end()) {
+            Result<TextureTransform> r =
+                readTextureTransform(*baseInfo, where + ".baseColorTexture");
+            if (!r)
+                return r.takeError();
+            base = *r;
+        }
+        if (const auto t = pbr.find("metallicRoughnessTexture"); t != pbr.end()) {
+            Result<TextureTransform> r =
+                readTextureTransform(*t, where + ".metallicRoughnessTexture");
+            if (!r)
+                return r.takeError();
+            if (baseInfo != pbr.end() && !(*r == base) && out.warnings.empty())
+                out.warnings.push_back(
+                    "a material's metallic-roughness texture is placed differently from its base "
+                    "color texture; the base color texture's placement is used");
+        }
+        out.transforms.push_back(base);
+    }
+    return out;
+}
+
 } // namespace core::detail::gltf

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
@@ -32,5 +33,17 @@ struct TextureTransform {
  */
 Result<TextureTransform> readTextureTransform(const nlohmann::json& textureInfo,
                                               const std::string& where);
+
+/** Per material of a glTF file, the placement of its base color texture. */
+struct MaterialTransforms {
+    std::vector<TextureTransform> transforms; // one per entry of the file's materials
+    std::vector<std::string> warnings;
+};
+
+/**
+ * The base color textures' transforms of root's materials; a metallic-roughness texture placed
+ * otherwise is a warning (its UVs cannot differ: the base color's placement is used).
+ */
+Result<MaterialTransforms> readMaterialTransforms(const nlohmann::json& root);
 
 } // namespace core::detail::gltf

@@ -230,9 +230,14 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     access.folder = file.parent_path().string();
     access.maxBytes = limits.maxFileBytes;
     // What tinygltf would refuse in compressed files is taken out of a copy of the JSON it
-    // parses instead; the flattener reads the file's own.
-    if (Json patched = json;
-        gltf::replaceFallbackBuffers(patched) | gltf::dropDracoIndices(patched)) {
+    // parses instead; the flattener reads the file's own. Only files that declare a compression
+    // extension (as glTF requires them to) pay for the copy.
+    bool compressed = false;
+    for (const Json& e : json.value("extensionsUsed", Json::array()))
+        compressed = compressed || e == "KHR_draco_mesh_compression" ||
+                     e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression";
+    if (Json patched = compressed ? json : Json();
+        compressed && (gltf::replaceFallbackBuffers(patched) | gltf::dropDracoIndices(patched))) {
         if (binary) {
             bytes = replaceGlbJson(bytes, parts, patched.dump());
             parts.length = bytes.size();
