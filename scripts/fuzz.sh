@@ -57,8 +57,13 @@ while IFS= read -r -d '' file; do
     name=$(printf '%s' "${file#"$models"/}" | md5sum | cut -c1-16)
     { printf "\\x$(printf %02x "$selector")"; cat "$file"; } >"$work/seeds-loaders/$name"
     seeds=$((seeds + 1))
-done < <(find "$models" -type f -size -64k \( -iname '*.glb' -o -iname '*.gltf' -o -iname '*.obj' \
-    -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) -print0 2>/dev/null | sort -z)
+done < <({
+    find "$models" -type f -size -64k \( -iname '*.glb' -o -iname '*.gltf' -o -iname '*.obj' \
+        -o -iname '*.ply' -o -iname '*.stl' -o -iname '*.off' \) -print0 2>/dev/null
+    # Compressed glTF (Draco, meshopt) made by tests/core/io/gltf_compression_test.cpp, and the
+    # damaged ones of the regression corpus: the targets skip those exact bytes, not their mutants.
+    find tests/data/gltf tests/data/crashers -type f -iname '*.glb' -print0
+} | sort -z)
 
 # Seeds for fuzz_project: binary glTF files, LayerPaint projects and their JSON.
 while IFS= read -r -d '' file; do

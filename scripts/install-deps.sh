@@ -10,6 +10,7 @@ packages=(
     qt6-base-dev libqt6opengl6-dev qt6-l10n-tools qt6-tools-dev qt6-tools-dev-tools
     libglm-dev libopenimageio-dev libtinygltf-dev libassimp-dev libepoxy-dev libegl-dev
     libgl-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libeigen3-dev
+    libdraco-dev libmeshoptimizer-dev
     libegl1 libgl1-mesa-dri qt6-qpa-plugins libqt6svg6 qt6-translations-l10n
 )
 if [[ "${1:-}" == "--test" ]]; then

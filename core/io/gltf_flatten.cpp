@@ -19,6 +19,8 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/io/gltf_accessors.h"
+#include "core/io/gltf_draco.h"
+#include "core/io/gltf_texture_transform.h"
 #include "core/io/mesh_io_in_process.h"
 
 static_assert(std::endian::native == std::endian::little,
@@ -55,6 +57,9 @@ private:
     bool m_quantized;
     std::size_t m_skippedPrimitives = 0;
     std::map<int, int> m_imageToTexture; // glTF image -> Mesh::textures index (-1: failed)
+    // Per glTF material: the base colour texture's KHR_texture_transform and coordinate set,
+    // applied to the UVs of the primitives using it.
+    std::vector<TextureTransform> m_uvTransforms;
 
     bool collectInstances(std::vector<Instance>& instances);
     bool localTransform(int nodeIndex, glm::dmat4& out);
@@ -64,6 +69,12 @@ private:
     template <typename T>
     bool readAccessor(int accessorIndex, Semantic semantic, int& components, std::vector<T>& out);
     bool addPrimitive(const Instance& inst, std::size_t primIndex);
+    /** The primitive's KHR_draco_mesh_compression object in the JSON, or nullptr. */
+    const Json* dracoExtension(int mesh, std::size_t primIndex) const;
+    bool decodeDracoPrimitive(const Json& ext, const std::string& where, const std::string& uvName,
+                              std::vector<float>& pos, std::vector<float>& nrm,
+                              std::vector<float>& uv, std::vector<float>& col, int& colComps,
+                              std::vector<std::uint32_t>& order);
     bool addMaterials();
     int textureFor(int textureIndex, int texCoord, const std::string& materialName);
 };
@@ -296,49 +307,90 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     if (!prim.targets.empty())
         warnOnce("morph targets are ignored: meshes are shown without them");
 
+    const int material = prim.material;
+    const TextureTransform* uvTransform =
+        material >= 0 && static_cast<std::size_t>(material) < m_uvTransforms.size()
+            ? &m_uvTransforms[static_cast<std::size_t>(material)]
+            : nullptr;
+    const std::string uvName = "TEXCOORD_" + str(uvTransform ? uvTransform->texCoord : 0);
+
     int nc = 0;
     std::vector<float> pos;
-    if (!readAccessor(posIt->second, Semantic::Position, nc, pos))
-        return false;
-    const std::size_t vertexCount = pos.size() / 3;
-
-    auto readMatching = [&](const char* attr, Semantic sem, int& comps,
-                            std::vector<float>& values) -> int {
-        const auto it = prim.attributes.find(attr);
-        if (it == prim.attributes.end())
-            return 0;
-        if (!readAccessor(it->second, sem, comps, values))
-            return -1;
-        if (values.size() / static_cast<std::size_t>(comps) != vertexCount) {
-            fail(where + ": " + attr + " has " +
-                 str(values.size() / static_cast<std::size_t>(comps)) + " elements but POSITION " +
-                 str(vertexCount));
-            return -1;
-        }
-        return 1;
-    };
-    int nrmComps = 0, uvComps = 0, colComps = 0;
+    int nrmComps = 3, uvComps = 2, colComps = 0;
     std::vector<float> nrm, uv, col;
-    const int hasNormal = readMatching("NORMAL", Semantic::Normal, nrmComps, nrm);
-    const int hasUv = readMatching("TEXCOORD_0", Semantic::TexCoord, uvComps, uv);
-    const int hasColor = readMatching("COLOR_0", Semantic::Color, colComps, col);
-    if (hasNormal < 0 || hasUv < 0 || hasColor < 0)
-        return false;
-
-    // Vertex order of the primitive's triangles, before triangulating strips and fans.
-    std::vector<std::uint32_t> order;
-    if (prim.indices >= 0) {
-        int one = 0;
-        if (!readAccessor(prim.indices, Semantic::Indices, one, order))
+    std::vector<std::uint32_t> order; // the triangles' vertex order before strips and fans
+    std::size_t vertexCount = 0;
+    int hasNormal = 0, hasUv = 0, hasColor = 0;
+    if (const Json* draco = dracoExtension(inst.mesh, primIndex)) {
+        if (mode != TINYGLTF_MODE_TRIANGLES)
+            return fail(where + " is Draco-compressed but not made of triangles");
+        if (!decodeDracoPrimitive(*draco, where, uvName, pos, nrm, uv, col, colComps, order))
             return false;
-        for (std::uint32_t i : order)
-            if (i >= vertexCount)
-                return fail(where + ": index " + str(i) + " is out of range (the primitive has " +
-                            str(vertexCount) + " vertices)");
+        vertexCount = pos.size() / 3;
+        // The primitive's accessors describe what the Draco data decodes to; a mismatch means
+        // the file is damaged (or the attribute map points at other data).
+        const auto accessorCount = [&](int index) -> std::uint64_t {
+            return index >= 0 && static_cast<std::size_t>(index) < m_model.accessors.size()
+                       ? m_model.accessors[static_cast<std::size_t>(index)].count
+                       : 0;
+        };
+        if (accessorCount(posIt->second) != vertexCount)
+            return fail(where + ": the Draco data holds " + str(vertexCount) +
+                        " vertices, but accessor " + str(posIt->second) + " (POSITION) says " +
+                        str(accessorCount(posIt->second)));
+        // tinygltf saw no indices (dropDracoIndices); the file's JSON has them.
+        const Json& jsonPrim =
+            m_json["meshes"][static_cast<std::size_t>(inst.mesh)]["primitives"][primIndex];
+        if (const auto it = jsonPrim.find("indices"); it != jsonPrim.end()) {
+            const int indices = it->get<int>();
+            if (accessorCount(indices) != order.size())
+                return fail(where + ": the Draco data holds " + str(order.size()) +
+                            " indices, but accessor " + str(indices) + " (indices) says " +
+                            str(accessorCount(indices)));
+        }
+        hasNormal = nrm.empty() ? 0 : 1;
+        hasUv = uv.empty() ? 0 : 1;
+        hasColor = col.empty() ? 0 : 1;
     } else {
-        order.resize(vertexCount);
-        for (std::size_t i = 0; i < vertexCount; ++i)
-            order[i] = static_cast<std::uint32_t>(i);
+        if (!readAccessor(posIt->second, Semantic::Position, nc, pos))
+            return false;
+        vertexCount = pos.size() / 3;
+
+        auto readMatching = [&](const char* attr, Semantic sem, int& comps,
+                                std::vector<float>& values) -> int {
+            const auto it = prim.attributes.find(attr);
+            if (it == prim.attributes.end())
+                return 0;
+            if (!readAccessor(it->second, sem, comps, values))
+                return -1;
+            if (values.size() / static_cast<std::size_t>(comps) != vertexCount) {
+                fail(where + ": " + attr + " has " +
+                     str(values.size() / static_cast<std::size_t>(comps)) +
+                     " elements but POSITION " + str(vertexCount));
+                return -1;
+            }
+            return 1;
+        };
+        hasNormal = readMatching("NORMAL", Semantic::Normal, nrmComps, nrm);
+        hasUv = readMatching(uvName.c_str(), Semantic::TexCoord, uvComps, uv);
+        hasColor = readMatching("COLOR_0", Semantic::Color, colComps, col);
+        if (hasNormal < 0 || hasUv < 0 || hasColor < 0)
+            return false;
+
+        if (prim.indices >= 0) {
+            int one = 0;
+            if (!readAccessor(prim.indices, Semantic::Indices, one, order))
+                return false;
+            for (std::uint32_t i : order)
+                if (i >= vertexCount)
+                    return fail(where + ": index " + str(i) +
+                                " is out of range (the primitive has " + str(vertexCount) +
+                                " vertices)");
+        } else {
+            order.resize(vertexCount);
+            for (std::size_t i = 0; i < vertexCount; ++i)
+                order[i] = static_cast<std::uint32_t>(i);
+        }
     }
 
     std::vector<std::uint32_t> tris; // local vertex indices, 3 per triangle
@@ -384,7 +436,13 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
                 ? unitNormal(normalMatrix * glm::dvec3(nrm[v * 3], nrm[v * 3 + 1], nrm[v * 3 + 2]))
                 : glm::vec3(0.0f));
         m_hasNormal.push_back(hasNormal ? 1 : 0);
-        m_mesh.uvs.push_back(hasUv ? glm::vec2(uv[v * 2], uv[v * 2 + 1]) : glm::vec2(0.0f));
+        glm::vec2 t(0.0f);
+        if (hasUv) {
+            t = glm::vec2(uv[v * 2], uv[v * 2 + 1]);
+            if (uvTransform && uvTransform->present)
+                t = uvTransform->apply(t);
+        }
+        m_mesh.uvs.push_back(t);
         glm::vec4 c(1.0f);
         if (hasColor)
             for (int k = 0; k < colComps; ++k)
@@ -394,7 +452,6 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     m_anyUv = m_anyUv || hasUv;
     m_anyColor = m_anyColor || hasColor;
 
-    int material = prim.material;
     if (material >= 0 && static_cast<std::size_t>(material) >= m_model.materials.size())
         return fail(where + " uses material " + str(material) + ", which does not exist");
     // Primitives without a material get the default one, appended after the file's.
@@ -413,6 +470,55 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     return true;
 }
 
+const Json* GltfFlattener::dracoExtension(int mesh, std::size_t primIndex) const {
+    const auto meshes = m_json.find("meshes");
+    if (meshes == m_json.end() || static_cast<std::size_t>(mesh) >= meshes->size())
+        return nullptr;
+    const Json& prims = (*meshes)[static_cast<std::size_t>(mesh)]["primitives"];
+    if (primIndex >= prims.size())
+        return nullptr;
+    const auto exts = prims[primIndex].find("extensions");
+    if (exts == prims[primIndex].end())
+        return nullptr;
+    const auto ext = exts->find("KHR_draco_mesh_compression");
+    return ext == exts->end() ? nullptr : &*ext;
+}
+
+bool GltfFlattener::decodeDracoPrimitive(const Json& ext, const std::string& where,
+                                         const std::string& uvName, std::vector<float>& pos,
+                                         std::vector<float>& nrm, std::vector<float>& uv,
+                                         std::vector<float>& col, int& colComps,
+                                         std::vector<std::uint32_t>& order) {
+    const std::string at = where + " (KHR_draco_mesh_compression)";
+    const auto view = ext.find("bufferView");
+    const auto attributes = ext.find("attributes");
+    if (view == ext.end() || !view->is_number_unsigned() ||
+        view->get<std::uint64_t>() > kMaxIndex || attributes == ext.end() ||
+        !attributes->is_object())
+        return fail(at + " needs a bufferView and an attributes object");
+    std::map<std::string, std::uint32_t> ids;
+    for (auto it = attributes->begin(); it != attributes->end(); ++it) {
+        if (!it.value().is_number_unsigned() || it.value().get<std::uint64_t>() > kMaxIndex)
+            return fail(at + ": attribute " + it.key() + " must be a non-negative integer");
+        ids[it.key()] = it.value().get<std::uint32_t>();
+    }
+    const std::uint8_t* data = nullptr;
+    std::uint64_t length = 0;
+    if (!viewBytes(view->get<int>(), at, data, length))
+        return false;
+    Result<DracoPrimitive> decoded =
+        decodeDraco(data, static_cast<std::size_t>(length), ids, uvName, m_limits);
+    if (!decoded)
+        return fail(at + ": " + decoded.error());
+    pos = std::move(decoded->positions);
+    nrm = std::move(decoded->normals);
+    uv = std::move(decoded->uvs);
+    col = std::move(decoded->colors);
+    colComps = decoded->colorComponents;
+    order = std::move(decoded->indices);
+    return true;
+}
+
 int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string& materialName) {
     if (textureIndex < 0)
         return -1;
@@ -421,10 +527,7 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
              ", which does not exist");
         return -1;
     }
-    if (texCoord != 0) {
-        warnOnce("base color textures on texture coordinate sets other than 0 are ignored");
-        return -1;
-    }
+    (void)texCoord; // the primitives read the set the material's texture uses
     const int source = m_model.textures[static_cast<std::size_t>(textureIndex)].source;
     if (source < 0) {
         warnOnce("textures without a source image (or only an extension's image) are ignored");
@@ -513,11 +616,6 @@ bool GltfFlattener::addMaterials() {
                                    : -1;
                 }
             }
-            const Json bct = jm.value("pbrMetallicRoughness", Json::object())
-                                 .value("baseColorTexture", Json::object());
-            if (bct.is_object() && bct.contains("extensions") &&
-                bct["extensions"].contains("KHR_texture_transform"))
-                warnOnce("texture transforms (KHR_texture_transform) are ignored");
         }
         for (int k = 0; k < 4; ++k)
             if (!std::isfinite(mat.baseColorFactor[k]))
@@ -536,6 +634,12 @@ bool GltfFlattener::run(Mesh& out) {
     std::vector<Instance> instances;
     if (!collectInstances(instances))
         return false;
+    Result<MaterialTransforms> transforms = readMaterialTransforms(m_json);
+    if (!transforms)
+        return fail(transforms.error());
+    m_uvTransforms = std::move(transforms->transforms);
+    for (const std::string& w : transforms->warnings)
+        warnOnce(w);
     std::size_t primTotal = 0, primDone = 0;
     for (const Instance& inst : instances)
         primTotal += m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives.size();

@@ -397,10 +397,12 @@ Result<Extensions> checkExtensions(const Json& root) {
                                                     "KHR_materials_unlit",
                                                     "KHR_technique_webgl",
                                                     "KHR_lights_punctual",
-                                                    "KHR_texture_transform",
                                                     "KHR_materials_emissive_strength",
                                                     "KHR_materials_variants",
                                                     "KHR_xmp_json_ld"};
+    static const std::set<std::string> decoded = {
+        "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
+        "KHR_texture_transform"};
     quantized = false;
     for (const Json& e : root.value("extensionsUsed", Json::array()))
         if (e.get<std::string>() == "KHR_mesh_quantization")
@@ -409,6 +411,8 @@ Result<Extensions> checkExtensions(const Json& root) {
         const std::string ext = e.get<std::string>();
         if (ext == "KHR_mesh_quantization") {
             quantized = true;
+        } else if (decoded.count(ext)) {
+            // decoded while loading (gltf_meshopt, gltf_draco, gltf_texture_transform)
         } else if (ignorable.count(ext) || ext.rfind("KHR_materials_", 0) == 0) {
             warnings.push_back("the required extension " + ext + " is ignored");
         } else {

@@ -31,8 +31,9 @@ struct Extensions {
 };
 
 /**
- * extensionsRequired: KHR_mesh_quantization is supported; shading-only extensions cannot change
- * what is painted on, so they are ignored with a warning; anything else (Draco, meshopt, ...)
+ * extensionsRequired: KHR_mesh_quantization, KHR_draco_mesh_compression, EXT_meshopt_compression
+ * (and KHR_meshopt_compression) and KHR_texture_transform are supported; shading-only
+ * extensions cannot change what is painted on, so they are ignored with a warning; anything else
  * fails the load (Unsupported), as glTF requires.
  */
 Result<Extensions> checkExtensions(const nlohmann::json& root);

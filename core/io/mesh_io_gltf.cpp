@@ -10,8 +10,13 @@
 // 3. tinygltf loads buffers and images through file callbacks that only open files inside the
 //    model's folder (gltf_file_access.h); image bytes are only collected there and decoded later
 //    with OpenImageIO, and only for base color textures.
-// 4. The scene is flattened into one Mesh (gltf_flatten.h), reading accessors through
-//    gltf_accessors.h.
+// 4. Buffer views compressed with EXT_meshopt_compression are decoded (gltf_meshopt.h); their
+//    fallback buffers, which may hold no data, are replaced in the JSON before step 3.
+// 5. The scene is flattened into one Mesh (gltf_flatten.h), reading accessors through
+//    gltf_accessors.h and decoding KHR_draco_mesh_compression primitives (gltf_draco.h).
+//
+// glTF 1.0 text files (asset.version "1.x") go to Assimp, which reads them; binary glTF 1.0
+// (KHR_binary_glTF) is refused by the container check, as Assimp 5.2 cannot read it either.
 #include <algorithm>
 #include <cstring>
 #include <exception>
@@ -27,8 +32,10 @@
 
 #include "core/io/glb_container.h"
 #include "core/io/gltf_accessors.h"
+#include "core/io/gltf_draco.h"
 #include "core/io/gltf_file_access.h"
 #include "core/io/gltf_flatten.h"
+#include "core/io/gltf_meshopt.h"
 #include "core/io/gltf_schema.h"
 #include "core/io/json_depth.h"
 #include "core/io/mesh_io.h"
@@ -38,6 +45,8 @@ namespace core::detail {
 
 Result<Mesh> loadGltf(const std::filesystem::path& file, const ProgressFn& progress,
                       const LoadLimits& limits);
+Result<Mesh> loadAssimp(const std::filesystem::path& file, const ProgressFn& progress,
+                        const LoadLimits& limits);
 
 namespace {
 
@@ -115,6 +124,47 @@ std::string describeParseError(const Json::parse_error& e, std::string_view text
            reason + ")";
 }
 
+/** Whether json is glTF 1.0: asset.version "1" or "1.x", or meshes as a dictionary. */
+bool isGltf1(const Json& json) {
+    if (!json.is_object())
+        return false;
+    const auto asset = json.find("asset");
+    if (asset != json.end() && asset->is_object()) {
+        const auto version = asset->find("version");
+        if (version != asset->end() && version->is_string()) {
+            const std::string v = version->get<std::string>();
+            return v == "1" || v.rfind("1.", 0) == 0;
+        }
+    }
+    const auto meshes = json.find("meshes");
+    return meshes != json.end() && meshes->is_object();
+}
+
+/** A GLB like bytes (laid out as parts) with json in place of its JSON chunk. */
+std::vector<std::uint8_t> replaceGlbJson(const std::vector<std::uint8_t>& bytes,
+                                         const glb::Layout& parts, const std::string& json) {
+    std::string text = json;
+    while (text.size() % 4 != 0)
+        text.push_back(' ');
+    const std::uint64_t restStart = parts.jsonOffset + parts.jsonLength;
+    const std::uint64_t restEnd = std::max(restStart, parts.length);
+    std::vector<std::uint8_t> out(12);
+    auto put32 = [&out](std::size_t at, std::uint64_t v) {
+        const auto u = static_cast<std::uint32_t>(v);
+        std::memcpy(out.data() + at, &u, 4);
+    };
+    put32(0, glb::kMagic);
+    put32(4, 2);
+    out.resize(20);
+    put32(12, text.size());
+    put32(16, glb::kChunkJson);
+    out.insert(out.end(), text.begin(), text.end());
+    out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(restStart),
+               bytes.begin() + static_cast<std::ptrdiff_t>(restEnd));
+    put32(8, out.size());
+    return out;
+}
+
 Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLimits& limits) {
     std::vector<std::uint8_t> bytes;
     {
@@ -165,6 +215,8 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     } catch (const Json::exception&) {
         return Error{"is not a valid glTF file: its text cannot be read"};
     }
+    if (isGltf1(json))
+        return loadAssimp(file, progress, limits);
     if (Status valid = gltf::checkSchema(json); !valid)
         return valid.takeError();
     if (Status valid = gltf::checkImageViews(json); !valid)
@@ -177,6 +229,24 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     gltf::FileAccess access;
     access.folder = file.parent_path().string();
     access.maxBytes = limits.maxFileBytes;
+    // What tinygltf would refuse in compressed files is taken out of a copy of the JSON it
+    // parses instead; the flattener reads the file's own. Only files that declare a compression
+    // extension (as glTF requires them to) pay for the copy.
+    bool compressed = false;
+    for (const Json& e : json.value("extensionsUsed", Json::array()))
+        compressed = compressed || e == "KHR_draco_mesh_compression" ||
+                     e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression";
+    if (Json patched = compressed ? json : Json();
+        compressed && (gltf::replaceFallbackBuffers(patched) | gltf::dropDracoIndices(patched))) {
+        if (binary) {
+            bytes = replaceGlbJson(bytes, parts, patched.dump());
+            parts.length = bytes.size();
+        } else {
+            const std::string text = patched.dump();
+            bytes.assign(text.begin(), text.end());
+        }
+    }
+
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(gltf::confinedFileCallbacks(access));
     loader.SetImageLoader(&gltf::collectImage, &access);
@@ -196,6 +266,8 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
         return Error{err.empty() ? std::string("is not a valid glTF file") : oneLine(err)};
     bytes.clear();
     bytes.shrink_to_fit();
+    if (Status decoded = gltf::decodeMeshoptViews(model, json, limits); !decoded)
+        return decoded.takeError();
     if (!reportProgress(progress, 0.5))
         return cancelledError();
 
