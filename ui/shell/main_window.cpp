@@ -16,7 +16,6 @@
 #include <QKeySequence>
 #include <QLabel>
 #include <QLocale>
-#include <QLocale>
 #include <QMenu>
 #include <QMimeData>
 #include <QProgressDialog>
@@ -203,8 +202,7 @@ QString MainWindow::builtinLabel(const QString& name) {
     if (name == QLatin1String("knot"))
         return tr("Torus knot (1M triangles)");
     if (name.startsWith(QLatin1String("knot?triangles=")))
-        return tr("Torus knot (%1 triangles)")
-            .arg(QLocale().toString(name.mid(15).toLongLong()));
+        return tr("Torus knot (%1 triangles)").arg(QLocale().toString(name.mid(15).toLongLong()));
     // A model added to core before the GUI learnt its label: its English description.
     for (const core::BuiltinModel& model : core::builtinModels()) {
         if (QString::fromStdString(model.name) == name)
