@@ -3,10 +3,14 @@
 // mesh and view measured in the same run (docs/architecture.md §4, §5).
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <string>
 #include <thread>
+
+#include <sys/resource.h>
 
 #include <epoxy/gl.h>
 #include <nlohmann/json.hpp>
@@ -47,6 +51,46 @@ double percentile(std::vector<double> values, double p) {
 double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
+
+/**
+ * Peak resident memory (VmHWM) in MiB. Between stages the peak is reset to the current size
+ * (/proc/self/clear_refs, "5"), so each stage reports its own peak; where that is refused, the
+ * peaks are the process's so far (also ru_maxrss where /proc is missing).
+ */
+struct PeakMemory {
+    std::map<std::string, double> stages; // the largest peak of each stage over the runs
+
+    static void reset() {
+        std::ofstream clear("/proc/self/clear_refs");
+        clear << "5";
+    }
+    static double peakMiB() {
+        std::ifstream status("/proc/self/status");
+        std::string line;
+        while (std::getline(status, line))
+            if (line.rfind("VmHWM:", 0) == 0)
+                return std::stod(line.substr(6)) / 1024.0; // kB
+        rusage usage{};
+        getrusage(RUSAGE_SELF, &usage);
+        return double(usage.ru_maxrss) / 1024.0;
+    }
+    /** Records the peak since the last reset as `stage`'s and starts the next stage. */
+    void mark(const std::string& stage) {
+        double& peak = stages[stage];
+        peak = std::max(peak, peakMiB());
+        reset();
+    }
+    json toJson() const {
+        json out = json::object();
+        double all = 0.0;
+        for (const auto& [stage, peak] : stages) {
+            out[stage] = std::round(peak * 10.0) / 10.0;
+            all = std::max(all, peak);
+        }
+        out["all"] = std::round(all * 10.0) / 10.0;
+        return out;
+    }
+};
 
 /** Medians of every timed part over the runs of one model at one size. */
 struct Samples {
@@ -183,7 +227,10 @@ int runBench(const BenchArgs& args) {
         models = {"builtin:trefoil"};
 
     for (const std::string& model : models) {
+        PeakMemory modelMemory; // loading and the uploads, once per model
+        PeakMemory::reset();
         auto mesh = core::loadMesh(model);
+        modelMemory.mark("load");
         if (!mesh)
             return fail(mesh.error());
         render::MeshRenderer renderer;
@@ -206,6 +253,7 @@ int runBench(const BenchArgs& args) {
         render::GpuConnectivity gpuConnectivity;
         if (const core::Status s = gpuConnectivity.initialize(); !s)
             return fail(s.error());
+        modelMemory.mark("mesh_upload");
 
         for (const std::string& size : args.sizes) {
             CameraArgs cameraArgs = args.camera;
@@ -218,6 +266,7 @@ int runBench(const BenchArgs& args) {
                 return fail(s.error());
 
             Samples samples;
+            PeakMemory memory = modelMemory;
             std::vector<double> tipMoves; // move_stroke with a textured tip turning along the path
             std::vector<double> symmetricMoves; // and with 4-way symmetry
             std::size_t fragments = 0, regions = 0, layerCount = 0;
@@ -226,11 +275,14 @@ int runBench(const BenchArgs& args) {
             for (int run = -1; run < runs; ++run) {
                 render::DrawOptions plainOptions;
                 plainOptions.cullBackFaces = true;
+                PeakMemory::reset();
                 const double plain = render::timePlainPass(renderer, target, *view, plainOptions);
+                memory.mark("plain_pass");
                 const auto start = Clock::now();
                 if (const core::Status s = doc.buildLayers(capturer, *view); !s)
                     return fail(model + ": " + s.error());
                 const double build = msSince(start);
+                memory.mark("build_layers");
                 const core::Layers* layers = doc.layers();
                 if (const core::Status s = compositor.setLayers(*layers); !s)
                     return fail(model + ": " + s.error());
@@ -260,6 +312,7 @@ int runBench(const BenchArgs& args) {
                 compositor.setRegionRanks(doc.regionOrder().prunedRanks(true));
                 timedDraw(seeThrough); // picks again, keeping the fragments under see-through ones
                 const double seeThroughDraw = timedDraw(seeThrough);
+                memory.mark("draw_layers");
                 core::RegionOrder initial = doc.regionOrder();
                 initial.reset();
                 doc.setRegionOrder(std::move(initial)); // strokes start as they always did
@@ -273,6 +326,7 @@ int runBench(const BenchArgs& args) {
                 if (!gpuConnectivity.compute(layers->stack, connectivityOptions, &layers->geometry,
                                              &gpuConnectivityMs))
                     gpuConnectivityMs = -1.0;
+                memory.mark("connectivity_cpu_gpu");
                 const StrokeTimes stroke = timeStroke(doc, *view);
                 const core::Brush roundBrush = doc.brush();
                 doc.brush().tip = "chalk";
@@ -284,6 +338,7 @@ int runBench(const BenchArgs& args) {
                 doc.brush().symmetry.mirrorZ = true;
                 const StrokeTimes symmetricStroke = timeStroke(doc, *view);
                 doc.brush() = roundBrush;
+                memory.mark("strokes");
                 if (run < 0)
                     continue;
                 tipMoves.insert(tipMoves.end(), tipStroke.moves.begin(), tipStroke.moves.end());
@@ -314,6 +369,7 @@ int runBench(const BenchArgs& args) {
                 layerCount = layers->stack.maxLayers();
             }
             const PaintLayerTimes paintLayers = timePaintLayers(doc, *view, runs);
+            memory.mark("paint_layers");
             const double plain = median(samples.plain), build = median(samples.buildLayers);
             json row = {
                 {"model", model},
@@ -346,6 +402,7 @@ int runBench(const BenchArgs& args) {
                 {"dab_on_target_ms", median(samples.dab)},
                 {"move_stroke_textured_tip_ms", median(tipMoves)},
                 {"move_stroke_symmetric_4_ms", median(symmetricMoves)},
+                {"peak_rss_mib", memory.toJson()},
                 {"paint_layers",
                  {{"texture", kPaintLayerTexture},
                   {"layers", kPaintLayers},
@@ -361,7 +418,8 @@ int runBench(const BenchArgs& args) {
                       << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain
                       << " ms), draw_layers " << median(samples.drawLayers) << " ms, start_stroke "
                       << median(samples.startStroke) << " ms, move_stroke "
-                      << median(samples.moveStroke) << " ms\n";
+                      << median(samples.moveStroke) << " ms, peak RSS "
+                      << memory.toJson()["all"].get<double>() << " MiB\n";
             results.push_back(std::move(row));
         }
         compositor.release();

@@ -22,7 +22,8 @@ void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
 int main(int argc, char** argv) {
     CLI::App app{"LayerPaint headless tool: inspect models, capture depth layers, replay painting "
                  "scripts and benchmark.\nMODEL is a file (.gltf .glb .obj .ply .stl .off ...) or "
-                 "builtin:trefoil, builtin:hexring, builtin:row."};
+                 "builtin:trefoil, builtin:hexring, builtin:row, builtin:knot?triangles=N (1000 to "
+                 "50000000)."};
     app.set_version_flag("--version", std::string("layerpaint-cli ") + LAYERPAINT_VERSION);
     app.require_subcommand(1);
 

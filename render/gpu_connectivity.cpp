@@ -213,10 +213,12 @@ core::Result<core::Connectivity> GpuConnectivity::compute(const core::LayerStack
                                                           fragments * sizeof(std::uint32_t)};
     for (std::size_t b = 0; b < bytes.size(); ++b)
         if (bytes[b] > d.maxBufferBytes)
-            return core::Error{"gpu connectivity: the view's " +
-                               std::to_string(b == kTriangles ? triangles : fragments) +
-                               (b == kTriangles ? " triangles" : " fragments") +
-                               " exceed this OpenGL's buffer size"};
+            return core::Error{
+                "gpu connectivity: the view's " +
+                std::to_string(b == kTriangles ? triangles : fragments) +
+                (b == kTriangles ? " triangles" : " fragments") +
+                " exceed this OpenGL's storage block size; " +
+                (b == kTriangles ? "use a model with fewer triangles" : "make the view smaller")};
 
     glFinish();
     const Clock::time_point start = Clock::now();

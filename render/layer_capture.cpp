@@ -7,6 +7,7 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -30,6 +31,7 @@ double msSince(Clock::time_point start) {
 
 constexpr std::uint32_t kEmpty = 0xffffffffu;
 constexpr std::size_t kNodeBytes = 3 * sizeof(std::uint32_t); // depth bits, triangle, next
+constexpr int kMaxNodeChunks = 8;                             // capture.frag's NODE_CHUNKS at most
 constexpr int kBandRows = 8;                                  // rows per resolve work unit
 constexpr std::size_t kAhead = 64;                            // prefetch distance, in pixels
 
@@ -192,10 +194,32 @@ private:
 };
 } // namespace
 
-struct LayerCapture::Impl {
+/** capture.vert + capture.frag for a number of node chunks, and its uniforms. */
+struct CaptureProgram {
     ShaderProgram program;
     GLint viewLocation = -1, projLocation = -1;
-    GLint widthLocation = -1, heightLocation = -1, capacityLocation = -1;
+    GLint widthLocation = -1, heightLocation = -1, capacityLocation = -1, chunkShiftLocation = -1;
+};
+
+core::Result<CaptureProgram> buildCaptureProgram(int chunks) {
+    std::vector<std::string> defines;
+    if (chunks > 1)
+        defines.push_back("NODE_CHUNKS " + std::to_string(chunks));
+    auto built = ShaderProgram::build({"capture.vert", "capture.frag"}, defines);
+    if (!built)
+        return core::Error{built.error()};
+    CaptureProgram p{std::move(built).value()};
+    p.program.locate({{&p.viewLocation, "uView"},
+                      {&p.projLocation, "uProj"},
+                      {&p.widthLocation, "uWidth"},
+                      {&p.heightLocation, "uHeight"},
+                      {&p.capacityLocation, "uCapacity"},
+                      {&p.chunkShiftLocation, "uChunkShift"}});
+    return p;
+}
+
+struct LayerCapture::Impl {
+    std::map<int, CaptureProgram> programs; // by node chunks; 1 built by initialize()
     // The mesh as a triangle soup: 3 positions a triangle, in triangle order.
     GLuint vertexArray = 0, positions = 0;
     std::size_t soupVertices = 0;
@@ -203,16 +227,34 @@ struct LayerCapture::Impl {
     int framebufferWidth = 0, framebufferHeight = 0;
     GLint maxFramebufferWidth = 0, maxFramebufferHeight = 0;
     std::size_t maxBufferBytes = 0;
+    std::size_t blockCap = 0; // setStorageBlockCap(): 0 for none
+    int maxChunks = 1;        // node chunks the GL's storage bindings allow
+    unsigned chunkShift = 0;  // a chunk holds 2^chunkShift nodes
 
-    MappedBuffer counter, heads, nodes;
-    std::size_t capacity = 0;          // nodes that fit in `nodes`
-    std::size_t requestedCapacity = 0; // from setNodeCapacity, applied at the next capture
-    bool headsEmpty = false;           // every head is kEmpty (the resolve resets them)
+    // The nodes are split into chunks of 2^chunkShift nodes (the last one shorter), each its own
+    // storage block: one block caps a buffer, not the list. A list that fits one chunk is one
+    // buffer as large as it needs.
+    MappedBuffer counter, heads;
+    std::vector<MappedBuffer> nodes;
+    std::vector<const std::uint32_t*> nodeData; // each chunk's mapping
+    std::size_t capacity = 0;                   // nodes that fit in `nodes`
+    std::size_t requestedCapacity = 0;          // from setNodeCapacity, applied at the next capture
+    bool headsEmpty = false;                    // every head is kEmpty (the resolve resets them)
     int totalRecaptures = 0;
     std::unique_ptr<BandPool> pool;
     std::vector<Band> bands;
 
-    std::size_t maxNodes() const { return maxBufferBytes / kNodeBytes; }
+    std::size_t chunkNodes() const { return std::size_t(1) << chunkShift; }
+    std::size_t maxNodes() const {
+        return std::min<std::size_t>(chunkNodes() * std::size_t(maxChunks), kEmpty - 1);
+    }
+    void freeNodes() {
+        for (MappedBuffer& chunk : nodes)
+            chunk.free();
+        nodes.clear();
+        nodeData.clear();
+        capacity = 0;
+    }
     void releaseMesh() {
         if (vertexArray)
             glDeleteVertexArrays(1, &vertexArray);
@@ -222,6 +264,24 @@ struct LayerCapture::Impl {
         soupVertices = 0;
     }
     core::Status ensureNodes(std::size_t wanted);
+    /** The chunk size: the largest power of two of nodes within a (possibly capped) block. */
+    void planChunks() {
+        const std::size_t block = blockCap ? std::min(blockCap, maxBufferBytes) : maxBufferBytes;
+        chunkShift = 0;
+        while ((std::size_t(2) << chunkShift) * kNodeBytes <= block && chunkShift < 31)
+            ++chunkShift;
+    }
+    /** The program for the current number of node chunks, built on first use. */
+    core::Status ensureProgram() {
+        const int chunks = int(nodes.size());
+        if (programs.count(chunks))
+            return {};
+        auto built = buildCaptureProgram(chunks);
+        if (!built)
+            return core::Error{built.error()};
+        programs.emplace(chunks, std::move(built).value());
+        return {};
+    }
     void draw(const core::View& view, const Options& options);
     core::Result<core::LayerStack> resolve(const core::View& view, std::size_t written,
                                            Timings* timings);
@@ -230,14 +290,22 @@ struct LayerCapture::Impl {
 core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
     if (wanted > maxNodes())
         return core::Error{"layer capture: the view has " + std::to_string(wanted) +
-                           " fragments, more than this OpenGL's buffers hold (" +
-                           std::to_string(maxNodes()) + ")"};
-    if (wanted <= capacity && nodes.id)
+                           " fragments, more than this OpenGL holds (" +
+                           std::to_string(maxNodes()) + "); make the view smaller"};
+    if (wanted <= capacity && !nodes.empty())
         return {};
-    capacity = 0;
-    if (!nodes.allocate(wanted * kNodeBytes))
-        return core::Error{"layer capture: out of GPU memory for " + std::to_string(wanted) +
-                           " fragments"};
+    freeNodes();
+    const std::size_t chunks = (wanted + chunkNodes() - 1) / chunkNodes();
+    nodes.resize(std::max<std::size_t>(chunks, 1));
+    for (std::size_t c = 0; c < nodes.size(); ++c) {
+        const std::size_t count = std::min(chunkNodes(), wanted - c * chunkNodes());
+        if (!nodes[c].allocate(std::max<std::size_t>(count, 1) * kNodeBytes)) {
+            freeNodes();
+            return core::Error{"layer capture: out of GPU memory for " + std::to_string(wanted) +
+                               " fragments; make the view smaller"};
+        }
+        nodeData.push_back(static_cast<const std::uint32_t*>(nodes[c].data));
+    }
     capacity = wanted;
     return {};
 }
@@ -258,18 +326,21 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     StateGuard::setEnabled(GL_CULL_FACE, options.cullBackFaces);
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
-    program.use();
-    glUniformMatrix4fv(viewLocation, 1, GL_FALSE, glm::value_ptr(view.view));
-    glUniformMatrix4fv(projLocation, 1, GL_FALSE, glm::value_ptr(view.proj));
-    glUniform1i(widthLocation, view.width);
-    glUniform1i(heightLocation, view.height);
-    glUniform1ui(capacityLocation, GLuint(capacity));
+    const CaptureProgram& p = programs.at(int(nodes.size()));
+    p.program.use();
+    glUniformMatrix4fv(p.viewLocation, 1, GL_FALSE, glm::value_ptr(view.view));
+    glUniformMatrix4fv(p.projLocation, 1, GL_FALSE, glm::value_ptr(view.proj));
+    glUniform1i(p.widthLocation, view.width);
+    glUniform1i(p.heightLocation, view.height);
+    glUniform1ui(p.capacityLocation, GLuint(capacity));
+    glUniform1ui(p.chunkShiftLocation, GLuint(chunkShift));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter.id);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, heads.id);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, nodes.id);
+    for (std::size_t c = 0; c < nodes.size(); ++c)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(2 + c), nodes[c].id);
     glBindVertexArray(vertexArray);
     glDrawArrays(GL_TRIANGLES, 0, GLsizei(soupVertices));
-    for (GLuint binding = 0; binding < 3; ++binding)
+    for (GLuint binding = 0; binding < GLuint(2 + nodes.size()); ++binding)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
 
     // Shader writes reach the persistent mappings once the fence has signalled.
@@ -288,7 +359,12 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     if (int(bands.size()) < bandCount)
         bands.resize(std::size_t(bandCount));
     auto* headWords = static_cast<std::uint32_t*>(heads.data);
-    const auto* nodeWords = static_cast<const std::uint32_t*>(nodes.data);
+    const std::uint32_t* const* chunkWords = nodeData.data();
+    const unsigned shift = chunkShift;
+    const std::uint32_t mask = std::uint32_t(chunkNodes() - 1);
+    const auto nodeWords = [&](std::uint32_t node) {
+        return chunkWords[node >> shift] + std::size_t(node & mask) * 3;
+    };
     const auto nodeLimit = std::uint32_t(written);
 
     core::LayerStack stack;
@@ -311,12 +387,11 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
             // order. Prefetch the first two nodes of pixels ahead.
             if (pixel + 2 * kAhead < last)
                 if (const std::uint32_t h = headWords[pixel + 2 * kAhead]; h < nodeLimit)
-                    prefetch(nodeWords + std::size_t(h) * 3);
+                    prefetch(nodeWords(h));
             if (pixel + kAhead < last)
                 if (const std::uint32_t h = headWords[pixel + kAhead]; h < nodeLimit)
-                    if (const std::uint32_t next = nodeWords[std::size_t(h) * 3 + 2];
-                        next < nodeLimit)
-                        prefetch(nodeWords + std::size_t(next) * 3);
+                    if (const std::uint32_t next = nodeWords(h)[2]; next < nodeLimit)
+                        prefetch(nodeWords(next));
             const std::size_t begin = band.keys.size();
             stack.offsets[pixel] = std::uint32_t(begin);
             std::uint32_t node = headWords[pixel];
@@ -325,7 +400,7 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
             headWords[pixel] = kEmpty;
             // Bounded by the nodes written, so a corrupt list cannot loop forever.
             for (std::uint32_t steps = 0; node < nodeLimit && steps < nodeLimit; ++steps) {
-                const std::uint32_t* n = nodeWords + std::size_t(node) * 3;
+                const std::uint32_t* n = nodeWords(node);
                 band.keys.push_back(std::uint64_t(sortableDepth(n[0])) << 32 | n[1]);
                 node = n[2];
             }
@@ -396,25 +471,27 @@ LayerCapture::~LayerCapture() {
 
 core::Status LayerCapture::initialize() {
     Impl& d = *m_impl;
-    auto program = ShaderProgram::build({"capture.vert", "capture.frag"});
+    auto program = buildCaptureProgram(1);
     if (!program)
         return core::Error{program.error()};
-    d.program = std::move(program).value();
-    d.program.locate({{&d.viewLocation, "uView"},
-                      {&d.projLocation, "uProj"},
-                      {&d.widthLocation, "uWidth"},
-                      {&d.heightLocation, "uHeight"},
-                      {&d.capacityLocation, "uCapacity"}});
+    d.programs.clear();
+    d.programs.emplace(1, std::move(program).value());
 
     GLint64 maxBlock = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    GLint fragmentBlocks = 0, bindings = 0;
+    glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
+    // Counter and heads take two blocks; the rest can hold node chunks.
+    d.maxChunks = std::clamp(std::min(fragmentBlocks, bindings) - 2, 1, kMaxNodeChunks);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &d.maxFramebufferWidth);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &d.maxFramebufferHeight);
     // Node indices are 32-bit with 0xffffffff as "none"; offsets are 32-bit too.
     d.maxBufferBytes =
         std::size_t(std::clamp<GLint64>(maxBlock, 0, GLint64(kEmpty - 1) * GLint64(kNodeBytes)));
-    if (d.maxBufferBytes == 0 || d.maxFramebufferWidth <= 0 || d.maxFramebufferHeight <= 0)
+    if (d.maxBufferBytes < kNodeBytes || d.maxFramebufferWidth <= 0 || d.maxFramebufferHeight <= 0)
         return core::Error{"layer capture: OpenGL reports no shader storage or framebuffer size"};
+    d.planChunks();
     if (!d.framebuffer)
         glCreateFramebuffers(1, &d.framebuffer);
     if (!d.pool) {
@@ -454,7 +531,7 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
     Impl& d = *m_impl;
     if (timings)
         *timings = Timings{};
-    if (!d.program.valid() || !d.framebuffer || !d.pool)
+    if (d.programs.empty() || !d.framebuffer || !d.pool)
         return core::Error{"layer capture: not initialized"};
     if (view.width < 1 || view.height < 1 || view.width > d.maxFramebufferWidth ||
         view.height > d.maxFramebufferHeight)
@@ -494,12 +571,14 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
         d.requestedCapacity = 0;
         if (!status)
             return core::Error{status.error()};
-    } else if (!d.nodes.id) {
+    } else if (d.nodes.empty()) {
         // A first guess of two fragments a pixel; a deeper view grows it once.
         if (const core::Status status = d.ensureNodes(std::min(pixels * 2, d.maxNodes())); !status)
             return core::Error{status.error()};
     }
 
+    if (const core::Status status = d.ensureProgram(); !status)
+        return core::Error{status.error()};
     int recaptures = 0;
     std::size_t written = 0;
     {
@@ -512,6 +591,8 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
             // Lists cut at the capacity are incomplete: grow with some headroom and draw again.
             const std::size_t grown = std::min(d.maxNodes(), written + written / 8);
             if (const core::Status status = d.ensureNodes(std::max(grown, written)); !status)
+                return core::Error{status.error()};
+            if (const core::Status status = d.ensureProgram(); !status)
                 return core::Error{status.error()};
             ++recaptures;
             ++d.totalRecaptures;
@@ -542,6 +623,17 @@ void LayerCapture::setNodeCapacity(std::size_t nodes) {
     m_impl->requestedCapacity = std::max<std::size_t>(nodes, 1);
 }
 
+void LayerCapture::setStorageBlockCap(std::size_t bytes) {
+    Impl& d = *m_impl;
+    d.blockCap = bytes;
+    d.freeNodes();
+    d.planChunks();
+}
+
+std::size_t LayerCapture::nodeChunks() const {
+    return m_impl->nodes.size();
+}
+
 int LayerCapture::totalRecaptures() const {
     return m_impl->totalRecaptures;
 }
@@ -552,15 +644,14 @@ void LayerCapture::release() {
     Impl& d = *m_impl;
     d.counter.free();
     d.heads.free();
-    d.nodes.free();
-    d.capacity = 0;
+    d.freeNodes();
     d.headsEmpty = false;
     d.releaseMesh();
     if (d.framebuffer)
         glDeleteFramebuffers(1, &d.framebuffer);
     d.framebuffer = 0;
     d.framebufferWidth = d.framebufferHeight = 0;
-    d.program = ShaderProgram();
+    d.programs.clear();
     d.pool.reset();
     d.bands.clear();
 }

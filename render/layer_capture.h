@@ -36,7 +36,7 @@ struct LayerCaptureTimings {
  * geometry pass: a fragment shader appends each fragment to its pixel's linked list in GL buffers,
  * then CPU threads sort the lists front to back straight from the mapped buffers (ties by triangle
  * id, so the result is deterministic). If a view has more fragments than the node buffer holds,
- * the buffer grows and the view is drawn again; the capacity is kept for later captures.
+ * the buffers grow and the view is drawn again; the capacity is kept for later captures.
  * GPU memory: 36 bytes a triangle, 4 a pixel, 12 a fragment. capture() blocks until the lists
  * are resolved. Needs a current GL 4.5 context for every call, the one it was initialized in.
  */
@@ -63,8 +63,9 @@ public:
     /**
      * Captures the view at view.width × view.height. Without a mesh the stack has no fragments.
      * Returns an Error (and captures nothing) if initialize() has not succeeded, if the size
-     * exceeds the GL's framebuffer limits, if the view's fragments exceed the largest buffer the
-     * GL allows (128 MiB, 11.1 million fragments on llvmpipe), or if GL or CPU memory runs out.
+     * exceeds the GL's framebuffer limits, or if GL or CPU memory runs out. The fragments are
+     * not capped by one storage block: they are split into chunks of a block each (up to 8,
+     * as the GL's storage bindings allow: 67 million fragments on llvmpipe).
      */
     core::Result<core::LayerStack> capture(const core::View& view, const Options& options = {},
                                            Timings* timings = nullptr);
@@ -73,6 +74,13 @@ public:
     std::size_t nodeCapacity() const;
     /** Resizes the node buffer at the next capture (tests force growth with a tiny one). */
     void setNodeCapacity(std::size_t nodes);
+    /**
+     * Plans the node chunks as if a storage block held at most `bytes` (0: the GL's limit), so
+     * tests run small views through the split path. Frees the node buffers.
+     */
+    void setStorageBlockCap(std::size_t bytes);
+    /** How many buffers the fragment (node) list is split into (0 before the first capture). */
+    std::size_t nodeChunks() const;
     /** Recaptures forced by a full node buffer over this object's lifetime. */
     int totalRecaptures() const;
 

@@ -60,6 +60,9 @@ core::Result<Program> buildProgram(unsigned variant) {
                      {&p.maxLayers, "uMaxLayers"},
                      {&p.fragmentCount, "uFragmentCount"},
                      {&p.triangleCount, "uTriangleCount"},
+                     {&p.triangleFirst, "uTriangleFirst"},
+                     {&p.meshTriangles, "uMeshTriangles"},
+                     {&p.firstPart, "uFirstPart"},
                      {&p.view, "uView"},
                      {&p.rayOrigin0, "uRayOrigin0"},
                      {&p.rayOriginDx, "uRayOriginDx"},
@@ -238,6 +241,13 @@ void LayerCompositor::draw(const CompositeOptions& options) {
             d.buffers[binding].upload(nullptr, 0, d.maxBlockBytes);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, d.buffers[binding].id);
     }
+    // The mesh arrays: a part's at a time (the bindings above are stand-ins without a mesh).
+    const auto bindPart = [&](const MeshPart& part) {
+        for (std::size_t i = 0; i < kMeshArrays; ++i)
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kTriangles + i),
+                             part.buffers[i].id ? part.buffers[i].id
+                                                : d.buffers[kTriangles + i].id);
+    };
 
     if (shade && d.fragments > 0) {
         // Once per capture or mesh: every fragment's shading, 64 fragments a group.
@@ -245,7 +255,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         p.shader.use();
         glUniform1ui(p.fragmentCount, std::uint32_t(d.fragments));
         glUniform1ui(p.width, std::uint32_t(d.width));
-        glUniform1ui(p.triangleCount, d.hasMesh ? d.triangleCount : 0u);
+        glUniform1ui(p.meshTriangles, d.hasMesh ? d.triangleCount : 0u);
         glUniformMatrix4fv(p.view, 1, GL_FALSE, glm::value_ptr(d.view));
         glUniform3fv(p.rayOrigin0, 1, glm::value_ptr(d.rays.origin0));
         glUniform3fv(p.rayOriginDx, 1, glm::value_ptr(d.rays.originDx));
@@ -255,7 +265,18 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         glUniform3fv(p.rayDirectionDy, 1, glm::value_ptr(d.rays.directionDy));
         const std::size_t groups = (d.fragments + kShadeGroupSize - 1) / kShadeGroupSize;
         const GLuint groupsX = GLuint(std::min<std::size_t>(groups, 65535));
-        glDispatchCompute(groupsX, GLuint((groups + groupsX - 1) / groupsX), 1);
+        // One pass per mesh part; each shades the fragments of its triangles (the first also
+        // those of triangles the mesh lacks). Without a mesh one pass shades them all grey.
+        const std::size_t parts = d.hasMesh ? d.meshParts.size() : 0;
+        for (std::size_t i = 0; i < std::max<std::size_t>(parts, 1); ++i) {
+            const bool real = i < parts;
+            if (real)
+                bindPart(d.meshParts[i]);
+            glUniform1ui(p.triangleFirst, real ? d.meshParts[i].firstTriangle : 0u);
+            glUniform1ui(p.triangleCount, real ? d.meshParts[i].triangleCount : 0u);
+            glUniform1ui(p.firstPart, i == 0 ? 1u : 0u);
+            glDispatchCompute(groupsX, GLuint((groups + groupsX - 1) / groupsX), 1);
+        }
         d.shadedVersion = d.geometryVersion;
     }
     // This draw's or an earlier one's writes must be visible to the reads below.
@@ -337,6 +358,10 @@ void LayerCompositor::release() {
     d.releaseTextures();
     for (Buffer& buffer : d.buffers)
         buffer.free();
+    for (MeshPart& part : d.meshParts)
+        for (Buffer& buffer : part.buffers)
+            buffer.free();
+    d.meshParts.clear();
     if (d.vao)
         glDeleteVertexArrays(1, &d.vao);
     d.vao = 0;

@@ -85,9 +85,10 @@ public:
     /** Compiles the shaders (other feature variants on first use); an Error if they fail. */
     core::Status initialize();
     /**
-     * Uploads what shading needs: vertices, triangles, materials and their textures. Returns an
-     * Error (and keeps no mesh) if a buffer exceeds the GL's storage block limit or GL memory
-     * runs out. Buffers are reused while the data fits.
+     * Uploads what shading needs: vertices, triangles, materials and their textures. A mesh
+     * whose arrays exceed one storage block is split into parts of consecutive triangles, each
+     * within a block. Returns an Error (and keeps no mesh) if GL memory runs out. Buffers are
+     * reused while the data fits.
      */
     core::Status setMesh(const core::Mesh& mesh);
     /**
@@ -145,6 +146,13 @@ public:
      * draw of these layers and order. Reads back from the GPU: for tests and tools.
      */
     std::vector<std::uint32_t> readVisible() const;
+    /**
+     * Plans the mesh's parts as if a storage block held at most `bytes` (0: the GL's limit), so
+     * tests run small scenes through the split path. Takes effect at the next setMesh().
+     */
+    void setStorageBlockCap(std::size_t bytes);
+    /** How many parts the mesh was split into (1 when it fits one block; 0 without a mesh). */
+    std::size_t meshPartCount() const;
     /** Frees every GL object; the context must be current. Called by the destructor too. */
     void release();
 

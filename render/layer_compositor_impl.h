@@ -53,6 +53,8 @@ enum Binding : GLuint {
     kBufferCount
 };
 constexpr GLuint kStorageBindings = kTiles;
+/** The mesh arrays a MeshPart holds: bindings kTriangles .. kColors. */
+constexpr std::size_t kMeshArrays = kColors - kTriangles + 1;
 
 /** Features compiled into a program variant (see composite.frag, composite_shade.comp). */
 enum Variant : unsigned {
@@ -103,11 +105,29 @@ struct Buffer : GlBuffer {
     }
 };
 
+/**
+ * A run of consecutive triangles and the vertices they use, each array within one storage
+ * block. A mesh whose arrays fit one block is one part that holds them unchanged; a larger one
+ * is split into parts (their triangles indexing the part's own vertices, shared ones copied at
+ * the seams), and composite_shade.comp runs once per part with the part's buffers at the same
+ * bindings. So the mesh is limited by GL memory, not by the block size, and the shader keeps
+ * one plain array per binding (no per-load choice among bindings, which llvmpipe pays for in
+ * every invocation).
+ */
+struct MeshPart {
+    std::uint32_t firstTriangle = 0;
+    std::uint32_t triangleCount = 0;
+    bool renumbered = false;             // false: the mesh's own numbering (a mesh in one part)
+    std::vector<std::uint32_t> vertices; // renumbered: the mesh vertex of each local one, ascending
+    std::array<Buffer, kMeshArrays> buffers; // binding kTriangles + i
+};
+
 /** A linked program variant and the locations of its uniforms (-1 where it has none). */
 struct Program {
     ShaderProgram shader;
     GLint width = -1, height = -1, tileSize = -1, layer = -1, regionCount = -1, maxLayers = -1,
-          fragmentCount = -1, triangleCount = -1, view = -1;
+          fragmentCount = -1, triangleCount = -1, triangleFirst = -1, meshTriangles = -1,
+          firstPart = -1, view = -1;
     GLint rayOrigin0 = -1, rayOriginDx = -1, rayOriginDy = -1, rayDirection0 = -1,
           rayDirectionDx = -1, rayDirectionDy = -1;
     GLint background = -1, highlight = -1, highlightBox = -1, pass = -1, texture = -1, opacity = -1,
@@ -123,6 +143,12 @@ struct LayerCompositor::Impl {
     GLuint vao = 0;
     std::array<compositor::Buffer, compositor::kBufferCount> buffers;
     std::size_t maxBlockBytes = 0;
+    std::size_t blockCap = 0; // setStorageBlockCap(): 0 for none
+
+    /** The block size split arrays are planned for: the GL's, or a test's smaller cap. */
+    std::size_t planBytes() const {
+        return blockCap ? std::min(blockCap, maxBlockBytes) : maxBlockBytes;
+    }
 
     // Mesh
     bool hasMesh = false;
@@ -130,6 +156,7 @@ struct LayerCompositor::Impl {
     bool hasColors = false;
     std::uint32_t triangleCount = 0;
     std::size_t vertexCount = 0;
+    std::vector<compositor::MeshPart> meshParts;     // empty without a mesh
     std::vector<PaintTexture> passTextures;          // the textures materials sample: one pass each
     std::vector<int> passOfTexture;                  // per mesh texture: its pass, -1 for none
     std::vector<PaintTexture> passMetallicRoughness; // per pass; id 0 where it has none

@@ -132,6 +132,66 @@ core::Status LayerCompositor::Impl::uploadSegmentation(const core::Layers& layer
     return {};
 }
 
+namespace {
+/** Where the part that begins at firstTriangle ends: as many triangles as fit a block. */
+struct PartPlan {
+    std::uint32_t firstTriangle = 0, triangleCount = 0;
+};
+
+/**
+ * Splits triangles into runs whose triangle array and vertex arrays (vertexBytes a vertex,
+ * counting each vertex once per part) each fit blockBytes. Empty if not even one triangle fits.
+ */
+std::vector<PartPlan> planParts(const std::vector<glm::uvec4>& packed, std::size_t vertices,
+                                std::size_t blockBytes, std::size_t vertexBytes) {
+    const std::size_t maxTriangles = blockBytes / sizeof(glm::uvec4);
+    const std::size_t maxVertices = blockBytes / vertexBytes;
+    if (maxTriangles < 1 || maxVertices < 3)
+        return {};
+    std::vector<PartPlan> parts;
+    std::vector<std::uint32_t> partOf(vertices, core::kNone); // the last part to use a vertex
+    PartPlan part;
+    std::size_t used = 0;
+    for (std::size_t t = 0; t < packed.size(); ++t) {
+        const glm::uvec4& triangle = packed[t];
+        const auto partIndex = std::uint32_t(parts.size());
+        const auto fresh = [&] {
+            std::size_t count = 0;
+            if (triangle.w == core::kNone)
+                return count; // drawn grey: reads no vertex
+            for (int i = 0; i < 3; ++i)
+                count += partOf[triangle[i]] != partIndex &&
+                         (i == 0 || triangle[i] != triangle[0]) &&
+                         (i < 2 || triangle[2] != triangle[1]);
+            return count;
+        };
+        if (part.triangleCount + 1 > maxTriangles || used + fresh() > maxVertices) {
+            parts.push_back(part);
+            part = {std::uint32_t(t), 0};
+            used = 0;
+        }
+        const auto current = std::uint32_t(parts.size());
+        if (triangle.w != core::kNone)
+            for (int i = 0; i < 3; ++i)
+                if (partOf[triangle[i]] != current) {
+                    partOf[triangle[i]] = current;
+                    ++used;
+                }
+        ++part.triangleCount;
+    }
+    parts.push_back(part);
+    return parts;
+}
+
+template <typename T, typename F>
+std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
+    std::vector<T> out(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        out[i] = value(vertices[i]);
+    return out;
+}
+} // namespace
+
 core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
     Impl& d = *m_impl;
     d.hasMesh = false;
@@ -139,9 +199,10 @@ core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
     ++d.geometryVersion;
     d.releaseTextures();
     const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
-    if (!d.fits(triangles, sizeof(glm::uvec4)) || !d.fits(vertices, sizeof(glm::vec4)) ||
-        !d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
-        return tooLarge("the mesh's triangles or vertices");
+    if (!d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
+        return tooLarge("the mesh's materials");
+    if (triangles > core::kNone - 1)
+        return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
 
     // Triangles with a bad index or material are drawn grey rather than read out of bounds.
     std::vector<glm::uvec4> packed(triangles);
@@ -175,22 +236,86 @@ core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
         materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
     }
 
-    const std::size_t limit = d.maxBlockBytes;
-    bool ok = d.buffers[kTriangles].upload(packed, limit) &&
-              d.buffers[kPositions].upload(mesh.positions, limit) &&
-              d.buffers[kMaterials].upload(materials, limit);
+    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
+    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
     std::vector<std::uint32_t> normals(vertices, octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
     if (mesh.normals.size() == vertices)
         std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
-    ok = ok && d.buffers[kNormals].upload(normals, limit);
-    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
-    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
-    ok = ok && (d.hasUvs ? d.buffers[kUvs].upload(mesh.uvs, limit)
-                         : d.buffers[kUvs].upload(nullptr, 0, limit));
-    ok = ok && (d.hasColors ? d.buffers[kColors].upload(mesh.colors, limit)
-                            : d.buffers[kColors].upload(nullptr, 0, limit));
-    if (!ok)
-        return outOfMemory("the mesh");
+
+    // The largest vertex element: a colour (vec4) or a position (3 floats).
+    const std::size_t vertexBytes = d.hasColors ? sizeof(glm::vec4) : sizeof(glm::vec3);
+    const std::size_t block = d.planBytes();
+    std::vector<PartPlan> plan;
+    const bool onePart = triangles <= block / sizeof(glm::uvec4) && vertices <= block / vertexBytes;
+    if (onePart)
+        plan.push_back({0, std::uint32_t(triangles)});
+    else
+        plan = planParts(packed, vertices, block, vertexBytes);
+    if (plan.empty())
+        return tooLarge("one triangle's vertices");
+
+    const std::size_t limit = d.maxBlockBytes;
+    bool ok = d.buffers[kMaterials].upload(materials, limit);
+    // Parts beyond the plan are freed; the others keep their buffers while the data fits.
+    for (std::size_t i = plan.size(); i < d.meshParts.size(); ++i)
+        for (Buffer& buffer : d.meshParts[i].buffers)
+            buffer.free();
+    d.meshParts.resize(plan.size());
+    for (std::size_t i = 0; i < plan.size() && ok; ++i) {
+        MeshPart& part = d.meshParts[i];
+        part.firstTriangle = plan[i].firstTriangle;
+        part.triangleCount = plan[i].triangleCount;
+        part.vertices.clear();
+        part.renumbered = !onePart;
+        auto& buffers = part.buffers;
+        const auto upload = [&](std::size_t binding, const auto& values, bool present) {
+            Buffer& buffer = buffers[binding - kTriangles];
+            return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
+        };
+        if (onePart) {
+            ok = upload(kTriangles, packed, true) && upload(kPositions, mesh.positions, true) &&
+                 upload(kNormals, normals, true) && upload(kUvs, mesh.uvs, d.hasUvs) &&
+                 upload(kColors, mesh.colors, d.hasColors);
+            continue;
+        }
+        // The part's vertices in ascending order, and its triangles renumbered to them.
+        const auto begin = packed.begin() + part.firstTriangle;
+        std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
+        for (const glm::uvec4& triangle : local)
+            if (triangle.w != core::kNone)
+                part.vertices.insert(part.vertices.end(), {triangle.x, triangle.y, triangle.z});
+        std::sort(part.vertices.begin(), part.vertices.end());
+        part.vertices.erase(std::unique(part.vertices.begin(), part.vertices.end()),
+                            part.vertices.end());
+        const auto localOf = [&](std::uint32_t v) {
+            return std::uint32_t(std::lower_bound(part.vertices.begin(), part.vertices.end(), v) -
+                                 part.vertices.begin());
+        };
+        for (glm::uvec4& triangle : local)
+            if (triangle.w != core::kNone)
+                triangle = {localOf(triangle.x), localOf(triangle.y), localOf(triangle.z),
+                            triangle.w};
+        const std::vector<std::uint32_t>& v = part.vertices;
+        ok = upload(kTriangles, local, true) &&
+             upload(kPositions,
+                    gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }),
+                    true) &&
+             upload(kNormals, gather<std::uint32_t>(v, [&](std::uint32_t g) { return normals[g]; }),
+                    true) &&
+             upload(kUvs,
+                    d.hasUvs ? gather<glm::vec2>(v, [&](std::uint32_t g) { return mesh.uvs[g]; })
+                             : std::vector<glm::vec2>(),
+                    d.hasUvs) &&
+             upload(kColors,
+                    d.hasColors
+                        ? gather<glm::vec4>(v, [&](std::uint32_t g) { return mesh.colors[g]; })
+                        : std::vector<glm::vec4>(),
+                    d.hasColors);
+    }
+    if (!ok) {
+        d.meshParts.clear();
+        return outOfMemory("the mesh (open a model with fewer triangles)");
+    }
 
     // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
     for (int texture : passImages) {
@@ -202,6 +327,14 @@ core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
     d.triangleCount = std::uint32_t(triangles);
     d.hasMesh = true;
     return {};
+}
+
+void LayerCompositor::setStorageBlockCap(std::size_t bytes) {
+    m_impl->blockCap = bytes;
+}
+
+std::size_t LayerCompositor::meshPartCount() const {
+    return m_impl->hasMesh ? m_impl->meshParts.size() : 0;
 }
 
 core::Status LayerCompositor::setLayers(const core::Layers& layers) {
@@ -218,7 +351,10 @@ core::Status LayerCompositor::setLayers(const core::Layers& layers) {
         return core::Error{"layer compositor: inconsistent layer stack"};
     if (!d.fits(pixels + 1, sizeof(std::uint32_t)) ||
         !d.fits(fragments, kShadingWords * sizeof(std::uint32_t)) || fragments > kMaxFragments)
-        return tooLarge("the view's pixels or fragments");
+        return core::Error{"layer compositor: the view's " + std::to_string(fragments) +
+                           " fragments exceed the GL's shader storage block size (" +
+                           std::to_string(d.maxBlockBytes / (kShadingWords * 4)) +
+                           " at most); make the view smaller"};
 
     d.findTiles(stack);
     std::vector<std::uint32_t> fragmentPixel(fragments);
@@ -303,8 +439,26 @@ void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const gl
     if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
         return;
     const std::size_t count = std::min(colors.size(), d.vertexCount - first);
-    glNamedBufferSubData(d.buffers[kColors].id, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
-                         GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
+    for (MeshPart& part : d.meshParts) {
+        const GLuint buffer = part.buffers[kColors - kTriangles].id;
+        if (!part.renumbered) {
+            glNamedBufferSubData(buffer, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
+                                 GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
+            continue;
+        }
+        // The part's copies of those vertices: a run of its ascending local ones.
+        const auto lo = std::lower_bound(part.vertices.begin(), part.vertices.end(), first);
+        const auto hi = std::lower_bound(lo, part.vertices.end(), std::uint32_t(first + count));
+        if (lo == hi)
+            continue;
+        std::vector<glm::vec4> local;
+        local.reserve(std::size_t(hi - lo));
+        for (auto v = lo; v != hi; ++v)
+            local.push_back(colors[*v - first]);
+        glNamedBufferSubData(buffer,
+                             GLintptr(lo - part.vertices.begin()) * GLintptr(sizeof(glm::vec4)),
+                             GLsizeiptr(local.size() * sizeof(glm::vec4)), local.data());
+    }
     // The shading holds the colours; the visible fragments stay as picked.
     ++d.geometryVersion;
 }

@@ -15,20 +15,87 @@ layout(std430, binding = 0) coherent buffer Counter {
 layout(std430, binding = 1) coherent buffer Heads {
     uint heads[]; // 0xffffffff = empty list
 };
-// Node i: [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] next node.
-layout(std430, binding = 2) writeonly buffer Nodes {
-    uint nodes[];
-};
+// Node i: [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] next node. The nodes lie in
+// NODE_CHUNKS buffers (bindings 2, 3, ...) of 2^uChunkShift nodes each, so no one storage block
+// caps the list: node i is entry i & (2^uChunkShift - 1) of chunk i >> uChunkShift.
+#ifndef NODE_CHUNKS
+#define NODE_CHUNKS 1
+#endif
+uniform uint uChunkShift;
+#define NODE_CHUNK(k)                                                                              \
+    layout(std430, binding = 2 + k) writeonly buffer Nodes##k {                                    \
+        uint nodes##k[];                                                                           \
+    };
+#define STORE_CHUNK(k)                                                                             \
+    else if (chunk == uint(k)) {                                                                   \
+        nodes##k[i] = depth;                                                                       \
+        nodes##k[i + 1u] = triangle;                                                               \
+        nodes##k[i + 2u] = next;                                                                   \
+    }
+NODE_CHUNK(0)
+#if NODE_CHUNKS > 1
+NODE_CHUNK(1)
+#endif
+#if NODE_CHUNKS > 2
+NODE_CHUNK(2)
+#endif
+#if NODE_CHUNKS > 3
+NODE_CHUNK(3)
+#endif
+#if NODE_CHUNKS > 4
+NODE_CHUNK(4)
+#endif
+#if NODE_CHUNKS > 5
+NODE_CHUNK(5)
+#endif
+#if NODE_CHUNKS > 6
+NODE_CHUNK(6)
+#endif
+#if NODE_CHUNKS > 7
+NODE_CHUNK(7)
+#endif
+
+void storeNode(uint node, uint depth, uint triangle, uint next) {
+#if NODE_CHUNKS == 1
+    uint i = 3u * node;
+    nodes0[i] = depth;
+    nodes0[i + 1u] = triangle;
+    nodes0[i + 2u] = next;
+#else
+    uint chunk = node >> uChunkShift;
+    uint i = 3u * (node & ((1u << uChunkShift) - 1u));
+    if (false) {
+    }
+    STORE_CHUNK(0)
+    STORE_CHUNK(1)
+#if NODE_CHUNKS > 2
+    STORE_CHUNK(2)
+#endif
+#if NODE_CHUNKS > 3
+    STORE_CHUNK(3)
+#endif
+#if NODE_CHUNKS > 4
+    STORE_CHUNK(4)
+#endif
+#if NODE_CHUNKS > 5
+    STORE_CHUNK(5)
+#endif
+#if NODE_CHUNKS > 6
+    STORE_CHUNK(6)
+#endif
+#if NODE_CHUNKS > 7
+    STORE_CHUNK(7)
+#endif
+#endif
+}
 
 void main() {
     uint node = atomicAdd(nodeCount, 1u);
-    // Past the capacity the draw only counts; the CPU grows the buffer and draws again.
+    // Past the capacity the draw only counts; the CPU grows the buffers and draws again.
     if (node >= uCapacity)
         return;
     ivec2 p = ivec2(gl_FragCoord.xy);
     uint pixel = uint(uHeight - 1 - p.y) * uint(uWidth) + uint(p.x);
     uint next = atomicExchange(heads[pixel], node);
-    nodes[3u * node] = floatBitsToUint(vViewDepth);
-    nodes[3u * node + 1u] = vTriangle;
-    nodes[3u * node + 2u] = next;
+    storeNode(node, floatBitsToUint(vViewDepth), vTriangle, next);
 }

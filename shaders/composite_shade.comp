@@ -9,7 +9,15 @@ const uint kNone = 0xffffffffu;
 
 uniform uint uFragmentCount;
 uniform uint uWidth;
+// A mesh too large for one storage block is split into parts of consecutive triangles (see
+// render::compositor::MeshPart): this pass runs once per part, with the part's triangles
+// [uTriangleFirst, uTriangleFirst + uTriangleCount), numbered from 0 and indexing the part's own
+// vertices, at bindings 6-10. Fragments of other parts' triangles are left alone; those of
+// triangles the mesh lacks (uMeshTriangles and beyond) are shaded grey by the first part.
+uniform uint uTriangleFirst;
 uniform uint uTriangleCount;
+uniform uint uMeshTriangles;
+uniform uint uFirstPart;
 uniform mat4 uView;
 // View-space pixel rays (core::PixelRays): origin + depth * direction, affine in the pixel.
 uniform vec3 uRayOrigin0;
@@ -120,11 +128,15 @@ void main() {
              gl_LocalInvocationIndex;
     if (f >= uFragmentCount)
         return;
+    uint t = fragmentTriangle[f];
+    uint local = t - uTriangleFirst; // wraps below the part
+    bool inPart = local < uTriangleCount;
+    if (!inPart && !(uFirstPart != 0u && t >= uMeshTriangles))
+        return;
     uint pixel = fragmentPixel[f];
     vec2 px = vec2(float(pixel % uWidth) + 0.5, float(pixel / uWidth) + 0.5);
 
-    uint t = fragmentTriangle[f];
-    uvec4 triangle = t < uTriangleCount ? triangles[t] : uvec4(0u, 0u, 0u, kNone);
+    uvec4 triangle = inPart ? triangles[local] : uvec4(0u, 0u, 0u, kNone);
     vec4 base = vec4(0.5, 0.5, 0.5, 1.0); // a triangle the mesh lacks: plain grey
     float diffuse = 1.0;
     uint slot = 0u;

@@ -733,6 +733,14 @@ Regionen: %2</translation>
         <translation>Viererreihe</translation>
     </message>
     <message>
+        <source>Torus knot (1M triangles)</source>
+        <translation>Torusknoten (1 Mio. Dreiecke)</translation>
+    </message>
+    <message>
+        <source>Torus knot (%1 triangles)</source>
+        <translation>Torusknoten (%1 Dreiecke)</translation>
+    </message>
+    <message>
         <source>Segmentation</source>
         <translation>Segmentierung</translation>
     </message>

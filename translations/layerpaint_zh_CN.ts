@@ -732,6 +732,14 @@ Regions: %2</source>
         <translation>四个一排</translation>
     </message>
     <message>
+        <source>Torus knot (1M triangles)</source>
+        <translation>环面纽结（100 万个三角形）</translation>
+    </message>
+    <message>
+        <source>Torus knot (%1 triangles)</source>
+        <translation>环面纽结（%1 个三角形）</translation>
+    </message>
+    <message>
         <source>Segmentation</source>
         <translation>分割</translation>
     </message>

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <charconv>
 #include <cmath>
 #include <numbers>
 
@@ -58,11 +59,42 @@ const std::vector<BuiltinModel>& builtinModels() {
         {"trefoil", "Trefoil knot tube (144K vertices)"},
         {"hexring", "Hexagonal ring with an inner surface"},
         {"row", "Row of four identical bodies, one behind another"},
+        {"knot", "Torus knot tube of any size: knot?triangles=N (default 1,000,000)"},
     };
     return models;
 }
 
+namespace {
+/** "knot" or "knot?triangles=N": the knot of about N triangles. */
+Result<Mesh> makeKnotFromName(const std::string& name) {
+    const std::string full = std::string(kBuiltinPrefix) + name;
+    std::size_t triangles = kKnotDefaultTriangles;
+    if (name.size() > 4) {
+        const std::string query = name.substr(5);
+        const std::size_t equals = query.find('=');
+        const std::string key = query.substr(0, equals);
+        if (key != "triangles" || equals == std::string::npos)
+            return Error{full + ": unknown parameter \"" + key + "\" (the knot takes triangles=N)",
+                         ErrorKind::BadInput};
+        const std::string value = query.substr(equals + 1);
+        std::uint64_t n = 0;
+        const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), n);
+        if (value.empty() || error != std::errc() || end != value.data() + value.size())
+            return Error{full + ": triangles must be a whole number, not \"" + value + "\"",
+                         ErrorKind::BadInput};
+        if (n < kKnotMinTriangles || n > kKnotMaxTriangles)
+            return Error{full + ": triangles must be between " + std::to_string(kKnotMinTriangles) +
+                             " and " + std::to_string(kKnotMaxTriangles),
+                         ErrorKind::BadInput};
+        triangles = std::size_t(n);
+    }
+    return makeKnot(triangles);
+}
+} // namespace
+
 Result<Mesh> makeBuiltinModel(const std::string& name) {
+    if (name == "knot" || name.rfind("knot?", 0) == 0)
+        return makeKnotFromName(name);
     if (name == "trefoil")
         return makeTrefoil();
     if (name == "hexring")
@@ -70,24 +102,29 @@ Result<Mesh> makeBuiltinModel(const std::string& name) {
     if (name == "row")
         return makeRow();
     return Error{std::string(kBuiltinPrefix) + name + ": no such built-in model (try trefoil, " +
-                 "hexring or row)"};
+                 "hexring, row or knot?triangles=N)"};
 }
 
-Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
-    constexpr int kStrips = 3;
-    constexpr float kTubeRadius = 0.45f; // strands pass 1.21 apart at the closest crossing
+namespace {
+/**
+ * A tube of tubeRadius around the closed curve over t in [0, 2π), in `strips` UV strips (one per
+ * lobe) so texels are near square: strips × segmentsPerStrip segments along, radialSegments
+ * around, two triangles each.
+ */
+Mesh makeTube(glm::vec3 (*curve)(float), int strips, float tubeRadius, int segmentsPerStrip,
+              int radialSegments, const glm::vec4& color, const std::string& name) {
     segmentsPerStrip = std::max(segmentsPerStrip, 3);
     radialSegments = std::max(radialSegments, 3);
-    const int segments = kStrips * segmentsPerStrip;
+    const int segments = strips * segmentsPerStrip;
 
     // Rotation-minimizing frames along the closed curve (double reflection), then the twist left
     // at the end is spread evenly so the tube closes without a seam in the shading.
     std::vector<glm::vec3> centers(segments + 1), tangents(segments + 1), normals(segments + 1);
     for (int i = 0; i <= segments; ++i) {
         const float t = 2.0f * kPi * float(i) / float(segments);
-        centers[i] = trefoilCurve(t);
+        centers[i] = curve(t);
         const float h = 1e-3f;
-        tangents[i] = glm::normalize(trefoilCurve(t + h) - trefoilCurve(t - h));
+        tangents[i] = glm::normalize(curve(t + h) - curve(t - h));
     }
     normals[0] = glm::normalize(glm::cross(tangents[0], glm::vec3(0.0f, 0.0f, 1.0f)));
     for (int i = 0; i < segments; ++i) {
@@ -105,8 +142,12 @@ Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
 
     Mesh mesh;
     const int ring = radialSegments + 1;
-    mesh.positions.reserve(std::size_t(kStrips) * (segmentsPerStrip + 1) * ring);
-    for (int strip = 0; strip < kStrips; ++strip) {
+    const std::size_t vertexCount = std::size_t(strips) * (segmentsPerStrip + 1) * ring;
+    mesh.positions.reserve(vertexCount);
+    mesh.normals.reserve(vertexCount);
+    mesh.uvs.reserve(vertexCount);
+    mesh.indices.reserve(std::size_t(strips) * segmentsPerStrip * radialSegments * 6);
+    for (int strip = 0; strip < strips; ++strip) {
         const auto base = std::uint32_t(mesh.positions.size());
         for (int k = 0; k <= segmentsPerStrip; ++k) {
             // The closing ring repeats ring 0 exactly (not just up to rounding), and so does the
@@ -119,11 +160,11 @@ Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
             for (int j = 0; j <= radialSegments; ++j) {
                 const float a = 2.0f * kPi * float(j % radialSegments) / float(radialSegments);
                 const glm::vec3 n = std::cos(a) * n0 + std::sin(a) * b0;
-                mesh.positions.push_back(centers[i] + kTubeRadius * n);
+                mesh.positions.push_back(centers[i] + tubeRadius * n);
                 mesh.normals.push_back(n);
                 const float u = float(k) / float(segmentsPerStrip);
                 const float v = float(j) / float(radialSegments);
-                const float stripHeight = 1.0f / kStrips;
+                const float stripHeight = 1.0f / strips;
                 mesh.uvs.push_back(
                     {kUvMargin + u * (1.0f - 2.0f * kUvMargin),
                      strip * stripHeight + kUvMargin + v * (stripHeight - 2.0f * kUvMargin)});
@@ -138,8 +179,32 @@ Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
             }
         }
     }
-    finish(mesh, {0.80f, 0.78f, 0.74f, 1.0f}, "trefoil");
+    finish(mesh, color, name);
     return mesh;
+}
+
+/** A (2, 5) torus knot ("cinquefoil") on a torus of radii 2 and 1. */
+glm::vec3 knotCurve(float t) {
+    const float r = 2.0f + std::cos(5.0f * t);
+    return {r * std::cos(2.0f * t), r * std::sin(2.0f * t), -std::sin(5.0f * t)};
+}
+} // namespace
+
+Mesh makeTrefoil(int segmentsPerStrip, int radialSegments) {
+    // Strands pass 1.21 apart at the closest crossing.
+    return makeTube(trefoilCurve, 3, 0.45f, segmentsPerStrip, radialSegments,
+                    {0.80f, 0.78f, 0.74f, 1.0f}, "trefoil");
+}
+
+Mesh makeKnot(std::size_t triangles) {
+    // Segments around and along in the tube's proportions (its centre line is about 33 long, its
+    // circumference 1.9), so quads are near square: along ≈ 17 × around.
+    constexpr int kStrips = 5;
+    const double quads = double(std::max<std::size_t>(triangles, kKnotMinTriangles)) / 2.0;
+    const int around = std::max(3, int(std::lround(std::sqrt(quads / 17.0))));
+    const int perStrip = std::max(3, int(std::lround(quads / (double(around) * kStrips))));
+    return makeTube(knotCurve, kStrips, 0.3f, perStrip, around, {0.78f, 0.80f, 0.74f, 1.0f},
+                    "knot");
 }
 
 Mesh makeHexRing(int subdivisions) {

@@ -14,10 +14,13 @@ struct BuiltinModel {
     std::string description; // English; the GUI translates its own labels
 };
 
-/** The procedural models: trefoil (the default), hexring, row. */
+/** The procedural models: trefoil (the default), hexring, row, knot. */
 const std::vector<BuiltinModel>& builtinModels();
 
-/** Builds "NAME" (without the "builtin:" prefix); an Error for an unknown name. */
+/**
+ * Builds "NAME" (without the "builtin:" prefix), "knot?triangles=N" with its size; an Error
+ * (naming the model) for an unknown name or parameter, or N not a number or out of range.
+ */
 Result<Mesh> makeBuiltinModel(const std::string& name);
 
 /**
@@ -30,6 +33,15 @@ glm::vec3 trefoilCurve(float t);
 /** The segment along the tube (0 .. 3 × segmentsPerStrip − 1) that triangle t of makeTrefoil is in.
  */
 int trefoilSegmentOfTriangle(std::size_t triangle, int radialSegments = 119);
+
+inline constexpr std::size_t kKnotMinTriangles = 1000;
+inline constexpr std::size_t kKnotMaxTriangles = 50'000'000;
+inline constexpr std::size_t kKnotDefaultTriangles = 1'000'000;
+/**
+ * A (2, 5) torus-knot tube UV-mapped as the trefoil (five strips), its segments chosen so it has
+ * close to `triangles` triangles (at least kKnotMinTriangles).
+ */
+Mesh makeKnot(std::size_t triangles);
 
 /** A thick hexagonal ring: outer and inner walls and two caps ("Donuthexa"). */
 Mesh makeHexRing(int subdivisions = 48);

@@ -199,6 +199,10 @@ QString MainWindow::builtinLabel(const QString& name) {
         return tr("Hexagonal ring");
     if (name == QLatin1String("row"))
         return tr("Row of four");
+    if (name == QLatin1String("knot"))
+        return tr("Torus knot (1M triangles)");
+    if (name.startsWith(QLatin1String("knot?triangles=")))
+        return tr("Torus knot (%1 triangles)").arg(QLocale().toString(name.mid(15).toLongLong()));
     // A model added to core before the GUI learnt its label: its English description.
     for (const core::BuiltinModel& model : core::builtinModels()) {
         if (QString::fromStdString(model.name) == name)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <string>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -132,3 +134,63 @@ TEST(BuiltinModels, UnknownNameIsAnError) {
 }
 
 } // namespace
+
+TEST(BuiltinModels, KnotHasAboutTheTrianglesAskedForAndIsAClosedTube) {
+    for (const std::size_t asked : {std::size_t(1000), std::size_t(20000), std::size_t(123457)}) {
+        const core::Result<Mesh> knot =
+            core::makeBuiltinModel("knot?triangles=" + std::to_string(asked));
+        ASSERT_TRUE(knot) << knot.error();
+        const double ratio = double(knot->triangleCount()) / double(asked);
+        EXPECT_GT(ratio, 0.9) << asked;
+        EXPECT_LT(ratio, 1.1) << asked;
+        EXPECT_EQ(knot->uvs.size(), knot->vertexCount());
+        EXPECT_EQ(knot->normals.size(), knot->vertexCount());
+        EXPECT_EQ(knot->triangleMaterial.size(), knot->triangleCount());
+        for (const glm::vec2& uv : knot->uvs) {
+            ASSERT_GE(uv.x, 0.0f);
+            ASSERT_LE(uv.x, 1.0f);
+            ASSERT_GE(uv.y, 0.0f);
+            ASSERT_LE(uv.y, 1.0f);
+        }
+        EXPECT_GT(outwardShare(*knot), 0.99);
+    }
+    const core::Result<Mesh> small = core::makeBuiltinModel("knot?triangles=4000");
+    ASSERT_TRUE(small);
+    EXPECT_TRUE(closedAndOriented(*small));
+    EXPECT_EQ(overlappingTexels(*small, 256), 0);
+    // Without a parameter: the default size.
+    const core::Result<Mesh> plain = core::makeBuiltinModel("knot");
+    ASSERT_TRUE(plain);
+    EXPECT_NEAR(double(plain->triangleCount()), double(core::kKnotDefaultTriangles),
+                0.1 * double(core::kKnotDefaultTriangles));
+    const auto& models = core::builtinModels();
+    EXPECT_TRUE(std::any_of(models.begin(), models.end(),
+                            [](const core::BuiltinModel& m) { return m.name == "knot"; }));
+}
+
+TEST(BuiltinModels, KnotRejectsBadParametersNamingThem) {
+    const auto error = [](const std::string& name) {
+        const core::Result<Mesh> mesh = core::makeBuiltinModel(name);
+        EXPECT_FALSE(mesh) << name;
+        return mesh ? std::string() : mesh.error();
+    };
+    EXPECT_EQ(error("knot?size=5000"),
+              "builtin:knot?size=5000: unknown parameter \"size\" (the knot takes triangles=N)");
+    EXPECT_EQ(error("knot?triangles"),
+              "builtin:knot?triangles: unknown parameter \"triangles\" (the knot takes "
+              "triangles=N)");
+    EXPECT_EQ(error("knot?triangles=lots"),
+              "builtin:knot?triangles=lots: triangles must be a whole number, not \"lots\"");
+    EXPECT_EQ(error("knot?triangles=-5"),
+              "builtin:knot?triangles=-5: triangles must be a whole number, not \"-5\"");
+    EXPECT_EQ(error("knot?triangles=12x"),
+              "builtin:knot?triangles=12x: triangles must be a whole number, not \"12x\"");
+    EXPECT_EQ(error("knot?triangles=999"),
+              "builtin:knot?triangles=999: triangles must be between 1000 and 50000000");
+    EXPECT_EQ(error("knot?triangles=50000001"),
+              "builtin:knot?triangles=50000001: triangles must be between 1000 and 50000000");
+    EXPECT_EQ(error("knot?triangles=99999999999999999999999"),
+              "builtin:knot?triangles=99999999999999999999999: triangles must be a whole number, "
+              "not \"99999999999999999999999\"");
+    EXPECT_NE(error("knots").find("no such built-in model"), std::string::npos);
+}
