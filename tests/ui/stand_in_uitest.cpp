@@ -99,8 +99,9 @@ TEST_F(StandInTest, WheelDrawsTheStandInUntilItRests) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return !viewport()->isCameraMoving(); }, kBuildTimeoutMs));
     grab();
     // The full mesh, or already the layers of the settled view.
-    if (!viewport()->isShowingLayers())
+    if (!viewport()->isShowingLayers()) {
         EXPECT_EQ(viewport()->lastFrameTriangles(), fullTriangles());
+    }
 }
 
 TEST_F(StandInTest, PaintingAfterAnOrbitUsesTheFullMesh) {

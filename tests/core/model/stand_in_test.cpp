@@ -3,6 +3,8 @@
 
 #include <set>
 
+#include <glm/common.hpp>
+
 #include "core/model/builtin_models.h"
 #include "core/model/stand_in.h"
 
