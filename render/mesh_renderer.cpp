@@ -36,8 +36,51 @@ struct MeshRenderer::Impl {
     std::vector<core::Material> materials;
     std::vector<MaterialRun> runs;
     bool hasMesh = false;
+    // The stand-in: its own index buffer over the same vertex buffers.
+    GLuint standInVao = 0, standInIbo = 0;
+    std::vector<MaterialRun> standInRuns;
+    std::size_t lastTriangles = 0;
+
+    GLuint makeVao(GLuint indexBuffer) const {
+        GLuint array = 0;
+        glCreateVertexArrays(1, &array);
+        glVertexArrayVertexBuffer(array, 0, vbo, 0, sizeof(Vertex));
+        glVertexArrayVertexBuffer(array, 1, colorBuffer, 0, sizeof(glm::vec4));
+        glVertexArrayElementBuffer(array, indexBuffer);
+        const auto attribute = [&](GLuint location, GLint size, GLuint offset, GLuint binding) {
+            glEnableVertexArrayAttrib(array, location);
+            glVertexArrayAttribFormat(array, location, size, GL_FLOAT, GL_FALSE, offset);
+            glVertexArrayAttribBinding(array, location, binding);
+        };
+        attribute(0, 3, offsetof(Vertex, position), 0);
+        attribute(1, 3, offsetof(Vertex, normal), 0);
+        attribute(2, 2, offsetof(Vertex, uv), 0);
+        attribute(3, 4, 0, 1);
+        return array;
+    }
+
+    static std::vector<MaterialRun> makeRuns(std::span<const std::uint32_t> triangleMaterial) {
+        std::vector<MaterialRun> made;
+        for (std::uint32_t t = 0; t < triangleMaterial.size(); ++t) {
+            const std::uint32_t m = triangleMaterial[t];
+            if (made.empty() || made.back().material != m)
+                made.push_back({t, 0, m});
+            ++made.back().triangleCount;
+        }
+        return made;
+    }
+
+    void releaseStandIn() {
+        if (standInVao)
+            glDeleteVertexArrays(1, &standInVao);
+        if (standInIbo)
+            glDeleteBuffers(1, &standInIbo);
+        standInVao = standInIbo = 0;
+        standInRuns.clear();
+    }
 
     void releaseMesh() {
+        releaseStandIn();
         if (vao)
             glDeleteVertexArrays(1, &vao);
         if (vbo)
@@ -89,37 +132,50 @@ void MeshRenderer::setMesh(const core::Mesh& mesh) {
     glNamedBufferStorage(d.ibo, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                          mesh.indices.data(), 0);
 
-    glCreateVertexArrays(1, &d.vao);
-    glVertexArrayVertexBuffer(d.vao, 0, d.vbo, 0, sizeof(Vertex));
-    glVertexArrayVertexBuffer(d.vao, 1, d.colorBuffer, 0, sizeof(glm::vec4));
-    glVertexArrayElementBuffer(d.vao, d.ibo);
-    const auto attribute = [&](GLuint location, GLint size, GLuint offset, GLuint binding) {
-        glEnableVertexArrayAttrib(d.vao, location);
-        glVertexArrayAttribFormat(d.vao, location, size, GL_FLOAT, GL_FALSE, offset);
-        glVertexArrayAttribBinding(d.vao, location, binding);
-    };
-    attribute(0, 3, offsetof(Vertex, position), 0);
-    attribute(1, 3, offsetof(Vertex, normal), 0);
-    attribute(2, 2, offsetof(Vertex, uv), 0);
-    attribute(3, 4, 0, 1);
+    d.vao = d.makeVao(d.ibo);
 
     for (const core::Image& image : mesh.textures) {
         d.textures.emplace_back();
         d.textures.back().create(image);
     }
     d.materials = mesh.materials;
-
-    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-        const std::uint32_t m = mesh.triangleMaterial[t];
-        if (d.runs.empty() || d.runs.back().material != m)
-            d.runs.push_back({t, 0, m});
-        ++d.runs.back().triangleCount;
-    }
+    d.runs = Impl::makeRuns(mesh.triangleMaterial);
     d.hasMesh = true;
 }
 
 bool MeshRenderer::hasMesh() const {
     return m_impl->hasMesh;
+}
+
+void MeshRenderer::setStandIn(std::span<const std::uint32_t> indices,
+                              std::span<const std::uint32_t> triangleMaterial) {
+    Impl& d = *m_impl;
+    d.releaseStandIn();
+    const bool valid = d.hasMesh && !indices.empty() &&
+                       indices.size() == triangleMaterial.size() * 3 &&
+                       std::all_of(indices.begin(), indices.end(),
+                                   [&](std::uint32_t v) { return v < d.vertexCount; }) &&
+                       std::all_of(triangleMaterial.begin(), triangleMaterial.end(),
+                                   [&](std::uint32_t m) { return m < d.materials.size(); });
+    if (!valid)
+        return;
+    glCreateBuffers(1, &d.standInIbo);
+    glNamedBufferStorage(d.standInIbo, GLsizeiptr(indices.size() * sizeof(std::uint32_t)),
+                         indices.data(), 0);
+    d.standInVao = d.makeVao(d.standInIbo);
+    d.standInRuns = Impl::makeRuns(triangleMaterial);
+}
+
+void MeshRenderer::clearStandIn() {
+    m_impl->releaseStandIn();
+}
+
+bool MeshRenderer::hasStandIn() const {
+    return m_impl->standInVao != 0;
+}
+
+std::size_t MeshRenderer::lastDrawnTriangles() const {
+    return m_impl->lastTriangles;
 }
 
 void MeshRenderer::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
@@ -147,8 +203,10 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
+    d.lastTriangles = 0;
     if (!d.hasMesh || !d.program.valid())
         return;
+    const bool standIn = options.standIn && d.standInVao;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     if (options.cullBackFaces)
@@ -161,8 +219,8 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     glUniform1i(d.program.uniform("uBaseColorTexture"), 0);
     const GLint factorLocation = d.program.uniform("uBaseColorFactor");
     const GLint hasTextureLocation = d.program.uniform("uHasTexture");
-    glBindVertexArray(d.vao);
-    for (const MaterialRun& run : d.runs) {
+    glBindVertexArray(standIn ? d.standInVao : d.vao);
+    for (const MaterialRun& run : standIn ? d.standInRuns : d.runs) {
         const core::Material& material = d.materials[run.material];
         glUniform4fv(factorLocation, 1, glm::value_ptr(material.baseColorFactor));
         const bool textured = material.baseColorTexture >= 0;
@@ -171,6 +229,7 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             glBindTextureUnit(0, d.textures[std::size_t(material.baseColorTexture)].id());
         glDrawElements(GL_TRIANGLES, GLsizei(run.triangleCount * 3), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(run.firstTriangle) * 12));
+        d.lastTriangles += run.triangleCount;
     }
     glBindVertexArray(0);
     glUseProgram(0);

@@ -17,6 +17,7 @@ struct DrawOptions {
     glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded RGBA, as written
     bool clear = true;
     bool cullBackFaces = false; // shading shows both sides; capture culls (docs/architecture.md §3)
+    bool standIn = false;       // draw the stand-in (setStandIn) instead of the mesh, if set
 };
 
 /**
@@ -35,6 +36,18 @@ public:
     /** Uploads the mesh (replacing any previous one). */
     void setMesh(const core::Mesh& mesh);
     bool hasMesh() const;
+    /**
+     * Sets the simplified triangles drawn with DrawOptions::standIn: indices into the mesh's
+     * vertices (its attributes, textures and colour updates are shared), a material per
+     * triangle. Ignored (the stand-in cleared) if an index or material is out of range; a new
+     * mesh clears it.
+     */
+    void setStandIn(std::span<const std::uint32_t> indices,
+                    std::span<const std::uint32_t> triangleMaterial);
+    void clearStandIn();
+    bool hasStandIn() const;
+    /** Triangles of the last draw() (0 when it drew nothing). */
+    std::size_t lastDrawnTriangles() const;
     /**
      * Replaces texels [x, x + width) × [y, y + height) of mesh texture `texture` with those of
      * image (its painted copy, same size), mip levels included; ignored for an unknown texture.

@@ -18,6 +18,7 @@
 #include "render/brush_overlay.h"
 #include "render/gl_layer_capturer.h"
 #include "render/mesh_renderer.h"
+#include "ui/shell/stand_in_job.h"
 
 namespace ui {
 
@@ -51,6 +52,11 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     // Qt sends proximity events to the application object, not to a widget.
     if (QCoreApplication* app = QCoreApplication::instance())
         app->installEventFilter(this);
+    m_standInJob = new StandInJob(this);
+    connect(m_standInJob, &StandInJob::finished, this, &Viewport::standInMade);
+    m_wheelRest.setSingleShot(true);
+    m_wheelRest.setInterval(300);
+    connect(&m_wheelRest, &QTimer::timeout, this, qOverload<>(&Viewport::update));
 }
 
 Viewport::~Viewport() {
@@ -72,6 +78,7 @@ QSurfaceFormat Viewport::requiredFormat() {
 
 void Viewport::meshChanged() {
     m_meshDirty = true; // uploaded where the context is current
+    startStandIn();
     // A new model starts in its default view (or a project's): the toggle follows.
     emit orthographicChanged(camera().orthographic);
     cameraMoved();
@@ -504,6 +511,7 @@ void Viewport::uploadMeshIfDirty() {
     m_layersShown = m_layersShown && m_compositorHasMesh;
     m_meshDirty = false;
     m_paintedMeshDirty = false;
+    m_standInDirty = true; // setMesh dropped it
 }
 
 void Viewport::reportLayerError(const core::Status& status) {
@@ -523,14 +531,18 @@ void Viewport::paintGL() {
     if (!m_renderer || !mesh())
         return;
     uploadMeshIfDirty();
+    uploadStandInIfDirty();
     // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
     const core::View current = view();
+    m_lastFrameTriangles = 0;
     if (isShowingLayers()) {
         flushPaint(m_compositorPaint, true);
         m_compositor->draw(m_composite);
     } else {
         flushPaint(m_rendererPaint, false);
+        options.standIn = isCameraMoving();
         m_renderer->draw(current, options);
+        m_lastFrameTriangles = m_renderer->lastDrawnTriangles();
     }
     if (!m_overlay) {
         drawStabilizerString();

@@ -10,12 +10,14 @@
 #include <QOpenGLWidget>
 #include <QPointF>
 #include <QSurfaceFormat>
+#include <QTimer>
 
 #include "core/base/result.h"
 #include "core/layers/layer_stack.h"
 #include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
+#include "core/model/stand_in.h"
 #include "core/paint/paint_target.h"
 #include "render/brush_overlay.h"
 #include "render/gpu_connectivity.h"
@@ -32,6 +34,8 @@ class MeshRenderer;
 } // namespace render
 
 namespace ui {
+
+class StandInJob;
 
 /**
  * Which buttons move the camera (Preferences). Both, the default, offers the Blender-like and
@@ -57,6 +61,11 @@ enum class PointerKind { Mouse, Pen, Eraser };
  * signals). Painting shows without a recapture: once the document has a paint target the
  * renderers draw its painted mesh, and applyPaintChanges() updates only what a dab changed, at
  * the next frame. The brush outline follows the mouse or the pen.
+ *
+ * While the camera moves (an orbit, pan or zoom drag, or the wheel until it rests for a moment)
+ * the mesh renderer draws a simplified stand-in of a large model, made in the background
+ * (ui::StandInJob) once per model; the full mesh is drawn again when the view settles. Depth
+ * layers, picking and painting always use the full mesh.
  *
  * Tablets: every QTabletEvent is handled and accepted (so Qt synthesizes no mouse events from
  * it) and each sample is passed on, none merged; the pen tip paints with its pressure, the
@@ -88,6 +97,20 @@ public:
     std::uint64_t viewSerial() const { return m_viewSerial; }
     /** True during an orbit, pan or zoom drag. */
     bool isNavigating() const;
+    /** True during a camera drag, and after a wheel turn until the wheel rests for a moment. */
+    bool isCameraMoving() const;
+
+    // The stand-in drawn while the camera moves.
+    /**
+     * Models with more than 1.5 × triangles triangles get a stand-in of at most triangles
+     * (0: never); from the next model on.
+     */
+    void setStandInTriangles(std::size_t triangles) { m_standInTriangles = triangles; }
+    std::size_t standInTriangles() const { return m_standInTriangles; }
+    /** The current model's stand-in is made (it is drawn while the camera moves). */
+    bool hasStandIn() const;
+    /** Triangles the mesh renderer drew in the last frame; 0 when the depth layers showed. */
+    std::size_t lastFrameTriangles() const { return m_lastFrameTriangles; }
 
     bool isOrthographic() const;
 
@@ -200,6 +223,8 @@ signals:
     void glInitializationFailed(const QString& message);
     /** A render part other than the mesh renderer failed to start (layers will not show). */
     void layerRenderingFailed(const QString& message);
+    /** The current model's stand-in was made (hasStandIn()). */
+    void standInReady();
 
     // The painting hook: positions in device pixels, origin top-left (docs/architecture.md §4).
     // modifiers are those held at the press (ui::toolForPress).
@@ -239,6 +264,12 @@ private:
     void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();
+    // The stand-in (viewport_stand_in.cpp).
+    void startStandIn();
+    void standInMade(std::shared_ptr<const core::StandIn> standIn, std::uint64_t meshSerial);
+    void uploadStandInIfDirty();
+    /** The camera moved by the wheel: the stand-in shows until it rests. */
+    void wheelMoved();
     void reportLayerError(const core::Status& status);
     void releaseGl();
     /** What paint changed since a renderer last got it: a bounding rectangle per page. */
@@ -289,6 +320,16 @@ private:
     bool m_hoverHighlight = false;
     bool m_orbitAboutSurface = true;
     std::optional<glm::vec3> m_orbitPivot;
+
+    // The stand-in: made for the document's mesh at m_standInSerial, uploaded when dirty.
+    static constexpr std::size_t kStandInTriangles = 250'000;
+    std::size_t m_standInTriangles = kStandInTriangles;
+    StandInJob* m_standInJob = nullptr;
+    std::shared_ptr<const core::StandIn> m_standIn;
+    std::uint64_t m_standInSerial = 0;
+    bool m_standInDirty = false;
+    QTimer m_wheelRest; // runs from a wheel turn until the wheel rests
+    std::size_t m_lastFrameTriangles = 0;
 
     Drag m_drag = Drag::None;
     Qt::MouseButton m_dragButton = Qt::NoButton;

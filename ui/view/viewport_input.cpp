@@ -126,6 +126,8 @@ bool Viewport::pointerRelease(Qt::MouseButton button, QPointF position) {
         return false;
     if (m_drag == Drag::Paint)
         emit paintReleased(toDevicePixels(position));
+    else
+        update(); // the view settled: the full mesh again
     m_drag = Drag::None;
     m_dragButton = Qt::NoButton;
     return true;
@@ -215,6 +217,7 @@ void Viewport::wheelEvent(QWheelEvent* event) {
         return;
     }
     m_document.camera().zoom(std::pow(kZoomPerWheelStep, float(eighths) / 120.0f));
+    wheelMoved();
     cameraMoved();
     event->accept();
 }
