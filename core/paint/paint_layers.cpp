@@ -13,8 +13,10 @@ namespace {
 
 constexpr int kTile = TiledPlane::kPlaneTile;
 
+/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
+ */
 std::uint8_t toByte(float v) {
-    return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
 }
 float fromByte(std::uint8_t b) {
     return float(b) * (1.0f / 255.0f);
