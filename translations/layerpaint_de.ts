@@ -1599,6 +1599,46 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Paint Layer %1</source>
         <translation>Malschicht %1</translation>
     </message>
+    <message>
+        <source>Whether the fill layer sets the base colour</source>
+        <translation>Ob die Füllschicht die Grundfarbe setzt</translation>
+    </message>
+    <message>
+        <source>The fill layer&apos;s base colour (click to choose)</source>
+        <translation>Die Grundfarbe der Füllschicht (klicken zum Auswählen)</translation>
+    </message>
+    <message>
+        <source>&amp;Fill colour</source>
+        <translation>&amp;Füllfarbe</translation>
+    </message>
+    <message>
+        <source>Fill Layer Colour</source>
+        <translation>Farbe der Füllschicht</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>&amp;Roughness</source>
+        <translation>&amp;Rauheit</translation>
+    </message>
+    <message>
+        <source>The roughness the fill layer sets; Off leaves roughness alone</source>
+        <translation>Die Rauheit, die die Füllschicht setzt; Aus lässt die Rauheit unverändert</translation>
+    </message>
+    <message>
+        <source>&amp;Metallic</source>
+        <translation>Meta&amp;llisch</translation>
+    </message>
+    <message>
+        <source>How metallic the fill layer makes the surface; Off leaves metallic alone</source>
+        <translation>Wie metallisch die Füllschicht die Oberfläche macht; Aus lässt Metallisch unverändert</translation>
+    </message>
 </context>
 <context>
     <name>ui::PaintTargetJob</name>

@@ -1597,6 +1597,46 @@ connectivity %3 ms, regions %4 ms
         <source>Paint Layer %1</source>
         <translation>绘画层 %1</translation>
     </message>
+    <message>
+        <source>Whether the fill layer sets the base colour</source>
+        <translation>填充层是否设置基础颜色</translation>
+    </message>
+    <message>
+        <source>The fill layer&apos;s base colour (click to choose)</source>
+        <translation>填充层的基础颜色（点击选择）</translation>
+    </message>
+    <message>
+        <source>&amp;Fill colour</source>
+        <translation>填充颜色(&amp;F)</translation>
+    </message>
+    <message>
+        <source>Fill Layer Colour</source>
+        <translation>填充层颜色</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Off</source>
+        <translation>关闭</translation>
+    </message>
+    <message>
+        <source>&amp;Roughness</source>
+        <translation>粗糙度(&amp;R)</translation>
+    </message>
+    <message>
+        <source>The roughness the fill layer sets; Off leaves roughness alone</source>
+        <translation>填充层设置的粗糙度；关闭则不改变粗糙度</translation>
+    </message>
+    <message>
+        <source>&amp;Metallic</source>
+        <translation>金属度(&amp;M)</translation>
+    </message>
+    <message>
+        <source>How metallic the fill layer makes the surface; Off leaves metallic alone</source>
+        <translation>填充层使表面有多金属；关闭则不改变金属度</translation>
+    </message>
 </context>
 <context>
     <name>ui::PaintTargetJob</name>

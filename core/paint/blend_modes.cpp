@@ -6,61 +6,30 @@
 
 namespace core {
 
-namespace {
-
-float multiply(float b, float s) {
-    return b * s;
-}
-float screen(float b, float s) {
-    return b + s - b * s;
-}
-float hardLight(float b, float s) {
-    return s <= 0.5f ? multiply(b, 2.0f * s) : screen(b, 2.0f * s - 1.0f);
-}
-float softLight(float b, float s) {
-    if (s <= 0.5f)
-        return b - (1.0f - 2.0f * s) * b * (1.0f - b);
-    const float d = b <= 0.25f ? ((16.0f * b - 12.0f) * b + 4.0f) * b : std::sqrt(b);
-    return b + (2.0f * s - 1.0f) * (d - b);
-}
-
-} // namespace
-
 float blend(BlendMode mode, float below, float layer) {
-    float r = layer;
     switch (mode) {
     case BlendMode::Normal:
-        r = layer;
-        break;
+        return blendAs<BlendMode::Normal>(below, layer);
     case BlendMode::Multiply:
-        r = multiply(below, layer);
-        break;
+        return blendAs<BlendMode::Multiply>(below, layer);
     case BlendMode::Screen:
-        r = screen(below, layer);
-        break;
+        return blendAs<BlendMode::Screen>(below, layer);
     case BlendMode::Overlay:
-        r = hardLight(layer, below); // overlay is hard light with the operands swapped
-        break;
+        return blendAs<BlendMode::Overlay>(below, layer);
     case BlendMode::SoftLight:
-        r = softLight(below, layer);
-        break;
+        return blendAs<BlendMode::SoftLight>(below, layer);
     case BlendMode::Add:
-        r = below + layer;
-        break;
+        return blendAs<BlendMode::Add>(below, layer);
     case BlendMode::Subtract:
-        r = below - layer;
-        break;
+        return blendAs<BlendMode::Subtract>(below, layer);
     case BlendMode::Darken:
-        r = std::min(below, layer);
-        break;
+        return blendAs<BlendMode::Darken>(below, layer);
     case BlendMode::Lighten:
-        r = std::max(below, layer);
-        break;
+        return blendAs<BlendMode::Lighten>(below, layer);
     case BlendMode::Difference:
-        r = std::abs(below - layer);
-        break;
+        return blendAs<BlendMode::Difference>(below, layer);
     }
-    return std::clamp(r, 0.0f, 1.0f);
+    return std::clamp(layer, 0.0f, 1.0f);
 }
 
 std::string_view blendModeName(BlendMode mode) {

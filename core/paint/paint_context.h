@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -81,8 +82,10 @@ struct StrokeTile {
     std::vector<float> alpha;         // stroke coverage per element
     std::vector<std::uint8_t> before; // the tile at stroke start
     std::uint32_t dab = 0;            // the last dab that touched it
-    std::vector<float> groupAlpha;    // alpha when the current dab group first touched it
-    std::uint32_t group = 0;          // that group
+    // What that dab wrote: texels [x0, x1) × [y0, y1) of the tile (texture targets).
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    std::vector<float> groupAlpha; // alpha when the current dab group first touched it
+    std::uint32_t group = 0;       // that group
 };
 
 struct PaintTarget::Context {
@@ -245,8 +248,17 @@ struct PaintTarget::Context {
         StrokeTile& s = slots[std::size_t(slot)];
         if (s.dab != dab) {
             s.dab = dab;
+            s.x0 = s.y0 = std::numeric_limits<int>::max();
+            s.x1 = s.y1 = std::numeric_limits<int>::min();
             touched.push_back(std::uint32_t(slot));
         }
+    }
+    /** Adds texel (x, y) of a tile touch() was called for (tile coordinates) to what it wrote. */
+    static void wrote(StrokeTile& s, int x, int y) {
+        s.x0 = std::min(s.x0, x);
+        s.y0 = std::min(s.y0, y);
+        s.x1 = std::max(s.x1, x + 1);
+        s.y1 = std::max(s.y1, y + 1);
     }
     /**
      * The coverage a dab builds on in slot's tile: the stroke's so far, or within a dab group

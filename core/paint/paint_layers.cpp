@@ -13,8 +13,10 @@ namespace {
 
 constexpr int kTile = TiledPlane::kPlaneTile;
 
+/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
+ */
 std::uint8_t toByte(float v) {
-    return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
 }
 float fromByte(std::uint8_t b) {
     return float(b) * (1.0f / 255.0f);
@@ -145,12 +147,14 @@ std::unique_ptr<TiledPlane> PaintLayerStack::makePlane(int texelBytes,
 }
 
 std::size_t PaintLayerStack::add(PaintLayerSettings settings, std::size_t index) {
+    dropStrokeCache();
     index = std::min(index, m_layers.size());
     m_layers.insert(m_layers.begin() + std::ptrdiff_t(index), makeLayer(std::move(settings)));
     return index;
 }
 
 std::size_t PaintLayerStack::duplicate(std::size_t index) {
+    dropStrokeCache();
     const PaintLayer& from = *m_layers.at(index);
     PaintLayerSettings settings = from.settings;
     settings.name += " copy";
@@ -165,12 +169,14 @@ std::size_t PaintLayerStack::duplicate(std::size_t index) {
 }
 
 std::unique_ptr<PaintLayer> PaintLayerStack::take(std::size_t index) {
+    dropStrokeCache();
     std::unique_ptr<PaintLayer> layer = std::move(m_layers.at(index));
     m_layers.erase(m_layers.begin() + std::ptrdiff_t(index));
     return layer;
 }
 
 void PaintLayerStack::insert(std::unique_ptr<PaintLayer> layer, std::size_t index) {
+    dropStrokeCache();
     index = std::min(index, m_layers.size());
     m_nextId = std::max(m_nextId, layer->id + 1);
     m_layers.insert(m_layers.begin() + std::ptrdiff_t(index), std::move(layer));
@@ -186,6 +192,7 @@ void PaintLayerStack::move(std::size_t from, std::size_t to) {
 }
 
 void PaintLayerStack::setSettings(std::size_t index, PaintLayerSettings settings) {
+    dropStrokeCache();
     m_layers.at(index)->settings = std::move(settings);
 }
 
@@ -206,6 +213,7 @@ TiledPlane& PaintLayerStack::maskPlane(std::size_t index) {
 }
 
 std::unique_ptr<TiledPlane> PaintLayerStack::takeMask(std::size_t index) {
+    dropStrokeCache();
     return std::move(m_layers.at(index)->mask);
 }
 
@@ -314,6 +322,7 @@ bool PaintLayerStack::mergeDown(std::size_t index,
                                 std::vector<std::unique_ptr<PaintLayer>>* removed) {
     if (index == 0 || index >= m_layers.size())
         return false;
+    dropStrokeCache();
     PaintLayer& upper = *m_layers[index];
     PaintLayer& lower = *m_layers[index - 1];
     auto merged = std::make_unique<PaintLayer>();
@@ -376,6 +385,7 @@ bool PaintLayerStack::mergeDown(std::size_t index,
 }
 
 void PaintLayerStack::flatten(std::string name, std::vector<std::unique_ptr<PaintLayer>>* removed) {
+    dropStrokeCache();
     PaintLayerSettings settings;
     settings.name = std::move(name);
     std::unique_ptr<PaintLayer> flat = makeLayer(std::move(settings));

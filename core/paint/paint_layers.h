@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -128,6 +129,7 @@ public:
     TiledPlane& maskPlane(std::size_t index);
     /** Sets the mask of layer index (nullptr: none). */
     void setMask(std::size_t index, std::unique_ptr<TiledPlane> mask) {
+        dropStrokeCache();
         m_layers.at(index)->mask = std::move(mask);
     }
     /** Removes the mask of layer index; the layer shows everywhere again. */
@@ -135,6 +137,24 @@ public:
 
     /** Recomputes tile (TiledPlane tiling) of page in the composite. */
     void updateTile(std::uint32_t page, std::uint32_t tile);
+
+    /**
+     * Starts a stroke's composite updates (updateRect()): the stroke changes the layer with id
+     * layerId (0: the base) in channels (a bit per PaintChannel; a mask stroke changes them all),
+     * and nothing else changes until endStroke(). updateRect() then computes the layers below
+     * that layer once per tile and keeps them. Any other change to the stack drops what is kept.
+     */
+    void beginStroke(std::uint64_t layerId, unsigned channels);
+    /** Ends the stroke's updates and frees what they kept. */
+    void endStroke();
+    /** Forgets the layers below the stroke's layer as kept (something below it changed). */
+    void dropStrokeCache();
+    /**
+     * Recomputes the texels rect (page coordinates, inside tile of page) of the composite, with
+     * the same bytes as updateTile(); during a stroke only the stroke's channels, the others
+     * being up to date already.
+     */
+    void updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect);
     /** Recomputes the whole composite (on several threads). */
     void updateAll();
     const std::vector<std::uint8_t>& compositeBaseColor(std::uint32_t page) const {
@@ -175,6 +195,16 @@ private:
     void compositeTexel(std::uint32_t page, int x, int y, std::size_t end,
                         std::array<float, 5>& values) const;
 
+    /**
+     * Blends layers [from, to) over values (5 planes of rect.width·rect.height floats: base
+     * colour, roughness, metallic) in the texels rect of tile of page, channels only.
+     */
+    void blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect, std::size_t from,
+                     std::size_t to, unsigned channels, float* values) const;
+    /** Sets values (as blendLayers()) to the base's texels in rect, channels only. */
+    void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
+                    float* values) const;
+
     std::vector<PageSize> m_pages;
     std::vector<std::vector<std::uint8_t>> m_baseColor;
     std::vector<std::vector<std::uint8_t>> m_baseMetallicRoughness;
@@ -182,6 +212,13 @@ private:
     std::vector<Image> m_compositeColor;
     std::vector<Image> m_compositeMr;
     std::uint64_t m_nextId = 1;
+    // The stroke's updates (beginStroke()): its layer and channels, and per tile (page << 32 |
+    // tile) the composite of the layers below its layer, as blendLayers() values of the tile.
+    bool m_inStroke = false;
+    std::uint64_t m_strokeLayer = 0;
+    unsigned m_strokeChannels = 0;
+    std::unordered_map<std::uint64_t, std::vector<float>> m_below;
+    std::vector<float> m_scratch;
 };
 
 /**

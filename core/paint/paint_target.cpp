@@ -149,6 +149,7 @@ TileUndoRecord PaintTarget::endStroke() {
     for (std::size_t i = 0; i < c.slotsUsed; ++i)
         c.tileSlot[c.slots[i].key.page][c.slots[i].key.tile] = -1;
     c.slotsUsed = 0;
+    strokeEnded();
     // Keep the pool for the next stroke, but not what one huge stroke needed.
     constexpr std::size_t kKeptSlots = 512;
     if (c.slots.size() > kKeptSlots)

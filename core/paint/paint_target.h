@@ -162,6 +162,8 @@ protected:
 
     /** Called by beginStroke() once the brush is set: the target picks the stroke's plane. */
     virtual void strokeStarted() {}
+    /** Called by endStroke() when the stroke's record is made. */
+    virtual void strokeEnded() {}
 
     PaintTarget(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
                 const PaintTargetOptions& options);
@@ -288,6 +290,7 @@ private:
     void coverTexel(std::uint32_t pageIndex, int x, int y, float cover);
     void addChanges(std::vector<TileKey>& keys, PaintChanges& out) const override;
     void strokeStarted() override;
+    void strokeEnded() override;
     /** Writes texel (x, y) of page pageIndex for the stroke at coverage cover (see paint()). */
     void writeTexel(std::uint32_t pageIndex, int x, int y, const std::uint8_t* before,
                     std::size_t local, std::size_t tileTexels, float cover);

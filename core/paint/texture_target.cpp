@@ -354,6 +354,9 @@ void TextureTarget::strokeStarted() {
     m_planes = {};
     m_mask = nullptr;
     c.strokePlane = 0;
+    // The composite changes in the base colour on the base, in every channel through a mask,
+    // and in the painted channels on a layer.
+    m_stack->beginStroke(0, 1u);
     if (m_selection.layer == 0) {
         if (!brush.paintBaseColor && !brush.eraser)
             m_mode = StrokeMode::Nothing;
@@ -369,6 +372,7 @@ void TextureTarget::strokeStarted() {
     if (m_selection.mask) {
         m_mode = StrokeMode::Mask;
         m_mask = &m_stack->maskPlane(*index);
+        m_stack->beginStroke(m_selection.layer, 7u);
         // A mask takes the brush colour's lightness: white shows, black hides.
         const glm::vec4 lin = c.colorLinear;
         m_maskValue = SrgbTables::get().encode(0.2126f * lin.r + 0.7152f * lin.g + 0.0722f * lin.b);
@@ -389,10 +393,19 @@ void TextureTarget::strokeStarted() {
     }
     if (std::all_of(m_planes.begin(), m_planes.end(), [](TiledPlane* p) { return !p; }))
         m_mode = StrokeMode::Nothing;
+    unsigned channels = 0;
+    for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
+        if (m_planes[ch] != nullptr)
+            channels |= 1u << ch;
+    m_stack->beginStroke(m_selection.layer, channels);
     for (int k = 0; k < 3; ++k)
         m_values[std::size_t(k)] = float(c.colorBytes[std::size_t(k)]) / 255.0f;
     m_values[3] = std::clamp(std::isfinite(brush.roughness) ? brush.roughness : 0.0f, 0.0f, 1.0f);
     m_values[4] = std::clamp(std::isfinite(brush.metallic) ? brush.metallic : 0.0f, 0.0f, 1.0f);
+}
+
+void TextureTarget::strokeEnded() {
+    m_stack->endStroke();
 }
 
 void TextureTarget::writeTexel(std::uint32_t pageIndex, int x, int y, const std::uint8_t* before,
@@ -481,6 +494,7 @@ void TextureTarget::coverTexel(std::uint32_t pageIndex, int x, int y, float cove
         return;
     st.alpha[local] = cover;
     c.touch(slot);
+    Context::wrote(st, x % kTextureTile, y % kTextureTile);
     const int tileHeight =
         std::min(kTextureTile, page.image.height - (y / kTextureTile) * kTextureTile);
     writeTexel(pageIndex, x, y, st.before.data(), local,
@@ -593,6 +607,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const float* base = nullptr;
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
+        StrokeTile* touchedTile = nullptr;
         int tileWidth = 0;
         std::size_t tileTexels = 0;
 
@@ -661,7 +676,9 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 if (!tileTouched) {
                     tileTouched = true;
                     c.touch(slot);
+                    touchedTile = &c.slots[std::size_t(slot)];
                 }
+                Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
                 if (onBase)
                     blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
                           before + local * 4, cover);

@@ -161,6 +161,8 @@ bool TextureTarget::writeTile(TileKey key, std::span<const std::uint8_t> bytes) 
     // Undo and redo write tiles outside strokes: the composite follows at once.
     if (!inStroke())
         m_stack->updateTile(key.page, key.tile);
+    else if (key.plane != m_context->strokePlane)
+        m_stack->dropStrokeCache(); // not the stroke's plane: what lies below it may change
     return true;
 }
 
@@ -196,8 +198,18 @@ PaintChanges TextureTarget::refresh(std::vector<TileKey> tiles) {
 
 void TextureTarget::refreshTouched() {
     Context& c = *m_context;
-    for (const std::uint32_t slot : c.touched)
-        m_stack->updateTile(c.slots[slot].key.page, c.slots[slot].key.tile);
+    for (const std::uint32_t slot : c.touched) {
+        const StrokeTile& s = c.slots[slot];
+        if (s.x0 >= s.x1 || s.y0 >= s.y1)
+            continue;
+        const Page& page = m_pages[s.key.page];
+        TileRect rect;
+        rect.x = int(s.key.tile % std::uint32_t(page.tilesX)) * kTextureTile + s.x0;
+        rect.y = int(s.key.tile / std::uint32_t(page.tilesX)) * kTextureTile + s.y0;
+        rect.width = s.x1 - s.x0;
+        rect.height = s.y1 - s.y0;
+        m_stack->updateRect(s.key.page, s.key.tile, rect);
+    }
 }
 
 } // namespace core

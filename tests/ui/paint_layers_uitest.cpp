@@ -6,12 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <QApplication>
+#include <QColorDialog>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSpinBox>
 #include <QTest>
+#include <QToolButton>
 #include <QTreeWidget>
 #include <QUndoStack>
 
@@ -199,6 +202,77 @@ TEST_F(PaintLayersUiTest, AddPaintMultiplyHideAndUndoEachStep) {
     EXPECT_EQ(stack().baseColor(0), base);
     EXPECT_EQ(list->topLevelItemCount(), 1);
     EXPECT_EQ(undoStack->index(), steps);
+}
+
+TEST_F(PaintLayersUiTest, AFillLayersValuesAreSetInThePanelOneUndoStepEach) {
+    QUndoStack* undoStack = m_window->undoStack();
+    auto* roughness = panel().findChild<QSpinBox*>(QStringLiteral("paintLayerFillRoughness"));
+    auto* metallic = panel().findChild<QSpinBox*>(QStringLiteral("paintLayerFillMetallic"));
+    auto* colorButton = panel().findChild<QToolButton*>(QStringLiteral("paintLayerFillColor"));
+    ASSERT_TRUE(roughness && metallic && colorButton);
+    // A paint layer has no fill values: the rows are hidden.
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    EXPECT_FALSE(roughness->isVisible());
+    EXPECT_FALSE(colorButton->isVisible());
+
+    // New Fill Layer, by its button in the panel.
+    QToolButton* fillButton = nullptr;
+    for (QToolButton* button : panel().findChildren<QToolButton*>())
+        if (button->defaultAction() == panel().newFillLayerAction())
+            fillButton = button;
+    ASSERT_NE(fillButton, nullptr);
+    core::Brush brush = doc().brush();
+    brush.paintBaseColor = true;
+    brush.paintRoughness = false;
+    brush.paintMetallic = false;
+    m_window->setBrush(brush);
+    QTest::mouseClick(fillButton, Qt::LeftButton);
+    ASSERT_EQ(stack().size(), 2u);
+    const core::PaintLayer& fill = stack().layer(1);
+    ASSERT_EQ(fill.settings.kind, core::PaintLayerKind::Fill);
+    ASSERT_EQ(texture()->selection().layer, fill.id);
+    ASSERT_TRUE(roughness->isVisible());
+    ASSERT_TRUE(colorButton->isVisible());
+    EXPECT_EQ(roughness->text(), roughness->specialValueText()) << "roughness is off";
+    const int steps = undoStack->count();
+    const std::vector<std::uint8_t> mrBefore = texture()->metallicRoughnessPage(0).rgba;
+    const std::vector<std::uint8_t> colorBefore = composite();
+
+    // Roughness 40 %, typed: one undo step, the composite's roughness changes.
+    QTest::mouseDClick(roughness, Qt::LeftButton);
+    QTest::keyClick(roughness, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(roughness, QStringLiteral("40"));
+    QTest::keyClick(roughness, Qt::Key_Return);
+    ASSERT_TRUE(stack().layer(1).settings.fill.roughness.has_value());
+    EXPECT_FLOAT_EQ(*stack().layer(1).settings.fill.roughness, 0.4f);
+    EXPECT_FALSE(stack().layer(1).settings.fill.metallic.has_value());
+    EXPECT_EQ(undoStack->count(), steps + 1);
+    const std::vector<std::uint8_t> mrRough = texture()->metallicRoughnessPage(0).rgba;
+    EXPECT_NE(mrRough, mrBefore);
+
+    // The colour button opens a colour dialog; Return takes its colour.
+    QTest::mouseClick(colorButton, Qt::LeftButton);
+    QColorDialog* dialog = nullptr;
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        dialog = panel().findChild<QColorDialog*>(QStringLiteral("paintLayerFillColorDialog"));
+        return dialog != nullptr && dialog->isVisible();
+    }));
+    dialog->setCurrentColor(QColor(255, 0, 0));
+    QTest::keyClick(dialog, Qt::Key_Return);
+    ASSERT_TRUE(stack().layer(1).settings.fill.baseColor.has_value());
+    EXPECT_EQ(*stack().layer(1).settings.fill.baseColor, glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(undoStack->count(), steps + 2);
+    const std::vector<std::uint8_t> red = composite();
+    EXPECT_NE(red, colorBefore);
+
+    // Ctrl+Z undoes each: the colour, then the roughness; the fields follow.
+    undo();
+    EXPECT_EQ(composite(), colorBefore);
+    EXPECT_EQ(texture()->metallicRoughnessPage(0).rgba, mrRough);
+    undo();
+    EXPECT_FALSE(stack().layer(1).settings.fill.roughness.has_value());
+    EXPECT_EQ(texture()->metallicRoughnessPage(0).rgba, mrBefore);
+    EXPECT_EQ(roughness->value(), roughness->minimum());
 }
 
 TEST_F(PaintLayersUiTest, VertexColoursDisableThePanelAndTheMaterialChannels) {

@@ -3,18 +3,22 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QColorDialog>
 #include <QComboBox>
 #include <QDropEvent>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
+#include <QIcon>
 #include <QKeySequence>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QPixmap>
 #include <QScopedValueRollback>
 #include <QSlider>
+#include <QSpinBox>
 #include <QTimer>
 #include <QToolButton>
 #include <QTreeWidget>
@@ -23,10 +27,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 
 #include "core/base/color.h"
 #include "core/document/document.h"
 #include "ui/panels/paint_layer_thumbnails.h"
+#include "ui/panels/value_spin_box.h"
 
 namespace ui {
 
@@ -192,6 +198,73 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
                 settings.lockTransparency = on;
             });
     });
+
+    // A fill layer's values: its colour and, for a texture, roughness and metallic; "Off" leaves
+    // a channel alone (as the script's and the tool's "fill values" do with null).
+    m_form = form;
+    m_fillColorOn = new QCheckBox(m_controls);
+    m_fillColorOn->setObjectName(QStringLiteral("paintLayerFillColorOn"));
+    m_fillColorOn->setToolTip(tr("Whether the fill layer sets the base colour"));
+    m_fillColor = new QToolButton(m_controls);
+    m_fillColor->setObjectName(QStringLiteral("paintLayerFillColor"));
+    m_fillColor->setToolTip(tr("The fill layer's base colour (click to choose)"));
+    m_fillColor->setIconSize(QSize(32, 14));
+    m_fillColorRow = new QHBoxLayout;
+    m_fillColorRow->addWidget(m_fillColorOn);
+    m_fillColorRow->addWidget(m_fillColor);
+    m_fillColorRow->addStretch(1);
+    form->addRow(tr("&Fill colour"), m_fillColorRow);
+    if (auto* text = qobject_cast<QLabel*>(form->labelForField(m_fillColorRow)))
+        text->setBuddy(m_fillColorOn);
+    connect(m_fillColorOn, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_updating)
+            return;
+        const QColor shown = m_fillColorValue;
+        editSettings(selectedLayer(), [on, shown](core::PaintLayerSettings& settings) {
+            settings.fill.baseColor.reset();
+            if (on)
+                settings.fill.baseColor =
+                    glm::vec3(float(shown.redF()), float(shown.greenF()), float(shown.blueF()));
+        });
+    });
+    connect(m_fillColor, &QToolButton::clicked, this, [this] {
+        auto* dialog = new QColorDialog(m_fillColorValue, this);
+        dialog->setObjectName(QStringLiteral("paintLayerFillColorDialog"));
+        dialog->setWindowTitle(tr("Fill Layer Colour"));
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        const std::uint64_t id = selectedLayer();
+        connect(dialog, &QColorDialog::colorSelected, this, [this, id](const QColor& color) {
+            editSettings(id, [color](core::PaintLayerSettings& settings) {
+                settings.fill.baseColor =
+                    glm::vec3(float(color.redF()), float(color.greenF()), float(color.blueF()));
+            });
+        });
+        dialog->open();
+    });
+    const auto channelSpin = [&](const char* name, const QString& label, const QString& tip,
+                                 auto set) {
+        QSpinBox* spin =
+            makeValueSpinBox(m_controls, QString::fromLatin1(name), -1, 100, tr(" %"), tip);
+        spin->setSpecialValueText(tr("Off"));
+        form->addRow(label, spin);
+        connect(spin, &QSpinBox::valueChanged, this, [this, set](int value) {
+            if (m_updating)
+                return;
+            editSettings(selectedLayer(), [value, set](core::PaintLayerSettings& settings) {
+                set(settings.fill, value < 0 ? std::optional<float>()
+                                             : std::optional<float>(float(value) / 100.0f));
+            });
+        });
+        return spin;
+    };
+    m_fillRoughness =
+        channelSpin("paintLayerFillRoughness", tr("&Roughness"),
+                    tr("The roughness the fill layer sets; Off leaves roughness alone"),
+                    [](core::ChannelValues& fill, std::optional<float> v) { fill.roughness = v; });
+    m_fillMetallic =
+        channelSpin("paintLayerFillMetallic", tr("&Metallic"),
+                    tr("How metallic the fill layer makes the surface; Off leaves metallic alone"),
+                    [](core::ChannelValues& fill, std::optional<float> v) { fill.metallic = v; });
     layout->addWidget(m_controls);
 
     // A button for every operation.
@@ -401,6 +474,26 @@ void PaintLayersPanel::updateControls() {
     m_opacityText->setText(tr("%1 %").arg(m_opacity->value()));
     m_blend->setCurrentIndex(m_blend->findData(int(settings.blend)));
     m_lock->setChecked(settings.lockTransparency);
+    // A fill layer's values, shown only for one.
+    const bool fill = layer != nullptr && settings.kind == core::PaintLayerKind::Fill;
+    const bool material = fill && texture->layerStack().hasMaterialChannels();
+    m_form->setRowVisible(m_fillColorRow, fill);
+    m_form->setRowVisible(m_fillRoughness, material);
+    m_form->setRowVisible(m_fillMetallic, material);
+    m_fillColorOn->setChecked(settings.fill.baseColor.has_value());
+    m_fillColor->setEnabled(settings.fill.baseColor.has_value());
+    if (settings.fill.baseColor)
+        m_fillColorValue = QColor::fromRgbF(std::clamp(settings.fill.baseColor->x, 0.0f, 1.0f),
+                                            std::clamp(settings.fill.baseColor->y, 0.0f, 1.0f),
+                                            std::clamp(settings.fill.baseColor->z, 0.0f, 1.0f));
+    QPixmap swatch(m_fillColor->iconSize());
+    swatch.fill(m_fillColorValue);
+    m_fillColor->setIcon(QIcon(swatch));
+    const auto percent = [](const std::optional<float>& v) {
+        return v ? int(std::lround(std::clamp(*v, 0.0f, 1.0f) * 100.0f)) : -1;
+    };
+    m_fillRoughness->setValue(percent(settings.fill.roughness));
+    m_fillMetallic->setValue(percent(settings.fill.metallic));
 
     m_newLayer->setEnabled(enabled);
     m_newFill->setEnabled(enabled);

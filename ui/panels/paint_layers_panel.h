@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include <QColor>
 #include <QWidget>
 
 #include "core/paint/paint_target.h"
@@ -10,8 +11,12 @@
 class QAction;
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
+class QHBoxLayout;
 class QLabel;
 class QSlider;
+class QSpinBox;
+class QToolButton;
 class QTreeWidget;
 class QTreeWidgetItem;
 
@@ -25,7 +30,8 @@ namespace ui {
  * The Paint Layers panel (a dock): the document's paint-layer stack, the uppermost layer on top
  * and the read-only Base at the bottom. Per row an eye (click: show or hide), a thumbnail of the
  * layer's tiles, the name (double-click: rename) and, with a mask, the mask's thumbnail (click:
- * paint the mask). Below: opacity, blend mode and lock transparency of the current layer, and
+ * paint the mask). Below: opacity, blend mode and lock transparency of the current layer (of a
+ * fill layer also its colour, roughness and metallic, each of which can be off), and
  * buttons for every operation (also in the context menu and, through actions(), a menu of the
  * window). Rows are dragged to reorder. Each operation is a call on the document (one undo step);
  * changed() then reports what the composite changed. Selecting a row is no undo step.
@@ -96,6 +102,14 @@ private:
     QLabel* m_opacityText = nullptr;
     QComboBox* m_blend = nullptr;
     QCheckBox* m_lock = nullptr;
+    QFormLayout* m_form = nullptr;
+    // A fill layer's values (rows shown only when a fill layer is current).
+    QHBoxLayout* m_fillColorRow = nullptr;
+    QCheckBox* m_fillColorOn = nullptr;
+    QToolButton* m_fillColor = nullptr;
+    QColor m_fillColorValue{Qt::white};
+    QSpinBox* m_fillRoughness = nullptr;
+    QSpinBox* m_fillMetallic = nullptr;
     QAction* m_newLayer = nullptr;
     QAction* m_newFill = nullptr;
     QAction* m_duplicate = nullptr;

@@ -1,0 +1,281 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// PaintLayerStack's composite updates during a stroke: the texels a dab touched, from the layers
+// below the stroke's layer kept per tile, layer by layer over a rectangle with the blend mode
+// chosen once per layer. Gives the bytes updateTile() gives (the same float operations in the
+// same order per texel).
+#include <algorithm>
+#include <cmath>
+#include <type_traits>
+
+#include "core/paint/paint_layers.h"
+
+namespace core {
+
+namespace {
+
+constexpr int kTile = TiledPlane::kPlaneTile;
+constexpr unsigned kAllChannels = 7;
+/** Tiles whose lower layers a stroke keeps at most (80 KB each); past that it recomputes them. */
+constexpr std::size_t kMaxKeptTiles = 512;
+
+/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
+ */
+std::uint8_t toByte(float v) {
+    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
+}
+float fromByte(std::uint8_t b) {
+    return float(b) * (1.0f / 255.0f);
+}
+
+template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
+    switch (mode) {
+    case BlendMode::Normal:
+        return fn(std::integral_constant<BlendMode, BlendMode::Normal>{});
+    case BlendMode::Multiply:
+        return fn(std::integral_constant<BlendMode, BlendMode::Multiply>{});
+    case BlendMode::Screen:
+        return fn(std::integral_constant<BlendMode, BlendMode::Screen>{});
+    case BlendMode::Overlay:
+        return fn(std::integral_constant<BlendMode, BlendMode::Overlay>{});
+    case BlendMode::SoftLight:
+        return fn(std::integral_constant<BlendMode, BlendMode::SoftLight>{});
+    case BlendMode::Add:
+        return fn(std::integral_constant<BlendMode, BlendMode::Add>{});
+    case BlendMode::Subtract:
+        return fn(std::integral_constant<BlendMode, BlendMode::Subtract>{});
+    case BlendMode::Darken:
+        return fn(std::integral_constant<BlendMode, BlendMode::Darken>{});
+    case BlendMode::Lighten:
+        return fn(std::integral_constant<BlendMode, BlendMode::Lighten>{});
+    case BlendMode::Difference:
+        return fn(std::integral_constant<BlendMode, BlendMode::Difference>{});
+    }
+}
+
+TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
+    const int across = std::max(1, (size.width + kTile - 1) / kTile);
+    TileRect r;
+    r.x = int(tile % std::uint32_t(across)) * kTile;
+    r.y = int(tile / std::uint32_t(across)) * kTile;
+    r.width = std::min(size.width, r.x + kTile) - r.x;
+    r.height = std::min(size.height, r.y + kTile) - r.y;
+    return r;
+}
+
+/** Whether a layer can change anything in tile of page (as updateTile() decides). */
+bool touches(const PaintLayer& layer, std::uint32_t page, std::uint32_t tile) {
+    if (!layer.settings.visible || layer.settings.opacity <= 0.0f)
+        return false;
+    if (layer.settings.kind == PaintLayerKind::Fill)
+        return true;
+    for (const auto& plane : layer.channels)
+        if (plane && plane->tile(page, tile) != nullptr)
+            return true;
+    return false;
+}
+
+} // namespace
+
+void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
+    m_below.clear();
+    m_inStroke = true;
+    m_strokeLayer = layerId;
+    m_strokeChannels = channels & (hasMaterialChannels() ? kAllChannels : 1u);
+}
+
+void PaintLayerStack::endStroke() {
+    m_inStroke = false;
+    m_below = {};
+    m_scratch = {};
+}
+
+void PaintLayerStack::dropStrokeCache() {
+    m_below.clear();
+}
+
+void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
+                                 float* values) const {
+    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* color = m_baseColor[page].data();
+    const std::uint8_t* mr = hasMaterialChannels() ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::size_t at = 0;
+    for (int y = rect.y; y < rect.y + rect.height; ++y)
+        for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+            if ((channels & 1u) != 0)
+                for (std::size_t k = 0; k < 3; ++k)
+                    values[k * n + at] = fromByte(color[i + k]);
+            // Without material channels roughness and metallic are never read.
+            if (mr != nullptr) {
+                if ((channels & 2u) != 0)
+                    values[3 * n + at] = fromByte(mr[i + 1]);
+                if ((channels & 4u) != 0)
+                    values[4 * n + at] = fromByte(mr[i + 2]);
+            }
+        }
+}
+
+void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                  std::size_t from, std::size_t to, unsigned channels,
+                                  float* values) const {
+    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+    const TileRect tr = tileRectOf(m_pages[page], tile);
+    const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
+    for (std::size_t l = from; l < to; ++l) {
+        const PaintLayer& layer = *m_layers[l];
+        const PaintLayerSettings& st = layer.settings;
+        if (!st.visible)
+            continue;
+        const float opacity = std::clamp(st.opacity, 0.0f, 1.0f);
+        if (!(opacity > 0.0f))
+            continue; // every texel's coverage is 0 (or NaN): compositeTexel() skips them all
+        const bool masked = layer.mask != nullptr;
+        const std::uint8_t* mask = masked ? layer.mask->tile(page, tile) : nullptr;
+        const std::uint8_t maskFill = masked ? layer.mask->fill()[0] : 255;
+        for (std::size_t c = 0; c < channelCount; ++c) {
+            if ((channels & (1u << c)) == 0)
+                continue;
+            const int comps = c == 0 ? 3 : 1;
+            const std::size_t first = c == 0 ? 0 : c + 2;
+            std::array<float, 3> fill{};
+            const std::uint8_t* texels = nullptr;
+            if (st.kind == PaintLayerKind::Fill) {
+                if (c == 0 && st.fill.baseColor)
+                    fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
+                else if (c == 1 && st.fill.roughness)
+                    fill[0] = *st.fill.roughness;
+                else if (c == 2 && st.fill.metallic)
+                    fill[0] = *st.fill.metallic;
+                else
+                    continue;
+            } else {
+                const TiledPlane* plane = layer.channels[c].get();
+                texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
+                if (texels == nullptr)
+                    continue; // unwritten: coverage 0 everywhere
+            }
+            const std::size_t stride = std::size_t(comps + 1);
+            withMode(st.blend, [&](auto mode) {
+                constexpr BlendMode kMode = decltype(mode)::value;
+                std::size_t at = 0;
+                for (int y = rect.y; y < rect.y + rect.height; ++y) {
+                    const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
+                    for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+                        const std::size_t local = row + std::size_t(x - tr.x);
+                        float a = 1.0f;
+                        const std::uint8_t* t = nullptr;
+                        if (texels != nullptr) {
+                            t = texels + local * stride;
+                            a = fromByte(t[comps]);
+                        }
+                        a *= opacity;
+                        if (masked)
+                            a *= fromByte(mask != nullptr ? mask[local] : maskFill);
+                        if (!(a > 0.0f))
+                            continue;
+                        for (int k = 0; k < comps; ++k) {
+                            const float s = t != nullptr ? fromByte(t[k]) : fill[std::size_t(k)];
+                            float& v = values[(first + std::size_t(k)) * n + at];
+                            v += a * (blendAs<kMode>(v, s) - v);
+                        }
+                    }
+                }
+            });
+        }
+    }
+}
+
+void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect) {
+    if (rect.width <= 0 || rect.height <= 0)
+        return;
+    const TileRect tr = tileRectOf(m_pages.at(page), tile);
+    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+    unsigned channels = hasMaterialChannels() ? kAllChannels : 1u;
+    std::size_t from = 0; // the first layer to blend over the values below it
+    std::uint64_t strokeLayer = 0;
+    if (m_inStroke) {
+        channels = m_strokeChannels;
+        strokeLayer = m_strokeLayer;
+    }
+    if (strokeLayer != 0) {
+        const std::optional<std::size_t> index = indexOf(strokeLayer);
+        if (index)
+            from = *index;
+        else
+            channels = hasMaterialChannels() ? kAllChannels : 1u;
+    }
+    if (channels == 0)
+        return;
+    std::size_t end = 0; // layers above the last one touching this tile change nothing here
+    for (std::size_t l = 0; l < m_layers.size(); ++l)
+        if (touches(*m_layers[l], page, tile))
+            end = l + 1;
+
+    m_scratch.resize(5 * n);
+    float* values = m_scratch.data();
+    bool belowTouches = false;
+    for (std::size_t l = 0; l < std::min(from, end) && !belowTouches; ++l)
+        belowTouches = touches(*m_layers[l], page, tile);
+    if (!belowTouches) {
+        baseValues(page, rect, channels, values);
+    } else {
+        // The layers below the stroke's: kept per tile for the stroke (whole tile, once).
+        const std::uint64_t key = (std::uint64_t(page) << 32) | tile;
+        auto kept = m_below.find(key);
+        if (kept == m_below.end() && m_below.size() < kMaxKeptTiles) {
+            const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
+            std::vector<float> below(5 * tn);
+            baseValues(page, tr, channels, below.data());
+            blendLayers(page, tile, tr, 0, from, channels, below.data());
+            kept = m_below.emplace(key, std::move(below)).first;
+        }
+        if (kept != m_below.end()) {
+            const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
+            for (std::size_t v = 0; v < 5; ++v) {
+                if ((channels & (1u << (v < 3 ? 0 : v - 2))) == 0)
+                    continue;
+                std::size_t at = 0;
+                for (int y = rect.y; y < rect.y + rect.height; ++y) {
+                    const float* src = kept->second.data() + v * tn +
+                                       std::size_t(y - tr.y) * std::size_t(tr.width) +
+                                       std::size_t(rect.x - tr.x);
+                    std::copy_n(src, rect.width, values + v * n + at);
+                    at += std::size_t(rect.width);
+                }
+            }
+        } else {
+            baseValues(page, rect, channels, values);
+            blendLayers(page, tile, rect, 0, from, channels, values);
+        }
+    }
+    blendLayers(page, tile, rect, from, std::max(from, end), channels, values);
+
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* baseColor = m_baseColor[page].data();
+    std::uint8_t* color = m_compositeColor[page].rgba.data();
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    std::size_t at = 0;
+    for (int y = rect.y; y < rect.y + rect.height; ++y)
+        for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+            if ((channels & 1u) != 0) {
+                color[i] = toByte(values[at]);
+                color[i + 1] = toByte(values[n + at]);
+                color[i + 2] = toByte(values[2 * n + at]);
+                color[i + 3] = baseColor[i + 3];
+            }
+            if (material) {
+                mr[i] = baseMr[i];
+                if ((channels & 2u) != 0)
+                    mr[i + 1] = toByte(values[3 * n + at]);
+                if ((channels & 4u) != 0)
+                    mr[i + 2] = toByte(values[4 * n + at]);
+                mr[i + 3] = baseMr[i + 3];
+            }
+        }
+}
+
+} // namespace core

@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A stroke updates the composite of paint layers through a fast path (the layers below the
+// stroke's kept per tile, only the dab's rectangle and channels blended): after every dab of
+// strokes over a stack of several blend modes, opacities, masks, hidden and locked layers, with
+// layer changes, undo and redo in between, every byte of the composite equals a full recompute.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include "core/document/document.h"
+#include "core/layers/layers.h"
+#include "core/paint/paint_layers.h"
+#include "core/paint/paint_target.h"
+
+namespace {
+
+using core::BlendMode;
+using core::PaintLayerKind;
+using core::PaintLayerSettings;
+
+constexpr int kWidth = 64, kHeight = 64;
+
+core::View pixelView() {
+    core::View view;
+    view.width = kWidth;
+    view.height = kHeight;
+    view.view = glm::mat4(1.0f);
+    view.proj = glm::ortho(0.0f, float(kWidth), float(kHeight), 0.0f, 0.1f, 100.0f);
+    return view;
+}
+
+/** A camera-facing quad over most of the view, its uv square on a new page (many tiles). */
+core::Mesh quad() {
+    core::Mesh mesh;
+    mesh.materials = {{"grey", glm::vec4(0.5f, 0.6f, 0.7f, 1.0f), -1}};
+    const glm::vec2 p0(4, 4), p1(60, 60);
+    for (const glm::vec2 f : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1)}) {
+        const glm::vec2 p = p0 + f * (p1 - p0);
+        mesh.positions.push_back({p.x, p.y, -4.0f});
+        mesh.normals.push_back({0.0f, 0.0f, 1.0f});
+        mesh.uvs.push_back(f);
+    }
+    mesh.indices = {0, 2, 3, 0, 3, 1};
+    mesh.triangleMaterial = {0, 0};
+    return mesh;
+}
+
+class CompositeUpdateTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_doc.setMesh(quad(), "quad");
+        core::PaintTargetOptions options;
+        options.resolution = 256; // 4×4 tiles: strokes cross tile edges
+        ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
+        core::CpuLayerCapturer capturer;
+        capturer.setMesh(m_doc.mesh());
+        ASSERT_TRUE(m_doc.buildLayers(capturer, pixelView()).ok());
+        core::Brush& brush = m_doc.brush();
+        brush.radius = 7.0f;
+        brush.hardness = 0.3f; // soft: partial coverage at the edges
+        brush.flow = 0.6f;
+        brush.spacing = 0.3f;
+        brush.color = {0.9f, 0.3f, 0.1f, 1.0f};
+    }
+
+    core::TextureTarget& target() {
+        return *dynamic_cast<core::TextureTarget*>(m_doc.paintTarget());
+    }
+
+    /** The composite is what a full recompute of every tile gives, byte for byte. */
+    void expectFullRecompute(const std::string& what) {
+        core::PaintLayerStack& stack = target().layerStack();
+        const std::vector<std::uint8_t> color = stack.compositeBaseColor(0);
+        const std::vector<std::uint8_t> mr = stack.compositeMetallicRoughness(0);
+        stack.updateAll();
+        const std::vector<std::uint8_t>& fullColor = stack.compositeBaseColor(0);
+        const std::vector<std::uint8_t>& fullMr = stack.compositeMetallicRoughness(0);
+        std::size_t colorDiffs = 0, mrDiffs = 0;
+        for (std::size_t i = 0; i < color.size(); ++i) {
+            colorDiffs += color[i] != fullColor[i] ? 1 : 0;
+            mrDiffs += mr[i] != fullMr[i] ? 1 : 0;
+        }
+        EXPECT_EQ(colorDiffs, 0u) << what << ": base colour bytes differ";
+        EXPECT_EQ(mrDiffs, 0u) << what << ": metallic-roughness bytes differ";
+        ++m_checks;
+    }
+
+    /** A stroke through points, checked against a full recompute after every move. */
+    void stroke(const std::string& what, std::vector<glm::vec2> points) {
+        const std::vector<std::uint8_t> before = target().page(0).rgba;
+        const std::vector<std::uint8_t> beforeMr = target().metallicRoughnessPage(0).rgba;
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.beginStroke({points[0], 1.0f}, changes).ok()) << what;
+        expectFullRecompute(what + " (start)");
+        for (std::size_t i = 1; i < points.size(); ++i) {
+            m_doc.moveStroke({points[i], 1.0f}, changes);
+            expectFullRecompute(what + " (move " + std::to_string(i) + ")");
+        }
+        m_doc.endStroke();
+        expectFullRecompute(what + " (end)");
+        m_changed +=
+            before != target().page(0).rgba || beforeMr != target().metallicRoughnessPage(0).rgba
+                ? 1
+                : 0;
+    }
+
+    std::uint64_t add(const std::string& name, BlendMode mode, float opacity,
+                      PaintLayerKind kind = PaintLayerKind::Paint) {
+        PaintLayerSettings s;
+        s.name = name;
+        s.blend = mode;
+        s.opacity = opacity;
+        s.kind = kind;
+        if (kind == PaintLayerKind::Fill) {
+            s.fill.baseColor = glm::vec3(0.2f, 0.7f, 0.4f);
+            s.fill.metallic = 0.8f;
+        }
+        core::PaintChanges changes;
+        auto id = m_doc.addPaintLayer(s, changes);
+        EXPECT_TRUE(id.ok());
+        return id.ok() ? *id : 0;
+    }
+
+    void select(std::uint64_t id, bool mask = false) {
+        ASSERT_TRUE(m_doc.selectPaint({id, mask}).ok());
+    }
+
+    void change(std::uint64_t id, void (*edit)(PaintLayerSettings&)) {
+        const std::size_t index = *target().layerStack().indexOf(id);
+        PaintLayerSettings s = target().layerStack().layer(index).settings;
+        edit(s);
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.setPaintLayerSettings(id, s, changes).ok());
+    }
+
+    void undo(const std::string& what) {
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.undo(changes)) << what;
+        expectFullRecompute(what + " (undo)");
+    }
+    void redo(const std::string& what) {
+        core::PaintChanges changes;
+        ASSERT_TRUE(m_doc.redo(changes)) << what;
+        expectFullRecompute(what + " (redo)");
+    }
+
+    core::Document m_doc;
+    int m_checks = 0;
+    int m_changed = 0;
+};
+
+const std::vector<glm::vec2> kAcross = {{8, 20}, {20, 24}, {34, 30}, {50, 36}, {57, 44}};
+const std::vector<glm::vec2> kDown = {{30, 6}, {28, 20}, {33, 36}, {26, 50}, {31, 58}};
+const std::vector<glm::vec2> kDiagonal = {{10, 52}, {24, 40}, {38, 26}, {52, 12}};
+
+TEST_F(CompositeUpdateTest, StrokesThroughTheFastPathGiveTheFullRecomputesBytes) {
+    core::Brush& brush = m_doc.brush();
+    stroke("base, no layers", kAcross);
+
+    const std::uint64_t a = add("A", BlendMode::Normal, 0.7f);
+    brush.paintRoughness = brush.paintMetallic = true;
+    brush.roughness = 0.2f;
+    brush.metallic = 0.9f;
+    stroke("A, all channels", kAcross);
+    const std::uint64_t fill = add("fill", BlendMode::Multiply, 0.5f, PaintLayerKind::Fill);
+    const std::uint64_t b = add("B", BlendMode::Screen, 0.8f);
+    brush.color = {0.1f, 0.5f, 0.9f, 1.0f};
+    stroke("B over A and a fill layer", kDown);
+    change(b, [](PaintLayerSettings& s) { s.blend = BlendMode::SoftLight; });
+    stroke("B soft light", kDiagonal);
+
+    // A mask on the fill layer, painted dark in a band: every channel of the composite moves.
+    core::PaintChanges changes;
+    ASSERT_TRUE(m_doc.addPaintLayerMask(fill, changes).ok());
+    brush.color = {0.05f, 0.05f, 0.05f, 1.0f};
+    select(fill, true);
+    stroke("fill's mask", kDown);
+
+    const std::uint64_t c = add("C", BlendMode::Overlay, 1.0f);
+    brush.color = {0.8f, 0.8f, 0.2f, 1.0f};
+    brush.paintMetallic = false;
+    stroke("C overlay, base colour and roughness", kDiagonal);
+    change(c, [](PaintLayerSettings& s) { s.visible = false; });
+    const std::uint64_t d = add("D", BlendMode::Difference, 0.6f);
+    stroke("D difference over a hidden layer", kAcross);
+    change(d, [](PaintLayerSettings& s) { s.lockTransparency = true; });
+    brush.color = {0.2f, 0.9f, 0.6f, 1.0f};
+    stroke("D locked", kDown);
+
+    // Below layers that are above another stroke's layer: A with B, C, D over it.
+    select(a);
+    brush.paintMetallic = true;
+    brush.metallic = 0.3f;
+    stroke("A under five layers", kDiagonal);
+    undo("A under five layers");
+    stroke("A again after undo", kDown);
+    undo("A again");
+    redo("A again");
+
+    // On a hidden layer the composite does not change; painting it is still checked.
+    select(c);
+    stroke("hidden C", kAcross);
+    change(c, [](PaintLayerSettings& s) {
+        s.visible = true;
+        s.blend = BlendMode::Subtract;
+    });
+    expectFullRecompute("C shown");
+    select(d);
+    brush.eraser = true;
+    stroke("D erased", kAcross);
+    brush.eraser = false;
+
+    // Layer changes below the stroke's layer between strokes: the kept lower layers go.
+    for (const auto& [mode, name] :
+         std::vector<std::pair<BlendMode, std::string>>{{BlendMode::Add, "add"},
+                                                        {BlendMode::Darken, "darken"},
+                                                        {BlendMode::Lighten, "lighten"}}) {
+        const BlendMode m = mode;
+        const std::size_t index = *target().layerStack().indexOf(a);
+        PaintLayerSettings s = target().layerStack().layer(index).settings;
+        s.blend = m;
+        s.opacity = 0.45f;
+        ASSERT_TRUE(m_doc.setPaintLayerSettings(a, s, changes).ok());
+        select(b);
+        stroke("B over A " + name, kDiagonal);
+    }
+    core::PaintChanges moved;
+    ASSERT_TRUE(m_doc.movePaintLayer(d, 0, moved).ok());
+    select(b);
+    stroke("B after D moved to the bottom", kAcross);
+    undo("B after the move");
+    undo("the move");
+    stroke("B with D back on top", kDown);
+
+    // The base under every layer, and a fill (flood fill goes through the same update).
+    select(0);
+    brush.color = {0.3f, 0.1f, 0.6f, 1.0f};
+    stroke("base under the layers", kDown);
+    select(b);
+    ASSERT_TRUE(m_doc.fill({32, 32}, core::FillMode::Surface, 0.1f, changes).ok());
+    expectFullRecompute("fill on B");
+    undo("fill on B");
+
+    EXPECT_GT(m_checks, 60);
+    EXPECT_GE(m_changed, 15) << "the strokes changed the composite";
+}
+
+} // namespace
