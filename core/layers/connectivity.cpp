@@ -2,6 +2,7 @@
 #include "core/layers/connectivity.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -322,40 +323,62 @@ PixelRays PixelRays::fromView(const View& view) {
 }
 
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
-                                    const View& view) {
+                                    const View& view, const LayerStack* stack) {
     SurfaceGeometry geometry;
     geometry.rays = PixelRays::fromView(view);
     const std::size_t count = mesh.triangleCount();
     geometry.triangles.resize(count);
     const glm::dmat4 toView(view.view);
     const bool haveTopology = topology.triangleCount() == count;
-    // Independent per triangle: split over threads (this runs on every view change).
-    parallelRanges(int(count), 0, [&](int, int begin, int end) {
-        for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t) {
-            SurfaceTriangle& tri = geometry.triangles[t];
-            if (haveTopology) {
-                tri.corners = topology.corners[t];
-                tri.component = topology.component[t];
-            }
-            glm::dvec3 v[3];
-            bool valid = true;
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
-                valid = valid && index < mesh.positions.size();
-                if (valid)
-                    v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
-            }
-            if (!valid)
-                continue;
-            const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
-            const double length = glm::length(n);
-            if (!(length > 0.0) || !std::isfinite(length))
-                continue;
-            const glm::dvec3 unit = n / length;
-            // Offset from the centroid: the least rounding error over the whole triangle.
-            const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
-            tri.plane = glm::vec4(glm::vec3(unit), float(w));
+    const auto computePlane = [&](std::size_t t) {
+        SurfaceTriangle& tri = geometry.triangles[t];
+        if (haveTopology) {
+            tri.corners = topology.corners[t];
+            tri.component = topology.component[t];
         }
+        glm::dvec3 v[3];
+        bool valid = true;
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
+            valid = valid && index < mesh.positions.size();
+            if (valid)
+                v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+        }
+        if (!valid)
+            return;
+        const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+        const double length = glm::length(n);
+        if (!(length > 0.0) || !std::isfinite(length))
+            return;
+        const glm::dvec3 unit = n / length;
+        // Offset from the centroid: the least rounding error over the whole triangle.
+        const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
+        tri.plane = glm::vec4(glm::vec3(unit), float(w));
+    };
+    if (!stack) {
+        // Independent per triangle: split over threads (this runs on every view change).
+        parallelRanges(int(count), 0, [&](int, int begin, int end) {
+            for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
+                computePlane(t);
+        });
+        return geometry;
+    }
+    // Only the triangles the view shows: mark them from the fragments, list them in id order,
+    // and compute their planes over the threads (each plane depends on its triangle only).
+    std::vector<std::uint8_t> shown(count, 0);
+    const std::vector<std::uint32_t>& fragmentTriangles = stack->triangle;
+    parallelRanges(int(fragmentTriangles.size()), 0, [&](int, int begin, int end) {
+        for (int f = begin; f < end; ++f)
+            if (const std::uint32_t t = fragmentTriangles[std::size_t(f)]; t < count)
+                std::atomic_ref<std::uint8_t>(shown[t]).store(1, std::memory_order_relaxed);
+    });
+    std::vector<std::uint32_t> ids;
+    for (std::size_t t = 0; t < count; ++t)
+        if (shown[t])
+            ids.push_back(std::uint32_t(t));
+    parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            computePlane(ids[std::size_t(i)]);
     });
     return geometry;
 }
