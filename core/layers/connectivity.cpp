@@ -57,6 +57,7 @@ struct Side {
     float depth[kMaxLinkedLayers];
     std::uint32_t triangle[kMaxLinkedLayers];
     const SurfaceTriangle* info[kMaxLinkedLayers]; // nullptr when unknown
+    std::uint32_t component[kMaxLinkedLayers];     // info->component, kept beside the others
 };
 
 /**
@@ -151,6 +152,7 @@ private:
             for (std::uint32_t k = 0; k < side.count; ++k) {
                 side.triangle[k] = triangle[k];
                 side.info[k] = triangle[k] < m_triangleCount ? m_triangles + triangle[k] : nullptr;
+                side.component[k] = side.info[k] ? side.info[k]->component : kNone;
             }
         }
     }
@@ -227,6 +229,16 @@ private:
         return kFail;
     }
 
+    /** score() for fragments with known triangles of different mesh parts. */
+    float contactScore(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
+                       const PairRays& rays) {
+        const float za = m_midA.get(a, i, rays.m, m_stamp);
+        const float zb = m_midB.get(b, j, rays.m, m_stamp);
+        const float error = !std::isnan(za) && !std::isnan(zb) ? std::abs(za - zb)
+                                                               : std::abs(a.depth[i] - b.depth[j]);
+        return error < m_contactLimit ? error : kFail;
+    }
+
     /**
      * For a smooth surface curving between the two samples (one mesh part, triangles not
      * adjacent, as where triangles are smaller than pixels or near silhouettes, where the depth
@@ -294,9 +306,14 @@ private:
             std::uint32_t best = 0;
             for (std::uint32_t j = 0; j < b.count; ++j) {
                 float s;
-                if constexpr (kSurface)
-                    s = score(a, i, b, j, rays);
-                else
+                if constexpr (kSurface) {
+                    // Fragments of different mesh parts (most pairs in a deep pixel) join only
+                    // where they touch: score()'s contact test, without its other loads.
+                    if (a.info[i] && b.info[j] && a.component[i] != b.component[j])
+                        s = contactScore(a, i, b, j, rays);
+                    else
+                        s = score(a, i, b, j, rays);
+                } else
                     s = plainScore(a.depth[i], b.depth[j]);
                 if (s == kFail)
                     continue;
