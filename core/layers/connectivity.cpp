@@ -2,6 +2,7 @@
 #include "core/layers/connectivity.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -49,15 +50,36 @@ inline float planeDepth(const glm::vec4& plane, const Ray& ray) {
            denom;
 }
 
-/** One side of a pixel pair: up to kMaxLinkedLayers fragments with what the test needs. */
+/** One pixel's fragments (up to kMaxLinkedLayers) with what the test needs, loaded once. */
 struct Side {
     std::uint32_t first = 0; // index of the layer-1 fragment
     std::uint32_t count = 0; // fragments considered (capped)
     float depth[kMaxLinkedLayers];
     std::uint32_t triangle[kMaxLinkedLayers];
     const SurfaceTriangle* info[kMaxLinkedLayers]; // nullptr when unknown
-    float midDepth[kMaxLinkedLayers];              // plane depth on the midpoint ray, or NaN
+    std::uint32_t component[kMaxLinkedLayers];     // info->component, kept beside the others
 };
+
+/**
+ * Plane depths of one side's fragments on one ray, computed on first use within a pixel pair
+ * (most pairs never need them: same triangle, or another mesh part). A value is valid while its
+ * stamp equals the pair's.
+ */
+struct LazyDepths {
+    float value[kMaxLinkedLayers];
+    std::uint32_t stamp[kMaxLinkedLayers] = {};
+
+    float get(const Side& side, std::uint32_t k, const Ray& ray, std::uint32_t now) {
+        if (stamp[k] != now) {
+            stamp[k] = now;
+            value[k] = planeDepth(side.info[k]->plane, ray);
+        }
+        return value[k];
+    }
+};
+
+/** Rows to a work item: small enough to balance two loaded cores, large enough to stream. */
+constexpr int kRowsPerChunk = 8;
 
 class Linker {
 public:
@@ -70,52 +92,89 @@ public:
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
         m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
         m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
+        m_triangles = m_geometry ? m_geometry->triangles.data() : nullptr;
+        m_triangleCount = m_geometry ? m_geometry->triangles.size() : 0;
     }
 
-    /** Links the fragments of rows [y0, y1) to their right and down neighbours and back. */
+    /**
+     * Links the fragments of rows [y0, y1) to their right and down neighbours and back. Each
+     * pixel's fragments are loaded once and reused as the left side of the next pair.
+     */
     void rows(int y0, int y1) {
-        const int w = m_stack.width, h = m_stack.height;
-        for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
-                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                if (m_stack.layerCount(p) == 0)
-                    continue;
-                if (x + 1 < w)
-                    pair(p, p + 1, float(x) + 0.5f, float(y) + 0.5f, 1.0f, 0.0f, kRight, kLeft);
-                if (y + 1 < h)
-                    pair(p, p + std::size_t(w), float(x) + 0.5f, float(y) + 0.5f, 0.0f, 1.0f, kDown,
-                         kUp);
-            }
+        if (m_geometry)
+            rowsOf<true>(y0, y1);
+        else
+            rowsOf<false>(y0, y1);
     }
 
 private:
-    void load(Side& side, std::size_t pixel, const Ray& mid) const {
-        side.first = m_stack.offsets[pixel];
-        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
-        const std::size_t triangles = m_geometry ? m_geometry->triangles.size() : 0;
-        for (std::uint32_t k = 0; k < side.count; ++k) {
-            const std::uint32_t f = side.first + k;
-            side.depth[k] = m_stack.depth[f];
-            side.triangle[k] = m_stack.triangle[f];
-            side.info[k] =
-                side.triangle[k] < triangles ? &m_geometry->triangles[side.triangle[k]] : nullptr;
-            side.midDepth[k] = side.info[k] ? planeDepth(side.info[k]->plane, mid)
-                                            : std::numeric_limits<float>::quiet_NaN();
+    template <bool kSurface> void rowsOf(int y0, int y1) {
+        const int w = m_stack.width, h = m_stack.height;
+        Side* cur = &m_sides[0];
+        Side* next = &m_sides[1];
+        Side* down = &m_sides[2];
+        for (int y = y0; y < y1; ++y) {
+            bool curLoaded = false;
+            for (int x = 0; x < w; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                if (m_stack.layerCount(p) == 0) {
+                    curLoaded = false;
+                    continue;
+                }
+                if (!curLoaded)
+                    load<kSurface>(*cur, p);
+                const float px = float(x) + 0.5f, py = float(y) + 0.5f;
+                Ray rayP{};
+                if constexpr (kSurface)
+                    rayP = rayAt(m_geometry->rays, px, py);
+                if (y + 1 < h && m_stack.layerCount(p + std::size_t(w)) != 0) {
+                    load<kSurface>(*down, p + std::size_t(w));
+                    pair<kSurface>(*cur, *down, rayP, px, py, 0.0f, 1.0f, kDown, kUp);
+                }
+                curLoaded = false;
+                if (x + 1 < w && m_stack.layerCount(p + 1) != 0) {
+                    load<kSurface>(*next, p + 1);
+                    pair<kSurface>(*cur, *next, rayP, px, py, 1.0f, 0.0f, kRight, kLeft);
+                    std::swap(cur, next);
+                    curLoaded = true;
+                }
+            }
         }
     }
+
+    template <bool kSurface> void load(Side& side, std::size_t pixel) const {
+        side.first = m_stack.offsets[pixel];
+        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
+        const float* depth = m_stack.depth.data() + side.first;
+        std::copy_n(depth, side.count, side.depth);
+        if constexpr (kSurface) {
+            const std::uint32_t* triangle = m_stack.triangle.data() + side.first;
+            for (std::uint32_t k = 0; k < side.count; ++k) {
+                side.triangle[k] = triangle[k];
+                side.info[k] = triangle[k] < m_triangleCount ? m_triangles + triangle[k] : nullptr;
+                side.component[k] = side.info[k] ? side.info[k]->component : kNone;
+            }
+        }
+    }
+
+    /** The rays of one pixel pair and the lazily computed plane depths on them. */
+    struct PairRays {
+        Ray p, q, m;
+    };
 
     /**
      * Error of joining fragment i of a (at P) with fragment j of b (at Q); kFail when the test
      * fails. Symmetric in (a, i) and (b, j) up to swapping P and Q.
      */
-    float score(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j, const Ray& rayP,
-                const Ray& rayQ) const {
+    float score(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
+                const PairRays& rays) {
         const SurfaceTriangle* ta = a.info[i];
         const SurfaceTriangle* tb = b.info[j];
         if (ta && tb) {
             if (a.triangle[i] == b.triangle[j])
                 return -1.0f; // same plane: exact at any slope
-            const float za = a.midDepth[i], zb = b.midDepth[j];
+            const float za = m_midA.get(a, i, rays.m, m_stamp);
+            const float zb = m_midB.get(b, j, rays.m, m_stamp);
             if (!std::isnan(za) && !std::isnan(zb)) { // neither grazing
                 const float error = std::abs(za - zb);
                 if (ta->component != tb->component)
@@ -131,14 +190,14 @@ private:
                     // The planes' depth difference along P→Q keeps its sign except at one
                     // point (1/depth is affine on screen), so a sign change means their line of
                     // intersection passes between the pixel centres.
-                    const float bAtP = planeDepth(tb->plane, rayP);
-                    const float aAtQ = planeDepth(ta->plane, rayQ);
+                    const float bAtP = m_atP.get(b, j, rays.p, m_stamp);
+                    const float aAtQ = m_atQ.get(a, i, rays.q, m_stamp);
                     const bool cross = bAtP > 0.0f && aAtQ > 0.0f &&
                                        (a.depth[i] - bAtP) * (aAtQ - b.depth[j]) <= 0.0f;
                     if (crease && cross)
                         return 0.0f; // the crease through the shared corner is between them
                     if (smooth && cross && !facet) {
-                        const float arc = arcError(a, i, b, j, rayP, rayQ, cosine, kArcSlack);
+                        const float arc = arcError(a, i, b, j, rays, cosine, kArcSlack);
                         if (arc != kFail)
                             return arc;
                     }
@@ -148,7 +207,7 @@ private:
                     // corner, not between the pixels, and one sample lies off the other's
                     // plane by up to about twice the arc's distance; a fold this flat would
                     // be off by four times or more.
-                    const float arc = arcError(a, i, b, j, rayP, rayQ, cosine, kFacetSlack);
+                    const float arc = arcError(a, i, b, j, rays, cosine, kFacetSlack);
                     if (arc != kFail)
                         return arc;
                 }
@@ -165,9 +224,19 @@ private:
             const float cosine = glm::dot(glm::vec3(ta->plane), glm::vec3(tb->plane));
             if (cosine >= m_smoothCos && ta->plane != glm::vec4(0.0f) &&
                 tb->plane != glm::vec4(0.0f))
-                return arcError(a, i, b, j, rayP, rayQ, cosine, kArcSlack);
+                return arcError(a, i, b, j, rays, cosine, kArcSlack);
         }
         return kFail;
+    }
+
+    /** score() for fragments with known triangles of different mesh parts. */
+    float contactScore(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
+                       const PairRays& rays) {
+        const float za = m_midA.get(a, i, rays.m, m_stamp);
+        const float zb = m_midB.get(b, j, rays.m, m_stamp);
+        const float error = !std::isnan(za) && !std::isnan(zb) ? std::abs(za - zb)
+                                                               : std::abs(a.depth[i] - b.depth[j]);
+        return error < m_contactLimit ? error : kFail;
     }
 
     /**
@@ -178,12 +247,12 @@ private:
      * angle). Two unrelated sheets fail by a factor of about 2 even when one is seen edge-on, and
      * parallel sheets by their gap. Returns the larger distance, or kFail.
      */
-    float arcError(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j, const Ray& rayP,
-                   const Ray& rayQ, float cosine, float slack) const {
+    float arcError(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
+                   const PairRays& rays, float cosine, float slack) const {
         const glm::vec4& planeA = a.info[i]->plane;
         const glm::vec4& planeB = b.info[j]->plane;
-        const glm::vec3 pointA = rayP.origin + a.depth[i] * rayP.direction;
-        const glm::vec3 pointB = rayQ.origin + b.depth[j] * rayQ.direction;
+        const glm::vec3 pointA = rays.p.origin + a.depth[i] * rays.p.direction;
+        const glm::vec3 pointB = rays.q.origin + b.depth[j] * rays.q.direction;
         const float chord = glm::length(pointB - pointA);
         const float sinHalf = std::sqrt(std::max(0.0f, 0.5f * (1.0f - cosine)));
         const float bound = slack * chord * sinHalf + m_limit;
@@ -212,25 +281,20 @@ private:
         return rankC < rankBest;
     }
 
-    void pair(std::size_t p, std::size_t q, float px, float py, float dx, float dy, int forward,
-              int backward) {
-        if (m_stack.layerCount(q) == 0)
-            return;
-        Ray rayP{}, rayQ{}, rayM{};
-        if (m_geometry) {
-            const PixelRays& rays = m_geometry->rays;
-            rayP = rayAt(rays, px, py);
-            rayQ = rayAt(rays, px + dx, py + dy);
-            rayM = rayAt(rays, px + 0.5f * dx, py + 0.5f * dy);
-        }
-        Side& a = m_a;
-        Side& b = m_b;
-        if (m_geometry) {
-            load(a, p, rayM);
-            load(b, q, rayM);
-        } else {
-            loadPlain(a, p);
-            loadPlain(b, q);
+    template <bool kSurface>
+    void pair(const Side& a, const Side& b, const Ray& rayP, float px, float py, float dx, float dy,
+              int forward, int backward) {
+        PairRays rays{};
+        if constexpr (kSurface) {
+            const PixelRays& pixelRays = m_geometry->rays;
+            rays.p = rayP;
+            rays.q = rayAt(pixelRays, px + dx, py + dy);
+            rays.m = rayAt(pixelRays, px + 0.5f * dx, py + 0.5f * dy);
+            if (++m_stamp == 0) { // wrapped: forget every stamp
+                for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ})
+                    std::fill_n(lazy->stamp, kMaxLinkedLayers, 0u);
+                m_stamp = 1;
+            }
         }
         float bestForB[kMaxLinkedLayers];
         std::uint32_t choiceForB[kMaxLinkedLayers];
@@ -241,8 +305,16 @@ private:
             float bestScore = kFail;
             std::uint32_t best = 0;
             for (std::uint32_t j = 0; j < b.count; ++j) {
-                const float s =
-                    m_geometry ? score(a, i, b, j, rayP, rayQ) : plainScore(a.depth[i], b.depth[j]);
+                float s;
+                if constexpr (kSurface) {
+                    // Fragments of different mesh parts (most pairs in a deep pixel) join only
+                    // where they touch: score()'s contact test, without its other loads.
+                    if (a.info[i] && b.info[j] && a.component[i] != b.component[j])
+                        s = contactScore(a, i, b, j, rays);
+                    else
+                        s = score(a, i, b, j, rays);
+                } else
+                    s = plainScore(a.depth[i], b.depth[j]);
                 if (s == kFail)
                     continue;
                 if (better(s, j + 1, bestScore, best, i + 1)) {
@@ -261,13 +333,6 @@ private:
                 std::uint8_t(choiceForB[j]);
     }
 
-    void loadPlain(Side& side, std::size_t pixel) const {
-        side.first = m_stack.offsets[pixel];
-        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
-        for (std::uint32_t k = 0; k < side.count; ++k)
-            side.depth[k] = m_stack.depth[side.first + k];
-    }
-
     float plainScore(float za, float zb) const {
         const float error = std::abs(za - zb);
         return error < m_limit ? error : kFail;
@@ -275,12 +340,17 @@ private:
 
     const LayerStack& m_stack;
     const SurfaceGeometry* m_geometry;
+    const SurfaceTriangle* m_triangles = nullptr;
+    std::size_t m_triangleCount = 0;
     Connectivity& m_out;
     float m_limit = 0.0f;
     float m_contactLimit = 0.0f;
     float m_creaseCos = 0.0f;
     float m_smoothCos = 1.0f;
-    Side m_a, m_b;
+    Side m_sides[3];
+    // Plane depths of a's and b's fragments on the midpoint ray, of b's on P's ray, of a's on Q's.
+    LazyDepths m_midA, m_midB, m_atP, m_atQ;
+    std::uint32_t m_stamp = 0;
 };
 
 } // namespace
@@ -322,40 +392,62 @@ PixelRays PixelRays::fromView(const View& view) {
 }
 
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
-                                    const View& view) {
+                                    const View& view, const LayerStack* stack) {
     SurfaceGeometry geometry;
     geometry.rays = PixelRays::fromView(view);
     const std::size_t count = mesh.triangleCount();
     geometry.triangles.resize(count);
     const glm::dmat4 toView(view.view);
     const bool haveTopology = topology.triangleCount() == count;
-    // Independent per triangle: split over threads (this runs on every view change).
-    parallelRanges(int(count), 0, [&](int, int begin, int end) {
-        for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t) {
-            SurfaceTriangle& tri = geometry.triangles[t];
-            if (haveTopology) {
-                tri.corners = topology.corners[t];
-                tri.component = topology.component[t];
-            }
-            glm::dvec3 v[3];
-            bool valid = true;
-            for (int c = 0; c < 3; ++c) {
-                const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
-                valid = valid && index < mesh.positions.size();
-                if (valid)
-                    v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
-            }
-            if (!valid)
-                continue;
-            const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
-            const double length = glm::length(n);
-            if (!(length > 0.0) || !std::isfinite(length))
-                continue;
-            const glm::dvec3 unit = n / length;
-            // Offset from the centroid: the least rounding error over the whole triangle.
-            const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
-            tri.plane = glm::vec4(glm::vec3(unit), float(w));
+    const auto computePlane = [&](std::size_t t) {
+        SurfaceTriangle& tri = geometry.triangles[t];
+        if (haveTopology) {
+            tri.corners = topology.corners[t];
+            tri.component = topology.component[t];
         }
+        glm::dvec3 v[3];
+        bool valid = true;
+        for (int c = 0; c < 3; ++c) {
+            const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
+            valid = valid && index < mesh.positions.size();
+            if (valid)
+                v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+        }
+        if (!valid)
+            return;
+        const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+        const double length = glm::length(n);
+        if (!(length > 0.0) || !std::isfinite(length))
+            return;
+        const glm::dvec3 unit = n / length;
+        // Offset from the centroid: the least rounding error over the whole triangle.
+        const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
+        tri.plane = glm::vec4(glm::vec3(unit), float(w));
+    };
+    if (!stack) {
+        // Independent per triangle: split over threads (this runs on every view change).
+        parallelRanges(int(count), 0, [&](int, int begin, int end) {
+            for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
+                computePlane(t);
+        });
+        return geometry;
+    }
+    // Only the triangles the view shows: mark them from the fragments, list them in id order,
+    // and compute their planes over the threads (each plane depends on its triangle only).
+    std::vector<std::uint8_t> shown(count, 0);
+    const std::vector<std::uint32_t>& fragmentTriangles = stack->triangle;
+    parallelRanges(int(fragmentTriangles.size()), 0, [&](int, int begin, int end) {
+        for (int f = begin; f < end; ++f)
+            if (const std::uint32_t t = fragmentTriangles[std::size_t(f)]; t < count)
+                std::atomic_ref<std::uint8_t>(shown[t]).store(1, std::memory_order_relaxed);
+    });
+    std::vector<std::uint32_t> ids;
+    for (std::size_t t = 0; t < count; ++t)
+        if (shown[t])
+            ids.push_back(std::uint32_t(t));
+    parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
+        for (int i = begin; i < end; ++i)
+            computePlane(ids[std::size_t(i)]);
     });
     return geometry;
 }
@@ -371,9 +463,14 @@ Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOpti
     out.truncated = stack.maxLayers() > kMaxLinkedLayers;
     // Each part writes the right/left links of its rows and the down links of its rows plus the
     // up links of the row below: every byte has one writer, whatever the split.
-    parallelRanges(stack.height, options.threads, [&](int, int y0, int y1) {
+    // Bands of kRowsPerChunk rows go to whichever thread is free next.
+    const int chunks = (stack.height + kRowsPerChunk - 1) / kRowsPerChunk;
+    std::atomic<int> nextChunk{0};
+    parallelRanges(chunks, options.threads, [&](int, int, int) {
         auto linker = std::make_unique<Linker>(stack, options, geometry, out);
-        linker->rows(y0, y1);
+        for (int chunk = nextChunk.fetch_add(1); chunk < chunks; chunk = nextChunk.fetch_add(1))
+            linker->rows(chunk * kRowsPerChunk,
+                         std::min(stack.height, (chunk + 1) * kRowsPerChunk));
     });
     return out;
 }

@@ -86,9 +86,13 @@ struct SurfaceGeometry {
     std::vector<SurfaceTriangle> triangles;
 };
 
-/** Planes of every triangle of mesh in view's view space, with topology's corners/components. */
+/**
+ * Planes of mesh's triangles in view's view space, with topology's corners/components, indexed by
+ * triangle id. With stack, only the triangles with a fragment in it are computed (the only ones
+ * the Surface test reads); the others keep the default (zero plane, unknown corners).
+ */
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
-                                    const View& view);
+                                    const View& view, const LayerStack* stack = nullptr);
 
 /** Link directions, in the order links are stored: right, left, up (y - 1), down (y + 1). */
 enum Direction : int { kRight = 0, kLeft = 1, kUp = 2, kDown = 3 };

@@ -44,7 +44,7 @@ Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Me
     layers.stack = std::move(stack);
     layers.timings.capture = captureStats;
     const auto start = std::chrono::steady_clock::now();
-    layers.geometry = makeSurfaceGeometry(mesh, topology, view);
+    layers.geometry = makeSurfaceGeometry(mesh, topology, view, &layers.stack);
     layers.timings.surfaceMs = millisecondsSince(start);
     resegmentLayers(layers, mesh, options, engine);
     return layers;

@@ -66,7 +66,7 @@ struct LayerOptions {
 struct LayerTimings {
     CaptureStats capture;
     double connectivityMs = 0.0;
-    double surfaceMs = 0.0;      // the Surface test's per-triangle planes for this view
+    double surfaceMs = 0.0;      // the Surface test's planes of the triangles this view shows
     double segmentationMs = 0.0; // region labels and the region graph
     double graphMs = 0.0;        // ... of which assembling the region graph
     double totalMs() const {

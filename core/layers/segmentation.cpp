@@ -112,7 +112,21 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         std::vector<std::uint32_t> roots;      // local roots in scan order
         std::vector<std::uint32_t> rootLayers; // their 1-based layers
         std::vector<Region> regions;           // partial nodes, by region id
-        std::vector<std::uint64_t> pairs;      // cross-layer links as (smaller, larger) ids
+        // Cross-layer links as (smaller, larger) ids with their count; neighbouring pixels
+        // mostly repeat a pair, which a small direct-mapped table of recent pairs counts in
+        // place, so far fewer entries are sorted.
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
+        std::vector<std::uint32_t> recent; // kRecentPairs slots: an index into pairs, or kNone
+        void addPair(std::uint64_t key) {
+            const std::size_t slot = std::size_t((key * 0x9e3779b97f4a7c15ull) >> 52);
+            std::uint32_t& index = recent[slot];
+            if (index != kNone && pairs[index].first == key) {
+                ++pairs[index].second;
+                return;
+            }
+            index = std::uint32_t(pairs.size());
+            pairs.emplace_back(key, 1u);
+        }
     };
     std::vector<Part> part(static_cast<std::size_t>(parts));
 
@@ -174,6 +188,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
     parallelRanges(h, threads, [&](int index, int y0, int y1) {
         Part& own = part[std::size_t(index)];
         own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
+        own.recent.assign(std::size_t(1) << 12, kNone);
         for (int y = y0; y < y1; ++y)
             for (int x = 0; x < w; ++x) {
                 const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
@@ -211,7 +226,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                         if (g == kNone)
                             continue;
                         const std::uint64_t a = r, b = region[findRootReadOnly(parent, g)];
-                        own.pairs.push_back(a < b ? (a << 32) | b : (b << 32) | a);
+                        own.addPair(a < b ? (a << 32) | b : (b << 32) | a);
                     }
                 }
             }
@@ -240,16 +255,17 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         }
 
     // 6. Region edges: count the unordered region pairs of the cross-layer links.
-    std::vector<std::uint64_t> pairs;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
     for (const Part& own : part)
         pairs.insert(pairs.end(), own.pairs.begin(), own.pairs.end());
     std::sort(pairs.begin(), pairs.end());
     std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // unique pair, link count
     for (std::size_t i = 0; i < pairs.size();) {
-        std::size_t j = i + 1;
-        while (j < pairs.size() && pairs[j] == pairs[i])
-            ++j;
-        edges.emplace_back(pairs[i], std::uint32_t(j - i));
+        std::uint32_t count = 0;
+        std::size_t j = i;
+        for (; j < pairs.size() && pairs[j].first == pairs[i].first; ++j)
+            count += pairs[j].second;
+        edges.emplace_back(pairs[i].first, count);
         i = j;
     }
     graph.neighborOffsets.assign(std::size_t(regionCount) + 1, 0);

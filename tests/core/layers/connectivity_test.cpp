@@ -246,6 +246,36 @@ TEST(Connectivity, LinksPointAtExistingFragments) {
 
 // ---------------------------------------------------------------------------------------------
 
+TEST(SurfaceGeometry, WithAStackOnlyTheShownTrianglesGetPlanes) {
+    const core::Mesh mesh = core::makeTrefoil(60, 24);
+    const core::MeshTopology topology = core::buildMeshTopology(mesh);
+    const core::Camera camera = core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 2.0f);
+    const core::View view = camera.view(120, 80);
+    const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
+    const core::SurfaceGeometry all = core::makeSurfaceGeometry(mesh, topology, view);
+    const core::SurfaceGeometry shown = core::makeSurfaceGeometry(mesh, topology, view, &stack);
+    ASSERT_EQ(shown.triangles.size(), mesh.triangleCount());
+    std::vector<bool> inView(mesh.triangleCount(), false);
+    for (std::uint32_t t : stack.triangle)
+        inView[t] = true;
+    std::size_t computed = 0, skipped = 0;
+    for (std::size_t t = 0; t < shown.triangles.size(); ++t) {
+        const core::SurfaceTriangle& got = shown.triangles[t];
+        if (inView[t]) {
+            ++computed;
+            EXPECT_EQ(got.plane, all.triangles[t].plane) << "triangle " << t;
+            EXPECT_EQ(got.corners, all.triangles[t].corners) << "triangle " << t;
+            EXPECT_EQ(got.component, all.triangles[t].component) << "triangle " << t;
+        } else {
+            ++skipped;
+            EXPECT_EQ(got.plane, glm::vec4(0.0f)) << "triangle " << t;
+            EXPECT_EQ(got.component, core::kNone) << "triangle " << t;
+        }
+    }
+    EXPECT_GT(computed, 100u);
+    EXPECT_GT(skipped, 100u); // back faces and hidden sides are skipped
+}
+
 TEST(PixelRays, MatchViewUnproject) {
     core::Camera camera;
     camera.frame({glm::vec3(-0.5f), glm::vec3(0.5f)});
