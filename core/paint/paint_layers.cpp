@@ -80,19 +80,18 @@ bool sampleLayer(const PaintLayer& layer, PaintChannel channel, std::uint32_t pa
     return s.a > 0.0f;
 }
 
-/** Whether a layer can change anything in tile of page (its planes hold that tile). */
-bool touchesTile(const PaintLayer& layer, std::uint32_t page, std::uint32_t tile) {
-    if (!layer.settings.visible || layer.settings.opacity <= 0.0f)
+} // namespace
+
+bool PaintLayer::touchesTile(std::uint32_t page, std::uint32_t tile) const {
+    if (!settings.visible || settings.opacity <= 0.0f)
         return false;
-    if (layer.settings.kind == PaintLayerKind::Fill)
+    if (settings.kind == PaintLayerKind::Fill)
         return true;
-    for (const auto& plane : layer.channels)
+    for (const auto& plane : channels)
         if (plane && plane->tile(page, tile) != nullptr)
             return true;
     return false;
 }
-
-} // namespace
 
 int channelTexelBytes(PaintChannel channel) {
     return components(channel) + 1;
@@ -255,7 +254,7 @@ void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
     const int x1 = std::min(size.width, x0 + kTile), y1 = std::min(size.height, y0 + kTile);
     std::size_t end = 0; // layers above the last one touching this tile change nothing here
     for (std::size_t l = 0; l < m_layers.size(); ++l)
-        if (touchesTile(*m_layers[l], page, tile))
+        if (m_layers[l]->touchesTile(page, tile))
             end = l + 1;
     std::array<float, 5> values{};
     for (int y = y0; y < y1; ++y)
@@ -338,7 +337,7 @@ bool PaintLayerStack::mergeDown(std::size_t index,
         auto plane = makePlane(channelTexelBytes(channel), {0, 0, 0, 0});
         for (std::uint32_t p = 0; p < m_pages.size(); ++p) {
             for (std::uint32_t t = 0; t < plane->tileCount(p); ++t) {
-                const bool inUpper = upper.settings.visible && touchesTile(upper, p, t);
+                const bool inUpper = upper.settings.visible && upper.touchesTile(p, t);
                 const bool inLower = lower.settings.kind == PaintLayerKind::Fill ||
                                      (lower.channels[c] && lower.channels[c]->tile(p, t));
                 if (!inUpper && !inLower)

@@ -64,6 +64,8 @@ struct PaintLayer {
 
     /** Bytes of texel data held by its planes. */
     std::size_t bytes() const;
+    /** Whether it can change anything in tile of page: shown, and a fill or holding that tile. */
+    bool touchesTile(std::uint32_t page, std::uint32_t tile) const;
 };
 
 /** Bytes per texel of a channel's plane in a paint layer (value components + coverage). */

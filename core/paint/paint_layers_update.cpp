@@ -62,18 +62,6 @@ TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
     return r;
 }
 
-/** Whether a layer can change anything in tile of page (as updateTile() decides). */
-bool touches(const PaintLayer& layer, std::uint32_t page, std::uint32_t tile) {
-    if (!layer.settings.visible || layer.settings.opacity <= 0.0f)
-        return false;
-    if (layer.settings.kind == PaintLayerKind::Fill)
-        return true;
-    for (const auto& plane : layer.channels)
-        if (plane && plane->tile(page, tile) != nullptr)
-            return true;
-    return false;
-}
-
 } // namespace
 
 void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
@@ -209,14 +197,14 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
         return;
     std::size_t end = 0; // layers above the last one touching this tile change nothing here
     for (std::size_t l = 0; l < m_layers.size(); ++l)
-        if (touches(*m_layers[l], page, tile))
+        if (m_layers[l]->touchesTile(page, tile))
             end = l + 1;
 
     m_scratch.resize(5 * n);
     float* values = m_scratch.data();
     bool belowTouches = false;
     for (std::size_t l = 0; l < std::min(from, end) && !belowTouches; ++l)
-        belowTouches = touches(*m_layers[l], page, tile);
+        belowTouches = m_layers[l]->touchesTile(page, tile);
     if (!belowTouches) {
         baseValues(page, rect, channels, values);
     } else {
