@@ -5,7 +5,6 @@
 #include <cstdint>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/document/document.h"
@@ -13,18 +12,11 @@
 #include "core/layers/cpu_capture.h"
 #include "core/model/builtin_models.h"
 #include "core/paint/layout_target.h"
+#include "tests/core/test_scenes.h"
 
 namespace {
 
-/** An orthographic view whose world x, y are window pixels (y down), looking down -Z. */
-core::View pixelView(int width, int height) {
-    core::View view;
-    view.width = width;
-    view.height = height;
-    view.view = glm::mat4(1.0f);
-    view.proj = glm::ortho(0.0f, float(width), float(height), 0.0f, 0.1f, 100.0f);
-    return view;
-}
+using core_test::pixelView;
 
 /**
  * A box in window pixels (front face toward the camera at depth 4, 40 px deep), eight shared

@@ -7,13 +7,13 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/document/document.h"
 #include "core/layers/layers.h"
 #include "core/paint/paint_layers.h"
 #include "core/paint/paint_target.h"
+#include "tests/core/test_scenes.h"
 
 namespace {
 
@@ -24,27 +24,14 @@ using core::PaintLayerSettings;
 constexpr int kWidth = 64, kHeight = 64;
 
 core::View pixelView() {
-    core::View view;
-    view.width = kWidth;
-    view.height = kHeight;
-    view.view = glm::mat4(1.0f);
-    view.proj = glm::ortho(0.0f, float(kWidth), float(kHeight), 0.0f, 0.1f, 100.0f);
-    return view;
+    return core_test::pixelView(kWidth, kHeight);
 }
 
 /** A camera-facing quad over most of the view, its uv square on a new page (many tiles). */
 core::Mesh quad() {
     core::Mesh mesh;
     mesh.materials = {{"grey", glm::vec4(0.5f, 0.6f, 0.7f, 1.0f), -1}};
-    const glm::vec2 p0(4, 4), p1(60, 60);
-    for (const glm::vec2 f : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1)}) {
-        const glm::vec2 p = p0 + f * (p1 - p0);
-        mesh.positions.push_back({p.x, p.y, -4.0f});
-        mesh.normals.push_back({0.0f, 0.0f, 1.0f});
-        mesh.uvs.push_back(f);
-    }
-    mesh.indices = {0, 2, 3, 0, 3, 1};
-    mesh.triangleMaterial = {0, 0};
+    core_test::addQuad(mesh, {glm::vec2(4, 4), glm::vec2(60, 60), 4.0f});
     return mesh;
 }
 
