@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
 #include "render/gl_context.h"
 
 namespace render_test {
@@ -21,5 +23,15 @@ protected:
 
     inline static std::unique_ptr<render::HeadlessContext> s_context;
 };
+
+/** The mesh framed, orbited by yaw and pitch; zoom < 1 moves closer than framed. */
+inline core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, int width, int height,
+                            float zoom = 1.0f) {
+    core::Camera camera;
+    camera.frame(mesh.bounds());
+    camera.orbit(yaw, pitch);
+    camera.zoom(zoom);
+    return camera.view(width, height);
+}
 
 } // namespace render_test

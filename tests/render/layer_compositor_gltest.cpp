@@ -101,15 +101,7 @@ void saveImage(const core::Image& image, const std::string& name) {
     EXPECT_TRUE(status) << status.error();
 }
 
-/** zoom < 1 moves closer than framed, so the model fills more of the view. */
-core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, int width, int height,
-                     float zoom = 1.0f) {
-    core::Camera camera;
-    camera.frame(mesh.bounds());
-    camera.orbit(yaw, pitch);
-    camera.zoom(zoom);
-    return camera.view(width, height);
-}
+using render_test::orbitView;
 
 int channelDifference(const core::Image& a, const core::Image& b, std::size_t pixel) {
     int difference = 0;

@@ -26,14 +26,7 @@ namespace {
 
 constexpr std::size_t kTinyBlock = 64 * 1024;
 
-core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, int width, int height,
-                     float zoom = 1.0f) {
-    core::Camera camera;
-    camera.frame(mesh.bounds());
-    camera.orbit(yaw, pitch);
-    camera.zoom(zoom);
-    return camera.view(width, height);
-}
+using render_test::orbitView;
 
 /** The scenes: the built-ins, a textured box, and the trefoil with vertex colours. */
 struct Scene {
