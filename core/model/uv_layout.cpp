@@ -87,6 +87,7 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
     const double total = double(std::max<std::size_t>(surface.area.size(), 1));
     std::atomic<bool> stop{false};
     std::size_t finishedTriangles = 0;
+    double reported = 0.0; // charts split again take back what they reported: never report less
     for (int round = 0; !pending.empty(); ++round) {
         std::vector<Chart> work(pending.size());
         std::vector<uvl::FlattenOutcome> outcome(pending.size());
@@ -108,7 +109,8 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
                 doneTriangles += work[i].triangles.size();
                 if (part == 0) {
                     const double f = double(finishedTriangles + doneTriangles.load()) / total;
-                    if (!reportProgress(progress, from + (to - from) * std::min(f, 1.0)))
+                    reported = std::max(reported, std::min(f, 1.0));
+                    if (!reportProgress(progress, from + (to - from) * reported))
                         stop = true;
                 }
             }

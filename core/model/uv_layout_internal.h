@@ -52,12 +52,14 @@ struct Chart {
     double area = 0.0;          // 3D area
 };
 
-enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched };
+enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched, Crooked };
 
 /**
  * Flattens chart (triangles set) with least-squares conformal maps, or by projection when it is
- * planar, and scales it so its UV area is its 3D area. Good, or why it has to be split; overlaps
- * are looked for at half a texel of the expected density (texels per model unit).
+ * planar, scales it so its UV area is its 3D area and turns it so its smallest box is
+ * axis-aligned. Good, or why it has to be split; overlaps are looked for at half a texel of the
+ * expected density (texels per model unit), and a chart of many texels at that density that
+ * fills too little of its box is Crooked.
  */
 FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
                             double density);
