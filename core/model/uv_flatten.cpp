@@ -18,7 +18,7 @@ namespace core::uvl {
 namespace {
 
 /** Charts filling less than this share of their smallest box, over kCrookedMinTexels, split. */
-constexpr double kCrookedFill = 0.45;
+constexpr double kCrookedFill = 0.55;
 constexpr double kCrookedMinTexels = 48.0 * 48.0;
 
 double signedArea(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
