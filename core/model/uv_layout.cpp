@@ -35,6 +35,8 @@ std::string checkOptions(const UvLayoutOptions& o) {
     if (!(o.maxNormalDeviationDegrees > 0.0f && o.maxNormalDeviationDegrees < 180.0f) ||
         !(o.sharpEdgeDegrees > 0.0f && o.sharpEdgeDegrees <= 180.0f))
         return "the chart angles must be between 0 and 180 degrees";
+    if (o.smallChartTexels < 0 || o.smallChartTexels > 65536)
+        return "the small chart size must be 0 to 65536 texels";
     if (!(o.maxChartStretch > 1.0f))
         return "the chart stretch limit must be above 1";
     return {};
@@ -239,6 +241,8 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
     UvLayout layout;
     layout.resolution = options.resolution;
     layout.padding = options.padding;
+    layout.smallChartTexels = options.smallChartTexels;
+    layout.smallChartPadding = std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
     layout.texelsPerUnit = density;
     layout.chartCount = std::uint32_t(charts.size());
     layout.pageCount = packing.pageCount;

@@ -87,6 +87,12 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                            const UvLayoutOptions& options, std::uint32_t maxPages,
                            const std::atomic<bool>& cancel);
 
+/**
+ * How far small charts are grown (the other charts: half the padding, rounded up); two small
+ * charts keep twice this between them, at most the padding.
+ */
+int smallChartRadius(int padding);
+
 /** The texel position of a chart's uv after placement (rotation and offset applied). */
 glm::dvec2 placeUv(const Placement& placement, const glm::dvec2& uv, double density);
 

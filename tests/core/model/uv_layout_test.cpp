@@ -151,6 +151,16 @@ void expectValidLayout(const Mesh& in, const UvLayout& l) {
     }
     EXPECT_EQ(twice, 0u) << "texels covered by more than one triangle";
 
+    // Two small charts (covering at most smallChartTexels texels each) keep smallChartPadding
+    // texels between them, any other two the padding.
+    std::vector<std::size_t> covered(l.chartCount, 0u);
+    for (const std::uint32_t c : owner)
+        if (c != kEmpty)
+            ++covered[c];
+    const auto small = [&](std::uint32_t c) {
+        return covered[c] <= std::size_t(l.smallChartTexels);
+    };
+    EXPECT_LE(l.smallChartPadding, l.padding);
     std::size_t tooClose = 0;
     const int p = l.padding;
     for (std::uint32_t page = 0; page < l.pageCount; ++page)
@@ -168,7 +178,10 @@ void expectValidLayout(const Mesh& in, const UvLayout& l) {
                         const std::uint32_t o =
                             owner[texels * page + std::size_t(ny) * std::size_t(size) +
                                   std::size_t(nx)];
-                        tooClose += o != kEmpty && o != c;
+                        if (o == kEmpty || o == c)
+                            continue;
+                        const int gap = small(c) && small(o) ? l.smallChartPadding : p;
+                        tooClose += std::max(std::abs(dx), std::abs(dy)) <= gap;
                     }
             }
     EXPECT_EQ(tooClose, 0u) << "texels of different charts closer than the padding";
