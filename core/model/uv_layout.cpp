@@ -149,7 +149,7 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
     std::optional<uvl::Packing> best;
     double bestDensity = 0.0, failedDensity = std::numeric_limits<double>::infinity();
     std::atomic<bool> cancel{false};
-    constexpr int kAttempts = 14;
+    constexpr int kAttempts = 18;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         Result<uvl::Packing> packing = uvl::packCharts(charts, density, options, 1, cancel);
         if (packing.cancelled())
@@ -166,7 +166,7 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
             density *= 1.15;
         else if (!best)
             density *= 0.8;
-        else if (failedDensity / bestDensity < 1.015)
+        else if (failedDensity / bestDensity < 1.005)
             break;
         else
             density = std::sqrt(bestDensity * failedDensity);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numeric>
 #include <string>
+#include <cstdlib>
 
 #include <glm/common.hpp>
 
@@ -209,8 +210,9 @@ public:
             ++m_open;
         // Tall charts try every step-th row, then slide down from where they fit: far fewer
         // tests, and at most a step higher than the lowest place.
-        const int step = std::max(1, s.height / 16);
-        const int from = std::max(m_open, m_searchFrom[bucketPair(s)]);
+        const bool noskip = std::getenv("UVNOSKIP") != nullptr;
+        const int step = noskip ? 1 : std::max(1, s.height / 16);
+        const int from = noskip ? m_open : std::max(m_open, m_searchFrom[bucketPair(s)]);
         for (int y = from; y + s.height <= m_size && y + s.height < topLimit; y += step) {
             bool rowsFit = true;
             for (int j = 0; j < s.height && rowsFit; ++j)
@@ -400,7 +402,7 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
     Growth growth;
     growth.r = (options.padding + 1) / 2;
     growth.rSmall = smallChartRadius(options.padding);
-    growth.smallTexels = options.smallChartTexels;
+    growth.smallTexels = std::getenv("UVT") ? std::atoi(std::getenv("UVT")) : options.smallChartTexels;
     std::vector<Mask> masks(charts.size());
     std::atomic<std::size_t> next{0};
     std::atomic<bool> tooLarge{false};
