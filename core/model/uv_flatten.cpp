@@ -307,11 +307,12 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     }
     if (chart.triangles.size() > 1 && stretchedArea > 0.05 * chart.area)
         return FlattenOutcome::Stretched;
+    // Turned first, so the overlap test sees the chart as it will be packed.
+    const double box = alignToSmallestBox(chart.uv);
     if (chart.triangles.size() > 1 && overlapsItself(chart, density))
         return FlattenOutcome::Overlapping;
     // A chart filling little of its smallest box (an L, a C, a zig-zag strip) leaves room that
     // others rarely fill: split it where it is large enough for the room to matter.
-    const double box = alignToSmallestBox(chart.uv);
     if (chart.triangles.size() > 1 && box * density * density > kCrookedMinTexels &&
         chart.area < kCrookedFill * box)
         return FlattenOutcome::Crooked;
