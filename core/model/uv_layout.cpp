@@ -242,7 +242,8 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
     layout.resolution = options.resolution;
     layout.padding = options.padding;
     layout.smallChartTexels = options.smallChartTexels;
-    layout.smallChartPadding = std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
+    layout.smallChartPadding =
+        std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
     layout.texelsPerUnit = density;
     layout.chartCount = std::uint32_t(charts.size());
     layout.pageCount = packing.pageCount;

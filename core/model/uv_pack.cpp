@@ -7,9 +7,9 @@
 #include <bit>
 #include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 #include <string>
-#include <cstdlib>
 
 #include <glm/common.hpp>
 
@@ -402,7 +402,8 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
     Growth growth;
     growth.r = (options.padding + 1) / 2;
     growth.rSmall = smallChartRadius(options.padding);
-    growth.smallTexels = std::getenv("UVT") ? std::atoi(std::getenv("UVT")) : options.smallChartTexels;
+    growth.smallTexels =
+        std::getenv("UVT") ? std::atoi(std::getenv("UVT")) : options.smallChartTexels;
     std::vector<Mask> masks(charts.size());
     std::atomic<std::size_t> next{0};
     std::atomic<bool> tooLarge{false};
