@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <limits>
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -16,8 +17,77 @@ namespace core::uvl {
 
 namespace {
 
+/** Charts filling less than this share of their smallest box, over kCrookedMinTexels, split. */
+constexpr double kCrookedFill = 0.55;
+constexpr double kCrookedMinTexels = 48.0 * 48.0;
+
 double signedArea(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c) {
     return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+/** The convex hull of points, counter-clockwise (Andrew's monotone chain). */
+std::vector<glm::dvec2> convexHull(std::vector<glm::dvec2> p) {
+    std::sort(p.begin(), p.end(), [](const glm::dvec2& a, const glm::dvec2& b) {
+        return a.x != b.x ? a.x < b.x : a.y < b.y;
+    });
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    if (p.size() < 3)
+        return p;
+    std::vector<glm::dvec2> hull(2 * p.size());
+    std::size_t k = 0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        while (k >= 2 && signedArea(hull[k - 2], hull[k - 1], p[i]) <= 0.0)
+            --k;
+        hull[k++] = p[i];
+    }
+    for (std::size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && signedArea(hull[k - 2], hull[k - 1], p[i]) <= 0.0)
+            --k;
+        hull[k++] = p[i];
+    }
+    hull.resize(k - 1);
+    return hull;
+}
+
+/**
+ * Turns a chart's uvs so the smallest rectangle around them is axis-aligned (one side of it lies
+ * on a side of the convex hull), and returns that rectangle's area. Masks of rectangular and
+ * long charts then have no empty corners, and the packer's quarter turns cover the rest.
+ */
+double alignToSmallestBox(std::vector<glm::dvec2>& uv) {
+    const std::vector<glm::dvec2> hull = convexHull(uv);
+    double bestArea = std::numeric_limits<double>::infinity();
+    glm::dvec2 bestAxis(1.0, 0.0);
+    for (std::size_t i = 0; i < hull.size(); ++i) {
+        const glm::dvec2 e = hull[(i + 1) % hull.size()] - hull[i];
+        const double len = glm::length(e);
+        if (!(len > 0.0))
+            continue;
+        const glm::dvec2 a = e / len, b(-a.y, a.x);
+        double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+        for (const glm::dvec2& q : hull) {
+            const double s[2] = {glm::dot(q, a), glm::dot(q, b)};
+            for (int k = 0; k < 2; ++k) {
+                lo[k] = std::min(lo[k], s[k]);
+                hi[k] = std::max(hi[k], s[k]);
+            }
+        }
+        const double area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+        if (area < bestArea * (1.0 - 1e-9)) {
+            bestArea = area;
+            bestAxis = a;
+        }
+    }
+    if (std::isinf(bestArea))
+        return 0.0;
+    glm::dvec2 lo(1e300);
+    for (glm::dvec2& q : uv) {
+        q = {glm::dot(q, bestAxis), bestAxis.x * q.y - bestAxis.y * q.x};
+        lo = glm::min(lo, q);
+    }
+    for (glm::dvec2& q : uv)
+        q -= lo;
+    return bestArea;
 }
 
 /** A unit vector perpendicular to n. */
@@ -237,8 +307,15 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     }
     if (chart.triangles.size() > 1 && stretchedArea > 0.05 * chart.area)
         return FlattenOutcome::Stretched;
+    // Turned first, so the overlap test sees the chart as it will be packed.
+    const double box = alignToSmallestBox(chart.uv);
     if (chart.triangles.size() > 1 && overlapsItself(chart, density))
         return FlattenOutcome::Overlapping;
+    // A chart filling little of its smallest box (an L, a C, a zig-zag strip) leaves room that
+    // others rarely fill: split it where it is large enough for the room to matter.
+    if (chart.triangles.size() > 1 && box * density * density > kCrookedMinTexels &&
+        chart.area < kCrookedFill * box)
+        return FlattenOutcome::Crooked;
     return FlattenOutcome::Good;
 }
 

@@ -35,6 +35,8 @@ std::string checkOptions(const UvLayoutOptions& o) {
     if (!(o.maxNormalDeviationDegrees > 0.0f && o.maxNormalDeviationDegrees < 180.0f) ||
         !(o.sharpEdgeDegrees > 0.0f && o.sharpEdgeDegrees <= 180.0f))
         return "the chart angles must be between 0 and 180 degrees";
+    if (o.smallChartTexels < 0 || o.smallChartTexels > 65536)
+        return "the small chart size must be 0 to 65536 texels";
     if (!(o.maxChartStretch > 1.0f))
         return "the chart stretch limit must be above 1";
     return {};
@@ -87,6 +89,7 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
     const double total = double(std::max<std::size_t>(surface.area.size(), 1));
     std::atomic<bool> stop{false};
     std::size_t finishedTriangles = 0;
+    double reported = 0.0; // charts split again take back what they reported: never report less
     for (int round = 0; !pending.empty(); ++round) {
         std::vector<Chart> work(pending.size());
         std::vector<uvl::FlattenOutcome> outcome(pending.size());
@@ -108,7 +111,8 @@ Result<std::vector<Chart>> flattenAll(const uvl::Surface& surface,
                 doneTriangles += work[i].triangles.size();
                 if (part == 0) {
                     const double f = double(finishedTriangles + doneTriangles.load()) / total;
-                    if (!reportProgress(progress, from + (to - from) * std::min(f, 1.0)))
+                    reported = std::max(reported, std::min(f, 1.0));
+                    if (!reportProgress(progress, from + (to - from) * reported))
                         stop = true;
                 }
             }
@@ -145,7 +149,7 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
     std::optional<uvl::Packing> best;
     double bestDensity = 0.0, failedDensity = std::numeric_limits<double>::infinity();
     std::atomic<bool> cancel{false};
-    constexpr int kAttempts = 14;
+    constexpr int kAttempts = 18;
     for (int attempt = 0; attempt < kAttempts; ++attempt) {
         Result<uvl::Packing> packing = uvl::packCharts(charts, density, options, 1, cancel);
         if (packing.cancelled())
@@ -162,7 +166,7 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
             density *= 1.15;
         else if (!best)
             density *= 0.8;
-        else if (failedDensity / bestDensity < 1.015)
+        else if (failedDensity / bestDensity < 1.005)
             break;
         else
             density = std::sqrt(bestDensity * failedDensity);
@@ -237,6 +241,9 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
     UvLayout layout;
     layout.resolution = options.resolution;
     layout.padding = options.padding;
+    layout.smallChartTexels = options.smallChartTexels;
+    layout.smallChartPadding =
+        std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
     layout.texelsPerUnit = density;
     layout.chartCount = std::uint32_t(charts.size());
     layout.pageCount = packing.pageCount;

@@ -29,6 +29,12 @@ struct UvLayoutOptions {
      * this (max(r, 1/r) of its triangles' UV to 3D area ratios, relative to the chart).
      */
     float maxChartStretch = 1.4f;
+    /**
+     * Charts filling at most this many texels keep only half the padding (rounded up to whole
+     * texels on each side) between each other, and the full padding to larger charts and a
+     * page's border. 0: every chart keeps the full padding.
+     */
+    int smallChartTexels = 64;
     /** Worker threads (0: one per core). The layout is the same for any count. */
     unsigned threads = 0;
 };
@@ -51,6 +57,13 @@ struct UvLayout {
     std::uint32_t pageCount = 0;
     int resolution = 0;
     int padding = 0;
+    /**
+     * Two charts that each cover (texel centres inside their triangles) at most
+     * smallChartTexels texels keep at least smallChartPadding texels between them; any other two
+     * at least padding.
+     */
+    int smallChartTexels = 0;
+    int smallChartPadding = 0;
     /** The density the charts were packed at: texels per model unit. */
     double texelsPerUnit = 0.0;
 };

@@ -52,12 +52,14 @@ struct Chart {
     double area = 0.0;          // 3D area
 };
 
-enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched };
+enum class FlattenOutcome { Good, Flipped, Overlapping, Stretched, Crooked };
 
 /**
  * Flattens chart (triangles set) with least-squares conformal maps, or by projection when it is
- * planar, and scales it so its UV area is its 3D area. Good, or why it has to be split; overlaps
- * are looked for at half a texel of the expected density (texels per model unit).
+ * planar, scales it so its UV area is its 3D area and turns it so its smallest box is
+ * axis-aligned. Good, or why it has to be split; overlaps are looked for at half a texel of the
+ * expected density (texels per model unit), and a chart of many texels at that density that
+ * fills too little of its box is Crooked.
  */
 FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
                             double density);
@@ -84,6 +86,12 @@ struct Packing {
 Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                            const UvLayoutOptions& options, std::uint32_t maxPages,
                            const std::atomic<bool>& cancel);
+
+/**
+ * How far small charts are grown (the other charts: half the padding, rounded up); two small
+ * charts keep twice this between them, at most the padding.
+ */
+int smallChartRadius(int padding);
 
 /** The texel position of a chart's uv after placement (rotation and offset applied). */
 glm::dvec2 placeUv(const Placement& placement, const glm::dvec2& uv, double density);

@@ -7,6 +7,7 @@
 #include <bit>
 #include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 
@@ -19,11 +20,12 @@ namespace core::uvl {
 
 namespace {
 
-/** A chart's mask: the texels it fills, grown by half the padding. */
+/** A chart's mask: the texels it fills, grown by half the padding (or its own, when small). */
 struct Mask {
     int width = 0, height = 0;
     glm::dvec2 origin{0.0}; // texel position (uv × density) of the mask's corner
     std::vector<std::uint8_t> bits;
+    bool small = false; // fills at most smallChartTexels texels: grown by the small radius
 };
 
 /**
@@ -77,7 +79,14 @@ void dilate(std::vector<std::uint8_t>& mask, int w, int h, int r) {
                     mask[std::size_t(k) * std::size_t(w) + std::size_t(x)] = 1;
 }
 
-Mask maskChart(const Chart& chart, double density, int r) {
+/** Grows charts: r for all, rSmall for those filling at most smallTexels texels. */
+struct Growth {
+    int r = 0, rSmall = 0;
+    int smallTexels = 0;
+};
+
+Mask maskChart(const Chart& chart, double density, const Growth& growth) {
+    const int r = growth.r;
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const glm::dvec2& p : chart.uv) {
         lo = glm::min(lo, p * density);
@@ -101,7 +110,9 @@ Mask maskChart(const Chart& chart, double density, int r) {
         const int y = std::clamp(int(std::floor(q.y)), 0, h - 1);
         bits[std::size_t(y) * std::size_t(w) + std::size_t(x)] = 1;
     }
-    dilate(bits, w, h, r);
+    const bool small =
+        std::count(bits.begin(), bits.end(), 1u) <= std::ptrdiff_t(growth.smallTexels);
+    dilate(bits, w, h, small ? growth.rSmall : r);
     int x0 = w, x1 = -1, y0 = h, y1 = -1;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x)
@@ -115,6 +126,7 @@ Mask maskChart(const Chart& chart, double density, int r) {
     m.width = x1 - x0 + 1;
     m.height = y1 - y0 + 1;
     m.origin = shift + glm::dvec2(x0, y0);
+    m.small = small;
     m.bits.resize(std::size_t(m.width) * std::size_t(m.height));
     for (int y = 0; y < m.height; ++y)
         std::copy_n(&bits[std::size_t(y + y0) * std::size_t(w) + std::size_t(x0)], m.width,
@@ -198,8 +210,9 @@ public:
             ++m_open;
         // Tall charts try every step-th row, then slide down from where they fit: far fewer
         // tests, and at most a step higher than the lowest place.
-        const int step = std::max(1, s.height / 16);
-        const int from = std::max(m_open, m_searchFrom[bucketPair(s)]);
+        const bool noskip = std::getenv("UVNOSKIP") != nullptr;
+        const int step = noskip ? 1 : std::max(1, s.height / 16);
+        const int from = noskip ? m_open : std::max(m_open, m_searchFrom[bucketPair(s)]);
         for (int y = from; y + s.height <= m_size && y + s.height < topLimit; y += step) {
             bool rowsFit = true;
             for (int j = 0; j < s.height && rowsFit; ++j)
@@ -227,6 +240,33 @@ public:
             }
         }
         return false;
+    }
+
+    /**
+     * Grows what is taken by d texels, and takes a frame of d texels round the page: charts
+     * grown by d less then keep the same distance to what is placed and to the border.
+     */
+    void grow(int d) {
+        if (d <= 0)
+            return;
+        std::vector<std::uint8_t> taken(m_run.size());
+        for (std::size_t i = 0; i < m_run.size(); ++i)
+            taken[i] = m_run[i] < 0 ? 1u : 0u;
+        dilate(taken, m_size, m_size, d);
+        for (int y = 0; y < m_size; ++y) {
+            std::int16_t* row = &m_run[index(0, y)];
+            const std::uint8_t* t = &taken[index(0, y)];
+            const bool frame = y < d || y >= m_size - d;
+            for (int x = m_size - 1; x >= 0; --x) {
+                const bool isTaken = frame || x < d || x >= m_size - d || t[x] != 0;
+                const int right = x + 1 < m_size ? row[x + 1] : 0;
+                row[x] = isTaken ? std::int16_t(right < 0 ? right - 1 : -1)
+                                 : std::int16_t(right > 0 ? right + 1 : 1);
+            }
+            m_dirty[std::size_t(y)] = 1;
+        }
+        std::fill(m_searchFrom.begin(), m_searchFrom.end(), 0);
+        m_open = 0;
     }
 
     void place(const Shape& s, int x, int y) {
@@ -351,11 +391,19 @@ glm::dvec2 placeUv(const Placement& placement, const glm::dvec2& uv, double dens
     return r + glm::dvec2(placement.x, placement.y);
 }
 
+int smallChartRadius(int padding) {
+    return ((padding + 1) / 2 + 1) / 2;
+}
+
 Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                            const UvLayoutOptions& options, std::uint32_t maxPages,
                            const std::atomic<bool>& cancel) {
     const int pageSize = options.resolution;
-    const int r = (options.padding + 1) / 2;
+    Growth growth;
+    growth.r = (options.padding + 1) / 2;
+    growth.rSmall = smallChartRadius(options.padding);
+    growth.smallTexels =
+        std::getenv("UVT") ? std::atoi(std::getenv("UVT")) : options.smallChartTexels;
     std::vector<Mask> masks(charts.size());
     std::atomic<std::size_t> next{0};
     std::atomic<bool> tooLarge{false};
@@ -373,7 +421,7 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                 break;
             }
             if (charts[i].area > 0.0) // charts without area are points that need no room
-                masks[i] = maskChart(charts[i], density, r);
+                masks[i] = maskChart(charts[i], density, growth);
         }
     });
     if (cancel)
@@ -399,9 +447,15 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
     };
     if (allTexels > double(maxPages) * double(pageSize) * double(pageSize))
         return noRoom();
+    // Small charts go last: before them, what is placed grows so that their smaller rings keep
+    // the full padding to it.
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        if (masks[a].small != masks[b].small)
+            return masks[b].small;
         return texels[a] != texels[b] ? texels[a] > texels[b] : a < b;
     });
+    const int smallGrowth = growth.r - growth.rSmall;
+    bool smallPhase = false;
 
     Packing packing;
     packing.placements.resize(charts.size());
@@ -415,6 +469,11 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
             continue; // a point: at the first page's corner, where it covers nothing
         if (std::min(m.width, m.height) > pageSize)
             return tooLargeError();
+        if (m.small && !smallPhase) {
+            smallPhase = true;
+            for (Page& page : pages)
+                page.grow(smallGrowth);
+        }
         Shape shapes[4];
         for (int rot = 0; rot < 4; ++rot)
             shapes[rot] = rotatedShape(m, rot);
@@ -424,6 +483,8 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
                 if (pages.size() >= maxPages)
                     return noRoom();
                 pages.emplace_back(pageSize);
+                if (smallPhase)
+                    pages.back().grow(smallGrowth);
             }
             long long bestTop = LLONG_MAX;
             int bestX = 0, bestY = 0, bestRotation = -1;

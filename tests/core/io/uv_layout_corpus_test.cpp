@@ -43,6 +43,15 @@ TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
     EXPECT_LE(m.stretchP95, 1.5);
     EXPECT_GT(m.charts, 100u);
     EXPECT_GT(m.packingEfficiency, 0.2);
+
+    // Its thousands of charts of a few texels share their padding, so they fit a small page too.
+    options.resolution = 512;
+    auto small = core::makeUvLayout(*mesh, options);
+    ASSERT_TRUE(small.ok()) << small.error();
+    const core::UvLayoutMetrics s = core::measureUvLayout(*small);
+    EXPECT_EQ(small->pageCount, 1u);
+    EXPECT_EQ(s.flippedTriangles, 0u);
+    EXPECT_EQ(s.overlappingTexels, 0u);
 }
 
 } // namespace

@@ -151,6 +151,16 @@ void expectValidLayout(const Mesh& in, const UvLayout& l) {
     }
     EXPECT_EQ(twice, 0u) << "texels covered by more than one triangle";
 
+    // Two small charts (covering at most smallChartTexels texels each) keep smallChartPadding
+    // texels between them, any other two the padding.
+    std::vector<std::size_t> covered(l.chartCount, 0u);
+    for (const std::uint32_t c : owner)
+        if (c != kEmpty)
+            ++covered[c];
+    const auto small = [&](std::uint32_t c) {
+        return covered[c] <= std::size_t(l.smallChartTexels);
+    };
+    EXPECT_LE(l.smallChartPadding, l.padding);
     std::size_t tooClose = 0;
     const int p = l.padding;
     for (std::uint32_t page = 0; page < l.pageCount; ++page)
@@ -168,7 +178,10 @@ void expectValidLayout(const Mesh& in, const UvLayout& l) {
                         const std::uint32_t o =
                             owner[texels * page + std::size_t(ny) * std::size_t(size) +
                                   std::size_t(nx)];
-                        tooClose += o != kEmpty && o != c;
+                        if (o == kEmpty || o == c)
+                            continue;
+                        const int gap = small(c) && small(o) ? l.smallChartPadding : p;
+                        tooClose += std::max(std::abs(dx), std::abs(dy)) <= gap;
                     }
             }
     EXPECT_EQ(tooClose, 0u) << "texels of different charts closer than the padding";
@@ -283,6 +296,41 @@ TEST(UvLayout, BadInputIsAnError) {
     auto tiny = core::makeUvLayout(withoutUvs(core::makeHexRing(4)), o);
     ASSERT_FALSE(tiny.ok());
     EXPECT_NE(tiny.error().find("resolution"), std::string::npos);
+}
+
+TEST(UvLayout, SmallChartsShareTheirPadding) {
+    // 150 separate unit squares: on a 64² page each is a few texels, so with the full padding of
+    // 4 each takes at least 5 × 5 texels and they do not fit; small charts keep half of it
+    // between each other and fit.
+    Mesh mesh;
+    mesh.materials.resize(1);
+    for (int i = 0; i < 150; ++i) {
+        const float x = float(i % 15) * 2.0f, y = float(i / 15) * 2.0f;
+        const auto base = std::uint32_t(mesh.positions.size());
+        for (const glm::vec2 c :
+             {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(1, 1), glm::vec2(0, 1)}) {
+            mesh.positions.emplace_back(x + c.x, y + c.y, 0.0f);
+            mesh.normals.emplace_back(0.0f, 0.0f, 1.0f);
+        }
+        mesh.indices.insert(mesh.indices.end(),
+                            {base, base + 1, base + 2, base, base + 2, base + 3});
+        mesh.triangleMaterial.insert(mesh.triangleMaterial.end(), {0u, 0u});
+    }
+    ASSERT_TRUE(mesh.validate().ok()) << mesh.validate().error();
+    UvLayoutOptions o;
+    o.resolution = 64;
+    o.padding = 4;
+    auto shared = core::makeUvLayout(mesh, o);
+    ASSERT_TRUE(shared.ok()) << shared.error();
+    EXPECT_EQ(shared->chartCount, 150u);
+    EXPECT_EQ(shared->smallChartPadding, 2);
+    expectValidLayout(mesh, *shared);
+
+    o.smallChartTexels = 0;
+    auto full = core::makeUvLayout(mesh, o);
+    ASSERT_FALSE(full.ok());
+    EXPECT_EQ(full.errorKind(), core::ErrorKind::BadInput);
+    EXPECT_NE(full.error().find("do not fit"), std::string::npos) << full.error();
 }
 
 TEST(UvLayout, DegenerateTrianglesKeepTheirPlaceAndCoverNothing) {
