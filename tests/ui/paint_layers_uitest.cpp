@@ -472,6 +472,8 @@ TEST_F(PaintLayersUiTest, ExportWritesEachPaintLayerAsTheCommandLineDoes) {
         name->setFocus();
         name->selectAll();
         QTest::keyClicks(name, dir.filePath(QStringLiteral("gui.png")));
+        // The dialog with the box ticked, to look at.
+        dialog->grab().save(QDir::current().absoluteFilePath(QStringLiteral("export_dialog.png")));
         QTest::keyClick(name, Qt::Key_Return);
     });
     exportPng->trigger();
