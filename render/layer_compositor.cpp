@@ -48,7 +48,8 @@ core::Result<Program> buildProgram(unsigned variant) {
             defines.emplace_back(name);
     auto built = variant & kShade
                      ? ShaderProgram::build({"composite_shade.comp"}, defines)
-                     : ShaderProgram::build({"composite.vert", "composite.frag"}, defines);
+                     : ShaderProgram::build(
+                           {"composite.vert", "composite.frag", "material_shading.frag"}, defines);
     if (!built)
         return core::Error{built.error()};
     Program p{std::move(built).value()};

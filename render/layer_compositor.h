@@ -13,6 +13,7 @@
 #include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
+#include "render/material_channel.h"
 
 namespace render {
 
@@ -23,14 +24,7 @@ enum class LayerDisplay {
     Segmentation, // the visible fragment coloured by its region (the paper's Figure 2)
 };
 
-/**
- * Which material channel Composite and SingleLayer show. Material lights base colour with the
- * metallic-roughness textures given by setMetallicRoughness() (GGX specular from a key, fill and
- * rim light and a sky-and-ground environment that metal reflects); fragments without one shade
- * as roughness 1, metal 0, which is the plain headlight shading. The others show one channel
- * unlit: the base colour, or roughness or metallic as grey (the texel's byte as the grey level).
- */
-enum class MaterialChannel { Material, BaseColor, Roughness, Metallic };
+// MaterialChannel (render/material_channel.h): which channel Composite and SingleLayer show.
 
 struct CompositeOptions {
     LayerDisplay display = LayerDisplay::Composite;

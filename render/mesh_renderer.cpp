@@ -2,6 +2,8 @@
 #include "render/mesh_renderer.h"
 
 #include <algorithm>
+#include <array>
+#include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
@@ -25,10 +27,40 @@ struct MaterialRun {
     std::uint32_t triangleCount;
     std::uint32_t material;
 };
+
+/** A program variant: the channel shown, and whether the material has metallic-roughness. */
+std::size_t variantIndex(MaterialChannel channel, bool material) {
+    return std::size_t(channel) * 2 + (material ? 1 : 0);
+}
+
+/** mesh.frag with the defines of a variant. */
+core::Result<ShaderProgram> buildVariant(MaterialChannel channel, bool material) {
+    std::vector<std::string> defines;
+    if (material)
+        defines.emplace_back("MATERIAL");
+    switch (channel) {
+    case MaterialChannel::Material:
+        break;
+    case MaterialChannel::BaseColor:
+        defines.emplace_back("CHANNEL_BASE");
+        break;
+    case MaterialChannel::Roughness:
+        defines.emplace_back("CHANNEL_ROUGHNESS");
+        break;
+    case MaterialChannel::Metallic:
+        defines.emplace_back("CHANNEL_METALLIC");
+        break;
+    }
+    return ShaderProgram::build({"mesh.vert", "mesh.frag", "material_shading.frag"}, defines);
+}
 } // namespace
 
 struct MeshRenderer::Impl {
-    ShaderProgram program;
+    // Built when first drawn (llvmpipe pays for every instruction, so features are compiled in
+    // only where a run needs them); [0], the plain one, by initialize().
+    std::array<ShaderProgram, 8> programs;
+    std::array<bool, 8> failed{};
+    std::vector<PaintTexture> metallicRoughness; // per mesh texture; id 0: none
     GLuint vao = 0, vbo = 0, ibo = 0;
     GLuint colorBuffer = 0; // its own buffer, so painting updates it in place
     std::size_t vertexCount = 0;
@@ -70,6 +102,22 @@ struct MeshRenderer::Impl {
         return made;
     }
 
+    /**
+     * The program for channel and material, built on first use; the plain one where a variant
+     * fails to build (the picture falls back to headlight shading instead of nothing).
+     */
+    const ShaderProgram* program(MaterialChannel channel, bool material) {
+        const std::size_t i = variantIndex(channel, material);
+        if (!programs[i].valid() && !failed[i]) {
+            auto built = buildVariant(channel, material);
+            if (built)
+                programs[i] = std::move(built).value();
+            else
+                failed[i] = true;
+        }
+        return programs[i].valid() ? &programs[i] : &programs[0];
+    }
+
     void releaseStandIn() {
         if (standInVao)
             glDeleteVertexArrays(1, &standInVao);
@@ -92,6 +140,7 @@ struct MeshRenderer::Impl {
         vao = vbo = ibo = colorBuffer = 0;
         vertexCount = 0;
         textures.clear();
+        metallicRoughness.clear();
         runs.clear();
         hasMesh = false;
     }
@@ -104,10 +153,10 @@ MeshRenderer::~MeshRenderer() {
 }
 
 core::Status MeshRenderer::initialize() {
-    auto program = ShaderProgram::build({"mesh.vert", "mesh.frag"});
+    auto program = buildVariant(MaterialChannel::Material, false);
     if (!program)
         return core::Error{program.error()};
-    m_impl->program = std::move(program).value();
+    m_impl->programs[0] = std::move(program).value();
     return {};
 }
 
@@ -185,6 +234,23 @@ void MeshRenderer::updateTexels(std::uint32_t texture, int x, int y, int width, 
         d.textures[texture].update(image, x, y, width, height);
 }
 
+void MeshRenderer::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (texture >= d.textures.size() || image.empty())
+        return;
+    if (d.metallicRoughness.size() < d.textures.size())
+        d.metallicRoughness.resize(d.textures.size());
+    d.metallicRoughness[texture] = PaintTexture();
+    d.metallicRoughness[texture].create(image, true);
+}
+
+void MeshRenderer::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
+                                           int height, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (texture < d.metallicRoughness.size() && d.metallicRoughness[texture].id() != 0)
+        d.metallicRoughness[texture].update(image, x, y, width, height);
+}
+
 void MeshRenderer::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
     Impl& d = *m_impl;
     if (!d.colorBuffer || first >= d.vertexCount)
@@ -204,7 +270,7 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
     d.lastTriangles = 0;
-    if (!d.hasMesh || !d.program.valid())
+    if (!d.hasMesh || !d.programs[0].valid())
         return;
     const bool standIn = options.standIn && d.standInVao;
     glEnable(GL_DEPTH_TEST);
@@ -213,25 +279,36 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         glEnable(GL_CULL_FACE);
     else
         glDisable(GL_CULL_FACE);
-    d.program.use();
-    glUniformMatrix4fv(d.program.uniform("uView"), 1, GL_FALSE, glm::value_ptr(view.view));
-    glUniformMatrix4fv(d.program.uniform("uProj"), 1, GL_FALSE, glm::value_ptr(view.proj));
-    glUniform1i(d.program.uniform("uBaseColorTexture"), 0);
-    const GLint factorLocation = d.program.uniform("uBaseColorFactor");
-    const GLint hasTextureLocation = d.program.uniform("uHasTexture");
     glBindVertexArray(standIn ? d.standInVao : d.vao);
+    const ShaderProgram* current = nullptr;
     for (const MaterialRun& run : standIn ? d.standInRuns : d.runs) {
         const core::Material& material = d.materials[run.material];
-        glUniform4fv(factorLocation, 1, glm::value_ptr(material.baseColorFactor));
         const bool textured = material.baseColorTexture >= 0;
-        glUniform1i(hasTextureLocation, textured);
+        const std::size_t texture = textured ? std::size_t(material.baseColorTexture) : 0;
+        const bool lit = textured && texture < d.metallicRoughness.size() &&
+                         d.metallicRoughness[texture].id() != 0;
+        const ShaderProgram* program = d.program(options.channel, lit);
+        if (program != current) {
+            current = program;
+            program->use();
+            glUniformMatrix4fv(program->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view.view));
+            glUniformMatrix4fv(program->uniform("uProj"), 1, GL_FALSE, glm::value_ptr(view.proj));
+            glUniform1i(program->uniform("uBaseColorTexture"), 0);
+            glUniform1i(program->uniform("uMetallicRoughness"), 1);
+        }
+        glUniform4fv(program->uniform("uBaseColorFactor"), 1,
+                     glm::value_ptr(material.baseColorFactor));
+        glUniform1i(program->uniform("uHasTexture"), textured);
         if (textured)
-            glBindTextureUnit(0, d.textures[std::size_t(material.baseColorTexture)].id());
+            glBindTextureUnit(0, d.textures[texture].id());
+        if (lit && program != &d.programs[0])
+            glBindTextureUnit(1, d.metallicRoughness[texture].id());
         glDrawElements(GL_TRIANGLES, GLsizei(run.triangleCount * 3), GL_UNSIGNED_INT,
                        reinterpret_cast<const void*>(std::uintptr_t(run.firstTriangle) * 12));
         d.lastTriangles += run.triangleCount;
     }
     glBindVertexArray(0);
+    glBindTextureUnit(1, 0);
     glUseProgram(0);
 }
 
@@ -239,7 +316,8 @@ void MeshRenderer::release() {
     if (!m_impl)
         return;
     m_impl->releaseMesh();
-    m_impl->program = ShaderProgram();
+    m_impl->programs = {};
+    m_impl->failed = {};
 }
 
 } // namespace render

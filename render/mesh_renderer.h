@@ -10,6 +10,7 @@
 #include "core/base/result.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
+#include "render/material_channel.h"
 
 namespace render {
 
@@ -18,11 +19,16 @@ struct DrawOptions {
     bool clear = true;
     bool cullBackFaces = false; // shading shows both sides; capture culls (docs/architecture.md §3)
     bool standIn = false;       // draw the stand-in (setStandIn) instead of the mesh, if set
+    /** What is shown, as the compositor shows it (render/material_channel.h). */
+    MaterialChannel channel = MaterialChannel::Material;
 };
 
 /**
- * Draws a core::Mesh shaded: base color factor × base color texture (sRGB) × vertex colors, with
- * a headlight. Needs a current GL context for every call, the one it was initialized in.
+ * Draws a core::Mesh shaded as the compositor shades the depth layers: base color factor × base
+ * color texture (sRGB) × vertex colors with a headlight, lit as a metallic-roughness material
+ * where a texture has one (setMetallicRoughness()), or one channel alone (DrawOptions::channel).
+ * The stand-in is drawn the same way. Needs a current GL context for every call, the one it was
+ * initialized in.
  */
 class MeshRenderer {
 public:
@@ -54,6 +60,15 @@ public:
      */
     void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
                       const core::Image& image);
+    /**
+     * Sets the metallic-roughness image of mesh texture `texture` (RGBA8, G roughness, B
+     * metallic, linear; same size), as LayerCompositor::setMetallicRoughness(); a material with
+     * that base colour texture is then lit as metallic-roughness. A new mesh clears them.
+     */
+    void setMetallicRoughness(std::uint32_t texture, const core::Image& image);
+    /** Painting: as updateTexels() for the metallic-roughness image of `texture`. */
+    void updateMetallicRoughness(std::uint32_t texture, int x, int y, int width, int height,
+                                 const core::Image& image);
     /** Replaces the colours of vertices [first, first + colors.size()) (clamped to the mesh). */
     void updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors);
     /** Draws into the currently bound framebuffer, with view.width × view.height as viewport. */

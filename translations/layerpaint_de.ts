@@ -1930,6 +1930,26 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Could not export to “%1”.</source>
         <translation>Export nach „%1“ nicht möglich.</translation>
     </message>
+    <message>
+        <source>Also write each &amp;paint layer as images</source>
+        <translation>Auch jede &amp;Malschicht als Bilder schreiben</translation>
+    </message>
+    <message>
+        <source>Beside the export, per paint layer: NAME_layer-N-LAYER_basecolor.png and its roughness, metallic and mask images, as the command line&apos;s --per-layer</source>
+        <translation>Neben dem Export, je Malschicht: NAME_layer-N-SCHICHT_basecolor.png und ihre Bilder für Rauheit, Metall und Maske, wie --per-layer der Kommandozeile</translation>
+    </message>
+    <message>
+        <source>The model has no paint layers</source>
+        <translation>Das Modell hat keine Malschichten</translation>
+    </message>
+    <message>
+        <source>There are no paint layers to export (they need a paint texture).</source>
+        <translation>Es gibt keine Malschichten zum Exportieren (sie brauchen eine Maltextur).</translation>
+    </message>
+    <message>
+        <source>Could not export the paint layers.</source>
+        <translation>Die Malschichten konnten nicht exportiert werden.</translation>
+    </message>
 </context>
 <context>
     <name>ui::QuickGuideDialog</name>

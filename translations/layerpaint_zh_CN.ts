@@ -1927,6 +1927,26 @@ connectivity %3 ms, regions %4 ms
         <source>Could not export to “%1”.</source>
         <translation>无法导出到“%1”。</translation>
     </message>
+    <message>
+        <source>Also write each &amp;paint layer as images</source>
+        <translation>同时将每个绘画层写为图像(&amp;P)</translation>
+    </message>
+    <message>
+        <source>Beside the export, per paint layer: NAME_layer-N-LAYER_basecolor.png and its roughness, metallic and mask images, as the command line&apos;s --per-layer</source>
+        <translation>在导出文件旁，每个绘画层写出 NAME_layer-N-LAYER_basecolor.png 及其粗糙度、金属度和蒙版图像，与命令行的 --per-layer 相同</translation>
+    </message>
+    <message>
+        <source>The model has no paint layers</source>
+        <translation>该模型没有绘画层</translation>
+    </message>
+    <message>
+        <source>There are no paint layers to export (they need a paint texture).</source>
+        <translation>没有可导出的绘画层（绘画层需要绘画纹理）。</translation>
+    </message>
+    <message>
+        <source>Could not export the paint layers.</source>
+        <translation>无法导出绘画层。</translation>
+    </message>
 </context>
 <context>
     <name>ui::QuickGuideDialog</name>

@@ -82,17 +82,40 @@ std::string sanitizeLayerName(const std::string& name) {
     return out.empty() ? "layer" : out;
 }
 
+PaintLayerExport paintLayerExport(const PaintLayerStack& stack) {
+    PaintLayerExport out;
+    out.pages = stack.pages();
+    for (std::size_t i = 0; i < stack.size(); ++i) {
+        const PaintLayer& layer = stack.layer(i);
+        PaintLayerImages images;
+        images.settings = layer.settings;
+        for (std::size_t c = 0; c < kPaintChannels; ++c)
+            if (layer.channels[c])
+                images.channels[c] = std::make_shared<const TiledPlane>(*layer.channels[c]);
+        if (layer.mask)
+            images.mask = std::make_shared<const TiledPlane>(*layer.mask);
+        out.layers.push_back(std::move(images));
+    }
+    return out;
+}
+
 Result<std::vector<std::string>> exportPaintLayerImages(const std::string& path,
                                                         const PaintLayerStack& stack,
+                                                        const ProgressFn& progress) {
+    return exportPaintLayerImages(path, paintLayerExport(stack), progress);
+}
+
+Result<std::vector<std::string>> exportPaintLayerImages(const std::string& path,
+                                                        const PaintLayerExport& layers,
                                                         const ProgressFn& progress) {
     const std::filesystem::path target(path);
     const std::string stem = target.stem().string();
     const std::filesystem::path folder = target.parent_path();
     std::vector<std::string> files;
-    const std::size_t pages = stack.pages().size();
-    const std::size_t steps = std::max<std::size_t>(1, stack.size() * pages);
-    for (std::size_t i = 0; i < stack.size(); ++i) {
-        const PaintLayer& layer = stack.layer(i);
+    const std::size_t pages = layers.pages.size();
+    const std::size_t steps = std::max<std::size_t>(1, layers.layers.size() * pages);
+    for (std::size_t i = 0; i < layers.layers.size(); ++i) {
+        const PaintLayerImages& layer = layers.layers[i];
         const std::string prefix =
             stem + "_layer-" + std::to_string(i + 1) + "-" + sanitizeLayerName(layer.settings.name);
         for (std::uint32_t p = 0; p < pages; ++p) {
@@ -111,7 +134,7 @@ Result<std::vector<std::string>> exportPaintLayerImages(const std::string& path,
                 Image image;
                 if (layer.settings.kind == PaintLayerKind::Fill) {
                     if (const auto texel = fillTexel(layer.settings.fill, c))
-                        image = constantImage(stack.pages()[p], *texel);
+                        image = constantImage(layers.pages[p], *texel);
                 } else if (layer.channels[c]) {
                     image = planeImage(*layer.channels[c], p);
                 }

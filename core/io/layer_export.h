@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,22 @@ namespace core {
  */
 std::string sanitizeLayerName(const std::string& name);
 
+/** A paint layer's settings and planes (null: none), as exportPaintLayerImages() reads them. */
+struct PaintLayerImages {
+    PaintLayerSettings settings;
+    std::array<std::shared_ptr<const TiledPlane>, kPaintChannels> channels;
+    std::shared_ptr<const TiledPlane> mask;
+};
+
+/** A copy of the paint layers of a stack (bottom first) that another thread can export. */
+struct PaintLayerExport {
+    std::vector<PageSize> pages;
+    std::vector<PaintLayerImages> layers;
+};
+
+/** Copies the planes of stack's layers (taken on the thread that owns the stack). */
+PaintLayerExport paintLayerExport(const PaintLayerStack& stack);
+
 /**
  * Writes every paint layer of stack as PNG images beside path (STEM.EXT): per layer (index from
  * 1, the one right above the base) and page, STEM_layer-INDEX-NAME_CHANNEL.png with CHANNEL
@@ -26,6 +44,10 @@ std::string sanitizeLayerName(const std::string& name);
  */
 Result<std::vector<std::string>> exportPaintLayerImages(const std::string& path,
                                                         const PaintLayerStack& stack,
+                                                        const ProgressFn& progress = {});
+/** The same for a copy made by paintLayerExport() (the GUI exports it on a worker thread). */
+Result<std::vector<std::string>> exportPaintLayerImages(const std::string& path,
+                                                        const PaintLayerExport& layers,
                                                         const ProgressFn& progress = {});
 
 } // namespace core

@@ -2,32 +2,47 @@
 // The Paint Layers panel through real Qt events: a new layer (Ctrl+Shift+N), a stroke on the
 // trefoil, multiply in the blend combo, the eye, and Ctrl+Z back through each step, with the
 // document's stack and the painted bytes checked after every one. Needs a display with OpenGL 4.5
-// (run under xvfb-run; Mesa llvmpipe is enough).
+// (run under xvfb-run; Mesa llvmpipe is enough). Also: File ▸ Export with "each paint layer as
+// images" writes the files `layerpaint-cli export --per-layer` writes for the same project.
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QColorDialog>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QFileDialog>
+#include <QImage>
+#include <QLineEdit>
+#include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QUndoStack>
+#include <QWindow>
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "core/document/document.h"
+#include "core/io/layer_export.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/panels/brush_panel.h"
 #include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/project_controller.h"
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
@@ -35,6 +50,30 @@ namespace {
 
 using namespace ui_test;
 using Panel = ui::PaintLayersPanel;
+
+constexpr int kSaveTimeoutMs = 120000;
+constexpr int kCliTimeoutMs = 300000;
+
+/** Runs act on the next modal dialog of type T once it is shown (its exec() runs meanwhile). */
+template <typename T> void onNextModal(std::function<void(T*)> act) {
+    auto* timer = new QTimer(qApp);
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, act] {
+        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
+        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
+            !widget->windowHandle()->isExposed())
+            return;
+        timer->stop();
+        timer->deleteLater();
+        act(widget);
+    });
+    timer->start();
+}
+
+/** The pixels of an image file (RGBA8), empty if it cannot be read. */
+QImage pixelsOf(const QString& file) {
+    return QImage(file).convertToFormat(QImage::Format_RGBA8888);
+}
 
 class PaintLayersUiTest : public WindowTest {
 protected:
@@ -90,6 +129,19 @@ protected:
         return item->icon(Panel::ThumbnailColumn).pixmap(32, 32).toImage();
     }
     void undo() { QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier); }
+    /** A short horizontal stroke of colour from start with the mouse. */
+    void stroke(QPoint start, glm::vec4 color) {
+        core::Brush brush = doc().brush();
+        brush.radius = 8.0f;
+        brush.hardness = 1.0f;
+        brush.color = color;
+        m_window->setBrush(brush);
+        ui::Viewport* viewport = m_window->viewport();
+        QTest::mousePress(viewport, Qt::LeftButton, Qt::NoModifier, start);
+        for (int step = 1; step <= 6; ++step)
+            QTest::mouseMove(viewport, start + QPoint(2 * step, 0));
+        QTest::mouseRelease(viewport, Qt::LeftButton, Qt::NoModifier, start + QPoint(12, 0));
+    }
 };
 
 TEST_F(PaintLayersUiTest, AddPaintMultiplyHideAndUndoEachStep) {
@@ -290,6 +342,216 @@ TEST_F(PaintLayersUiTest, VertexColoursDisableThePanelAndTheMaterialChannels) {
     // Ctrl+Shift+N does nothing there.
     QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
     EXPECT_EQ(texture(), nullptr);
+}
+
+// A real drag: the mouse pressed on a row, moved past the drag distance (QDrag::exec() runs its
+// own loop from there, on the X11 platform plugin's drag), moved over the upper row and
+// released. Events go in through QWindowSystemInterface, as the platform plugin delivers them.
+TEST_F(PaintLayersUiTest, DraggingARowReordersThePaintLayersOneUndoStep) {
+    const std::optional<QPoint> start = solidPixel();
+    ASSERT_TRUE(start.has_value()) << "no patch of the model in the view";
+    // Two layers painted over the same spot: the upper one's blue covers the lower one's red.
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    stroke(*start, {0.9f, 0.1f, 0.1f, 1.0f});
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    stroke(*start, {0.1f, 0.2f, 0.9f, 1.0f});
+    ASSERT_EQ(stack().size(), 2u);
+    const std::uint64_t red = stack().layer(0).id;
+    const std::uint64_t blue = stack().layer(1).id;
+    const std::vector<std::uint8_t> blueOnTop = composite();
+    QUndoStack* undoStack = m_window->undoStack();
+    const int steps = undoStack->count();
+
+    QTreeWidget* list = panel().list();
+    ASSERT_EQ(list->topLevelItemCount(), 3); // blue, red, Base
+    ASSERT_EQ(panel().rowOf(blue), list->topLevelItem(0));
+    QWindow* window = m_window->windowHandle();
+    ASSERT_NE(window, nullptr);
+    const auto inWindow = [&](QPoint inViewport) {
+        return window->mapFromGlobal(list->viewport()->mapToGlobal(inViewport));
+    };
+    const QRect redRow = list->visualItemRect(panel().rowOf(red));
+    const QRect blueRow = list->visualItemRect(panel().rowOf(blue));
+    const int nameX = list->columnViewportPosition(Panel::NameColumn) + 10;
+    const QPoint from(nameX, redRow.center().y());
+    const QPoint over(nameX, blueRow.top() + 2); // the upper edge: above the blue row
+    QCursor::setPos(list->viewport()->mapToGlobal(from));
+
+    // Once the drag runs its loop: over the blue row in steps, then the release. A guard ends
+    // a drag that never ends (Escape cancels it) so the test fails instead of hanging.
+    bool dragLoopRan = false;
+    QTimer steer;
+    steer.setSingleShot(true);
+    QObject::connect(&steer, &QTimer::timeout, [&] {
+        dragLoopRan = true;
+        for (int i = 1; i <= 4; ++i)
+            QTest::mouseMove(window, inWindow(from + (over - from) * i / 4));
+        QTest::mouseRelease(window, Qt::LeftButton, Qt::NoModifier, inWindow(over));
+    });
+    QTimer guard;
+    guard.setSingleShot(true);
+    QObject::connect(&guard, &QTimer::timeout, [&] {
+        if (QGuiApplication::focusWindow())
+            QTest::keyClick(QGuiApplication::focusWindow(), Qt::Key_Escape);
+    });
+    QTest::mousePress(window, Qt::LeftButton, Qt::NoModifier, inWindow(from));
+    ASSERT_EQ(list->currentItem(), panel().rowOf(red));
+    steer.start(50);
+    guard.start(20000);
+    const int distance = QApplication::startDragDistance() + 4;
+    for (int i = 1; i <= 3; ++i) // the move that starts the drag returns when it has ended
+        QTest::mouseMove(window, inWindow(from - QPoint(0, distance * i / 3)));
+    guard.stop();
+    if (!dragLoopRan) // no drag started: release the button anyway
+        QTest::mouseRelease(window, Qt::LeftButton, Qt::NoModifier, inWindow(over));
+    ASSERT_TRUE(dragLoopRan) << "no drag started";
+    // The move is applied once the drag has ended.
+    ASSERT_TRUE(QTest::qWaitFor([&] { return stack().layer(1).id == red; }, 5000))
+        << "the drop did not reorder the paint layers";
+
+    EXPECT_EQ(stack().layer(0).id, blue);
+    EXPECT_EQ(undoStack->count(), steps + 1);
+    EXPECT_EQ(list->topLevelItem(0)->data(0, Qt::UserRole).toULongLong(), red);
+    EXPECT_EQ(list->topLevelItem(1)->data(0, Qt::UserRole).toULongLong(), blue);
+    const std::vector<std::uint8_t> redOnTop = composite();
+    ASSERT_EQ(redOnTop.size(), blueOnTop.size());
+    // Where both painted, red now covers blue; nowhere else does anything change colour.
+    int redder = 0;
+    for (std::size_t i = 0; i + 3 < redOnTop.size(); i += 4)
+        redder += redOnTop[i] > blueOnTop[i] + 100 && redOnTop[i + 2] + 100 < blueOnTop[i + 2];
+    EXPECT_GT(redder, 0) << "the composite does not show the red layer on top";
+
+    // One Ctrl+Z puts the order and the composite back.
+    undo();
+    EXPECT_EQ(stack().layer(0).id, red);
+    EXPECT_EQ(stack().layer(1).id, blue);
+    EXPECT_EQ(composite(), blueOnTop);
+    EXPECT_EQ(undoStack->index(), steps);
+    EXPECT_EQ(list->topLevelItem(0)->data(0, Qt::UserRole).toULongLong(), blue);
+}
+
+TEST_F(PaintLayersUiTest, ExportWritesEachPaintLayerAsTheCommandLineDoes) {
+    QTemporaryDir dir;
+    ASSERT_TRUE(dir.isValid());
+    // Two paint layers, each with a stroke of its own colour; the upper one gets a mask too.
+    const std::optional<QPoint> start = solidPixel();
+    ASSERT_TRUE(start.has_value()) << "no patch of the model in the view";
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    stroke(*start, {0.9f, 0.2f, 0.1f, 1.0f});
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    stroke(*start + QPoint(0, 6), {0.1f, 0.3f, 0.9f, 1.0f});
+    ASSERT_EQ(stack().size(), 2u);
+    ASSERT_FALSE(layerColorBytes(0).empty());
+    ASSERT_FALSE(layerColorBytes(1).empty());
+
+    ui::ProjectController* project = m_window->projectController();
+    ASSERT_TRUE(project->hasPaintLayers());
+    const QString projectFile = dir.filePath(QStringLiteral("layers.glb"));
+    QSignalSpy saved(project, &ui::ProjectController::saved);
+    ASSERT_TRUE(project->saveTo(projectFile));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !saved.isEmpty(); }, kSaveTimeoutMs));
+
+    // File ▸ Export ▸ PNG: the box is off at first; the artist ticks it, names the file and
+    // presses Return.
+    QSignalSpy exported(project, &ui::ProjectController::exported);
+    QSignalSpy failed(project, &ui::ProjectController::exportFailed);
+    auto* exportPng = m_window->findChild<QAction*>(QStringLiteral("actionExportPng8"));
+    ASSERT_NE(exportPng, nullptr);
+    bool wasChecked = true;
+    bool enabled = false;
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        auto* box = dialog->findChild<QCheckBox*>(QStringLiteral("exportPerPaintLayer"));
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        if (!box || !name) {
+            dialog->reject();
+            return;
+        }
+        wasChecked = box->isChecked();
+        enabled = box->isEnabled();
+        QTest::mouseClick(box, Qt::LeftButton, Qt::NoModifier, QPoint(8, box->height() / 2));
+        name->setFocus();
+        name->selectAll();
+        QTest::keyClicks(name, dir.filePath(QStringLiteral("gui.png")));
+        // The dialog with the box ticked, to look at.
+        dialog->grab().save(QDir::current().absoluteFilePath(QStringLiteral("export_dialog.png")));
+        QTest::keyClick(name, Qt::Key_Return);
+    });
+    exportPng->trigger();
+    EXPECT_FALSE(wasChecked) << "the box starts ticked";
+    ASSERT_TRUE(enabled) << "the box is disabled with paint layers";
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return !exported.isEmpty() || !failed.isEmpty(); }, kSaveTimeoutMs));
+    ASSERT_TRUE(failed.isEmpty()) << failed.first().first().toString().toStdString();
+    const QStringList guiFiles = exported.first().first().toStringList();
+    EXPECT_TRUE(QSettings().value(QStringLiteral("export/perPaintLayer")).toBool())
+        << "the choice is not remembered";
+
+    // The same project through the headless tool.
+    QProcess cli;
+    cli.start(QStringLiteral(LAYERPAINT_CLI),
+              {QStringLiteral("export"), projectFile, QStringLiteral("--out"),
+               dir.filePath(QStringLiteral("cli.png")), QStringLiteral("--per-layer")});
+    ASSERT_TRUE(cli.waitForFinished(kCliTimeoutMs));
+    ASSERT_EQ(cli.exitCode(), 0) << cli.readAllStandardError().toStdString();
+    const nlohmann::json report = nlohmann::json::parse(cli.readAllStandardOutput().toStdString());
+    QStringList cliFiles;
+    for (const auto& file : report["files"])
+        cliFiles.append(QString::fromStdString(file.get<std::string>()));
+
+    // The same files (but for the stem) with the same pixels, per paint layer at least its
+    // base colour; the lower layer's is its red stroke.
+    ASSERT_EQ(guiFiles.size(), cliFiles.size());
+    int layerFiles = 0;
+    for (int i = 0; i < guiFiles.size(); ++i) {
+        const QString gui = QFileInfo(guiFiles[i]).fileName();
+        const QString headless = QFileInfo(cliFiles[i]).fileName();
+        EXPECT_EQ(gui.mid(3), headless.mid(3)); // "gui…" and "cli…"
+        ASSERT_TRUE(QFileInfo::exists(guiFiles[i])) << guiFiles[i].toStdString();
+        const QImage a = pixelsOf(guiFiles[i]);
+        ASSERT_FALSE(a.isNull()) << gui.toStdString();
+        EXPECT_TRUE(a == pixelsOf(cliFiles[i])) << gui.toStdString() << " differs from the CLI's";
+        if (gui.contains(QStringLiteral("_layer-")))
+            ++layerFiles;
+    }
+    const QString lower = dir.filePath(
+        QStringLiteral("gui_layer-1-") +
+        QString::fromStdString(core::sanitizeLayerName(stack().layer(0).settings.name)) +
+        QStringLiteral("_basecolor.png"));
+    ASSERT_TRUE(guiFiles.contains(lower)) << lower.toStdString();
+    EXPECT_TRUE(guiFiles.contains(
+        QString(lower)
+            .replace(QStringLiteral("layer-1-"), QStringLiteral("layer-2-"))
+            .replace(
+                QString::fromStdString(core::sanitizeLayerName(stack().layer(0).settings.name)),
+                QString::fromStdString(core::sanitizeLayerName(stack().layer(1).settings.name)))));
+    EXPECT_GE(layerFiles, 2);
+    const QImage image = pixelsOf(lower);
+    const core::TiledPlane* plane =
+        stack().layer(0).channels[std::size_t(core::PaintChannel::BaseColor)].get();
+    ASSERT_NE(plane, nullptr);
+    ASSERT_EQ(image.width(), plane->pages()[0].width);
+    int covered = 0;
+    int same = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const std::uint8_t* t = plane->texel(0, x, y);
+            if (t[3] == 0)
+                continue;
+            ++covered;
+            const QRgb p = image.pixel(x, y);
+            same += qRed(p) == t[0] && qGreen(p) == t[1] && qBlue(p) == t[2] && qAlpha(p) == t[3];
+        }
+    EXPECT_GT(covered, 0);
+    EXPECT_EQ(same, covered) << "the file is not the layer's texels";
+
+    // The next export dialog starts with the box ticked.
+    onNextModal<QFileDialog>([&](QFileDialog* dialog) {
+        auto* box = dialog->findChild<QCheckBox*>(QStringLiteral("exportPerPaintLayer"));
+        wasChecked = box && box->isChecked();
+        dialog->reject();
+    });
+    exportPng->trigger();
+    EXPECT_TRUE(wasChecked) << "the box forgot it was ticked";
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/shell/project_controller.h"
 
+#include <QCheckBox>
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QDir>
@@ -8,6 +9,7 @@
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGridLayout>
 #include <QLocale>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -19,10 +21,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/gltf_export.h"
+#include "core/io/layer_export.h"
 #include "core/io/project_file.h"
 #include "core/model/builtin_models.h"
 #include "core/paint/paint_target.h"
@@ -36,6 +40,7 @@ namespace {
 const QString kIntervalKey = QStringLiteral("autosave/intervalMinutes");
 const QString kDirectoryKey = QStringLiteral("project/directory");
 const QString kExportDirectoryKey = QStringLiteral("export/directory");
+const QString kExportPerLayerKey = QStringLiteral("export/perPaintLayer");
 constexpr int kProgressSteps = 1000;
 constexpr int kProgressDelayMs = 400;
 constexpr int kStatusMs = 6000;
@@ -56,6 +61,8 @@ struct ProjectController::Snapshot {
     std::vector<core::Image> pages; // texture exports only
     /** Per page (texture exports) or mesh texture: the metallic-roughness composite. */
     std::vector<core::Image> metallicRoughness;
+    /** Exports with one image per paint layer: a copy of the paint layers. */
+    std::optional<core::PaintLayerExport> paintLayers;
     quint64 serial = 0;
 };
 
@@ -375,17 +382,48 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
     // Never propose the open project (a .glb too) or the model it was painted from.
     if (isOpenDocumentFile(suggestion))
         suggestion = QDir(folder).filePath(stem + QStringLiteral("-export") + suffix);
-    QString path = QFileDialog::getSaveFileName(
-        &m_window, tr("Export"), suggestion, filter + QStringLiteral(";;") + tr("All files (*)"));
+    // Qt's own dialog, which can hold the check box (a platform one cannot).
+    QFileDialog dialog(&m_window, tr("Export"), suggestion,
+                       filter + QStringLiteral(";;") + tr("All files (*)"));
+    dialog.setObjectName(QStringLiteral("exportDialog"));
+    dialog.setOption(QFileDialog::DontUseNativeDialog);
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setFileMode(QFileDialog::AnyFile);
+    dialog.selectFile(suggestion);
+    auto* perLayer = new QCheckBox(tr("Also write each &paint layer as images"), &dialog);
+    perLayer->setObjectName(QStringLiteral("exportPerPaintLayer"));
+    const bool layers = hasPaintLayers();
+    perLayer->setEnabled(layers);
+    perLayer->setChecked(layers && settings.value(kExportPerLayerKey, false).toBool());
+    perLayer->setToolTip(
+        layers ? tr("Beside the export, per paint layer: NAME_layer-N-LAYER_basecolor.png and its "
+                    "roughness, metallic and mask images, as the command line's --per-layer")
+               : tr("The model has no paint layers"));
+    if (auto* grid = qobject_cast<QGridLayout*>(dialog.layout()))
+        grid->addWidget(perLayer, grid->rowCount(), 0, 1, grid->columnCount());
+    else
+        dialog.layout()->addWidget(perLayer);
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return;
+    QString path = dialog.selectedFiles().constFirst();
     if (path.isEmpty())
         return;
     if (QFileInfo(path).suffix().isEmpty())
         path += suffix;
     settings.setValue(kExportDirectoryKey, QFileInfo(path).absolutePath());
-    exportTo(format, path);
+    if (layers)
+        settings.setValue(kExportPerLayerKey, perLayer->isChecked());
+    exportTo(format, path, layers && perLayer->isChecked());
 }
 
-bool ProjectController::exportTo(core::ExportFormat format, const QString& given) {
+bool ProjectController::hasPaintLayers() const {
+    const auto* texture =
+        dynamic_cast<const core::TextureTarget*>(m_window.document().currentPaintTarget());
+    return texture && texture->layerStack().size() > 0;
+}
+
+bool ProjectController::exportTo(core::ExportFormat format, const QString& given,
+                                 bool perPaintLayer) {
     if (m_task->isRunning()) {
         m_window.statusBar()->showMessage(tr("Still busy with the last save or export"), kStatusMs);
         return false;
@@ -439,6 +477,18 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
             for (std::size_t i = 0; i < texture->pageCount(); ++i)
                 snap->metallicRoughness.push_back(texture->metallicRoughnessPage(i));
     }
+    if (perPaintLayer) {
+        const auto* texture =
+            dynamic_cast<const core::TextureTarget*>(m_window.document().currentPaintTarget());
+        if (!texture) {
+            const QString why = tr("There are no paint layers to export (they need a paint "
+                                   "texture).");
+            m_window.showError(tr("Export Failed"), tr("Could not export the paint layers."), why);
+            emit exportFailed(why);
+            return false;
+        }
+        snap->paintLayers = core::paintLayerExport(texture->layerStack());
+    }
     startProgress(tr("Exporting %1…").arg(QFileInfo(path).fileName()));
     auto files = std::make_shared<QStringList>();
     connect(
@@ -465,14 +515,28 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
         Qt::SingleShotConnection);
     const std::string file = encodePath(path);
     m_task->start([snap, files, file, format](const core::ProgressFn& progress) {
+        // With the paint layers, the export is the first half of the progress, they the second.
+        const double share = snap->paintLayers ? 0.5 : 1.0;
+        const core::ProgressFn first = [&](double f) {
+            return core::reportProgress(progress, f * share);
+        };
         core::Result<std::vector<std::string>> written =
             core::isTextureFormat(format)
                 ? core::exportChannelTextures(file, format, snap->pages, snap->metallicRoughness,
-                                              progress)
+                                              first)
                 : core::exportMaterial(file, format, snap->mesh,
-                                       core::MaterialChannels{snap->metallicRoughness}, progress);
+                                       core::MaterialChannels{snap->metallicRoughness}, first);
         if (!written)
             return fromCore(written.error());
+        if (snap->paintLayers) {
+            core::Result<std::vector<std::string>> layers =
+                core::exportPaintLayerImages(file, *snap->paintLayers, [&](double f) {
+                    return core::reportProgress(progress, 0.5 + 0.5 * f);
+                });
+            if (!layers)
+                return fromCore(layers.error());
+            written->insert(written->end(), layers->begin(), layers->end());
+        }
         // Read on the GUI thread only after the job finished.
         for (const std::string& f : *written)
             files->append(QFile::decodeName(QByteArray::fromStdString(f)));

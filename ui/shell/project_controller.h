@@ -83,14 +83,21 @@ public:
      */
     bool maybeSave();
 
-    /** Export ▸ format: asks for a file, then exports. */
+    /**
+     * Export ▸ format: asks for a file (and whether to write each paint layer too, remembered as
+     * "export/perPaintLayer"), then exports.
+     */
     void showExportDialog(core::ExportFormat format);
     /**
      * Starts exporting the painted model (or its paint texture) to path; exported() or
-     * exportFailed() follow. False if it cannot start (busy, no texture for a texture format, or
-     * path is the open project, which an export would replace without its state).
+     * exportFailed() follow. perPaintLayer: also each paint layer's channels and mask as images
+     * beside path (core::exportPaintLayerImages, as `layerpaint-cli export --per-layer`). False
+     * if it cannot start (busy, no texture for a texture format or for the paint layers, or path
+     * is the open project, which an export would replace without its state).
      */
-    bool exportTo(core::ExportFormat format, const QString& path);
+    bool exportTo(core::ExportFormat format, const QString& path, bool perPaintLayer = false);
+    /** Whether the document has paint layers (the export dialog offers an image per layer). */
+    bool hasPaintLayers() const;
     /** Whether the document has a paint texture (texture formats can be exported). */
     bool canExportTexture() const;
 

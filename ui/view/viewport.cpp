@@ -249,9 +249,12 @@ void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
                 m_compositor->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width,
                                                       r.height,
                                                       texture->metallicRoughnessPage(page));
-            } else
+            } else {
                 m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
                                          texture->page(page));
+                m_renderer->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width,
+                                                    r.height, texture->metallicRoughnessPage(page));
+            }
         }
     } else if (const auto* colors = dynamic_cast<const core::VertexColorTarget*>(target)) {
         const core::VertexRange range = pending.vertices;
@@ -495,6 +498,11 @@ void Viewport::uploadMeshIfDirty() {
     const core::Mesh& mesh = target ? painted : m_document.mesh();
     m_shownTarget = target;
     m_renderer->setMesh(mesh);
+    // Lit as the composite is, so the view keeps its colours while the camera moves.
+    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target))
+        for (std::size_t page = 0; page < texture->pageCount(); ++page)
+            m_renderer->setMetallicRoughness(std::uint32_t(page),
+                                             texture->metallicRoughnessPage(page));
     m_rendererPaint.clear();
     m_compositorPaint.clear();
     m_compositorHasMesh = false;
@@ -541,6 +549,7 @@ void Viewport::paintGL() {
     } else {
         flushPaint(m_rendererPaint, false);
         options.standIn = isCameraMoving();
+        options.channel = m_composite.channel;
         m_renderer->draw(current, options);
         m_lastFrameTriangles = m_renderer->lastDrawnTriangles();
     }
