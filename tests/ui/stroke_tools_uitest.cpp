@@ -7,6 +7,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QGroupBox>
 #include <QSettings>
@@ -221,3 +222,86 @@ TEST_F(StrokeToolsTest, ShiftClickDrawsALineOnFromTheLastStroke) {
 }
 
 } // namespace
+
+TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {
+    // A run on the left half whose mirror image across the view's centre is on the knot too (the
+    // default view looks at the bounding-box centre, so mirror X mirrors the picture).
+    const int w = document().layers()->stack.width;
+    QPoint a, b;
+    for (int k = 0; k < 200 && a.isNull(); k += 4) {
+        for (int y : {viewport()->height() / 2 - k, viewport()->height() / 2 + k}) {
+            int start = -1;
+            for (int x = 10; x < w / 2 - 30; ++x) {
+                const bool both = solid({x, y}, 8) && solid({w - 1 - x, y}, 8);
+                if (both && start < 0)
+                    start = x;
+                if ((!both || x == w / 2 - 31) && start >= 0) {
+                    if (x - start >= 50) {
+                        a = {start + 2, y};
+                        b = {x - 3, y};
+                        break;
+                    }
+                    start = -1;
+                }
+            }
+            if (!a.isNull())
+                break;
+        }
+    }
+    ASSERT_FALSE(a.isNull()) << "no run whose mirror image is on the knot";
+    QApplication::processEvents();
+    const QImage before = grab();
+
+    // Mirror X in the Brush panel: its views are built in the background, not on this thread.
+    auto* mirrorX = m_window->findChild<QCheckBox*>(QStringLiteral("brushPanelSymmetryMirrorX"));
+    ASSERT_NE(mirrorX, nullptr);
+    QSignalSpy finished(m_window->layerBuilder(), &ui::LayerBuilder::symmetryFinished);
+    mirrorX->setChecked(true);
+    ASSERT_TRUE(document().brush().symmetry.mirrorX);
+    EXPECT_TRUE(m_window->layerBuilder()->isBuildingSymmetry());
+    EXPECT_FALSE(document().symmetryReady()) << "nothing captured on the GUI thread";
+    ASSERT_TRUE(finished.wait(60000));
+    EXPECT_TRUE(document().symmetryReady());
+    EXPECT_EQ(document().symmetryLayers().size(), 1u);
+    // Paint ▸ Stroke Stabilizer on.
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionStabilizer"));
+    ASSERT_NE(action, nullptr);
+    action->trigger();
+    ASSERT_TRUE(document().brush().stabilizer);
+
+    std::vector<QPoint> input;
+    for (int x = a.x(); x <= b.x(); x += 3)
+        input.emplace_back(x, a.y());
+    bool stringActive = false;
+    drag(input, [&](std::size_t i) {
+        if (i == input.size() / 2)
+            stringActive = document().stabilizer().stabilizing();
+    });
+    QApplication::processEvents();
+    EXPECT_TRUE(stringActive) << "the stroke went through the stabilizer";
+    EXPECT_EQ(m_window->undoStack()->count(), 1) << "the stroke and its copy are one step";
+    const QImage after = grab();
+
+    // Each column of the stroke and of its mirror image changed near the stroke's row.
+    const auto paintedColumns = [&](int x0, int x1) {
+        int painted = 0;
+        for (int x = x0; x <= x1; ++x) {
+            bool any = false;
+            for (int dx = -3; dx <= 3 && !any; ++dx)
+                for (int dy = -6; dy <= 6 && !any; ++dy)
+                    any = channelDifference(before.pixel(x + dx, a.y() + dy),
+                                            after.pixel(x + dx, a.y() + dy)) > 40;
+            painted += any ? 1 : 0;
+        }
+        return double(painted) / double(x1 - x0 + 1);
+    };
+    // The stabilized tip trails the pointer by its string: compare the stroke's first half.
+    const int mid = (a.x() + b.x()) / 2;
+    const double stroke = paintedColumns(a.x() + 4, mid);
+    const double mirrored = paintedColumns(w - 1 - mid, w - 1 - (a.x() + 4));
+    std::printf("[ symmetry ] painted columns: stroke %.2f, mirror image %.2f\n", stroke, mirrored);
+    EXPECT_GT(stroke, 0.9);
+    EXPECT_GT(mirrored, 0.8);
+    const QString shot = QDir::current().absoluteFilePath(QStringLiteral("symmetry_uitest.png"));
+    EXPECT_TRUE(after.save(shot));
+}
