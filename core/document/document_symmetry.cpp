@@ -51,12 +51,19 @@ bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngi
             layers.clear();
             return false;
         }
-        Result<Layers> built =
-            core::buildLayers(capturer, *mesh, *topology, views[i], options, engine);
-        if (built)
-            layers.emplace_back(std::move(built).value());
-        else
+        CaptureStats stats;
+        Result<LayerStack> stack = capturer.capture(views[i], options.cullBackFaces, &stats);
+        if (!stack) {
             layers.emplace_back(); // that copy paints nothing, the others still do
+            continue;
+        }
+        // Capturing is about half of a copy's work: the status bar moves within one copy too.
+        if (!reportProgress(progress, (double(i) + 0.5) / double(views.size()))) {
+            layers.clear();
+            return false;
+        }
+        layers.emplace_back(finishLayers(std::move(stack).value(), stats, *mesh, *topology,
+                                         views[i], options, engine));
     }
     reportProgress(progress, 1.0);
     return true;
@@ -87,10 +94,8 @@ bool Document::adoptSymmetry(SymmetryBuild build) {
 
 void Document::startSymmetry() {
     m_copiesPaint = false;
-    if (!m_brush.symmetry.active() || !m_layers) {
-        m_copies.clear();
-        return;
-    }
+    if (!m_brush.symmetry.active() || !m_layers)
+        return; // the copies stay for these layers and symmetry: turned on again, they are ready
     if (std::optional<SymmetryBuild> build = symmetryBuild()) {
         m_copies.clear();
         if (!m_symmetryOnStroke)

@@ -281,10 +281,15 @@ void LayerBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
     if (job != m_symmetryJob)
         return; // cancelled, or settled by buildSymmetryNow()
     m_symmetryJob.reset();
+    if (!job->error.empty()) {
+        // Settled as copies that paint nothing (as a copy whose capture fails), so the build is
+        // not started again for the same layers and symmetry.
+        job->build.layers.assign(job->build.transforms.size(), std::nullopt);
+        job->built = true;
+        emit buildFailed(QString::fromStdString(job->error));
+    }
     if (job->built)
         m_document.adoptSymmetry(std::move(job->build));
-    else if (!job->error.empty())
-        emit buildFailed(QString::fromStdString(job->error));
     emit symmetryFinished();
     refreshSymmetry(); // the symmetry may have changed meanwhile
 }

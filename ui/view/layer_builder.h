@@ -72,9 +72,9 @@ public:
     /** Progress of the symmetric views' build in [0, 1]. */
     double symmetryProgress() const;
     /**
-     * Makes sure a stroke can paint its symmetric copies now: waits for the running build (or
-     * builds them on this thread when none runs), telling symmetryWaiting() first. False when
-     * they could not be built (the stroke paints without them).
+     * Makes sure a stroke can paint its symmetric copies now: waits for their build (started
+     * first if none runs), telling symmetryWaiting() first. False when they are still not
+     * there (the stroke paints without them).
      */
     bool buildSymmetryNow();
 
