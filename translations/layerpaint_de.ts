@@ -1350,6 +1350,18 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Quick &amp;Guide</source>
         <translation>Kurz&amp;anleitung</translation>
     </message>
+    <message>
+        <source>Building the symmetric views… %1 %</source>
+        <translation>Die symmetrischen Ansichten werden erstellt… %1 %</translation>
+    </message>
+    <message>
+        <source>Waiting for the symmetric views before painting…</source>
+        <translation>Vor dem Malen wird auf die symmetrischen Ansichten gewartet…</translation>
+    </message>
+    <message>
+        <source>The symmetric views could not be built: this stroke paints without its copies</source>
+        <translation>Die symmetrischen Ansichten konnten nicht erstellt werden: dieser Strich malt ohne seine Kopien</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -1349,6 +1349,18 @@ connectivity %3 ms, regions %4 ms
         <source>Quick &amp;Guide</source>
         <translation>快速指南(&amp;G)</translation>
     </message>
+    <message>
+        <source>Building the symmetric views… %1 %</source>
+        <translation>正在构建对称视图… %1 %</translation>
+    </message>
+    <message>
+        <source>Waiting for the symmetric views before painting…</source>
+        <translation>正在等待对称视图，之后开始绘制…</translation>
+    </message>
+    <message>
+        <source>The symmetric views could not be built: this stroke paints without its copies</source>
+        <translation>无法构建对称视图：此笔画将不绘制其对称副本</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -458,14 +458,14 @@ void Document::paintDabs(PaintChanges& changes) {
     for (const Dab& dab : m_dabs) {
         if (m_autoPopUp && m_tracker.layerAware())
             popUpUnder(dab);
-        if (!m_copies.empty())
+        if (m_copiesPaint)
             m_paintTarget->beginDabGroup();
         const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
         changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
                               dabChanges.texels.end());
         changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
                                 dabChanges.vertices.end());
-        if (!m_copies.empty())
+        if (m_copiesPaint)
             paintCopies(dab, changes);
     }
     m_dabStats = {m_dabs.size(), std::chrono::duration<double, std::milli>(

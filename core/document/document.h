@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 
+#include "core/base/progress.h"
 #include "core/document/history.h"
 #include "core/document/session_log.h"
 #include "core/layers/layers.h"
@@ -258,10 +259,44 @@ public:
     const DabStats& lastDabStats() const { return m_dabStats; }
     /**
      * The views the symmetric copies of the brush (Brush::symmetry) are painted through, made
-     * for the current layers at the first symmetric stroke (captured on the CPU here unless
-     * supplied by setSymmetryLayers()); empty without symmetry.
+     * for the current layers: at the first symmetric stroke (captured on the CPU on this thread),
+     * or ahead of it elsewhere (symmetryBuild(), adoptSymmetry()); empty without symmetry.
      */
     std::vector<const Layers*> symmetryLayers() const;
+
+    /**
+     * What the symmetric copies' layers are made from: the views of the copies of the current
+     * layers' view, with the mesh shared, so build() can run on any thread while the document
+     * goes on. Adopted only while the layers, the model and the symmetry are still these.
+     */
+    struct SymmetryBuild {
+        BrushSymmetry symmetry;
+        std::uint64_t layersSerial = 0;
+        std::uint64_t meshSerial = 0;
+        std::shared_ptr<const Mesh> mesh;
+        std::shared_ptr<const MeshTopology> topology;
+        LayerOptions options;
+        std::vector<glm::mat4> transforms;
+        std::vector<View> views;
+        std::vector<std::optional<Layers>> layers; // per view, after build(); none if it failed
+        /**
+         * Captures (on the CPU) and finishes every view's layers; progress gets the fraction of
+         * copies done and stops the build (false, nothing built) when it returns false.
+         */
+        bool build(const ProgressFn& progress, ConnectivityEngine* engine = nullptr);
+    };
+    /** The build the copies need before the next symmetric stroke; nullopt when ready or off. */
+    std::optional<SymmetryBuild> symmetryBuild() const;
+    /** Whether a symmetric stroke now has its copies' layers (true without symmetry). */
+    bool symmetryReady() const { return !symmetryBuild(); }
+    /** Adopts a finished build; ignored and false when it is stale (or not built). */
+    bool adoptSymmetry(SymmetryBuild build);
+    /**
+     * Whether a stroke builds missing copies itself (on this thread, the default: scripts and the
+     * headless tool). Off, a stroke whose copies are not ready paints without them: the GUI
+     * builds them in the background and waits for them before a stroke starts.
+     */
+    void setSymmetryBuiltOnStroke(bool onStroke) { m_symmetryOnStroke = onStroke; }
     const StrokeTracker& strokeTracker() const { return m_tracker; }
     /**
      * The paper's Figure 4 overlay of the last dab's maps (StrokeTracker::fillOverlay: Mp red,
@@ -420,8 +455,10 @@ private:
     BrushSymmetry m_copiesSymmetry;       // what m_copies were made for
     std::uint64_t m_copiesLayers = ~0ull; // m_layersSerial they were made for
     std::uint64_t m_copiesMesh = ~0ull;   // m_meshSerial they were made for
-    bool m_copiesLayerAware = true;
+    bool m_symmetryOnStroke = true;
+    bool m_copiesPaint = false; // the stroke in progress paints m_copies
     std::vector<Dab> m_copyDabs;
+    std::vector<MapPixel> m_copyPaintable; // a copy's paintable map storage, reused
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;

@@ -199,15 +199,13 @@ void StrokeTracker::startCopy(const Brush& brush, std::uint32_t layer) {
     m_startLayer = layer;
 }
 
-std::size_t StrokeTracker::followDab(const Dab& like, std::vector<Dab>& out) {
+std::size_t StrokeTracker::followDab(Dab like, std::vector<Dab>& out) {
     if (!m_inStroke || !m_stack || !sane(like.center))
         return 0;
-    Dab dab;
-    dab.center = like.center;
-    dab.radius = like.radius;
-    dab.opacity = like.opacity;
-    dab.angle = like.angle;
-    return trackDab(like.center, dab, out);
+    like.layer = 0;
+    like.paintable.clear();
+    const glm::vec2 center = like.center;
+    return trackDab(center, like, out);
 }
 
 std::size_t StrokeTracker::trackDab(glm::vec2 center, Dab& dab, std::vector<Dab>& out) {

@@ -112,9 +112,11 @@ public:
      * A copy of a dab of another stroke (a symmetric copy, painted through its own view): a dab
      * at like's centre with its radius, opacity and angle, no jitter of its own. The first one
      * after startCopy() starts on depth layer startLayer (or the visible surface), later ones are
-     * tracked from the previous copy. Returns the dabs appended (0, 1).
+     * tracked from the previous copy. like becomes the dab (its paintable map's storage is reused,
+     * so a caller that hands the previous one back allocates nothing). Returns the dabs appended
+     * (0, 1).
      */
-    std::size_t followDab(const Dab& like, std::vector<Dab>& out);
+    std::size_t followDab(Dab like, std::vector<Dab>& out);
     /** Starts a stroke of copies (followDab()) with brush, the first on depth layer layer. */
     void startCopy(const Brush& brush, std::uint32_t layer);
     /** Ends the stroke; the maps of its last dab stay readable. */

@@ -9,6 +9,7 @@
 #include <QDir>
 #include <QDockWidget>
 #include <QFile>
+#include <QGroupBox>
 #include <QLabel>
 #include <QListWidget>
 #include <QSet>
@@ -174,6 +175,23 @@ TEST_F(PresetsTest, AClickedPresetPaintsTheStroke) {
     const QString shot = QDir::temp().filePath(QStringLiteral("layerpaint_presets.png"));
     if (m_window->grab().save(shot))
         std::printf("[ picture ] %s\n", qPrintable(shot));
+}
+
+TEST_F(PresetsTest, APresetKeepsTheArtistsSymmetry) {
+    // Mirror X on in the Brush panel, as a user ticks it.
+    auto* mirrorX = m_window->findChild<QCheckBox*>(QStringLiteral("brushPanelSymmetryMirrorX"));
+    ASSERT_NE(mirrorX, nullptr);
+    auto* group = m_window->findChild<QGroupBox*>(QStringLiteral("brushPanelSymmetry"));
+    ASSERT_NE(group, nullptr);
+    if (group->isCheckable() && !group->isChecked())
+        group->setChecked(true);
+    mirrorX->setChecked(true);
+    ASSERT_TRUE(document().brush().symmetry.mirrorX);
+
+    clickPreset(rowOf("Hard Ink"));
+    EXPECT_EQ(document().brush().tip, "round-hard") << "the preset was taken";
+    EXPECT_TRUE(document().brush().symmetry.mirrorX) << "and the symmetry kept";
+    EXPECT_TRUE(mirrorX->isChecked()) << "the panel shows it still on";
 }
 
 TEST_F(PresetsTest, QuickGuideOpensFromTheHelpMenuWithPictures) {

@@ -7,6 +7,7 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QCheckBox>
 #include <QDir>
 #include <QGroupBox>
 #include <QSettings>
@@ -218,6 +219,115 @@ TEST_F(StrokeToolsTest, ShiftClickDrawsALineOnFromTheLastStroke) {
     QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
     QApplication::processEvents();
     EXPECT_LT(differingFraction(stroke, grab()), 0.001) << "undo takes the line only";
+}
+
+TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {
+    // The default view looks at the bounding-box centre along the model's axes, so mirror X
+    // mirrors the picture: a copy's dab at column x lands at column w - 1 - x. The trefoil is
+    // chiral, though: where its mirror image passes behind a crossing, the copy paints a side
+    // this view does not show. So the mirror image is checked where the knot shows there at the
+    // stroke's depth, on the run (over the knot on both sides) that has the most such columns.
+    const core::LayerStack& stack = document().layers()->stack;
+    const int w = stack.width;
+    const auto frontDepth = [&](int x, int y) {
+        return stack.depth[stack.offsets[std::size_t(y) * std::size_t(w) + std::size_t(x)]];
+    };
+    const auto mirrorShown = [&](int x, int y) {
+        for (int dy = -6; dy <= 6; dy += 3) {
+            const float d = frontDepth(x, y + dy), m = frontDepth(w - 1 - x, y + dy);
+            if (std::abs(d - m) > 0.02f * d)
+                return false;
+        }
+        return true;
+    };
+    // The stabilized tip trails the pointer by its string: only the stroke's first half counts.
+    const auto checkedColumns = [&](QPoint from, QPoint to) {
+        std::vector<int> columns;
+        for (int x = from.x() + 4; x <= (from.x() + to.x()) / 2; ++x)
+            if (mirrorShown(x, from.y()))
+                columns.push_back(x);
+        return columns;
+    };
+    QPoint a, b;
+    std::vector<int> shown;
+    for (int k = 0; k < 200; k += 4) {
+        for (int y : {viewport()->height() / 2 - k, viewport()->height() / 2 + k}) {
+            int start = -1;
+            for (int x = 10; x < w / 2 - 30; ++x) {
+                const bool both = solid({x, y}, 8) && solid({w - 1 - x, y}, 8);
+                if (both && start < 0)
+                    start = x;
+                if ((!both || x == w / 2 - 31) && start >= 0) {
+                    if (x - start >= 50) {
+                        const QPoint from(start + 2, y), to(x - 3, y);
+                        std::vector<int> columns = checkedColumns(from, to);
+                        if (columns.size() > shown.size()) {
+                            a = from;
+                            b = to;
+                            shown = std::move(columns);
+                        }
+                    }
+                    start = -1;
+                }
+            }
+        }
+    }
+    ASSERT_GE(shown.size(), 12u) << "no run whose mirror image shows the knot at its depth";
+    QApplication::processEvents();
+    const QImage before = grab();
+
+    // Mirror X in the Brush panel: its views are built in the background, not on this thread.
+    auto* mirrorX = m_window->findChild<QCheckBox*>(QStringLiteral("brushPanelSymmetryMirrorX"));
+    ASSERT_NE(mirrorX, nullptr);
+    QSignalSpy finished(m_window->layerBuilder(), &ui::LayerBuilder::symmetryFinished);
+    mirrorX->setChecked(true);
+    ASSERT_TRUE(document().brush().symmetry.mirrorX);
+    EXPECT_TRUE(m_window->layerBuilder()->isBuildingSymmetry());
+    EXPECT_FALSE(document().symmetryReady()) << "nothing captured on the GUI thread";
+    ASSERT_TRUE(finished.wait(60000));
+    EXPECT_TRUE(document().symmetryReady());
+    EXPECT_EQ(document().symmetryLayers().size(), 1u);
+    // Paint ▸ Stroke Stabilizer on.
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionStabilizer"));
+    ASSERT_NE(action, nullptr);
+    action->trigger();
+    ASSERT_TRUE(document().brush().stabilizer);
+
+    std::vector<QPoint> input;
+    for (int x = a.x(); x <= b.x(); x += 3)
+        input.emplace_back(x, a.y());
+    bool stringActive = false;
+    drag(input, [&](std::size_t i) {
+        if (i == input.size() / 2)
+            stringActive = document().stabilizer().stabilizing();
+    });
+    QApplication::processEvents();
+    EXPECT_TRUE(stringActive) << "the stroke went through the stabilizer";
+    EXPECT_EQ(m_window->undoStack()->count(), 1) << "the stroke and its copy are one step";
+    const QImage after = grab();
+
+    // Each column of the stroke and of its mirror image changed near the stroke's row.
+    const auto painted = [&](int x) {
+        for (int dx = -3; dx <= 3; ++dx)
+            for (int dy = -6; dy <= 6; ++dy)
+                if (channelDifference(before.pixel(x + dx, a.y() + dy),
+                                      after.pixel(x + dx, a.y() + dy)) > 40)
+                    return true;
+        return false;
+    };
+    int strokeColumns = 0, mirroredColumns = 0;
+    for (int x : shown) {
+        strokeColumns += painted(x) ? 1 : 0;
+        mirroredColumns += painted(w - 1 - x) ? 1 : 0;
+    }
+    const double stroke = double(strokeColumns) / double(shown.size());
+    const double mirrored = double(mirroredColumns) / double(shown.size());
+    std::printf("[ symmetry ] painted columns of %zu: stroke %.2f, mirror image %.2f\n",
+                shown.size(), stroke, mirrored);
+    EXPECT_GT(stroke, 0.9);
+    EXPECT_GT(mirrored, 0.8);
+    const QString shot = QDir::current().absoluteFilePath(QStringLiteral("symmetry_uitest.png"));
+    EXPECT_TRUE(after.save(shot));
 }
 
 } // namespace

@@ -22,9 +22,11 @@
 #include <QScreen>
 #include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
 #include <QUrl>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/model/builtin_models.h"
 #include "ui/commands/history_bridge.h"
@@ -145,6 +147,28 @@ MainWindow::MainWindow(QWidget* parent)
         statusBar()->showMessage(tr("Could not build the layers: %1").arg(message),
                                  kStatusMessageMs);
         updateLayerInfo();
+    });
+    // The symmetric views build in the background after the layers; the status bar says how far.
+    auto* symmetryTimer = new QTimer(this);
+    symmetryTimer->setInterval(200);
+    const auto showSymmetryProgress = [this] {
+        statusBar()->showMessage(tr("Building the symmetric views… %1 %")
+                                     .arg(std::lround(m_builder->symmetryProgress() * 100.0)));
+    };
+    connect(symmetryTimer, &QTimer::timeout, this, showSymmetryProgress);
+    connect(m_builder, &LayerBuilder::symmetryStarted, this, [symmetryTimer, showSymmetryProgress] {
+        showSymmetryProgress();
+        symmetryTimer->start();
+    });
+    connect(m_builder, &LayerBuilder::symmetryFinished, this, [this, symmetryTimer] {
+        if (symmetryTimer->isActive())
+            statusBar()->clearMessage();
+        symmetryTimer->stop();
+    });
+    connect(m_builder, &LayerBuilder::symmetryWaiting, this, [this] {
+        // The stroke waits for its copies rather than painting one side only.
+        statusBar()->showMessage(tr("Waiting for the symmetric views before painting…"));
+        statusBar()->repaint();
     });
     updateLayerInfo();
 

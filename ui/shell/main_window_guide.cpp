@@ -23,9 +23,10 @@ void MainWindow::createHelpAndPresets() {
     m_colorDock->raise();
     connect(m_presetsPanel, &BrushPresetsPanel::presetChosen, this,
             [this](const core::Brush& preset, const QString& name) {
-                // A preset is the brush's kind; the colour stays the artist's.
+                // A preset is the brush's kind; the colour and the symmetry stay the artist's.
                 core::Brush brush = preset;
                 brush.color = m_document->brush().color;
+                brush.symmetry = m_document->brush().symmetry;
                 setBrush(brush);
                 statusBar()->showMessage(tr("Brush preset: %1").arg(name), kPaintMessageMs);
             });

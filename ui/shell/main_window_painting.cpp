@@ -140,6 +140,11 @@ bool MainWindow::preparePainting() {
     }
     if (!hadTarget)
         m_viewport->paintTargetChanged();
+    // A symmetric stroke paints its copies from the first dab: wait for them if still building.
+    if (!m_builder->buildSymmetryNow())
+        statusBar()->showMessage(tr("The symmetric views could not be built: this stroke paints "
+                                    "without its copies"),
+                                 kStatusMessageMs);
     return true;
 }
 
@@ -422,6 +427,8 @@ void MainWindow::setBrush(const core::Brush& brush) {
     if (color != m_colorPanel->foreground())
         m_colorPanel->setForeground(color);
     m_viewport->setBrushRadius(brush.radius);
+    if (m_builder)
+        m_builder->refreshSymmetry(); // new symmetry: its views build in the background
     updateBrushInfo();
     if (m_project && m_document->meshSerial() != 0)
         m_project->markModified();

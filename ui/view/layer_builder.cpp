@@ -30,6 +30,12 @@ struct LayerBuilder::Job {
     std::string error;
 };
 
+struct LayerBuilder::SymmetryJob {
+    core::Document::SymmetryBuild build;
+    bool built = false;
+    std::string error;
+};
+
 struct LayerBuilder::Captured {
     std::shared_ptr<Job> job;
     core::Result<core::LayerStack> stack;
@@ -38,6 +44,9 @@ struct LayerBuilder::Captured {
 LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject* parent)
     : QObject(parent), m_document(document), m_viewport(viewport) {
     m_pool.setMaxThreadCount(1);
+    m_symmetryPool.setMaxThreadCount(1);
+    // Strokes here never capture on the GUI thread: the copies come from refreshSymmetry().
+    m_document.setSymmetryBuiltOnStroke(false);
     m_settle.setSingleShot(true);
     m_settle.setInterval(kDefaultSettleMs);
     connect(&m_settle, &QTimer::timeout, this, &LayerBuilder::onSettled);
@@ -46,7 +55,9 @@ LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject
 
 LayerBuilder::~LayerBuilder() {
     // The worker's report goes to a watcher that dies with this object; it only has to end first.
+    m_symmetryWorker.cancel();
     m_pool.waitForDone();
+    m_symmetryPool.waitForDone();
 }
 
 void LayerBuilder::setSettleDelay(int milliseconds) {
@@ -59,6 +70,7 @@ void LayerBuilder::setLayerOptions(const core::LayerOptions& options) {
     if (m_document.layers()) {
         m_viewport.showSegmentation();
         emit segmentationChanged();
+        refreshSymmetry(); // new regions: the copies' views are segmented again too
     } else if (hadLayers || !m_wanted) {
         // A capture option changed: the layers are gone and must be captured again.
         invalidate();
@@ -68,6 +80,7 @@ void LayerBuilder::setLayerOptions(const core::LayerOptions& options) {
 void LayerBuilder::invalidate() {
     const bool hadLayers = m_document.layers() != nullptr;
     m_document.clearLayers();
+    cancelSymmetry(); // its views were of the old one
     m_wanted = true;
     m_settle.start();
     if (hadLayers)
@@ -199,6 +212,7 @@ bool LayerBuilder::adopt(Job& job) {
     m_lastBuildMs = double(job.clock.nsecsElapsed()) / 1e6;
     m_viewport.showLayers();
     emit layersBuilt();
+    refreshSymmetry();
     return true;
 }
 
@@ -220,6 +234,77 @@ void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
         capture();
     else if (m_wanted && !m_settle.isActive())
         m_settle.start();
+}
+
+double LayerBuilder::symmetryProgress() const {
+    return m_symmetryJob ? jobProgress(m_symmetryWorker) : 0.0;
+}
+
+void LayerBuilder::cancelSymmetry() {
+    if (!m_symmetryJob)
+        return;
+    m_symmetryWorker.cancel(); // stops between copies; its report is ignored
+    m_symmetryJob.reset();
+    emit symmetryFinished();
+}
+
+void LayerBuilder::refreshSymmetry() {
+    std::optional<core::Document::SymmetryBuild> build = m_document.symmetryBuild();
+    if (m_symmetryJob) {
+        const core::Document::SymmetryBuild& running = m_symmetryJob->build;
+        if (build && running.symmetry == build->symmetry &&
+            running.layersSerial == build->layersSerial && running.meshSerial == build->meshSerial)
+            return; // already on its way
+        cancelSymmetry();
+    }
+    if (!build)
+        return;
+    auto job = std::make_shared<SymmetryJob>();
+    job->build = std::move(*build);
+    m_symmetryJob = job;
+    m_symmetryWorker = runInBackground(
+        m_symmetryPool, this,
+        [job](const core::ProgressFn& progress) {
+            try {
+                job->built = job->build.build(progress);
+            } catch (const std::bad_alloc&) {
+                job->error = "not enough memory for the symmetric views";
+            } catch (const std::exception& e) {
+                job->error = e.what();
+            }
+        },
+        [this, job] { finishSymmetry(job); });
+    emit symmetryStarted();
+}
+
+void LayerBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
+    if (job != m_symmetryJob)
+        return; // cancelled, or settled by buildSymmetryNow()
+    m_symmetryJob.reset();
+    if (!job->error.empty()) {
+        // Settled as copies that paint nothing (as a copy whose capture fails), so the build is
+        // not started again for the same layers and symmetry.
+        job->build.layers.assign(job->build.transforms.size(), std::nullopt);
+        job->built = true;
+        emit buildFailed(QString::fromStdString(job->error));
+    }
+    if (job->built)
+        m_document.adoptSymmetry(std::move(job->build));
+    emit symmetryFinished();
+    refreshSymmetry(); // the symmetry may have changed meanwhile
+}
+
+bool LayerBuilder::buildSymmetryNow() {
+    if (m_document.symmetryReady())
+        return true;
+    refreshSymmetry();
+    if (!m_symmetryJob)
+        return m_document.symmetryReady();
+    emit symmetryWaiting();
+    const std::shared_ptr<SymmetryJob> job = m_symmetryJob;
+    m_symmetryWorker.waitForFinished();
+    finishSymmetry(job);
+    return m_document.symmetryReady();
 }
 
 } // namespace ui

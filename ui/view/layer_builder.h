@@ -62,9 +62,30 @@ public:
      */
     bool buildNow();
 
+    /**
+     * The symmetric views (Brush::symmetry) of the current layers, built in the background after
+     * the layers and whenever the symmetry changes (refreshSymmetry()), so a symmetric stroke
+     * never captures on this thread while the artist waits. Only on the CPU, as a script's
+     * stroke builds them, so both paint the same.
+     */
+    bool isBuildingSymmetry() const { return m_symmetryJob != nullptr; }
+    /** Progress of the symmetric views' build in [0, 1]. */
+    double symmetryProgress() const;
+    /**
+     * Makes sure a stroke can paint its symmetric copies now: waits for their build (started
+     * first if none runs), telling symmetryWaiting() first. False when they are still not
+     * there (the stroke paints without them).
+     */
+    bool buildSymmetryNow();
+
 public slots:
     /** The view changed: drops the layers and builds again once the view has settled. */
     void invalidate();
+    /**
+     * The brush's symmetry may have changed: starts building the views it needs (cancelling a
+     * build for other ones), or does nothing when they are there or symmetry is off.
+     */
+    void refreshSymmetry();
 
 signals:
     /** The document's layers were dropped (they described another view). */
@@ -75,6 +96,12 @@ signals:
     void segmentationChanged();
     /** A capture failed; message is for the user. */
     void buildFailed(const QString& message);
+    /** The symmetric views started building in the background. */
+    void symmetryStarted();
+    /** The symmetric views of the current layers are ready (or their build was dropped). */
+    void symmetryFinished();
+    /** A stroke waits for the symmetric views (buildSymmetryNow()). */
+    void symmetryWaiting();
 
 private:
     struct Job;
@@ -88,6 +115,10 @@ private:
     /** Adopts a finished job's layers if still current; true when adopted. */
     bool adopt(Job& job);
 
+    struct SymmetryJob;
+    void finishSymmetry(const std::shared_ptr<SymmetryJob>& job);
+    void cancelSymmetry();
+
     core::Document& m_document;
     Viewport& m_viewport;
     QTimer m_settle;
@@ -100,6 +131,9 @@ private:
     bool m_wanted = false;
     /** The view settled while the worker was busy: capture once it reports. */
     bool m_captureWhenIdle = false;
+    QThreadPool m_symmetryPool; // the symmetric views' worker, beside the layers' one
+    QFuture<void> m_symmetryWorker;
+    std::shared_ptr<SymmetryJob> m_symmetryJob; // the running build, or null
     int m_captures = 0;
     double m_lastBuildMs = 0.0;
 };

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -212,6 +213,42 @@ TEST(Symmetry, StrokeAlongTheMirrorPlanePaintsNoMoreThanWithout) {
     for (std::size_t i = 0; i < pages[0].size(); ++i)
         worst = std::max(worst, std::abs(int(pages[0][i]) - int(pages[1][i])));
     EXPECT_LE(worst, 1);
+}
+
+TEST(Symmetry, ABuildElsewhereIsAdoptedOnlyWhileCurrentAndOutlivesASymmetryOff) {
+    // As the GUI does it: the copies are built off the document (any thread), a stroke never.
+    Scene s(symmetricScene({glm::mat4(1.0f), kMirrorX}), -60.0f, 20.0f);
+    s.doc.setSymmetryBuiltOnStroke(false);
+    s.doc.brush().symmetry.mirrorX = true;
+    std::optional<core::Document::SymmetryBuild> build = s.doc.symmetryBuild();
+    ASSERT_TRUE(build);
+    EXPECT_FALSE(s.doc.symmetryReady());
+    std::vector<double> progress;
+    ASSERT_TRUE(build->build([&](double f) {
+        progress.push_back(f);
+        return true;
+    }));
+    EXPECT_EQ(progress, (std::vector<double>{0.0, 0.5, 1.0}));
+    // Made for mirror X: stale once the symmetry is another one.
+    s.doc.brush().symmetry.mirrorY = true;
+    EXPECT_FALSE(s.doc.adoptSymmetry(*build));
+    s.doc.brush().symmetry.mirrorY = false;
+    ASSERT_TRUE(s.doc.adoptSymmetry(std::move(*build)));
+    EXPECT_TRUE(s.doc.symmetryReady());
+    ASSERT_EQ(s.doc.symmetryLayers().size(), 1u);
+
+    // A stroke with symmetry off, then on again: the copies are still there and still paint.
+    const glm::vec3 c = s.view.project({-1.0f, 0.05f, 0.1f});
+    s.doc.brush().symmetry.mirrorX = false;
+    s.stroke({c.x - 20.0f, c.y - 6.0f}, {c.x - 10.0f, c.y - 3.0f});
+    s.doc.brush().symmetry.mirrorX = true;
+    EXPECT_TRUE(s.doc.symmetryReady());
+    s.stroke({c.x - 5.0f, c.y}, {c.x + 20.0f, c.y + 6.0f});
+    EXPECT_EQ(s.doc.symmetryLayers().size(), 1u);
+    std::vector<int> perStrip;
+    int agreeing = 0, paintedAny = 0;
+    s.compare(2, perStrip, agreeing, paintedAny);
+    EXPECT_GT(perStrip[1], 300) << "the mirror stroke painted its copy";
 }
 
 TEST(Symmetry, TransformsAndNames) {
