@@ -109,6 +109,8 @@ struct PaintTarget::Context {
     std::vector<std::uint32_t> triangleDab;   // per triangle: the last dab that looked at it
     std::vector<std::uint32_t> triangleLocal; // index into setups, or kNone (rejected)
     std::vector<TriangleSetup> setups;
+    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets).
+    std::vector<float> triangleCover;
     // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
     std::vector<std::uint32_t> window;
     int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
