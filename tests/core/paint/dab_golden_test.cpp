@@ -166,8 +166,7 @@ protected:
 // Printed on failure, so a deliberate change of the painted bytes can update them.
 constexpr std::uint64_t kRound = 14166202969361598087ull, kChalk = 13554708838105354251ull,
                         kEraser = 2250483654944407073ull, kLayers = 14148109469639038919ull,
-                        kLayersChalk = 8698467255929120854ull,
-                        kSymmetric = 7247586118319908011ull,
+                        kLayersChalk = 8698467255929120854ull, kSymmetric = 7247586118319908011ull,
                         kSymmetricLayers = 14531716853140848820ull;
 
 TEST_F(DabGolden, RoundTip) {
