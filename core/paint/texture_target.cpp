@@ -628,89 +628,87 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         // Paints texel (x, y) if the dab reaches it; returns its stroke coverage after the dab.
         const auto visit = [&](int x, int y, std::int64_t e0, std::int64_t e1,
                                std::int64_t e2) -> float {
-                const int tx = wrap ? wrapIndex(x, width) : x;
-                const int ty = wrap ? wrapIndex(y, height) : y;
-                const std::uint32_t tile =
-                    std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
-                if (tile != seenTile) {
-                    seenTile = tile;
-                    const std::int32_t seenSlot = tileSlots[tile];
-                    seenAlpha =
-                        seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
-                    seenWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
-                }
-                const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
-                                          std::size_t(tx % kTextureTile);
-                const float old = seenAlpha ? seenAlpha[local] : 0.0f;
-                // The coverage never falls in a stroke and a dab raises it to its opacity at
-                // most: a texel there already takes nothing from this dab.
-                if (old >= dabOpacity)
-                    return old;
-                const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
-                            l2 = float(e2) * invArea;
-                const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
-                if (!(w > kMinW))
-                    return old;
-                const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
-                const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
-                // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
-                // pixel outside the map's box can be at its surface's outline.
-                const float fx = px - windowX, fy = py - windowY;
-                if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
-                    return old;
-                const std::uint32_t mapped =
-                    fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
-                        ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
-                        : kNone;
-                // On its surface (as Context::onMapSurface()).
-                bool onMap = mapped == own;
-                if (!onMap && mapped != kNone) {
-                    const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
-                    const glm::vec4& plane = setups[mapped].plane;
-                    onMap = plane != glm::vec4(0.0f) &&
-                            std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
-                                -point.z * toleranceScale + toleranceOffset;
-                }
-                const float distance = glm::length(glm::vec2(px, py) - center);
-                if (!(distance < radius))
-                    return old;
-                if (!onMap &&
-                    !c.coveredAtEdge(stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view,
-                                     px, py))
-                    return old;
-                const float weight = tip.weight(glm::vec2(px, py) - center, distance);
-                if (!(weight > 0.0f))
-                    return old;
-                if (tile != lastTile) {
-                    lastTile = tile;
-                    slot = c.slotFor(*this, pageIndex, tile);
-                    alpha = c.slots[std::size_t(slot)].alpha.data();
-                    seenAlpha = alpha;
-                    base = c.coverBase(slot);
-                    before = c.slots[std::size_t(slot)].before.data();
-                    tileTouched = false;
-                    tileTexels = std::size_t(seenWidth) *
-                                 std::size_t(std::min(kTextureTile,
-                                                      height - (ty / kTextureTile) * kTextureTile));
-                }
-                const float cover =
-                    std::max(old, std::min(dabOpacity, base[local] + flowOpacity * weight));
-                if (!(cover > old))
-                    return old;
-                alpha[local] = cover;
-                if (!tileTouched) {
-                    tileTouched = true;
-                    c.touch(slot);
-                    touchedTile = &c.slots[std::size_t(slot)];
-                }
-                Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
-                if (onBase)
-                    blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
-                          before + local * 4, cover);
-                else
-                    writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
-                return cover;
-            };
+            const int tx = wrap ? wrapIndex(x, width) : x;
+            const int ty = wrap ? wrapIndex(y, height) : y;
+            const std::uint32_t tile =
+                std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
+            if (tile != seenTile) {
+                seenTile = tile;
+                const std::int32_t seenSlot = tileSlots[tile];
+                seenAlpha = seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
+                seenWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
+            }
+            const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
+                                      std::size_t(tx % kTextureTile);
+            const float old = seenAlpha ? seenAlpha[local] : 0.0f;
+            // The coverage never falls in a stroke and a dab raises it to its opacity at
+            // most: a texel there already takes nothing from this dab.
+            if (old >= dabOpacity)
+                return old;
+            const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
+                        l2 = float(e2) * invArea;
+            const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
+            if (!(w > kMinW))
+                return old;
+            const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
+            const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
+            // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
+            // pixel outside the map's box can be at its surface's outline.
+            const float fx = px - windowX, fy = py - windowY;
+            if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
+                return old;
+            const std::uint32_t mapped =
+                fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
+                    ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
+                    : kNone;
+            // On its surface (as Context::onMapSurface()).
+            bool onMap = mapped == own;
+            if (!onMap && mapped != kNone) {
+                const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
+                const glm::vec4& plane = setups[mapped].plane;
+                onMap = plane != glm::vec4(0.0f) &&
+                        std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
+                            -point.z * toleranceScale + toleranceOffset;
+            }
+            const float distance = glm::length(glm::vec2(px, py) - center);
+            if (!(distance < radius))
+                return old;
+            if (!onMap && !c.coveredAtEdge(
+                              stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view, px, py))
+                return old;
+            const float weight = tip.weight(glm::vec2(px, py) - center, distance);
+            if (!(weight > 0.0f))
+                return old;
+            if (tile != lastTile) {
+                lastTile = tile;
+                slot = c.slotFor(*this, pageIndex, tile);
+                alpha = c.slots[std::size_t(slot)].alpha.data();
+                seenAlpha = alpha;
+                base = c.coverBase(slot);
+                before = c.slots[std::size_t(slot)].before.data();
+                tileTouched = false;
+                tileTexels = std::size_t(seenWidth) *
+                             std::size_t(std::min(kTextureTile,
+                                                  height - (ty / kTextureTile) * kTextureTile));
+            }
+            const float cover =
+                std::max(old, std::min(dabOpacity, base[local] + flowOpacity * weight));
+            if (!(cover > old))
+                return old;
+            alpha[local] = cover;
+            if (!tileTouched) {
+                tileTouched = true;
+                c.touch(slot);
+                touchedTile = &c.slots[std::size_t(slot)];
+            }
+            Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
+            if (onBase)
+                blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
+                      before + local * 4, cover);
+            else
+                writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
+            return cover;
+        };
         scanUv(r, x0, x1, y0, y1,
                [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
                    least = std::min(least, visit(x, y, e0, e1, e2));
