@@ -533,6 +533,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const Brush& brush = c.brush;
     const bool eraser = brush.eraser;
     const bool onBase = m_mode == StrokeMode::Base;
+    const bool onChannels = m_mode == StrokeMode::Channels;
+    std::array<std::uint8_t*, kPaintChannels> channelTiles{};
 
     // On the base: sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush
     // colour, or the original for the eraser. On a paint layer or mask: writeTexel().
@@ -700,13 +702,34 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 tileTouched = true;
                 c.touch(slot);
                 touchedTile = &c.slots[std::size_t(slot)];
+                // The paint layer's tiles of the channels painted, found (and made) once.
+                if (onChannels)
+                    for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
+                        channelTiles[ch] = m_planes[ch] != nullptr
+                                               ? m_planes[ch]->writableTile(pageIndex, tile)
+                                               : nullptr;
             }
             Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
-            if (onBase)
+            if (onBase) {
                 blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
                       before + local * 4, cover);
-            else
+            } else if (onChannels) {
+                // As writeTexel(), with the tiles at hand.
+                for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
+                    if (channelTiles[ch] == nullptr)
+                        continue;
+                    const int n = ch == 0 ? 3 : 1;
+                    const std::size_t at = local * std::size_t(n + 1);
+                    const std::uint8_t* start = before + channelOffset(ch, tileTexels) + at;
+                    if (eraser)
+                        eraseTexel(channelTiles[ch] + at, start, n, cover);
+                    else
+                        paintTexel(channelTiles[ch] + at, start, n, &m_values[ch == 0 ? 0 : ch + 2],
+                                   cover, m_lock);
+                }
+            } else {
                 writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
+            }
             return cover;
         };
         scanUv(r, x0, x1, y0, y1,
