@@ -84,6 +84,8 @@ struct StrokeTile {
     std::uint32_t dab = 0;            // the last dab that touched it
     // What that dab wrote: texels [x0, x1) × [y0, y1) of the tile (texture targets).
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+    // And per row y of the tile, its texels [rowX0[y], rowX1[y]) (none: rowX0[y] >= rowX1[y]).
+    std::array<std::uint8_t, kTextureTile> rowX0{}, rowX1{};
     std::vector<float> groupAlpha; // alpha when the current dab group first touched it
     std::uint32_t group = 0;       // that group
 };
@@ -109,6 +111,8 @@ struct PaintTarget::Context {
     std::vector<std::uint32_t> triangleDab;   // per triangle: the last dab that looked at it
     std::vector<std::uint32_t> triangleLocal; // index into setups, or kNone (rejected)
     std::vector<TriangleSetup> setups;
+    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets).
+    std::vector<float> triangleCover;
     // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
     std::vector<std::uint32_t> window;
     int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
@@ -132,6 +136,7 @@ struct PaintTarget::Context {
     std::size_t slotsUsed = 0;
     std::vector<std::uint32_t> touched; // slots the current dab touched
     std::vector<TileKey> keys;          // scratch
+    std::vector<TexelSpan> rows;        // scratch: the rows of a tile a dab wrote
     std::vector<std::uint8_t> scratch;
     PaintChanges changes;
 
@@ -250,6 +255,8 @@ struct PaintTarget::Context {
             s.dab = dab;
             s.x0 = s.y0 = std::numeric_limits<int>::max();
             s.x1 = s.y1 = std::numeric_limits<int>::min();
+            s.rowX0.fill(std::uint8_t(kTextureTile));
+            s.rowX1.fill(0);
             touched.push_back(std::uint32_t(slot));
         }
     }
@@ -259,6 +266,8 @@ struct PaintTarget::Context {
         s.y0 = std::min(s.y0, y);
         s.x1 = std::max(s.x1, x + 1);
         s.y1 = std::max(s.y1, y + 1);
+        s.rowX0[std::size_t(y)] = std::min(s.rowX0[std::size_t(y)], std::uint8_t(x));
+        s.rowX1[std::size_t(y)] = std::max(s.rowX1[std::size_t(y)], std::uint8_t(x + 1));
     }
     /**
      * The coverage a dab builds on in slot's tile: the stroke's so far, or within a dab group

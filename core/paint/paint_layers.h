@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -154,9 +155,11 @@ public:
     /**
      * Recomputes the texels rect (page coordinates, inside tile of page) of the composite, with
      * the same bytes as updateTile(); during a stroke only the stroke's channels, the others
-     * being up to date already.
+     * being up to date already. With rows (one per row of rect), only the texels [x0, x1) of
+     * each row (page coordinates; x0 >= x1 for none): what a dab wrote, not its bounding box.
      */
-    void updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect);
+    void updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                    std::span<const TexelSpan> rows = {});
     /** Recomputes the whole composite (on several threads). */
     void updateAll();
     const std::vector<std::uint8_t>& compositeBaseColor(std::uint32_t page) const {
@@ -202,10 +205,11 @@ private:
      * colour, roughness, metallic) in the texels rect of tile of page, channels only.
      */
     void blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect, std::size_t from,
-                     std::size_t to, unsigned channels, float* values) const;
+                     std::size_t to, unsigned channels, float* values,
+                     std::span<const TexelSpan> rows = {}) const;
     /** Sets values (as blendLayers()) to the base's texels in rect, channels only. */
-    void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
-                    float* values) const;
+    void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels, float* values,
+                    std::span<const TexelSpan> rows = {}) const;
 
     std::vector<PageSize> m_pages;
     std::vector<std::vector<std::uint8_t>> m_baseColor;

@@ -62,6 +62,21 @@ TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
     return r;
 }
 
+/** The texels [x0, x1) of row y of rect to visit: rows[y - rect.y], or the whole row. */
+TexelSpan rowOf(const TileRect& rect, std::span<const TexelSpan> rows, int y) {
+    return rows.empty() ? TexelSpan{rect.x, rect.x + rect.width} : rows[std::size_t(y - rect.y)];
+}
+
+/** How many texels rect (or its rows) holds. */
+std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
+    if (rows.empty())
+        return std::size_t(rect.width) * std::size_t(rect.height);
+    std::size_t n = 0;
+    for (const TexelSpan& r : rows)
+        n += r.x1 > r.x0 ? std::size_t(r.x1 - r.x0) : 0;
+    return n;
+}
+
 } // namespace
 
 void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
@@ -82,14 +97,14 @@ void PaintLayerStack::dropStrokeCache() {
 }
 
 void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
-                                 float* values) const {
-    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+                                 float* values, std::span<const TexelSpan> rows) const {
+    const std::size_t n = texelsOf(rect, rows);
     const std::size_t width = std::size_t(m_pages[page].width);
     const std::uint8_t* color = m_baseColor[page].data();
     const std::uint8_t* mr = hasMaterialChannels() ? m_baseMetallicRoughness[page].data() : nullptr;
     std::size_t at = 0;
     for (int y = rect.y; y < rect.y + rect.height; ++y)
-        for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+        for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
             const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
             if ((channels & 1u) != 0)
                 for (std::size_t k = 0; k < 3; ++k)
@@ -106,8 +121,8 @@ void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsig
 
 void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
                                   std::size_t from, std::size_t to, unsigned channels,
-                                  float* values) const {
-    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+                                  float* values, std::span<const TexelSpan> rows) const {
+    const std::size_t n = texelsOf(rect, rows);
     const TileRect tr = tileRectOf(m_pages[page], tile);
     const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
     for (std::size_t l = from; l < to; ++l) {
@@ -149,7 +164,8 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
                 std::size_t at = 0;
                 for (int y = rect.y; y < rect.y + rect.height; ++y) {
                     const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
-                    for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+                    const TexelSpan span = rowOf(rect, rows, y);
+                    for (int x = span.x0; x < span.x1; ++x, ++at) {
                         const std::size_t local = row + std::size_t(x - tr.x);
                         float a = 1.0f;
                         const std::uint8_t* t = nullptr;
@@ -174,11 +190,12 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
     }
 }
 
-void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect) {
+void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                 std::span<const TexelSpan> rows) {
     if (rect.width <= 0 || rect.height <= 0)
         return;
     const TileRect tr = tileRectOf(m_pages.at(page), tile);
-    const std::size_t n = std::size_t(rect.width) * std::size_t(rect.height);
+    const std::size_t n = texelsOf(rect, rows);
     unsigned channels = hasMaterialChannels() ? kAllChannels : 1u;
     std::size_t from = 0; // the first layer to blend over the values below it
     std::uint64_t strokeLayer = 0;
@@ -206,7 +223,7 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
     for (std::size_t l = 0; l < std::min(from, end) && !belowTouches; ++l)
         belowTouches = m_layers[l]->touchesTile(page, tile);
     if (!belowTouches) {
-        baseValues(page, rect, channels, values);
+        baseValues(page, rect, channels, values, rows);
     } else {
         // The layers below the stroke's: kept per tile for the stroke (whole tile, once).
         const std::uint64_t key = (std::uint64_t(page) << 32) | tile;
@@ -225,19 +242,22 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
                     continue;
                 std::size_t at = 0;
                 for (int y = rect.y; y < rect.y + rect.height; ++y) {
+                    const TexelSpan span = rowOf(rect, rows, y);
+                    if (span.x1 <= span.x0)
+                        continue;
                     const float* src = kept->second.data() + v * tn +
                                        std::size_t(y - tr.y) * std::size_t(tr.width) +
-                                       std::size_t(rect.x - tr.x);
-                    std::copy_n(src, rect.width, values + v * n + at);
-                    at += std::size_t(rect.width);
+                                       std::size_t(span.x0 - tr.x);
+                    std::copy_n(src, span.x1 - span.x0, values + v * n + at);
+                    at += std::size_t(span.x1 - span.x0);
                 }
             }
         } else {
-            baseValues(page, rect, channels, values);
-            blendLayers(page, tile, rect, 0, from, channels, values);
+            baseValues(page, rect, channels, values, rows);
+            blendLayers(page, tile, rect, 0, from, channels, values, rows);
         }
     }
-    blendLayers(page, tile, rect, from, std::max(from, end), channels, values);
+    blendLayers(page, tile, rect, from, std::max(from, end), channels, values, rows);
 
     const std::size_t width = std::size_t(m_pages[page].width);
     const std::uint8_t* baseColor = m_baseColor[page].data();
@@ -247,7 +267,7 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
     std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
     std::size_t at = 0;
     for (int y = rect.y; y < rect.y + rect.height; ++y)
-        for (int x = rect.x; x < rect.x + rect.width; ++x, ++at) {
+        for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
             const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
             if ((channels & 1u) != 0) {
                 color[i] = toByte(values[at]);

@@ -54,6 +54,7 @@ std::size_t PaintTarget::contextBytes() const {
            c.vertexView.capacity() * sizeof(std::uint32_t) +
            (c.triangleDab.capacity() + c.triangleLocal.capacity()) * sizeof(std::uint32_t) +
            c.window.capacity() * sizeof(std::uint32_t) +
+           c.triangleCover.capacity() * sizeof(float) +
            c.slots.size() * (c.elementsPerTile * sizeof(float) + c.bytesPerTile);
 }
 

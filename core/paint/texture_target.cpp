@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Projection painting into textures (TextureTarget): pages made from the mesh's textures or new,
 // seam padding, the texel loop of a dab, fills, undo tiles of kTextureTile² texels.
+#include <limits>
 #include <utility>
 
 #include <glm/common.hpp>
@@ -349,6 +350,7 @@ const std::vector<std::uint8_t>& TextureTarget::basePixels(std::size_t i) const 
 
 void TextureTarget::strokeStarted() {
     Context& c = *m_context;
+    c.triangleCover.assign(c.mesh->triangleCount(), 0.0f);
     const Brush& brush = c.brush;
     m_mode = StrokeMode::Base;
     m_planes = {};
@@ -531,6 +533,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const Brush& brush = c.brush;
     const bool eraser = brush.eraser;
     const bool onBase = m_mode == StrokeMode::Base;
+    const bool onChannels = m_mode == StrokeMode::Channels;
+    std::array<std::uint8_t*, kPaintChannels> channelTiles{};
 
     // On the base: sets texel (page, x, y) to lerp(stroke start, target, coverage): the brush
     // colour, or the original for the eraser. On a paint layer or mask: writeTexel().
@@ -555,8 +559,12 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
     const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
     const LayerStack& stack = layers.stack;
 
+    float* triangleCover = c.triangleCover.data();
     for (std::size_t si = 0; si < c.setups.size(); ++si) {
         const TriangleSetup s = c.setups[si];
+        // Every texel of the triangle is at this dab's opacity already: none can take paint.
+        if (triangleCover[s.triangle] >= dabOpacity)
+            continue;
         const auto own = std::uint32_t(si);
         const std::uint32_t pageIndex = m_materialPage[m.triangleMaterial[s.triangle]];
         Page& page = m_pages[pageIndex];
@@ -595,12 +603,19 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         if (double(x1 - x0 + 1) * double(y1 - y0 + 1) > 4.0 * double(width) * double(height))
             continue; // spread over many repeats of the texture (see create())
         const bool wrap = x0 < 0 || y0 < 0 || x1 >= width || y1 >= height;
+        const bool whole = x0 == r.minX && x1 == r.maxX && y0 == r.minY && y1 == r.maxY;
 
         ProjectedVertex p[3];
         for (int k = 0; k < 3; ++k)
             p[k] = c.vertices[s.vertex[std::size_t(r.corner[k])]];
         const float invArea = float(1.0 / double(r.area));
         std::uint8_t* pixels = m_stack->baseColor(pageIndex).data();
+        const std::int32_t* tileSlots = c.tileSlot[pageIndex].data();
+        // The tile of the texel looked at: its stroke coverage (nullptr: no slot yet, all 0).
+        std::uint32_t seenTile = kNone;
+        const float* seenAlpha = nullptr;
+        int seenWidth = 0;
+        // The tile of the last texel that passed the tests, as a slot of the stroke.
         std::uint32_t lastTile = kNone;
         std::int32_t slot = -1;
         float* alpha = nullptr;
@@ -608,83 +623,121 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
         StrokeTile* touchedTile = nullptr;
-        int tileWidth = 0;
         std::size_t tileTexels = 0;
+        // The least coverage of the triangle's texels after this dab (when all are visited).
+        float least = std::numeric_limits<float>::infinity();
 
-        scanUv(
-            r, x0, x1, y0, y1,
-            [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-                const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
-                            l2 = float(e2) * invArea;
-                const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
-                if (!(w > kMinW))
-                    return;
-                const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
-                const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
-                // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
-                // pixel outside the map's box can be at its surface's outline.
-                const float fx = px - windowX, fy = py - windowY;
-                if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
-                    return;
-                const std::uint32_t mapped =
-                    fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
-                        ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
-                        : kNone;
-                // On its surface (as Context::onMapSurface()).
-                bool onMap = mapped == own;
-                if (!onMap && mapped != kNone) {
-                    const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
-                    const glm::vec4& plane = setups[mapped].plane;
-                    onMap = plane != glm::vec4(0.0f) &&
-                            std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
-                                -point.z * toleranceScale + toleranceOffset;
+        // Paints texel (x, y) if the dab reaches it; returns its stroke coverage after the dab.
+        const auto visit = [&](int x, int y, std::int64_t e0, std::int64_t e1,
+                               std::int64_t e2) -> float {
+            const int tx = wrap ? wrapIndex(x, width) : x;
+            const int ty = wrap ? wrapIndex(y, height) : y;
+            const std::uint32_t tile =
+                std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
+            if (tile != seenTile) {
+                seenTile = tile;
+                const std::int32_t seenSlot = tileSlots[tile];
+                seenAlpha = seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
+                seenWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
+            }
+            const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
+                                      std::size_t(tx % kTextureTile);
+            const float old = seenAlpha ? seenAlpha[local] : 0.0f;
+            // The coverage never falls in a stroke and a dab raises it to its opacity at
+            // most: a texel there already takes nothing from this dab.
+            if (old >= dabOpacity)
+                return old;
+            const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
+                        l2 = float(e2) * invArea;
+            const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
+            if (!(w > kMinW))
+                return old;
+            const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
+            const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
+            // The map's fragment at the texel's pixel (as Context::mapAt()). Texels up to a
+            // pixel outside the map's box can be at its surface's outline.
+            const float fx = px - windowX, fy = py - windowY;
+            if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
+                return old;
+            const std::uint32_t mapped =
+                fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
+                    ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
+                    : kNone;
+            // On its surface (as Context::onMapSurface()).
+            bool onMap = mapped == own;
+            if (!onMap && mapped != kNone) {
+                const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
+                const glm::vec4& plane = setups[mapped].plane;
+                onMap = plane != glm::vec4(0.0f) &&
+                        std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
+                            -point.z * toleranceScale + toleranceOffset;
+            }
+            const float distance = glm::length(glm::vec2(px, py) - center);
+            if (!(distance < radius))
+                return old;
+            if (!onMap && !c.coveredAtEdge(
+                              stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view, px, py))
+                return old;
+            const float weight = tip.weight(glm::vec2(px, py) - center, distance);
+            if (!(weight > 0.0f))
+                return old;
+            if (tile != lastTile) {
+                lastTile = tile;
+                slot = c.slotFor(*this, pageIndex, tile);
+                alpha = c.slots[std::size_t(slot)].alpha.data();
+                seenAlpha = alpha;
+                base = c.coverBase(slot);
+                before = c.slots[std::size_t(slot)].before.data();
+                tileTouched = false;
+                tileTexels = std::size_t(seenWidth) *
+                             std::size_t(std::min(kTextureTile,
+                                                  height - (ty / kTextureTile) * kTextureTile));
+            }
+            const float cover =
+                std::max(old, std::min(dabOpacity, base[local] + flowOpacity * weight));
+            if (!(cover > old))
+                return old;
+            alpha[local] = cover;
+            if (!tileTouched) {
+                tileTouched = true;
+                c.touch(slot);
+                touchedTile = &c.slots[std::size_t(slot)];
+                // The paint layer's tiles of the channels painted, found (and made) once.
+                if (onChannels)
+                    for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
+                        channelTiles[ch] = m_planes[ch] != nullptr
+                                               ? m_planes[ch]->writableTile(pageIndex, tile)
+                                               : nullptr;
+            }
+            Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
+            if (onBase) {
+                blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
+                      before + local * 4, cover);
+            } else if (onChannels) {
+                // As writeTexel(), with the tiles at hand.
+                for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
+                    if (channelTiles[ch] == nullptr)
+                        continue;
+                    const int n = ch == 0 ? 3 : 1;
+                    const std::size_t at = local * std::size_t(n + 1);
+                    const std::uint8_t* start = before + channelOffset(ch, tileTexels) + at;
+                    if (eraser)
+                        eraseTexel(channelTiles[ch] + at, start, n, cover);
+                    else
+                        paintTexel(channelTiles[ch] + at, start, n, &m_values[ch == 0 ? 0 : ch + 2],
+                                   cover, m_lock);
                 }
-                const float distance = glm::length(glm::vec2(px, py) - center);
-                if (!(distance < radius))
-                    return;
-                if (!onMap &&
-                    !c.coveredAtEdge(stack, own, l0 * p[0].view + l1 * p[1].view + l2 * p[2].view,
-                                     px, py))
-                    return;
-                const float weight = tip.weight(glm::vec2(px, py) - center, distance);
-                if (!(weight > 0.0f))
-                    return;
-                const int tx = wrap ? wrapIndex(x, width) : x;
-                const int ty = wrap ? wrapIndex(y, height) : y;
-                const std::uint32_t tile =
-                    std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
-                if (tile != lastTile) {
-                    lastTile = tile;
-                    slot = c.slotFor(*this, pageIndex, tile);
-                    alpha = c.slots[std::size_t(slot)].alpha.data();
-                    base = c.coverBase(slot);
-                    before = c.slots[std::size_t(slot)].before.data();
-                    tileTouched = false;
-                    tileWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
-                    tileTexels = std::size_t(tileWidth) *
-                                 std::size_t(std::min(kTextureTile,
-                                                      height - (ty / kTextureTile) * kTextureTile));
-                }
-                const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(tileWidth) +
-                                          std::size_t(tx % kTextureTile);
-                const float old = alpha[local];
-                const float cover =
-                    std::max(old, std::min(dabOpacity, base[local] + flowOpacity * weight));
-                if (!(cover > old))
-                    return;
-                alpha[local] = cover;
-                if (!tileTouched) {
-                    tileTouched = true;
-                    c.touch(slot);
-                    touchedTile = &c.slots[std::size_t(slot)];
-                }
-                Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
-                if (onBase)
-                    blend(pixels, std::size_t(ty) * std::size_t(width) + std::size_t(tx),
-                          before + local * 4, cover);
-                else
-                    writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
-            });
+            } else {
+                writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
+            }
+            return cover;
+        };
+        scanUv(r, x0, x1, y0, y1,
+               [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+                   least = std::min(least, visit(x, y, e0, e1, e2));
+               });
+        if (whole)
+            triangleCover[s.triangle] = least;
     }
 
     padTouched();

@@ -208,7 +208,15 @@ void TextureTarget::refreshTouched() {
         rect.y = int(s.key.tile / std::uint32_t(page.tilesX)) * kTextureTile + s.y0;
         rect.width = s.x1 - s.x0;
         rect.height = s.y1 - s.y0;
-        m_stack->updateRect(s.key.page, s.key.tile, rect);
+        // Only the texels the dab wrote in each row: its bounding box holds many more.
+        const int tileX = rect.x - s.x0;
+        c.rows.resize(std::size_t(rect.height));
+        for (int y = s.y0; y < s.y1; ++y) {
+            const int x0 = s.rowX0[std::size_t(y)], x1 = s.rowX1[std::size_t(y)];
+            c.rows[std::size_t(y - s.y0)] =
+                x0 < x1 ? TexelSpan{tileX + x0, tileX + x1} : TexelSpan{tileX, tileX};
+        }
+        m_stack->updateRect(s.key.page, s.key.tile, rect, c.rows);
     }
 }
 

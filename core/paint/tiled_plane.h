@@ -24,6 +24,11 @@ struct TileRect {
     int x = 0, y = 0, width = 0, height = 0;
 };
 
+/** Texels [x0, x1) of one row of a TileRect. */
+struct TexelSpan {
+    int x0 = 0, x1 = 0;
+};
+
 /**
  * A sparse image over pages: each page is cut into tiles of kPlaneTile² texels (edge tiles are
  * smaller) of texelBytes bytes each, and a tile holds memory only once written; before that it
