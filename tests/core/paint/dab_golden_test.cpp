@@ -233,7 +233,7 @@ TEST_F(DabGolden, SymmetricFourWayOnPaintLayers) {
 
 constexpr std::uint64_t kDense = 2497554367073013212ull,
                         kDenseChalkLayers = 14795070879340344200ull,
-                        kDenseVertexColors = 7146589211968347404ull;
+                        kDenseVertexColors = 1929464844421760637ull;
 
 TEST_F(DabGoldenDense, RoundTipOnSubPixelTriangles) {
     EXPECT_EQ(run(), kDense);
@@ -243,6 +243,8 @@ TEST_F(DabGoldenDense, VertexColors) {
     core::PaintTargetOptions options;
     options.kind = core::PaintTargetKind::VertexColors;
     ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
+    // The step holding the texture target counts its memory, which is not what this compares.
+    m_doc.history().clear();
     EXPECT_EQ(run(), kDenseVertexColors);
 }
 
