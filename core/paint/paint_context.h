@@ -77,6 +77,18 @@ struct TriangleSetup {
     glm::vec4 plane{0.0f}; // view space: unit normal, offset (zero when degenerate)
 };
 
+/**
+ * What a dab needs of a triangle in the current view, kept while the view stays: its setup,
+ * whether it is usable (in front of the eye) and front-facing, and its screen bounding box
+ * floored and widened by a pixel (overlapsMap()).
+ */
+struct ViewTriangle {
+    TriangleSetup setup;
+    float x0 = 0.0f, x1 = 0.0f, y0 = 0.0f, y1 = 0.0f;
+    bool usable = false;
+    bool front = false;
+};
+
 struct StrokeTile {
     TileKey key;
     std::vector<float> alpha;         // stroke coverage per element
@@ -104,6 +116,11 @@ struct PaintTarget::Context {
     float footprintScale = 0.0f, footprintOffset = 0.0f;
     std::vector<ProjectedVertex> vertices;
     std::vector<std::uint32_t> vertexView;
+    // Per triangle: the view serial its viewTriangles entry belongs to, and that entry. A dab on
+    // a dense mesh looks at tens of thousands of triangles, mostly the same as the dab before.
+    std::vector<std::uint32_t> triangleView;
+    std::vector<std::uint32_t> triangleViewIndex;
+    std::vector<ViewTriangle> viewTriangles;
 
     // The dab being painted.
     std::uint32_t dab = 0;
@@ -115,6 +132,8 @@ struct PaintTarget::Context {
     std::vector<float> triangleCover;
     // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
     std::vector<std::uint32_t> window;
+    // Map pixels in window rows [0, y) × columns [0, x), at y * (windowW + 1) + x.
+    std::vector<std::uint32_t> windowSums;
     int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
     glm::vec2 center{0.0f};
     float radius = 0.0f;
@@ -143,6 +162,8 @@ struct PaintTarget::Context {
     void updateView(const View& v);
     const ProjectedVertex& vertex(std::uint32_t v);
     bool setUpTriangle(std::uint32_t t, TriangleSetup& s);
+    /** Triangle t in the current view, set up on first use in the view. */
+    const ViewTriangle& viewTriangle(std::uint32_t t);
     /** A new dab number (the per-triangle and per-tile marks compare with it). */
     void nextDab() {
         if (++dab == 0) {
@@ -165,7 +186,7 @@ struct PaintTarget::Context {
         nextDab();
         return std::isfinite(brush.opacity) ? std::clamp(brush.opacity, 0.0f, 1.0f) : 0.0f;
     }
-    bool overlapsMap(const TriangleSetup& s) const;
+    bool overlapsMap(const ViewTriangle& t) const;
     /**
      * The setup of the map's fragment at window position (px, py), or kNone. Truncating the
      * non-negative offset from the window's integer corner is the floor: the pixel (x, y)
