@@ -19,7 +19,8 @@ void PaintTarget::Context::updateView(const View& v) {
     view = v;
     if (++viewSerial == 0) {
         std::fill(vertexView.begin(), vertexView.end(), 0u);
-        std::fill(triangleView.begin(), triangleView.end(), 0u);
+        for (TriangleMark& m : marks)
+            m.view = 0;
         viewSerial = 1;
     }
     viewTriangles.clear();
@@ -65,16 +66,18 @@ bool PaintTarget::Context::setUpTriangle(std::uint32_t t, TriangleSetup& s) {
 }
 
 const ViewTriangle& PaintTarget::Context::viewTriangle(std::uint32_t t) {
-    if (triangleView[t] == viewSerial)
-        return viewTriangles[triangleViewIndex[t]];
+    TriangleMark& mark = marks[t];
+    if (mark.view == viewSerial)
+        return viewTriangles[mark.viewIndex];
     // Past a budget (a long stroke over most of a huge mesh) start the cache again.
     constexpr std::size_t kMaxViewTriangles = std::size_t(1) << 21;
     if (viewTriangles.size() >= kMaxViewTriangles) {
         viewTriangles.clear();
-        std::fill(triangleView.begin(), triangleView.end(), 0u);
+        for (TriangleMark& m : marks)
+            m.view = 0;
     }
-    triangleView[t] = viewSerial;
-    triangleViewIndex[t] = std::uint32_t(viewTriangles.size());
+    mark.view = viewSerial;
+    mark.viewIndex = std::uint32_t(viewTriangles.size());
     ViewTriangle& v = viewTriangles.emplace_back();
     TriangleSetup& s = v.setup;
     v.usable = setUpTriangle(t, s);
@@ -161,18 +164,19 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
         const int x = int(m.pixel % std::uint32_t(st.width)),
                   y = int(m.pixel / std::uint32_t(st.width));
         const std::uint32_t t = st.triangle[m.fragment];
-        if (triangleDab[t] != dab) {
-            triangleDab[t] = dab;
+        TriangleMark& mark = marks[t];
+        if (mark.dab != dab) {
+            mark.dab = dab;
             const ViewTriangle& v = viewTriangle(t);
             if (v.usable) {
-                triangleLocal[t] = std::uint32_t(setups.size());
+                mark.local = std::uint32_t(setups.size());
                 setups.push_back(v.setup);
             } else {
-                triangleLocal[t] = kNone;
+                mark.local = kNone;
             }
         }
         window[std::size_t(y - windowY) * std::size_t(windowW) + std::size_t(x - windowX)] =
-            triangleLocal[t];
+            mark.local;
     }
 
     // The window's prefix sums of map pixels, for overlapsMap().
@@ -196,14 +200,14 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
         for (std::size_t i = 0; i < setups.size(); ++i) {
             const std::array<std::uint32_t, 3> next = topology->edgeNeighbors[setups[i].triangle];
             for (const std::uint32_t n : next) {
-                if (n >= triangles || triangleDab[n] == dab)
+                if (n >= triangles || marks[n].dab == dab)
                     continue;
-                triangleDab[n] = dab;
-                triangleLocal[n] = kNone;
+                marks[n].dab = dab;
+                marks[n].local = kNone;
                 const ViewTriangle& v = viewTriangle(n);
                 if (!v.usable || (cullBackFaces && !v.front) || !overlapsMap(v))
                     continue;
-                triangleLocal[n] = std::uint32_t(setups.size());
+                marks[n].local = std::uint32_t(setups.size());
                 setups.push_back(v.setup);
             }
         }

@@ -89,6 +89,14 @@ struct ViewTriangle {
     bool front = false;
 };
 
+/** What the context knows of one triangle, kept together so that a dab reads one cache line. */
+struct TriangleMark {
+    std::uint32_t dab = 0;       // the last dab that looked at it
+    std::uint32_t local = kNone; // in that dab: its index into setups, or kNone (rejected)
+    std::uint32_t view = 0;      // the view serial its viewTriangles entry belongs to
+    std::uint32_t viewIndex = 0; // that entry
+};
+
 struct StrokeTile {
     TileKey key;
     std::vector<float> alpha;         // stroke coverage per element
@@ -116,17 +124,14 @@ struct PaintTarget::Context {
     float footprintScale = 0.0f, footprintOffset = 0.0f;
     std::vector<ProjectedVertex> vertices;
     std::vector<std::uint32_t> vertexView;
-    // Per triangle: the view serial its viewTriangles entry belongs to, and that entry. A dab on
-    // a dense mesh looks at tens of thousands of triangles, mostly the same as the dab before.
-    std::vector<std::uint32_t> triangleView;
-    std::vector<std::uint32_t> triangleViewIndex;
+    // Triangles set up in this view (see TriangleMark). A dab on a dense mesh looks at tens of
+    // thousands of triangles, mostly the same as the dab before.
     std::vector<ViewTriangle> viewTriangles;
 
     // The dab being painted.
     std::uint32_t dab = 0;
     bool cullBackFaces = true;
-    std::vector<std::uint32_t> triangleDab;   // per triangle: the last dab that looked at it
-    std::vector<std::uint32_t> triangleLocal; // index into setups, or kNone (rejected)
+    std::vector<TriangleMark> marks; // per triangle
     std::vector<TriangleSetup> setups;
     // Per triangle, in the stroke: a coverage all its texels have reached (texture targets).
     std::vector<float> triangleCover;
@@ -167,7 +172,8 @@ struct PaintTarget::Context {
     /** A new dab number (the per-triangle and per-tile marks compare with it). */
     void nextDab() {
         if (++dab == 0) {
-            std::fill(triangleDab.begin(), triangleDab.end(), 0u);
+            for (TriangleMark& m : marks)
+                m.dab = 0;
             for (StrokeTile& s : slots)
                 s.dab = 0;
             dab = 1;
@@ -257,8 +263,8 @@ struct PaintTarget::Context {
         for (std::uint32_t f = stack.offsets[pixel]; f < stack.offsets[pixel + 1]; ++f) {
             const std::uint32_t t = stack.triangle[f];
             const bool onSurface =
-                t < triangleDab.size() && triangleDab[t] == dab && triangleLocal[t] != kNone
-                    ? onMapSurface(own, p, triangleLocal[t])
+                t < marks.size() && marks[t].dab == dab && marks[t].local != kNone
+                    ? onMapSurface(own, p, marks[t].local)
                     : std::fabs(stack.depth[f] - depth) <= tolerance;
             // The centre saw this surface, yet it is not in the map: hidden, too far along the
             // surface, or another layer chosen there; or only outside the disc.

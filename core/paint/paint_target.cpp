@@ -24,10 +24,7 @@ PaintTarget::PaintTarget(std::shared_ptr<const Mesh> mesh,
     c.options = options;
     c.vertices.resize(c.mesh->vertexCount());
     c.vertexView.assign(c.mesh->vertexCount(), 0u);
-    c.triangleDab.assign(c.mesh->triangleCount(), 0u);
-    c.triangleLocal.assign(c.mesh->triangleCount(), kNone);
-    c.triangleView.assign(c.mesh->triangleCount(), 0u);
-    c.triangleViewIndex.assign(c.mesh->triangleCount(), 0u);
+    c.marks.resize(c.mesh->triangleCount());
     m_drawMaterials = c.mesh->materials;
     for (Material& m : m_drawMaterials)
         m.baseColorFactor = glm::vec4(1.0f);
@@ -54,9 +51,7 @@ std::size_t PaintTarget::contextBytes() const {
     const Context& c = *m_context;
     return c.vertices.capacity() * sizeof(ProjectedVertex) +
            c.vertexView.capacity() * sizeof(std::uint32_t) +
-           (c.triangleDab.capacity() + c.triangleLocal.capacity() + c.triangleView.capacity() +
-            c.triangleViewIndex.capacity()) *
-               sizeof(std::uint32_t) +
+           c.marks.capacity() * sizeof(TriangleMark) +
            c.viewTriangles.capacity() * sizeof(ViewTriangle) +
            (c.window.capacity() + c.windowSums.capacity()) * sizeof(std::uint32_t) +
            c.triangleCover.capacity() * sizeof(float) +
