@@ -23,7 +23,7 @@ void PaintTarget::Context::updateView(const View& v) {
             m.view = 0;
         viewSerial = 1;
     }
-    viewTriangles.clear();
+    viewTriangleCount = 0;
     halfWidth = 0.5f * float(v.width);
     halfHeight = 0.5f * float(v.height);
     rays = PixelRays::fromView(v);
@@ -68,17 +68,22 @@ bool PaintTarget::Context::setUpTriangle(std::uint32_t t, TriangleSetup& s) {
 const ViewTriangle& PaintTarget::Context::viewTriangle(std::uint32_t t) {
     TriangleMark& mark = marks[t];
     if (mark.view == viewSerial)
-        return viewTriangles[mark.viewIndex];
+        return viewChunks[mark.viewIndex >> kViewChunkBits][mark.viewIndex & (kViewChunk - 1)];
     // Past a budget (a long stroke over most of a huge mesh) start the cache again.
     constexpr std::size_t kMaxViewTriangles = std::size_t(1) << 21;
-    if (viewTriangles.size() >= kMaxViewTriangles) {
-        viewTriangles.clear();
+    if (viewTriangleCount >= kMaxViewTriangles) {
+        viewTriangleCount = 0;
         for (TriangleMark& m : marks)
             m.view = 0;
     }
     mark.view = viewSerial;
-    mark.viewIndex = std::uint32_t(viewTriangles.size());
-    ViewTriangle& v = viewTriangles.emplace_back();
+    mark.viewIndex = std::uint32_t(viewTriangleCount);
+    if ((viewTriangleCount >> kViewChunkBits) == viewChunks.size())
+        viewChunks.push_back(std::make_unique<ViewTriangle[]>(kViewChunk));
+    ViewTriangle& v =
+        viewChunks[viewTriangleCount >> kViewChunkBits][viewTriangleCount & (kViewChunk - 1)];
+    ++viewTriangleCount;
+    v = ViewTriangle{};
     TriangleSetup& s = v.setup;
     v.usable = setUpTriangle(t, s);
     if (!v.usable)

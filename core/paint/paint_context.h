@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -93,7 +94,7 @@ struct ViewTriangle {
 struct TriangleMark {
     std::uint32_t dab = 0;       // the last dab that looked at it
     std::uint32_t local = kNone; // in that dab: its index into setups, or kNone (rejected)
-    std::uint32_t view = 0;      // the view serial its viewTriangles entry belongs to
+    std::uint32_t view = 0;      // the view serial its view cache entry belongs to
     std::uint32_t viewIndex = 0; // that entry
 };
 
@@ -126,15 +127,37 @@ struct PaintTarget::Context {
     std::vector<std::uint32_t> vertexView;
     // Triangles set up in this view (see TriangleMark). A dab on a dense mesh looks at tens of
     // thousands of triangles, mostly the same as the dab before.
-    std::vector<ViewTriangle> viewTriangles;
+    // In chunks of kViewChunk, so that growing never moves (copies) what is there.
+    static constexpr std::size_t kViewChunkBits = 12, kViewChunk = std::size_t(1) << kViewChunkBits;
+    std::vector<std::unique_ptr<ViewTriangle[]>> viewChunks;
+    std::size_t viewTriangleCount = 0;
 
     // The dab being painted.
     std::uint32_t dab = 0;
     bool cullBackFaces = true;
     std::vector<TriangleMark> marks; // per triangle
     std::vector<TriangleSetup> setups;
-    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets).
+    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets),
+    // and the triangles the stroke raised it for (set back at the next stroke's start, not all).
     std::vector<float> triangleCover;
+    std::vector<std::uint32_t> coveredTriangles;
+    /** Sets triangleCover[t] (never lowered within a stroke) to cover. */
+    void setTriangleCover(std::uint32_t t, float cover) {
+        if (triangleCover[t] == 0.0f && cover != 0.0f)
+            coveredTriangles.push_back(t);
+        triangleCover[t] = cover;
+    }
+    /** All of triangleCover 0 again, for a new stroke. */
+    void clearTriangleCover() {
+        const std::size_t n = mesh->triangleCount();
+        if (triangleCover.size() != n || coveredTriangles.size() > n / 8) {
+            triangleCover.assign(n, 0.0f);
+        } else {
+            for (const std::uint32_t t : coveredTriangles)
+                triangleCover[t] = 0.0f;
+        }
+        coveredTriangles.clear();
+    }
     // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
     std::vector<std::uint32_t> window;
     // Map pixels in window rows [0, y) × columns [0, x), at y * (windowW + 1) + x.

@@ -52,9 +52,10 @@ std::size_t PaintTarget::contextBytes() const {
     return c.vertices.capacity() * sizeof(ProjectedVertex) +
            c.vertexView.capacity() * sizeof(std::uint32_t) +
            c.marks.capacity() * sizeof(TriangleMark) +
-           c.viewTriangles.capacity() * sizeof(ViewTriangle) +
+           c.viewChunks.size() * Context::kViewChunk * sizeof(ViewTriangle) +
            (c.window.capacity() + c.windowSums.capacity()) * sizeof(std::uint32_t) +
            c.triangleCover.capacity() * sizeof(float) +
+           c.coveredTriangles.capacity() * sizeof(std::uint32_t) +
            c.slots.size() * (c.elementsPerTile * sizeof(float) + c.bytesPerTile);
 }
 
