@@ -255,6 +255,7 @@ int runBench(const BenchArgs& args) {
             return fail(s.error());
         modelMemory.mark("mesh_upload");
 
+        const core::PaintTargetOptions strokeTargetOptions = doc.paintTargetOptions();
         for (const std::string& size : args.sizes) {
             CameraArgs cameraArgs = args.camera;
             cameraArgs.size = size;
@@ -265,6 +266,22 @@ int runBench(const BenchArgs& args) {
             if (const core::Status s = target.create(view->width, view->height); !s)
                 return fail(s.error());
 
+            // The strokes' target, new for each size (timePaintLayers() below replaces it); the
+            // history does not keep the one it replaces.
+            core::PaintTargetOptions targetOptions = strokeTargetOptions;
+            if (args.targetSize > 0) {
+                targetOptions.kind = core::PaintTargetKind::Texture;
+                targetOptions.resolution = args.targetSize;
+            }
+            if (const core::Status s = doc.setPaintTarget(targetOptions); !s)
+                return fail(model + ": " + s.error());
+            doc.history().clear();
+            const core::PaintTarget* strokeTarget = doc.currentPaintTarget();
+            const bool strokeTexture =
+                strokeTarget && strokeTarget->kind() == core::PaintTargetKind::Texture;
+            const json targetJson = {
+                {"kind", strokeTexture ? "texture" : "vertex-colors"},
+                {"resolution", strokeTexture ? doc.paintTargetOptions().resolution : 0}};
             Samples samples;
             PeakMemory memory = modelMemory;
             std::vector<double> tipMoves; // move_stroke with a textured tip turning along the path
@@ -400,6 +417,7 @@ int runBench(const BenchArgs& args) {
                 {"move_stroke_ms", median(samples.moveStroke)},
                 {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
                 {"dab_on_target_ms", median(samples.dab)},
+                {"stroke_target", targetJson},
                 {"move_stroke_textured_tip_ms", median(tipMoves)},
                 {"move_stroke_symmetric_4_ms", median(symmetricMoves)},
                 {"peak_rss_mib", memory.toJson()},

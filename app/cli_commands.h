@@ -68,6 +68,7 @@ struct BenchArgs {
     CameraArgs camera;
     int runs = 7;
     std::string connectivity = "auto"; // the engine build_layers uses; both are timed anyway
+    int targetSize = 0; // the strokes' texture target, N × N; 0: the document's default target
     std::string jsonOut;
 };
 

@@ -117,6 +117,11 @@ int main(int argc, char** argv) {
                      "Engine inside build_layers: auto, cpu or gpu (both are timed alone too)")
         ->check(CLI::IsMember({"auto", "cpu", "gpu"}))
         ->capture_default_str();
+    benchCommand
+        ->add_option("--target-size", bench.targetSize,
+                     "Paint the strokes on a texture target of N x N texels (default: the "
+                     "document's choice, 2048 on a mesh with UVs, else vertex colours)")
+        ->check(CLI::Range(512, 8192));
     benchCommand->add_option("--json", bench.jsonOut, "Also write the results to this file");
 
     std::vector<std::string> loadModels;

@@ -19,8 +19,11 @@ void PaintTarget::Context::updateView(const View& v) {
     view = v;
     if (++viewSerial == 0) {
         std::fill(vertexView.begin(), vertexView.end(), 0u);
+        for (TriangleMark& m : marks)
+            m.view = 0;
         viewSerial = 1;
     }
+    viewTriangleCount = 0;
     halfWidth = 0.5f * float(v.width);
     halfHeight = 0.5f * float(v.height);
     rays = PixelRays::fromView(v);
@@ -62,26 +65,55 @@ bool PaintTarget::Context::setUpTriangle(std::uint32_t t, TriangleSetup& s) {
     return true;
 }
 
-bool PaintTarget::Context::overlapsMap(const TriangleSetup& s) const {
-    // Its surface points project inside its screen bounding box: look for a map pixel there, or
-    // one pixel beside it (points in a pixel next to the map can be painted: coveredAtEdge()).
-    const float minX = std::min({s.screen[0].x, s.screen[1].x, s.screen[2].x});
-    const float maxX = std::max({s.screen[0].x, s.screen[1].x, s.screen[2].x});
-    const float minY = std::min({s.screen[0].y, s.screen[1].y, s.screen[2].y});
-    const float maxY = std::max({s.screen[0].y, s.screen[1].y, s.screen[2].y});
-    const float x0 = std::max(std::floor(minX) - 1.0f, float(windowX));
-    const float x1 = std::min(std::floor(maxX) + 1.0f, float(windowX + windowW - 1));
-    const float y0 = std::max(std::floor(minY) - 1.0f, float(windowY));
-    const float y1 = std::min(std::floor(maxY) + 1.0f, float(windowY + windowH - 1));
+const ViewTriangle& PaintTarget::Context::viewTriangle(std::uint32_t t) {
+    TriangleMark& mark = marks[t];
+    if (mark.view == viewSerial)
+        return viewChunks[mark.viewIndex >> kViewChunkBits][mark.viewIndex & (kViewChunk - 1)];
+    // Past a budget (a long stroke over most of a huge mesh) start the cache again.
+    constexpr std::size_t kMaxViewTriangles = std::size_t(1) << 21;
+    if (viewTriangleCount >= kMaxViewTriangles) {
+        viewTriangleCount = 0;
+        for (TriangleMark& m : marks)
+            m.view = 0;
+    }
+    mark.view = viewSerial;
+    mark.viewIndex = std::uint32_t(viewTriangleCount);
+    if ((viewTriangleCount >> kViewChunkBits) == viewChunks.size())
+        viewChunks.push_back(std::make_unique<ViewTriangle[]>(kViewChunk));
+    ViewTriangle& v =
+        viewChunks[viewTriangleCount >> kViewChunkBits][viewTriangleCount & (kViewChunk - 1)];
+    ++viewTriangleCount;
+    v = ViewTriangle{};
+    TriangleSetup& s = v.setup;
+    v.usable = setUpTriangle(t, s);
+    if (!v.usable)
+        return v;
+    // Front faces are clockwise in window coordinates (counter-clockwise in NDC).
+    const glm::vec2 e1 = s.screen[1] - s.screen[0], e2 = s.screen[2] - s.screen[0];
+    v.front = e1.x * e2.y - e1.y * e2.x < 0.0f;
+    // Its surface points project inside its screen bounding box; points in a pixel next to the
+    // map can be painted (coveredAtEdge()), so the box reaches one pixel further.
+    v.x0 = std::floor(std::min({s.screen[0].x, s.screen[1].x, s.screen[2].x})) - 1.0f;
+    v.x1 = std::floor(std::max({s.screen[0].x, s.screen[1].x, s.screen[2].x})) + 1.0f;
+    v.y0 = std::floor(std::min({s.screen[0].y, s.screen[1].y, s.screen[2].y})) - 1.0f;
+    v.y1 = std::floor(std::max({s.screen[0].y, s.screen[1].y, s.screen[2].y})) + 1.0f;
+    return v;
+}
+
+bool PaintTarget::Context::overlapsMap(const ViewTriangle& t) const {
+    // A map pixel in the triangle's widened box, counted from the window's prefix sums.
+    const float x0 = std::max(t.x0, float(windowX));
+    const float x1 = std::min(t.x1, float(windowX + windowW - 1));
+    const float y0 = std::max(t.y0, float(windowY));
+    const float y1 = std::min(t.y1, float(windowY + windowH - 1));
     if (!(x0 <= x1 && y0 <= y1))
         return false;
-    for (int y = int(y0); y <= int(y1); ++y) {
-        const std::uint32_t* row = window.data() + std::size_t(y - windowY) * std::size_t(windowW);
-        for (int x = int(x0); x <= int(x1); ++x)
-            if (row[x - windowX] != kNone)
-                return true;
-    }
-    return false;
+    const std::size_t stride = std::size_t(windowW) + 1;
+    const std::size_t ax = std::size_t(int(x0) - windowX), bx = std::size_t(int(x1) - windowX) + 1;
+    const std::size_t ay = std::size_t(int(y0) - windowY), by = std::size_t(int(y1) - windowY) + 1;
+    const std::uint32_t* sums = windowSums.data();
+    return sums[by * stride + bx] + sums[ay * stride + ax] !=
+           sums[ay * stride + bx] + sums[by * stride + ax];
 }
 
 bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
@@ -137,18 +169,33 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
         const int x = int(m.pixel % std::uint32_t(st.width)),
                   y = int(m.pixel / std::uint32_t(st.width));
         const std::uint32_t t = st.triangle[m.fragment];
-        if (triangleDab[t] != dab) {
-            triangleDab[t] = dab;
-            TriangleSetup s;
-            if (setUpTriangle(t, s)) {
-                triangleLocal[t] = std::uint32_t(setups.size());
-                setups.push_back(s);
+        TriangleMark& mark = marks[t];
+        if (mark.dab != dab) {
+            mark.dab = dab;
+            const ViewTriangle& v = viewTriangle(t);
+            if (v.usable) {
+                mark.local = std::uint32_t(setups.size());
+                setups.push_back(v.setup);
             } else {
-                triangleLocal[t] = kNone;
+                mark.local = kNone;
             }
         }
         window[std::size_t(y - windowY) * std::size_t(windowW) + std::size_t(x - windowX)] =
-            triangleLocal[t];
+            mark.local;
+    }
+
+    // The window's prefix sums of map pixels, for overlapsMap().
+    const std::size_t stride = std::size_t(windowW) + 1;
+    windowSums.assign(stride * (std::size_t(windowH) + 1), 0u);
+    for (std::size_t y = 0; y < std::size_t(windowH); ++y) {
+        const std::uint32_t* row = window.data() + y * std::size_t(windowW);
+        const std::uint32_t* above = windowSums.data() + y * stride;
+        std::uint32_t* sums = windowSums.data() + (y + 1) * stride;
+        std::uint32_t inRow = 0;
+        for (std::size_t x = 0; x < std::size_t(windowW); ++x) {
+            inRow += row[x] != kNone ? 1u : 0u;
+            sums[x + 1] = above[x + 1] + inRow;
+        }
     }
 
     // Their neighbours across edges whose projection reaches a map pixel, and theirs in turn:
@@ -158,23 +205,15 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
         for (std::size_t i = 0; i < setups.size(); ++i) {
             const std::array<std::uint32_t, 3> next = topology->edgeNeighbors[setups[i].triangle];
             for (const std::uint32_t n : next) {
-                if (n >= triangles || triangleDab[n] == dab)
+                if (n >= triangles || marks[n].dab == dab)
                     continue;
-                triangleDab[n] = dab;
-                triangleLocal[n] = kNone;
-                TriangleSetup s;
-                if (!setUpTriangle(n, s))
+                marks[n].dab = dab;
+                marks[n].local = kNone;
+                const ViewTriangle& v = viewTriangle(n);
+                if (!v.usable || (cullBackFaces && !v.front) || !overlapsMap(v))
                     continue;
-                if (cullBackFaces) {
-                    // Front faces are clockwise in window coordinates (counter-clockwise in NDC).
-                    const glm::vec2 e1 = s.screen[1] - s.screen[0], e2 = s.screen[2] - s.screen[0];
-                    if (!(e1.x * e2.y - e1.y * e2.x < 0.0f))
-                        continue;
-                }
-                if (!overlapsMap(s))
-                    continue;
-                triangleLocal[n] = std::uint32_t(setups.size());
-                setups.push_back(s);
+                marks[n].local = std::uint32_t(setups.size());
+                setups.push_back(v.setup);
             }
         }
     }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -77,6 +78,26 @@ struct TriangleSetup {
     glm::vec4 plane{0.0f}; // view space: unit normal, offset (zero when degenerate)
 };
 
+/**
+ * What a dab needs of a triangle in the current view, kept while the view stays: its setup,
+ * whether it is usable (in front of the eye) and front-facing, and its screen bounding box
+ * floored and widened by a pixel (overlapsMap()).
+ */
+struct ViewTriangle {
+    TriangleSetup setup;
+    float x0 = 0.0f, x1 = 0.0f, y0 = 0.0f, y1 = 0.0f;
+    bool usable = false;
+    bool front = false;
+};
+
+/** What the context knows of one triangle, kept together so that a dab reads one cache line. */
+struct TriangleMark {
+    std::uint32_t dab = 0;       // the last dab that looked at it
+    std::uint32_t local = kNone; // in that dab: its index into setups, or kNone (rejected)
+    std::uint32_t view = 0;      // the view serial its view cache entry belongs to
+    std::uint32_t viewIndex = 0; // that entry
+};
+
 struct StrokeTile {
     TileKey key;
     std::vector<float> alpha;         // stroke coverage per element
@@ -104,17 +125,43 @@ struct PaintTarget::Context {
     float footprintScale = 0.0f, footprintOffset = 0.0f;
     std::vector<ProjectedVertex> vertices;
     std::vector<std::uint32_t> vertexView;
+    // Triangles set up in this view (see TriangleMark). A dab on a dense mesh looks at tens of
+    // thousands of triangles, mostly the same as the dab before.
+    // In chunks of kViewChunk, so that growing never moves (copies) what is there.
+    static constexpr std::size_t kViewChunkBits = 12, kViewChunk = std::size_t(1) << kViewChunkBits;
+    std::vector<std::unique_ptr<ViewTriangle[]>> viewChunks;
+    std::size_t viewTriangleCount = 0;
 
     // The dab being painted.
     std::uint32_t dab = 0;
     bool cullBackFaces = true;
-    std::vector<std::uint32_t> triangleDab;   // per triangle: the last dab that looked at it
-    std::vector<std::uint32_t> triangleLocal; // index into setups, or kNone (rejected)
+    std::vector<TriangleMark> marks; // per triangle
     std::vector<TriangleSetup> setups;
-    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets).
+    // Per triangle, in the stroke: a coverage all its texels have reached (texture targets),
+    // and the triangles the stroke raised it for (set back at the next stroke's start, not all).
     std::vector<float> triangleCover;
+    std::vector<std::uint32_t> coveredTriangles;
+    /** Sets triangleCover[t] (never lowered within a stroke) to cover. */
+    void setTriangleCover(std::uint32_t t, float cover) {
+        if (triangleCover[t] == 0.0f && cover != 0.0f)
+            coveredTriangles.push_back(t);
+        triangleCover[t] = cover;
+    }
+    /** All of triangleCover 0 again, for a new stroke. */
+    void clearTriangleCover() {
+        const std::size_t n = mesh->triangleCount();
+        if (triangleCover.size() != n || coveredTriangles.size() > n / 8) {
+            triangleCover.assign(n, 0.0f);
+        } else {
+            for (const std::uint32_t t : coveredTriangles)
+                triangleCover[t] = 0.0f;
+        }
+        coveredTriangles.clear();
+    }
     // Per pixel of the map's bounding box: the setup of its fragment's triangle, or kNone.
     std::vector<std::uint32_t> window;
+    // Map pixels in window rows [0, y) × columns [0, x), at y * (windowW + 1) + x.
+    std::vector<std::uint32_t> windowSums;
     int windowX = 0, windowY = 0, windowW = 0, windowH = 0;
     glm::vec2 center{0.0f};
     float radius = 0.0f;
@@ -143,10 +190,13 @@ struct PaintTarget::Context {
     void updateView(const View& v);
     const ProjectedVertex& vertex(std::uint32_t v);
     bool setUpTriangle(std::uint32_t t, TriangleSetup& s);
+    /** Triangle t in the current view, set up on first use in the view. */
+    const ViewTriangle& viewTriangle(std::uint32_t t);
     /** A new dab number (the per-triangle and per-tile marks compare with it). */
     void nextDab() {
         if (++dab == 0) {
-            std::fill(triangleDab.begin(), triangleDab.end(), 0u);
+            for (TriangleMark& m : marks)
+                m.dab = 0;
             for (StrokeTile& s : slots)
                 s.dab = 0;
             dab = 1;
@@ -165,7 +215,7 @@ struct PaintTarget::Context {
         nextDab();
         return std::isfinite(brush.opacity) ? std::clamp(brush.opacity, 0.0f, 1.0f) : 0.0f;
     }
-    bool overlapsMap(const TriangleSetup& s) const;
+    bool overlapsMap(const ViewTriangle& t) const;
     /**
      * The setup of the map's fragment at window position (px, py), or kNone. Truncating the
      * non-negative offset from the window's integer corner is the floor: the pixel (x, y)
@@ -236,8 +286,8 @@ struct PaintTarget::Context {
         for (std::uint32_t f = stack.offsets[pixel]; f < stack.offsets[pixel + 1]; ++f) {
             const std::uint32_t t = stack.triangle[f];
             const bool onSurface =
-                t < triangleDab.size() && triangleDab[t] == dab && triangleLocal[t] != kNone
-                    ? onMapSurface(own, p, triangleLocal[t])
+                t < marks.size() && marks[t].dab == dab && marks[t].local != kNone
+                    ? onMapSurface(own, p, marks[t].local)
                     : std::fabs(stack.depth[f] - depth) <= tolerance;
             // The centre saw this surface, yet it is not in the map: hidden, too far along the
             // surface, or another layer chosen there; or only outside the disc.

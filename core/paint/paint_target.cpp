@@ -24,8 +24,7 @@ PaintTarget::PaintTarget(std::shared_ptr<const Mesh> mesh,
     c.options = options;
     c.vertices.resize(c.mesh->vertexCount());
     c.vertexView.assign(c.mesh->vertexCount(), 0u);
-    c.triangleDab.assign(c.mesh->triangleCount(), 0u);
-    c.triangleLocal.assign(c.mesh->triangleCount(), kNone);
+    c.marks.resize(c.mesh->triangleCount());
     m_drawMaterials = c.mesh->materials;
     for (Material& m : m_drawMaterials)
         m.baseColorFactor = glm::vec4(1.0f);
@@ -52,9 +51,11 @@ std::size_t PaintTarget::contextBytes() const {
     const Context& c = *m_context;
     return c.vertices.capacity() * sizeof(ProjectedVertex) +
            c.vertexView.capacity() * sizeof(std::uint32_t) +
-           (c.triangleDab.capacity() + c.triangleLocal.capacity()) * sizeof(std::uint32_t) +
-           c.window.capacity() * sizeof(std::uint32_t) +
+           c.marks.capacity() * sizeof(TriangleMark) +
+           c.viewChunks.size() * Context::kViewChunk * sizeof(ViewTriangle) +
+           (c.window.capacity() + c.windowSums.capacity()) * sizeof(std::uint32_t) +
            c.triangleCover.capacity() * sizeof(float) +
+           c.coveredTriangles.capacity() * sizeof(std::uint32_t) +
            c.slots.size() * (c.elementsPerTile * sizeof(float) + c.bytesPerTile);
 }
 

@@ -350,7 +350,7 @@ const std::vector<std::uint8_t>& TextureTarget::basePixels(std::size_t i) const 
 
 void TextureTarget::strokeStarted() {
     Context& c = *m_context;
-    c.triangleCover.assign(c.mesh->triangleCount(), 0.0f);
+    c.clearTriangleCover();
     const Brush& brush = c.brush;
     m_mode = StrokeMode::Base;
     m_planes = {};
@@ -737,7 +737,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                    least = std::min(least, visit(x, y, e0, e1, e2));
                });
         if (whole)
-            triangleCover[s.triangle] = least;
+            c.setTriangleCover(s.triangle, least);
     }
 
     padTouched();
