@@ -114,6 +114,16 @@ else
 fi
 # A cap on restarts, so that a shallow crash cannot turn the run into restarts only.
 max_segments=32
+# What makes two runs of the same tree part, as far as it can be switched off: address space
+# randomization (heap addresses reach libFuzzer's table of compared values through pointer
+# comparisons, and the table's slots are picked by the caller's address), reading the corpus
+# folder again every second and giving memory back to the system when the resident size is high.
+norandom=()
+if setarch "$(uname -m)" -R true 2>/dev/null; then
+    norandom=(setarch "$(uname -m)" -R)
+else
+    echo "(setarch -R is not available: runs with address space randomization)"
+fi
 [[ -z $runs ]] && max_segments=1000
 # The targets' scratch files: the same path on every machine (see tests/fuzz/fuzz_input.h), so
 # one run at a time per machine.
@@ -159,8 +169,9 @@ fuzz_target() {
             >"$work/inputs-$target-$segment.txt"
         log=$work/$name-$segment.log
         LAYERPAINT_FUZZ_KNOWN_CRASHERS=$known LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-$target \
-            "build/fuzz/tests/fuzz/$name" -seed=$((seed + segment - 1)) -timeout=20 \
-            -rss_limit_mb=3072 -max_len=65536 -close_fd_mask=1 -print_final_stats=1 \
+            "${norandom[@]}" "build/fuzz/tests/fuzz/$name" -seed=$((seed + segment - 1)) \
+            -timeout=20 -rss_limit_mb=3072 -max_len=65536 -close_fd_mask=1 -print_final_stats=1 \
+            -reload=0 -purge_allocator_interval=-1 \
             -artifact_prefix="$work/artifacts/$name-" "${budget[@]}" \
             -seed_inputs=@"$work/inputs-$target-$segment.txt" "$work/corpus-$target/$segment" \
             >"$log" 2>&1 && code=0 || code=$?
@@ -261,10 +272,16 @@ for name in fuzz_loaders fuzz_project; do
     lines=()
     echo "== $name: findings"
     while read -r -u 3 segment at artifact; do
-        kind=$(basename "$artifact")
-        kind=${kind#"$name"-}
-        kind=${kind%%-*}
-        [[ $kind == crash || $kind == oom || $kind == timeout ]] || kind=crash
+        # By what happened, not the artifact's name (libFuzzer calls ASan's refused
+        # allocations crashes).
+        log=$work/$name-$segment.log
+        if grep -q 'ERROR: libFuzzer: timeout' "$log"; then
+            kind=timeout
+        elif grep -qE 'out-of-memory|out of memory|allocation-size-too-big' "$log"; then
+            kind=oom
+        else
+            kind=crash
+        fi
         where=$(origin "$work/$name-$segment.log")
         count[$where-$kind]=$((${count[$where-$kind]:-0} + 1))
         echo "-- $where $kind (segment $segment, seed $((seed + segment - 1)), by input $at):" \
