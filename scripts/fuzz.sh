@@ -3,20 +3,29 @@
 # Fuzzes the model loaders and the project reader with libFuzzer (the two targets side by side),
 # as the importer process runs them (in process, ASan/UBSan), starting from a seed corpus made
 # here from Debian's assimp-testmodels (and, when the dev build exists, projects written by its
-# layerpaint-cli). Any crash, sanitizer report, timeout or out-of-memory fails.
+# layerpaint-cli).
 #
-#   scripts/fuzz.sh --runs N      CI: N inputs per target from seed 1 and a seed corpus listed in
-#                                 sorted order (no wall-clock budget); then the regression corpus
-#                                 (tests/data/crashers) and any finding through the dev build's
-#                                 layerpaint-cli, out of process: each must give a clean error. A
-#                                 finding fails if it is in our code or the importer process does
-#                                 not contain it; one in a third-party parser is reported (add it
+# libFuzzer stops at its first finding (crash, sanitizer report, timeout, out-of-memory). So
+# that a finding does not end the search, each target runs in segments: after a finding the next
+# segment starts with the next seed, from the seed files and everything the earlier segments
+# added to the corpus (listed in sorted order), skipping the inputs found so far, until the
+# budget is spent (at most 32 segments). Every finding is classified by the innermost frame of
+# its stack: "ours" (core/, the targets) or "third-party" (a parser only the importer process can
+# contain), and replayed through the dev build's layerpaint-cli, out of process, which must give
+# a one-line error naming the file (or load it) and not crash. A summary ends the output.
+#
+#   scripts/fuzz.sh --runs N      CI: N inputs per target in all (the segments' executed inputs,
+#                                 each restart's corpus replay included), seeds 1, 2, ... (no
+#                                 wall-clock budget). Fails on a finding in our code, on a replay
+#                                 (of a finding or of tests/data/crashers) that crashes or does not
+#                                 give a clean error, on a budget not spent in 32 segments, and on
+#                                 a run that ends without a finding but not cleanly. A third-party
+#                                 finding the importer process contains only is reported (add it
 #                                 to tests/data/crashers).
-#   scripts/fuzz.sh [SECONDS]     exploration: SECONDS per target (default 1800), seed
-#                                 LAYERPAINT_FUZZ_SEED (default: random, printed). What it finds is
-#                                 in build/fuzz/run/artifacts and is replayed through the dev
-#                                 build's layerpaint-cli: a crash there is one the importer process
-#                                 turns into an error (add it to tests/data/crashers, see README).
+#   scripts/fuzz.sh [SECONDS]     exploration: SECONDS per target in all (default 1800), seeds
+#                                 from LAYERPAINT_FUZZ_SEED (default: random, printed). Findings
+#                                 are in build/fuzz/run/artifacts; the script fails only if a
+#                                 replay through layerpaint-cli is not contained.
 #
 # Inputs of tests/data/crashers are skipped by the targets (LAYERPAINT_FUZZ_KNOWN_CRASHERS): they
 # crash third-party parsers, which only the importer process can contain.
@@ -86,146 +95,240 @@ if [[ -x "$cli" ]]; then
         dd if="$project" of="${project%.glb}.json" bs=1 skip=20 count="$length" status=none
     done
 fi
-# The seed lists in a fixed order (libFuzzer reads a folder in the file system's order), comma
-# separated as -seed_inputs=@FILE wants them.
+# The seed lists in a fixed order (libFuzzer reads a folder in the file system's order).
 for name in loaders project; do
-    (cd "$work/seeds-$name" && ls | LC_ALL=C sort | sed "s|^|$PWD/|" | paste -sd,) \
-        >"$work/seeds-$name.txt"
+    (cd "$work/seeds-$name" && ls | LC_ALL=C sort | sed "s|^|$PWD/|") >"$work/seeds-$name.list"
 done
 echo "seeds: $seeds model files, $(ls "$work/seeds-project" | wc -l) project inputs"
 
-export LAYERPAINT_FUZZ_KNOWN_CRASHERS=$PWD/tests/data/crashers
 # Leaks inside Assimp's error paths are not ours to fix; everything else is checked.
 # Allocations beyond 3 GiB fail the same way everywhere (not by what the machine can map).
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=3072
 export UBSAN_OPTIONS=print_stacktrace=1
 if [[ -n $runs ]]; then
     seed=1
-    echo "seed $seed, $runs runs per target"
+    echo "seeds from $seed, $runs runs per target"
 else
     seed=${LAYERPAINT_FUZZ_SEED:-$((RANDOM * 32768 + RANDOM + 1))}
-    echo "seed $seed, $seconds s per target (LAYERPAINT_FUZZ_SEED=$seed repeats the start)"
+    echo "seeds from $seed, $seconds s per target (LAYERPAINT_FUZZ_SEED=$seed repeats the start)"
 fi
+# A cap on restarts, so that a shallow crash cannot turn the run into restarts only.
+max_segments=32
+# What makes two runs of the same tree part, as far as it can be switched off: address space
+# randomization (heap addresses reach libFuzzer's table of compared values through pointer
+# comparisons, and the table's slots are picked by the caller's address), reading the corpus
+# folder again every second and giving memory back to the system when the resident size is high.
+norandom=()
+if setarch "$(uname -m)" -R true 2>/dev/null; then
+    norandom=(setarch "$(uname -m)" -R)
+else
+    echo "(setarch -R is not available: runs with address space randomization)"
+fi
+[[ -z $runs ]] && max_segments=1000
 # The targets' scratch files: the same path on every machine (see tests/fuzz/fuzz_input.h), so
 # one run at a time per machine.
 exec 9>/tmp/layerpaint-fuzz.lock
 flock -n 9 || { echo "another scripts/fuzz.sh is running on this machine" >&2; exit 1; }
-run() {
-    local name=$1 target=${1#fuzz_} mode
-    if [[ -n $runs ]]; then
-        mode=(-runs="$runs" -seed_inputs=@"$work/seeds-$target.txt")
-    else
-        # Goes on after a finding (in child processes) to use the whole time.
-        mode=(-max_total_time="$seconds" -fork=1 -ignore_crashes=1 -ignore_timeouts=1
-            -ignore_ooms=1 "$work/seeds-$target")
-    fi
-    LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-$target \
-        "build/fuzz/tests/fuzz/$name" -seed="$seed" -timeout=20 -rss_limit_mb=3072 -max_len=65536 \
-        -close_fd_mask=1 -print_final_stats=1 -artifact_prefix="$work/artifacts/$name-" \
-        "$work/corpus-$target" "${mode[@]}" >"$work/$name.log" 2>&1
-}
-status=0
-run fuzz_loaders &
-loaders=$!
-run fuzz_project &
-project=$!
-# A finding makes libFuzzer exit non-zero; whether it fails is decided below by where it is. A
-# run that ended non-zero without a finding (it could not start, ...) fails.
-declare -A exited
-wait "$loaders" && exited[fuzz_loaders]=0 || exited[fuzz_loaders]=$?
-wait "$project" && exited[fuzz_project]=0 || exited[fuzz_project]=$?
-# Where a finding failed: the innermost stack frame that is not the sanitizer's, libFuzzer's or
-# the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
-# in a third-party parser, which only the importer process can contain (checked below).
-origin() {
-    awk '/ERROR: |CHECK failed|deadly signal|runtime error|Test unit written/ { on = 1 }
-        on && /#[0-9]+ 0x[0-9a-f]+ / {
-        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x|asan_|operator (new|delete)/) next
-        print ($0 ~ /\/(core|tests\/fuzz)\/([a-z_]+\/)*[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1"
-}
-for name in fuzz_loaders fuzz_project; do
-    echo "== $name"
-    grep -E '^(#[0-9]+ +DONE|Done|stat::number_of_executed_units|stat::peak_rss_mb|INFO: fuzzed for)' \
-        "$work/$name.log" | tail -n 4 || true
-    if grep -qE 'ERROR: (AddressSanitizer|libFuzzer|LeakSanitizer)|Sanitizer: CHECK failed|runtime error|Test unit written' \
-        "$work/$name.log"; then
-        where=$(origin "$work/$name.log")
-        echo "finding in ${where:-unknown} code:"
-        grep -E 'ERROR: |runtime error|#[0-9]+ 0x[0-9a-f]+ in ' "$work/$name.log" | head -n 30
-        # In CI a finding in our code fails; one in a third-party parser fails only if the
-        # importer process does not contain it (below): it then belongs in tests/data/crashers.
-        [[ -n $runs && $where != third-party ]] && status=1
-    elif ((exited[$name] != 0)); then
-        echo "$name ended with status ${exited[$name]} without a finding:"
-        tail -n 20 "$work/$name.log"
-        status=1
-    fi
-done
-# Exploring, findings are expected (third-party parsers): what counts is whether the
-# application contains them, checked below.
-[[ -z $runs ]] && status=0
 
-# A file through the public, out-of-process loader: a one-line error or a model, never a crash.
-# Prints the outcome; returns 1 if the CLI itself died or printed more than one line.
+# A finding as the file a user would open: for fuzz_loaders the input without its first byte,
+# with the extension that byte picks; for fuzz_project the input, .glb or .json.
+extensions=(glb gltf obj ply stl off)
+user_file() {
+    local name=$1 artifact=$2 out=$3 selector
+    if [[ $name == fuzz_loaders ]]; then
+        selector=$(od -An -t u1 -N 1 "$artifact" | tr -d ' ')
+        tail -c +2 "$artifact" >"$out.${extensions[${selector:-0} % 6]}"
+        echo "$out.${extensions[${selector:-0} % 6]}"
+    elif [[ $(head -c 4 "$artifact") == glTF ]]; then
+        cp "$artifact" "$out.glb" && echo "$out.glb"
+    else
+        cp "$artifact" "$out.json" && echo "$out.json"
+    fi
+}
+
+# One target, segment after segment until its budget is spent. Writes per segment
+# $work/NAME-K.log, and $work/NAME.findings (segment, inputs run before it ended, artifact),
+# $work/NAME.runs and $work/NAME.end (why it stopped: "budget", "segments" or "error").
+fuzz_target() {
+    local name=$1 target=${1#fuzz_} segment=0 executed=0 started=$SECONDS code ran log artifact
+    local known=$work/known-$target budget
+    mkdir -p "$known"
+    cp tests/data/crashers/* "$known/"
+    : >"$work/$name.findings"
+    echo budget >"$work/$name.end"
+    while :; do
+        segment=$((segment + 1))
+        if [[ -n $runs ]]; then
+            budget=(-runs=$((runs - executed)))
+        else
+            budget=(-max_total_time=$((seconds - (SECONDS - started))))
+        fi
+        mkdir -p "$work/corpus-$target/$segment"
+        { cat "$work/seeds-$target.list"
+          find "$work/corpus-$target" -type f | LC_ALL=C sort; } | paste -sd, \
+            >"$work/inputs-$target-$segment.txt"
+        log=$work/$name-$segment.log
+        LAYERPAINT_FUZZ_KNOWN_CRASHERS=$known LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-$target \
+            "${norandom[@]}" "build/fuzz/tests/fuzz/$name" -seed=$((seed + segment - 1)) \
+            -timeout=20 -rss_limit_mb=3072 -max_len=65536 -close_fd_mask=1 -print_final_stats=1 \
+            -reload=0 -purge_allocator_interval=-1 \
+            -artifact_prefix="$work/artifacts/$name-" "${budget[@]}" \
+            -seed_inputs=@"$work/inputs-$target-$segment.txt" "$work/corpus-$target/$segment" \
+            >"$log" 2>&1 && code=0 || code=$?
+        ran=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+        executed=$((executed + ${ran:-0}))
+        artifact=$(sed -n 's/.*Test unit written to //p' "$log" | tail -n 1)
+        if [[ -n $artifact && -f $artifact ]]; then
+            echo "$segment $executed $artifact" >>"$work/$name.findings"
+            # The next segments skip this exact input (not its mutants).
+            user_file "$name" "$artifact" "$known/finding-$segment" >/dev/null
+        elif ((code != 0)); then
+            echo error >"$work/$name.end"
+            break
+        else
+            break # the budget is spent
+        fi
+        if [[ -n $runs ]] && ((executed >= runs)); then break; fi
+        if [[ -z $runs ]] && ((SECONDS - started >= seconds)); then break; fi
+        if ((segment >= max_segments)); then
+            echo segments >"$work/$name.end"
+            break
+        fi
+    done
+    echo "$executed $segment" >"$work/$name.runs"
+}
+# A file through the public, out-of-process loader: a one-line error naming the file and a
+# non-zero exit (or a model, exit 0), never a crash. Prints the outcome; returns 1 otherwise.
 contained() {
     local file=$1 out code
     out=$("$cli" info "$file" 2>&1 >/dev/null) && code=0 || code=$?
-    if ((code >= 128)) || [[ $(printf '%s' "$out" | wc -l) -gt 0 ]]; then
+    if ((code >= 128)) || [[ $(printf '%s' "$out" | wc -l) -gt 0 ]] ||
+        { ((code != 0)) && [[ $out != *"$file"* ]]; }; then
         echo "NOT CONTAINED (exit $code): $file: $out"
         return 1
     fi
-    echo "  ${out:-loaded}"
+    echo "${out:-loaded (exit 0)}"
 }
-if [[ -x $cli ]]; then
-    if [[ -n $runs ]]; then
-        echo "== regression corpus through $cli (importer process)"
-        while IFS= read -r -d '' file; do
-            contained "$file" || status=1
-        done < <(find tests/data/crashers -type f -print0 | sort -z)
+# A project through the CLI (it opens the project out of process as the application does).
+contained_project() {
+    local file=$1 out code
+    out=$("$cli" export "$file" --out "$work/replay-out.glb" 2>&1 >/dev/null) && code=0 || code=$?
+    if ((code >= 128)) || [[ $(printf '%s' "$out" | wc -l) -gt 0 ]] ||
+        { ((code != 0)) && [[ $out != *"$file"* ]]; }; then
+        echo "NOT CONTAINED (exit $code): $file: $out"
+        return 1
     fi
-    # What the fuzzers found, as the application would open it.
-    extensions=(glb gltf obj ply stl off)
-    found=0 turned=0
-    for artifact in "$work"/artifacts/fuzz_loaders-*; do
-        [[ -f $artifact ]] || continue
-        selector=$(od -An -t u1 -N 1 "$artifact" | tr -d ' ')
-        file="$work/replay-$(basename "$artifact").${extensions[selector % 6]}"
-        tail -c +2 "$artifact" >"$file"
-        found=$((found + 1))
-        if out=$(contained "$file"); then
-            [[ $out == *"the importer stopped"* ]] && turned=$((turned + 1))
-            echo "$out"
-        else
-            echo "$out"
-            status=1
-        fi
-    done
-    for artifact in "$work"/artifacts/fuzz_project-*; do
-        [[ -f $artifact ]] || continue
-        found=$((found + 1))
-        if [[ $(head -c 4 "$artifact") == glTF ]]; then
-            file="$work/replay-$(basename "$artifact").glb"
-            cp "$artifact" "$file"
-            out=$("$cli" export "$file" --out "$work/replay-out.glb" 2>&1 >/dev/null) && code=0 ||
-                code=$?
-            if ((code >= 128)); then
-                echo "NOT CONTAINED (exit $code): $file: $out"
-                status=1
-            else
-                [[ $out == *"the importer stopped"* ]] && turned=$((turned + 1))
-                echo "  ${out:-loaded}"
-            fi
-        else
-            echo "IN PROCESS: $artifact (project JSON, read by the application itself)"
-            status=1
-        fi
-    done
-    echo "$found inputs failed in process; the importer process turned $turned of them (crashes" \
-        "or hangs) into errors"
-else
-    echo "(no dev build: the regression corpus and the findings are not replayed out of process)"
+    echo "${out:-loaded (exit 0)}"
+}
+have_cli=0
+[[ -x $cli ]] && have_cli=1
+# The regression corpus through the importer process, beside the fuzzing (the importer's
+# 30-second hang limit is waiting, not work).
+if ((have_cli)) && [[ -n $runs ]]; then
+    (
+        corpus=0
+        while IFS= read -r -d '' file; do
+            if out=$(contained "$file"); then echo "  $out"; else echo "$out"; corpus=1; fi
+        done < <(find tests/data/crashers -type f -print0 | sort -z)
+        exit "$corpus"
+    ) >"$work/corpus-replay.log" 2>&1 &
+    corpus_replay=$!
 fi
-if ((status != 0)); then
+fuzz_target fuzz_loaders &
+loaders=$!
+fuzz_target fuzz_project &
+project=$!
+wait "$loaders" || true
+wait "$project" || true
+status=0
+if [[ -n ${corpus_replay:-} ]]; then
+    echo "== regression corpus through $cli (importer process)"
+    wait "$corpus_replay" || status=1
+    cat "$work/corpus-replay.log"
+fi
+
+# Where a finding failed: the innermost stack frame that is not the sanitizer's, libFuzzer's or
+# the C/C++ runtime's. "ours" (core/ or the targets) is a bug of this code; anything else is
+# in a third-party parser, which only the importer process can contain (checked below). A
+# finding without such a frame (an out-of-memory seen by libFuzzer's RSS watch) counts as ours.
+origin() {
+    local where
+    where=$(awk '/ERROR: |CHECK failed|deadly signal|runtime error|Test unit written/ { on = 1 }
+        on && /#[0-9]+ 0x[0-9a-f]+ / {
+        if ($0 ~ /compiler-rt|sanitizer|fuzzer::|__interceptor|libc\.so|libc-start|sysdeps|libio\/|nptl|csu\/|libstdc\+\+|libgcc|LLVMFuzzerTestOneInput|\/c\+\+\/[0-9]+\/|\/usr\/include\/c\+\+|fuzz_(loaders|project)\+0x|asan_|operator (new|delete)/) next
+        print ($0 ~ /\/(core|tests\/fuzz)\/([a-z_]+\/)*[a-z_]+\.(cpp|h):/ ? "ours" : "third-party"); exit }' "$1")
+    echo "${where:-ours}"
+}
+
+summary=()
+for name in fuzz_loaders fuzz_project; do
+    if [[ ! -f $work/$name.runs ]]; then
+        echo "$name: the fuzzing loop itself failed"
+        status=1
+        continue
+    fi
+    read -r executed segments <"$work/$name.runs"
+    declare -A count=()
+    lines=()
+    echo "== $name: findings"
+    while read -r -u 3 segment at artifact; do
+        # By what happened, not the artifact's name (libFuzzer calls ASan's refused
+        # allocations crashes).
+        log=$work/$name-$segment.log
+        if grep -q 'ERROR: libFuzzer: timeout' "$log"; then
+            kind=timeout
+        elif grep -qE 'out-of-memory|out of memory|allocation-size-too-big' "$log"; then
+            kind=oom
+        else
+            kind=crash
+        fi
+        where=$(origin "$work/$name-$segment.log")
+        count[$where-$kind]=$((${count[$where-$kind]:-0} + 1))
+        echo "-- $where $kind (segment $segment, seed $((seed + segment - 1)), by input $at):" \
+            "$artifact"
+        grep -E 'ERROR: |runtime error|#[0-9]+ 0x[0-9a-f]+ in ' "$work/$name-$segment.log" |
+            head -n 12 || true
+        [[ -n $runs && $where == ours ]] && status=1
+        if ((have_cli)); then
+            file=$(user_file "$name" "$artifact" "$work/replay-$(basename "$artifact")")
+            if [[ $name == fuzz_project && $file == *.json ]]; then
+                out="project JSON, read by the application itself (in process)"
+            elif [[ $name == fuzz_project ]]; then
+                out=$(contained_project "$file") || status=1
+            else
+                out=$(contained "$file") || status=1
+            fi
+            echo "   replay: $out"
+            [[ $where == third-party ]] && lines+=("    third-party $kind $(basename "$artifact"): $out")
+        else
+            [[ -n $runs && $where == third-party ]] && status=1
+            [[ $where == third-party ]] &&
+                lines+=("    third-party $kind $(basename "$artifact"): not replayed (no dev build)")
+        fi
+    done 3<"$work/$name.findings"
+    end=$(cat "$work/$name.end")
+    case $end in
+        segments)
+            [[ -n $runs ]] && status=1
+            echo "$name: the budget was not spent in $max_segments segments (too many findings:" \
+                "add them to tests/data/crashers or fix them)" ;;
+        error)
+            echo "$name ended without a finding but not cleanly:"
+            tail -n 20 "$work/$name-$segments.log"
+            status=1 ;;
+    esac
+    f() { echo "crash ${count[$1-crash]:-0}, oom ${count[$1-oom]:-0}, timeout ${count[$1-timeout]:-0}"; }
+    summary+=("$name: $executed inputs run in $segments segment(s) (seeds $seed-$((seed + segments - 1)))$( [[ $end == budget ]] || echo ", stopped: $end")")
+    summary+=("    ours: $(f ours); third-party: $(f third-party)")
+    summary+=("${lines[@]}")
+    unset count
+done
+echo "== summary"
+printf '%s\n' "${summary[@]}"
+# Exploring, findings are expected: what counts is whether the application contains them.
+if [[ -z $runs ]]; then
+    ((status != 0)) && echo "a finding is not contained by the application" >&2
+elif ((status != 0)); then
     echo "fuzzing found a problem: see $work/*.log and $work/artifacts" >&2
 fi
 exit "$status"

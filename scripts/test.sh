@@ -3,7 +3,8 @@
 # README command 2: install dependencies, build, and run the whole test suite headless: GL tests on
 # EGL (llvmpipe), widget tests under xvfb-run; then the core/render/CLI tests again under
 # ASan/UBSan; then the loaders and the project reader are fuzzed for a fixed number of runs from
-# a fixed seed (a crash fails, and repeats on any machine) and the regression corpus is opened
+# fixed seeds, going on after each finding (one in our code fails; one in a third-party parser
+# must be turned into an error by the importer process) and the regression corpus is opened
 # through the importer process. Exits non-zero on any failure. A second run reuses the builds.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,5 +27,5 @@ cmake --preset asan
 cmake --build --preset asan -j"$jobs"
 ASAN_OPTIONS=detect_leaks=0 ctest --preset asan -j"$jobs"
 
-echo "== fuzzing (libFuzzer, 30000 runs per target from seed 1, both at once)"
+echo "== fuzzing (libFuzzer, 30000 runs per target from seeds 1, 2, ..., both at once)"
 bash scripts/fuzz.sh --runs 30000

@@ -205,15 +205,18 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
         if (magic.find('n') != std::string::npos)
             ++t;
         std::uint64_t vertices = 0, faces = 0;
-        if (t + 1 >= tokens.size() || !parseCount(tokens[t], vertices) ||
-            !parseCount(tokens[t + 1], faces))
+        if (t >= tokens.size() || !parseCount(tokens[t], vertices))
             return {};
+        // The vertex count is checked even when the face count does not read as a number here:
+        // Assimp takes the face count's leading digits and allocates the vertices first.
         if (vertices > maxRaw)
             return Error{"too many vertices (the header declares " + str(vertices) + ")",
                          ErrorKind::BadInput};
         // "0 0 0\n" is the shortest vertex line, "0\n" the shortest face line.
         if (vertices > fileSize / 6)
             return Error{tooManyElements(vertices, "vertices", fileSize), ErrorKind::BadInput};
+        if (t + 1 >= tokens.size() || !parseCount(tokens[t + 1], faces))
+            return {};
         if (faces > fileSize / 2)
             return Error{tooManyElements(faces, "faces", fileSize), ErrorKind::BadInput};
         return {};

@@ -48,7 +48,8 @@ inline std::string writeInput(const std::uint8_t* data, std::size_t size, const 
  * Whether (extension, bytes) is a file of the regression corpus, the folder named by the
  * environment variable LAYERPAINT_FUZZ_KNOWN_CRASHERS (tests/data/crashers). Those inputs crash
  * or hang third-party parsers inside the importer process, where the corpus test replays them;
- * here they would stop the run instead of letting it look further.
+ * here they would stop the run instead of letting it look further. scripts/fuzz.sh also adds
+ * what earlier segments of the same run found, so that a restart does not stop on it again.
  */
 inline bool isKnownCrasher(const char* extension, const std::uint8_t* data, std::size_t size) {
     static const std::set<std::pair<std::string, std::string>> known = [] {
