@@ -5,6 +5,7 @@
 // same order per texel).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 #include "core/paint/paint_layers.h"
@@ -18,14 +19,8 @@ constexpr unsigned kAllChannels = 7;
 /** Tiles whose lower layers a stroke keeps at most (80 KB each); past that it recomputes them. */
 constexpr std::size_t kMaxKeptTiles = 512;
 
-/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
- */
-std::uint8_t toByte(float v) {
-    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
-}
-float fromByte(std::uint8_t b) {
-    return float(b) * (1.0f / 255.0f);
-}
+using layer_bytes::fromByte;
+using layer_bytes::toByte;
 
 template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
     switch (mode) {
@@ -77,7 +72,53 @@ std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
     return n;
 }
 
+/**
+ * Whether every byte b gives b again through fromByte() and toByte(): then a texel no layer
+ * touches composites to its base bytes, which can be copied.
+ */
+bool byteRoundTrips() {
+    static const bool roundTrips = [] {
+        for (int b = 0; b < 256; ++b)
+            if (toByte(fromByte(std::uint8_t(b))) != std::uint8_t(b))
+                return false;
+        return true;
+    }();
+    return roundTrips;
+}
+
 } // namespace
+
+void PaintLayerStack::copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
+                               std::span<const TexelSpan> rows) {
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* baseColor = m_baseColor[page].data();
+    std::uint8_t* color = m_compositeColor[page].rgba.data();
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        if (span.x1 <= span.x0)
+            continue;
+        const std::size_t i = (std::size_t(y) * width + std::size_t(span.x0)) * 4;
+        const std::size_t bytes = std::size_t(span.x1 - span.x0) * 4;
+        if ((channels & 1u) != 0)
+            std::memcpy(color + i, baseColor + i, bytes);
+        if (material) {
+            if ((channels & 6u) == 6u) {
+                std::memcpy(mr + i, baseMr + i, bytes);
+            } else {
+                // Roughness (byte 1) or metallic (byte 2) alone; bytes 0 and 3 are the base's.
+                const std::size_t keep = (channels & 2u) != 0 ? 2 : 1;
+                for (std::size_t j = i; j < i + bytes; j += 4) {
+                    const std::uint8_t kept = mr[j + keep];
+                    std::memcpy(mr + j, baseMr + j, 4);
+                    mr[j + keep] = kept;
+                }
+            }
+        }
+    }
+}
 
 void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
     m_below.clear();
@@ -216,6 +257,11 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
     for (std::size_t l = 0; l < m_layers.size(); ++l)
         if (m_layers[l]->touchesTile(page, tile))
             end = l + 1;
+
+    if (end == 0 && byteRoundTrips()) {
+        copyBase(page, rect, channels, rows);
+        return;
+    }
 
     m_scratch.resize(5 * n);
     float* values = m_scratch.data();
