@@ -211,6 +211,14 @@ private:
     /** Sets values (as blendLayers()) to the base's texels in rect, channels only. */
     void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels, float* values,
                     std::span<const TexelSpan> rows = {}) const;
+    /**
+     * updateRect() when no layer below from touches the tile and layers [from, to) blend in the
+     * Normal mode: base, layers and bytes in one pass per texel. False (nothing written) when a
+     * layer uses another mode.
+     */
+    bool composeOverBase(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                         std::size_t from, std::size_t to, unsigned channels,
+                         std::span<const TexelSpan> rows);
     /** Copies the base's bytes of channels to the composite in rect (no layer touches it). */
     void copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
                   std::span<const TexelSpan> rows);
