@@ -13,14 +13,8 @@ namespace {
 
 constexpr int kTile = TiledPlane::kPlaneTile;
 
-/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
- */
-std::uint8_t toByte(float v) {
-    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
-}
-float fromByte(std::uint8_t b) {
-    return float(b) * (1.0f / 255.0f);
-}
+using layer_bytes::fromByte;
+using layer_bytes::toByte;
 
 int components(PaintChannel channel) {
     return channel == PaintChannel::BaseColor ? 3 : 1;
@@ -446,32 +440,6 @@ std::size_t PaintLayerStack::layerBytes() const {
     for (const auto& layer : m_layers)
         n += layer->bytes();
     return n;
-}
-
-void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components, const float* value,
-                float a, bool lockTransparency) {
-    a = std::clamp(a, 0.0f, 1.0f);
-    const float a0 = fromByte(start[components]);
-    if (lockTransparency) {
-        for (int k = 0; k < components; ++k) {
-            const float c0 = fromByte(start[k]);
-            texel[k] = a0 > 0.0f ? toByte(c0 + a * (value[k] - c0)) : start[k];
-        }
-        texel[components] = start[components];
-        return;
-    }
-    const float out = a + a0 * (1.0f - a);
-    for (int k = 0; k < components; ++k) {
-        const float premultiplied = a * value[k] + (1.0f - a) * a0 * fromByte(start[k]);
-        texel[k] = toByte(out > 0.0f ? premultiplied / out : 0.0f);
-    }
-    texel[components] = toByte(out);
-}
-
-void eraseTexel(std::uint8_t* texel, const std::uint8_t* start, int components, float a) {
-    for (int k = 0; k < components; ++k)
-        texel[k] = start[k];
-    texel[components] = toByte(fromByte(start[components]) * (1.0f - std::clamp(a, 0.0f, 1.0f)));
 }
 
 } // namespace core

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -210,6 +211,17 @@ private:
     /** Sets values (as blendLayers()) to the base's texels in rect, channels only. */
     void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels, float* values,
                     std::span<const TexelSpan> rows = {}) const;
+    /**
+     * updateRect() when no layer below from touches the tile and layers [from, to) blend in the
+     * Normal mode: base, layers and bytes in one pass per texel. False (nothing written) when a
+     * layer uses another mode.
+     */
+    bool composeOverBase(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                         std::size_t from, std::size_t to, unsigned channels,
+                         std::span<const TexelSpan> rows);
+    /** Copies the base's bytes of channels to the composite in rect (no layer touches it). */
+    void copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
+                  std::span<const TexelSpan> rows);
 
     std::vector<PageSize> m_pages;
     std::vector<std::vector<std::uint8_t>> m_baseColor;
@@ -227,15 +239,51 @@ private:
     std::vector<float> m_scratch;
 };
 
+namespace layer_bytes {
+/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
+ */
+inline std::uint8_t toByte(float v) {
+    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
+}
+inline float fromByte(std::uint8_t b) {
+    return float(b) * (1.0f / 255.0f);
+}
+} // namespace layer_bytes
+
 /**
  * A paint layer's texel after a stroke's paint of value (components 1 or 3, 0..1) with stroke
  * coverage a (0..1) over its value at the stroke's start: source-over (the coverage grows) or,
  * with lockTransparency, only the colour moves towards value in proportion to a. texel and start
- * have components + 1 bytes (the last is the coverage).
+ * have components + 1 bytes (the last is the coverage). Inline: a dab calls it per texel and
+ * channel.
  */
-void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components, const float* value,
-                float a, bool lockTransparency);
+inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components,
+                       const float* value, float a, bool lockTransparency) {
+    using layer_bytes::fromByte;
+    using layer_bytes::toByte;
+    a = std::clamp(a, 0.0f, 1.0f);
+    const float a0 = fromByte(start[components]);
+    if (lockTransparency) {
+        for (int k = 0; k < components; ++k) {
+            const float c0 = fromByte(start[k]);
+            texel[k] = a0 > 0.0f ? toByte(c0 + a * (value[k] - c0)) : start[k];
+        }
+        texel[components] = start[components];
+        return;
+    }
+    const float out = a + a0 * (1.0f - a);
+    for (int k = 0; k < components; ++k) {
+        const float premultiplied = a * value[k] + (1.0f - a) * a0 * fromByte(start[k]);
+        texel[k] = toByte(out > 0.0f ? premultiplied / out : 0.0f);
+    }
+    texel[components] = toByte(out);
+}
 /** A paint layer's texel after erasing with coverage a: its coverage falls to start·(1 - a). */
-void eraseTexel(std::uint8_t* texel, const std::uint8_t* start, int components, float a);
+inline void eraseTexel(std::uint8_t* texel, const std::uint8_t* start, int components, float a) {
+    for (int k = 0; k < components; ++k)
+        texel[k] = start[k];
+    texel[components] = layer_bytes::toByte(layer_bytes::fromByte(start[components]) *
+                                            (1.0f - std::clamp(a, 0.0f, 1.0f)));
+}
 
 } // namespace core

@@ -5,6 +5,7 @@
 // same order per texel).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <type_traits>
 
 #include "core/paint/paint_layers.h"
@@ -18,14 +19,8 @@ constexpr unsigned kAllChannels = 7;
 /** Tiles whose lower layers a stroke keeps at most (80 KB each); past that it recomputes them. */
 constexpr std::size_t kMaxKeptTiles = 512;
 
-/** std::lround(v·255) of v clamped to 0..1, without the library call: v + 0.5 is exact in double.
- */
-std::uint8_t toByte(float v) {
-    return std::uint8_t(int(double(std::clamp(v, 0.0f, 1.0f) * 255.0f) + 0.5));
-}
-float fromByte(std::uint8_t b) {
-    return float(b) * (1.0f / 255.0f);
-}
+using layer_bytes::fromByte;
+using layer_bytes::toByte;
 
 template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
     switch (mode) {
@@ -77,7 +72,174 @@ std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
     return n;
 }
 
+/**
+ * Whether every byte b gives b again through fromByte() and toByte(): then a texel no layer
+ * touches composites to its base bytes, which can be copied.
+ */
+bool byteRoundTrips() {
+    static const bool roundTrips = [] {
+        for (int b = 0; b < 256; ++b)
+            if (toByte(fromByte(std::uint8_t(b))) != std::uint8_t(b))
+                return false;
+        return true;
+    }();
+    return roundTrips;
+}
+
 } // namespace
+
+void PaintLayerStack::copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
+                               std::span<const TexelSpan> rows) {
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* baseColor = m_baseColor[page].data();
+    std::uint8_t* color = m_compositeColor[page].rgba.data();
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        if (span.x1 <= span.x0)
+            continue;
+        const std::size_t i = (std::size_t(y) * width + std::size_t(span.x0)) * 4;
+        const std::size_t bytes = std::size_t(span.x1 - span.x0) * 4;
+        if ((channels & 1u) != 0)
+            std::memcpy(color + i, baseColor + i, bytes);
+        if (material) {
+            if ((channels & 6u) == 6u) {
+                std::memcpy(mr + i, baseMr + i, bytes);
+            } else {
+                // Roughness (byte 1) or metallic (byte 2) alone; bytes 0 and 3 are the base's.
+                const std::size_t keep = (channels & 2u) != 0 ? 2 : 1;
+                for (std::size_t j = i; j < i + bytes; j += 4) {
+                    const std::uint8_t kept = mr[j + keep];
+                    std::memcpy(mr + j, baseMr + j, 4);
+                    mr[j + keep] = kept;
+                }
+            }
+        }
+    }
+}
+
+bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                      std::size_t from, std::size_t to, unsigned channels,
+                                      std::span<const TexelSpan> rows) {
+    // What blendLayers() reads, per layer and channel that takes part: the Normal mode only.
+    struct Source {
+        const std::uint8_t* texels = nullptr; // nullptr: a fill
+        std::array<float, 3> fill{};
+        const std::uint8_t* mask = nullptr;
+        std::uint8_t maskFill = 255;
+        bool masked = false;
+        float opacity = 1.0f;
+        int comps = 1;
+        std::size_t first = 0;
+    };
+    std::array<Source, 3 * 8> sources;
+    std::size_t count = 0;
+    const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
+    for (std::size_t l = from; l < to; ++l) {
+        const PaintLayer& layer = *m_layers[l];
+        const PaintLayerSettings& st = layer.settings;
+        if (!st.visible)
+            continue;
+        const float opacity = std::clamp(st.opacity, 0.0f, 1.0f);
+        if (!(opacity > 0.0f))
+            continue;
+        if (st.blend != BlendMode::Normal)
+            return false;
+        for (std::size_t c = 0; c < channelCount; ++c) {
+            if ((channels & (1u << c)) == 0)
+                continue;
+            Source src;
+            src.opacity = opacity;
+            src.comps = c == 0 ? 3 : 1;
+            src.first = c == 0 ? 0 : c + 2;
+            src.masked = layer.mask != nullptr;
+            src.mask = src.masked ? layer.mask->tile(page, tile) : nullptr;
+            src.maskFill = src.masked ? layer.mask->fill()[0] : 255;
+            if (st.kind == PaintLayerKind::Fill) {
+                if (c == 0 && st.fill.baseColor)
+                    src.fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
+                else if (c == 1 && st.fill.roughness)
+                    src.fill[0] = *st.fill.roughness;
+                else if (c == 2 && st.fill.metallic)
+                    src.fill[0] = *st.fill.metallic;
+                else
+                    continue;
+            } else {
+                const TiledPlane* plane = layer.channels[c].get();
+                src.texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
+                if (src.texels == nullptr)
+                    continue;
+            }
+            if (count == sources.size())
+                return false;
+            sources[count++] = src;
+        }
+    }
+
+    const TileRect tr = tileRectOf(m_pages[page], tile);
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* baseColor = m_baseColor[page].data();
+    std::uint8_t* color = m_compositeColor[page].rgba.data();
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
+        for (int x = span.x0; x < span.x1; ++x) {
+            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+            const std::size_t local = row + std::size_t(x - tr.x);
+            // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
+            // operations on each value in the same order.
+            float v[5] = {};
+            if ((channels & 1u) != 0)
+                for (std::size_t k = 0; k < 3; ++k)
+                    v[k] = fromByte(baseColor[i + k]);
+            if (baseMr != nullptr) {
+                if ((channels & 2u) != 0)
+                    v[3] = fromByte(baseMr[i + 1]);
+                if ((channels & 4u) != 0)
+                    v[4] = fromByte(baseMr[i + 2]);
+            }
+            for (std::size_t j = 0; j < count; ++j) {
+                const Source& src = sources[j];
+                float a = 1.0f;
+                const std::uint8_t* t = nullptr;
+                if (src.texels != nullptr) {
+                    t = src.texels + local * std::size_t(src.comps + 1);
+                    a = fromByte(t[src.comps]);
+                }
+                a *= src.opacity;
+                if (src.masked)
+                    a *= fromByte(src.mask != nullptr ? src.mask[local] : src.maskFill);
+                if (!(a > 0.0f))
+                    continue;
+                for (int k = 0; k < src.comps; ++k) {
+                    const float layer = t != nullptr ? fromByte(t[k]) : src.fill[std::size_t(k)];
+                    float& value = v[src.first + std::size_t(k)];
+                    value += a * (blendAs<BlendMode::Normal>(value, layer) - value);
+                }
+            }
+            if ((channels & 1u) != 0) {
+                color[i] = toByte(v[0]);
+                color[i + 1] = toByte(v[1]);
+                color[i + 2] = toByte(v[2]);
+                color[i + 3] = baseColor[i + 3];
+            }
+            if (material) {
+                mr[i] = baseMr[i];
+                if ((channels & 2u) != 0)
+                    mr[i + 1] = toByte(v[3]);
+                if ((channels & 4u) != 0)
+                    mr[i + 2] = toByte(v[4]);
+                mr[i + 3] = baseMr[i + 3];
+            }
+        }
+    }
+    return true;
+}
 
 void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
     m_below.clear();
@@ -217,11 +379,19 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
         if (m_layers[l]->touchesTile(page, tile))
             end = l + 1;
 
-    m_scratch.resize(5 * n);
-    float* values = m_scratch.data();
+    if (end == 0 && byteRoundTrips()) {
+        copyBase(page, rect, channels, rows);
+        return;
+    }
+
     bool belowTouches = false;
     for (std::size_t l = 0; l < std::min(from, end) && !belowTouches; ++l)
         belowTouches = m_layers[l]->touchesTile(page, tile);
+    if (!belowTouches && composeOverBase(page, tile, rect, from, end, channels, rows))
+        return;
+
+    m_scratch.resize(5 * n);
+    float* values = m_scratch.data();
     if (!belowTouches) {
         baseValues(page, rect, channels, values, rows);
     } else {

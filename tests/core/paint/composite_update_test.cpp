@@ -235,4 +235,44 @@ TEST_F(CompositeUpdateTest, StrokesThroughTheFastPathGiveTheFullRecomputesBytes)
     EXPECT_GE(m_changed, 15) << "the strokes changed the composite";
 }
 
+// Layers that all blend in the Normal mode over an untouched base are composed in one pass per
+// texel: with a masked fill layer, a hidden layer, partial opacity, locked transparency and the
+// material channels one at a time, the bytes are still those of the full recompute.
+TEST_F(CompositeUpdateTest, NormalLayersOverTheBaseInOnePassGiveTheFullRecomputesBytes) {
+    core::Brush& brush = m_doc.brush();
+    stroke("base, no layers", kDown);
+    const std::uint64_t a = add("A", BlendMode::Normal, 0.6f);
+    const std::uint64_t fill = add("fill", BlendMode::Normal, 0.5f, PaintLayerKind::Fill);
+    const std::uint64_t hidden = add("hidden", BlendMode::Normal, 1.0f);
+    const std::uint64_t b = add("B", BlendMode::Normal, 0.85f);
+    brush.paintRoughness = true;
+    brush.roughness = 0.1f;
+    select(hidden);
+    stroke("hidden, before it is hidden", kDiagonal);
+    change(hidden, [](PaintLayerSettings& s) { s.visible = false; });
+    expectFullRecompute("hidden");
+    core::PaintChanges changes;
+    ASSERT_TRUE(m_doc.addPaintLayerMask(fill, changes).ok());
+    select(fill, true);
+    brush.color = {0.1f, 0.1f, 0.1f, 1.0f};
+    stroke("fill's mask", kAcross);
+    select(a);
+    brush.color = {0.9f, 0.2f, 0.3f, 1.0f};
+    stroke("A under a masked fill, a hidden layer and B", kDown);
+    select(b);
+    brush.paintBaseColor = false;
+    stroke("B, roughness only", kAcross);
+    brush.paintBaseColor = true;
+    brush.paintRoughness = false;
+    brush.paintMetallic = true;
+    brush.metallic = 0.7f;
+    stroke("B, base colour and metallic", kDiagonal);
+    change(b, [](PaintLayerSettings& s) { s.lockTransparency = true; });
+    brush.color = {0.2f, 0.8f, 0.9f, 1.0f};
+    stroke("B locked", kDown);
+    undo("B locked");
+    redo("B locked");
+    EXPECT_GE(m_changed, 6) << "the strokes changed the composite";
+}
+
 } // namespace
