@@ -222,6 +222,15 @@ private:
     /** Copies the base's bytes of channels to the composite in rect (no layer touches it). */
     void copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
                   std::span<const TexelSpan> rows);
+    /** A page's row width and its base and composite bytes (material ones: null unless painted). */
+    struct PageBytes {
+        std::size_t width = 0;
+        const std::uint8_t* baseColor = nullptr;
+        std::uint8_t* color = nullptr;
+        const std::uint8_t* baseMr = nullptr;
+        std::uint8_t* mr = nullptr;
+    };
+    PageBytes pageBytes(std::uint32_t page, unsigned channels);
 
     std::vector<PageSize> m_pages;
     std::vector<std::vector<std::uint8_t>> m_baseColor;

@@ -88,14 +88,18 @@ bool byteRoundTrips() {
 
 } // namespace
 
+PaintLayerStack::PageBytes PaintLayerStack::pageBytes(std::uint32_t page, unsigned channels) {
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    return {std::size_t(m_pages[page].width), m_baseColor[page].data(),
+            m_compositeColor[page].rgba.data(),
+            material ? m_baseMetallicRoughness[page].data() : nullptr,
+            material ? m_compositeMr[page].rgba.data() : nullptr};
+}
+
 void PaintLayerStack::copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
                                std::span<const TexelSpan> rows) {
-    const std::size_t width = std::size_t(m_pages[page].width);
-    const std::uint8_t* baseColor = m_baseColor[page].data();
-    std::uint8_t* color = m_compositeColor[page].rgba.data();
-    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
-    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
-    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    const bool material = mr != nullptr;
     for (int y = rect.y; y < rect.y + rect.height; ++y) {
         const TexelSpan span = rowOf(rect, rows, y);
         if (span.x1 <= span.x0)
@@ -179,12 +183,8 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
     }
 
     const TileRect tr = tileRectOf(m_pages[page], tile);
-    const std::size_t width = std::size_t(m_pages[page].width);
-    const std::uint8_t* baseColor = m_baseColor[page].data();
-    std::uint8_t* color = m_compositeColor[page].rgba.data();
-    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
-    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
-    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    const bool material = mr != nullptr;
     for (int y = rect.y; y < rect.y + rect.height; ++y) {
         const TexelSpan span = rowOf(rect, rows, y);
         const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
@@ -429,12 +429,8 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
     }
     blendLayers(page, tile, rect, from, std::max(from, end), channels, values, rows);
 
-    const std::size_t width = std::size_t(m_pages[page].width);
-    const std::uint8_t* baseColor = m_baseColor[page].data();
-    std::uint8_t* color = m_compositeColor[page].rgba.data();
-    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
-    const std::uint8_t* baseMr = material ? m_baseMetallicRoughness[page].data() : nullptr;
-    std::uint8_t* mr = material ? m_compositeMr[page].rgba.data() : nullptr;
+    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    const bool material = mr != nullptr;
     std::size_t at = 0;
     for (int y = rect.y; y < rect.y + rect.height; ++y)
         for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
