@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <type_traits>
 
 #include "core/paint/paint_layers.h"
@@ -72,6 +73,52 @@ std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
     return n;
 }
 
+/** What blending one channel of a paint layer over a tile reads. */
+struct ChannelSource {
+    const std::uint8_t* texels = nullptr; // nullptr: a fill
+    std::array<float, 3> fill{};
+    const std::uint8_t* mask = nullptr;
+    std::uint8_t maskFill = 255;
+    bool masked = false;
+    float opacity = 1.0f;
+    int comps = 1;         // 3 for base colour, 1 for roughness and metallic
+    std::size_t first = 0; // its first of the 5 value planes
+};
+
+/**
+ * Channel c of layer in tile of page, or nothing when it changes no texel there: hidden, fully
+ * transparent, a paint layer that never wrote the tile, or a fill without a value for c.
+ */
+std::optional<ChannelSource> channelSource(const PaintLayer& layer, std::size_t c,
+                                           std::uint32_t page, std::uint32_t tile) {
+    const PaintLayerSettings& st = layer.settings;
+    ChannelSource src;
+    src.opacity = std::clamp(st.opacity, 0.0f, 1.0f);
+    if (!st.visible || !(src.opacity > 0.0f))
+        return std::nullopt; // every texel's coverage is 0 (or NaN): compositeTexel() skips them
+    src.comps = c == 0 ? 3 : 1;
+    src.first = c == 0 ? 0 : c + 2;
+    src.masked = layer.mask != nullptr;
+    src.mask = src.masked ? layer.mask->tile(page, tile) : nullptr;
+    src.maskFill = src.masked ? layer.mask->fill()[0] : 255;
+    if (st.kind == PaintLayerKind::Fill) {
+        if (c == 0 && st.fill.baseColor)
+            src.fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
+        else if (c == 1 && st.fill.roughness)
+            src.fill[0] = *st.fill.roughness;
+        else if (c == 2 && st.fill.metallic)
+            src.fill[0] = *st.fill.metallic;
+        else
+            return std::nullopt;
+    } else {
+        const TiledPlane* plane = layer.channels[c].get();
+        src.texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
+        if (src.texels == nullptr)
+            return std::nullopt; // unwritten: coverage 0 everywhere
+    }
+    return src;
+}
+
 /**
  * Whether every byte b gives b again through fromByte() and toByte(): then a texel no layer
  * touches composites to its base bytes, which can be copied.
@@ -128,57 +175,19 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
                                       std::size_t from, std::size_t to, unsigned channels,
                                       std::span<const TexelSpan> rows) {
     // What blendLayers() reads, per layer and channel that takes part: the Normal mode only.
-    struct Source {
-        const std::uint8_t* texels = nullptr; // nullptr: a fill
-        std::array<float, 3> fill{};
-        const std::uint8_t* mask = nullptr;
-        std::uint8_t maskFill = 255;
-        bool masked = false;
-        float opacity = 1.0f;
-        int comps = 1;
-        std::size_t first = 0;
-    };
-    std::array<Source, 3 * 8> sources;
+    std::array<ChannelSource, 3 * 8> sources;
     std::size_t count = 0;
     const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
     for (std::size_t l = from; l < to; ++l) {
-        const PaintLayer& layer = *m_layers[l];
-        const PaintLayerSettings& st = layer.settings;
-        if (!st.visible)
-            continue;
-        const float opacity = std::clamp(st.opacity, 0.0f, 1.0f);
-        if (!(opacity > 0.0f))
-            continue;
-        if (st.blend != BlendMode::Normal)
-            return false;
         for (std::size_t c = 0; c < channelCount; ++c) {
             if ((channels & (1u << c)) == 0)
                 continue;
-            Source src;
-            src.opacity = opacity;
-            src.comps = c == 0 ? 3 : 1;
-            src.first = c == 0 ? 0 : c + 2;
-            src.masked = layer.mask != nullptr;
-            src.mask = src.masked ? layer.mask->tile(page, tile) : nullptr;
-            src.maskFill = src.masked ? layer.mask->fill()[0] : 255;
-            if (st.kind == PaintLayerKind::Fill) {
-                if (c == 0 && st.fill.baseColor)
-                    src.fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
-                else if (c == 1 && st.fill.roughness)
-                    src.fill[0] = *st.fill.roughness;
-                else if (c == 2 && st.fill.metallic)
-                    src.fill[0] = *st.fill.metallic;
-                else
-                    continue;
-            } else {
-                const TiledPlane* plane = layer.channels[c].get();
-                src.texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
-                if (src.texels == nullptr)
-                    continue;
-            }
-            if (count == sources.size())
+            const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
+            if (!src)
+                continue;
+            if (m_layers[l]->settings.blend != BlendMode::Normal || count == sources.size())
                 return false;
-            sources[count++] = src;
+            sources[count++] = *src;
         }
     }
 
@@ -204,7 +213,7 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
                     v[4] = fromByte(baseMr[i + 2]);
             }
             for (std::size_t j = 0; j < count; ++j) {
-                const Source& src = sources[j];
+                const ChannelSource& src = sources[j];
                 float a = 1.0f;
                 const std::uint8_t* t = nullptr;
                 if (src.texels != nullptr) {
@@ -288,39 +297,15 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
     const TileRect tr = tileRectOf(m_pages[page], tile);
     const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
     for (std::size_t l = from; l < to; ++l) {
-        const PaintLayer& layer = *m_layers[l];
-        const PaintLayerSettings& st = layer.settings;
-        if (!st.visible)
-            continue;
-        const float opacity = std::clamp(st.opacity, 0.0f, 1.0f);
-        if (!(opacity > 0.0f))
-            continue; // every texel's coverage is 0 (or NaN): compositeTexel() skips them all
-        const bool masked = layer.mask != nullptr;
-        const std::uint8_t* mask = masked ? layer.mask->tile(page, tile) : nullptr;
-        const std::uint8_t maskFill = masked ? layer.mask->fill()[0] : 255;
+        const PaintLayerSettings& st = m_layers[l]->settings;
         for (std::size_t c = 0; c < channelCount; ++c) {
             if ((channels & (1u << c)) == 0)
                 continue;
-            const int comps = c == 0 ? 3 : 1;
-            const std::size_t first = c == 0 ? 0 : c + 2;
-            std::array<float, 3> fill{};
-            const std::uint8_t* texels = nullptr;
-            if (st.kind == PaintLayerKind::Fill) {
-                if (c == 0 && st.fill.baseColor)
-                    fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
-                else if (c == 1 && st.fill.roughness)
-                    fill[0] = *st.fill.roughness;
-                else if (c == 2 && st.fill.metallic)
-                    fill[0] = *st.fill.metallic;
-                else
-                    continue;
-            } else {
-                const TiledPlane* plane = layer.channels[c].get();
-                texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
-                if (texels == nullptr)
-                    continue; // unwritten: coverage 0 everywhere
-            }
-            const std::size_t stride = std::size_t(comps + 1);
+            const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
+            if (!src)
+                continue;
+            const ChannelSource& s = *src;
+            const std::size_t stride = std::size_t(s.comps + 1);
             withMode(st.blend, [&](auto mode) {
                 constexpr BlendMode kMode = decltype(mode)::value;
                 std::size_t at = 0;
@@ -331,19 +316,20 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
                         const std::size_t local = row + std::size_t(x - tr.x);
                         float a = 1.0f;
                         const std::uint8_t* t = nullptr;
-                        if (texels != nullptr) {
-                            t = texels + local * stride;
-                            a = fromByte(t[comps]);
+                        if (s.texels != nullptr) {
+                            t = s.texels + local * stride;
+                            a = fromByte(t[s.comps]);
                         }
-                        a *= opacity;
-                        if (masked)
-                            a *= fromByte(mask != nullptr ? mask[local] : maskFill);
+                        a *= s.opacity;
+                        if (s.masked)
+                            a *= fromByte(s.mask != nullptr ? s.mask[local] : s.maskFill);
                         if (!(a > 0.0f))
                             continue;
-                        for (int k = 0; k < comps; ++k) {
-                            const float s = t != nullptr ? fromByte(t[k]) : fill[std::size_t(k)];
-                            float& v = values[(first + std::size_t(k)) * n + at];
-                            v += a * (blendAs<kMode>(v, s) - v);
+                        for (int k = 0; k < s.comps; ++k) {
+                            const float layer =
+                                t != nullptr ? fromByte(t[k]) : s.fill[std::size_t(k)];
+                            float& v = values[(s.first + std::size_t(k)) * n + at];
+                            v += a * (blendAs<kMode>(v, layer) - v);
                         }
                     }
                 }
