@@ -26,6 +26,7 @@
 #include <fcntl.h>
 #include <malloc.h>
 #include <poll.h>
+#include <sys/mman.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -90,6 +91,19 @@ void prepareWhileIdle() {
         }
     for (void* block : blocks)
         std::free(block);
+    // The code and read-only data of the program and its libraries in this process's page
+    // tables: a load otherwise takes a page fault at the first touch of each of their pages.
+    if (std::FILE* maps = std::fopen("/proc/self/maps", "re")) {
+        char line[4096];
+        while (std::fgets(line, sizeof line, maps) != nullptr) {
+            unsigned long begin = 0, end = 0;
+            char perms[5] = {};
+            if (std::sscanf(line, "%lx-%lx %4s", &begin, &end, perms) == 3 && perms[0] == 'r' &&
+                perms[1] == '-' && std::strchr(line, '/') != nullptr)
+                ::madvise(reinterpret_cast<void*>(begin), end - begin, MADV_POPULATE_READ);
+        }
+        std::fclose(maps);
+    }
 }
 
 /**
@@ -217,6 +231,18 @@ int probe(const Options& o, const importer::SandboxReport& report) {
     return 0;
 }
 
+/**
+ * Ends the process once its answer is out, without destructors: freeing a large scene only costs
+ * time, a heap that a parser damaged cannot crash the process after its answer, and the pages
+ * the answer lent to the pipe (FrameWriter::lendUntilExit) must not change before the
+ * application has read them (free() writes into freed blocks). The end of the output tells the
+ * application the answer is complete.
+ */
+[[noreturn]] void endWith(bool sent) {
+    ::close(STDOUT_FILENO);
+    ::_exit(sent ? 0 : 1);
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -251,7 +277,7 @@ int main(int argc, char** argv) {
     }
 
     core::importer::FrameWriter out(STDOUT_FILENO);
-    bool sent = false;
+    out.lendUntilExit(); // each answer is sent from a scope that endWith() never leaves
     if (o.glbImages) {
         // A project's paint-layer images: sent as the textures of a mesh without triangles.
         core::Result<std::vector<core::Image>> images =
@@ -259,26 +285,24 @@ int main(int argc, char** argv) {
         core::Mesh carrier;
         if (images)
             carrier.textures = std::move(images).value();
-        sent = images ? out.mesh(carrier) : out.text(core::importer::Tag::Error, images.error());
-    } else if (o.image) {
-        const core::Result<core::Image> image = core::loadImageFileInProcess(o.file, o.limits);
-        sent = image ? out.image(*image) : out.text(core::importer::Tag::Error, image.error());
-    } else {
-        // Reports often enough for a smooth progress bar, not once per primitive.
-        double reported = -1.0;
-        const core::ProgressFn progress = [&](double fraction) {
-            if (fraction >= 1.0 || fraction - reported >= 0.01) {
-                reported = fraction;
-                out.progress(fraction);
-            }
-            return true; // the application ends this process to cancel
-        };
-        const core::Result<core::Mesh> mesh = core::loadMeshInProcess(o.file, progress, o.limits);
-        sent = mesh ? out.mesh(*mesh) : out.text(core::importer::Tag::Error, mesh.error());
+        endWith(images ? out.mesh(carrier) : out.text(core::importer::Tag::Error, images.error()));
     }
-    // No destructors: freeing a large scene only costs time, and a heap that a parser damaged
-    // cannot crash the process after its answer.
-    // The end of the output tells the application the answer is complete.
-    ::close(STDOUT_FILENO);
-    ::_exit(sent ? 0 : 1);
+    if (o.image) {
+        const core::Result<core::Image> image = core::loadImageFileInProcess(o.file, o.limits);
+        endWith(image ? out.image(*image) : out.text(core::importer::Tag::Error, image.error()));
+    }
+    // Reports often enough for a smooth progress bar, not once per primitive.
+    double reported = -1.0;
+    const core::ProgressFn progress = [&](double fraction) {
+        if (fraction >= 1.0 || fraction - reported >= 0.01) {
+            reported = fraction;
+            out.progress(fraction);
+        }
+        return true; // the application ends this process to cancel
+    };
+    // Unchecked: the application checks and repairs what it receives (detail::finishMesh), so
+    // the importer need not do it too.
+    const core::Result<core::Mesh> mesh =
+        core::loadMeshInProcess(o.file, progress, o.limits, core::MeshChecks::Later);
+    endWith(mesh ? out.mesh(*mesh) : out.text(core::importer::Tag::Error, mesh.error()));
 }

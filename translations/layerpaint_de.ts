@@ -668,6 +668,17 @@
     </message>
 </context>
 <context>
+    <name>ui::LayerBuilder</name>
+    <message>
+        <source>not enough memory for the depth layers of this view</source>
+        <translation>nicht genug Speicher für die Tiefenebenen dieser Ansicht</translation>
+    </message>
+    <message>
+        <source>not enough memory for the symmetric views</source>
+        <translation>nicht genug Speicher für die symmetrischen Ansichten</translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>The whole view, front to back</source>
@@ -717,8 +728,8 @@ Regionen: %2</translation>
         <translation>Die 3D-Ansicht kann nicht angezeigt werden.</translation>
     </message>
     <message>
-        <source>Could not build the layers: %1</source>
-        <translation>Die Ebenen konnten nicht erstellt werden: %1</translation>
+        <source>Could not build the depth layers: %1</source>
+        <translation>Die Tiefenebenen konnten nicht erstellt werden: %1</translation>
     </message>
     <message>
         <source>Trefoil knot</source>
@@ -753,8 +764,8 @@ Regionen: %2</translation>
         <translation>&amp;Schattiert</translation>
     </message>
     <message>
-        <source>Show the model shaded, all layers</source>
-        <translation>Das Modell schattiert zeigen, alle Ebenen</translation>
+        <source>Show the model shaded, all depth layers</source>
+        <translation>Das Modell schattiert zeigen, alle Tiefenebenen</translation>
     </message>
     <message>
         <source>Single &amp;Layer</source>
@@ -777,8 +788,8 @@ Regionen: %2</translation>
         <translation>Umrissen zeigen, wo eine Fläche nicht mit ihren Nachbarn auf derselben Ebene verbunden ist</translation>
     </message>
     <message>
-        <source>Building layers…</source>
-        <translation>Ebenen werden erstellt …</translation>
+        <source>Building depth layers…</source>
+        <translation>Tiefenebenen werden erstellt …</translation>
     </message>
     <message>
         <source>build_layers of this view:

@@ -667,6 +667,17 @@
     </message>
 </context>
 <context>
+    <name>ui::LayerBuilder</name>
+    <message>
+        <source>not enough memory for the depth layers of this view</source>
+        <translation>内存不足，无法构建此视图的深度层</translation>
+    </message>
+    <message>
+        <source>not enough memory for the symmetric views</source>
+        <translation>内存不足，无法构建对称视图</translation>
+    </message>
+</context>
+<context>
     <name>ui::LayersPanel</name>
     <message>
         <source>The whole view, front to back</source>
@@ -716,8 +727,8 @@ Regions: %2</source>
         <translation>无法显示三维视图。</translation>
     </message>
     <message>
-        <source>Could not build the layers: %1</source>
-        <translation>无法构建图层：%1</translation>
+        <source>Could not build the depth layers: %1</source>
+        <translation>无法构建深度层：%1</translation>
     </message>
     <message>
         <source>Trefoil knot</source>
@@ -752,8 +763,8 @@ Regions: %2</source>
         <translation>着色(&amp;S)</translation>
     </message>
     <message>
-        <source>Show the model shaded, all layers</source>
-        <translation>以着色方式显示模型的所有图层</translation>
+        <source>Show the model shaded, all depth layers</source>
+        <translation>以着色方式显示模型的所有深度层</translation>
     </message>
     <message>
         <source>Single &amp;Layer</source>
@@ -776,8 +787,8 @@ Regions: %2</source>
         <translation>勾勒出表面与同一图层上相邻部分不相连的地方</translation>
     </message>
     <message>
-        <source>Building layers…</source>
-        <translation>正在构建图层…</translation>
+        <source>Building depth layers…</source>
+        <translation>正在构建深度层…</translation>
     </message>
     <message>
         <source>build_layers of this view:

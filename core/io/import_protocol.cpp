@@ -9,6 +9,8 @@
 #include <new>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/uio.h>
 #include <unistd.h>
 
 namespace core::importer {
@@ -77,6 +79,21 @@ std::uint64_t maxOutputBytes(const LoadLimits& limits) {
 
 bool FrameWriter::writeAll(const void* data, std::size_t size) {
     const auto* p = static_cast<const std::uint8_t*>(data);
+    // The pipe holds references to the pages until they are read (see lendUntilExit()); small
+    // payloads are not worth the pinning. A refusal (not a pipe) falls back to write().
+    constexpr std::size_t kLendFrom = 64u << 10;
+    while (m_lend && size >= kLendFrom) {
+        iovec part{const_cast<std::uint8_t*>(p), std::min<std::size_t>(size, 1u << 30)};
+        const ssize_t n = ::vmsplice(m_fd, &part, 1, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            m_lend = false;
+            break;
+        }
+        p += n;
+        size -= static_cast<std::size_t>(n);
+    }
     while (size > 0) {
         const ssize_t n = ::write(m_fd, p, std::min<std::size_t>(size, 1u << 30));
         if (n < 0 && errno == EINTR)

@@ -69,6 +69,16 @@ class FrameWriter {
 public:
     explicit FrameWriter(int fd) : m_fd(fd) {}
 
+    /**
+     * Promises that the bytes of every later frame stay unchanged until this process ends (the
+     * importer writes its answer, then exits without freeing anything). Large payloads then go
+     * to a pipe by reference (vmsplice) instead of being copied into it: the reader's read() is
+     * the only copy. Elsewhere (not a pipe) they are written as before.
+     */
+    void lendUntilExit() { m_lend = true; }
+    /** Whether large payloads still go by reference (false once the descriptor refused it). */
+    bool lending() const { return m_lend; }
+
     bool progress(double fraction);
     bool text(Tag tag, const std::string& text);
     bool mesh(const Mesh& mesh);
@@ -81,6 +91,7 @@ private:
 
     int m_fd;
     bool m_ok = true;
+    bool m_lend = false;
 };
 
 /** Where frames come from: fills exactly size bytes, or returns false (ended or stopped). */

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // loadMesh() and loadImageFile(): the file is parsed by layerpaint-import in a child process
 // (app/import_main.cpp). Its output (import_protocol.h) is read here under a wall-clock deadline,
-// checked against the limits and validated again; a crash, hang, abort or malformed output
+// checked against the limits, then checked and repaired as a load in process is (the importer
+// leaves that to this side, so it is done once); a crash, hang, abort or malformed output
 // becomes one error message, and the child is always killed and reaped before returning. Every
 // file gets a fresh process; keepImporterReady() only starts the next one ahead of time.
 #include <algorithm>
@@ -504,13 +505,10 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
         if (!received->mesh)
             return detail::fileError(path, "the importer stopped: it sent no mesh");
         Mesh mesh = std::move(*received->mesh);
-        // Its output is checked as if it came from the file itself.
-        const std::size_t warnings = mesh.warnings.size();
-        if (const Status finished = detail::finishMesh(mesh, limits); !finished)
-            return detail::fileError(path, "the importer sent an invalid mesh (" +
-                                               finished.error() + ")");
-        if (mesh.warnings.size() != warnings)
-            mesh.warnings.push_back("the importer sent values that had to be repaired");
+        // The importer sends the format loader's mesh unchecked: the checks and repairs of a
+        // load in process are made here, once, on what it sent, as if it were the file itself.
+        if (Status finished = detail::finishMesh(mesh, limits); !finished)
+            return detail::fileError(path, finished.takeError());
         if (!reportProgress(progress, 1.0))
             return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
         return mesh;

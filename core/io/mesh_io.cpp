@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// loadMeshInProcess: checks the file, dispatches to the glTF or Assimp loader, then repairs what
-// can be repaired (normals, stray UV/color values) and validates the result.
+// loadMeshInProcess: checks the file, dispatches to the glTF or Assimp loader, then (unless the
+// application will) repairs what can be repaired (normals, stray UV/color values) and validates
+// the result.
 #include "core/io/mesh_io.h"
 
 #include <algorithm>
@@ -229,7 +230,8 @@ namespace {
 
 using detail::fileError;
 
-Result<Mesh> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits) {
+Result<Mesh> load(const std::string& path, const ProgressFn& progress, const LoadLimits& limits,
+                  bool finish) {
     if (path.rfind(kBuiltinPrefix, 0) == 0) {
         Result<Mesh> builtin = makeBuiltinModel(path.substr(std::string(kBuiltinPrefix).size()));
         if (!builtin && builtin.error().rfind(path, 0) != 0)
@@ -251,8 +253,9 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
     if (!result)
         return fileError(path, result.takeError());
     Mesh mesh = std::move(result).value();
-    if (const Status finished = detail::finishMesh(mesh, limits); !finished)
-        return fileError(path, finished.takeError());
+    if (finish)
+        if (const Status finished = detail::finishMesh(mesh, limits); !finished)
+            return fileError(path, finished.takeError());
     if (!reportProgress(progress, 1.0))
         return fileError(path, "cancelled", ErrorKind::Cancelled);
     return mesh;
@@ -261,9 +264,9 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
 } // namespace
 
 Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progress,
-                               const LoadLimits& limits) {
+                               const LoadLimits& limits, MeshChecks checks) {
     try {
-        return load(path, progress, limits);
+        return load(path, progress, limits, checks == MeshChecks::Finish);
     } catch (const std::bad_alloc&) {
         return fileError(path, "not enough memory to load the file", ErrorKind::Failed);
     } catch (const std::exception& e) {

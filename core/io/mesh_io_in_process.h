@@ -21,9 +21,19 @@
 
 namespace core {
 
-/** loadMesh() in this process: the same contract, the same messages. */
+/** Whether a mesh loaded in this process goes through detail::finishMesh() here. */
+enum class MeshChecks {
+    Finish, // yes: the mesh is ready to use
+    Later,  // no: the importer process leaves them to the application, which makes them anyway
+};
+
+/**
+ * loadMesh() in this process: the same contract, the same messages. With MeshChecks::Later the
+ * mesh is the format loader's, not yet checked nor repaired (normals may be missing).
+ */
 Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progress = {},
-                               const LoadLimits& limits = {});
+                               const LoadLimits& limits = {},
+                               MeshChecks checks = MeshChecks::Finish);
 
 /** loadImageFile() in this process. */
 Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits = {});

@@ -104,7 +104,11 @@ Result<Project> loadProject(const std::string& path, const ProgressFn& progress,
 
 Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& progress,
                                      const LoadLimits& limits) {
-    return loadProjectWith(path, progress, limits, &loadMeshInProcess, &loadGlbImagesInProcess);
+    const MeshLoader finished = [](const std::string& file, const ProgressFn& report,
+                                   const LoadLimits& within) {
+        return loadMeshInProcess(file, report, within);
+    };
+    return loadProjectWith(path, progress, limits, finished, &loadGlbImagesInProcess);
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,

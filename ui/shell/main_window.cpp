@@ -144,7 +144,7 @@ MainWindow::MainWindow(QWidget* parent)
             &MainWindow::onSegmentationChanged);
     connect(m_builder, &LayerBuilder::layersCleared, this, &MainWindow::onLayersCleared);
     connect(m_builder, &LayerBuilder::buildFailed, this, [this](const QString& message) {
-        statusBar()->showMessage(tr("Could not build the layers: %1").arg(message),
+        statusBar()->showMessage(tr("Could not build the depth layers: %1").arg(message),
                                  kStatusMessageMs);
         updateLayerInfo();
     });
@@ -315,7 +315,7 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
     };
     m_shadedAction =
         addDisplay(tr("&Shaded"), QStringLiteral("actionDisplayShaded"), 1,
-                   tr("Show the model shaded, all layers"), render::LayerDisplay::Composite);
+                   tr("Show the model shaded, all depth layers"), render::LayerDisplay::Composite);
     m_singleLayerAction =
         addDisplay(tr("Single &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
                    tr("Show one depth layer alone (choose it in the Depth Layers panel)"),
@@ -460,7 +460,7 @@ void MainWindow::updateLayerInfo() {
     const core::Layers* layers = m_document->layers();
     if (!layers) {
         m_layerInfo->setText(m_builder->isBuilding() && m_viewport->canCapture()
-                                 ? tr("Building layers…")
+                                 ? tr("Building depth layers…")
                                  : QString());
         m_layerInfo->setToolTip(QString());
         return;

@@ -27,13 +27,13 @@ struct LayerBuilder::Job {
     core::LayerOptions options;
     core::CaptureStats stats;
     std::optional<core::Layers> layers;
-    std::string error;
+    QString error; // shown to the user
 };
 
 struct LayerBuilder::SymmetryJob {
     core::Document::SymmetryBuild build;
     bool built = false;
-    std::string error;
+    QString error; // shown to the user
 };
 
 struct LayerBuilder::Captured {
@@ -156,10 +156,10 @@ void LayerBuilder::capture() {
                                                        *topology, job->view, job->options));
             } catch (const std::bad_alloc&) {
                 job->layers.reset();
-                job->error = "not enough memory for the layers of this view";
+                job->error = tr("not enough memory for the depth layers of this view");
             } catch (const std::exception& e) {
                 job->layers.reset();
-                job->error = e.what();
+                job->error = QString::fromLocal8Bit(e.what());
             }
         },
         [this, job] { finish(job); });
@@ -190,17 +190,17 @@ bool LayerBuilder::buildNow() {
                                                    m_document.mesh(), m_document.topology(),
                                                    job->view, job->options, engine));
         } catch (const std::bad_alloc&) {
-            job->error = "not enough memory for the layers of this view";
+            job->error = tr("not enough memory for the depth layers of this view");
         } catch (const std::exception& e) {
-            job->error = e.what();
+            job->error = QString::fromLocal8Bit(e.what());
         }
     } else {
-        job->error = captured.stack.error();
+        job->error = QString::fromStdString(captured.stack.error());
     }
     if (job->layers && adopt(*job))
         return true;
     m_wanted = false; // tried again at the next view change
-    emit buildFailed(QString::fromStdString(job->error));
+    emit buildFailed(job->error);
     return false;
 }
 
@@ -225,7 +225,7 @@ void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
     const bool current = job->viewSerial == m_viewport.viewSerial();
     if (current && !job->layers) {
         m_wanted = false;
-        emit buildFailed(QString::fromStdString(job->error));
+        emit buildFailed(job->error);
     } else if (current && job->layers && adopt(*job)) {
         return;
     }
@@ -268,9 +268,9 @@ void LayerBuilder::refreshSymmetry() {
             try {
                 job->built = job->build.build(progress);
             } catch (const std::bad_alloc&) {
-                job->error = "not enough memory for the symmetric views";
+                job->error = tr("not enough memory for the symmetric views");
             } catch (const std::exception& e) {
-                job->error = e.what();
+                job->error = QString::fromLocal8Bit(e.what());
             }
         },
         [this, job] { finishSymmetry(job); });
@@ -281,12 +281,12 @@ void LayerBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
     if (job != m_symmetryJob)
         return; // cancelled, or settled by buildSymmetryNow()
     m_symmetryJob.reset();
-    if (!job->error.empty()) {
+    if (!job->error.isEmpty()) {
         // Settled as copies that paint nothing (as a copy whose capture fails), so the build is
         // not started again for the same layers and symmetry.
         job->build.layers.assign(job->build.transforms.size(), std::nullopt);
         job->built = true;
-        emit buildFailed(QString::fromStdString(job->error));
+        emit buildFailed(job->error);
     }
     if (job->built)
         m_document.adoptSymmetry(std::move(job->build));
