@@ -98,6 +98,25 @@ struct TriangleMark {
     std::uint32_t viewIndex = 0; // that entry
 };
 
+/** A texel a texture dab reaches (its page's texel coordinates) and the falloff weight there. */
+struct DabTexel {
+    int x = 0, y = 0;
+    float weight = 0.0f;
+};
+
+/**
+ * What the first pass of a texture dab (TextureTarget::paint()) found of one triangle: whether it
+ * was scanned, its texels the dab reaches (a range of its chunk's DabTexel list), the least
+ * stroke coverage among its other texels, and whether all its texels were looked at.
+ */
+struct DabTriangle {
+    std::uint32_t begin = 0, end = 0;
+    std::uint32_t page = 0;
+    float least = 0.0f;
+    bool scanned = false;
+    bool whole = false;
+};
+
 struct StrokeTile {
     TileKey key;
     std::vector<float> alpha;         // stroke coverage per element
@@ -185,6 +204,10 @@ struct PaintTarget::Context {
     std::vector<TileKey> keys;          // scratch
     std::vector<TexelSpan> rows;        // scratch: the rows of a tile a dab wrote
     std::vector<std::uint8_t> scratch;
+    // Scratch of a texture dab: per setup what its first pass found, per chunk of setups the
+    // texels the dab reaches.
+    std::vector<DabTriangle> dabTriangles;
+    std::vector<std::vector<DabTexel>> dabTexels;
     PaintChanges changes;
 
     void updateView(const View& v);
