@@ -2,13 +2,11 @@
 // Projection painting into textures (TextureTarget): pages made from the mesh's textures or new,
 // seam padding, fills, undo tiles of kTextureTile² texels (the texel loop of a dab is in
 // texture_target_dab.cpp).
-#include <limits>
 #include <utility>
 
 #include <glm/common.hpp>
 #include <glm/mat4x4.hpp>
 
-#include "core/base/parallel.h"
 #include "core/paint/paint_context.h"
 #include "core/paint/texture_tile_layout.h"
 #include "core/paint/uv_raster.h"
