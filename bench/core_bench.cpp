@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Micro-benchmarks of the CPU stages on the trefoil at 1280 × 720 (docs/architecture.md §5):
 // capture, pixel connectivity, segmentation, the stroke's BFS maps and one dab on a texture.
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -9,6 +10,7 @@
 #include "core/layers/connectivity.h"
 #include "core/layers/cpu_capture.h"
 #include "core/layers/segmentation.h"
+#include "core/paint/paint_layers.h"
 #include "core/paint/paint_target.h"
 #include "core/paint/stroke_tracker.h"
 #include "core/paint/undo_tiles.h"
@@ -242,5 +244,45 @@ void DabOnTexture(benchmark::State& state) {
     state.counters["texture"] = double((*target)->page(0).width);
 }
 BENCHMARK(DabOnTexture)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+/**
+ * One dab on paint layer 8 of 8 of a 4096² texture target, in all three channels, with the
+ * composite of the tiles it touched recomputed (as layerpaint-cli bench's paint_layers part).
+ */
+void DabOnPaintLayer(benchmark::State& state) {
+    const TrefoilScene& s = trefoilScene();
+    core::StrokeTracker tracker;
+    if (!tracker.setLayers(s.layers)) {
+        state.SkipWithError("the scene's layers are not usable");
+        return;
+    }
+    core::Brush brush = brush32();
+    brush.paintBaseColor = brush.paintRoughness = brush.paintMetallic = true;
+    std::vector<core::Dab> dabs;
+    tracker.startStroke(s.path[0], brush, dabs);
+    for (std::size_t i = 1; i < s.path.size(); ++i)
+        tracker.moveStroke(s.path[i], dabs);
+    core::PaintTargetOptions options;
+    options.resolution = 4096;
+    auto target = core::TextureTarget::create(s.mesh, s.topology, options);
+    if (!target || dabs.empty()) {
+        state.SkipWithError(target ? "the stroke made no dab" : target.error().c_str());
+        return;
+    }
+    core::PaintLayerStack& stack = (*target)->layerStack();
+    for (int i = 0; i < 8; ++i)
+        stack.add({.name = "layer " + std::to_string(i + 1)}, stack.size());
+    (*target)->setSelection({stack.layer(stack.size() - 1).id, false});
+    std::size_t next = 0;
+    (*target)->beginStroke(brush);
+    for (auto _ : state) {
+        const core::PaintChanges& changes = (*target)->paint(s.layers, dabs[next]);
+        benchmark::DoNotOptimize(&changes);
+        next = (next + 1) % dabs.size();
+    }
+    const core::TileUndoRecord record = (*target)->endStroke();
+    benchmark::DoNotOptimize(record.bytes());
+}
+BENCHMARK(DabOnPaintLayer)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 } // namespace

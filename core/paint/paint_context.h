@@ -102,6 +102,9 @@ struct TriangleMark {
 struct DabTexel {
     int x = 0, y = 0;
     float weight = 0.0f;
+    // The stroke's slot of the texel's tile, or -1 where the texel cannot take paint (set
+    // between the passes).
+    std::int32_t slot = -1;
 };
 
 /**
@@ -208,6 +211,13 @@ struct PaintTarget::Context {
     // texels the dab reaches.
     std::vector<DabTriangle> dabTriangles;
     std::vector<std::vector<DabTexel>> dabTexels;
+    // The second pass's scratch: per slot its texels and the part that writes them; per part
+    // the least coverage it saw of each triangle and the tiles it touched first (with the
+    // position of the texel, (triangle << 32) | texel, to list them in the one loop's order).
+    std::vector<std::uint32_t> slotTexels;
+    std::vector<std::uint8_t> slotPart;
+    std::vector<std::vector<float>> partLeast;
+    std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> partTouched;
     PaintChanges changes;
 
     void updateView(const View& v);
@@ -323,15 +333,19 @@ struct PaintTarget::Context {
                         double& maxX, double& minY, double& maxY) const;
     std::int32_t slotFor(TileStore& store, std::uint32_t page, std::uint32_t tile);
     void touch(std::int32_t slot) {
-        StrokeTile& s = slots[std::size_t(slot)];
-        if (s.dab != dab) {
-            s.dab = dab;
-            s.x0 = s.y0 = std::numeric_limits<int>::max();
-            s.x1 = s.y1 = std::numeric_limits<int>::min();
-            s.rowX0.fill(std::uint8_t(kTextureTile));
-            s.rowX1.fill(0);
+        if (claim(slots[std::size_t(slot)]))
             touched.push_back(std::uint32_t(slot));
-        }
+    }
+    /** Readies a tile for what this dab writes to it; true the first time in this dab. */
+    bool claim(StrokeTile& s) const {
+        if (s.dab == dab)
+            return false;
+        s.dab = dab;
+        s.x0 = s.y0 = std::numeric_limits<int>::max();
+        s.x1 = s.y1 = std::numeric_limits<int>::min();
+        s.rowX0.fill(std::uint8_t(kTextureTile));
+        s.rowX1.fill(0);
+        return true;
     }
     /** Adds texel (x, y) of a tile touch() was called for (tile coordinates) to what it wrote. */
     static void wrote(StrokeTile& s, int x, int y) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <span>
 #include <string>
@@ -158,6 +159,7 @@ public:
      * the same bytes as updateTile(); during a stroke only the stroke's channels, the others
      * being up to date already. With rows (one per row of rect), only the texels [x0, x1) of
      * each row (page coordinates; x0 >= x1 for none): what a dab wrote, not its bounding box.
+     * Calls for different tiles may run on different threads at the same time.
      */
     void updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
                     std::span<const TexelSpan> rows = {});
@@ -245,7 +247,7 @@ private:
     std::uint64_t m_strokeLayer = 0;
     unsigned m_strokeChannels = 0;
     std::unordered_map<std::uint64_t, std::vector<float>> m_below;
-    std::vector<float> m_scratch;
+    std::mutex m_belowLock; // updateRect() of different tiles at the same time
 };
 
 namespace layer_bytes {

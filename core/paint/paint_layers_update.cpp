@@ -260,7 +260,6 @@ void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
 void PaintLayerStack::endStroke() {
     m_inStroke = false;
     m_below = {};
-    m_scratch = {};
 }
 
 void PaintLayerStack::dropStrokeCache() {
@@ -376,22 +375,33 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
     if (!belowTouches && composeOverBase(page, tile, rect, from, end, channels, rows))
         return;
 
-    m_scratch.resize(5 * n);
-    float* values = m_scratch.data();
+    // Per thread: updates of different tiles may run at the same time.
+    thread_local std::vector<float> scratch;
+    scratch.resize(5 * n);
+    float* values = scratch.data();
     if (!belowTouches) {
         baseValues(page, rect, channels, values, rows);
     } else {
         // The layers below the stroke's: kept per tile for the stroke (whole tile, once).
         const std::uint64_t key = (std::uint64_t(page) << 32) | tile;
-        auto kept = m_below.find(key);
-        if (kept == m_below.end() && m_below.size() < kMaxKeptTiles) {
+        const std::vector<float>* kept = nullptr;
+        bool keep = false;
+        {
+            const std::lock_guard lock(m_belowLock);
+            if (const auto found = m_below.find(key); found != m_below.end())
+                kept = &found->second;
+            else
+                keep = m_below.size() < kMaxKeptTiles;
+        }
+        if (keep) {
             const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
             std::vector<float> below(5 * tn);
             baseValues(page, tr, channels, below.data());
             blendLayers(page, tile, tr, 0, from, channels, below.data());
-            kept = m_below.emplace(key, std::move(below)).first;
+            const std::lock_guard lock(m_belowLock); // elements stay where they are on insertion
+            kept = &m_below.emplace(key, std::move(below)).first->second;
         }
-        if (kept != m_below.end()) {
+        if (kept != nullptr) {
             const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
             for (std::size_t v = 0; v < 5; ++v) {
                 if ((channels & (1u << (v < 3 ? 0 : v - 2))) == 0)
@@ -401,7 +411,7 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
                     const TexelSpan span = rowOf(rect, rows, y);
                     if (span.x1 <= span.x0)
                         continue;
-                    const float* src = kept->second.data() + v * tn +
+                    const float* src = kept->data() + v * tn +
                                        std::size_t(y - tr.y) * std::size_t(tr.width) +
                                        std::size_t(span.x0 - tr.x);
                     std::copy_n(src, span.x1 - span.x0, values + v * n + at);

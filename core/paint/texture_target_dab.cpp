@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The texel loop of a dab on a texture target (TextureTarget::paint), in two passes. The first
 // only reads: for each triangle the dab looks at, the texels the dab reaches on its surface and
-// their falloff weight (on both cores for a large dab, the triangles in chunks). The second, in
-// the triangles' order, raises those texels' stroke coverage and writes them, so the bytes are
-// those of one pass over the triangles in order, whatever the number of threads.
+// their falloff weight (on both cores for a large dab, the triangles in chunks). Between them
+// each texel gets the stroke's slot of its tile. The second raises the texels' stroke coverage
+// and writes them, each tile on one core in the triangles' order, so the bytes are those of one
+// pass over the triangles in order, whatever the number of threads.
+#include <algorithm>
 #include <atomic>
 #include <limits>
+#include <mutex>
+#include <utility>
 
 #include <glm/common.hpp>
 
-#include "core/base/parallel.h"
+#include "core/base/helper_threads.h"
 #include "core/paint/paint_context.h"
 #include "core/paint/texture_tile_layout.h"
 #include "core/paint/uv_raster.h"
@@ -30,6 +34,8 @@ constexpr std::size_t kDabChunk = 32;
  * brush's dab costs less than starting a thread.
  */
 constexpr std::size_t kDabParallelFrom = 256;
+/** The second pass shares its tiles among the helpers from this many texels that take paint. */
+constexpr std::size_t kSecondPassParallelFrom = 2048;
 
 } // namespace
 
@@ -190,7 +196,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         if (c.dabTexels.size() < chunks)
             c.dabTexels.resize(chunks);
         std::atomic<std::size_t> next{0};
-        parallelRanges(2, count >= kDabParallelFrom ? 2u : 1u, [&](int, int, int) {
+        HelperThreads& helpers = HelperThreads::shared();
+        helpers.run(count >= kDabParallelFrom ? helpers.width() : 1, [&](int) {
             for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
                 std::vector<DabTexel>& texels = c.dabTexels[k];
                 texels.clear();
@@ -201,117 +208,200 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         });
     }
 
-    // Second pass: the texels found, triangle by triangle in order.
+    // Between the passes, on this thread in the triangles' order: the stroke's slot of each
+    // texel's tile, made where the one loop would make it (at the first texel of the tile that
+    // can still take paint), and the least coverage of the texels that cannot.
+    std::size_t reaching = 0;
+    for (std::size_t si = 0; si < count; ++si) {
+        DabTriangle& found = c.dabTriangles[si];
+        if (!found.scanned)
+            continue;
+        const Page& page = m_pages[found.page];
+        const auto tilesX = std::uint32_t(page.tilesX);
+        std::int32_t* tileSlots = c.tileSlot[found.page].data();
+        DabTexel* texels = c.dabTexels[si / kDabChunk].data();
+        for (std::uint32_t h = found.begin; h < found.end; ++h) {
+            DabTexel& texel = texels[h];
+            const std::uint32_t tile = std::uint32_t(texel.y / kTextureTile) * tilesX +
+                                       std::uint32_t(texel.x / kTextureTile);
+            std::int32_t slot = tileSlots[tile];
+            if (slot >= 0) {
+                const int tileWidth = std::min(
+                    kTextureTile, page.image.width - (texel.x / kTextureTile) * kTextureTile);
+                const float old = c.slots[std::size_t(slot)].alpha[std::size_t(
+                    (texel.y % kTextureTile) * tileWidth + texel.x % kTextureTile)];
+                // At the dab's opacity already, it stays so through this dab.
+                if (old >= dabOpacity) {
+                    found.least = std::min(found.least, old);
+                    texel.slot = -1;
+                    continue;
+                }
+            } else {
+                slot = c.slotFor(*this, found.page, tile);
+            }
+            texel.slot = slot;
+            if (c.slotTexels.size() <= std::size_t(slot))
+                c.slotTexels.resize(std::size_t(slot) + 1, 0u);
+            ++c.slotTexels[std::size_t(slot)];
+            ++reaching;
+        }
+    }
+
+    // Each tile's texels go to one part, the largest tiles first to the least loaded part.
+    // The base and the paint layers' channels are written per tile; the other modes on this
+    // thread alone.
+    HelperThreads& helpers = HelperThreads::shared();
+    const bool perTile = m_mode == StrokeMode::Base || m_mode == StrokeMode::Channels;
+    const int parts = perTile && reaching >= kSecondPassParallelFrom ? helpers.width() : 1;
+    c.slotPart.assign(c.slotTexels.size(), 0u);
+    if (parts > 1) {
+        std::vector<std::uint32_t> order;
+        for (std::uint32_t k = 0; k < c.slotTexels.size(); ++k)
+            if (c.slotTexels[k] > 0)
+                order.push_back(k);
+        std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+            return c.slotTexels[a] != c.slotTexels[b] ? c.slotTexels[a] > c.slotTexels[b] : a < b;
+        });
+        std::vector<std::size_t> load(std::size_t(parts), 0u);
+        for (const std::uint32_t k : order) {
+            const auto least =
+                std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+            c.slotPart[k] = std::uint8_t(least);
+            load[least] += c.slotTexels[k];
+        }
+    }
+    std::fill(c.slotTexels.begin(), c.slotTexels.end(), 0u);
+    if (c.partLeast.size() < std::size_t(parts)) {
+        c.partLeast.resize(std::size_t(parts));
+        c.partTouched.resize(std::size_t(parts));
+    }
+
+    // Second pass: each part its tiles' texels, triangle by triangle in order, so every tile
+    // sees the writes of the one loop in its order.
     const SrgbTables& srgb = SrgbTables::get();
     const bool eraser = c.brush.eraser;
     const bool onBase = m_mode == StrokeMode::Base;
     const bool onChannels = m_mode == StrokeMode::Channels;
-    std::array<std::uint8_t*, kPaintChannels> channelTiles{};
-    for (std::size_t si = 0; si < count; ++si) {
-        const DabTriangle& found = c.dabTriangles[si];
-        if (!found.scanned)
-            continue;
-        float least = found.least;
-        const std::uint32_t pageIndex = found.page;
-        Page& page = m_pages[pageIndex];
-        const int width = page.image.width, height = page.image.height;
-        const auto tilesX = std::uint32_t(page.tilesX);
-        std::uint8_t* pixels = m_stack->baseColor(pageIndex).data();
-        const std::int32_t* tileSlots = c.tileSlot[pageIndex].data();
-        const DabTexel* texels = c.dabTexels[si / kDabChunk].data();
-        // The tile of the texel looked at: its stroke coverage (nullptr: no slot yet, all 0).
-        std::uint32_t seenTile = kNone;
-        const float* seenAlpha = nullptr;
-        int seenWidth = 0;
-        // The tile of the last texel that took paint, as a slot of the stroke.
-        std::uint32_t lastTile = kNone;
-        std::int32_t slot = -1;
+    std::mutex allocating; // a paint layer's tile made by one part at a time
+    helpers.run(parts, [&](int part) {
+        std::vector<float>& partLeast = c.partLeast[std::size_t(part)];
+        partLeast.assign(count, std::numeric_limits<float>::infinity());
+        std::vector<std::pair<std::uint64_t, std::uint32_t>>& firsts =
+            c.partTouched[std::size_t(part)];
+        firsts.clear();
+        std::array<std::uint8_t*, kPaintChannels> channelTiles{};
+        std::int32_t lastSlot = -1;
+        StrokeTile* st = nullptr;
         float* alpha = nullptr;
         const float* base = nullptr;
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
-        StrokeTile* touchedTile = nullptr;
-        std::size_t tileTexels = 0;
-        for (std::uint32_t h = found.begin; h < found.end; ++h) {
-            const DabTexel& texel = texels[h];
-            const int tx = texel.x, ty = texel.y;
-            const std::uint32_t tile =
-                std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
-            if (tile != seenTile) {
-                seenTile = tile;
-                const std::int32_t seenSlot = tileSlots[tile];
-                seenAlpha = seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
-                seenWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
-            }
-            const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
-                                      std::size_t(tx % kTextureTile);
-            // An earlier triangle of this dab may have raised it since the first pass.
-            const float old = seenAlpha ? seenAlpha[local] : 0.0f;
-            if (old >= dabOpacity) {
-                least = std::min(least, old);
+        std::size_t tileWidth = 0, tileTexels = 0;
+        for (std::size_t si = 0; si < count; ++si) {
+            const DabTriangle& found = c.dabTriangles[si];
+            if (!found.scanned)
                 continue;
-            }
-            if (tile != lastTile) {
-                lastTile = tile;
-                slot = c.slotFor(*this, pageIndex, tile);
-                alpha = c.slots[std::size_t(slot)].alpha.data();
-                seenAlpha = alpha;
-                base = c.coverBase(slot);
-                before = c.slots[std::size_t(slot)].before.data();
-                tileTouched = false;
-                tileTexels = std::size_t(seenWidth) *
-                             std::size_t(std::min(kTextureTile,
-                                                  height - (ty / kTextureTile) * kTextureTile));
-            }
-            const float cover =
-                std::max(old, std::min(dabOpacity, base[local] + flowOpacity * texel.weight));
-            if (!(cover > old)) {
-                least = std::min(least, old);
-                continue;
-            }
-            least = std::min(least, cover);
-            alpha[local] = cover;
-            if (!tileTouched) {
-                tileTouched = true;
-                c.touch(slot);
-                touchedTile = &c.slots[std::size_t(slot)];
-                // The paint layer's tiles of the channels painted, found (and made) once.
-                if (onChannels)
-                    for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
-                        channelTiles[ch] = m_planes[ch] != nullptr
-                                               ? m_planes[ch]->writableTile(pageIndex, tile)
-                                               : nullptr;
-            }
-            Context::wrote(*touchedTile, tx % kTextureTile, ty % kTextureTile);
-            if (onBase) {
-                // lerp(stroke start, target, coverage): the brush colour, or the original for
-                // the eraser.
-                const std::size_t at = std::size_t(ty) * std::size_t(width) + std::size_t(tx);
-                blendTexel(srgb, pixels + at * 4, before + local * 4,
-                           eraser ? &page.original.rgba[at * 4] : c.colorBytes.data(),
-                           eraser ? nullptr : &c.colorLinear[0], cover);
-            } else if (onChannels) {
-                // As writeTexel(), with the tiles at hand.
-                for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
-                    if (channelTiles[ch] == nullptr)
-                        continue;
-                    const int n = ch == 0 ? 3 : 1;
-                    const std::size_t at = local * std::size_t(n + 1);
-                    const std::uint8_t* start = before + channelOffset(ch, tileTexels) + at;
-                    if (eraser)
-                        eraseTexel(channelTiles[ch] + at, start, n, cover);
-                    else
-                        paintTexel(channelTiles[ch] + at, start, n, &m_values[ch == 0 ? 0 : ch + 2],
-                                   cover, m_lock);
+            float least = std::numeric_limits<float>::infinity();
+            const std::uint32_t pageIndex = found.page;
+            Page& page = m_pages[pageIndex];
+            const int width = page.image.width, height = page.image.height;
+            std::uint8_t* pixels = m_stack->baseColor(pageIndex).data();
+            const DabTexel* texels = c.dabTexels[si / kDabChunk].data();
+            for (std::uint32_t h = found.begin; h < found.end; ++h) {
+                const DabTexel& texel = texels[h];
+                if (texel.slot < 0 || c.slotPart[std::size_t(texel.slot)] != part)
+                    continue;
+                const int tx = texel.x, ty = texel.y;
+                if (texel.slot != lastSlot) {
+                    lastSlot = texel.slot;
+                    st = &c.slots[std::size_t(lastSlot)];
+                    alpha = st->alpha.data();
+                    base = c.coverBase(lastSlot);
+                    before = st->before.data();
+                    tileTouched = false;
+                    tileWidth = std::size_t(
+                        std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile));
+                    tileTexels = tileWidth *
+                                 std::size_t(std::min(kTextureTile,
+                                                      height - (ty / kTextureTile) * kTextureTile));
                 }
-            } else {
-                writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
+                const std::size_t local =
+                    std::size_t(ty % kTextureTile) * tileWidth + std::size_t(tx % kTextureTile);
+                // An earlier triangle of this dab may have raised it since the first pass.
+                const float old = alpha[local];
+                if (old >= dabOpacity) {
+                    least = std::min(least, old);
+                    continue;
+                }
+                const float cover =
+                    std::max(old, std::min(dabOpacity, base[local] + flowOpacity * texel.weight));
+                if (!(cover > old)) {
+                    least = std::min(least, old);
+                    continue;
+                }
+                least = std::min(least, cover);
+                alpha[local] = cover;
+                if (!tileTouched) {
+                    tileTouched = true;
+                    if (c.claim(*st))
+                        firsts.emplace_back((std::uint64_t(si) << 32) | h, std::uint32_t(lastSlot));
+                    // The paint layer's tiles of the channels painted, found (and made) once.
+                    if (onChannels) {
+                        const std::uint32_t tile = st->key.tile;
+                        const std::lock_guard lock(allocating);
+                        for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
+                            channelTiles[ch] = m_planes[ch] != nullptr
+                                                   ? m_planes[ch]->writableTile(pageIndex, tile)
+                                                   : nullptr;
+                    }
+                }
+                Context::wrote(*st, tx % kTextureTile, ty % kTextureTile);
+                if (onBase) {
+                    // lerp(stroke start, target, coverage): the brush colour, or the original
+                    // for the eraser.
+                    const std::size_t at = std::size_t(ty) * std::size_t(width) + std::size_t(tx);
+                    blendTexel(srgb, pixels + at * 4, before + local * 4,
+                               eraser ? &page.original.rgba[at * 4] : c.colorBytes.data(),
+                               eraser ? nullptr : &c.colorLinear[0], cover);
+                } else if (onChannels) {
+                    // As writeTexel(), with the tiles at hand.
+                    for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
+                        if (channelTiles[ch] == nullptr)
+                            continue;
+                        const int n = ch == 0 ? 3 : 1;
+                        const std::size_t at = local * std::size_t(n + 1);
+                        const std::uint8_t* start = before + channelOffset(ch, tileTexels) + at;
+                        if (eraser)
+                            eraseTexel(channelTiles[ch] + at, start, n, cover);
+                        else
+                            paintTexel(channelTiles[ch] + at, start, n,
+                                       &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock);
+                    }
+                } else {
+                    writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);
+                }
             }
+            partLeast[si] = least;
         }
-        if (found.whole)
-            c.setTriangleCover(c.setups[si].triangle, least);
-    }
+    });
 
+    // The tiles in the order the one loop touched them first; the triangles' least coverage.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>>& firsts = c.partTouched[0];
+    for (int part = 1; part < parts; ++part)
+        firsts.insert(firsts.end(), c.partTouched[std::size_t(part)].begin(),
+                      c.partTouched[std::size_t(part)].end());
+    std::sort(firsts.begin(), firsts.end());
+    for (const auto& [at, slot] : firsts)
+        c.touched.push_back(slot);
+    for (std::size_t si = 0; si < count; ++si) {
+        const DabTriangle& found = c.dabTriangles[si];
+        if (!found.scanned || !found.whole)
+            continue;
+        float least = found.least;
+        for (int part = 0; part < parts; ++part)
+            least = std::min(least, c.partLeast[std::size_t(part)][si]);
+        c.setTriangleCover(c.setups[si].triangle, least);
+    }
     padTouched();
     refreshTouched();
     return touchedChanges();

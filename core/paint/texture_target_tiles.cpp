@@ -3,10 +3,12 @@
 // channels or mask, reading and writing them (undo, redo), the changed texel rectangles and the
 // composite recomputed for given tiles.
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 #include <span>
 #include <vector>
 
+#include "core/base/helper_threads.h"
 #include "core/base/parallel.h"
 #include "core/paint/paint_context.h"
 #include "core/paint/paint_target.h"
@@ -198,10 +200,9 @@ PaintChanges TextureTarget::refresh(std::vector<TileKey> tiles) {
 
 void TextureTarget::refreshTouched() {
     Context& c = *m_context;
-    for (const std::uint32_t slot : c.touched) {
-        const StrokeTile& s = c.slots[slot];
+    const auto refresh = [&](const StrokeTile& s, std::vector<TexelSpan>& rows) {
         if (s.x0 >= s.x1 || s.y0 >= s.y1)
-            continue;
+            return;
         const Page& page = m_pages[s.key.page];
         TileRect rect;
         rect.x = int(s.key.tile % std::uint32_t(page.tilesX)) * kTextureTile + s.x0;
@@ -210,14 +211,29 @@ void TextureTarget::refreshTouched() {
         rect.height = s.y1 - s.y0;
         // Only the texels the dab wrote in each row: its bounding box holds many more.
         const int tileX = rect.x - s.x0;
-        c.rows.resize(std::size_t(rect.height));
+        rows.resize(std::size_t(rect.height));
         for (int y = s.y0; y < s.y1; ++y) {
             const int x0 = s.rowX0[std::size_t(y)], x1 = s.rowX1[std::size_t(y)];
-            c.rows[std::size_t(y - s.y0)] =
+            rows[std::size_t(y - s.y0)] =
                 x0 < x1 ? TexelSpan{tileX + x0, tileX + x1} : TexelSpan{tileX, tileX};
         }
-        m_stack->updateRect(s.key.page, s.key.tile, rect, c.rows);
+        m_stack->updateRect(s.key.page, s.key.tile, rect, rows);
+    };
+    // Without paint layers a refresh copies the base's bytes: not worth a second thread.
+    if (m_stack->size() == 0 || c.touched.size() < 2) {
+        for (const std::uint32_t slot : c.touched)
+            refresh(c.slots[slot], c.rows);
+        return;
     }
+    // Each tile's composite on its own: the tiles in any order, on every helper.
+    std::atomic<std::size_t> next{0};
+    HelperThreads& helpers = HelperThreads::shared();
+    helpers.run(helpers.width(), [&](int part) {
+        std::vector<TexelSpan> own;
+        std::vector<TexelSpan>& rows = part == 0 ? c.rows : own;
+        for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < c.touched.size();)
+            refresh(c.slots[c.touched[k]], rows);
+    });
 }
 
 } // namespace core

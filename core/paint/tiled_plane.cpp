@@ -49,10 +49,15 @@ std::uint8_t* TiledPlane::writableTile(std::uint32_t page, std::uint32_t tile) {
     if (t.empty()) {
         const TileRect r = tileRect(page, tile);
         const std::size_t texels = std::size_t(r.width) * std::size_t(r.height);
-        t.resize(texels * std::size_t(m_texelBytes));
-        for (std::size_t i = 0; i < texels; ++i)
-            std::memcpy(t.data() + i * std::size_t(m_texelBytes), m_fill.data(),
-                        std::size_t(m_texelBytes));
+        const auto texelBytes = std::size_t(m_texelBytes);
+        t.resize(texels * texelBytes); // zeros: a blank paint layer's fill
+        const auto fillEnd = m_fill.begin() + std::ptrdiff_t(texelBytes);
+        if (texels > 0 && std::any_of(m_fill.begin(), fillEnd, [](std::uint8_t b) { return b; })) {
+            // The fill texel, then the filled part copied onto the rest, doubling.
+            std::memcpy(t.data(), m_fill.data(), texelBytes);
+            for (std::size_t done = texelBytes; done < t.size(); done *= 2)
+                std::memcpy(t.data() + done, t.data(), std::min(done, t.size() - done));
+        }
         m_allocated += t.size();
     }
     return t.data();
