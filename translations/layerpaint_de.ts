@@ -1373,6 +1373,58 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>The symmetric views could not be built: this stroke paints without its copies</source>
         <translation>Die symmetrischen Ansichten konnten nicht erstellt werden: dieser Strich malt ohne seine Kopien</translation>
     </message>
+    <message>
+        <source>S&amp;ymmetry</source>
+        <translation>S&amp;ymmetrie</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;X</source>
+        <translation>&amp;X spiegeln</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;Y</source>
+        <translation>&amp;Y spiegeln</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;Z</source>
+        <translation>&amp;Z spiegeln</translation>
+    </message>
+    <message>
+        <source>Repeat every dab mirrored across the model&apos;s plane across this axis, also where that side is hidden or faces away</source>
+        <translation>Jeden Tupfer an der Ebene des Modells quer zu dieser Achse gespiegelt wiederholen, auch wo diese Seite verdeckt oder abgewandt ist</translation>
+    </message>
+    <message>
+        <source>Symmetry &amp;Off</source>
+        <translation>Symmetrie &amp;aus</translation>
+    </message>
+    <message>
+        <source>No mirrored or radial copies of the dabs</source>
+        <translation>Keine gespiegelten oder radialen Kopien der Tupfer</translation>
+    </message>
+    <message>
+        <source>Symmetry &amp;Settings…</source>
+        <translation>Symmetrie-&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>Show the Brush panel&apos;s symmetry settings: the centre and radial copies</source>
+        <translation>Die Symmetrie-Einstellungen des Pinsel-Bedienfelds zeigen: Mittelpunkt und radiale Kopien</translation>
+    </message>
+    <message>
+        <source>Symmetry: every dab repeated on the mirrored surface, also where it is hidden (radial copies in the Brush panel)</source>
+        <translation>Symmetrie: jeder Tupfer auf der gespiegelten Oberfläche wiederholt, auch wo sie verdeckt ist (radiale Kopien im Pinsel-Bedienfeld)</translation>
+    </message>
+    <message>
+        <source>%1× radial</source>
+        <translation>%1× radial</translation>
+    </message>
+    <message>
+        <source>Symmetry: off</source>
+        <translation>Symmetrie: aus</translation>
+    </message>
+    <message>
+        <source>Symmetry: %1</source>
+        <translation>Symmetrie: %1</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

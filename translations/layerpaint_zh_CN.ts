@@ -1372,6 +1372,58 @@ connectivity %3 ms, regions %4 ms
         <source>The symmetric views could not be built: this stroke paints without its copies</source>
         <translation>无法构建对称视图：此笔画将不绘制其对称副本</translation>
     </message>
+    <message>
+        <source>S&amp;ymmetry</source>
+        <translation>对称(&amp;Y)</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;X</source>
+        <translation>镜像 X(&amp;X)</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;Y</source>
+        <translation>镜像 Y(&amp;Y)</translation>
+    </message>
+    <message>
+        <source>Mirror &amp;Z</source>
+        <translation>镜像 Z(&amp;Z)</translation>
+    </message>
+    <message>
+        <source>Repeat every dab mirrored across the model&apos;s plane across this axis, also where that side is hidden or faces away</source>
+        <translation>沿模型垂直于此轴的平面镜像重复每个笔触，即使那一面被遮挡或背向相机</translation>
+    </message>
+    <message>
+        <source>Symmetry &amp;Off</source>
+        <translation>关闭对称(&amp;O)</translation>
+    </message>
+    <message>
+        <source>No mirrored or radial copies of the dabs</source>
+        <translation>笔触不做镜像或径向复制</translation>
+    </message>
+    <message>
+        <source>Symmetry &amp;Settings…</source>
+        <translation>对称设置(&amp;S)…</translation>
+    </message>
+    <message>
+        <source>Show the Brush panel&apos;s symmetry settings: the centre and radial copies</source>
+        <translation>显示画笔面板的对称设置：中心和径向副本</translation>
+    </message>
+    <message>
+        <source>Symmetry: every dab repeated on the mirrored surface, also where it is hidden (radial copies in the Brush panel)</source>
+        <translation>对称：每个笔触都在镜像表面上重复，即使该处被遮挡（径向副本在画笔面板中设置）</translation>
+    </message>
+    <message>
+        <source>%1× radial</source>
+        <translation>%1× 径向</translation>
+    </message>
+    <message>
+        <source>Symmetry: off</source>
+        <translation>对称：关</translation>
+    </message>
+    <message>
+        <source>Symmetry: %1</source>
+        <translation>对称：%1</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -11,36 +11,63 @@
 
 namespace core {
 
+std::size_t PaintTarget::Context::maxKeptViews() const {
+    // A kept view holds a projection per vertex and an entry per triangle; a small mesh keeps
+    // a view for each copy of a symmetric stroke, a huge one fewer (at least the current one).
+    constexpr std::size_t kMaxKept = 7, kBudget = std::size_t(256) << 20;
+    const std::size_t perView = mesh->vertexCount() * (sizeof(ProjectedVertex) + 4) +
+                                mesh->triangleCount() * sizeof(TriangleView);
+    return std::min(kMaxKept, kBudget / std::max<std::size_t>(perView, 1));
+}
+
 void PaintTarget::Context::updateView(const View& v) {
-    if (haveView && v.width == view.width && v.height == view.height && v.view == view.view &&
-        v.proj == view.proj)
+    ViewState& c = current;
+    if (c.shows(v))
         return;
-    haveView = true;
-    view = v;
-    if (++viewSerial == 0) {
-        std::fill(vertexView.begin(), vertexView.end(), 0u);
-        for (TriangleMark& m : marks)
-            m.view = 0;
-        viewSerial = 1;
+    // Another view: the current one is kept, and v's comes back if it was kept.
+    if (c.have) {
+        const auto kept = std::find_if(keptViews.begin(), keptViews.end(),
+                                       [&](const ViewState& k) { return k.shows(v); });
+        if (kept != keptViews.end()) {
+            std::swap(c, *kept);
+            return;
+        }
+        if (keptViews.size() < maxKeptViews())
+            keptViews.emplace_back();
+        // When all places are taken the last one is given up: views taken in turn (a stroke's
+        // copies) then keep all but one of theirs.
+        if (!keptViews.empty())
+            std::swap(c, keptViews.back());
     }
-    viewTriangleCount = 0;
-    halfWidth = 0.5f * float(v.width);
-    halfHeight = 0.5f * float(v.height);
-    rays = PixelRays::fromView(v);
-    footprintScale = std::max(glm::length(rays.directionDx), glm::length(rays.directionDy));
-    footprintOffset = std::max(glm::length(rays.originDx), glm::length(rays.originDy));
+    c.have = true;
+    c.view = v;
+    c.vertices.resize(mesh->vertexCount());
+    c.vertexView.resize(mesh->vertexCount(), 0u);
+    c.triangleView.resize(mesh->triangleCount());
+    if (++c.serial == 0) {
+        std::fill(c.vertexView.begin(), c.vertexView.end(), 0u);
+        std::fill(c.triangleView.begin(), c.triangleView.end(), TriangleView{});
+        c.serial = 1;
+    }
+    c.viewTriangleCount = 0;
+    c.halfWidth = 0.5f * float(v.width);
+    c.halfHeight = 0.5f * float(v.height);
+    c.rays = PixelRays::fromView(v);
+    c.footprintScale = std::max(glm::length(c.rays.directionDx), glm::length(c.rays.directionDy));
+    c.footprintOffset = std::max(glm::length(c.rays.originDx), glm::length(c.rays.originDy));
 }
 
 const ProjectedVertex& PaintTarget::Context::vertex(std::uint32_t v) {
-    ProjectedVertex& p = vertices[v];
-    if (vertexView[v] != viewSerial) {
-        vertexView[v] = viewSerial;
-        const glm::vec4 eye = view.view * glm::vec4(mesh->positions[v], 1.0f);
-        const glm::vec4 clip = view.proj * eye;
+    ViewState& c = current;
+    ProjectedVertex& p = c.vertices[v];
+    if (c.vertexView[v] != c.serial) {
+        c.vertexView[v] = c.serial;
+        const glm::vec4 eye = c.view.view * glm::vec4(mesh->positions[v], 1.0f);
+        const glm::vec4 clip = c.view.proj * eye;
         p.view = glm::vec3(eye);
         p.w = clip.w;
-        p.sx = (clip.x + clip.w) * halfWidth;
-        p.sy = (clip.w - clip.y) * halfHeight;
+        p.sx = (clip.x + clip.w) * c.halfWidth;
+        p.sy = (clip.w - clip.y) * c.halfHeight;
     }
     return p;
 }
@@ -66,23 +93,25 @@ bool PaintTarget::Context::setUpTriangle(std::uint32_t t, TriangleSetup& s) {
 }
 
 const ViewTriangle& PaintTarget::Context::viewTriangle(std::uint32_t t) {
-    TriangleMark& mark = marks[t];
-    if (mark.view == viewSerial)
-        return viewChunks[mark.viewIndex >> kViewChunkBits][mark.viewIndex & (kViewChunk - 1)];
-    // Past a budget (a long stroke over most of a huge mesh) start the cache again.
+    using S = ViewState;
+    S& c = current;
+    TriangleView& entry = c.triangleView[t];
+    if (entry.serial == c.serial)
+        return c.viewChunks[entry.index >> S::kViewChunkBits][entry.index & (S::kViewChunk - 1)];
+    // Past a budget (a long stroke over most of a huge mesh) start the cache again; the views
+    // kept share it.
     constexpr std::size_t kMaxViewTriangles = std::size_t(1) << 21;
-    if (viewTriangleCount >= kMaxViewTriangles) {
-        viewTriangleCount = 0;
-        for (TriangleMark& m : marks)
-            m.view = 0;
+    if (c.viewTriangleCount >= kMaxViewTriangles / (keptViews.size() + 1)) {
+        c.viewTriangleCount = 0;
+        std::fill(c.triangleView.begin(), c.triangleView.end(), TriangleView{});
     }
-    mark.view = viewSerial;
-    mark.viewIndex = std::uint32_t(viewTriangleCount);
-    if ((viewTriangleCount >> kViewChunkBits) == viewChunks.size())
-        viewChunks.push_back(std::make_unique<ViewTriangle[]>(kViewChunk));
-    ViewTriangle& v =
-        viewChunks[viewTriangleCount >> kViewChunkBits][viewTriangleCount & (kViewChunk - 1)];
-    ++viewTriangleCount;
+    entry.serial = c.serial;
+    entry.index = std::uint32_t(c.viewTriangleCount);
+    if ((c.viewTriangleCount >> S::kViewChunkBits) == c.viewChunks.size())
+        c.viewChunks.push_back(std::make_unique<ViewTriangle[]>(S::kViewChunk));
+    ViewTriangle& v = c.viewChunks[c.viewTriangleCount >> S::kViewChunkBits]
+                                  [c.viewTriangleCount & (S::kViewChunk - 1)];
+    ++c.viewTriangleCount;
     v = ViewTriangle{};
     TriangleSetup& s = v.setup;
     v.usable = setUpTriangle(t, s);
@@ -126,8 +155,8 @@ bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
     tip.setup(brush.tipImage(), brush.tipHardness(), radius, d.angle);
     dabOpacity = std::clamp(d.opacity, 0.0f, 1.0f);
     flowOpacity = std::clamp(brush.flow, 0.0f, 1.0f) * dabOpacity;
-    toleranceScale = options.relativeTolerance + options.pixelTolerance * footprintScale;
-    toleranceOffset = options.pixelTolerance * footprintOffset;
+    toleranceScale = options.relativeTolerance + options.pixelTolerance * current.footprintScale;
+    toleranceOffset = options.pixelTolerance * current.footprintOffset;
     touched.clear();
     setups.clear();
     if (!(radius > 0.0f) || !(dabOpacity > 0.0f) || !(flowOpacity > 0.0f))

@@ -90,12 +90,50 @@ struct ViewTriangle {
     bool front = false;
 };
 
-/** What the context knows of one triangle, kept together so that a dab reads one cache line. */
+/** What the context knows of one triangle in the current dab. */
 struct TriangleMark {
     std::uint32_t dab = 0;       // the last dab that looked at it
     std::uint32_t local = kNone; // in that dab: its index into setups, or kNone (rejected)
-    std::uint32_t view = 0;      // the view serial its view cache entry belongs to
-    std::uint32_t viewIndex = 0; // that entry
+};
+
+/** A triangle's entry in the view cache: valid when serial is the view's. */
+struct TriangleView {
+    std::uint32_t serial = 0;
+    std::uint32_t index = 0;
+};
+
+/**
+ * What the context keeps of one view (see Context): the projections of the vertices and the
+ * setups of the triangles dabs looked at in it. A symmetric stroke paints through a view per
+ * copy, dab after dab; the views not in use wait in Context::keptViews.
+ */
+struct ViewState {
+    bool have = false;
+    View view;
+    std::uint32_t serial = 0;
+    float halfWidth = 0.5f, halfHeight = 0.5f;
+    PixelRays rays;
+    float footprintScale = 0.0f, footprintOffset = 0.0f;
+    std::vector<ProjectedVertex> vertices;
+    std::vector<std::uint32_t> vertexView;  // per vertex: the serial it was projected for
+    std::vector<TriangleView> triangleView; // per triangle
+    // Triangles set up in this view. A dab on a dense mesh looks at tens of thousands of
+    // triangles, mostly the same as the dab before.
+    // In chunks of kViewChunk, so that growing never moves (copies) what is there.
+    static constexpr std::size_t kViewChunkBits = 12, kViewChunk = std::size_t(1) << kViewChunkBits;
+    std::vector<std::unique_ptr<ViewTriangle[]>> viewChunks;
+    std::size_t viewTriangleCount = 0;
+
+    bool shows(const View& v) const {
+        return have && v.width == view.width && v.height == view.height && v.view == view.view &&
+               v.proj == view.proj;
+    }
+    std::size_t bytes() const {
+        return vertices.capacity() * sizeof(ProjectedVertex) +
+               vertexView.capacity() * sizeof(std::uint32_t) +
+               triangleView.capacity() * sizeof(TriangleView) +
+               viewChunks.size() * kViewChunk * sizeof(ViewTriangle);
+    }
 };
 
 /** A texel a texture dab reaches (its page's texel coordinates) and the falloff weight there. */
@@ -138,21 +176,14 @@ struct PaintTarget::Context {
     std::shared_ptr<const MeshTopology> topology;
     PaintTargetOptions options;
 
-    // The view the cached projections belong to.
-    bool haveView = false;
-    View view;
-    std::uint32_t viewSerial = 0;
-    float halfWidth = 0.5f, halfHeight = 0.5f;
-    PixelRays rays;
-    float footprintScale = 0.0f, footprintOffset = 0.0f;
-    std::vector<ProjectedVertex> vertices;
-    std::vector<std::uint32_t> vertexView;
-    // Triangles set up in this view (see TriangleMark). A dab on a dense mesh looks at tens of
-    // thousands of triangles, mostly the same as the dab before.
-    // In chunks of kViewChunk, so that growing never moves (copies) what is there.
-    static constexpr std::size_t kViewChunkBits = 12, kViewChunk = std::size_t(1) << kViewChunkBits;
-    std::vector<std::unique_ptr<ViewTriangle[]>> viewChunks;
-    std::size_t viewTriangleCount = 0;
+    // The view the cached projections belong to, and up to maxKeptViews() others.
+    ViewState current;
+    std::vector<ViewState> keptViews;
+    // Names for the current view's parts, as the dab code reads them.
+    std::vector<ProjectedVertex>& vertices = current.vertices;
+    const PixelRays& rays = current.rays;
+    /** How many views besides the current one are kept (a memory budget). */
+    std::size_t maxKeptViews() const;
 
     // The dab being painted.
     std::uint32_t dab = 0;

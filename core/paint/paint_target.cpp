@@ -22,8 +22,6 @@ PaintTarget::PaintTarget(std::shared_ptr<const Mesh> mesh,
     c.mesh = std::move(mesh);
     c.topology = std::move(topology);
     c.options = options;
-    c.vertices.resize(c.mesh->vertexCount());
-    c.vertexView.assign(c.mesh->vertexCount(), 0u);
     c.marks.resize(c.mesh->triangleCount());
     m_drawMaterials = c.mesh->materials;
     for (Material& m : m_drawMaterials)
@@ -49,10 +47,10 @@ Status PaintTarget::checkMesh(const std::shared_ptr<const Mesh>& mesh,
 
 std::size_t PaintTarget::contextBytes() const {
     const Context& c = *m_context;
-    return c.vertices.capacity() * sizeof(ProjectedVertex) +
-           c.vertexView.capacity() * sizeof(std::uint32_t) +
-           c.marks.capacity() * sizeof(TriangleMark) +
-           c.viewChunks.size() * Context::kViewChunk * sizeof(ViewTriangle) +
+    std::size_t views = c.current.bytes();
+    for (const ViewState& kept : c.keptViews)
+        views += kept.bytes();
+    return views + c.marks.capacity() * sizeof(TriangleMark) +
            (c.window.capacity() + c.windowSums.capacity()) * sizeof(std::uint32_t) +
            c.triangleCover.capacity() * sizeof(float) +
            c.coveredTriangles.capacity() * sizeof(std::uint32_t) +

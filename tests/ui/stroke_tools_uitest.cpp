@@ -10,10 +10,13 @@
 #include <QCheckBox>
 #include <QDir>
 #include <QGroupBox>
+#include <QMenu>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTest>
+#include <QTimer>
+#include <QToolButton>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -219,6 +222,57 @@ TEST_F(StrokeToolsTest, ShiftClickDrawsALineOnFromTheLastStroke) {
     QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
     QApplication::processEvents();
     EXPECT_LT(differingFraction(stroke, grab()), 0.001) << "undo takes the line only";
+}
+
+TEST_F(StrokeToolsTest, TheBrushBarsSymmetryButtonSetsTheMirrorsWithoutThePanel) {
+    auto* button = m_window->findChild<QToolButton*>(QStringLiteral("symmetryButton"));
+    ASSERT_NE(button, nullptr);
+    ASSERT_TRUE(button->isVisible()) << "on the brush bar of the default layout";
+    EXPECT_FALSE(document().brush().symmetry.active());
+    auto* mirrorX = m_window->findChild<QCheckBox*>(QStringLiteral("brushPanelSymmetryMirrorX"));
+    ASSERT_NE(mirrorX, nullptr);
+    EXPECT_FALSE(mirrorX->isChecked());
+
+    // A click opens the menu; a click on Mirror X in it turns the mirror on.
+    bool clicked = false;
+    QTimer::singleShot(300, [&] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (menu == nullptr)
+            return;
+        auto* action = menu->findChild<QAction*>(QStringLiteral("actionMirrorX"));
+        if (action == nullptr) {
+            menu->close();
+            return;
+        }
+        QTest::mouseClick(menu, Qt::LeftButton, {}, menu->actionGeometry(action).center());
+        clicked = true;
+    });
+    QTest::mouseClick(button, Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(clicked, 5000);
+    QApplication::processEvents();
+    EXPECT_TRUE(document().brush().symmetry.mirrorX);
+    EXPECT_FALSE(document().brush().symmetry.mirrorY);
+    EXPECT_TRUE(mirrorX->isChecked()) << "the Brush panel follows";
+    EXPECT_TRUE(button->text().contains(QLatin1Char('X'))) << button->text().toStdString();
+    EXPECT_EQ(QSettings().value(QStringLiteral("brush/symmetry/mirror")).toString(),
+              QStringLiteral("x"))
+        << "remembered for the next session";
+
+    // The panel's radial copies show on the button; Paint ▸ Symmetry ▸ Symmetry Off ends both.
+    auto* radial = m_window->findChild<QSpinBox*>(QStringLiteral("brushPanelSymmetryRadial"));
+    ASSERT_NE(radial, nullptr);
+    radial->setValue(3);
+    EXPECT_EQ(document().brush().symmetry.radial, 3);
+    EXPECT_TRUE(button->text().contains(QLatin1Char('3'))) << button->text().toStdString();
+    auto* off = m_window->findChild<QAction*>(QStringLiteral("actionSymmetryOff"));
+    ASSERT_NE(off, nullptr);
+    off->trigger();
+    EXPECT_FALSE(document().brush().symmetry.active());
+    EXPECT_FALSE(mirrorX->isChecked());
+    EXPECT_EQ(radial->value(), 1);
+    auto* menuMirrorX = m_window->findChild<QAction*>(QStringLiteral("actionMirrorX"));
+    ASSERT_NE(menuMirrorX, nullptr);
+    EXPECT_FALSE(menuMirrorX->isChecked());
 }
 
 TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {

@@ -60,6 +60,7 @@ public:
     void setMaterialChannels(bool available, const QString& why = {});
     /** The tip settings (the brush's tip, its angle and jitter). */
     BrushTipBox* tipBox() const { return m_tipBox; }
+    SymmetryBox* symmetryBox() const { return m_symmetry; }
 
 signals:
     void brushChanged(const core::Brush& brush);

@@ -83,6 +83,10 @@ void SymmetryBox::readInto(core::Brush& brush) const {
                                              : core::BrushSymmetry::Center::BoundingBox;
     s.radial = m_radial->value();
     s.axis = m_axis->currentIndex();
+    remember(s);
+}
+
+void SymmetryBox::remember(const core::BrushSymmetry& s) {
     QSettings settings;
     settings.setValue(kKey + QStringLiteral("mirror"),
                       QString::fromStdString(core::symmetryMirrorName(s)));

@@ -27,6 +27,8 @@ public:
     void readInto(core::Brush& brush) const;
     /** Sets brush.symmetry to what the settings remember (off when nothing is). */
     static void restore(core::Brush& brush);
+    /** Remembers symmetry in the settings, for restore() in the next session. */
+    static void remember(const core::BrushSymmetry& symmetry);
 
 signals:
     void changed();

@@ -30,6 +30,7 @@ class QLabel;
 class QMenu;
 class QProgressDialog;
 class QToolBar;
+class QToolButton;
 class QUndoStack;
 
 namespace ui {
@@ -227,6 +228,10 @@ private:
     void paintLine(QPointF pixel, qreal pressure, bool eraser);
     /** Paint ▸ Stroke Stabilizer: the brush's stabilizer on or off. */
     QAction* createStabilizerAction();
+    /** Paint ▸ Symmetry, and the same menu on the brush bar's Symmetry button. */
+    QMenu* createSymmetryMenu();
+    /** Shows brush's symmetry in the Symmetry menu and on its button. */
+    void showSymmetry(const core::BrushSymmetry& symmetry);
     /** The Fill tool: one flood fill at pixel with the Fill panel's options, one undo step. */
     void fillAt(QPointF pixel);
     /** The eyedropper: the brush takes the surface colour under pixel. */
@@ -327,6 +332,8 @@ private:
     QCheckBox* m_layerAwareCheck = nullptr;
     QAction* m_swapColorsAction = nullptr;
     QAction* m_stabilizerAction = nullptr;
+    std::array<QAction*, 3> m_mirrorActions{}; // Paint ▸ Symmetry ▸ Mirror X, Y, Z
+    QToolButton* m_symmetryButton = nullptr;
     QAction* m_preferencesAction = nullptr;
     QList<QAction*> m_brushStepActions; // [ ] Shift+[ Shift+]
     QAction* m_brushMapsAction = nullptr;

@@ -412,6 +412,7 @@ void MainWindow::createMenus() {
     paintMenu->addActions(m_brushStepActions);
     paintMenu->addAction(m_swapColorsAction);
     paintMenu->addAction(createStabilizerAction());
+    paintMenu->addMenu(createSymmetryMenu());
 
     QMenu* paintLayersMenu = menuBar()->addMenu(tr("Paint &Layers"));
     paintLayersMenu->setObjectName(QStringLiteral("paintLayersMenu"));

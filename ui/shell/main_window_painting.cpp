@@ -5,11 +5,16 @@
 #include "ui/shell/main_window.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLocale>
+#include <QMenu>
+#include <QScrollArea>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QStatusBar>
+#include <QToolButton>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +27,7 @@
 #include "ui/panels/fill_panel.h"
 #include "ui/panels/paint_layers_panel.h"
 #include "ui/panels/segmentation_controls.h"
+#include "ui/panels/symmetry_box.h"
 #include "ui/shell/elided_label.h"
 #include "ui/shell/project_controller.h"
 #include "ui/tools/region_tools.h"
@@ -216,6 +222,82 @@ QAction* MainWindow::createStabilizerAction() {
         setBrush(brush);
     });
     return m_stabilizerAction;
+}
+
+QMenu* MainWindow::createSymmetryMenu() {
+    auto* menu = new QMenu(tr("S&ymmetry"), this);
+    menu->setObjectName(QStringLiteral("symmetryMenu"));
+    const QString texts[3] = {tr("Mirror &X"), tr("Mirror &Y"), tr("Mirror &Z")};
+    for (int i = 0; i < 3; ++i) {
+        QAction* action = menu->addAction(texts[i]);
+        action->setObjectName(QStringLiteral("actionMirror") + QChar('X' + i));
+        action->setCheckable(true);
+        action->setStatusTip(tr("Repeat every dab mirrored across the model's plane across this "
+                                "axis, also where that side is hidden or faces away"));
+        connect(action, &QAction::toggled, this, [this, i](bool on) {
+            core::Brush brush = m_document->brush();
+            bool* mirrors[3] = {&brush.symmetry.mirrorX, &brush.symmetry.mirrorY,
+                                &brush.symmetry.mirrorZ};
+            if (*mirrors[i] == on)
+                return;
+            *mirrors[i] = on;
+            SymmetryBox::remember(brush.symmetry);
+            setBrush(brush);
+        });
+        m_mirrorActions[std::size_t(i)] = action;
+    }
+    menu->addSeparator();
+    QAction* off = menu->addAction(tr("Symmetry &Off"));
+    off->setObjectName(QStringLiteral("actionSymmetryOff"));
+    off->setStatusTip(tr("No mirrored or radial copies of the dabs"));
+    connect(off, &QAction::triggered, this, [this] {
+        core::Brush brush = m_document->brush();
+        brush.symmetry.mirrorX = brush.symmetry.mirrorY = brush.symmetry.mirrorZ = false;
+        brush.symmetry.radial = 1;
+        SymmetryBox::remember(brush.symmetry);
+        setBrush(brush);
+    });
+    QAction* settings = menu->addAction(tr("Symmetry &Settings…"));
+    settings->setObjectName(QStringLiteral("actionSymmetrySettings"));
+    settings->setStatusTip(tr("Show the Brush panel's symmetry settings: the centre and radial "
+                              "copies"));
+    connect(settings, &QAction::triggered, this, [this] {
+        m_brushDock->show();
+        m_brushDock->raise();
+        if (auto* scroll = qobject_cast<QScrollArea*>(m_brushDock->widget()))
+            scroll->ensureWidgetVisible(m_brushPanel->symmetryBox());
+    });
+
+    // The same menu on the brush bar: symmetry without scrolling the Brush panel.
+    m_symmetryButton = new QToolButton(this);
+    m_symmetryButton->setObjectName(QStringLiteral("symmetryButton"));
+    m_symmetryButton->setMenu(menu);
+    m_symmetryButton->setPopupMode(QToolButton::InstantPopup);
+    m_symmetryButton->setFocusPolicy(Qt::NoFocus); // keys stay with the view and shortcuts
+    m_symmetryButton->setToolTip(tr("Symmetry: every dab repeated on the mirrored surface, "
+                                    "also where it is hidden (radial copies in the Brush panel)"));
+    m_brushBar->addSeparator();
+    m_brushBar->addWidget(m_symmetryButton);
+    showSymmetry(m_document->brush().symmetry);
+    return menu;
+}
+
+void MainWindow::showSymmetry(const core::BrushSymmetry& symmetry) {
+    const bool mirrors[3] = {symmetry.mirrorX, symmetry.mirrorY, symmetry.mirrorZ};
+    QStringList on;
+    for (int i = 0; i < 3; ++i) {
+        if (QAction* action = m_mirrorActions[std::size_t(i)]) {
+            const QSignalBlocker quiet(action);
+            action->setChecked(mirrors[i]);
+        }
+        if (mirrors[i])
+            on << QString(QChar('X' + i));
+    }
+    if (symmetry.radial > 1)
+        on << tr("%1× radial").arg(symmetry.radial);
+    if (m_symmetryButton)
+        m_symmetryButton->setText(on.isEmpty() ? tr("Symmetry: off")
+                                               : tr("Symmetry: %1").arg(on.join(QLatin1Char(' '))));
 }
 
 void MainWindow::fillAt(QPointF pixel) {
@@ -423,6 +505,7 @@ void MainWindow::setBrush(const core::Brush& brush) {
     m_brushPanel->setBrush(brush);
     if (m_stabilizerAction)
         m_stabilizerAction->setChecked(brush.stabilizer);
+    showSymmetry(brush.symmetry);
     const QColor color = BrushToolBar::toQColor(brush.color);
     if (color != m_colorPanel->foreground())
         m_colorPanel->setForeground(color);
