@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Charts for the automatic UV layout: grown over the welded surface by normal deviation, never
-// across sharp or non-manifold edges, and kept discs while they grow.
+// Charts for the automatic UV layout: grown over the welded surface by normal deviation, across
+// shared edges and contacts (T-junctions) but never across sharp or non-manifold edges, and kept
+// discs while they grow.
 #include <algorithm>
 #include <cmath>
 #include <queue>
@@ -38,10 +39,12 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
     std::vector<std::vector<std::uint32_t>> charts;
     std::priority_queue<Candidate, std::vector<Candidate>, std::greater<>> heap;
 
+    const auto smooth = [&](std::uint32_t t, std::uint32_t u) {
+        return !surface.degenerate(u) && glm::dot(surface.normal[t], surface.normal[u]) >= cosSharp;
+    };
     const auto joinsSmoothly = [&](std::uint32_t t, int edge) {
         const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(edge)];
-        return u != kNone && !surface.degenerate(u) &&
-               glm::dot(surface.normal[t], surface.normal[u]) >= cosSharp;
+        return u != kNone && smooth(t, u);
     };
 
     for (std::uint32_t seed = 0; seed < n; ++seed) {
@@ -63,12 +66,19 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
         glm::dvec3 normalSum = surface.normal[seed] * surface.area[seed];
         const auto pushNeighbours = [&](std::uint32_t t) {
             const glm::dvec3 mean = glm::normalize(normalSum);
-            for (int e = 0; e < 3; ++e) {
-                if (!joinsSmoothly(t, e))
-                    continue;
-                const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)];
+            const auto push = [&](std::uint32_t u) {
                 if (chartOf[u] == kNone)
                     heap.push({1.0 - glm::dot(surface.normal[u], mean), u});
+            };
+            for (int e = 0; e < 3; ++e) {
+                if (joinsSmoothly(t, e))
+                    push(topo.edgeNeighbors[t][std::size_t(e)]);
+                // Across contacts (T-junctions) as across shared edges.
+                const std::uint32_t side = 3 * t + std::uint32_t(e);
+                for (std::uint32_t k = surface.contactBegin[side];
+                     k < surface.contactBegin[side + 1]; ++k)
+                    if (smooth(t, surface.contacts[k] / 3))
+                        push(surface.contacts[k] / 3);
             }
         };
         pushNeighbours(seed);
@@ -91,8 +101,21 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
                 }
             }
             if (shared == 1) {
-                const std::uint32_t opposite = topo.corners[t][std::size_t((sharedEdge + 2) % 3)];
-                if (vertexStamp[opposite] == chart + 1)
+                const int corner = (sharedEdge + 2) % 3;
+                const std::uint32_t opposite = topo.corners[t][std::size_t(corner)];
+                // Unless a side through that vertex lies along the chart (a contact): then the
+                // triangle fills the corner between the two.
+                const auto alongChart = [&](int e) {
+                    const std::uint32_t side = 3 * t + std::uint32_t(e);
+                    for (std::uint32_t k = surface.contactBegin[side];
+                         k < surface.contactBegin[side + 1]; ++k)
+                        if (chartOf[surface.contacts[k] / 3] == chart &&
+                            smooth(t, surface.contacts[k] / 3))
+                            return true;
+                    return false;
+                };
+                if (vertexStamp[opposite] == chart + 1 && !alongChart(corner) &&
+                    !alongChart((corner + 2) % 3))
                     continue;
             }
             add(t);
@@ -113,12 +136,24 @@ std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
         const auto it = std::lower_bound(triangles.begin(), triangles.end(), t);
         return it != triangles.end() && *it == t ? std::uint32_t(it - triangles.begin()) : kNone;
     };
-    std::vector<std::array<std::uint32_t, 3>> adjacent(m);
-    for (std::size_t i = 0; i < m; ++i)
+    // Neighbours across edges and contacts, in one list per triangle.
+    std::vector<std::uint32_t> adjacentBegin(m + 1, 0u), adjacent;
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t t = triangles[i];
+        const auto add = [&](std::uint32_t u) {
+            if (const std::uint32_t j = localIndex(u); j != kNone)
+                adjacent.push_back(j);
+        };
         for (int e = 0; e < 3; ++e) {
-            const std::uint32_t u = topo.edgeNeighbors[triangles[i]][std::size_t(e)];
-            adjacent[i][std::size_t(e)] = u == kNone ? kNone : localIndex(u);
+            if (const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)]; u != kNone)
+                add(u);
+            const std::uint32_t side = 3 * t + std::uint32_t(e);
+            for (std::uint32_t k = surface.contactBegin[side]; k < surface.contactBegin[side + 1];
+                 ++k)
+                add(surface.contacts[k] / 3);
         }
+        adjacentBegin[i + 1] = std::uint32_t(adjacent.size());
+    }
     std::vector<std::uint32_t> label(m, kNone);
     std::vector<std::uint32_t> queue;
     queue.reserve(m);
@@ -136,8 +171,8 @@ std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
         }
         for (std::size_t head = 0; head < queue.size(); ++head) {
             const std::uint32_t i = queue[head];
-            for (std::uint32_t j : adjacent[i])
-                if (j != kNone && label[j] == kNone) {
+            for (std::uint32_t x = adjacentBegin[i]; x < adjacentBegin[i + 1]; ++x)
+                if (const std::uint32_t j = adjacent[x]; label[j] == kNone) {
                     label[j] = label[i];
                     queue.push_back(j);
                 }
@@ -149,7 +184,7 @@ std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
     sweep({a, b});
     std::array<std::vector<std::uint32_t>, 2> parts;
     for (std::size_t i = 0; i < m; ++i) {
-        // Triangles the sweep did not reach (not edge-connected) go with the first part's seed
+        // Triangles the sweep did not reach (not connected) go with the first part's seed
         // only if they touch it; otherwise they are a part of their own in a later split.
         const std::uint32_t l = label[i] == kNone ? 1u : label[i];
         parts[l].push_back(triangles[i]);

@@ -98,8 +98,58 @@ glm::dvec3 perpendicular(const glm::dvec3& n) {
     return glm::normalize(glm::cross(n, a));
 }
 
-/** Least-squares conformal map with vertices pinA and pinB held at their given uv. */
-bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::uint32_t pinB) {
+/** A local vertex of a chart that lies on the side from local vertex a to b, at s of its length. */
+struct OnSide {
+    std::uint32_t vertex, a, b;
+    double s;
+    auto operator<=>(const OnSide&) const = default;
+};
+
+/**
+ * The chart's T-junctions: corners of its triangles lying inside a side of another of its
+ * triangles that they touch along a contact. localOf maps welded vertices to local ones.
+ */
+template <typename LocalOf>
+std::vector<OnSide> tJunctions(const Surface& surface, const Chart& chart, LocalOf localOf) {
+    std::vector<OnSide> found;
+    for (std::uint32_t t : chart.triangles)
+        for (std::uint32_t e = 0; e < 3; ++e) {
+            const std::uint32_t side = 3 * t + e;
+            const std::uint32_t a = surface.cornerOfSide(side, 0),
+                                b = surface.cornerOfSide(side, 1);
+            const glm::dvec3 p = surface.position[a], d = surface.position[b] - p;
+            const double lengthSquared = glm::dot(d, d);
+            for (std::uint32_t k = surface.contactBegin[side]; k < surface.contactBegin[side + 1];
+                 ++k) {
+                const std::uint32_t other = surface.contacts[k];
+                if (!std::binary_search(chart.triangles.begin(), chart.triangles.end(), other / 3))
+                    continue;
+                for (int end = 0; end < 2; ++end) {
+                    const std::uint32_t v = surface.cornerOfSide(other, end);
+                    const double s = glm::dot(surface.position[v] - p, d) / lengthSquared;
+                    if (v != a && v != b && s > 1e-9 && s < 1.0 - 1e-9)
+                        found.push_back({localOf(v), localOf(a), localOf(b), s});
+                }
+            }
+        }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+}
+
+/** Puts each T-junction's vertex onto its side in uv, so the chart has no gap there. */
+void closeTJunctions(Chart& chart, const std::vector<OnSide>& junctions) {
+    for (int pass = 0; pass < 2; ++pass) // a second pass for sides whose ends moved
+        for (const OnSide& j : junctions)
+            chart.uv[j.vertex] = chart.uv[j.a] + (chart.uv[j.b] - chart.uv[j.a]) * j.s;
+}
+
+/**
+ * Least-squares conformal map with vertices pinA and pinB held at their given uv; each
+ * T-junction's vertex is held near its place on its side by a heavily weighted row.
+ */
+bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::uint32_t pinB,
+               const std::vector<OnSide>& junctions) {
     const std::size_t n = chart.vertices.size();
     std::vector<int> freeIndex(n, -1);
     int freeCount = 0;
@@ -109,7 +159,8 @@ bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::ui
     using Triplet = Eigen::Triplet<double>;
     std::vector<Triplet> triplets;
     triplets.reserve(chart.triangles.size() * 12);
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(2 * chart.triangles.size()));
+    Eigen::VectorXd rhs =
+        Eigen::VectorXd::Zero(Eigen::Index(2 * (chart.triangles.size() + junctions.size())));
     int row = 0;
     for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
         const std::uint32_t t = chart.triangles[k];
@@ -150,6 +201,24 @@ bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::ui
         }
         row += 2;
     }
+    // vertex − (1 − s) a − s b = 0, in u and in v; the conformal rows are lengths of about the
+    // same size, so the weight makes a gap cost far more than a little angle distortion.
+    constexpr double kJunctionWeight = 32.0;
+    for (const OnSide& j : junctions) {
+        const std::pair<std::uint32_t, double> terms[3] = {{j.vertex, kJunctionWeight},
+                                                           {j.a, -kJunctionWeight * (1.0 - j.s)},
+                                                           {j.b, -kJunctionWeight * j.s}};
+        for (const auto& [v, w] : terms) {
+            if (freeIndex[v] >= 0) {
+                triplets.emplace_back(row, 2 * freeIndex[v], w);
+                triplets.emplace_back(row + 1, 2 * freeIndex[v] + 1, w);
+            } else {
+                rhs[row] -= w * chart.uv[v].x;
+                rhs[row + 1] -= w * chart.uv[v].y;
+            }
+        }
+        row += 2;
+    }
     if (freeCount == 0)
         return true;
     Eigen::SparseMatrix<double> a(row, 2 * freeCount);
@@ -171,38 +240,93 @@ bool solveLscm(const Surface& surface, Chart& chart, std::uint32_t pinA, std::ui
     return true;
 }
 
+/** The area of triangle a's part inside triangle b (both counter-clockwise). */
+double sharedArea(const std::array<glm::dvec2, 3>& a, const std::array<glm::dvec2, 3>& b) {
+    // Sutherland–Hodgman: a clipped by each of b's sides in turn.
+    std::array<glm::dvec2, 9> poly{}, next{};
+    int count = 3;
+    std::copy(a.begin(), a.end(), poly.begin());
+    for (int e = 0; e < 3 && count > 0; ++e) {
+        const glm::dvec2 p = b[std::size_t(e)], q = b[std::size_t((e + 1) % 3)];
+        const auto inside = [&](const glm::dvec2& x) {
+            return (q.x - p.x) * (x.y - p.y) - (q.y - p.y) * (x.x - p.x);
+        };
+        int out = 0;
+        for (int i = 0; i < count; ++i) {
+            const glm::dvec2 u = poly[std::size_t(i)], v = poly[std::size_t((i + 1) % count)];
+            const double du = inside(u), dv = inside(v);
+            if (du >= 0.0)
+                next[std::size_t(out++)] = u;
+            if ((du >= 0.0) != (dv >= 0.0) && out < 9)
+                next[std::size_t(out++)] = u + (v - u) * (du / (du - dv));
+        }
+        count = std::min(out, 9);
+        poly = next;
+    }
+    double area = 0.0;
+    for (int i = 0; i < count; ++i) {
+        const glm::dvec2 u = poly[std::size_t(i)], v = poly[std::size_t((i + 1) % count)];
+        area += u.x * v.y - u.y * v.x;
+    }
+    return 0.5 * area;
+}
+
 /**
- * True when two triangles of the chart cover one cell of a grid over its UV box with cells half
- * a texel wide at the given density (texels per model unit).
+ * True when two triangles of the chart overlap in uv by more than rounding: however thin the
+ * overlap, some density could put a texel centre in it. Candidates are the pairs whose boxes
+ * share a cell of a grid about twice as fine as the triangles.
  */
-bool overlapsItself(const Chart& chart, double density) {
+bool overlapsItself(const Chart& chart) {
+    const std::size_t n = chart.local.size();
     glm::dvec2 lo(1e300), hi(-1e300);
     for (const glm::dvec2& p : chart.uv) {
         lo = glm::min(lo, p);
         hi = glm::max(hi, p);
     }
     const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
-    if (!(extent > 0.0))
+    if (!(extent > 0.0) || n < 2)
         return false;
-    const int cells = int(std::clamp(std::ceil(2.0 * extent * density), 16.0, 4096.0));
-    std::vector<std::uint8_t> count(std::size_t(cells) * std::size_t(cells), 0u);
-    bool overlap = false;
-    for (std::size_t k = 0; k < chart.local.size() && !overlap; ++k) {
-        glm::vec2 uv[3];
+    std::vector<std::array<glm::dvec2, 3>> tri(n);
+    double total = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
         for (int c = 0; c < 3; ++c)
-            uv[c] = glm::vec2((chart.uv[chart.local[k][std::size_t(c)]] - lo) / extent);
-        uv::UvTriangle r;
-        if (!uv::setUpUv(uv, cells, cells, r))
-            continue;
-        uv::scanUv(r, std::max(r.minX, 0), std::min(r.maxX, cells - 1), std::max(r.minY, 0),
-                   std::min(r.maxY, cells - 1), [&](int x, int y, auto, auto, auto) {
-                       std::uint8_t& cell =
-                           count[std::size_t(y) * std::size_t(cells) + std::size_t(x)];
-                       if (++cell > 1)
-                           overlap = true;
-                   });
+            tri[k][std::size_t(c)] = chart.uv[chart.local[k][std::size_t(c)]];
+        total += std::max(signedArea(tri[k][0], tri[k][1], tri[k][2]), 0.0);
     }
-    return overlap;
+    const double cell = std::max(std::sqrt(total / double(n)), extent / 1024.0);
+    const int cells = int(std::ceil(extent / cell)) + 1;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> entries; // (cell, triangle)
+    for (std::uint32_t k = 0; k < n; ++k) {
+        const glm::dvec2 a = glm::min(tri[k][0], glm::min(tri[k][1], tri[k][2])) - lo;
+        const glm::dvec2 b = glm::max(tri[k][0], glm::max(tri[k][1], tri[k][2])) - lo;
+        const int x0 = std::clamp(int(a.x / cell), 0, cells - 1);
+        const int x1 = std::clamp(int(b.x / cell), 0, cells - 1);
+        const int y0 = std::clamp(int(a.y / cell), 0, cells - 1);
+        const int y1 = std::clamp(int(b.y / cell), 0, cells - 1);
+        for (int y = y0; y <= y1; ++y)
+            for (int x = x0; x <= x1; ++x)
+                entries.emplace_back(std::uint32_t(y * cells + x), k);
+    }
+    std::sort(entries.begin(), entries.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::size_t begin = 0; begin < entries.size();) {
+        std::size_t end = begin + 1;
+        while (end < entries.size() && entries[end].first == entries[begin].first)
+            ++end;
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t j = i + 1; j < end; ++j)
+                pairs.emplace_back(entries[i].second, entries[j].second);
+        begin = end;
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [i, j] : pairs) {
+        const double smaller = std::min(signedArea(tri[i][0], tri[i][1], tri[i][2]),
+                                        signedArea(tri[j][0], tri[j][1], tri[j][2]));
+        if (sharedArea(tri[i], tri[j]) > 1e-9 * smaller + 1e-18 * extent * extent)
+            return true;
+    }
+    return false;
 }
 
 } // namespace
@@ -247,6 +371,7 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         const glm::dvec3 d = surface.position[chart.vertices[i]] - origin;
         chart.uv[i] = {glm::dot(d, axisU), glm::dot(d, axisV)};
     }
+    const std::vector<OnSide> junctions = tJunctions(surface, chart, localOf);
     bool planar = true;
     for (std::uint32_t t : chart.triangles)
         if (!surface.degenerate(t) && glm::dot(surface.normal[t], mean) < 1.0 - 1e-9)
@@ -268,10 +393,11 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
         if (lowest[axis] != highest[axis]) {
             const std::vector<glm::dvec2> projected = chart.uv;
-            if (!solveLscm(surface, chart, lowest[axis], highest[axis]))
+            if (!solveLscm(surface, chart, lowest[axis], highest[axis], junctions))
                 chart.uv = projected;
         }
     }
+    closeTJunctions(chart, junctions);
 
     double uvArea = 0.0;
     for (const auto& c : chart.local)
@@ -309,7 +435,7 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         return FlattenOutcome::Stretched;
     // Turned first, so the overlap test sees the chart as it will be packed.
     const double box = alignToSmallestBox(chart.uv);
-    if (chart.triangles.size() > 1 && overlapsItself(chart, density))
+    if (chart.triangles.size() > 1 && overlapsItself(chart))
         return FlattenOutcome::Overlapping;
     // A chart filling little of its smallest box (an L, a C, a zig-zag strip) leaves room that
     // others rarely fill: split it where it is large enough for the room to matter.

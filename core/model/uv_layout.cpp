@@ -42,6 +42,9 @@ std::string checkOptions(const UvLayoutOptions& o) {
     return {};
 }
 
+/** Sides this close to one line (relative to the model's size) touch: the welding's distance. */
+constexpr double kContactTolerance = 1e-5;
+
 uvl::Surface makeSurface(const Mesh& mesh, const MeshTopology& topo, unsigned threads) {
     uvl::Surface s;
     s.topology = &topo;
@@ -73,6 +76,7 @@ uvl::Surface makeSurface(const Mesh& mesh, const MeshTopology& topo, unsigned th
     for (std::size_t t = 0; t < n; ++t)
         if (s.degenerate(std::uint32_t(t)))
             s.normal[t] = glm::dvec3(0.0);
+    uvl::findContacts(s, kContactTolerance * side);
     return s;
 }
 

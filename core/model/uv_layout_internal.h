@@ -30,15 +30,36 @@ struct Surface {
     double degenerateArea = 0.0;
 
     bool degenerate(std::uint32_t t) const { return !(area[t] > degenerateArea); }
+
+    /**
+     * Contacts: open sides (no single neighbour across them) lying along open sides of other
+     * triangles over some length, the two triangles on either side of the line: a T-junction
+     * where one face's corner sits on another's side, or two triangles that continue each other
+     * across an edge of more than two triangles (a fin standing on a plate).
+     * The contacts of side 3 t + e (corners e and e + 1 of triangle t) are the sides
+     * contacts[contactBegin[3 t + e] .. contactBegin[3 t + e + 1]), each as 3 u + f.
+     */
+    std::vector<std::uint32_t> contactBegin;
+    std::vector<std::uint32_t> contacts;
+
+    std::uint32_t cornerOfSide(std::uint32_t side, int k) const {
+        return topology->corners[side / 3][(side % 3 + std::uint32_t(k)) % 3];
+    }
 };
+
+/**
+ * Finds the surface's contacts (see Surface::contacts): sides within tolerance (model units) of
+ * one line, overlapping by more than it. Needs position, normal and area.
+ */
+void findContacts(Surface& surface, double tolerance);
 
 /** Charts as lists of triangles (ascending), grown from seeds in triangle order. */
 std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
                                                    const UvLayoutOptions& options);
 
 /**
- * Splits a chart of at least two triangles into two edge-connected parts grown at once from two
- * far-apart triangles (ascending lists).
+ * Splits a chart of at least two triangles into two parts (connected across edges and contacts)
+ * grown at once from two far-apart triangles (ascending lists).
  */
 std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
                                                      const std::vector<std::uint32_t>& triangles);

@@ -4,10 +4,8 @@
 // free place of a page (first fit, row by row) in the quarter turn that keeps its top lowest, so
 // small charts fill the gaps and holes that big ones leave.
 #include <algorithm>
-#include <bit>
 #include <climits>
 #include <cmath>
-#include <cstdlib>
 #include <numeric>
 #include <string>
 
@@ -199,7 +197,6 @@ public:
             for (int x = 0; x < size; ++x)
                 m_run[index(x, y)] = std::int16_t(size - x);
         m_widest.assign(std::size_t(size), size);
-        m_searchFrom.assign(kBuckets * kBuckets, 0);
         m_dirty.assign(std::size_t(size), 0u);
     }
 
@@ -210,9 +207,8 @@ public:
             ++m_open;
         // Tall charts try every step-th row, then slide down from where they fit: far fewer
         // tests, and at most a step higher than the lowest place.
-        const bool noskip = std::getenv("UVNOSKIP") != nullptr;
-        const int step = noskip ? 1 : std::max(1, s.height / 16);
-        const int from = noskip ? m_open : std::max(m_open, m_searchFrom[bucketPair(s)]);
+        const int step = std::max(1, s.height / 16);
+        const int from = std::max(m_open, searchFrom(s));
         for (int y = from; y + s.height <= m_size && y + s.height < topLimit; y += step) {
             bool rowsFit = true;
             for (int j = 0; j < s.height && rowsFit; ++j)
@@ -265,23 +261,17 @@ public:
             }
             m_dirty[std::size_t(y)] = 1;
         }
-        std::fill(m_searchFrom.begin(), m_searchFrom.end(), 0);
+        m_placed.clear();
         m_open = 0;
     }
 
     void place(const Shape& s, int x, int y) {
-        // Charts come largest first and many are alike: one at least as large both ways (by
-        // powers of two) starts its search a little below where this one went, not at the
-        // first row again. Keyed by one side only, a small chart placed low sent every wider
-        // one below it, past the gaps it could have filled.
-        const int side = smallSide(s);
-        const int from = std::max(0, y - side);
-        const int small = bucket(side), large = bucket(std::max(s.width, s.height));
-        for (int i = small; i < kBuckets; ++i)
-            for (int j = std::max(i, large); j < kBuckets; ++j) {
-                int& f = m_searchFrom[std::size_t(i * kBuckets + j)];
-                f = std::max(f, from);
-            }
+        // Charts come largest first and many are alike: one at least as large both ways as
+        // this one (its sides, whichever way turned) starts its search a little above where
+        // this one went, not at the first row again. (By powers of two instead of the sides
+        // themselves, a chart sent larger ones of its size class below gaps they fitted.)
+        remember({std::min(s.width, s.height), std::max(s.width, s.height),
+                  std::max(0, y - std::min({s.width, s.height, m_size}))});
         for (int j = 0; j < s.height; ++j) {
             std::int16_t* row = &m_run[index(0, y + j)];
             for (int k = s.rowBegin[std::size_t(j)]; k < s.rowBegin[std::size_t(j) + 1]; ++k) {
@@ -307,16 +297,31 @@ public:
     }
 
 private:
-    int smallSide(const Shape& s) const { return std::min({s.width, s.height, m_size}); }
-    /** Sizes by powers of two: a chart in a higher bucket on both sides is larger both ways. */
-    static int bucket(int side) {
-        return std::min(kBuckets - 1, int(std::bit_width(unsigned(side))));
+    /** A placed chart's sides (shorter, longer) and where a chart no smaller both ways starts. */
+    struct Placed {
+        int shorter, longer, from;
+        bool covers(const Placed& o) const { // o's searches start no lower than this gives
+            return shorter <= o.shorter && longer <= o.longer && from >= o.from;
+        }
+    };
+
+    int searchFrom(const Shape& s) const {
+        const int shorter = std::min(s.width, s.height), longer = std::max(s.width, s.height);
+        int from = 0;
+        for (const Placed& p : m_placed)
+            if (p.shorter <= shorter && p.longer <= longer)
+                from = std::max(from, p.from);
+        return from;
     }
-    static std::size_t bucketPair(const Shape& s) {
-        const int a = bucket(std::min(s.width, s.height)), b = bucket(std::max(s.width, s.height));
-        return std::size_t(a * kBuckets + b);
+
+    /** Keeps only the placed charts that no other one covers. */
+    void remember(const Placed& p) {
+        for (const Placed& q : m_placed)
+            if (q.covers(p))
+                return;
+        std::erase_if(m_placed, [&](const Placed& q) { return p.covers(q); });
+        m_placed.push_back(p);
     }
-    static constexpr int kBuckets = 16;
 
     bool fitsAt(const Shape& s, int x, int y) {
         for (int j = 0; j < s.height; ++j)
@@ -363,7 +368,7 @@ private:
     std::vector<std::int16_t> m_run;
     std::vector<int> m_widest;
     std::vector<std::uint8_t> m_dirty;
-    std::vector<int> m_searchFrom; // per bucket pair of a chart's sides: where its search starts
+    std::vector<Placed> m_placed; // no one covering another
     int m_open = 0;
     int m_lastFailed = 0;
 };
@@ -402,8 +407,7 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
     Growth growth;
     growth.r = (options.padding + 1) / 2;
     growth.rSmall = smallChartRadius(options.padding);
-    growth.smallTexels =
-        std::getenv("UVT") ? std::atoi(std::getenv("UVT")) : options.smallChartTexels;
+    growth.smallTexels = options.smallChartTexels;
     std::vector<Mask> masks(charts.size());
     std::atomic<std::size_t> next{0};
     std::atomic<bool> tooLarge{false};

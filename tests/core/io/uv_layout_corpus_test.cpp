@@ -7,6 +7,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/model/uv_layout.h"
+#include "tests/core/model/uv_layout_checks.h"
 
 namespace {
 
@@ -25,14 +26,10 @@ TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
     options.resolution = 2048;
     auto layout = core::makeUvLayout(*mesh, options);
     ASSERT_TRUE(layout.ok()) << layout.error();
-    const core::Mesh& out = layout->mesh;
 
-    // Triangle order, corners and materials are the file's.
-    ASSERT_EQ(out.triangleCount(), mesh->triangleCount());
-    EXPECT_EQ(out.triangleMaterial, mesh->triangleMaterial);
-    for (std::size_t i = 0; i < mesh->indices.size(); ++i)
-        ASSERT_EQ(out.positions[out.indices[i]], mesh->positions[mesh->indices[i]]) << i;
-    EXPECT_TRUE(out.validate().ok()) << out.validate().error();
+    // Triangle order, corners and materials are the file's; charts in one piece (across the
+    // T-junctions between its CAD faces too), nothing covered twice, the padding kept.
+    uvcheck::expectValidLayout(*mesh, *layout);
 
     const core::UvLayoutMetrics m = core::measureUvLayout(*layout);
     EXPECT_EQ(layout->pageCount, 1u);
@@ -42,7 +39,8 @@ TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
     EXPECT_EQ(m.overlappingTexels, 0u);
     EXPECT_LE(m.stretchP95, 1.5);
     EXPECT_GT(m.charts, 100u);
-    EXPECT_GT(m.packingEfficiency, 0.2);
+    // The target (the layout is the same on every run and thread count).
+    EXPECT_GE(m.packingEfficiency, 0.60);
 
     // Its thousands of charts of a few texels share their padding, so they fit a small page too.
     options.resolution = 512;

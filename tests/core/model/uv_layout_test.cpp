@@ -1,190 +1,27 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdlib>
-#include <map>
-#include <numeric>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 #include <gtest/gtest.h>
 
 #include "core/model/builtin_models.h"
 #include "core/model/uv_layout.h"
 #include "core/paint/uv_raster.h"
+#include "tests/core/model/uv_layout_checks.h"
 
 namespace {
 
 using core::Mesh;
 using core::UvLayout;
 using core::UvLayoutOptions;
+using uvcheck::areaUv;
+using uvcheck::expectValidLayout;
 
 Mesh withoutUvs(Mesh mesh) {
     mesh.uvs.clear();
     return mesh;
-}
-
-double area3d(const Mesh& m, std::size_t t) {
-    const glm::vec3 a = m.positions[m.indices[3 * t]], b = m.positions[m.indices[3 * t + 1]],
-                    c = m.positions[m.indices[3 * t + 2]];
-    return 0.5 * double(glm::length(glm::cross(b - a, c - a)));
-}
-
-/** Signed area in texels of triangle t's UVs (positive: counter-clockwise in u, v). */
-double areaUv(const UvLayout& l, std::size_t t) {
-    const Mesh& m = l.mesh;
-    const glm::dvec2 a = glm::dvec2(m.uvs[m.indices[3 * t]]) * double(l.resolution);
-    const glm::dvec2 b = glm::dvec2(m.uvs[m.indices[3 * t + 1]]) * double(l.resolution);
-    const glm::dvec2 c = glm::dvec2(m.uvs[m.indices[3 * t + 2]]) * double(l.resolution);
-    return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
-}
-
-/** The same triangles, in the same order, with the same corners, materials and normals. */
-void expectSameTriangles(const Mesh& in, const UvLayout& l) {
-    const Mesh& out = l.mesh;
-    ASSERT_EQ(out.triangleCount(), in.triangleCount());
-    ASSERT_EQ(out.triangleMaterial, in.triangleMaterial);
-    ASSERT_EQ(out.uvs.size(), out.positions.size());
-    ASSERT_EQ(l.sourceVertex.size(), out.positions.size());
-    EXPECT_TRUE(out.validate().ok()) << out.validate().error();
-    for (std::size_t i = 0; i < in.indices.size(); ++i) {
-        const std::uint32_t v = out.indices[i];
-        ASSERT_EQ(l.sourceVertex[v], in.indices[i]) << "corner " << i;
-        ASSERT_EQ(out.positions[v], in.positions[in.indices[i]]);
-        ASSERT_EQ(out.normals[v], in.normals[in.indices[i]]);
-    }
-}
-
-/**
- * Union-find over triangles of one chart joined by an edge: the same two positions with the same
- * UVs (vertices are copies where the input split them, e.g. at hard edges). Returns the pieces.
- */
-std::uint32_t piecesOfCharts(const UvLayout& l, std::vector<std::uint32_t>& piecesPerChart) {
-    const Mesh& m = l.mesh;
-    std::vector<std::uint32_t> parent(m.triangleCount());
-    std::iota(parent.begin(), parent.end(), 0u);
-    const auto find = [&](std::uint32_t x) {
-        while (parent[x] != x)
-            x = parent[x] = parent[parent[x]];
-        return x;
-    };
-    using Corner = std::array<float, 5>;
-    // Positions quantized: seam copies computed along different paths differ in the last bits.
-    const auto corner = [&](std::uint32_t v) {
-        const glm::vec3 p = m.positions[v];
-        return Corner{std::round(p.x * 1e4f), std::round(p.y * 1e4f), std::round(p.z * 1e4f),
-                      m.uvs[v].x, m.uvs[v].y};
-    };
-    std::map<std::pair<Corner, Corner>, std::uint32_t> edges;
-    for (std::uint32_t t = 0; t < m.triangleCount(); ++t)
-        for (int k = 0; k < 3; ++k) {
-            Corner a = corner(m.indices[3 * t + std::size_t(k)]),
-                   b = corner(m.indices[3 * t + std::size_t((k + 1) % 3)]);
-            if (b < a)
-                std::swap(a, b);
-            const auto [it, added] = edges.try_emplace({a, b}, t);
-            if (!added && l.triangleChart[it->second] == l.triangleChart[t])
-                parent[find(it->second)] = find(t);
-        }
-    piecesPerChart.assign(l.chartCount, 0u);
-    std::uint32_t roots = 0;
-    for (std::uint32_t t = 0; t < m.triangleCount(); ++t)
-        if (find(t) == t) {
-            ++piecesPerChart[l.triangleChart[t]];
-            ++roots;
-        }
-    return roots;
-}
-
-/**
- * Checks what every layout must be: charts in one piece, no triangle with area flipped, no texel
- * covered twice, and at least the padding in texels between texels of different charts.
- */
-void expectValidLayout(const Mesh& in, const UvLayout& l) {
-    expectSameTriangles(in, l);
-    const Mesh& m = l.mesh;
-    ASSERT_EQ(l.triangleChart.size(), m.triangleCount());
-    ASSERT_EQ(l.chartPage.size(), l.chartCount);
-    for (const glm::vec2& uv : m.uvs) {
-        ASSERT_GE(uv.x, 0.0f);
-        ASSERT_LE(uv.x, 1.0f);
-        ASSERT_GE(uv.y, 0.0f);
-        ASSERT_LE(uv.y, 1.0f);
-    }
-
-    std::vector<std::uint32_t> pieces;
-    piecesOfCharts(l, pieces);
-    for (std::uint32_t c = 0; c < l.chartCount; ++c)
-        EXPECT_EQ(pieces[c], 1u) << "chart " << c << " is not one connected piece";
-
-    double total = 0.0;
-    for (std::size_t t = 0; t < m.triangleCount(); ++t)
-        total += area3d(m, t);
-    std::size_t flipped = 0;
-    for (std::size_t t = 0; t < m.triangleCount(); ++t)
-        if (area3d(m, t) > 1e-9 * total && !(areaUv(l, t) > 0.0))
-            ++flipped;
-    EXPECT_EQ(flipped, 0u);
-
-    // Which chart covers each texel centre, with the painting's fill rule.
-    const int size = l.resolution;
-    const std::size_t texels = std::size_t(size) * std::size_t(size);
-    constexpr std::uint32_t kEmpty = 0xffffffffu;
-    std::vector<std::uint32_t> owner(texels * l.pageCount, kEmpty);
-    std::size_t twice = 0;
-    for (std::size_t t = 0; t < m.triangleCount(); ++t) {
-        glm::vec2 uv[3];
-        for (int k = 0; k < 3; ++k)
-            uv[k] = m.uvs[m.indices[3 * t + std::size_t(k)]];
-        core::uv::UvTriangle r;
-        if (!core::uv::setUpUv(uv, size, size, r))
-            continue;
-        const std::uint32_t chart = l.triangleChart[t];
-        std::uint32_t* page = owner.data() + texels * l.chartPage[chart];
-        core::uv::scanUv(r, std::max(r.minX, 0), std::min(r.maxX, size - 1), std::max(r.minY, 0),
-                         std::min(r.maxY, size - 1), [&](int x, int y, auto, auto, auto) {
-                             std::uint32_t& o =
-                                 page[std::size_t(y) * std::size_t(size) + std::size_t(x)];
-                             twice += o != kEmpty;
-                             o = chart;
-                         });
-    }
-    EXPECT_EQ(twice, 0u) << "texels covered by more than one triangle";
-
-    // Two small charts (covering at most smallChartTexels texels each) keep smallChartPadding
-    // texels between them, any other two the padding.
-    std::vector<std::size_t> covered(l.chartCount, 0u);
-    for (const std::uint32_t c : owner)
-        if (c != kEmpty)
-            ++covered[c];
-    const auto small = [&](std::uint32_t c) {
-        return covered[c] <= std::size_t(l.smallChartTexels);
-    };
-    EXPECT_LE(l.smallChartPadding, l.padding);
-    std::size_t tooClose = 0;
-    const int p = l.padding;
-    for (std::uint32_t page = 0; page < l.pageCount; ++page)
-        for (int y = 0; y < size; ++y)
-            for (int x = 0; x < size; ++x) {
-                const std::uint32_t c =
-                    owner[texels * page + std::size_t(y) * std::size_t(size) + std::size_t(x)];
-                if (c == kEmpty)
-                    continue;
-                for (int dy = -p; dy <= p; ++dy)
-                    for (int dx = -p; dx <= p; ++dx) {
-                        const int nx = x + dx, ny = y + dy;
-                        if (nx < 0 || ny < 0 || nx >= size || ny >= size)
-                            continue;
-                        const std::uint32_t o =
-                            owner[texels * page + std::size_t(ny) * std::size_t(size) +
-                                  std::size_t(nx)];
-                        if (o == kEmpty || o == c)
-                            continue;
-                        const int gap = small(c) && small(o) ? l.smallChartPadding : p;
-                        tooClose += std::max(std::abs(dx), std::abs(dy)) <= gap;
-                    }
-            }
-    EXPECT_EQ(tooClose, 0u) << "texels of different charts closer than the padding";
 }
 
 UvLayoutOptions smallPages() {
@@ -331,6 +168,80 @@ TEST(UvLayout, SmallChartsShareTheirPadding) {
     ASSERT_FALSE(full.ok());
     EXPECT_EQ(full.errorKind(), core::ErrorKind::BadInput);
     EXPECT_NE(full.error().find("do not fit"), std::string::npos) << full.error();
+}
+
+/**
+ * A strip of two faces that share no edge (a CAD export's T-junction): a 2 × 1 face of two
+ * triangles, and on its top side a face of two 1 × 1 squares whose middle corner sits on that
+ * side. The upper face is turned up about the line y = 1 by `bendDegrees`.
+ */
+Mesh tJunctionStrip(float bendDegrees) {
+    Mesh mesh;
+    mesh.materials.resize(1);
+    const float a = glm::radians(bendDegrees);
+    const auto up = [&](float x, float y) { // y ≥ 1: turned about y = 1
+        return glm::vec3(x, 1.0f + (y - 1.0f) * std::cos(a), (y - 1.0f) * std::sin(a));
+    };
+    const glm::vec3 p[] = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {0, 1, 0}, // the lower face
+                           up(0, 1),  up(1, 1),  up(2, 1),  up(0, 2),  up(1, 2), up(2, 2)};
+    for (const glm::vec3& q : p) {
+        mesh.positions.push_back(q);
+        mesh.normals.emplace_back(0.0f, 0.0f, 1.0f);
+    }
+    // Corners 4 and 6 coincide with 3 and 2 but are their own vertices, as in such files.
+    mesh.indices = {0, 1, 2, 0, 2, 3, 4, 5, 8, 4, 8, 7, 5, 6, 9, 5, 9, 8};
+    mesh.triangleMaterial.assign(6, 0u);
+    return mesh;
+}
+
+TEST(UvLayout, ChartsGrowAcrossTJunctions) {
+    for (const float bend : {0.0f, 25.0f}) {
+        SCOPED_TRACE(bend);
+        const Mesh mesh = tJunctionStrip(bend);
+        ASSERT_TRUE(mesh.validate().ok());
+        auto layout = core::makeUvLayout(mesh, smallPages());
+        ASSERT_TRUE(layout.ok()) << layout.error();
+        EXPECT_EQ(layout->chartCount, 1u); // one chart across the T-junction
+        expectValidLayout(mesh, *layout);  // in one piece: the T-junction is closed in UV
+        // The middle corner (vertex 5) lies on the lower face's top side in UV as in 3D.
+        const Mesh& out = layout->mesh;
+        const auto uvOf = [&](std::uint32_t v) {
+            for (std::size_t i = 0; i < out.indices.size(); ++i)
+                if (layout->sourceVertex[out.indices[i]] == v)
+                    return glm::dvec2(out.uvs[out.indices[i]]) * double(layout->resolution);
+            return glm::dvec2(-1.0);
+        };
+        const glm::dvec2 left = uvOf(3), right = uvOf(2), middle = uvOf(5);
+        EXPECT_NEAR(glm::length(middle - (left + right) * 0.5), 0.0, 1e-3);
+        const core::UvLayoutMetrics m = core::measureUvLayout(*layout);
+        EXPECT_LT(m.stretchP95, bend == 0.0f ? 1.001 : 1.2);
+    }
+    // Bent past the sharp-edge angle, the faces are charts of their own.
+    auto sharp = core::makeUvLayout(tJunctionStrip(60.0f), smallPages());
+    ASSERT_TRUE(sharp.ok()) << sharp.error();
+    EXPECT_EQ(sharp->chartCount, 2u);
+    expectValidLayout(tJunctionStrip(60.0f), *sharp);
+}
+
+TEST(UvLayout, AFinOnAPlateLetsThePlateContinueAcrossItsFoot) {
+    // A plate of two squares whose middle edge also carries an upright fin: that edge has three
+    // triangles, so it has no single neighbour; the plate's halves still continue each other.
+    Mesh mesh;
+    mesh.materials.resize(1);
+    const glm::vec3 p[] = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0},
+                           {1, 1, 0}, {2, 1, 0}, {1, 0, 1}, {1, 1, 1}};
+    for (const glm::vec3& q : p) {
+        mesh.positions.push_back(q);
+        mesh.normals.emplace_back(0.0f, 0.0f, 1.0f);
+    }
+    mesh.indices = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4, 1, 6, 7, 1, 7, 4};
+    mesh.triangleMaterial.assign(6, 0u);
+    auto layout = core::makeUvLayout(mesh, smallPages());
+    ASSERT_TRUE(layout.ok()) << layout.error();
+    EXPECT_EQ(layout->chartCount, 2u); // the plate, the fin
+    EXPECT_EQ(layout->triangleChart[0], layout->triangleChart[2]);
+    EXPECT_NE(layout->triangleChart[0], layout->triangleChart[4]);
+    expectValidLayout(mesh, *layout);
 }
 
 TEST(UvLayout, DegenerateTrianglesKeepTheirPlaceAndCoverNothing) {
