@@ -69,6 +69,8 @@ private:
     template <typename T>
     bool readAccessor(int accessorIndex, Semantic semantic, int& components, std::vector<T>& out);
     bool addPrimitive(const Instance& inst, std::size_t primIndex);
+    /** Room in the mesh for every primitive of instances, at most the limits. */
+    void reserveForInstances(const std::vector<Instance>& instances);
     /** The primitive's KHR_draco_mesh_compression object in the JSON, or nullptr. */
     const Json* dracoExtension(int mesh, std::size_t primIndex) const;
     bool decodeDracoPrimitive(const Json& ext, const std::string& where, const std::string& uvName,
@@ -398,7 +400,8 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     if (mode == TINYGLTF_MODE_TRIANGLES) {
         if (n % 3 != 0)
             warnOnce("incomplete triangles at the end of a primitive were dropped");
-        tris.assign(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(n - n % 3));
+        tris = std::move(order); // the list itself: a 10M-triangle file holds 120 MB of it
+        tris.resize(n - n % 3);
     } else if (n >= 3) {
         tris.reserve((n - 2) * 3);
         for (std::size_t i = 0; i + 2 < n; ++i) {
@@ -422,6 +425,13 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
     const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(inst.transform));
     const bool mirrored = glm::determinant(glm::dmat3(inst.transform)) < 0.0;
     const auto base = static_cast<std::uint32_t>(m_mesh.positions.size());
+    // UVs and colours only from the first primitive that has them on (earlier vertices get the
+    // defaults then): a file without colours holds no white per vertex while it loads.
+    const bool keepUvs = m_anyUv || hasUv, keepColors = m_anyColor || hasColor;
+    if (keepUvs)
+        m_mesh.uvs.resize(base, glm::vec2(0.0f));
+    if (keepColors)
+        m_mesh.colors.resize(base, glm::vec4(1.0f));
     for (std::size_t v = 0; v < vertexCount; ++v) {
         if (remap[v] == std::numeric_limits<std::uint32_t>::max())
             continue;
@@ -442,15 +452,20 @@ bool GltfFlattener::addPrimitive(const Instance& inst, std::size_t primIndex) {
             if (uvTransform && uvTransform->present)
                 t = uvTransform->apply(t);
         }
-        m_mesh.uvs.push_back(t);
+        if (keepUvs)
+            m_mesh.uvs.push_back(t);
         glm::vec4 c(1.0f);
         if (hasColor)
             for (int k = 0; k < colComps; ++k)
                 c[k] = col[v * static_cast<std::size_t>(colComps) + static_cast<std::size_t>(k)];
-        m_mesh.colors.push_back(c);
+        if (keepColors)
+            m_mesh.colors.push_back(c);
     }
-    m_anyUv = m_anyUv || hasUv;
-    m_anyColor = m_anyColor || hasColor;
+    m_anyUv = keepUvs;
+    m_anyColor = keepColors;
+    // The attributes are in the mesh now; the triangles follow.
+    for (std::vector<float>* read : {&pos, &nrm, &uv, &col})
+        std::vector<float>().swap(*read);
 
     if (material >= 0 && static_cast<std::size_t>(material) >= m_model.materials.size())
         return fail(where + " uses material " + str(material) + ", which does not exist");
@@ -630,6 +645,36 @@ bool GltfFlattener::addMaterials() {
     return true;
 }
 
+void GltfFlattener::reserveForInstances(const std::vector<Instance>& instances) {
+    // At most the accessors' counts (primitives use only some vertices; strips and fans give
+    // three indices per vertex): the arrays then grow without copies or twice their size in
+    // spare room. Reserved room that is never written takes no memory.
+    const auto countOf = [&](int accessor) -> std::uint64_t {
+        return accessor >= 0 && static_cast<std::size_t>(accessor) < m_model.accessors.size()
+                   ? m_model.accessors[static_cast<std::size_t>(accessor)].count
+                   : 0;
+    };
+    std::uint64_t vertices = 0, indices = 0;
+    for (const Instance& inst : instances)
+        for (const tinygltf::Primitive& prim :
+             m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives) {
+            const auto pos = prim.attributes.find("POSITION");
+            const std::uint64_t v = pos == prim.attributes.end() ? 0 : countOf(pos->second);
+            const std::uint64_t i = prim.indices >= 0 ? countOf(prim.indices) : v;
+            vertices += v;
+            indices += prim.mode == TINYGLTF_MODE_TRIANGLES || prim.mode < 0 ? i : 3 * i;
+        }
+    if (vertices > m_limits.maxVertices || indices / 3 > m_limits.maxTriangles)
+        return; // refused as it is read
+    const auto v = static_cast<std::size_t>(vertices), i = static_cast<std::size_t>(indices);
+    m_mesh.positions.reserve(v);
+    m_mesh.normals.reserve(v);
+    m_mesh.uvs.reserve(v);
+    m_hasNormal.reserve(v);
+    m_mesh.indices.reserve(i);
+    m_mesh.triangleMaterial.reserve(i / 3);
+}
+
 bool GltfFlattener::run(Mesh& out) {
     std::vector<Instance> instances;
     if (!collectInstances(instances))
@@ -643,6 +688,7 @@ bool GltfFlattener::run(Mesh& out) {
     std::size_t primTotal = 0, primDone = 0;
     for (const Instance& inst : instances)
         primTotal += m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives.size();
+    reserveForInstances(instances);
     for (const Instance& inst : instances) {
         const auto& prims = m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives;
         for (std::size_t p = 0; p < prims.size(); ++p) {

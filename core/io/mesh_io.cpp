@@ -81,9 +81,9 @@ Result<UsedVertices> numberUsedVertices(const std::vector<std::uint32_t>& tris,
 void Flattener::finish(Mesh& out) {
     Mesh& mesh = m_mesh;
     if (!m_anyUv)
-        mesh.uvs.clear();
+        mesh.uvs = {};
     if (!m_anyColor)
-        mesh.colors.clear();
+        mesh.colors = {};
     const auto withNormal =
         static_cast<std::size_t>(std::count(m_hasNormal.begin(), m_hasNormal.end(), 1));
     if (withNormal == 0) {
