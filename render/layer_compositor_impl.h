@@ -27,7 +27,6 @@ namespace render::compositor {
 
 constexpr std::size_t kMinBufferBytes = 16;    // a binding needs storage even for empty data
 constexpr int kTileSize = 16;                  // pixels; only tiles holding fragments are drawn
-constexpr std::size_t kShadingWords = 4;       // per fragment, see composite_shade.comp
 constexpr std::size_t kMaxTexturePasses = 255; // the texture byte of a fragment's shading
 constexpr std::uint32_t kMaxFragments = 0x7fffffff; // Visible keeps a flag in bit 31
 constexpr GLuint kShadeGroupSize = 64;              // composite_shade.comp's local size
@@ -48,7 +47,10 @@ enum Binding : GLuint {
     kMaterials,
     kVisible,
     kFragmentPixels,
-    kShading,
+    kShadingColor, // a fragment's shading: one word in each of four buffers
+    kShadingUv,
+    kShadingLight,
+    kShadingNormal,
     kTiles, // a vertex buffer, not shader storage
     kBufferCount
 };
@@ -188,8 +190,9 @@ struct LayerCompositor::Impl {
         passMetallicRoughness.clear();
     }
 
+    /** Whether count elements fit one storage block (of planBytes()). */
     bool fits(std::size_t count, std::size_t elementBytes) const {
-        return count <= maxBlockBytes / elementBytes;
+        return count <= planBytes() / elementBytes;
     }
 
     /** The program of a variant, built on first use; an Error if it does not compile. */

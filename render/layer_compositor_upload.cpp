@@ -349,11 +349,12 @@ core::Status LayerCompositor::setLayers(const core::Layers& layers) {
         stack.depth.size() != fragments || stack.offsets.front() != 0 ||
         stack.offsets.back() != fragments)
         return core::Error{"layer compositor: inconsistent layer stack"};
-    if (!d.fits(pixels + 1, sizeof(std::uint32_t)) ||
-        !d.fits(fragments, kShadingWords * sizeof(std::uint32_t)) || fragments > kMaxFragments)
+    // Every per-fragment array (the shading too) is a word a fragment; Visible two a pixel.
+    if (!d.fits(2 * pixels, sizeof(std::uint32_t)) || !d.fits(fragments, sizeof(std::uint32_t)) ||
+        fragments > kMaxFragments)
         return core::Error{"layer compositor: the view's " + std::to_string(fragments) +
                            " fragments exceed the GL's shader storage block size (" +
-                           std::to_string(d.maxBlockBytes / (kShadingWords * 4)) +
+                           std::to_string(d.planBytes() / sizeof(std::uint32_t)) +
                            " at most); make the view smaller"};
 
     d.findTiles(stack);
@@ -370,7 +371,10 @@ core::Status LayerCompositor::setLayers(const core::Layers& layers) {
         d.buffers[kFragmentTriangles].upload(stack.triangle, limit, true) &&
         d.buffers[kFragmentDepths].upload(stack.depth, limit, true) &&
         d.buffers[kFragmentPixels].upload(fragmentPixel, limit, true) &&
-        d.buffers[kShading].upload(nullptr, fragments * kShadingWords * 4, limit, true) &&
+        d.buffers[kShadingColor].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingUv].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingLight].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingNormal].upload(nullptr, fragments * 4, limit, true) &&
         // The visible fragments, then the under ones (transparency).
         d.buffers[kVisible].upload(nullptr, 2 * pixels * sizeof(std::uint32_t), limit, true) &&
         d.buffers[kTiles].upload(d.tiles, limit, true);

@@ -48,9 +48,18 @@ layout(std430, binding = 12) buffer Visible {
 };
 const uint kNoFragment = 0x7fffffffu;
 const uint kBoundaryBit = 0x80000000u;
-// composite_shade.comp's output, 4 words a fragment.
-layout(std430, binding = 14) readonly buffer Shading {
-    uint shading[];
+// composite_shade.comp's output, a word a fragment in each of four buffers.
+layout(std430, binding = 14) readonly buffer ShadingColor {
+    uint shadingColor[];
+};
+layout(std430, binding = 15) readonly buffer ShadingUv {
+    uint shadingUv[];
+};
+layout(std430, binding = 16) readonly buffer ShadingLight {
+    uint shadingLight[];
+};
+layout(std430, binding = 17) readonly buffer ShadingNormal {
+    uint shadingNormal[];
 };
 
 // Pixel centres in LayerStack coordinates (y down).
@@ -235,7 +244,7 @@ void main() {
     vec4 color = uBackground;
     uint region = kNone;
     if (chosen != kNoFragment) {
-        uint shade = shading[4u * chosen];
+        uint shade = shadingColor[chosen];
 #if defined(SEGMENTATION) || defined(HIGHLIGHT)
         region = fragmentRegion[chosen];
 #endif
@@ -243,7 +252,7 @@ void main() {
         vec3 c = region == kNone ? vec3(0.5) : regionColor(region);
 #ifdef SHADE_SEGMENTATION
         // Light shading keeps the shape readable without drowning the hue.
-        c *= 0.6 + 0.4 * float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+        c *= 0.6 + 0.4 * float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
 #endif
         color = vec4(c, 1.0);
 #else
@@ -260,8 +269,8 @@ void main() {
             discard;
         if (slot != 0u) {
             textured = true;
-            vec2 uv = unpackUnorm2x16(shading[4u * chosen + 1u]);
-            float lod = (float(shading[4u * chosen + 2u] & 0xffffu) - 32768.0) / 1024.0;
+            vec2 uv = unpackUnorm2x16(shadingUv[chosen]);
+            float lod = (float(shadingLight[chosen] & 0xffffu) - 32768.0) / 1024.0;
             lit *= textureLod(uTexture, uv, lod).rgb;
 #ifdef MATERIAL
             vec2 mr = textureLod(uMetallicRoughness, uv, lod).gb;
@@ -275,14 +284,14 @@ void main() {
 #elif defined(CHANNEL_METALLIC)
         color.rgb = vec3(metallic);
 #elif defined(CHANNEL_BASE)
-        float headlight = float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+        float headlight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
         color.rgb = linearToSrgb(clamp(lit / (0.25 + 0.75 * headlight), 0.0, 1.0));
 #else
         if (textured) {
 #ifdef MATERIAL
-            float headlight = float((shading[4u * chosen + 2u] >> 16) & 0xffu) / 255.0;
+            float headlight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
             lit = shadeMaterial(lit, headlight, roughness, metallic,
-                                decodeNormal(shading[4u * chosen + 3u]));
+                                decodeNormal(shadingNormal[chosen]));
 #endif
             color.rgb = linearToSrgb(clamp(lit, 0.0, 1.0));
         }

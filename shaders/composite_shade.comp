@@ -64,12 +64,22 @@ layout(std430, binding = 11) readonly buffer Materials {
 layout(std430, binding = 13) readonly buffer FragmentPixels {
     uint fragmentPixel[];
 };
-// 4 words a fragment: [0] lit base colour, sRGB rgb in bytes 0-2 and in byte 3 the texture
-// pass + 1 (0: untextured); [1] fract(uv) as 2 × unorm16; [2] bits 0-15 the texture LOD × 1024
-// + 32768, bits 16-23 the headlight term |n · v|; [3] the view-space unit normal turned towards
-// the viewer, octahedral as 2 × snorm16 (the material's lights).
-layout(std430, binding = 14) writeonly buffer Shading {
-    uint shading[];
+// A fragment's shading in four buffers of one word a fragment (a storage block holds as many
+// fragments as the fragment arrays then): Color: lit base colour, sRGB rgb in bytes 0-2 and in
+// byte 3 the texture pass + 1 (0: untextured); Uv: fract(uv) as 2 × unorm16; Light: bits 0-15
+// the texture LOD × 1024 + 32768, bits 16-23 the headlight term |n · v|; Normal: the view-space
+// unit normal turned towards the viewer, octahedral as 2 × snorm16 (the material's lights).
+layout(std430, binding = 14) writeonly buffer ShadingColor {
+    uint shadingColor[];
+};
+layout(std430, binding = 15) writeonly buffer ShadingUv {
+    uint shadingUv[];
+};
+layout(std430, binding = 16) writeonly buffer ShadingLight {
+    uint shadingLight[];
+};
+layout(std430, binding = 17) writeonly buffer ShadingNormal {
+    uint shadingNormal[];
 };
 
 vec3 linearToSrgb(vec3 c) {
@@ -201,8 +211,8 @@ void main() {
 #endif
     }
     vec3 lit = clamp(base.rgb * (0.25 + 0.75 * diffuse), 0.0, 1.0);
-    shading[4u * f] = (packUnorm4x8(vec4(linearToSrgb(lit), 0.0)) & 0xffffffu) | (slot << 24);
-    shading[4u * f + 1u] = uvWord;
-    shading[4u * f + 2u] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
-    shading[4u * f + 3u] = octEncode(facing);
+    shadingColor[f] = (packUnorm4x8(vec4(linearToSrgb(lit), 0.0)) & 0xffffffu) | (slot << 24);
+    shadingUv[f] = uvWord;
+    shadingLight[f] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
+    shadingNormal[f] = octEncode(facing);
 }

@@ -110,10 +110,13 @@ TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
         SCOPED_TRACE(scene.name);
         const core::Layers layers = build(scene.mesh, scene.view);
         ASSERT_GT(layers.stack.fragmentCount(), 0u);
+        // The cap plans the mesh parts; the fragment arrays keep the whole block (a tiny one
+        // would refuse them, see CompositorShadesAsManyFragmentsAsItsFragmentArraysHold).
         m_split.setStorageBlockCap(scene.block);
         for (render::LayerCompositor* compositor : {&m_whole, &m_split}) {
             core::Status status = compositor->setMesh(scene.mesh);
             ASSERT_TRUE(status) << status.error();
+            compositor->setStorageBlockCap(0);
             status = compositor->setLayers(layers);
             ASSERT_TRUE(status) << status.error();
         }
@@ -151,6 +154,41 @@ TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
             EXPECT_EQ(differingBytes(painted, draw(m_split, layers, options)), 0u);
         }
     }
+}
+
+TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHold) {
+    // A fragment's shading is a word in each of four buffers, so a block holding the fragment
+    // arrays holds the shading too (one buffer of four words a fragment held a quarter of them).
+    const core::Mesh trefoil = core::makeTrefoil();
+    // Close up: the knot fills the view, two to four sheets deep.
+    const core::Layers layers = build(trefoil, orbitView(trefoil, 45.0f, 60.0f, 320, 240, 0.35f));
+    const std::size_t fragments = layers.stack.fragmentCount();
+    const std::size_t pixels = layers.stack.pixelCount();
+    // The largest other array: the visible and under fragment of each pixel.
+    const std::size_t block = std::max(fragments * 4, 2 * pixels * 4);
+    ASSERT_LT(block, fragments * 16) << "the scene must have more fragments than pixels / 2";
+    m_split.setStorageBlockCap(block);
+    for (render::LayerCompositor* compositor : {&m_whole, &m_split}) {
+        core::Status status = compositor->setMesh(trefoil);
+        ASSERT_TRUE(status) << status.error();
+        status = compositor->setLayers(layers);
+        ASSERT_TRUE(status) << status.error();
+    }
+    render::CompositeOptions options;
+    options.channel = render::MaterialChannel::BaseColor;
+    for (const bool material : {false, true}) {
+        if (material)
+            options.channel = render::MaterialChannel::Material;
+        EXPECT_EQ(differingBytes(draw(m_whole, layers, options), draw(m_split, layers, options)),
+                  0u);
+    }
+    EXPECT_EQ(m_whole.readVisible(), m_split.readVisible());
+
+    // One fragment more than a block holds is refused with what to do about it.
+    m_split.setStorageBlockCap(fragments * 4 - 4);
+    const core::Status refused = m_split.setLayers(layers);
+    ASSERT_FALSE(refused);
+    EXPECT_NE(refused.error().find("make the view smaller"), std::string::npos) << refused.error();
 }
 
 TEST_F(StorageSplitGlTest, CaptureNodeChunksGiveTheSameLayerStack) {
