@@ -267,9 +267,10 @@ public:
 
     void place(const Shape& s, int x, int y) {
         // Charts come largest first and many are alike: one at least as large both ways as
-        // this one (its sides, whichever way turned) starts its search a little above where
-        // this one went, not at the first row again. (By powers of two instead of the sides
-        // themselves, a chart sent larger ones of its size class below gaps they fitted.)
+        // this one (its sides, whichever way turned) starts its search this one's shorter side
+        // above the row where this one went, not at the first row again. (With sizes by powers
+        // of two instead of the sides themselves, a chart sent larger ones of its size class
+        // past gaps they fitted.)
         remember({std::min(s.width, s.height), std::max(s.width, s.height),
                   std::max(0, y - std::min({s.width, s.height, m_size}))});
         for (int j = 0; j < s.height; ++j) {

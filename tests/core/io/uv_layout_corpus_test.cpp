@@ -44,12 +44,21 @@ TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
 
     // Its thousands of charts of a few texels share their padding, so they fit a small page too.
     options.resolution = 512;
+    options.threads = 2;
     auto small = core::makeUvLayout(*mesh, options);
     ASSERT_TRUE(small.ok()) << small.error();
     const core::UvLayoutMetrics s = core::measureUvLayout(*small);
     EXPECT_EQ(small->pageCount, 1u);
     EXPECT_EQ(s.flippedTriangles, 0u);
     EXPECT_EQ(s.overlappingTexels, 0u);
+
+    // The same layout on one thread (charts across T-junctions, flattened in parallel).
+    options.threads = 1;
+    auto oneThread = core::makeUvLayout(*mesh, options);
+    ASSERT_TRUE(oneThread.ok()) << oneThread.error();
+    EXPECT_EQ(oneThread->triangleChart, small->triangleChart);
+    EXPECT_EQ(oneThread->mesh.uvs, small->mesh.uvs);
+    EXPECT_EQ(oneThread->mesh.indices, small->mesh.indices);
 }
 
 } // namespace
