@@ -14,6 +14,10 @@ constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
 // The edge-collapse simplifier stops at this error (relative to the mesh's extent) even above
 // the target; the grid clustering then takes it the rest of the way.
 constexpr float kTargetError = 0.02f;
+// A group of more than this many times its target is first clustered down to that many times
+// (a grid far finer than the stand-in's detail): the edge collapses then start from there. On a
+// 10M-triangle knot: 7.6 s → 3.4 s for the 250K stand-in.
+constexpr std::size_t kClusterFirstAbove = 8;
 
 /**
  * Simplifies the triangles corners (source vertex ids) to at most target triangles, appending
@@ -39,6 +43,16 @@ void simplifyGroup(const Mesh& mesh, const std::vector<std::uint32_t>& corners, 
         positions[i] = mesh.positions[source[i]];
 
     const std::size_t targetIndices = target * 3;
+    if (indices.size() > kClusterFirstAbove * targetIndices) {
+        std::vector<std::uint32_t> clustered(indices.size());
+        const std::size_t made = meshopt_simplifySloppy(
+            clustered.data(), indices.data(), indices.size(), &positions[0].x, positions.size(),
+            sizeof(glm::vec3), kClusterFirstAbove * targetIndices, 1.0f, nullptr);
+        if (made >= targetIndices) { // else too coarse a grid: the collapses alone
+            clustered.resize(made);
+            indices = std::move(clustered);
+        }
+    }
     std::vector<std::uint32_t> simplified(indices.size());
     std::size_t count = meshopt_simplify(simplified.data(), indices.data(), indices.size(),
                                          &positions[0].x, positions.size(), sizeof(glm::vec3),
