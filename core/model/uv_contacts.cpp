@@ -104,21 +104,7 @@ void findContacts(Surface& s, double tolerance) {
                 cells.push_back(entry);
         }
     }
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    for (std::size_t begin = 0; begin < cells.size();) {
-        std::size_t end = begin + 1;
-        while (end < cells.size() && cells[end].first == cells[begin].first)
-            ++end;
-        for (std::size_t i = begin; i < end; ++i)
-            for (std::size_t j = i + 1; j < end; ++j)
-                pairs.emplace_back(cells[i].second, cells[j].second);
-        begin = end;
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    const std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs = pairsSharingACell(cells);
 
     std::vector<std::pair<std::uint32_t, std::uint32_t>> found; // both ways, as sides
     for (const auto& [i, j] : pairs) {

@@ -307,20 +307,7 @@ bool overlapsItself(const Chart& chart) {
             for (int x = x0; x <= x1; ++x)
                 entries.emplace_back(std::uint32_t(y * cells + x), k);
     }
-    std::sort(entries.begin(), entries.end());
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    for (std::size_t begin = 0; begin < entries.size();) {
-        std::size_t end = begin + 1;
-        while (end < entries.size() && entries[end].first == entries[begin].first)
-            ++end;
-        for (std::size_t i = begin; i < end; ++i)
-            for (std::size_t j = i + 1; j < end; ++j)
-                pairs.emplace_back(entries[i].second, entries[j].second);
-        begin = end;
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    for (const auto& [i, j] : pairs) {
+    for (const auto& [i, j] : pairsSharingACell(entries)) {
         const double smaller = std::min(signedArea(tri[i][0], tri[i][1], tri[i][2]),
                                         signedArea(tri[j][0], tri[j][1], tri[j][2]));
         if (sharedArea(tri[i], tri[j]) > 1e-9 * smaller + 1e-18 * extent * extent)

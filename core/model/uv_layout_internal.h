@@ -4,9 +4,11 @@
 // into pages (uv_pack.cpp).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -46,6 +48,30 @@ struct Surface {
         return topology->corners[side / 3][(side % 3 + std::uint32_t(k)) % 3];
     }
 };
+
+/**
+ * The pairs (i, j), i < j, of items that share a cell, each once and in ascending order, from
+ * (cell, item) entries (sorted here); items are in ascending order within a cell once sorted.
+ */
+template <typename Cell>
+std::vector<std::pair<std::uint32_t, std::uint32_t>>
+pairsSharingACell(std::vector<std::pair<Cell, std::uint32_t>>& entries) {
+    std::sort(entries.begin(), entries.end());
+    entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    for (std::size_t begin = 0; begin < entries.size();) {
+        std::size_t end = begin + 1;
+        while (end < entries.size() && entries[end].first == entries[begin].first)
+            ++end;
+        for (std::size_t i = begin; i < end; ++i)
+            for (std::size_t j = i + 1; j < end; ++j)
+                pairs.emplace_back(entries[i].second, entries[j].second);
+        begin = end;
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return pairs;
+}
 
 /**
  * Finds the surface's contacts (see Surface::contacts): sides within tolerance (model units) of
