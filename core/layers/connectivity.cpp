@@ -92,8 +92,6 @@ public:
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
         m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
         m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
-        m_triangles = m_geometry ? m_geometry->triangles.data() : nullptr;
-        m_triangleCount = m_geometry ? m_geometry->triangles.size() : 0;
     }
 
     /**
@@ -151,7 +149,7 @@ private:
             const std::uint32_t* triangle = m_stack.triangle.data() + side.first;
             for (std::uint32_t k = 0; k < side.count; ++k) {
                 side.triangle[k] = triangle[k];
-                side.info[k] = triangle[k] < m_triangleCount ? m_triangles + triangle[k] : nullptr;
+                side.info[k] = m_geometry->find(triangle[k]);
                 side.component[k] = side.info[k] ? side.info[k]->component : kNone;
             }
         }
@@ -340,8 +338,6 @@ private:
 
     const LayerStack& m_stack;
     const SurfaceGeometry* m_geometry;
-    const SurfaceTriangle* m_triangles = nullptr;
-    std::size_t m_triangleCount = 0;
     Connectivity& m_out;
     float m_limit = 0.0f;
     float m_contactLimit = 0.0f;
@@ -396,11 +392,9 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     SurfaceGeometry geometry;
     geometry.rays = PixelRays::fromView(view);
     const std::size_t count = mesh.triangleCount();
-    geometry.triangles.resize(count);
     const glm::dmat4 toView(view.view);
     const bool haveTopology = topology.triangleCount() == count;
-    const auto computePlane = [&](std::size_t t) {
-        SurfaceTriangle& tri = geometry.triangles[t];
+    const auto computePlane = [&](std::size_t t, SurfaceTriangle& tri) {
         if (haveTopology) {
             tri.corners = topology.corners[t];
             tri.component = topology.component[t];
@@ -426,28 +420,34 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     };
     if (!stack) {
         // Independent per triangle: split over threads (this runs on every view change).
+        geometry.triangles.resize(count);
         parallelRanges(int(count), 0, [&](int, int begin, int end) {
             for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
-                computePlane(t);
+                computePlane(t, geometry.triangles[t]);
         });
         return geometry;
     }
-    // Only the triangles the view shows: mark them from the fragments, list them in id order,
+    // Only the triangles the view shows: mark them from the fragments, number them in id order,
     // and compute their planes over the threads (each plane depends on its triangle only).
-    std::vector<std::uint8_t> shown(count, 0);
+    constexpr std::uint32_t kShown = 0;
+    geometry.entry.assign(count, kNone);
+    std::uint32_t* entry = geometry.entry.data();
     const std::vector<std::uint32_t>& fragmentTriangles = stack->triangle;
     parallelRanges(int(fragmentTriangles.size()), 0, [&](int, int begin, int end) {
         for (int f = begin; f < end; ++f)
             if (const std::uint32_t t = fragmentTriangles[std::size_t(f)]; t < count)
-                std::atomic_ref<std::uint8_t>(shown[t]).store(1, std::memory_order_relaxed);
+                std::atomic_ref<std::uint32_t>(entry[t]).store(kShown, std::memory_order_relaxed);
     });
     std::vector<std::uint32_t> ids;
     for (std::size_t t = 0; t < count; ++t)
-        if (shown[t])
+        if (entry[t] == kShown) {
+            entry[t] = std::uint32_t(ids.size());
             ids.push_back(std::uint32_t(t));
+        }
+    geometry.triangles.resize(ids.size());
     parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
         for (int i = begin; i < end; ++i)
-            computePlane(ids[std::size_t(i)]);
+            computePlane(ids[std::size_t(i)], geometry.triangles[std::size_t(i)]);
     });
     return geometry;
 }

@@ -80,16 +80,29 @@ struct SurfaceTriangle {
     std::uint32_t component = kNone;
 };
 
-/** Per-view input of the Surface test: pixel rays and per-triangle planes, by triangle id. */
+/**
+ * Per-view input of the Surface test: pixel rays and per-triangle planes. Without entries, the
+ * triangles are by triangle id; with entries, only the triangles in view are kept, in id order,
+ * and entry[id] is a triangle's index among them (kNone: not in view).
+ */
 struct SurfaceGeometry {
     PixelRays rays;
     std::vector<SurfaceTriangle> triangles;
+    std::vector<std::uint32_t> entry;
+
+    /** Triangle id's entry, or nullptr when unknown (out of range or not in view). */
+    const SurfaceTriangle* find(std::uint32_t id) const {
+        if (entry.empty())
+            return id < triangles.size() ? &triangles[id] : nullptr;
+        return id < entry.size() && entry[id] != kNone ? &triangles[entry[id]] : nullptr;
+    }
 };
 
 /**
  * Planes of mesh's triangles in view's view space, with topology's corners/components, indexed by
- * triangle id. With stack, only the triangles with a fragment in it are computed (the only ones
- * the Surface test reads); the others keep the default (zero plane, unknown corners).
+ * triangle id. With stack, only the triangles with a fragment in it are computed and kept (the
+ * only ones the Surface test reads; SurfaceGeometry::entry finds them): a mesh of millions of
+ * triangles costs a word per triangle, not a plane.
  */
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
                                     const View& view, const LayerStack* stack = nullptr);

@@ -123,6 +123,17 @@ void expectSameAsReference(render::GpuConnectivity& gpu, const Scene& s,
             auto result = gpu.compute(s.stack, options, &s.geometry);
             ASSERT_TRUE(result) << what << ": " << result.error();
             expectSameLinks(cpu, *result, s.stack, what);
+            if (test != ConnectionTest::Surface || threshold != 0.001f)
+                continue;
+            // The planes of the shown triangles only (what a build makes), on both sides.
+            const core::SurfaceGeometry shown =
+                core::makeSurfaceGeometry(s.mesh, s.topology, s.view, &s.stack);
+            ASSERT_FALSE(shown.entry.empty());
+            const core::Connectivity cpuShown = core::computeConnectivity(s.stack, options, &shown);
+            EXPECT_EQ(cpuShown.links, cpu.links) << what << " (shown triangles only)";
+            auto gpuShown = gpu.compute(s.stack, options, &shown);
+            ASSERT_TRUE(gpuShown) << what << ": " << gpuShown.error();
+            expectSameLinks(cpu, *gpuShown, s.stack, what + " (shown triangles only)");
         }
 }
 

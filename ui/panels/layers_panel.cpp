@@ -172,7 +172,6 @@ QImage LayersPanel::thumbnail(const core::Layers& layers, std::uint32_t layer, Q
     QImage image(width, height, QImage::Format_RGB32);
 
     const QRgb background = backgroundRgb();
-    const auto& triangles = layers.geometry.triangles;
     const auto& regionOf = layers.segmentation.region;
     const auto sampleColor = [&](int x, int y) -> QRgb {
         const std::size_t pixel = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
@@ -182,9 +181,8 @@ QImage LayersPanel::thumbnail(const core::Layers& layers, std::uint32_t layer, Q
         if (style == ThumbnailStyle::Regions && fragment < regionOf.size())
             return toRgb(render::regionColor(regionOf[fragment]));
         // A headlight on the triangle's view-space plane, as the viewport shades.
-        const std::uint32_t triangle = stack.triangle[fragment];
-        const float facing =
-            triangle < triangles.size() ? std::abs(triangles[triangle].plane.z) : 1.0f;
+        const core::SurfaceTriangle* triangle = layers.geometry.find(stack.triangle[fragment]);
+        const float facing = triangle ? std::abs(triangle->plane.z) : 1.0f;
         const float light = 0.25f + 0.75f * facing;
         return qRgb(int(205 * light), int(208 * light), int(214 * light));
     };

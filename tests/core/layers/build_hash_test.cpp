@@ -64,11 +64,12 @@ Hashes build(const core::Mesh& mesh, int width, int height, unsigned threads) {
     Hash planes;
     planes.bytes(&layers.geometry.rays, sizeof layers.geometry.rays);
     for (std::uint32_t t : layers.stack.triangle) {
-        if (t >= layers.geometry.triangles.size()) {
+        const core::SurfaceTriangle* found = layers.geometry.find(t);
+        if (!found) {
             ADD_FAILURE() << "fragment triangle " << t << " has no plane";
             return out;
         }
-        const core::SurfaceTriangle& tri = layers.geometry.triangles[t];
+        const core::SurfaceTriangle& tri = *found;
         planes.bytes(&tri.plane, sizeof tri.plane);
         planes.bytes(tri.corners.data(), sizeof tri.corners);
         planes.bytes(&tri.component, sizeof tri.component);

@@ -254,24 +254,26 @@ TEST(SurfaceGeometry, WithAStackOnlyTheShownTrianglesGetPlanes) {
     const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
     const core::SurfaceGeometry all = core::makeSurfaceGeometry(mesh, topology, view);
     const core::SurfaceGeometry shown = core::makeSurfaceGeometry(mesh, topology, view, &stack);
-    ASSERT_EQ(shown.triangles.size(), mesh.triangleCount());
+    ASSERT_EQ(shown.entry.size(), mesh.triangleCount());
     std::vector<bool> inView(mesh.triangleCount(), false);
     for (std::uint32_t t : stack.triangle)
         inView[t] = true;
     std::size_t computed = 0, skipped = 0;
-    for (std::size_t t = 0; t < shown.triangles.size(); ++t) {
-        const core::SurfaceTriangle& got = shown.triangles[t];
+    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+        const core::SurfaceTriangle* got = shown.find(t);
         if (inView[t]) {
             ++computed;
-            EXPECT_EQ(got.plane, all.triangles[t].plane) << "triangle " << t;
-            EXPECT_EQ(got.corners, all.triangles[t].corners) << "triangle " << t;
-            EXPECT_EQ(got.component, all.triangles[t].component) << "triangle " << t;
+            ASSERT_NE(got, nullptr) << "triangle " << t;
+            EXPECT_EQ(got->plane, all.triangles[t].plane) << "triangle " << t;
+            EXPECT_EQ(got->corners, all.triangles[t].corners) << "triangle " << t;
+            EXPECT_EQ(got->component, all.triangles[t].component) << "triangle " << t;
         } else {
             ++skipped;
-            EXPECT_EQ(got.plane, glm::vec4(0.0f)) << "triangle " << t;
-            EXPECT_EQ(got.component, core::kNone) << "triangle " << t;
+            EXPECT_EQ(got, nullptr) << "triangle " << t;
         }
     }
+    // Only the shown triangles are kept, in id order.
+    EXPECT_EQ(shown.triangles.size(), computed);
     EXPECT_GT(computed, 100u);
     EXPECT_GT(skipped, 100u); // back faces and hidden sides are skipped
 }
