@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Charts for the automatic UV layout: grown over the welded surface by normal deviation, across
-// shared edges and contacts (T-junctions) but never across sharp or non-manifold edges, and kept
-// discs while they grow.
+// shared edges and contacts (T-junctions, and edges of more than two triangles where two
+// continue each other) but never across sharp edges, and kept discs while they grow.
 #include <algorithm>
 #include <cmath>
 #include <queue>
@@ -74,11 +74,9 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
                 if (joinsSmoothly(t, e))
                     push(topo.edgeNeighbors[t][std::size_t(e)]);
                 // Across contacts (T-junctions) as across shared edges.
-                const std::uint32_t side = 3 * t + std::uint32_t(e);
-                for (std::uint32_t k = surface.contactBegin[side];
-                     k < surface.contactBegin[side + 1]; ++k)
-                    if (smooth(t, surface.contacts[k] / 3))
-                        push(surface.contacts[k] / 3);
+                for (const std::uint32_t other : surface.contactsOf(3 * t + std::uint32_t(e)))
+                    if (smooth(t, other / 3))
+                        push(other / 3);
             }
         };
         pushNeighbours(seed);
@@ -106,11 +104,8 @@ std::vector<std::vector<std::uint32_t>> growCharts(const Surface& surface,
                 // Unless a side through that vertex lies along the chart (a contact): then the
                 // triangle fills the corner between the two.
                 const auto alongChart = [&](int e) {
-                    const std::uint32_t side = 3 * t + std::uint32_t(e);
-                    for (std::uint32_t k = surface.contactBegin[side];
-                         k < surface.contactBegin[side + 1]; ++k)
-                        if (chartOf[surface.contacts[k] / 3] == chart &&
-                            smooth(t, surface.contacts[k] / 3))
+                    for (const std::uint32_t other : surface.contactsOf(3 * t + std::uint32_t(e)))
+                        if (chartOf[other / 3] == chart && smooth(t, other / 3))
                             return true;
                     return false;
                 };
@@ -147,10 +142,8 @@ std::array<std::vector<std::uint32_t>, 2> splitChart(const Surface& surface,
         for (int e = 0; e < 3; ++e) {
             if (const std::uint32_t u = topo.edgeNeighbors[t][std::size_t(e)]; u != kNone)
                 add(u);
-            const std::uint32_t side = 3 * t + std::uint32_t(e);
-            for (std::uint32_t k = surface.contactBegin[side]; k < surface.contactBegin[side + 1];
-                 ++k)
-                add(surface.contacts[k] / 3);
+            for (const std::uint32_t other : surface.contactsOf(3 * t + std::uint32_t(e)))
+                add(other / 3);
         }
         adjacentBegin[i + 1] = std::uint32_t(adjacent.size());
     }

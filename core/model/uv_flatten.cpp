@@ -119,9 +119,7 @@ std::vector<OnSide> tJunctions(const Surface& surface, const Chart& chart, Local
                                 b = surface.cornerOfSide(side, 1);
             const glm::dvec3 p = surface.position[a], d = surface.position[b] - p;
             const double lengthSquared = glm::dot(d, d);
-            for (std::uint32_t k = surface.contactBegin[side]; k < surface.contactBegin[side + 1];
-                 ++k) {
-                const std::uint32_t other = surface.contacts[k];
+            for (const std::uint32_t other : surface.contactsOf(side)) {
                 if (!std::binary_search(chart.triangles.begin(), chart.triangles.end(), other / 3))
                     continue;
                 for (int end = 0; end < 2; ++end) {

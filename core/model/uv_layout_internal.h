@@ -8,6 +8,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -43,6 +44,11 @@ struct Surface {
      */
     std::vector<std::uint32_t> contactBegin;
     std::vector<std::uint32_t> contacts;
+
+    /** The contacts of side 3 t + e. */
+    std::span<const std::uint32_t> contactsOf(std::uint32_t side) const {
+        return {contacts.data() + contactBegin[side], contacts.data() + contactBegin[side + 1]};
+    }
 
     std::uint32_t cornerOfSide(std::uint32_t side, int k) const {
         return topology->corners[side / 3][(side % 3 + std::uint32_t(k)) % 3];
