@@ -253,12 +253,16 @@ core::Result<core::Connectivity> GpuConnectivity::compute(const core::LayerStack
     if (surface && !geometry->entry.empty()) {
         // Only the triangles in view are kept (SurfaceGeometry::entry): each fragment names its
         // triangle's entry, which the same-triangle test compares as it would the ids.
-        std::vector<std::uint32_t> entries(fragments);
-        for (std::size_t f = 0; f < fragments; ++f) {
-            const std::uint32_t t = stack.triangle[f];
-            entries[f] = t < geometry->entry.size() ? geometry->entry[t] : core::kNone;
+        if (geometry->fragmentEntry.size() == fragments) {
+            upload(kFragmentTriangles, geometry->fragmentEntry.data(), bytes[kFragmentTriangles]);
+        } else {
+            std::vector<std::uint32_t> entries(fragments);
+            for (std::size_t f = 0; f < fragments; ++f) {
+                const std::uint32_t t = stack.triangle[f];
+                entries[f] = t < geometry->entry.size() ? geometry->entry[t] : core::kNone;
+            }
+            upload(kFragmentTriangles, entries.data(), bytes[kFragmentTriangles]);
         }
-        upload(kFragmentTriangles, entries.data(), bytes[kFragmentTriangles]);
     } else {
         upload(kFragmentTriangles, stack.triangle.data(), bytes[kFragmentTriangles]);
     }

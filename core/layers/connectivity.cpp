@@ -35,9 +35,14 @@ struct Ray {
     float length2;
 };
 
-inline Ray rayAt(const PixelRays& rays, float px, float py) {
-    const glm::vec3 d = rays.direction(px, py);
-    return {rays.origin(px, py), d, glm::dot(d, d)};
+/**
+ * Sets out to the ray through (px, py) in place: a Ray returned and copied was stored in pieces
+ * and loaded whole, which stalled the loads (a quarter of the connectivity's time).
+ */
+inline void setRay(const PixelRays& rays, float px, float py, Ray& out) {
+    out.origin = rays.origin(px, py);
+    out.direction = rays.direction(px, py);
+    out.length2 = glm::dot(out.direction, out.direction);
 }
 
 /** Depth at which ray meets plane; NaN when grazing or degenerate (so any test with it fails). */
@@ -87,6 +92,9 @@ public:
            const SurfaceGeometry* geometry, Connectivity& out)
         : m_stack(stack), m_geometry(options.test == ConnectionTest::Surface ? geometry : nullptr),
           m_out(out) {
+        if (m_geometry && !m_geometry->entry.empty() &&
+            m_geometry->fragmentEntry.size() == stack.fragmentCount())
+            m_fragmentEntry = m_geometry->fragmentEntry.data();
         const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
         m_limit = options.threshold / scale;
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
@@ -98,6 +106,9 @@ public:
      * Links the fragments of rows [y0, y1) to their right and down neighbours and back. Each
      * pixel's fragments are loaded once and reused as the left side of the next pair.
      */
+    /** Whether a pixel loaded so far had more than kMaxLinkedLayers fragments. */
+    bool truncated() const { return m_truncated; }
+
     void rows(int y0, int y1) {
         if (m_geometry)
             rowsOf<true>(y0, y1);
@@ -124,7 +135,7 @@ private:
                 const float px = float(x) + 0.5f, py = float(y) + 0.5f;
                 Ray rayP{};
                 if constexpr (kSurface)
-                    rayP = rayAt(m_geometry->rays, px, py);
+                    setRay(m_geometry->rays, px, py, rayP);
                 if (y + 1 < h && m_stack.layerCount(p + std::size_t(w)) != 0) {
                     load<kSurface>(*down, p + std::size_t(w));
                     pair<kSurface>(*cur, *down, rayP, px, py, 0.0f, 1.0f, kDown, kUp);
@@ -140,16 +151,22 @@ private:
         }
     }
 
-    template <bool kSurface> void load(Side& side, std::size_t pixel) const {
+    template <bool kSurface> void load(Side& side, std::size_t pixel) {
         side.first = m_stack.offsets[pixel];
-        side.count = std::min(m_stack.layerCount(pixel), kMaxLinkedLayers);
+        const std::uint32_t layers = m_stack.layerCount(pixel);
+        m_truncated = m_truncated || layers > kMaxLinkedLayers;
+        side.count = std::min(layers, kMaxLinkedLayers);
         const float* depth = m_stack.depth.data() + side.first;
         std::copy_n(depth, side.count, side.depth);
         if constexpr (kSurface) {
             const std::uint32_t* triangle = m_stack.triangle.data() + side.first;
             for (std::uint32_t k = 0; k < side.count; ++k) {
                 side.triangle[k] = triangle[k];
-                side.info[k] = m_geometry->find(triangle[k]);
+                side.info[k] = m_fragmentEntry
+                                   ? (m_fragmentEntry[side.first + k] != kNone
+                                          ? &m_geometry->triangles[m_fragmentEntry[side.first + k]]
+                                          : nullptr)
+                                   : m_geometry->find(triangle[k]);
                 side.component[k] = side.info[k] ? side.info[k]->component : kNone;
             }
         }
@@ -157,7 +174,8 @@ private:
 
     /** The rays of one pixel pair and the lazily computed plane depths on them. */
     struct PairRays {
-        Ray p, q, m;
+        const Ray& p;
+        Ray q, m;
     };
 
     /**
@@ -282,12 +300,11 @@ private:
     template <bool kSurface>
     void pair(const Side& a, const Side& b, const Ray& rayP, float px, float py, float dx, float dy,
               int forward, int backward) {
-        PairRays rays{};
+        PairRays rays{rayP, {}, {}};
         if constexpr (kSurface) {
             const PixelRays& pixelRays = m_geometry->rays;
-            rays.p = rayP;
-            rays.q = rayAt(pixelRays, px + dx, py + dy);
-            rays.m = rayAt(pixelRays, px + 0.5f * dx, py + 0.5f * dy);
+            setRay(pixelRays, px + dx, py + dy, rays.q);
+            setRay(pixelRays, px + 0.5f * dx, py + 0.5f * dy, rays.m);
             if (++m_stamp == 0) { // wrapped: forget every stamp
                 for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ})
                     std::fill_n(lazy->stamp, kMaxLinkedLayers, 0u);
@@ -338,7 +355,9 @@ private:
 
     const LayerStack& m_stack;
     const SurfaceGeometry* m_geometry;
+    const std::uint32_t* m_fragmentEntry = nullptr; // SurfaceGeometry::fragmentEntry, if made
     Connectivity& m_out;
+    bool m_truncated = false;
     float m_limit = 0.0f;
     float m_contactLimit = 0.0f;
     float m_creaseCos = 0.0f;
@@ -427,23 +446,26 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
         });
         return geometry;
     }
-    // Only the triangles the view shows: mark them from the fragments, number them in id order,
-    // and compute their planes over the threads (each plane depends on its triangle only).
-    constexpr std::uint32_t kShown = 0;
+    // Only the triangles the view shows, numbered as the fragments first show them (the
+    // connectivity then reads them nearly in order, not scattered by id); their planes over the
+    // threads (each plane depends on its triangle only).
     geometry.entry.assign(count, kNone);
     std::uint32_t* entry = geometry.entry.data();
     const std::vector<std::uint32_t>& fragmentTriangles = stack->triangle;
-    parallelRanges(int(fragmentTriangles.size()), 0, [&](int, int begin, int end) {
-        for (int f = begin; f < end; ++f)
-            if (const std::uint32_t t = fragmentTriangles[std::size_t(f)]; t < count)
-                std::atomic_ref<std::uint32_t>(entry[t]).store(kShown, std::memory_order_relaxed);
-    });
+    geometry.fragmentEntry.resize(fragmentTriangles.size());
     std::vector<std::uint32_t> ids;
-    for (std::size_t t = 0; t < count; ++t)
-        if (entry[t] == kShown) {
-            entry[t] = std::uint32_t(ids.size());
-            ids.push_back(std::uint32_t(t));
+    for (std::size_t f = 0; f < fragmentTriangles.size(); ++f) {
+        const std::uint32_t t = fragmentTriangles[f];
+        std::uint32_t e = kNone;
+        if (t < count) {
+            e = entry[t];
+            if (e == kNone) {
+                e = entry[t] = std::uint32_t(ids.size());
+                ids.push_back(t);
+            }
         }
+        geometry.fragmentEntry[f] = e;
+    }
     geometry.triangles.resize(ids.size());
     parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
         for (int i = begin; i < end; ++i)
@@ -460,18 +482,21 @@ Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOpti
     out.links.assign(4 * stack.fragmentCount(), 0);
     if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1)
         return out;
-    out.truncated = stack.maxLayers() > kMaxLinkedLayers;
     // Each part writes the right/left links of its rows and the down links of its rows plus the
     // up links of the row below: every byte has one writer, whatever the split.
     // Bands of kRowsPerChunk rows go to whichever thread is free next.
     const int chunks = (stack.height + kRowsPerChunk - 1) / kRowsPerChunk;
     std::atomic<int> nextChunk{0};
+    std::atomic<bool> truncated{false};
     parallelRanges(chunks, options.threads, [&](int, int, int) {
         auto linker = std::make_unique<Linker>(stack, options, geometry, out);
         for (int chunk = nextChunk.fetch_add(1); chunk < chunks; chunk = nextChunk.fetch_add(1))
             linker->rows(chunk * kRowsPerChunk,
                          std::min(stack.height, (chunk + 1) * kRowsPerChunk));
+        if (linker->truncated())
+            truncated = true;
     });
+    out.truncated = truncated;
     return out;
 }
 

@@ -89,6 +89,12 @@ struct SurfaceGeometry {
     PixelRays rays;
     std::vector<SurfaceTriangle> triangles;
     std::vector<std::uint32_t> entry;
+    /**
+     * With entries: each fragment's triangle entry (kNone when unknown), for the stack the
+     * geometry was made from. The triangles are numbered in the order the fragments first show
+     * them, so a pass over the pixels reads them nearly in order.
+     */
+    std::vector<std::uint32_t> fragmentEntry;
 
     /** Triangle id's entry, or nullptr when unknown (out of range or not in view). */
     const SurfaceTriangle* find(std::uint32_t id) const {
@@ -101,8 +107,8 @@ struct SurfaceGeometry {
 /**
  * Planes of mesh's triangles in view's view space, with topology's corners/components, indexed by
  * triangle id. With stack, only the triangles with a fragment in it are computed and kept (the
- * only ones the Surface test reads; SurfaceGeometry::entry finds them): a mesh of millions of
- * triangles costs a word per triangle, not a plane.
+ * only ones the Surface test reads; SurfaceGeometry::entry and fragmentEntry find them): a mesh of
+ * millions of triangles costs a word per triangle, not a plane.
  */
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
                                     const View& view, const LayerStack* stack = nullptr);
