@@ -4,12 +4,15 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <numbers>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "core/io/mesh_io_in_process.h"
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
@@ -29,13 +32,36 @@ struct TrefoilScene {
     std::vector<core::StrokePoint> path;
 };
 
-/** Built once on first use (about a second); the benchmarks only read it. */
+/**
+ * Built once on first use (about a second); the benchmarks only read it. With
+ * LAYERPAINT_BENCH_MODEL naming a model file, the layer benchmarks (capture, planes,
+ * connectivity, segmentation) measure that model instead, framed as `layerpaint-cli bench`
+ * frames it, at LAYERPAINT_BENCH_SIZE (WIDTHxHEIGHT, default 1280x720); the stroke benchmarks
+ * follow the trefoil's centre line and need the trefoil.
+ */
 inline const TrefoilScene& trefoilScene() {
     static const TrefoilScene scene = [] {
         TrefoilScene s;
-        s.mesh = std::make_shared<core::Mesh>(core::makeTrefoil());
+        int width = 1280, height = 720;
+        if (const char* size = std::getenv("LAYERPAINT_BENCH_SIZE"))
+            std::sscanf(size, "%dx%d", &width, &height);
+        if (const char* path = std::getenv("LAYERPAINT_BENCH_MODEL")) {
+            auto loaded = core::loadMeshInProcess(path);
+            if (!loaded) {
+                std::fprintf(stderr, "%s\n", loaded.error().c_str());
+                std::exit(1);
+            }
+            s.mesh = std::make_shared<core::Mesh>(std::move(loaded).value());
+            core::Camera camera;
+            camera.frame(s.mesh->bounds());
+            camera.orbit(30.0f, 20.0f);
+            s.view = camera.view(width, height);
+        } else {
+            s.mesh = std::make_shared<core::Mesh>(core::makeTrefoil());
+            s.view =
+                core::Camera::fromOrbit(s.mesh->bounds(), 30.0f, 20.0f, 1.6f).view(width, height);
+        }
         s.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*s.mesh));
-        s.view = core::Camera::fromOrbit(s.mesh->bounds(), 30.0f, 20.0f, 1.6f).view(1280, 720);
         core::CpuLayerCapturer capturer;
         capturer.setMesh(*s.mesh);
         auto built = core::buildLayers(capturer, *s.mesh, *s.topology, s.view, {});
