@@ -76,7 +76,7 @@ void SurfacePlanes(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     for (auto _ : state) {
         const core::SurfaceGeometry geometry =
-            core::makeSurfaceGeometry(*s.mesh, *s.topology, s.view);
+            core::makeSurfaceGeometry(*s.mesh, *s.topology, s.view, &s.layers.stack);
         benchmark::DoNotOptimize(geometry.triangles.data());
     }
 }

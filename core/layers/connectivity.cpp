@@ -467,10 +467,19 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
         geometry.fragmentEntry[f] = e;
     }
     geometry.triangles.resize(ids.size());
-    parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
-        for (int i = begin; i < end; ++i)
-            computePlane(ids[std::size_t(i)], geometry.triangles[std::size_t(i)]);
-    });
+    if (4 * ids.size() >= count) {
+        // Most of the mesh in view: read its arrays in id order (the entries are scattered).
+        parallelRanges(int(count), 0, [&](int, int begin, int end) {
+            for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
+                if (entry[t] != kNone)
+                    computePlane(t, geometry.triangles[entry[t]]);
+        });
+    } else {
+        parallelRanges(int(ids.size()), 0, [&](int, int begin, int end) {
+            for (int i = begin; i < end; ++i)
+                computePlane(ids[std::size_t(i)], geometry.triangles[std::size_t(i)]);
+        });
+    }
     return geometry;
 }
 
