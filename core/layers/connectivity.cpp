@@ -106,15 +106,15 @@ public:
      * Links the fragments of rows [y0, y1) to their right and down neighbours and back. Each
      * pixel's fragments are loaded once and reused as the left side of the next pair.
      */
-    /** Whether a pixel loaded so far had more than kMaxLinkedLayers fragments. */
-    bool truncated() const { return m_truncated; }
-
     void rows(int y0, int y1) {
         if (m_geometry)
             rowsOf<true>(y0, y1);
         else
             rowsOf<false>(y0, y1);
     }
+
+    /** Whether a pixel loaded so far had more than kMaxLinkedLayers fragments. */
+    bool truncated() const { return m_truncated; }
 
 private:
     template <bool kSurface> void rowsOf(int y0, int y1) {
@@ -160,13 +160,11 @@ private:
         std::copy_n(depth, side.count, side.depth);
         if constexpr (kSurface) {
             const std::uint32_t* triangle = m_stack.triangle.data() + side.first;
+            const std::uint32_t* entries = m_fragmentEntry ? m_fragmentEntry + side.first : nullptr;
             for (std::uint32_t k = 0; k < side.count; ++k) {
                 side.triangle[k] = triangle[k];
-                side.info[k] = m_fragmentEntry
-                                   ? (m_fragmentEntry[side.first + k] != kNone
-                                          ? &m_geometry->triangles[m_fragmentEntry[side.first + k]]
-                                          : nullptr)
-                                   : m_geometry->find(triangle[k]);
+                side.info[k] =
+                    entries ? m_geometry->atEntry(entries[k]) : m_geometry->find(triangle[k]);
                 side.component[k] = side.info[k] ? side.info[k]->component : kNone;
             }
         }

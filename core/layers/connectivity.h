@@ -100,7 +100,11 @@ struct SurfaceGeometry {
     const SurfaceTriangle* find(std::uint32_t id) const {
         if (entry.empty())
             return id < triangles.size() ? &triangles[id] : nullptr;
-        return id < entry.size() && entry[id] != kNone ? &triangles[entry[id]] : nullptr;
+        return id < entry.size() ? atEntry(entry[id]) : nullptr;
+    }
+    /** The triangle of an entry (as entry and fragmentEntry hold), or nullptr for kNone. */
+    const SurfaceTriangle* atEntry(std::uint32_t index) const {
+        return index != kNone ? &triangles[index] : nullptr;
     }
 };
 
