@@ -140,8 +140,8 @@ struct ViewState {
 struct DabTexel {
     int x = 0, y = 0;
     float weight = 0.0f;
-    // The stroke's slot of the texel's tile, or -1 where the texel cannot take paint (set
-    // between the passes).
+    // The stroke's slot of the texel's tile (-1 until between the passes where the tile had
+    // none).
     std::int32_t slot = -1;
 };
 
@@ -156,6 +156,7 @@ struct DabTriangle {
     float least = 0.0f;
     bool scanned = false;
     bool whole = false;
+    bool newTiles = false; // some of its texels are in tiles without a slot
 };
 
 struct StrokeTile {
@@ -246,6 +247,7 @@ struct PaintTarget::Context {
     // the least coverage it saw of each triangle and the tiles it touched first (with the
     // position of the texel, (triangle << 32) | texel, to list them in the one loop's order).
     std::vector<std::uint32_t> slotTexels;
+    std::vector<std::vector<std::uint32_t>> partSlotTexels; // the first pass's counts per part
     std::vector<std::uint8_t> slotPart;
     std::vector<std::vector<float>> partLeast;
     std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> partTouched;

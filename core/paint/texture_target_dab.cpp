@@ -64,8 +64,11 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
         const LayerStack& stack = layers.stack;
 
-        // Triangle si: its texels the dab reaches go to texels; what the second pass needs of it.
-        const auto scan = [&](std::size_t si, std::vector<DabTexel>& texels) {
+        // Triangle si: its texels the dab reaches go to texels, counted per slot of their tile
+        // in slotCounts (those of tiles without a slot get theirs between the passes); what the
+        // second pass needs of it.
+        const auto scan = [&](std::size_t si, std::vector<DabTexel>& texels,
+                              std::uint32_t* slotCounts) {
             DabTriangle out;
             out.begin = out.end = std::uint32_t(texels.size());
             const TriangleSetup& s = setups[si];
@@ -115,8 +118,10 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 p[k] = c.vertices[s.vertex[std::size_t(r.corner[k])]];
             const float invArea = float(1.0 / double(r.area));
             const std::int32_t* tileSlots = c.tileSlot[pageIndex].data();
-            // The tile of the texel looked at: its stroke coverage (nullptr: no slot, all 0).
+            // The tile of the texel looked at: its slot and stroke coverage (nullptr: no slot
+            // yet, all 0).
             std::uint32_t seenTile = kNone;
+            std::int32_t seenSlot = -1;
             const float* seenAlpha = nullptr;
             int seenWidth = 0;
             // The least coverage of the texels that take nothing from this dab (the second pass
@@ -132,8 +137,9 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                                                std::uint32_t(tx / kTextureTile);
                     if (tile != seenTile) {
                         seenTile = tile;
-                        const std::int32_t slot = tileSlots[tile];
-                        seenAlpha = slot >= 0 ? c.slots[std::size_t(slot)].alpha.data() : nullptr;
+                        seenSlot = tileSlots[tile];
+                        seenAlpha =
+                            seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
                         seenWidth =
                             std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
                     }
@@ -181,7 +187,11 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     const float weight = tip.weight(glm::vec2(px, py) - center, distance);
                     if (!(weight > 0.0f))
                         return rejected();
-                    texels.push_back({tx, ty, weight});
+                    texels.push_back({tx, ty, weight, seenSlot});
+                    if (seenSlot >= 0)
+                        ++slotCounts[seenSlot];
+                    else
+                        out.newTiles = true;
                 });
             out.scanned = true;
             out.whole = x0 == r.minX && x1 == r.maxX && y0 == r.minY && y1 == r.maxY;
@@ -197,53 +207,50 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             c.dabTexels.resize(chunks);
         std::atomic<std::size_t> next{0};
         HelperThreads& helpers = HelperThreads::shared();
-        helpers.run(count >= kDabParallelFrom ? helpers.width() : 1, [&](int) {
+        const int parts = count >= kDabParallelFrom ? helpers.width() : 1;
+        if (c.partSlotTexels.size() < std::size_t(parts))
+            c.partSlotTexels.resize(std::size_t(parts));
+        helpers.run(parts, [&](int part) {
+            std::vector<std::uint32_t>& slotCounts = c.partSlotTexels[std::size_t(part)];
+            slotCounts.assign(c.slotsUsed, 0u);
             for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
                 std::vector<DabTexel>& texels = c.dabTexels[k];
                 texels.clear();
                 for (std::size_t si = k * kDabChunk, end = std::min(count, si + kDabChunk);
                      si < end; ++si)
-                    c.dabTriangles[si] = scan(si, texels);
+                    c.dabTriangles[si] = scan(si, texels, slotCounts.data());
             }
         });
+        c.slotTexels.assign(c.slotsUsed, 0u);
+        for (int part = 0; part < parts; ++part)
+            for (std::size_t k = 0; k < c.slotsUsed; ++k)
+                c.slotTexels[k] += c.partSlotTexels[std::size_t(part)][k];
     }
 
-    // Between the passes, on this thread in the triangles' order: the stroke's slot of each
-    // texel's tile, made where the one loop would make it (at the first texel of the tile that
-    // can still take paint), and the least coverage of the texels that cannot.
+    // Between the passes, on this thread in the triangles' order: the texels of tiles that had
+    // no slot get the stroke's slot of their tile, made where the one loop would make it (at
+    // the first texel of the tile that takes paint). A new slot's coverage is all 0, as the
+    // first pass took it to be.
     std::size_t reaching = 0;
     for (std::size_t si = 0; si < count; ++si) {
-        DabTriangle& found = c.dabTriangles[si];
+        const DabTriangle& found = c.dabTriangles[si];
         if (!found.scanned)
             continue;
-        const Page& page = m_pages[found.page];
-        const auto tilesX = std::uint32_t(page.tilesX);
-        std::int32_t* tileSlots = c.tileSlot[found.page].data();
+        reaching += found.end - found.begin;
+        if (!found.newTiles)
+            continue;
+        const auto tilesX = std::uint32_t(m_pages[found.page].tilesX);
         DabTexel* texels = c.dabTexels[si / kDabChunk].data();
         for (std::uint32_t h = found.begin; h < found.end; ++h) {
             DabTexel& texel = texels[h];
+            if (texel.slot >= 0)
+                continue;
             const std::uint32_t tile = std::uint32_t(texel.y / kTextureTile) * tilesX +
                                        std::uint32_t(texel.x / kTextureTile);
-            std::int32_t slot = tileSlots[tile];
-            if (slot >= 0) {
-                const int tileWidth = std::min(
-                    kTextureTile, page.image.width - (texel.x / kTextureTile) * kTextureTile);
-                const float old = c.slots[std::size_t(slot)].alpha[std::size_t(
-                    (texel.y % kTextureTile) * tileWidth + texel.x % kTextureTile)];
-                // At the dab's opacity already, it stays so through this dab.
-                if (old >= dabOpacity) {
-                    found.least = std::min(found.least, old);
-                    texel.slot = -1;
-                    continue;
-                }
-            } else {
-                slot = c.slotFor(*this, found.page, tile);
-            }
-            texel.slot = slot;
-            if (c.slotTexels.size() <= std::size_t(slot))
-                c.slotTexels.resize(std::size_t(slot) + 1, 0u);
-            ++c.slotTexels[std::size_t(slot)];
-            ++reaching;
+            texel.slot = c.slotFor(*this, found.page, tile);
+            if (c.slotTexels.size() <= std::size_t(texel.slot))
+                c.slotTexels.resize(std::size_t(texel.slot) + 1, 0u);
+            ++c.slotTexels[std::size_t(texel.slot)];
         }
     }
 
@@ -309,7 +316,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             const DabTexel* texels = c.dabTexels[si / kDabChunk].data();
             for (std::uint32_t h = found.begin; h < found.end; ++h) {
                 const DabTexel& texel = texels[h];
-                if (texel.slot < 0 || c.slotPart[std::size_t(texel.slot)] != part)
+                if (c.slotPart[std::size_t(texel.slot)] != part)
                     continue;
                 const int tx = texel.x, ty = texel.y;
                 if (texel.slot != lastSlot) {
