@@ -91,6 +91,30 @@ int channelTexelBytes(PaintChannel channel) {
     return components(channel) + 1;
 }
 
+std::int16_t emptyTexelByte(float value) {
+    using layer_bytes::toByte;
+    if (!(value >= 0.0f && value <= 1.0f))
+        return -1;
+    if (value == 0.0f)
+        return toByte(value);
+    // Below this a·value could leave the normal floats, where the bound does not hold.
+    if (value < kEmptyTexelMinCoverage)
+        return -1;
+    // A power of two: a·value and (a·value)/a are exact.
+    int exponent = 0;
+    if (std::frexp(value, &exponent) == 0.5f)
+        return toByte(value);
+    // (a·value)/a is value·(1 + d1)·(1 + d2), |d| ≤ 2⁻²⁴: within 2.1 units in the last place
+    // of value, 4.2 steps of the binade below. toByte() never falls as its argument grows, so
+    // equal bytes 8 steps either side hold for every float between.
+    float below = value, above = value;
+    for (int step = 0; step < 8; ++step) {
+        below = std::nextafter(below, 0.0f);
+        above = std::nextafter(above, 2.0f);
+    }
+    return toByte(below) == toByte(above) ? toByte(value) : std::int16_t(-1);
+}
+
 std::size_t PaintLayer::bytes() const {
     std::size_t n = mask ? mask->allocatedBytes() : 0;
     for (const auto& plane : channels)

@@ -261,15 +261,28 @@ inline float fromByte(std::uint8_t b) {
 }
 } // namespace layer_bytes
 
+/** The least coverage for which paintTexel() takes the bytes of emptyTexelByte(). */
+inline constexpr float kEmptyTexelMinCoverage = 0x1p-60f;
+
+/**
+ * The byte paintTexel() gives a component painted with value into a texel that held nothing at
+ * the stroke's start (coverage 0), where that byte does not depend on the stroke's coverage a
+ * (kEmptyTexelMinCoverage..1); -1 where it does. There paintTexel() computes (a·value)/a: value
+ * itself for 0 and powers of two, else a float within 2.1 units in the last place of value.
+ */
+std::int16_t emptyTexelByte(float value);
+
 /**
  * A paint layer's texel after a stroke's paint of value (components 1 or 3, 0..1) with stroke
  * coverage a (0..1) over its value at the stroke's start: source-over (the coverage grows) or,
  * with lockTransparency, only the colour moves towards value in proportion to a. texel and start
- * have components + 1 bytes (the last is the coverage). Inline: a dab calls it per texel and
- * channel.
+ * have components + 1 bytes (the last is the coverage). empty, if given, holds emptyTexelByte()
+ * of each value: a texel that held nothing takes those bytes without the arithmetic (the same
+ * bytes). Inline: a dab calls it per texel and channel.
  */
 inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components,
-                       const float* value, float a, bool lockTransparency) {
+                       const float* value, float a, bool lockTransparency,
+                       const std::int16_t* empty = nullptr) {
     using layer_bytes::fromByte;
     using layer_bytes::toByte;
     a = std::clamp(a, 0.0f, 1.0f);
@@ -283,7 +296,12 @@ inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int compo
         return;
     }
     const float out = a + a0 * (1.0f - a);
+    const bool wasEmpty = empty != nullptr && start[components] == 0 && a >= kEmptyTexelMinCoverage;
     for (int k = 0; k < components; ++k) {
+        if (wasEmpty && empty[k] >= 0) {
+            texel[k] = std::uint8_t(empty[k]);
+            continue;
+        }
         const float premultiplied = a * value[k] + (1.0f - a) * a0 * fromByte(start[k]);
         texel[k] = toByte(out > 0.0f ? premultiplied / out : 0.0f);
     }

@@ -313,7 +313,8 @@ private:
     bool m_lock = false;
     std::array<TiledPlane*, kPaintChannels> m_planes{};
     TiledPlane* m_mask = nullptr;
-    std::array<float, 5> m_values{}; // sRGB base colour, roughness, metallic (0..1)
+    std::array<float, 5> m_values{};            // sRGB base colour, roughness, metallic (0..1)
+    std::array<std::int16_t, 5> m_emptyBytes{}; // their emptyTexelByte()
     std::uint8_t m_maskValue = 255;
 };
 

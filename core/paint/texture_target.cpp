@@ -403,6 +403,8 @@ void TextureTarget::strokeStarted() {
         m_values[std::size_t(k)] = float(c.colorBytes[std::size_t(k)]) / 255.0f;
     m_values[3] = std::clamp(std::isfinite(brush.roughness) ? brush.roughness : 0.0f, 0.0f, 1.0f);
     m_values[4] = std::clamp(std::isfinite(brush.metallic) ? brush.metallic : 0.0f, 0.0f, 1.0f);
+    for (std::size_t k = 0; k < m_values.size(); ++k)
+        m_emptyBytes[k] = emptyTexelByte(m_values[k]);
 }
 
 void TextureTarget::strokeEnded() {
@@ -434,7 +436,8 @@ void TextureTarget::writeTexel(std::uint32_t pageIndex, int x, int y, const std:
             if (eraser)
                 eraseTexel(texel, start, n, cover);
             else
-                paintTexel(texel, start, n, &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock);
+                paintTexel(texel, start, n, &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock,
+                           &m_emptyBytes[ch == 0 ? 0 : ch + 2]);
         }
         return;
     case StrokeMode::Mask: {

@@ -382,7 +382,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                             eraseTexel(channelTiles[ch] + at, start, n, cover);
                         else
                             paintTexel(channelTiles[ch] + at, start, n,
-                                       &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock);
+                                       &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock,
+                                       &m_emptyBytes[ch == 0 ? 0 : ch + 2]);
                     }
                 } else {
                     writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);

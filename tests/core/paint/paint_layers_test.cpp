@@ -264,4 +264,60 @@ TEST(PaintTexel, SourceOverLockTransparencyAndErase) {
     EXPECT_EQ(erased[1], 150);
 }
 
+// A texel that held nothing at the stroke's start takes emptyTexelByte() where it is known,
+// without the arithmetic: the bytes must be those of the arithmetic, for every brush value a
+// colour byte gives, values on and near a byte's rounding boundary (roughness 0.3, 0.5) and
+// coverages from the least the short cut takes to 1.
+TEST(PaintTexel, EmptyTexelBytesAreThoseOfTheArithmetic) {
+    std::vector<float> values = {0.0f, 1.0f, 0.5f, 0.25f, 0.3f, 0.7f, 0.125f, 1e-20f, 0x1p-60f};
+    for (int k = 0; k <= 255; ++k) {
+        values.push_back(float(k) / 255.0f);
+        // Half way between two bytes, and a step either side of it.
+        const float boundary = (float(k) + 0.5f) / 255.0f;
+        values.push_back(boundary);
+        values.push_back(std::nextafter(boundary, 0.0f));
+        values.push_back(std::nextafter(boundary, 1.0f));
+    }
+    std::vector<float> coverages = {1.0f,
+                                    std::nextafter(1.0f, 0.0f),
+                                    0.5f,
+                                    core::kEmptyTexelMinCoverage,
+                                    std::nextafter(core::kEmptyTexelMinCoverage, 1.0f),
+                                    1e-10f};
+    std::uint32_t seed = 12345u;
+    for (int i = 0; i < 4000; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        coverages.push_back(float(seed >> 8) / float(1u << 24) + 1e-7f);
+    }
+    int known = 0;
+    const std::uint8_t empty[2] = {77, 0};
+    for (const float value : values) {
+        const std::int16_t byte = core::emptyTexelByte(value);
+        known += byte >= 0 ? 1 : 0;
+        for (const float a : coverages) {
+            std::uint8_t plain[2], fast[2];
+            core::paintTexel(plain, empty, 1, &value, a, false);
+            core::paintTexel(fast, empty, 1, &value, a, false, &byte);
+            ASSERT_EQ(plain[0], fast[0]) << "value " << value << " coverage " << a;
+            ASSERT_EQ(plain[1], fast[1]);
+        }
+    }
+    // The colour bytes, 0, 1 and powers of two are known; values on a boundary are not.
+    EXPECT_GT(known, 256);
+    EXPECT_EQ(core::emptyTexelByte(0.5f), 128);
+    EXPECT_EQ(core::emptyTexelByte(200.0f / 255.0f), 200);
+    EXPECT_EQ(core::emptyTexelByte(std::nextafter(128.5f / 255.0f, 1.0f)), -1);
+    EXPECT_EQ(core::emptyTexelByte(-0.1f), -1);
+
+    // A texel that held paint takes the arithmetic whatever empty says.
+    const std::uint8_t painted[2] = {77, 40};
+    const float value = 0.5f;
+    const std::int16_t wrong = 3;
+    std::uint8_t plain[2], fast[2];
+    core::paintTexel(plain, painted, 1, &value, 0.4f, false);
+    core::paintTexel(fast, painted, 1, &value, 0.4f, false, &wrong);
+    EXPECT_EQ(plain[0], fast[0]);
+    EXPECT_EQ(plain[1], fast[1]);
+}
+
 } // namespace
