@@ -168,6 +168,8 @@ struct StrokeTile {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
     // And per row y of the tile, its texels [rowX0[y], rowX1[y]) (none: rowX0[y] >= rowX1[y]).
     std::array<std::uint8_t, kTextureTile> rowX0{}, rowX1{};
+    // On a paint layer, that dab's tiles of the layer's channels it writes (nullptr: not one).
+    std::array<std::uint8_t*, 3> layerTiles{};
     std::vector<float> groupAlpha; // alpha when the current dab group first touched it
     std::uint32_t group = 0;       // that group
 };

@@ -191,6 +191,24 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
         }
     }
 
+    // Where each channel's topmost source is a paint layer's texels at full opacity without a
+    // mask, a texel it covers fully (coverage byte 255) ends with that layer's bytes: the blend
+    // gives v + 1·(l - v), within 2⁻²³ of l = fromByte(b), and toByte() of that is b whatever v
+    // the layers below left. A channel without a source keeps the base's bytes.
+    std::array<const ChannelSource*, kPaintChannels> top{};
+    bool opaqueTops = byteRoundTrips() && fromByte(255) == 1.0f;
+    for (std::size_t j = 0; j < count; ++j)
+        top[sources[j].first == 0 ? 0 : sources[j].first - 2] = &sources[j];
+    for (const ChannelSource* src : top)
+        opaqueTops =
+            opaqueTops &&
+            (src == nullptr || (src->texels != nullptr && !src->masked && src->opacity == 1.0f));
+    const auto topByte = [&](std::size_t ch, std::size_t local, int k, std::uint8_t base) {
+        const ChannelSource* src = top[ch];
+        return src != nullptr ? src->texels[local * std::size_t(src->comps + 1) + std::size_t(k)]
+                              : base;
+    };
+
     const TileRect tr = tileRectOf(m_pages[page], tile);
     const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
     const bool material = mr != nullptr;
@@ -200,6 +218,26 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
         for (int x = span.x0; x < span.x1; ++x) {
             const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
             const std::size_t local = row + std::size_t(x - tr.x);
+            if (opaqueTops && std::all_of(top.begin(), top.end(), [&](const ChannelSource* src) {
+                    return src == nullptr || src->texels[local * std::size_t(src->comps + 1) +
+                                                         std::size_t(src->comps)] == 255;
+                })) {
+                if ((channels & 1u) != 0) {
+                    for (int k = 0; k < 3; ++k)
+                        color[i + std::size_t(k)] =
+                            topByte(0, local, k, baseColor[i + std::size_t(k)]);
+                    color[i + 3] = baseColor[i + 3];
+                }
+                if (material) {
+                    mr[i] = baseMr[i];
+                    if ((channels & 2u) != 0)
+                        mr[i + 1] = topByte(1, local, 0, baseMr[i + 1]);
+                    if ((channels & 4u) != 0)
+                        mr[i + 2] = topByte(2, local, 0, baseMr[i + 2]);
+                    mr[i + 3] = baseMr[i + 3];
+                }
+                continue;
+            }
             // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
             // operations on each value in the same order.
             float v[5] = {};

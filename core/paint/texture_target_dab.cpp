@@ -350,17 +350,21 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 alpha[local] = cover;
                 if (!tileTouched) {
                     tileTouched = true;
-                    if (c.claim(*st))
+                    if (c.claim(*st)) {
                         firsts.emplace_back((std::uint64_t(si) << 32) | h, std::uint32_t(lastSlot));
-                    // The paint layer's tiles of the channels painted, found (and made) once.
-                    if (onChannels) {
-                        const std::uint32_t tile = st->key.tile;
-                        const std::lock_guard lock(allocating);
-                        for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
-                            channelTiles[ch] = m_planes[ch] != nullptr
-                                                   ? m_planes[ch]->writableTile(pageIndex, tile)
-                                                   : nullptr;
+                        // The paint layer's tiles of the channels painted, found (and made) once
+                        // a dab.
+                        if (onChannels) {
+                            const std::uint32_t tile = st->key.tile;
+                            const std::lock_guard lock(allocating);
+                            for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
+                                st->layerTiles[ch] =
+                                    m_planes[ch] != nullptr
+                                        ? m_planes[ch]->writableTile(pageIndex, tile)
+                                        : nullptr;
+                        }
                     }
+                    channelTiles = st->layerTiles;
                 }
                 Context::wrote(*st, tx % kTextureTile, ty % kTextureTile);
                 if (onBase) {

@@ -7,6 +7,24 @@
 
 namespace core {
 
+namespace {
+
+/** Fills out with copies of the texel fill (texelBytes bytes; out holds whole texels). */
+void fillTexels(std::span<std::uint8_t> out, const std::uint8_t* fill, std::size_t texelBytes) {
+    if (out.empty())
+        return;
+    if (std::all_of(fill, fill + texelBytes, [&](std::uint8_t b) { return b == fill[0]; })) {
+        std::memset(out.data(), fill[0], out.size());
+        return;
+    }
+    // The fill texel, then the filled part copied onto the rest, doubling.
+    std::memcpy(out.data(), fill, texelBytes);
+    for (std::size_t done = texelBytes; done < out.size(); done *= 2)
+        std::memcpy(out.data() + done, out.data(), std::min(done, out.size() - done));
+}
+
+} // namespace
+
 TiledPlane::TiledPlane(std::vector<PageSize> pages, int texelBytes,
                        std::array<std::uint8_t, 4> fill)
     : m_pages(std::move(pages)), m_texelBytes(std::clamp(texelBytes, 1, 4)), m_fill(fill) {
@@ -52,12 +70,8 @@ std::uint8_t* TiledPlane::writableTile(std::uint32_t page, std::uint32_t tile) {
         const auto texelBytes = std::size_t(m_texelBytes);
         t.resize(texels * texelBytes); // zeros: a blank paint layer's fill
         const auto fillEnd = m_fill.begin() + std::ptrdiff_t(texelBytes);
-        if (texels > 0 && std::any_of(m_fill.begin(), fillEnd, [](std::uint8_t b) { return b; })) {
-            // The fill texel, then the filled part copied onto the rest, doubling.
-            std::memcpy(t.data(), m_fill.data(), texelBytes);
-            for (std::size_t done = texelBytes; done < t.size(); done *= 2)
-                std::memcpy(t.data() + done, t.data(), std::min(done, t.size() - done));
-        }
+        if (std::any_of(m_fill.begin(), fillEnd, [](std::uint8_t b) { return b; }))
+            fillTexels(t, m_fill.data(), texelBytes);
         m_allocated += t.size();
     }
     return t.data();
@@ -114,12 +128,10 @@ bool TiledPlane::readTile(TileKey key, std::span<std::uint8_t> out) const {
     const std::size_t size = tileBytes(key);
     if (size == 0 || out.size() != size)
         return false;
-    if (const std::uint8_t* data = tile(key.page, key.tile)) {
+    if (const std::uint8_t* data = tile(key.page, key.tile))
         std::memcpy(out.data(), data, size);
-    } else {
-        for (std::size_t i = 0; i < size; i += std::size_t(m_texelBytes))
-            std::memcpy(out.data() + i, m_fill.data(), std::size_t(m_texelBytes));
-    }
+    else
+        fillTexels(out, m_fill.data(), std::size_t(m_texelBytes));
     return true;
 }
 
