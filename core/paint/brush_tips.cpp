@@ -198,18 +198,6 @@ TipImage tipFromRgba(int width, int height, std::span<const std::uint8_t> rgba) 
     return t;
 }
 
-float roundFalloff(float d, float r, float hardness) {
-    if (!(r > 0.0f) || d >= r)
-        return 0.0f;
-    const float t = d / r;
-    const float h = std::clamp(hardness, 0.0f, 1.0f);
-    if (t <= h)
-        return 1.0f;
-    // Smooth from full weight at the hard core to nothing at the rim.
-    const float s = (t - h) / (1.0f - h);
-    return 1.0f - s * s * (3.0f - 2.0f * s);
-}
-
 void TipSampler::setup(const TipImage* image, float hardness, float radius, float angle) {
     m_image = image && image->width > 0 && image->height > 0 ? image : nullptr;
     m_hardness = hardness;

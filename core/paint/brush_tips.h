@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -66,8 +67,21 @@ const TipImage* builtinTipImage(std::string_view name);
  */
 TipImage tipFromRgba(int width, int height, std::span<const std::uint8_t> rgba);
 
-/** The round dab's weight in [0, 1] at distance d from the centre of a dab of radius r. */
-float roundFalloff(float d, float r, float hardness);
+/**
+ * The round dab's weight in [0, 1] at distance d from the centre of a dab of radius r. Inline: a
+ * dab calls it per texel.
+ */
+inline float roundFalloff(float d, float r, float hardness) {
+    if (!(r > 0.0f) || d >= r)
+        return 0.0f;
+    const float t = d / r;
+    const float h = std::clamp(hardness, 0.0f, 1.0f);
+    if (t <= h)
+        return 1.0f;
+    // Smooth from full weight at the hard core to nothing at the rim.
+    const float s = (t - h) / (1.0f - h);
+    return 1.0f - s * s * (3.0f - 2.0f * s);
+}
 
 /**
  * A fixed-algorithm PRNG (SplitMix64): the same numbers on every platform and library, so a
