@@ -138,7 +138,7 @@ struct ViewState {
 
 /** A texel a texture dab reaches (its page's texel coordinates) and the falloff weight there. */
 struct DabTexel {
-    int x = 0, y = 0;
+    std::uint16_t x = 0, y = 0; // pages are at most 65535 texels wide and high
     float weight = 0.0f;
     // The stroke's slot of the texel's tile (-1 until between the passes where the tile had
     // none).

@@ -127,12 +127,13 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
     for (std::size_t m = 0; m < mesh->materials.size(); ++m) {
         const Material& material = mesh->materials[m];
         const int texture = material.baseColorTexture;
-        // Texel indices are 32-bit: a texture beyond 16384² is baked into a new page instead.
-        const bool textured = options.reuseTextures && texture >= 0 &&
-                              !mesh->textures[std::size_t(texture)].empty() &&
-                              std::int64_t(mesh->textures[std::size_t(texture)].width) *
-                                      mesh->textures[std::size_t(texture)].height <=
-                                  std::int64_t(16384) * 16384;
+        // Texel indices are 32-bit and a dab keeps texel coordinates in 16 bits: a texture
+        // beyond 16384² or 65535 texels on a side is baked into a new page instead.
+        const Image* image = texture >= 0 ? &mesh->textures[std::size_t(texture)] : nullptr;
+        const bool textured =
+            options.reuseTextures && image != nullptr && !image->empty() &&
+            std::int64_t(image->width) * image->height <= std::int64_t(16384) * 16384 &&
+            image->width <= 65535 && image->height <= 65535;
         std::uint32_t index = kNone;
         if (textured) {
             for (std::size_t p = 0; p < pages.size(); ++p)

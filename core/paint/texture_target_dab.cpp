@@ -187,7 +187,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     const float weight = tip.weight(glm::vec2(px, py) - center, distance);
                     if (!(weight > 0.0f))
                         return rejected();
-                    texels.push_back({tx, ty, weight, seenSlot});
+                    texels.push_back({std::uint16_t(tx), std::uint16_t(ty), weight, seenSlot});
                     if (seenSlot >= 0)
                         ++slotCounts[seenSlot];
                     else
@@ -318,7 +318,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                 const DabTexel& texel = texels[h];
                 if (c.slotPart[std::size_t(texel.slot)] != part)
                     continue;
-                const int tx = texel.x, ty = texel.y;
+                const int tx = int(texel.x), ty = int(texel.y);
                 if (texel.slot != lastSlot) {
                     lastSlot = texel.slot;
                     st = &c.slots[std::size_t(lastSlot)];
