@@ -140,8 +140,8 @@ struct ViewState {
 struct DabTexel {
     std::uint16_t x = 0, y = 0; // pages are at most 65535 texels wide and high
     float weight = 0.0f;
-    // The stroke's slot of the texel's tile (-1 until between the passes where the tile had
-    // none).
+    // The stroke's slot of the texel's tile; -1 until between the passes where the tile had
+    // none yet.
     std::int32_t slot = -1;
 };
 
