@@ -295,6 +295,13 @@ inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int compo
         texel[components] = start[components];
         return;
     }
+    if (a == 1.0f) {
+        // Full coverage: out is 1 + a0·0 = 1 and the premultiplied value is exactly value.
+        for (int k = 0; k < components; ++k)
+            texel[k] = toByte(value[k]);
+        texel[components] = toByte(1.0f);
+        return;
+    }
     const float out = a + a0 * (1.0f - a);
     const bool wasEmpty = empty != nullptr && start[components] == 0 && a >= kEmptyTexelMinCoverage;
     for (int k = 0; k < components; ++k) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -318,6 +319,42 @@ TEST(PaintTexel, EmptyTexelBytesAreThoseOfTheArithmetic) {
     core::paintTexel(fast, painted, 1, &value, 0.4f, false, &wrong);
     EXPECT_EQ(plain[0], fast[0]);
     EXPECT_EQ(plain[1], fast[1]);
+}
+
+// paintTexel() takes a short cut at full coverage; its bytes are those of the source-over
+// arithmetic (written out here) for every start byte and coverage byte, and values on and beside
+// every rounding boundary.
+TEST(PaintTexel, FullCoverageBytesAreThoseOfTheArithmetic) {
+    using core::layer_bytes::fromByte;
+    using core::layer_bytes::toByte;
+    const auto arithmetic = [](const std::uint8_t start[2], float value, float a) {
+        const float a0 = fromByte(start[1]);
+        const float out = a + a0 * (1.0f - a);
+        const float premultiplied = a * value + (1.0f - a) * a0 * fromByte(start[0]);
+        return std::pair(toByte(out > 0.0f ? premultiplied / out : 0.0f), toByte(out));
+    };
+    std::vector<float> values = {0.0f, 1.0f, 1e-20f};
+    for (int k = 0; k <= 255; ++k) {
+        const float boundary = (float(k) + 0.5f) / 255.0f;
+        values.insert(values.end(), {float(k) / 255.0f, boundary, std::nextafter(boundary, 0.0f),
+                                     std::nextafter(boundary, 1.0f)});
+    }
+    int checked = 0;
+    for (int colour = 0; colour <= 255; colour += 5)
+        for (int cover = 0; cover <= 255; ++cover) {
+            const std::uint8_t start[2] = {std::uint8_t(colour), std::uint8_t(cover)};
+            for (const float value : values)
+                for (const float a : {1.0f, std::nextafter(1.0f, 0.0f), 0.5f}) {
+                    std::uint8_t texel[2];
+                    core::paintTexel(texel, start, 1, &value, a, false);
+                    const auto [c, alpha] = arithmetic(start, value, a);
+                    ASSERT_EQ(texel[0], c) << "value " << value << " start " << colour << ", "
+                                           << cover << " coverage " << a;
+                    ASSERT_EQ(texel[1], alpha);
+                    ++checked;
+                }
+        }
+    EXPECT_GT(checked, 1000000);
 }
 
 } // namespace
