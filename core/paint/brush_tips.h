@@ -108,6 +108,9 @@ public:
     /** image nullptr: the round falloff with hardness. angle in radians, clockwise on screen. */
     void setup(const TipImage* image, float hardness, float radius, float angle);
     bool textured() const { return m_image != nullptr; }
+    /** The round falloff's parameters (those weight() uses without an image). */
+    float radius() const { return m_radius; }
+    float hardness() const { return m_hardness; }
 
     /** Weight at offset (pixels from the dab centre, y down), distance = |offset|. */
     float weight(glm::vec2 offset, float distance) const {

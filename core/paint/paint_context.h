@@ -157,6 +157,8 @@ struct DabTriangle {
     bool scanned = false;
     bool whole = false;
     bool newTiles = false; // some of its texels are in tiles without a slot
+    // The slot of all its texels if they share one (found in the first pass), else -1.
+    std::int32_t slot = -1;
 };
 
 struct StrokeTile {

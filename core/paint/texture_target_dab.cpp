@@ -7,6 +7,7 @@
 // pass over the triangles in order, whatever the number of threads.
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <limits>
 #include <mutex>
 #include <utility>
@@ -18,6 +19,10 @@
 #include "core/paint/texture_tile_layout.h"
 #include "core/paint/uv_raster.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace core {
 
 using uv::scanUv;
@@ -26,6 +31,24 @@ using uv::UvTriangle;
 using uv::wrapIndex;
 
 namespace {
+
+#if defined(__SSE2__)
+/** roundFalloff() at four distances: the same operations, lane by lane. */
+inline __m128 roundFalloff4(__m128 d, float r, float hardness) {
+    if (!(r > 0.0f))
+        return _mm_setzero_ps();
+    const float h = std::clamp(hardness, 0.0f, 1.0f);
+    const __m128 one = _mm_set1_ps(1.0f);
+    const __m128 t = _mm_div_ps(d, _mm_set1_ps(r));
+    const __m128 s = _mm_div_ps(_mm_sub_ps(t, _mm_set1_ps(h)), _mm_set1_ps(1.0f - h));
+    const __m128 rim =
+        _mm_sub_ps(one, _mm_mul_ps(_mm_mul_ps(s, s), _mm_sub_ps(_mm_set1_ps(3.0f),
+                                                                _mm_mul_ps(_mm_set1_ps(2.0f), s))));
+    const __m128 core = _mm_cmple_ps(t, _mm_set1_ps(h));
+    const __m128 weight = _mm_or_ps(_mm_and_ps(core, one), _mm_andnot_ps(core, rim));
+    return _mm_andnot_ps(_mm_cmpge_ps(d, _mm_set1_ps(r)), weight);
+}
+#endif
 
 /** Triangles a worker of the first pass takes at a time. */
 constexpr std::size_t kDabChunk = 32;
@@ -61,6 +84,8 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const glm::vec2 center = c.center;
         const TipSampler& tip = c.tip;
         const float radius = c.radius;
+        const bool roundTip = !tip.textured();
+        const float tipRadius = tip.radius(), hardness = tip.hardness();
         const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
         const LayerStack& stack = layers.stack;
 
@@ -127,77 +152,199 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             // The least coverage of the texels that take nothing from this dab (the second pass
             // adds the others): at most what it is after the dab, as triangleCover needs.
             float least = std::numeric_limits<float>::infinity();
+            // The slot of the texels found so far while they share one (kNoSlotYet: none found).
+            constexpr std::int32_t kNoSlotYet = -2;
+            std::int32_t sharedSlot = kNoSlotYet;
 
-            scanUv(
-                r, x0, x1, y0, y1,
-                [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
-                    const int tx = wrap ? wrapIndex(x, width) : x;
-                    const int ty = wrap ? wrapIndex(y, height) : y;
-                    const std::uint32_t tile = std::uint32_t(ty / kTextureTile) * tilesX +
-                                               std::uint32_t(tx / kTextureTile);
-                    if (tile != seenTile) {
-                        seenTile = tile;
-                        seenSlot = tileSlots[tile];
-                        seenAlpha =
-                            seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
-                        seenWidth =
-                            std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
-                    }
-                    const std::size_t local =
-                        std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
-                        std::size_t(tx % kTextureTile);
-                    const float old = seenAlpha ? seenAlpha[local] : 0.0f;
-                    const auto rejected = [&] { least = std::min(least, old); };
-                    // The coverage never falls in a stroke and a dab raises it to its
-                    // opacity at most: a texel there already takes nothing from this dab.
-                    if (old >= dabOpacity)
-                        return rejected();
-                    const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
-                                l2 = float(e2) * invArea;
-                    const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
-                    if (!(w > kMinW))
-                        return rejected();
-                    const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
-                    const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
-                    // The map's fragment at the texel's pixel (as Context::mapAt()). Texels
-                    // up to a pixel outside the map's box can be at its surface's outline.
-                    const float fx = px - windowX, fy = py - windowY;
-                    if (!(fx >= -1.0f && fx < windowW + 1.0f && fy >= -1.0f && fy < windowH + 1.0f))
-                        return rejected();
-                    const std::uint32_t mapped =
-                        fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
-                            ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
-                            : kNone;
-                    // On its surface (as Context::onMapSurface()).
-                    bool onMap = mapped == own;
-                    if (!onMap && mapped != kNone) {
-                        const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
+            // The texels found so far: texels holds room for n more from used on after room(n)
+            // (written through outTexels).
+            std::size_t used = texels.size();
+            DabTexel* outTexels = texels.data();
+            const auto room = [&](std::size_t n) {
+                if (texels.size() < used + n) {
+                    texels.resize(used + n);
+                    outTexels = texels.data();
+                }
+            };
+            // A texel inside the triangle, at barycentric weights l and window position (px,
+            // py); near: in front of the eye, within a pixel of the map's box and inside the
+            // dab's disc; round: the round tip's weight there (if the tip is round). Rejected
+            // texels give their coverage to least. Inlined in both paths below.
+            const auto visit = [&](int x, int y, float l0, float l1, float l2, float px, float py,
+                                   float distance, bool near, float round)
+                __attribute__((always_inline)) {
+                const int tx = wrap ? wrapIndex(x, width) : x;
+                const int ty = wrap ? wrapIndex(y, height) : y;
+                const std::uint32_t tile =
+                    std::uint32_t(ty / kTextureTile) * tilesX + std::uint32_t(tx / kTextureTile);
+                if (tile != seenTile) {
+                    seenTile = tile;
+                    seenSlot = tileSlots[tile];
+                    seenAlpha =
+                        seenSlot >= 0 ? c.slots[std::size_t(seenSlot)].alpha.data() : nullptr;
+                    seenWidth = std::min(kTextureTile, width - (tx / kTextureTile) * kTextureTile);
+                }
+                const std::size_t local = std::size_t(ty % kTextureTile) * std::size_t(seenWidth) +
+                                          std::size_t(tx % kTextureTile);
+                const float old = seenAlpha ? seenAlpha[local] : 0.0f;
+                // The coverage never falls in a stroke and a dab raises it to its opacity at
+                // most: a texel there already takes nothing from this dab.
+                if (old >= dabOpacity || !near) {
+                    least = std::min(least, old);
+                    return;
+                }
+                // The map's fragment at the texel's pixel (as Context::mapAt()).
+                const float fx = px - windowX, fy = py - windowY;
+                const std::uint32_t mapped =
+                    fx >= 0.0f && fx < windowW && fy >= 0.0f && fy < windowH
+                        ? window[std::size_t(fy) * windowStride + std::size_t(fx)]
+                        : kNone;
+                // On its surface (as Context::onMapSurface()), or covered at its edge.
+                if (mapped != own) {
+                    const glm::vec3 point = l0 * p[0].view + l1 * p[1].view + l2 * p[2].view;
+                    bool onMap = false;
+                    if (mapped != kNone) {
                         const glm::vec4& plane = setups[mapped].plane;
                         onMap = plane != glm::vec4(0.0f) &&
                                 std::fabs(glm::dot(glm::vec3(plane), point) + plane.w) <=
                                     -point.z * toleranceScale + toleranceOffset;
                     }
-                    const float distance = glm::length(glm::vec2(px, py) - center);
-                    if (!(distance < radius))
-                        return rejected();
-                    if (!onMap &&
-                        !c.coveredAtEdge(stack, own,
-                                         l0 * p[0].view + l1 * p[1].view + l2 * p[2].view, px, py))
-                        return rejected();
-                    const float weight = tip.weight(glm::vec2(px, py) - center, distance);
-                    if (!(weight > 0.0f))
-                        return rejected();
-                    texels.push_back({std::uint16_t(tx), std::uint16_t(ty), weight, seenSlot});
-                    if (seenSlot >= 0)
-                        ++slotCounts[seenSlot];
-                    else
-                        out.newTiles = true;
+                    if (!onMap && !c.coveredAtEdge(stack, own, point, px, py)) {
+                        least = std::min(least, old);
+                        return;
+                    }
+                }
+                const float weight =
+                    roundTip ? round : tip.weight(glm::vec2(px, py) - center, distance);
+                if (!(weight > 0.0f)) {
+                    least = std::min(least, old);
+                    return;
+                }
+                outTexels[used++] = {std::uint16_t(tx), std::uint16_t(ty), weight, seenSlot};
+                if (sharedSlot != seenSlot)
+                    sharedSlot = sharedSlot == kNoSlotYet ? seenSlot : -1;
+                if (seenSlot >= 0)
+                    ++slotCounts[seenSlot];
+                else
+                    out.newTiles = true;
+            };
+            // Texels up to a pixel outside the map's box can be at its surface's outline.
+            const float nearW = windowW + 1.0f, nearH = windowH + 1.0f;
+#if defined(__SSE2__)
+            if (uv::edgesFitInt32(r, x0, x1, y0, y1)) {
+                // Four texels of a row at a time: the same operations in the same order as the
+                // scalar path below, lane by lane, so the same floats.
+                const __m128 invA = _mm_set1_ps(invArea);
+                const __m128 w0 = _mm_set1_ps(p[0].w), w1 = _mm_set1_ps(p[1].w),
+                             w2 = _mm_set1_ps(p[2].w);
+                const __m128 sx0 = _mm_set1_ps(p[0].sx), sx1 = _mm_set1_ps(p[1].sx),
+                             sx2 = _mm_set1_ps(p[2].sx);
+                const __m128 sy0 = _mm_set1_ps(p[0].sy), sy1 = _mm_set1_ps(p[1].sy),
+                             sy2 = _mm_set1_ps(p[2].sy);
+                const __m128 minW = _mm_set1_ps(kMinW), minusOne = _mm_set1_ps(-1.0f);
+                const __m128 winX = _mm_set1_ps(windowX), winY = _mm_set1_ps(windowY);
+                const __m128 limX = _mm_set1_ps(nearW), limY = _mm_set1_ps(nearH);
+                const __m128 cx = _mm_set1_ps(center.x), cy = _mm_set1_ps(center.y);
+                const __m128 rad = _mm_set1_ps(radius);
+                __m128i step4[3], bias[3];
+                std::int32_t step[3];
+                for (int k = 0; k < 3; ++k) {
+                    step[k] = std::int32_t(uv::edgeStepX(r, k));
+                    step4[k] = _mm_set1_epi32(std::int32_t(4u * std::uint32_t(step[k])));
+                    bias[k] = _mm_set1_epi32(std::int32_t(r.bias[k]));
+                }
+                const __m128i minusOneI = _mm_set1_epi32(-1);
+                alignas(16) float l[3][4], pxs[4], pys[4], ds[4], rounds[4] = {};
+                uv::forRowsOf(r, x0, y0, y1, [&](int y, const std::int64_t e[3]) {
+                    room(std::size_t(x1 - x0 + 1));
+                    // Lane i: texel x + i. Past x1 the values may wrap; those lanes are unused.
+                    __m128i ek[3];
+                    for (int k = 0; k < 3; ++k) {
+                        const auto at = [&](int i) {
+                            return std::int32_t(std::uint32_t(e[k]) +
+                                                std::uint32_t(i) * std::uint32_t(step[k]));
+                        };
+                        ek[k] = _mm_set_epi32(at(3), at(2), at(1), at(0));
+                    }
+                    for (int x = x0; x <= x1; x += 4) {
+                        const __m128i in = _mm_and_si128(
+                            _mm_and_si128(
+                                _mm_cmpgt_epi32(_mm_add_epi32(ek[0], bias[0]), minusOneI),
+                                _mm_cmpgt_epi32(_mm_add_epi32(ek[1], bias[1]), minusOneI)),
+                            _mm_cmpgt_epi32(_mm_add_epi32(ek[2], bias[2]), minusOneI));
+                        int covered = _mm_movemask_ps(_mm_castsi128_ps(in));
+                        if (x1 - x < 3)
+                            covered &= (1 << (x1 - x + 1)) - 1;
+                        if (covered != 0) {
+                            const __m128 l0 = _mm_mul_ps(_mm_cvtepi32_ps(ek[0]), invA);
+                            const __m128 l1 = _mm_mul_ps(_mm_cvtepi32_ps(ek[1]), invA);
+                            const __m128 l2 = _mm_mul_ps(_mm_cvtepi32_ps(ek[2]), invA);
+                            const __m128 w =
+                                _mm_add_ps(_mm_add_ps(_mm_mul_ps(l0, w0), _mm_mul_ps(l1, w1)),
+                                           _mm_mul_ps(l2, w2));
+                            const __m128 px = _mm_div_ps(
+                                _mm_add_ps(_mm_add_ps(_mm_mul_ps(l0, sx0), _mm_mul_ps(l1, sx1)),
+                                           _mm_mul_ps(l2, sx2)),
+                                w);
+                            const __m128 py = _mm_div_ps(
+                                _mm_add_ps(_mm_add_ps(_mm_mul_ps(l0, sy0), _mm_mul_ps(l1, sy1)),
+                                           _mm_mul_ps(l2, sy2)),
+                                w);
+                            const __m128 fx = _mm_sub_ps(px, winX), fy = _mm_sub_ps(py, winY);
+                            const __m128 dx = _mm_sub_ps(px, cx), dy = _mm_sub_ps(py, cy);
+                            const __m128 d =
+                                _mm_sqrt_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)));
+                            const __m128 near = _mm_and_ps(
+                                _mm_and_ps(
+                                    _mm_and_ps(_mm_cmpgt_ps(w, minW), _mm_cmplt_ps(d, rad)),
+                                    _mm_and_ps(_mm_cmpge_ps(fx, minusOne), _mm_cmplt_ps(fx, limX))),
+                                _mm_and_ps(_mm_cmpge_ps(fy, minusOne), _mm_cmplt_ps(fy, limY)));
+                            const int nearMask = _mm_movemask_ps(near);
+                            _mm_store_ps(l[0], l0);
+                            _mm_store_ps(l[1], l1);
+                            _mm_store_ps(l[2], l2);
+                            _mm_store_ps(pxs, px);
+                            _mm_store_ps(pys, py);
+                            _mm_store_ps(ds, d);
+                            if (roundTip)
+                                _mm_store_ps(rounds, roundFalloff4(d, tipRadius, hardness));
+                            for (unsigned bits = unsigned(covered); bits != 0; bits &= bits - 1) {
+                                const int i = std::countr_zero(bits);
+                                visit(x + i, y, l[0][i], l[1][i], l[2][i], pxs[i], pys[i], ds[i],
+                                      (nearMask >> i) & 1, rounds[i]);
+                            }
+                        }
+                        for (int k = 0; k < 3; ++k)
+                            ek[k] = _mm_add_epi32(ek[k], step4[k]);
+                    }
                 });
+            } else
+#endif
+            {
+                scanUv(r, x0, x1, y0, y1,
+                       [&](int x, int y, std::int64_t e0, std::int64_t e1, std::int64_t e2) {
+                           room(1);
+                           const float l0 = float(e0) * invArea, l1 = float(e1) * invArea,
+                                       l2 = float(e2) * invArea;
+                           const float w = l0 * p[0].w + l1 * p[1].w + l2 * p[2].w;
+                           const float px = (l0 * p[0].sx + l1 * p[1].sx + l2 * p[2].sx) / w;
+                           const float py = (l0 * p[0].sy + l1 * p[1].sy + l2 * p[2].sy) / w;
+                           const float fx = px - windowX, fy = py - windowY;
+                           const float distance = glm::length(glm::vec2(px, py) - center);
+                           const bool near = w > kMinW && distance < radius && fx >= -1.0f &&
+                                             fx < nearW && fy >= -1.0f && fy < nearH;
+                           visit(x, y, l0, l1, l2, px, py, distance, near,
+                                 roundTip && near ? roundFalloff(distance, tipRadius, hardness)
+                                                  : 0.0f);
+                       });
+            }
             out.scanned = true;
             out.whole = x0 == r.minX && x1 == r.maxX && y0 == r.minY && y1 == r.maxY;
             out.page = pageIndex;
             out.least = least;
-            out.end = std::uint32_t(texels.size());
+            out.slot = std::max(sharedSlot, -1);
+            texels.resize(used);
+            out.end = std::uint32_t(used);
             return out;
         };
 
@@ -304,19 +451,30 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const std::uint8_t* before = nullptr;
         bool tileTouched = false;
         std::size_t tileWidth = 0, tileTexels = 0;
+        const std::uint8_t* slotPart = c.slotPart.data();
+        // The page of the triangle at hand.
+        std::uint32_t pageIndex = kNone;
+        Page* page = nullptr;
+        int width = 0, height = 0;
+        std::uint8_t* pixels = nullptr;
         for (std::size_t si = 0; si < count; ++si) {
             const DabTriangle& found = c.dabTriangles[si];
-            if (!found.scanned)
+            // A triangle whose texels all are in another part's tile.
+            if (!found.scanned || (found.slot >= 0 && slotPart[found.slot] != part))
                 continue;
+            const bool shared = found.slot >= 0;
             float least = std::numeric_limits<float>::infinity();
-            const std::uint32_t pageIndex = found.page;
-            Page& page = m_pages[pageIndex];
-            const int width = page.image.width, height = page.image.height;
-            std::uint8_t* pixels = m_stack->baseColor(pageIndex).data();
+            if (found.page != pageIndex) {
+                pageIndex = found.page;
+                page = &m_pages[pageIndex];
+                width = page->image.width;
+                height = page->image.height;
+                pixels = m_stack->baseColor(pageIndex).data();
+            }
             const DabTexel* texels = c.dabTexels[si / kDabChunk].data();
             for (std::uint32_t h = found.begin; h < found.end; ++h) {
                 const DabTexel& texel = texels[h];
-                if (c.slotPart[std::size_t(texel.slot)] != part)
+                if (!shared && slotPart[std::size_t(texel.slot)] != part)
                     continue;
                 const int tx = int(texel.x), ty = int(texel.y);
                 if (texel.slot != lastSlot) {
@@ -372,7 +530,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     // for the eraser.
                     const std::size_t at = std::size_t(ty) * std::size_t(width) + std::size_t(tx);
                     blendTexel(srgb, pixels + at * 4, before + local * 4,
-                               eraser ? &page.original.rgba[at * 4] : c.colorBytes.data(),
+                               eraser ? &page->original.rgba[at * 4] : c.colorBytes.data(),
                                eraser ? nullptr : &c.colorLinear[0], cover);
                 } else if (onChannels) {
                     // As writeTexel(), with the tiles at hand.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <utility>
 
 #include <glm/vec2.hpp>
@@ -79,25 +80,58 @@ inline bool setUpUv(const glm::vec2 uv[3], int width, int height, UvTriangle& r)
     return r.minX <= r.maxX && r.minY <= r.maxY;
 }
 
+/** How edge k's function changes from a texel to the next one to its right. */
+inline std::int64_t edgeStepX(const UvTriangle& r, int k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    return -(r.y[b] - r.y[a]) * kSub;
+}
+
+/**
+ * Calls fn(y, e) for every row y in [y0, y1], e[k] the edge function k at the centre of texel
+ * (x0, y); the texel (x, y) is covered when e[k] + (x - x0) * edgeStepX(r, k) + r.bias[k] >= 0
+ * for every k.
+ */
+template <typename Fn> inline void forRowsOf(const UvTriangle& r, int x0, int y0, int y1, Fn&& fn) {
+    const std::int64_t px = std::int64_t(x0) * kSub + kSub / 2;
+    for (int y = y0; y <= y1; ++y) {
+        const std::int64_t py = std::int64_t(y) * kSub + kSub / 2;
+        std::int64_t e[3];
+        for (int k = 0; k < 3; ++k) {
+            const int a = (k + 1) % 3, b = (k + 2) % 3;
+            e[k] = edgeFunction(r.x[a], r.y[a], r.x[b], r.y[b], px, py);
+        }
+        fn(y, static_cast<const std::int64_t*>(e));
+    }
+}
+
+/**
+ * Whether the edge functions at every texel centre of [x0, x1] × [y0, y1] fit in 31 bits, so that
+ * they (taken modulo 2^32 in 32-bit lanes) and their float conversions are exact.
+ */
+inline bool edgesFitInt32(const UvTriangle& r, int x0, int x1, int y0, int y1) {
+    constexpr std::int64_t kLimit = std::int64_t(1) << 30;
+    for (int k = 0; k < 3; ++k) {
+        const int a = (k + 1) % 3, b = (k + 2) % 3;
+        // Linear in the texel centre: largest at a corner of the box.
+        for (const int y : {y0, y1})
+            for (const int x : {x0, x1})
+                if (std::abs(edgeFunction(r.x[a], r.y[a], r.x[b], r.y[b],
+                                          std::int64_t(x) * kSub + kSub / 2,
+                                          std::int64_t(y) * kSub + kSub / 2)) >= kLimit)
+                    return false;
+    }
+    return true;
+}
+
 /**
  * Calls fn(x, y, e0, e1, e2) for every covered texel (x, y) of r in [x0, x1] × [y0, y1]
  * (unwrapped indices); e_k / r.area is the barycentric weight of slot k.
  */
 template <typename Fn>
 inline void scanUv(const UvTriangle& r, int x0, int x1, int y0, int y1, Fn&& fn) {
-    std::int64_t stepX[3];
-    for (int k = 0; k < 3; ++k) {
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        stepX[k] = -(r.y[b] - r.y[a]) * kSub;
-    }
-    for (int y = y0; y <= y1; ++y) {
-        const std::int64_t py = std::int64_t(y) * kSub + kSub / 2;
-        const std::int64_t px = std::int64_t(x0) * kSub + kSub / 2;
-        std::int64_t e[3];
-        for (int k = 0; k < 3; ++k) {
-            const int a = (k + 1) % 3, b = (k + 2) % 3;
-            e[k] = edgeFunction(r.x[a], r.y[a], r.x[b], r.y[b], px, py);
-        }
+    const std::int64_t stepX[3] = {edgeStepX(r, 0), edgeStepX(r, 1), edgeStepX(r, 2)};
+    forRowsOf(r, x0, y0, y1, [&](int y, const std::int64_t* start) {
+        std::int64_t e[3] = {start[0], start[1], start[2]};
         for (int x = x0; x <= x1; ++x) {
             if (e[0] + r.bias[0] >= 0 && e[1] + r.bias[1] >= 0 && e[2] + r.bias[2] >= 0)
                 fn(x, y, e[0], e[1], e[2]);
@@ -105,7 +139,7 @@ inline void scanUv(const UvTriangle& r, int x0, int x1, int y0, int y1, Fn&& fn)
             e[1] += stepX[1];
             e[2] += stepX[2];
         }
-    }
+    });
 }
 
 inline int wrapIndex(int i, int size) {
