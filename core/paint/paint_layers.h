@@ -5,6 +5,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -14,6 +15,10 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "core/model/mesh.h"
 #include "core/paint/blend_modes.h"
@@ -259,6 +264,30 @@ inline std::uint8_t toByte(float v) {
 inline float fromByte(std::uint8_t b) {
     return float(b) * (1.0f / 255.0f);
 }
+
+#if defined(__SSE2__)
+/** fromByte() of the four bytes at p, lane by lane. */
+inline __m128 fromBytes4(const std::uint8_t* p) {
+    std::int32_t word;
+    std::memcpy(&word, p, 4);
+    const __m128i zero = _mm_setzero_si128();
+    const __m128i ints = _mm_unpacklo_epi16(_mm_unpacklo_epi8(_mm_cvtsi32_si128(word), zero), zero);
+    return _mm_mul_ps(_mm_cvtepi32_ps(ints), _mm_set1_ps(1.0f / 255.0f));
+}
+
+/**
+ * toByte() of four values, lane by lane, in the lanes' low bytes. toByte() truncates
+ * double(f) + 0.5 with f = clamp(v)·255, which is exact; here that is trunc(f), plus one where
+ * f - trunc(f) (also exact) is at least 0.5. Values are not NaN.
+ */
+inline __m128i toBytes4(__m128 v) {
+    const __m128 f = _mm_mul_ps(_mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f)),
+                                _mm_set1_ps(255.0f));
+    const __m128i whole = _mm_cvttps_epi32(f);
+    const __m128 up = _mm_cmpge_ps(_mm_sub_ps(f, _mm_cvtepi32_ps(whole)), _mm_set1_ps(0.5f));
+    return _mm_sub_epi32(whole, _mm_castps_si128(up));
+}
+#endif
 } // namespace layer_bytes
 
 /** The least coverage for which paintTexel() takes the bytes of emptyTexelByte(). */

@@ -22,6 +22,10 @@ constexpr std::size_t kMaxKeptTiles = 512;
 
 using layer_bytes::fromByte;
 using layer_bytes::toByte;
+#if defined(__SSE2__)
+using layer_bytes::fromBytes4;
+using layer_bytes::toBytes4;
+#endif
 
 template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
     switch (mode) {
@@ -212,6 +216,30 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
     const TileRect tr = tileRectOf(m_pages[page], tile);
     const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
     const bool material = mr != nullptr;
+#if defined(__SSE2__)
+    // One unmasked paint layer's texels per channel at most (painting a paint layer with
+    // nothing below it in this tile): a texel's colour in four lanes (red, green, blue and an
+    // unused one), its roughness and metallic in lanes 1 and 2, the operations of the loop below.
+    bool lanes = true;
+    for (std::size_t j = 0; j < count; ++j)
+        lanes = lanes && sources[j].texels != nullptr && !sources[j].masked &&
+                top[sources[j].first == 0 ? 0 : sources[j].first - 2] == &sources[j];
+    // min and max clamp as std::clamp does for values that are not NaN (bytes give none).
+    const auto blend4 = [](__m128 below, __m128 layer, __m128 a) {
+        const __m128 over = _mm_min_ps(_mm_max_ps(layer, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+        return _mm_add_ps(below, _mm_mul_ps(a, _mm_sub_ps(over, below)));
+    };
+    // The coverage of top[ch] at the texel (0 where none, as the loop below skips it).
+    const auto coverOf = [&](std::size_t ch, std::size_t local) {
+        const ChannelSource* src = top[ch];
+        if (src == nullptr)
+            return 0.0f;
+        float a =
+            fromByte(src->texels[local * std::size_t(src->comps + 1) + std::size_t(src->comps)]);
+        a *= src->opacity;
+        return a > 0.0f ? a : 0.0f;
+    };
+#endif
     for (int y = rect.y; y < rect.y + rect.height; ++y) {
         const TexelSpan span = rowOf(rect, rows, y);
         const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
@@ -238,6 +266,39 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
                 }
                 continue;
             }
+#if defined(__SSE2__)
+            if (lanes) {
+                if ((channels & 1u) != 0) {
+                    __m128 v = fromBytes4(baseColor + i);
+                    if (const float a = coverOf(0, local); a > 0.0f)
+                        v = blend4(v, fromBytes4(top[0]->texels + local * 4), _mm_set1_ps(a));
+                    const __m128i bytes = toBytes4(v);
+                    color[i] = std::uint8_t(_mm_cvtsi128_si32(bytes));
+                    color[i + 1] = std::uint8_t(_mm_extract_epi16(bytes, 2));
+                    color[i + 2] = std::uint8_t(_mm_extract_epi16(bytes, 4));
+                    color[i + 3] = baseColor[i + 3];
+                }
+                if (material) {
+                    __m128 v = fromBytes4(baseMr + i);
+                    const float a1 = (channels & 2u) != 0 ? coverOf(1, local) : 0.0f;
+                    const float a2 = (channels & 4u) != 0 ? coverOf(2, local) : 0.0f;
+                    if (a1 > 0.0f || a2 > 0.0f) {
+                        const float l1 = a1 > 0.0f ? fromByte(top[1]->texels[local * 2]) : 0.0f;
+                        const float l2 = a2 > 0.0f ? fromByte(top[2]->texels[local * 2]) : 0.0f;
+                        v = blend4(v, _mm_setr_ps(0.0f, l1, l2, 0.0f),
+                                   _mm_setr_ps(0.0f, a1, a2, 0.0f));
+                    }
+                    const __m128i bytes = toBytes4(v);
+                    mr[i] = baseMr[i];
+                    if ((channels & 2u) != 0)
+                        mr[i + 1] = std::uint8_t(_mm_extract_epi16(bytes, 2));
+                    if ((channels & 4u) != 0)
+                        mr[i + 2] = std::uint8_t(_mm_extract_epi16(bytes, 4));
+                    mr[i + 3] = baseMr[i + 3];
+                }
+                continue;
+            }
+#endif
             // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
             // operations on each value in the same order.
             float v[5] = {};

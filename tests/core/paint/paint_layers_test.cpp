@@ -321,6 +321,48 @@ TEST(PaintTexel, EmptyTexelBytesAreThoseOfTheArithmetic) {
     EXPECT_EQ(plain[1], fast[1]);
 }
 
+#if defined(__SSE2__)
+// The composite's four-lane byte conversions give toByte() and fromByte() of each lane: every
+// byte, values at, beside and between every rounding boundary, out of range, and 2M random ones.
+TEST(LayerBytes, FourLanesAreThoseOfOne) {
+    using core::layer_bytes::fromByte;
+    using core::layer_bytes::toByte;
+    for (int b = 0; b < 256; b += 4) {
+        const std::uint8_t bytes[4] = {std::uint8_t(b), std::uint8_t(b + 1), std::uint8_t(b + 2),
+                                       std::uint8_t(b + 3)};
+        alignas(16) float lanes[4];
+        _mm_store_ps(lanes, core::layer_bytes::fromBytes4(bytes));
+        for (int k = 0; k < 4; ++k)
+            ASSERT_EQ(lanes[k], fromByte(bytes[k]));
+    }
+    std::vector<float> values = {-1.0f, -0.0f, 0.0f, 1.0f, 1.5f, 1e-30f, 2.0f, 1e30f};
+    for (int k = 0; k <= 255; ++k)
+        for (const float at : {float(k) / 255.0f, (float(k) + 0.5f) / 255.0f}) {
+            float below = at, above = at;
+            for (int step = 0; step < 4; ++step) {
+                below = std::nextafter(below, -1.0f);
+                above = std::nextafter(above, 2.0f);
+                values.insert(values.end(), {below, above});
+            }
+            values.push_back(at);
+        }
+    std::uint32_t seed = 99u;
+    for (int i = 0; i < 2000000; ++i) {
+        seed = seed * 1664525u + 1013904223u;
+        values.push_back(float(seed >> 8) / float(1u << 24) * 1.2f - 0.1f);
+    }
+    while (values.size() % 4 != 0)
+        values.push_back(0.5f);
+    for (std::size_t i = 0; i < values.size(); i += 4) {
+        alignas(16) std::int32_t bytes[4];
+        _mm_store_si128(reinterpret_cast<__m128i*>(bytes),
+                        core::layer_bytes::toBytes4(_mm_loadu_ps(&values[i])));
+        for (std::size_t k = 0; k < 4; ++k)
+            ASSERT_EQ(bytes[k], toByte(values[i + k])) << "value " << values[i + k];
+    }
+}
+#endif
+
 // paintTexel() takes a short cut at full coverage; its bytes are those of the source-over
 // arithmetic (written out here) for every start byte and coverage byte, and values on and beside
 // every rounding boundary.
