@@ -231,9 +231,9 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             // Texels up to a pixel outside the map's box can be at its surface's outline.
             const float nearW = windowW + 1.0f, nearH = windowH + 1.0f;
 #if defined(__SSE2__)
-            if (uv::edgesFitInt32(r, x0, x1, y0, y1)) {
-                // Four texels of a row at a time: the same operations in the same order as the
-                // scalar path below, lane by lane, so the same floats.
+            if (x1 - x0 >= 3 && uv::edgesFitInt32(r)) {
+                // Four texels of a row at a time (rows of four or more): the same operations in
+                // the same order as the one-texel path below, lane by lane, so the same floats.
                 const __m128 invA = _mm_set1_ps(invArea);
                 const __m128 w0 = _mm_set1_ps(p[0].w), w1 = _mm_set1_ps(p[1].w),
                              w2 = _mm_set1_ps(p[2].w);

@@ -105,22 +105,15 @@ template <typename Fn> inline void forRowsOf(const UvTriangle& r, int x0, int y0
 }
 
 /**
- * Whether the edge functions at every texel centre of [x0, x1] × [y0, y1] fit in 31 bits, so that
- * they (taken modulo 2^32 in 32-bit lanes) and their float conversions are exact.
+ * Whether the edge functions at every texel centre of the triangle's box fit in 31 bits, so that
+ * they (taken modulo 2^32 in 32-bit lanes) and their float conversions are exact. A centre lies
+ * within half a texel of the triangle's extent W × H, so |e| <= 2·W·H + kSub·(W + H).
  */
-inline bool edgesFitInt32(const UvTriangle& r, int x0, int x1, int y0, int y1) {
+inline bool edgesFitInt32(const UvTriangle& r) {
+    const std::int64_t w = std::max({r.x[0], r.x[1], r.x[2]}) - std::min({r.x[0], r.x[1], r.x[2]});
+    const std::int64_t h = std::max({r.y[0], r.y[1], r.y[2]}) - std::min({r.y[0], r.y[1], r.y[2]});
     constexpr std::int64_t kLimit = std::int64_t(1) << 30;
-    for (int k = 0; k < 3; ++k) {
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        // Linear in the texel centre: largest at a corner of the box.
-        for (const int y : {y0, y1})
-            for (const int x : {x0, x1})
-                if (std::abs(edgeFunction(r.x[a], r.y[a], r.x[b], r.y[b],
-                                          std::int64_t(x) * kSub + kSub / 2,
-                                          std::int64_t(y) * kSub + kSub / 2)) >= kLimit)
-                    return false;
-    }
-    return true;
+    return w < kLimit && h < kLimit && 2 * w * h + kSub * (w + h) < kLimit;
 }
 
 /**
