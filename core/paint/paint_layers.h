@@ -287,6 +287,13 @@ inline __m128i toBytes4(__m128 v) {
     const __m128 up = _mm_cmpge_ps(_mm_sub_ps(f, _mm_cvtepi32_ps(whole)), _mm_set1_ps(0.5f));
     return _mm_sub_epi32(whole, _mm_castps_si128(up));
 }
+
+/** Stores the four lanes of toBytes4() (0..255) as four bytes at p. */
+inline void storeBytes4(std::uint8_t* p, __m128i bytes) {
+    const __m128i words = _mm_packs_epi32(bytes, bytes);
+    const std::int32_t word = _mm_cvtsi128_si32(_mm_packus_epi16(words, words));
+    std::memcpy(p, &word, 4);
+}
 #endif
 } // namespace layer_bytes
 
@@ -302,38 +309,61 @@ inline constexpr float kEmptyTexelMinCoverage = 0x1p-60f;
 std::int16_t emptyTexelByte(float value);
 
 /**
- * A paint layer's texel after a stroke's paint of value (components 1 or 3, 0..1) with stroke
+ * A paint layer's texel after a stroke's paint of value (Components 1 or 3, 0..1) with stroke
  * coverage a (0..1) over its value at the stroke's start: source-over (the coverage grows) or,
  * with lockTransparency, only the colour moves towards value in proportion to a. texel and start
- * have components + 1 bytes (the last is the coverage). empty, if given, holds emptyTexelByte()
+ * have Components + 1 bytes (the last is the coverage). empty, if given, holds emptyTexelByte()
  * of each value: a texel that held nothing takes those bytes without the arithmetic (the same
- * bytes). Inline: a dab calls it per texel and channel.
+ * bytes). Always inlined: a dab calls it per texel and channel.
  */
-inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components,
-                       const float* value, float a, bool lockTransparency,
-                       const std::int16_t* empty = nullptr) {
+template <int Components>
+[[gnu::always_inline]] inline void paintTexelOf(std::uint8_t* texel, const std::uint8_t* start,
+                                                const float* value, float a, bool lockTransparency,
+                                                const std::int16_t* empty = nullptr) {
     using layer_bytes::fromByte;
     using layer_bytes::toByte;
     a = std::clamp(a, 0.0f, 1.0f);
-    const float a0 = fromByte(start[components]);
+    const float a0 = fromByte(start[Components]);
     if (lockTransparency) {
-        for (int k = 0; k < components; ++k) {
+        for (int k = 0; k < Components; ++k) {
             const float c0 = fromByte(start[k]);
             texel[k] = a0 > 0.0f ? toByte(c0 + a * (value[k] - c0)) : start[k];
         }
-        texel[components] = start[components];
+        texel[Components] = start[Components];
         return;
     }
+#if defined(__SSE2__)
+    if constexpr (Components == 3) {
+        // The arithmetic below lane by lane, the same operations in the same order: colour in
+        // lanes 0..2, the coverage (out / 1) in lane 3. It gives the bytes of both short cuts.
+        const __m128 start4 = layer_bytes::fromBytes4(start);
+        const __m128 a0s = _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 3, 3, 3));
+        const __m128 av = _mm_set1_ps(a);
+        const __m128 out = _mm_add_ps(av, _mm_mul_ps(a0s, _mm_set1_ps(1.0f - a)));
+        const __m128 premultiplied =
+            _mm_add_ps(_mm_mul_ps(av, _mm_setr_ps(value[0], value[1], value[2], 0.0f)),
+                       _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(1.0f - a), a0s), start4));
+        const __m128 last = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
+        const __m128 numerator =
+            _mm_or_ps(_mm_andnot_ps(last, premultiplied), _mm_and_ps(last, out));
+        const __m128 denominator =
+            _mm_or_ps(_mm_andnot_ps(last, out), _mm_and_ps(last, _mm_set1_ps(1.0f)));
+        const __m128 result =
+            _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
+        layer_bytes::storeBytes4(texel, layer_bytes::toBytes4(result));
+        return;
+    }
+#endif
     if (a == 1.0f) {
         // Full coverage: out is 1 + a0·0 = 1 and the premultiplied value is exactly value.
-        for (int k = 0; k < components; ++k)
+        for (int k = 0; k < Components; ++k)
             texel[k] = toByte(value[k]);
-        texel[components] = toByte(1.0f);
+        texel[Components] = toByte(1.0f);
         return;
     }
     const float out = a + a0 * (1.0f - a);
-    const bool wasEmpty = empty != nullptr && start[components] == 0 && a >= kEmptyTexelMinCoverage;
-    for (int k = 0; k < components; ++k) {
+    const bool wasEmpty = empty != nullptr && start[Components] == 0 && a >= kEmptyTexelMinCoverage;
+    for (int k = 0; k < Components; ++k) {
         if (wasEmpty && empty[k] >= 0) {
             texel[k] = std::uint8_t(empty[k]);
             continue;
@@ -341,7 +371,61 @@ inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int compo
         const float premultiplied = a * value[k] + (1.0f - a) * a0 * fromByte(start[k]);
         texel[k] = toByte(out > 0.0f ? premultiplied / out : 0.0f);
     }
-    texel[components] = toByte(out);
+    texel[Components] = toByte(out);
+}
+/**
+ * paintTexelOf<1>() of two channels of one component at once (roughness and metallic): texels
+ * first and second (either may be nullptr: not painted), their starts, values[0] and values[1].
+ */
+[[gnu::always_inline]] inline void paintTexelPair(std::uint8_t* first, std::uint8_t* second,
+                                                  const std::uint8_t* startFirst,
+                                                  const std::uint8_t* startSecond,
+                                                  const float* values, float a,
+                                                  bool lockTransparency) {
+#if defined(__SSE2__)
+    if (!lockTransparency) {
+        // The arithmetic of paintTexelOf() lane by lane: the values in lanes 0 and 1, their
+        // coverages (out / 1) in lanes 2 and 3.
+        a = std::clamp(a, 0.0f, 1.0f);
+        const std::uint8_t bytes[4] = {startFirst[0], startSecond[0], startFirst[1],
+                                       startSecond[1]};
+        const __m128 start4 = layer_bytes::fromBytes4(bytes);
+        const __m128 a0s = _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 2, 3, 2));
+        const __m128 av = _mm_set1_ps(a);
+        const __m128 out = _mm_add_ps(av, _mm_mul_ps(a0s, _mm_set1_ps(1.0f - a)));
+        const __m128 premultiplied =
+            _mm_add_ps(_mm_mul_ps(av, _mm_setr_ps(values[0], values[1], 0.0f, 0.0f)),
+                       _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(1.0f - a), a0s), start4));
+        const __m128 numerator = _mm_movelh_ps(premultiplied, out);
+        const __m128 denominator = _mm_movelh_ps(out, _mm_set1_ps(1.0f));
+        const __m128 result =
+            _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
+        std::uint8_t texels[4];
+        layer_bytes::storeBytes4(texels, layer_bytes::toBytes4(result));
+        if (first != nullptr) {
+            first[0] = texels[0];
+            first[1] = texels[2];
+        }
+        if (second != nullptr) {
+            second[0] = texels[1];
+            second[1] = texels[3];
+        }
+        return;
+    }
+#endif
+    if (first != nullptr)
+        paintTexelOf<1>(first, startFirst, &values[0], a, lockTransparency);
+    if (second != nullptr)
+        paintTexelOf<1>(second, startSecond, &values[1], a, lockTransparency);
+}
+/** paintTexelOf() with the number of components (1 or 3) given at run time. */
+inline void paintTexel(std::uint8_t* texel, const std::uint8_t* start, int components,
+                       const float* value, float a, bool lockTransparency,
+                       const std::int16_t* empty = nullptr) {
+    if (components == 3)
+        paintTexelOf<3>(texel, start, value, a, lockTransparency, empty);
+    else
+        paintTexelOf<1>(texel, start, value, a, lockTransparency, empty);
 }
 /** A paint layer's texel after erasing with coverage a: its coverage falls to start·(1 - a). */
 inline void eraseTexel(std::uint8_t* texel, const std::uint8_t* start, int components, float a) {

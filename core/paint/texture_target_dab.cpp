@@ -533,19 +533,32 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                                eraser ? &page->original.rgba[at * 4] : c.colorBytes.data(),
                                eraser ? nullptr : &c.colorLinear[0], cover);
                 } else if (onChannels) {
-                    // As writeTexel(), with the tiles at hand.
-                    for (std::size_t ch = 0; ch < kPaintChannels; ++ch) {
-                        if (channelTiles[ch] == nullptr)
-                            continue;
-                        const int n = ch == 0 ? 3 : 1;
-                        const std::size_t at = local * std::size_t(n + 1);
-                        const std::uint8_t* start = before + channelOffset(ch, tileTexels) + at;
+                    // As writeTexel(), with the tiles at hand: colour, then the channels of
+                    // one component.
+                    if (std::uint8_t* colour = channelTiles[0]; colour != nullptr) {
+                        const std::size_t at = local * 4;
                         if (eraser)
-                            eraseTexel(channelTiles[ch] + at, start, n, cover);
+                            eraseTexel(colour + at, before + at, 3, cover);
                         else
-                            paintTexel(channelTiles[ch] + at, start, n,
-                                       &m_values[ch == 0 ? 0 : ch + 2], cover, m_lock,
-                                       &m_emptyBytes[ch == 0 ? 0 : ch + 2]);
+                            paintTexelOf<3>(colour + at, before + at, &m_values[0], cover, m_lock,
+                                            &m_emptyBytes[0]);
+                    }
+                    std::uint8_t* const rough = channelTiles[1];
+                    std::uint8_t* const metal = channelTiles[2];
+                    if (rough != nullptr || metal != nullptr) {
+                        const std::size_t at = local * 2;
+                        const std::uint8_t* roughStart = before + channelOffset(1, tileTexels) + at;
+                        const std::uint8_t* metalStart = before + channelOffset(2, tileTexels) + at;
+                        if (eraser) {
+                            if (rough != nullptr)
+                                eraseTexel(rough + at, roughStart, 1, cover);
+                            if (metal != nullptr)
+                                eraseTexel(metal + at, metalStart, 1, cover);
+                        } else {
+                            paintTexelPair(rough != nullptr ? rough + at : nullptr,
+                                           metal != nullptr ? metal + at : nullptr, roughStart,
+                                           metalStart, &m_values[3], cover, m_lock);
+                        }
                     }
                 } else {
                     writeTexel(pageIndex, tx, ty, before, local, tileTexels, cover);

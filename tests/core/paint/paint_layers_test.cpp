@@ -366,21 +366,34 @@ TEST(LayerBytes, FourLanesAreThoseOfOne) {
 // paintTexel() takes a short cut at full coverage; its bytes are those of the source-over
 // arithmetic (written out here) for every start byte and coverage byte, and values on and beside
 // every rounding boundary.
-TEST(PaintTexel, FullCoverageBytesAreThoseOfTheArithmetic) {
+/** Source-over of value with coverage a over a component c0 of coverage a0 (bytes), written out. */
+std::pair<std::uint8_t, std::uint8_t> sourceOver(std::uint8_t c0, std::uint8_t a0Byte, float value,
+                                                 float a) {
     using core::layer_bytes::fromByte;
     using core::layer_bytes::toByte;
-    const auto arithmetic = [](const std::uint8_t start[2], float value, float a) {
-        const float a0 = fromByte(start[1]);
-        const float out = a + a0 * (1.0f - a);
-        const float premultiplied = a * value + (1.0f - a) * a0 * fromByte(start[0]);
-        return std::pair(toByte(out > 0.0f ? premultiplied / out : 0.0f), toByte(out));
-    };
+    const float a0 = fromByte(a0Byte);
+    const float out = a + a0 * (1.0f - a);
+    const float premultiplied = a * value + (1.0f - a) * a0 * fromByte(c0);
+    return std::pair(toByte(out > 0.0f ? premultiplied / out : 0.0f), toByte(out));
+}
+
+/** Brush values: 0, 1, a tiny one, every byte's value, and on and beside every rounding boundary.
+ */
+std::vector<float> boundaryValues() {
     std::vector<float> values = {0.0f, 1.0f, 1e-20f};
     for (int k = 0; k <= 255; ++k) {
         const float boundary = (float(k) + 0.5f) / 255.0f;
         values.insert(values.end(), {float(k) / 255.0f, boundary, std::nextafter(boundary, 0.0f),
                                      std::nextafter(boundary, 1.0f)});
     }
+    return values;
+}
+
+TEST(PaintTexel, FullCoverageBytesAreThoseOfTheArithmetic) {
+    const auto arithmetic = [](const std::uint8_t start[2], float value, float a) {
+        return sourceOver(start[0], start[1], value, a);
+    };
+    const std::vector<float> values = boundaryValues();
     int checked = 0;
     for (int colour = 0; colour <= 255; colour += 5)
         for (int cover = 0; cover <= 255; ++cover) {
@@ -397,6 +410,52 @@ TEST(PaintTexel, FullCoverageBytesAreThoseOfTheArithmetic) {
                 }
         }
     EXPECT_GT(checked, 1000000);
+}
+
+// A colour texel and a pair of one-component texels (roughness and metallic) are painted in
+// lanes where the build has them: the bytes are those of the arithmetic written out, component
+// by component, for every coverage byte, values on and beside every rounding boundary and
+// coverages 0, 1, 1 - ulp and between. A texel not given is not written.
+TEST(PaintTexel, LanesAreThoseOfTheArithmetic) {
+    const std::vector<float> values = boundaryValues();
+    const std::size_t n = values.size();
+    long checked = 0;
+    for (int colour = 0; colour <= 255; colour += 15)
+        for (int cover = 0; cover <= 255; ++cover)
+            for (std::size_t i = 0; i < n; ++i)
+                for (const float a : {1.0f, std::nextafter(1.0f, 0.0f), 0.5f, 0.123f, 0.0f}) {
+                    const float value[3] = {values[i], values[(i + 7) % n], values[(i + 13) % n]};
+                    const std::uint8_t start[4] = {std::uint8_t(colour), std::uint8_t(255 - colour),
+                                                   std::uint8_t(colour / 3), std::uint8_t(cover)};
+                    std::uint8_t texel[4];
+                    core::paintTexelOf<3>(texel, start, value, a, false);
+                    for (int k = 0; k < 3; ++k)
+                        ASSERT_EQ(texel[k], sourceOver(start[k], start[3], value[k], a).first)
+                            << "component " << k << " value " << value[k] << " start "
+                            << int(start[k]) << ", " << cover << " coverage " << a;
+                    ASSERT_EQ(texel[3], sourceOver(0, start[3], 0.0f, a).second);
+
+                    const std::uint8_t first[2] = {std::uint8_t(colour), std::uint8_t(cover)};
+                    const std::uint8_t second[2] = {std::uint8_t(255 - colour),
+                                                    std::uint8_t(255 - cover)};
+                    std::uint8_t one[2], other[2];
+                    core::paintTexelPair(one, other, first, second, value, a, false);
+                    ASSERT_EQ(std::pair(one[0], one[1]),
+                              sourceOver(first[0], first[1], value[0], a));
+                    ASSERT_EQ(std::pair(other[0], other[1]),
+                              sourceOver(second[0], second[1], value[1], a));
+                    ++checked;
+                }
+    EXPECT_GT(checked, 10000000);
+
+    std::uint8_t kept[2] = {1, 2};
+    const std::uint8_t start[2] = {100, 100};
+    const float value[2] = {0.5f, 0.5f};
+    core::paintTexelPair(nullptr, kept, start, start, value, 0.5f, false);
+    EXPECT_EQ(std::pair(kept[0], kept[1]), sourceOver(100, 100, 0.5f, 0.5f));
+    kept[0] = kept[1] = 7;
+    core::paintTexelPair(kept, nullptr, start, start, value, 0.5f, true); // locked: colour moves
+    EXPECT_EQ(kept[1], 100);
 }
 
 } // namespace
