@@ -288,6 +288,23 @@ inline __m128i toBytes4(__m128 v) {
     return _mm_sub_epi32(whole, _mm_castps_si128(up));
 }
 
+/**
+ * Source-over in lanes, as paintTexelOf() computes it: in the lanes of values, value over start
+ * with the start's coverage a0 and stroke coverage a, divided by the new coverage out; in the
+ * other lanes out itself (out / 1). Lanes whose out is not positive give 0.
+ */
+inline __m128 sourceOver4(__m128 values, __m128 value, __m128 start, __m128 a0, float a) {
+    const __m128 av = _mm_set1_ps(a);
+    const __m128 out = _mm_add_ps(av, _mm_mul_ps(a0, _mm_set1_ps(1.0f - a)));
+    const __m128 premultiplied =
+        _mm_add_ps(_mm_mul_ps(av, value), _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(1.0f - a), a0), start));
+    const __m128 numerator =
+        _mm_or_ps(_mm_and_ps(values, premultiplied), _mm_andnot_ps(values, out));
+    const __m128 denominator =
+        _mm_or_ps(_mm_and_ps(values, out), _mm_andnot_ps(values, _mm_set1_ps(1.0f)));
+    return _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
+}
+
 /** Stores the four lanes of toBytes4() (0..255) as four bytes at p. */
 inline void storeBytes4(std::uint8_t* p, __m128i bytes) {
     const __m128i words = _mm_packs_epi32(bytes, bytes);
@@ -337,19 +354,10 @@ template <int Components>
         // The arithmetic below lane by lane, the same operations in the same order: colour in
         // lanes 0..2, the coverage (out / 1) in lane 3. It gives the bytes of both short cuts.
         const __m128 start4 = layer_bytes::fromBytes4(start);
-        const __m128 a0s = _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 3, 3, 3));
-        const __m128 av = _mm_set1_ps(a);
-        const __m128 out = _mm_add_ps(av, _mm_mul_ps(a0s, _mm_set1_ps(1.0f - a)));
-        const __m128 premultiplied =
-            _mm_add_ps(_mm_mul_ps(av, _mm_setr_ps(value[0], value[1], value[2], 0.0f)),
-                       _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(1.0f - a), a0s), start4));
-        const __m128 last = _mm_castsi128_ps(_mm_setr_epi32(0, 0, 0, -1));
-        const __m128 numerator =
-            _mm_or_ps(_mm_andnot_ps(last, premultiplied), _mm_and_ps(last, out));
-        const __m128 denominator =
-            _mm_or_ps(_mm_andnot_ps(last, out), _mm_and_ps(last, _mm_set1_ps(1.0f)));
         const __m128 result =
-            _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
+            layer_bytes::sourceOver4(_mm_castsi128_ps(_mm_setr_epi32(-1, -1, -1, 0)),
+                                     _mm_setr_ps(value[0], value[1], value[2], 0.0f), start4,
+                                     _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 3, 3, 3)), a);
         layer_bytes::storeBytes4(texel, layer_bytes::toBytes4(result));
         return;
     }
@@ -390,16 +398,10 @@ template <int Components>
         const std::uint8_t bytes[4] = {startFirst[0], startSecond[0], startFirst[1],
                                        startSecond[1]};
         const __m128 start4 = layer_bytes::fromBytes4(bytes);
-        const __m128 a0s = _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 2, 3, 2));
-        const __m128 av = _mm_set1_ps(a);
-        const __m128 out = _mm_add_ps(av, _mm_mul_ps(a0s, _mm_set1_ps(1.0f - a)));
-        const __m128 premultiplied =
-            _mm_add_ps(_mm_mul_ps(av, _mm_setr_ps(values[0], values[1], 0.0f, 0.0f)),
-                       _mm_mul_ps(_mm_mul_ps(_mm_set1_ps(1.0f - a), a0s), start4));
-        const __m128 numerator = _mm_movelh_ps(premultiplied, out);
-        const __m128 denominator = _mm_movelh_ps(out, _mm_set1_ps(1.0f));
         const __m128 result =
-            _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
+            layer_bytes::sourceOver4(_mm_castsi128_ps(_mm_setr_epi32(-1, -1, 0, 0)),
+                                     _mm_setr_ps(values[0], values[1], 0.0f, 0.0f), start4,
+                                     _mm_shuffle_ps(start4, start4, _MM_SHUFFLE(3, 2, 3, 2)), a);
         std::uint8_t texels[4];
         layer_bytes::storeBytes4(texels, layer_bytes::toBytes4(result));
         if (first != nullptr) {
