@@ -89,13 +89,13 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
         const LayerStack& stack = layers.stack;
 
-        // Triangle si: its texels the dab reaches go to texels, counted per slot of their tile
-        // in slotCounts (those of tiles without a slot get theirs between the passes); what the
-        // second pass needs of it.
-        const auto scan = [&](std::size_t si, std::vector<DabTexel>& texels,
+        // Triangle si: its texels the dab reaches go to texels from used on (used counts them),
+        // counted per slot of their tile in slotCounts (those of tiles without a slot get theirs
+        // between the passes); what the second pass needs of it.
+        const auto scan = [&](std::size_t si, std::vector<DabTexel>& texels, std::size_t& used,
                               std::uint32_t* slotCounts) {
             DabTriangle out;
-            out.begin = out.end = std::uint32_t(texels.size());
+            out.begin = out.end = std::uint32_t(used);
             const TriangleSetup& s = setups[si];
             // Every texel of the triangle is at this dab's opacity already: none can take paint.
             if (triangleCover[s.triangle] >= dabOpacity)
@@ -156,13 +156,13 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             constexpr std::int32_t kNoSlotYet = -2;
             std::int32_t sharedSlot = kNoSlotYet;
 
-            // The texels found so far: texels holds room for n more from used on after room(n)
-            // (written through outTexels).
-            std::size_t used = texels.size();
+            // Texels holds room for n more from used on after room(n) (written through
+            // outTexels). It keeps its size from dab to dab, so that its texels are not set
+            // to their defaults before every dab.
             DabTexel* outTexels = texels.data();
             const auto room = [&](std::size_t n) {
                 if (texels.size() < used + n) {
-                    texels.resize(used + n);
+                    texels.resize(std::max(used + n, 2 * texels.size()));
                     outTexels = texels.data();
                 }
             };
@@ -254,9 +254,30 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                     bias[k] = _mm_set1_epi32(std::int32_t(r.bias[k]));
                 }
                 const __m128i minusOneI = _mm_set1_epi32(-1);
-                alignas(16) float l[3][4], pxs[4], pys[4], ds[4], rounds[4] = {};
+                // The groups of four texels with a covered one, computed ahead of their visits
+                // (so the divisions and square roots of several groups overlap), then visited
+                // in the same order.
+                struct Group {
+                    alignas(16) float l[3][4];
+                    alignas(16) float px[4], py[4], d[4], round[4];
+                    int x, y, covered, near;
+                };
+                constexpr int kGroups = 16;
+                Group groups[kGroups];
+                int pending = 0;
+                const auto visitGroups = [&] {
+                    room(std::size_t(pending) * 4);
+                    for (int g = 0; g < pending; ++g) {
+                        const Group& q = groups[g];
+                        for (unsigned bits = unsigned(q.covered); bits != 0; bits &= bits - 1) {
+                            const int i = std::countr_zero(bits);
+                            visit(q.x + i, q.y, q.l[0][i], q.l[1][i], q.l[2][i], q.px[i], q.py[i],
+                                  q.d[i], (q.near >> i) & 1, q.round[i]);
+                        }
+                    }
+                    pending = 0;
+                };
                 uv::forRowsOf(r, x0, y0, y1, [&](int y, const std::int64_t e[3]) {
-                    room(std::size_t(x1 - x0 + 1));
                     // Lane i: texel x + i. Past x1 the values may wrap; those lanes are unused.
                     __m128i ek[3];
                     for (int k = 0; k < 3; ++k) {
@@ -276,6 +297,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                         if (x1 - x < 3)
                             covered &= (1 << (x1 - x + 1)) - 1;
                         if (covered != 0) {
+                            Group& q = groups[pending];
                             const __m128 l0 = _mm_mul_ps(_mm_cvtepi32_ps(ek[0]), invA);
                             const __m128 l1 = _mm_mul_ps(_mm_cvtepi32_ps(ek[1]), invA);
                             const __m128 l2 = _mm_mul_ps(_mm_cvtepi32_ps(ek[2]), invA);
@@ -299,25 +321,27 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                                     _mm_and_ps(_mm_cmpgt_ps(w, minW), _mm_cmplt_ps(d, rad)),
                                     _mm_and_ps(_mm_cmpge_ps(fx, minusOne), _mm_cmplt_ps(fx, limX))),
                                 _mm_and_ps(_mm_cmpge_ps(fy, minusOne), _mm_cmplt_ps(fy, limY)));
-                            const int nearMask = _mm_movemask_ps(near);
-                            _mm_store_ps(l[0], l0);
-                            _mm_store_ps(l[1], l1);
-                            _mm_store_ps(l[2], l2);
-                            _mm_store_ps(pxs, px);
-                            _mm_store_ps(pys, py);
-                            _mm_store_ps(ds, d);
-                            if (roundTip)
-                                _mm_store_ps(rounds, roundFalloff4(d, tipRadius, hardness));
-                            for (unsigned bits = unsigned(covered); bits != 0; bits &= bits - 1) {
-                                const int i = std::countr_zero(bits);
-                                visit(x + i, y, l[0][i], l[1][i], l[2][i], pxs[i], pys[i], ds[i],
-                                      (nearMask >> i) & 1, rounds[i]);
-                            }
+                            q.near = _mm_movemask_ps(near);
+                            q.covered = covered;
+                            q.x = x;
+                            q.y = y;
+                            _mm_store_ps(q.l[0], l0);
+                            _mm_store_ps(q.l[1], l1);
+                            _mm_store_ps(q.l[2], l2);
+                            _mm_store_ps(q.px, px);
+                            _mm_store_ps(q.py, py);
+                            _mm_store_ps(q.d, d);
+                            _mm_store_ps(q.round, roundTip && q.near != 0
+                                                      ? roundFalloff4(d, tipRadius, hardness)
+                                                      : _mm_setzero_ps());
+                            if (++pending == kGroups)
+                                visitGroups();
                         }
                         for (int k = 0; k < 3; ++k)
                             ek[k] = _mm_add_epi32(ek[k], step4[k]);
                     }
                 });
+                visitGroups();
             } else
 #endif
             {
@@ -343,7 +367,6 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             out.page = pageIndex;
             out.least = least;
             out.slot = std::max(sharedSlot, -1);
-            texels.resize(used);
             out.end = std::uint32_t(used);
             return out;
         };
@@ -361,11 +384,10 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
             std::vector<std::uint32_t>& slotCounts = c.partSlotTexels[std::size_t(part)];
             slotCounts.assign(c.slotsUsed, 0u);
             for (std::size_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
-                std::vector<DabTexel>& texels = c.dabTexels[k];
-                texels.clear();
+                std::size_t used = 0;
                 for (std::size_t si = k * kDabChunk, end = std::min(count, si + kDabChunk);
                      si < end; ++si)
-                    c.dabTriangles[si] = scan(si, texels, slotCounts.data());
+                    c.dabTriangles[si] = scan(si, c.dabTexels[k], used, slotCounts.data());
             }
         });
         c.slotTexels.assign(c.slotsUsed, 0u);
