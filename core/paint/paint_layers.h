@@ -305,10 +305,15 @@ inline __m128 sourceOver4(__m128 values, __m128 value, __m128 start, __m128 a0, 
     return _mm_and_ps(_mm_cmpgt_ps(out, _mm_setzero_ps()), _mm_div_ps(numerator, denominator));
 }
 
+/** The four lanes of toBytes4() (0..255) as four bytes, lane 0 in the lowest. */
+inline std::uint32_t packBytes4(__m128i bytes) {
+    const __m128i words = _mm_packs_epi32(bytes, bytes);
+    return std::uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(words, words)));
+}
+
 /** Stores the four lanes of toBytes4() (0..255) as four bytes at p. */
 inline void storeBytes4(std::uint8_t* p, __m128i bytes) {
-    const __m128i words = _mm_packs_epi32(bytes, bytes);
-    const std::int32_t word = _mm_cvtsi128_si32(_mm_packus_epi16(words, words));
+    const std::uint32_t word = packBytes4(bytes);
     std::memcpy(p, &word, 4);
 }
 #endif

@@ -229,16 +229,70 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
         const __m128 over = _mm_min_ps(_mm_max_ps(layer, _mm_setzero_ps()), _mm_set1_ps(1.0f));
         return _mm_add_ps(below, _mm_mul_ps(a, _mm_sub_ps(over, below)));
     };
-    // The coverage of top[ch] at the texel (0 where none, as the loop below skips it).
-    const auto coverOf = [&](std::size_t ch, std::size_t local) {
-        const ChannelSource* src = top[ch];
-        if (src == nullptr)
-            return 0.0f;
-        float a =
-            fromByte(src->texels[local * std::size_t(src->comps + 1) + std::size_t(src->comps)]);
-        a *= src->opacity;
-        return a > 0.0f ? a : 0.0f;
-    };
+    if (lanes) {
+        // Without branches per texel: where the layer's coverage is 0 the blend gives the
+        // value below exactly (v + 0·(l − v)), so every texel takes the blend. A channel not
+        // painted here (or without a source) keeps its bytes: colour's fourth byte and the
+        // first and fourth of roughness-metallic are the base's.
+        static constexpr std::uint8_t kNothing[4] = {};
+        const bool colour = (channels & 1u) != 0;
+        const std::uint8_t* colourTexels = colour && top[0] != nullptr ? top[0]->texels : kNothing;
+        const std::size_t colourStep = colour && top[0] != nullptr ? 4 : 0;
+        const __m128 colourOpacity = _mm_set1_ps(top[0] != nullptr ? top[0]->opacity : 0.0f);
+        const std::uint8_t* rough =
+            (channels & 2u) != 0 && top[1] != nullptr ? top[1]->texels : nullptr;
+        const std::uint8_t* metal =
+            (channels & 4u) != 0 && top[2] != nullptr ? top[2]->texels : nullptr;
+        const __m128 mrOpacity = _mm_setr_ps(0.0f, rough != nullptr ? top[1]->opacity : 0.0f,
+                                             metal != nullptr ? top[2]->opacity : 0.0f, 0.0f);
+        const std::uint32_t mrPainted =
+            ((channels & 2u) != 0 ? 0x0000ff00u : 0u) | ((channels & 4u) != 0 ? 0x00ff0000u : 0u);
+        const auto word = [](const std::uint8_t* p) {
+            std::uint32_t w;
+            std::memcpy(&w, p, 4);
+            return w;
+        };
+        const auto bytesOf = [](__m128 v) { return layer_bytes::packBytes4(toBytes4(v)); };
+        for (int y = rect.y; y < rect.y + rect.height; ++y) {
+            const TexelSpan span = rowOf(rect, rows, y);
+            const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
+            for (int x = span.x0; x < span.x1; ++x) {
+                const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+                const std::size_t local = row + std::size_t(x - tr.x);
+                if (colour) {
+                    const __m128 layer = fromBytes4(colourTexels + local * colourStep);
+                    const __m128 a = _mm_mul_ps(
+                        _mm_shuffle_ps(layer, layer, _MM_SHUFFLE(3, 3, 3, 3)), colourOpacity);
+                    const std::uint32_t bytes =
+                        bytesOf(blend4(fromBytes4(baseColor + i), layer, a));
+                    const std::uint32_t out =
+                        (bytes & 0x00ffffffu) | (word(baseColor + i) & 0xff000000u);
+                    std::memcpy(color + i, &out, 4);
+                }
+                if (material) {
+                    std::uint32_t values = 0, covers = 0;
+                    if (rough != nullptr) {
+                        values |= std::uint32_t(rough[local * 2]) << 8;
+                        covers |= std::uint32_t(rough[local * 2 + 1]) << 8;
+                    }
+                    if (metal != nullptr) {
+                        values |= std::uint32_t(metal[local * 2]) << 16;
+                        covers |= std::uint32_t(metal[local * 2 + 1]) << 16;
+                    }
+                    const __m128 a = _mm_mul_ps(
+                        fromBytes4(reinterpret_cast<const std::uint8_t*>(&covers)), mrOpacity);
+                    const std::uint32_t bytes = bytesOf(
+                        blend4(fromBytes4(baseMr + i),
+                               fromBytes4(reinterpret_cast<const std::uint8_t*>(&values)), a));
+                    const std::uint32_t out = (bytes & mrPainted) |
+                                              (word(baseMr + i) & 0xff0000ffu) |
+                                              (word(mr + i) & ~(mrPainted | 0xff0000ffu));
+                    std::memcpy(mr + i, &out, 4);
+                }
+            }
+        }
+        return true;
+    }
 #endif
     for (int y = rect.y; y < rect.y + rect.height; ++y) {
         const TexelSpan span = rowOf(rect, rows, y);
@@ -266,39 +320,6 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
                 }
                 continue;
             }
-#if defined(__SSE2__)
-            if (lanes) {
-                if ((channels & 1u) != 0) {
-                    __m128 v = fromBytes4(baseColor + i);
-                    if (const float a = coverOf(0, local); a > 0.0f)
-                        v = blend4(v, fromBytes4(top[0]->texels + local * 4), _mm_set1_ps(a));
-                    const __m128i bytes = toBytes4(v);
-                    color[i] = std::uint8_t(_mm_cvtsi128_si32(bytes));
-                    color[i + 1] = std::uint8_t(_mm_extract_epi16(bytes, 2));
-                    color[i + 2] = std::uint8_t(_mm_extract_epi16(bytes, 4));
-                    color[i + 3] = baseColor[i + 3];
-                }
-                if (material) {
-                    __m128 v = fromBytes4(baseMr + i);
-                    const float a1 = (channels & 2u) != 0 ? coverOf(1, local) : 0.0f;
-                    const float a2 = (channels & 4u) != 0 ? coverOf(2, local) : 0.0f;
-                    if (a1 > 0.0f || a2 > 0.0f) {
-                        const float l1 = a1 > 0.0f ? fromByte(top[1]->texels[local * 2]) : 0.0f;
-                        const float l2 = a2 > 0.0f ? fromByte(top[2]->texels[local * 2]) : 0.0f;
-                        v = blend4(v, _mm_setr_ps(0.0f, l1, l2, 0.0f),
-                                   _mm_setr_ps(0.0f, a1, a2, 0.0f));
-                    }
-                    const __m128i bytes = toBytes4(v);
-                    mr[i] = baseMr[i];
-                    if ((channels & 2u) != 0)
-                        mr[i + 1] = std::uint8_t(_mm_extract_epi16(bytes, 2));
-                    if ((channels & 4u) != 0)
-                        mr[i + 2] = std::uint8_t(_mm_extract_epi16(bytes, 4));
-                    mr[i + 3] = baseMr[i + 3];
-                }
-                continue;
-            }
-#endif
             // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
             // operations on each value in the same order.
             float v[5] = {};
