@@ -67,6 +67,22 @@ TexelSpan rowOf(const TileRect& rect, std::span<const TexelSpan> rows, int y) {
     return rows.empty() ? TexelSpan{rect.x, rect.x + rect.width} : rows[std::size_t(y - rect.y)];
 }
 
+/**
+ * Calls fn(i, local) for every texel of rect (or of its rows): i is its first byte in the
+ * page's four-byte texels (width texels a row), local its index in its tile, whose rectangle is
+ * tile.
+ */
+template <typename Fn>
+void forEachTexel(const TileRect& rect, std::span<const TexelSpan> rows, const TileRect& tile,
+                  std::size_t width, Fn&& fn) {
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        const std::size_t row = std::size_t(y - tile.y) * std::size_t(tile.width);
+        for (int x = span.x0; x < span.x1; ++x)
+            fn((std::size_t(y) * width + std::size_t(x)) * 4, row + std::size_t(x - tile.x));
+    }
+}
+
 /** How many texels rect (or its rows) holds. */
 std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
     if (rows.empty())
@@ -88,6 +104,23 @@ struct ChannelSource {
     int comps = 1;         // 3 for base colour, 1 for roughness and metallic
     std::size_t first = 0; // its first of the 5 value planes
 };
+
+/**
+ * How much of src texel local takes (its coverage times the layer's opacity and mask), with
+ * texel set to its bytes (nullptr for a fill).
+ */
+inline float coverageOf(const ChannelSource& src, std::size_t local, const std::uint8_t*& texel) {
+    float a = 1.0f;
+    texel = nullptr;
+    if (src.texels != nullptr) {
+        texel = src.texels + local * std::size_t(src.comps + 1);
+        a = fromByte(texel[src.comps]);
+    }
+    a *= src.opacity;
+    if (src.masked)
+        a *= fromByte(src.mask != nullptr ? src.mask[local] : src.maskFill);
+    return a;
+}
 
 /**
  * Channel c of layer in tile of page, or nothing when it changes no texel there: hidden, fully
@@ -253,120 +286,99 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
             return w;
         };
         const auto bytesOf = [](__m128 v) { return layer_bytes::packBytes4(toBytes4(v)); };
-        for (int y = rect.y; y < rect.y + rect.height; ++y) {
-            const TexelSpan span = rowOf(rect, rows, y);
-            const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
-            for (int x = span.x0; x < span.x1; ++x) {
-                const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
-                const std::size_t local = row + std::size_t(x - tr.x);
-                if (colour) {
-                    const __m128 layer = fromBytes4(colourTexels + local * colourStep);
-                    const __m128 a = _mm_mul_ps(
-                        _mm_shuffle_ps(layer, layer, _MM_SHUFFLE(3, 3, 3, 3)), colourOpacity);
-                    const std::uint32_t bytes =
-                        bytesOf(blend4(fromBytes4(baseColor + i), layer, a));
-                    const std::uint32_t out =
-                        (bytes & 0x00ffffffu) | (word(baseColor + i) & 0xff000000u);
-                    std::memcpy(color + i, &out, 4);
-                }
-                if (material) {
-                    std::uint32_t values = 0, covers = 0;
-                    if (rough != nullptr) {
-                        values |= std::uint32_t(rough[local * 2]) << 8;
-                        covers |= std::uint32_t(rough[local * 2 + 1]) << 8;
-                    }
-                    if (metal != nullptr) {
-                        values |= std::uint32_t(metal[local * 2]) << 16;
-                        covers |= std::uint32_t(metal[local * 2 + 1]) << 16;
-                    }
-                    const __m128 a = _mm_mul_ps(
-                        fromBytes4(reinterpret_cast<const std::uint8_t*>(&covers)), mrOpacity);
-                    const std::uint32_t bytes = bytesOf(
-                        blend4(fromBytes4(baseMr + i),
-                               fromBytes4(reinterpret_cast<const std::uint8_t*>(&values)), a));
-                    const std::uint32_t out = (bytes & mrPainted) |
-                                              (word(baseMr + i) & 0xff0000ffu) |
-                                              (word(mr + i) & ~(mrPainted | 0xff0000ffu));
-                    std::memcpy(mr + i, &out, 4);
-                }
+        forEachTexel(rect, rows, tr, width, [&](std::size_t i, std::size_t local) {
+            if (colour) {
+                const __m128 layer = fromBytes4(colourTexels + local * colourStep);
+                const __m128 a = _mm_mul_ps(_mm_shuffle_ps(layer, layer, _MM_SHUFFLE(3, 3, 3, 3)),
+                                            colourOpacity);
+                const std::uint32_t bytes = bytesOf(blend4(fromBytes4(baseColor + i), layer, a));
+                const std::uint32_t out =
+                    (bytes & 0x00ffffffu) | (word(baseColor + i) & 0xff000000u);
+                std::memcpy(color + i, &out, 4);
             }
-        }
+            if (material) {
+                std::uint32_t values = 0, covers = 0;
+                if (rough != nullptr) {
+                    values |= std::uint32_t(rough[local * 2]) << 8;
+                    covers |= std::uint32_t(rough[local * 2 + 1]) << 8;
+                }
+                if (metal != nullptr) {
+                    values |= std::uint32_t(metal[local * 2]) << 16;
+                    covers |= std::uint32_t(metal[local * 2 + 1]) << 16;
+                }
+                const __m128 a = _mm_mul_ps(
+                    fromBytes4(reinterpret_cast<const std::uint8_t*>(&covers)), mrOpacity);
+                const std::uint32_t bytes =
+                    bytesOf(blend4(fromBytes4(baseMr + i),
+                                   fromBytes4(reinterpret_cast<const std::uint8_t*>(&values)), a));
+                const std::uint32_t out = (bytes & mrPainted) | (word(baseMr + i) & 0xff0000ffu) |
+                                          (word(mr + i) & ~(mrPainted | 0xff0000ffu));
+                std::memcpy(mr + i, &out, 4);
+            }
+        });
         return true;
     }
 #endif
-    for (int y = rect.y; y < rect.y + rect.height; ++y) {
-        const TexelSpan span = rowOf(rect, rows, y);
-        const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
-        for (int x = span.x0; x < span.x1; ++x) {
-            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
-            const std::size_t local = row + std::size_t(x - tr.x);
-            if (opaqueTops && std::all_of(top.begin(), top.end(), [&](const ChannelSource* src) {
-                    return src == nullptr || src->texels[local * std::size_t(src->comps + 1) +
-                                                         std::size_t(src->comps)] == 255;
-                })) {
-                if ((channels & 1u) != 0) {
-                    for (int k = 0; k < 3; ++k)
-                        color[i + std::size_t(k)] =
-                            topByte(0, local, k, baseColor[i + std::size_t(k)]);
-                    color[i + 3] = baseColor[i + 3];
-                }
-                if (material) {
-                    mr[i] = baseMr[i];
-                    if ((channels & 2u) != 0)
-                        mr[i + 1] = topByte(1, local, 0, baseMr[i + 1]);
-                    if ((channels & 4u) != 0)
-                        mr[i + 2] = topByte(2, local, 0, baseMr[i + 2]);
-                    mr[i + 3] = baseMr[i + 3];
-                }
-                continue;
-            }
-            // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
-            // operations on each value in the same order.
-            float v[5] = {};
-            if ((channels & 1u) != 0)
-                for (std::size_t k = 0; k < 3; ++k)
-                    v[k] = fromByte(baseColor[i + k]);
-            if (baseMr != nullptr) {
-                if ((channels & 2u) != 0)
-                    v[3] = fromByte(baseMr[i + 1]);
-                if ((channels & 4u) != 0)
-                    v[4] = fromByte(baseMr[i + 2]);
-            }
-            for (std::size_t j = 0; j < count; ++j) {
-                const ChannelSource& src = sources[j];
-                float a = 1.0f;
-                const std::uint8_t* t = nullptr;
-                if (src.texels != nullptr) {
-                    t = src.texels + local * std::size_t(src.comps + 1);
-                    a = fromByte(t[src.comps]);
-                }
-                a *= src.opacity;
-                if (src.masked)
-                    a *= fromByte(src.mask != nullptr ? src.mask[local] : src.maskFill);
-                if (!(a > 0.0f))
-                    continue;
-                for (int k = 0; k < src.comps; ++k) {
-                    const float layer = t != nullptr ? fromByte(t[k]) : src.fill[std::size_t(k)];
-                    float& value = v[src.first + std::size_t(k)];
-                    value += a * (blendAs<BlendMode::Normal>(value, layer) - value);
-                }
-            }
+    forEachTexel(rect, rows, tr, width, [&](std::size_t i, std::size_t local) {
+        if (opaqueTops && std::all_of(top.begin(), top.end(), [&](const ChannelSource* src) {
+                return src == nullptr ||
+                       src->texels[local * std::size_t(src->comps + 1) + std::size_t(src->comps)] ==
+                           255;
+            })) {
             if ((channels & 1u) != 0) {
-                color[i] = toByte(v[0]);
-                color[i + 1] = toByte(v[1]);
-                color[i + 2] = toByte(v[2]);
+                for (int k = 0; k < 3; ++k)
+                    color[i + std::size_t(k)] = topByte(0, local, k, baseColor[i + std::size_t(k)]);
                 color[i + 3] = baseColor[i + 3];
             }
             if (material) {
                 mr[i] = baseMr[i];
                 if ((channels & 2u) != 0)
-                    mr[i + 1] = toByte(v[3]);
+                    mr[i + 1] = topByte(1, local, 0, baseMr[i + 1]);
                 if ((channels & 4u) != 0)
-                    mr[i + 2] = toByte(v[4]);
+                    mr[i + 2] = topByte(2, local, 0, baseMr[i + 2]);
                 mr[i + 3] = baseMr[i + 3];
             }
+            return;
         }
-    }
+        // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
+        // operations on each value in the same order.
+        float v[5] = {};
+        if ((channels & 1u) != 0)
+            for (std::size_t k = 0; k < 3; ++k)
+                v[k] = fromByte(baseColor[i + k]);
+        if (baseMr != nullptr) {
+            if ((channels & 2u) != 0)
+                v[3] = fromByte(baseMr[i + 1]);
+            if ((channels & 4u) != 0)
+                v[4] = fromByte(baseMr[i + 2]);
+        }
+        for (std::size_t j = 0; j < count; ++j) {
+            const ChannelSource& src = sources[j];
+            const std::uint8_t* t = nullptr;
+            const float a = coverageOf(src, local, t);
+            if (!(a > 0.0f))
+                continue;
+            for (int k = 0; k < src.comps; ++k) {
+                const float layer = t != nullptr ? fromByte(t[k]) : src.fill[std::size_t(k)];
+                float& value = v[src.first + std::size_t(k)];
+                value += a * (blendAs<BlendMode::Normal>(value, layer) - value);
+            }
+        }
+        if ((channels & 1u) != 0) {
+            color[i] = toByte(v[0]);
+            color[i + 1] = toByte(v[1]);
+            color[i + 2] = toByte(v[2]);
+            color[i + 3] = baseColor[i + 3];
+        }
+        if (material) {
+            mr[i] = baseMr[i];
+            if ((channels & 2u) != 0)
+                mr[i + 1] = toByte(v[3]);
+            if ((channels & 4u) != 0)
+                mr[i + 2] = toByte(v[4]);
+            mr[i + 3] = baseMr[i + 3];
+        }
+    });
     return true;
 }
 
@@ -424,7 +436,6 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
             if (!src)
                 continue;
             const ChannelSource& s = *src;
-            const std::size_t stride = std::size_t(s.comps + 1);
             withMode(st.blend, [&](auto mode) {
                 constexpr BlendMode kMode = decltype(mode)::value;
                 std::size_t at = 0;
@@ -433,15 +444,8 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
                     const TexelSpan span = rowOf(rect, rows, y);
                     for (int x = span.x0; x < span.x1; ++x, ++at) {
                         const std::size_t local = row + std::size_t(x - tr.x);
-                        float a = 1.0f;
                         const std::uint8_t* t = nullptr;
-                        if (s.texels != nullptr) {
-                            t = s.texels + local * stride;
-                            a = fromByte(t[s.comps]);
-                        }
-                        a *= s.opacity;
-                        if (s.masked)
-                            a *= fromByte(s.mask != nullptr ? s.mask[local] : s.maskFill);
+                        const float a = coverageOf(s, local, t);
                         if (!(a > 0.0f))
                             continue;
                         for (int k = 0; k < s.comps; ++k) {
