@@ -275,4 +275,34 @@ TEST_F(CompositeUpdateTest, NormalLayersOverTheBaseInOnePassGiveTheFullRecompute
     EXPECT_GE(m_changed, 6) << "the strokes changed the composite";
 }
 
+// One paint layer at full opacity over the base, the composite's case in lanes: texels the layer
+// covers fully (a hard brush at full flow), partly and not at all, its channels painted three,
+// one and two at a time (the others keep their bytes).
+TEST_F(CompositeUpdateTest, OneOpaqueLayerOverTheBaseGivesTheFullRecomputesBytes) {
+    core::Brush& brush = m_doc.brush();
+    select(add("top", BlendMode::Normal, 1.0f));
+    brush.paintRoughness = brush.paintMetallic = true;
+    brush.roughness = 0.2f;
+    brush.metallic = 0.9f;
+    brush.hardness = 1.0f;
+    brush.flow = 1.0f;
+    stroke("all channels, hard", kAcross);
+    brush.hardness = 0.3f;
+    brush.flow = 0.6f;
+    brush.paintBaseColor = brush.paintMetallic = false;
+    brush.roughness = 0.7f;
+    stroke("roughness only", kDown);
+    brush.paintRoughness = false;
+    brush.paintMetallic = true;
+    brush.metallic = 0.1f;
+    stroke("metallic only", kDiagonal);
+    brush.paintBaseColor = true;
+    brush.paintRoughness = true;
+    brush.paintMetallic = false;
+    brush.color = {0.1f, 0.5f, 0.9f, 1.0f};
+    stroke("base colour and roughness", kDiagonal);
+    undo("base colour and roughness");
+    EXPECT_GE(m_changed, 4) << "the strokes changed the composite";
+}
+
 } // namespace
