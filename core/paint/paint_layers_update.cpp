@@ -247,7 +247,11 @@ bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, co
     };
 
     const TileRect tr = tileRectOf(m_pages[page], tile);
-    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    // Named, not bound: the texel loops' lambdas take them (clang 14 cannot capture bindings).
+    const PageBytes pixels = pageBytes(page, channels);
+    const std::size_t width = pixels.width;
+    const std::uint8_t *baseColor = pixels.baseColor, *baseMr = pixels.baseMr;
+    std::uint8_t *color = pixels.color, *mr = pixels.mr;
     const bool material = mr != nullptr;
 #if defined(__SSE2__)
     // One unmasked paint layer's texels per channel at most (painting a paint layer with
