@@ -108,6 +108,29 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
     const int w = stack.width, h = stack.height;
     const int parts = partCount(h, threads);
     auto rowFragment = [&](int y) { return stack.offsets[std::size_t(y) * std::size_t(w)]; };
+    // Bands of rows with about as many fragments each (a model seldom fills the view evenly):
+    // band i is rows [bandRow[i], bandRow[i + 1]), perhaps empty.
+    std::vector<int> bandRow(std::size_t(parts) + 1, h);
+    for (int index = 0; index < parts; ++index) {
+        const std::uint64_t wanted =
+            std::uint64_t(fragments) * std::uint64_t(index) / std::uint64_t(parts);
+        int lo = 0, hi = h; // the first row starting at or after the wanted fragment
+        while (lo < hi) {
+            const int mid = lo + (hi - lo) / 2;
+            if (rowFragment(mid) < wanted)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        bandRow[std::size_t(index)] = index == 0 ? 0 : lo;
+    }
+    // Calls fn(band, y0, y1) for every band, each on its own thread.
+    const auto forBands = [&](auto&& fn) {
+        parallelRanges(parts, unsigned(parts), [&](int, int begin, int end) {
+            for (int index = begin; index < end; ++index)
+                fn(index, bandRow[std::size_t(index)], bandRow[std::size_t(index) + 1]);
+        });
+    };
     struct Part {
         std::vector<std::uint32_t> roots;      // local roots in scan order
         std::vector<std::uint32_t> rootLayers; // their 1-based layers
@@ -134,7 +157,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
     //    and note its roots.
     std::vector<std::uint32_t> parentStore(fragments);
     std::uint32_t* parent = parentStore.data();
-    parallelRanges(h, threads, [&](int index, int y0, int y1) {
+    forBands([&](int index, int y0, int y1) {
         Part& own = part[std::size_t(index)];
         const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
         std::iota(parent + f0, parent + f1, f0);
@@ -150,7 +173,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
     });
     // 2. Stitch the bands in order; this only touches roots and short paths.
     for (int index = 1; index < parts; ++index)
-        if (const int y = splitBegin(h, parts, index); y > 0 && y < h)
+        if (const int y = bandRow[std::size_t(index)]; y > 0 && y < h)
             stitchRows(stack, conn, parent, y);
 
     // 3. Number the surviving roots by layer, then scan order (bands are in scan order).
@@ -185,7 +208,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
 
     // 4. Every fragment's id, the partial region nodes and the cross-layer links, per band.
     //    Another band's ids are read through the (final) roots only.
-    parallelRanges(h, threads, [&](int index, int y0, int y1) {
+    forBands([&](int index, int y0, int y1) {
         Part& own = part[std::size_t(index)];
         own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
         own.recent.assign(std::size_t(1) << 12, kNone);
