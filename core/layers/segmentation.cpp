@@ -253,6 +253,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                     }
                 }
             }
+        std::sort(own.pairs.begin(), own.pairs.end());
     });
 
     const auto graphStart = std::chrono::steady_clock::now();
@@ -278,10 +279,13 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         }
 
     // 6. Region edges: count the unordered region pairs of the cross-layer links.
+    //    Each band sorted its own; merged here.
     std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
-    for (const Part& own : part)
+    for (const Part& own : part) {
+        const std::ptrdiff_t sorted = std::ptrdiff_t(pairs.size());
         pairs.insert(pairs.end(), own.pairs.begin(), own.pairs.end());
-    std::sort(pairs.begin(), pairs.end());
+        std::inplace_merge(pairs.begin(), pairs.begin() + sorted, pairs.end());
+    }
     std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // unique pair, link count
     for (std::size_t i = 0; i < pairs.size();) {
         std::uint32_t count = 0;
