@@ -16,6 +16,7 @@
 
 #include "render/gl_buffer.h"
 #include "render/shader_library.h"
+#include "render/software_gl.h"
 
 namespace render {
 
@@ -86,19 +87,6 @@ std::optional<ConnectivityBackend> parseConnectivityBackend(std::string_view nam
         if (key == connectivityBackendName(backend))
             return backend;
     return std::nullopt;
-}
-
-bool isSoftwareRenderer(std::string_view rendererName) {
-    const std::string name = lowered(rendererName);
-    for (const char* software : {"llvmpipe", "softpipe", "swiftshader", "software rasterizer"})
-        if (name.find(software) != std::string::npos)
-            return true;
-    return false;
-}
-
-bool isSoftwareRenderer() {
-    const auto* name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    return name && isSoftwareRenderer(std::string_view(name));
 }
 
 ConnectivityBackend resolveConnectivityBackend(ConnectivityBackend requested,

@@ -20,11 +20,6 @@ const char* connectivityBackendName(ConnectivityBackend backend);
 /** The backend named (case-insensitive), or nothing for an unknown name. */
 std::optional<ConnectivityBackend> parseConnectivityBackend(std::string_view name);
 
-/** Whether a GL_RENDERER string names a software rasterizer (llvmpipe, softpipe, SwiftShader). */
-bool isSoftwareRenderer(std::string_view rendererName);
-/** The same for the current context's GL_RENDERER; false without a current context. */
-bool isSoftwareRenderer();
-
 /**
  * Cpu or Gpu for a request: Auto is Cpu on a software renderer (its compute shaders run this
  * pass 2–3× slower than the threaded C++ reference) and Gpu on real graphics hardware.

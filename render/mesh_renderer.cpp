@@ -11,6 +11,7 @@
 
 #include "render/paint_texture.h"
 #include "render/shader_library.h"
+#include "render/software_gl.h"
 
 namespace render {
 
@@ -72,6 +73,7 @@ struct MeshRenderer::Impl {
     GLuint standInVao = 0, standInIbo = 0;
     std::vector<MaterialRun> standInRuns;
     std::size_t lastTriangles = 0;
+    int drawPieces = 1; // drawInPieces(): cut on a software rasterizer
 
     GLuint makeVao(GLuint indexBuffer) const {
         GLuint array = 0;
@@ -157,6 +159,7 @@ core::Status MeshRenderer::initialize() {
     if (!program)
         return core::Error{program.error()};
     m_impl->programs[0] = std::move(program).value();
+    m_impl->drawPieces = drawPiecesForCurrentContext();
     return {};
 }
 
@@ -303,8 +306,11 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             glBindTextureUnit(0, d.textures[texture].id());
         if (lit && program != &d.programs[0])
             glBindTextureUnit(1, d.metallicRoughness[texture].id());
-        glDrawElements(GL_TRIANGLES, GLsizei(run.triangleCount * 3), GL_UNSIGNED_INT,
-                       reinterpret_cast<const void*>(std::uintptr_t(run.firstTriangle) * 12));
+        drawInPieces(run.firstTriangle, run.triangleCount, d.drawPieces,
+                     [](std::size_t first, std::size_t count) {
+                         glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(std::uintptr_t(first) * 12));
+                     });
         d.lastTriangles += run.triangleCount;
     }
     glBindVertexArray(0);

@@ -22,6 +22,7 @@
 #include "render/gl_context.h"
 #include "render/gpu_connectivity.h"
 #include "render/layer_capture.h"
+#include "render/software_gl.h"
 
 namespace {
 

@@ -14,6 +14,7 @@
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 #include "render/shader_library.h"
+#include "render/software_gl.h"
 
 namespace {
 
@@ -50,6 +51,31 @@ std::vector<std::uint8_t> cpuCoverage(const core::Mesh& mesh, const core::View& 
 
 TEST_F(GlTest, ContextIsOpenGl45Core) {
     EXPECT_FALSE(render::HeadlessContext::rendererName().empty());
+}
+
+TEST_F(GlTest, LargeDrawsAreCutIntoConsecutivePiecesOnSoftwareRasterizers) {
+    EXPECT_EQ(render::drawPiecesForCurrentContext(),
+              render::isSoftwareRenderer() ? render::kSoftwareDrawPieces : 1);
+    using Pieces = std::vector<std::pair<std::size_t, std::size_t>>;
+    const auto cut = [](std::size_t first, std::size_t count, int pieces) {
+        Pieces out;
+        render::drawInPieces(first, count, pieces,
+                             [&](std::size_t f, std::size_t n) { out.emplace_back(f, n); });
+        return out;
+    };
+    EXPECT_EQ(cut(100, 100000, 8), (Pieces{{100, 12500},
+                                           {12600, 12500},
+                                           {25100, 12500},
+                                           {37600, 12500},
+                                           {50100, 12500},
+                                           {62600, 12500},
+                                           {75100, 12500},
+                                           {87600, 12500}}));
+    EXPECT_EQ(cut(0, 100000, 1), (Pieces{{0, 100000}}));
+    // No piece under kMinDrawPiece triangles, but for the last.
+    EXPECT_EQ(cut(0, 20000, 8), (Pieces{{0, 8192}, {8192, 8192}, {16384, 3616}}));
+    EXPECT_EQ(cut(7, 5000, 8), (Pieces{{7, 5000}}));
+    EXPECT_TRUE(cut(0, 0, 8).empty());
 }
 
 TEST_F(GlTest, MissingShaderIsReportedByName) {
