@@ -241,7 +241,7 @@ struct LayerCapture::Impl {
     std::size_t capacity = 0;                   // nodes that fit in `nodes`
     std::size_t requestedCapacity = 0;          // from setNodeCapacity, applied at the next capture
     bool headsEmpty = false;                    // every head is kEmpty (the resolve resets them)
-    int drawPieces = 1;                         // drawInPieces(): cut on a software rasterizer
+    bool software = false;                      // a software rasterizer (see drawPieces())
     int totalRecaptures = 0;
     std::unique_ptr<BandPool> pool;
     std::vector<Band> bands;
@@ -341,7 +341,9 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     for (std::size_t c = 0; c < nodes.size(); ++c)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(2 + c), nodes[c].id);
     glBindVertexArray(vertexArray);
-    drawInPieces(0, soupVertices / 3, drawPieces, [](std::size_t first, std::size_t count) {
+    const std::size_t triangles = soupVertices / 3;
+    const int pieces = drawPieces(software, triangles, std::size_t(view.width) * view.height);
+    drawInPieces(0, triangles, pieces, [](std::size_t first, std::size_t count) {
         glDrawArrays(GL_TRIANGLES, GLint(3 * first), GLsizei(3 * count));
     });
     for (GLuint binding = 0; binding < GLuint(2 + nodes.size()); ++binding)
@@ -475,7 +477,7 @@ LayerCapture::~LayerCapture() {
 
 core::Status LayerCapture::initialize() {
     Impl& d = *m_impl;
-    d.drawPieces = drawPiecesForCurrentContext();
+    d.software = isSoftwareRenderer();
     auto program = buildCaptureProgram(1);
     if (!program)
         return core::Error{program.error()};

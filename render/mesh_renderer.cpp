@@ -73,7 +73,7 @@ struct MeshRenderer::Impl {
     GLuint standInVao = 0, standInIbo = 0;
     std::vector<MaterialRun> standInRuns;
     std::size_t lastTriangles = 0;
-    int drawPieces = 1; // drawInPieces(): cut on a software rasterizer
+    bool software = false; // a software rasterizer (see drawPieces())
 
     GLuint makeVao(GLuint indexBuffer) const {
         GLuint array = 0;
@@ -159,7 +159,7 @@ core::Status MeshRenderer::initialize() {
     if (!program)
         return core::Error{program.error()};
     m_impl->programs[0] = std::move(program).value();
-    m_impl->drawPieces = drawPiecesForCurrentContext();
+    m_impl->software = isSoftwareRenderer();
     return {};
 }
 
@@ -284,7 +284,12 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         glDisable(GL_CULL_FACE);
     glBindVertexArray(standIn ? d.standInVao : d.vao);
     const ShaderProgram* current = nullptr;
-    for (const MaterialRun& run : standIn ? d.standInRuns : d.runs) {
+    const std::vector<MaterialRun>& runs = standIn ? d.standInRuns : d.runs;
+    std::size_t triangles = 0;
+    for (const MaterialRun& run : runs)
+        triangles += run.triangleCount;
+    const int pieces = drawPieces(d.software, triangles, std::size_t(view.width) * view.height);
+    for (const MaterialRun& run : runs) {
         const core::Material& material = d.materials[run.material];
         const bool textured = material.baseColorTexture >= 0;
         const std::size_t texture = textured ? std::size_t(material.baseColorTexture) : 0;
@@ -306,7 +311,7 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             glBindTextureUnit(0, d.textures[texture].id());
         if (lit && program != &d.programs[0])
             glBindTextureUnit(1, d.metallicRoughness[texture].id());
-        drawInPieces(run.firstTriangle, run.triangleCount, d.drawPieces,
+        drawInPieces(run.firstTriangle, run.triangleCount, pieces,
                      [](std::size_t first, std::size_t count) {
                          glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
                                         reinterpret_cast<const void*>(std::uintptr_t(first) * 12));

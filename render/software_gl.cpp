@@ -23,8 +23,8 @@ bool isSoftwareRenderer() {
     return name && isSoftwareRenderer(std::string_view(name));
 }
 
-int drawPiecesForCurrentContext() {
-    return isSoftwareRenderer() ? kSoftwareDrawPieces : 1;
+int drawPieces(bool software, std::size_t triangles, std::size_t pixels) {
+    return software && triangles * kPixelsPerTriangleToCut >= pixels ? kSoftwareDrawPieces : 1;
 }
 
 void drawInPieces(std::size_t first, std::size_t count, int pieces,

@@ -54,8 +54,10 @@ TEST_F(GlTest, ContextIsOpenGl45Core) {
 }
 
 TEST_F(GlTest, LargeDrawsAreCutIntoConsecutivePiecesOnSoftwareRasterizers) {
-    EXPECT_EQ(render::drawPiecesForCurrentContext(),
-              render::isSoftwareRenderer() ? render::kSoftwareDrawPieces : 1);
+    // Cut on a software rasterizer when there is a triangle for every 4 pixels or more.
+    EXPECT_EQ(render::drawPieces(true, 230400, 1280 * 720), render::kSoftwareDrawPieces);
+    EXPECT_EQ(render::drawPieces(true, 230399, 1280 * 720), 1);
+    EXPECT_EQ(render::drawPieces(false, 10'000'000, 1280 * 720), 1);
     using Pieces = std::vector<std::pair<std::size_t, std::size_t>>;
     const auto cut = [](std::size_t first, std::size_t count, int pieces) {
         Pieces out;
