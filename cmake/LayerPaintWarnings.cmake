@@ -3,6 +3,10 @@
 function(layerpaint_set_flags target)
     target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow
         -Wnon-virtual-dtor -Wcast-align -Woverloaded-virtual -Wno-missing-field-initializers)
+    # Debug sections compressed (zlib) in objects, archives and binaries: about half the disk a
+    # build with debug info takes; gdb and the sanitizers' symbolizers read them as they are.
+    target_compile_options(${target} PRIVATE -gz)
+    target_link_options(${target} PRIVATE -gz)
     if(LAYERPAINT_STRICT)
         target_compile_options(${target} PRIVATE -Werror)
     endif()
