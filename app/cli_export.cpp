@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `export`: the GUI's File ▸ Export headless. A project exports its paint; a plain model exports
 // as loaded (a format conversion) unless a paint target is asked for.
-#include <algorithm>
-#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
@@ -10,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/layer_export.h"
@@ -28,9 +27,7 @@ double msSince(std::chrono::steady_clock::time_point start) {
 std::optional<core::ExportFormat> formatOf(const ExportArgs& args) {
     if (!args.format.empty())
         return core::parseExportFormat(args.format);
-    std::string ext = std::filesystem::path(args.out).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = core::lowerExtension(args.out);
     if (ext == ".glb")
         return core::ExportFormat::Glb;
     if (ext == ".obj")

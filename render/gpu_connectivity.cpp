@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 #include <glm/trigonometric.hpp>
 
+#include "core/base/text.h"
 #include "render/gl_buffer.h"
 #include "render/shader_library.h"
 #include "render/software_gl.h"
@@ -60,12 +61,6 @@ struct Buffer : GlBuffer {
     }
 };
 
-std::string lowered(std::string_view text) {
-    std::string out(text);
-    for (char& c : out)
-        c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
-    return out;
-}
 } // namespace
 
 const char* connectivityBackendName(ConnectivityBackend backend) {
@@ -81,7 +76,7 @@ const char* connectivityBackendName(ConnectivityBackend backend) {
 }
 
 std::optional<ConnectivityBackend> parseConnectivityBackend(std::string_view name) {
-    const std::string key = lowered(name);
+    const std::string key = core::asciiLower(name);
     for (ConnectivityBackend backend :
          {ConnectivityBackend::Auto, ConnectivityBackend::Cpu, ConnectivityBackend::Gpu})
         if (key == connectivityBackendName(backend))

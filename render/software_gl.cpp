@@ -6,12 +6,12 @@
 
 #include <epoxy/gl.h>
 
+#include "core/base/text.h"
+
 namespace render {
 
 bool isSoftwareRenderer(std::string_view rendererName) {
-    std::string name(rendererName);
-    for (char& c : name)
-        c = char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    const std::string name = core::asciiLower(rendererName);
     for (const char* software : {"llvmpipe", "softpipe", "swiftshader", "software rasterizer"})
         if (name.find(software) != std::string::npos)
             return true;

@@ -16,6 +16,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include "core/base/text.h"
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_io_in_process.h"
@@ -60,9 +61,7 @@ std::string formatName(const std::uint8_t* data, std::size_t size, const std::st
     const std::size_t dot = name.find_last_of('.');
     if (dot == std::string::npos || dot + 1 >= name.size())
         return {};
-    std::string ext = name.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = asciiLower(std::string_view(name).substr(dot + 1));
     // Only formats without a signature are worth trying by extension.
     if (ext == "tga" || ext == "targa")
         return "targa";

@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/base/text.h"
 #include "core/io/mesh_io_in_process.h"
 #include "core/model/builtin_models.h"
 
@@ -30,12 +31,6 @@ Result<Mesh> loadAssimp(const std::filesystem::path& file, const ProgressFn& pro
 } // namespace detail
 
 namespace {
-
-std::string toLower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
 
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
@@ -246,7 +241,7 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
 
     if (!reportProgress(progress, 0.0))
         return fileError(path, "cancelled", ErrorKind::Cancelled);
-    const std::string ext = toLower(given.extension().string());
+    const std::string ext = lowerExtension(given);
     Result<Mesh> result = (ext == ".gltf" || ext == ".glb")
                               ? detail::loadGltf(file, progress, limits)
                               : detail::loadAssimp(file, progress, limits);

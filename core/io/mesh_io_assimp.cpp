@@ -39,6 +39,7 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "core/base/text.h"
 #include "core/io/assimp_file_access.h"
 #include "core/io/assimp_flatten.h"
 #include "core/io/assimp_prechecks.h"
@@ -133,9 +134,7 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     // Keep loaders from building skeleton-only placeholder meshes.
     importer.SetPropertyBool(AI_CONFIG_IMPORT_NO_SKELETON_MESHES, true);
 
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lowerExtension(file);
     if (ext == ".obj")
         if (Status checked = assimp::checkObjFaces(file); !checked)
             return checked.takeError();

@@ -30,6 +30,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "core/base/text.h"
 #include "core/io/glb_container.h"
 #include "core/io/gltf_accessors.h"
 #include "core/io/gltf_draco.h"
@@ -81,10 +82,7 @@ std::string oneLine(const std::string& s) {
 }
 
 bool isGlbName(const fs::path& file) {
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext == ".glb";
+    return lowerExtension(file) == ".glb";
 }
 
 /** Whether text starts (after white space and a UTF-8 byte order mark) with "{". */

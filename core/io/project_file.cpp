@@ -3,12 +3,11 @@
 // is read and written by core/document/project_state.h).
 #include "core/io/project_file.h"
 
-#include <algorithm>
-#include <cctype>
 #include <exception>
 #include <filesystem>
 #include <new>
 
+#include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/io/gltf_export.h"
 #include "core/io/mesh_io_in_process.h"
@@ -22,9 +21,7 @@ namespace {
 using Json = nlohmann::json;
 
 bool isGltfPath(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string ext = lowerExtension(path);
     return ext == ".glb" || ext == ".gltf";
 }
 

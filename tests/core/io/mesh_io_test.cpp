@@ -1094,6 +1094,27 @@ TEST(MeshIo, ConcurrentLoadsAgree) {
         }
 }
 
+TEST(MeshIo, ExtensionsAreReadInAnyCase) {
+    // The loader is chosen by the extension, whatever its case: BOX.GLB through the glTF reader
+    // (a GLB read as anything else fails), BOX.OBJ through Assimp.
+    const TempDir dir;
+    ASSERT_FALSE(dir.path().empty());
+    const std::pair<const char*, const char*> files[] = {
+        {"glTF2/BoxTextured-glTF-Binary/BoxTextured.glb", "BOX.GLB"},
+        {"OBJ/box.obj", "Box.Obj"},
+    };
+    for (const auto& [from, to] : files) {
+        const fs::path copy = dir.path() / to;
+        fs::copy_file(corpus(from), copy);
+        const core::Result<core::Mesh> upper = core::loadMesh(copy.string());
+        const core::Result<core::Mesh> lower = core::loadMesh(corpus(from));
+        ASSERT_TRUE(upper.ok()) << upper.error();
+        ASSERT_TRUE(lower.ok()) << lower.error();
+        EXPECT_EQ(upper->positions, lower->positions) << to;
+        EXPECT_EQ(upper->triangleCount(), lower->triangleCount()) << to;
+    }
+}
+
 TEST(MeshIo, BuiltinModelsAreDispatched) {
     const core::Result<core::Mesh> unknown = core::loadMesh("builtin:no-such-model");
     ASSERT_FALSE(unknown.ok());
