@@ -234,14 +234,19 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     for (const Json& e : json.value("extensionsUsed", Json::array()))
         compressed = compressed || e == "KHR_draco_mesh_compression" ||
                      e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression";
-    if (Json patched = compressed ? json : Json();
-        compressed && (gltf::replaceFallbackBuffers(patched) | gltf::dropDracoIndices(patched))) {
-        if (binary) {
-            bytes = replaceGlbJson(bytes, parts, patched.dump());
-            parts.length = bytes.size();
-        } else {
-            const std::string text = patched.dump();
-            bytes.assign(text.begin(), text.end());
+    if (compressed) {
+        Json patched = json;
+        // Both edits run on every compressed file, whether or not the first changed anything.
+        const bool replaced = gltf::replaceFallbackBuffers(patched);
+        const bool dropped = gltf::dropDracoIndices(patched);
+        if (replaced || dropped) {
+            if (binary) {
+                bytes = replaceGlbJson(bytes, parts, patched.dump());
+                parts.length = bytes.size();
+            } else {
+                const std::string text = patched.dump();
+                bytes.assign(text.begin(), text.end());
+            }
         }
     }
 
