@@ -124,7 +124,7 @@ private:
         Side* down = &m_sides[2];
         for (int y = y0; y < y1; ++y) {
             bool curLoaded = false;
-            for (int x = 0; x < w; ++x) {
+            for (auto [x, end] = m_stack.rowSpan(y); x < end; ++x) {
                 const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
                 if (m_stack.layerCount(p) == 0) {
                     curLoaded = false;

@@ -5,6 +5,17 @@
 
 namespace core {
 
+std::pair<int, int> LayerStack::rowSpan(int y) const {
+    // Offsets never fall: a row's first pixel with fragments is the first whose end is past the
+    // row's start, and its pixels from the one starting at the row's end on are empty.
+    const std::uint32_t* row = offsets.data() + std::size_t(y) * std::size_t(width);
+    const std::uint32_t* rowEnd = row + width;
+    const std::uint32_t* firstEnd = std::upper_bound(row + 1, rowEnd + 1, *row);
+    if (firstEnd > rowEnd)
+        return {0, 0};
+    return {int(firstEnd - row) - 1, int(std::lower_bound(row, rowEnd, *rowEnd) - row)};
+}
+
 std::uint32_t LayerStack::maxLayers() const {
     std::uint32_t deepest = 0;
     const std::size_t pixels = offsets.empty() ? 0 : std::min(pixelCount(), offsets.size() - 1);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace core {
@@ -34,6 +35,12 @@ struct LayerStack {
     std::uint32_t fragment(std::size_t pixel, std::uint32_t layer) const {
         return layer >= 1 && layer <= layerCount(pixel) ? offsets[pixel] + layer - 1 : kNone;
     }
+    /**
+     * The columns [first, last] of row y between its first and last pixel with fragments, as
+     * {first, last + 1}; {0, 0} for a row without any. Loops over a row's fragments can start and
+     * stop there instead of visiting every empty pixel around the model.
+     */
+    std::pair<int, int> rowSpan(int y) const;
     /** The deepest layer anywhere in the view. */
     std::uint32_t maxLayers() const;
     /** Fragments on each layer: result[k - 1] for layer k. */

@@ -50,7 +50,7 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
     const int w = stack.width;
     const std::uint8_t* links = conn.links.data();
     for (int y = y0; y < y1; ++y)
-        for (int x = 0; x < w; ++x) {
+        for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
             const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
             const std::uint32_t n = std::min(stack.layerCount(p), kMaxLinkedLayers);
             const std::uint32_t first = stack.offsets[p];
@@ -78,7 +78,10 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
 /** Joins the same-layer links between row y - 1 and row y. */
 void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y) {
     const int w = stack.width;
-    for (int x = 0; x < w; ++x) {
+    // Every link between the rows has a fragment at both ends: the columns both rows span.
+    const auto [above, aboveEnd] = stack.rowSpan(y - 1);
+    const auto [below, belowEnd] = stack.rowSpan(y);
+    for (int x = std::max(above, below), end = std::min(aboveEnd, belowEnd); x < end; ++x) {
         const std::size_t q = std::size_t(y) * std::size_t(w) + std::size_t(x);
         const std::size_t p = q - std::size_t(w);
         for (std::uint32_t k = 1; k <= std::min(stack.layerCount(p), kMaxLinkedLayers); ++k)
@@ -162,12 +165,16 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
         std::iota(parent + f0, parent + f1, f0);
         labelRows(stack, conn, parent, y0, y1);
-        for (std::size_t p = std::size_t(y0) * w; p < std::size_t(y1) * w; ++p)
-            for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1]; ++f, ++k) {
-                parent[f] = parent[parent[f]];
-                if (parent[f] == f) {
-                    own.roots.push_back(f);
-                    own.rootLayers.push_back(k);
+        for (int y = y0; y < y1; ++y)
+            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1];
+                     ++f, ++k) {
+                    parent[f] = parent[parent[f]];
+                    if (parent[f] == f) {
+                        own.roots.push_back(f);
+                        own.rootLayers.push_back(k);
+                    }
                 }
             }
     });
@@ -213,7 +220,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
         own.recent.assign(std::size_t(1) << 12, kNone);
         for (int y = y0; y < y1; ++y)
-            for (int x = 0; x < w; ++x) {
+            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
                 const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
                 const std::uint32_t n = stack.layerCount(p);
                 for (std::uint32_t k = 1; k <= n; ++k) {
