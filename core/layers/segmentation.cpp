@@ -58,7 +58,8 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
                 const std::uint32_t f = first + k - 1;
                 const std::uint8_t* l = links + 4 * std::size_t(f);
                 // Right and down cover every pair once; left and up add the pairs linked only
-                // the other way (links need not be symmetric).
+                // the other way (links need not be symmetric): a pair the neighbour's right or
+                // down link joined already is not looked up again.
                 if (l[kRight] == k && x + 1 < w)
                     if (const std::uint32_t g = target(stack, p + 1, k); g != kNone)
                         unite(parent, f, g);
@@ -66,10 +67,12 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
                     if (const std::uint32_t g = target(stack, p + std::size_t(w), k); g != kNone)
                         unite(parent, f, g);
                 if (l[kLeft] == k && x > 0)
-                    if (const std::uint32_t g = target(stack, p - 1, k); g != kNone)
+                    if (const std::uint32_t g = target(stack, p - 1, k);
+                        g != kNone && links[4 * std::size_t(g) + kRight] != k)
                         unite(parent, f, g);
                 if (l[kUp] == k && y - 1 >= y0)
-                    if (const std::uint32_t g = target(stack, p - std::size_t(w), k); g != kNone)
+                    if (const std::uint32_t g = target(stack, p - std::size_t(w), k);
+                        g != kNone && links[4 * std::size_t(g) + kDown] != k)
                         unite(parent, f, g);
             }
         }
@@ -219,10 +222,31 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
         Part& own = part[std::size_t(index)];
         own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
         own.recent.assign(std::size_t(1) << 12, kNone);
-        for (int y = y0; y < y1; ++y)
+        // Per layer, the run of the row's fragments in one region so far (layer k's at k - 1):
+        // a region's node takes a run at once, not each of its fragments.
+        struct Run {
+            std::uint32_t region = kNone;
+            std::uint32_t pixels = 0;
+            int minX = 0, maxX = 0;
+        };
+        std::vector<Run> runs;
+        const auto close = [&](Run& run, int y) {
+            if (run.region == kNone)
+                return;
+            Region& node = own.regions[run.region];
+            node.pixels += run.pixels;
+            node.minX = std::min(node.minX, run.minX);
+            node.maxX = std::max(node.maxX, run.maxX);
+            node.minY = std::min(node.minY, y);
+            node.maxY = std::max(node.maxY, y);
+            run.region = kNone;
+        };
+        for (int y = y0; y < y1; ++y) {
             for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
                 const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
                 const std::uint32_t n = stack.layerCount(p);
+                if (runs.size() < n)
+                    runs.resize(n);
                 for (std::uint32_t k = 1; k <= n; ++k) {
                     const std::uint32_t f = stack.offsets[p] + k - 1;
                     // Roots keep their id (other bands read it); the rest take their root's.
@@ -230,12 +254,13 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                     const std::uint32_t r = root ? region[f] : region[findRootReadOnly(parent, f)];
                     if (!root)
                         region[f] = r;
-                    Region& node = own.regions[r];
-                    ++node.pixels;
-                    node.minX = std::min(node.minX, x);
-                    node.maxX = std::max(node.maxX, x);
-                    node.minY = std::min(node.minY, y);
-                    node.maxY = std::max(node.maxY, y);
+                    if (Run& run = runs[k - 1]; run.region == r) {
+                        ++run.pixels;
+                        run.maxX = x;
+                    } else {
+                        close(run, y);
+                        run = {r, 1, x, x};
+                    }
                     if (k > kMaxLinkedLayers)
                         continue;
                     const std::uint8_t* l = conn.links.data() + 4 * std::size_t(f);
@@ -260,6 +285,9 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                     }
                 }
             }
+            for (Run& run : runs)
+                close(run, y);
+        }
         std::sort(own.pairs.begin(), own.pairs.end());
     });
 
