@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/base/parallel.h"
@@ -409,31 +410,38 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     SurfaceGeometry geometry;
     geometry.rays = PixelRays::fromView(view);
     const std::size_t count = mesh.triangleCount();
-    const glm::dmat4 toView(view.view);
     const bool haveTopology = topology.triangleCount() == count;
+    const bool havePlanes = haveTopology && topology.planes.size() == count;
+    // A plane (n, w) of the mesh's space is (n, w) times the inverse view matrix in view space;
+    // the sign of the determinant keeps the normal on the side the winding gives after a mirror.
+    const glm::dmat4 toView(view.view);
+    const glm::dmat3 linear(toView);
+    const double side = glm::determinant(linear) < 0.0 ? -1.0 : 1.0;
+    glm::dmat4 planeToView = glm::transpose(glm::inverse(toView)) * side;
+    // A rotation and uniform scale (any camera's view, to a few float roundings) keeps unit
+    // normals unit once scaled back: then no plane needs its own normalization.
+    const glm::dmat3 gram = glm::transpose(linear) * linear;
+    const double scale2 = gram[0][0];
+    bool uniform = scale2 > 0.0 && std::isfinite(scale2);
+    for (int i = 0; i < 3 && uniform; ++i)
+        for (int j = 0; j < 3; ++j)
+            uniform = uniform && std::abs(gram[i][j] - (i == j ? scale2 : 0.0)) <= 4e-6 * scale2;
+    if (uniform)
+        planeToView *= std::sqrt(scale2);
     const auto computePlane = [&](std::size_t t, SurfaceTriangle& tri) {
         if (haveTopology) {
             tri.corners = topology.corners[t];
             tri.component = topology.component[t];
         }
-        glm::dvec3 v[3];
-        bool valid = true;
-        for (int c = 0; c < 3; ++c) {
-            const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
-            valid = valid && index < mesh.positions.size();
-            if (valid)
-                v[c] = glm::dvec3(toView * glm::dvec4(glm::dvec3(mesh.positions[index]), 1.0));
+        const glm::vec4 own = havePlanes ? topology.planes[t] : trianglePlane(mesh, t);
+        const glm::dvec4 plane = planeToView * glm::dvec4(own);
+        if (uniform) {
+            tri.plane = glm::vec4(plane);
+            return;
         }
-        if (!valid)
-            return;
-        const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
-        const double length = glm::length(n);
-        if (!(length > 0.0) || !std::isfinite(length))
-            return;
-        const glm::dvec3 unit = n / length;
-        // Offset from the centroid: the least rounding error over the whole triangle.
-        const double w = -glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0);
-        tri.plane = glm::vec4(glm::vec3(unit), float(w));
+        const double length = glm::length(glm::dvec3(plane));
+        if (length > 0.0 && std::isfinite(length))
+            tri.plane = glm::vec4(plane * (1.0 / length));
     };
     if (!stack) {
         // Independent per triangle: split over threads (this runs on every view change).

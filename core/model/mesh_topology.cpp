@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/base/parallel.h"
 #include "core/layers/layer_stack.h"
 
 namespace core {
@@ -74,6 +75,22 @@ int MeshTopology::sharedCorners(std::uint32_t a, std::uint32_t b) const {
     for (std::uint32_t v : ca)
         shared += (v == cb[0] || v == cb[1] || v == cb[2]) ? 1 : 0;
     return shared;
+}
+
+glm::vec4 trianglePlane(const Mesh& mesh, std::size_t t) {
+    glm::dvec3 v[3];
+    for (int c = 0; c < 3; ++c) {
+        const std::uint32_t index = mesh.indices[3 * t + std::size_t(c)];
+        if (index >= mesh.positions.size())
+            return glm::vec4(0.0f);
+        v[c] = glm::dvec3(mesh.positions[index]);
+    }
+    const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+    const double length = glm::length(n);
+    if (!(length > 0.0) || !std::isfinite(length))
+        return glm::vec4(0.0f);
+    const glm::dvec3 unit = n / length;
+    return glm::vec4(glm::vec3(unit), float(-glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0)));
 }
 
 MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
@@ -194,6 +211,12 @@ MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
             id = topo.componentCount++;
         topo.component[t] = id;
     }
+
+    topo.planes.resize(triangleCount);
+    parallelRanges(int(triangleCount), 0, [&](int, int begin, int end) {
+        for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
+            topo.planes[t] = trianglePlane(mesh, t);
+    });
     return topo;
 }
 

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "core/model/mesh.h"
 
 namespace core {
@@ -29,6 +31,8 @@ struct MeshTopology {
     std::vector<std::uint32_t> component;
     /** Components are numbered 0 .. componentCount - 1 in order of their first triangle. */
     std::uint32_t componentCount = 0;
+    /** Per triangle: its plane in the mesh's own space (trianglePlane()). */
+    std::vector<glm::vec4> planes;
 
     std::size_t triangleCount() const { return corners.size(); }
     /** How many welded corners triangles a and b have in common (0 to 3). */
@@ -36,9 +40,16 @@ struct MeshTopology {
 };
 
 /**
+ * Triangle t's plane in the mesh's own space: unit normal by winding (xyz) and offset (w) with
+ * dot(normal, p) + w = 0, the offset taken at the centroid (the least rounding error over the
+ * triangle), computed in double. Zero if degenerate or an index is out of range.
+ */
+glm::vec4 trianglePlane(const Mesh& mesh, std::size_t t);
+
+/**
  * Welds the mesh's vertices closer than weldTolerance × its bounding box's longest side (and
  * always those in one quantization cell of that size) and derives triangle corners, edge
- * neighbours and components. Indices out of range are treated as their own isolated vertex
+ * neighbours, components and planes. Indices out of range are treated as their own isolated vertex
  * (run Mesh::validate() first); an empty mesh gives an empty topology.
  */
 MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance = 1e-5f);

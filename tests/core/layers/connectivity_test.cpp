@@ -278,6 +278,46 @@ TEST(SurfaceGeometry, WithAStackOnlyTheShownTrianglesGetPlanes) {
     EXPECT_GT(skipped, 100u); // back faces and hidden sides are skipped
 }
 
+TEST(SurfaceGeometry, PlanesAreTheViewSpaceTrianglesPlanesForAnyViewMatrix) {
+    // The planes come from the mesh's own planes (MeshTopology::planes) through the view matrix;
+    // each must be the plane of the triangle's corners taken to view space, for a camera's view
+    // and for mirrored, scaled and sheared ones, with and without the topology's planes.
+    const core::Mesh mesh = core::makeTrefoil(40, 16);
+    core::MeshTopology topology = core::buildMeshTopology(mesh);
+    ASSERT_EQ(topology.planes.size(), mesh.triangleCount());
+    core::MeshTopology withoutPlanes = topology;
+    withoutPlanes.planes.clear();
+    const core::View cameraView =
+        core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 2.0f).view(120, 80);
+    const glm::mat4 shear(1.0f, 0.0f, 0.0f, 0.0f, 0.4f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f,
+                          0.0f, 0.0f, 0.0f, 1.0f);
+    const glm::mat4 models[] = {glm::mat4(1.0f), glm::scale(glm::mat4(1.0f), glm::vec3(3.0f)),
+                                glm::scale(glm::mat4(1.0f), glm::vec3(-1.0f, 1.0f, 1.0f)),
+                                glm::scale(glm::mat4(1.0f), glm::vec3(2.0f, 1.0f, 0.5f)), shear};
+    for (const glm::mat4& model : models)
+        for (const core::MeshTopology* topo : {&topology, &withoutPlanes}) {
+            core::View view = cameraView;
+            view.view = cameraView.view * model;
+            const glm::dmat4 toView(view.view);
+            const core::SurfaceGeometry geometry = core::makeSurfaceGeometry(mesh, *topo, view);
+            ASSERT_EQ(geometry.triangles.size(), mesh.triangleCount());
+            for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+                glm::dvec3 v[3];
+                for (int c = 0; c < 3; ++c)
+                    v[c] = glm::dvec3(
+                        toView *
+                        glm::dvec4(glm::dvec3(mesh.positions[mesh.indices[3 * t + c]]), 1.0));
+                const glm::dvec3 n = glm::normalize(glm::cross(v[1] - v[0], v[2] - v[0]));
+                const glm::dvec3 centroid = (v[0] + v[1] + v[2]) / 3.0;
+                const glm::vec4 got = geometry.triangles[t].plane;
+                ASSERT_LT(glm::length(glm::dvec3(got) - n), 1e-4) << "triangle " << t;
+                ASSERT_LT(std::abs(glm::dot(glm::dvec3(got), centroid) + double(got.w)),
+                          1e-5 * glm::length(centroid))
+                    << "triangle " << t;
+            }
+        }
+}
+
 TEST(PixelRays, MatchViewUnproject) {
     core::Camera camera;
     camera.frame({glm::vec3(-0.5f), glm::vec3(0.5f)});
