@@ -233,17 +233,15 @@ core::Result<core::Connectivity> GpuConnectivity::compute(const core::LayerStack
     };
     upload(kOffsets, stack.offsets.data(), bytes[kOffsets]);
     upload(kDepths, stack.depth.data(), bytes[kDepths]);
-    if (surface && !geometry->entry.empty()) {
-        // Only the triangles in view are kept (SurfaceGeometry::entry): each fragment names its
+    if (surface && geometry->hasEntries()) {
+        // Only the triangles in view are kept (SurfaceGeometry's entries): each fragment names its
         // triangle's entry, which the same-triangle test compares as it would the ids.
         if (geometry->fragmentEntry.size() == fragments) {
             upload(kFragmentTriangles, geometry->fragmentEntry.data(), bytes[kFragmentTriangles]);
         } else {
             std::vector<std::uint32_t> entries(fragments);
-            for (std::size_t f = 0; f < fragments; ++f) {
-                const std::uint32_t t = stack.triangle[f];
-                entries[f] = t < geometry->entry.size() ? geometry->entry[t] : core::kNone;
-            }
+            for (std::size_t f = 0; f < fragments; ++f)
+                entries[f] = geometry->entryOf(stack.triangle[f]);
             upload(kFragmentTriangles, entries.data(), bytes[kFragmentTriangles]);
         }
     } else {

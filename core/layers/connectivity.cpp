@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -84,6 +85,18 @@ struct LazyDepths {
     }
 };
 
+/**
+ * A view with fewer fragments than 1/kSparseView of the mesh's triangles finds its triangles'
+ * entries through a table the size of the fragments, not a word per mesh triangle.
+ */
+constexpr std::size_t kSparseView = 8;
+
+/** First slot of triangle id in an entry table of size slots (a power of two). */
+inline std::size_t firstSlot(std::uint32_t id, std::size_t size) {
+    return std::size_t((std::uint64_t(id) * 0x9E3779B97F4A7C15ull) >>
+                       (64 - std::countr_zero(size)));
+}
+
 /** Rows to a work item: small enough to balance two loaded cores, large enough to stream. */
 constexpr int kRowsPerChunk = 8;
 
@@ -93,7 +106,7 @@ public:
            const SurfaceGeometry* geometry, Connectivity& out)
         : m_stack(stack), m_geometry(options.test == ConnectionTest::Surface ? geometry : nullptr),
           m_out(out) {
-        if (m_geometry && !m_geometry->entry.empty() &&
+        if (m_geometry && m_geometry->hasEntries() &&
             m_geometry->fragmentEntry.size() == stack.fragmentCount())
             m_fragmentEntry = m_geometry->fragmentEntry.data();
         const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
@@ -369,6 +382,17 @@ private:
 
 } // namespace
 
+std::uint32_t SurfaceGeometry::entryOf(std::uint32_t id) const {
+    if (!entry.empty())
+        return id < entry.size() ? entry[id] : kNone;
+    if (entryTable.empty())
+        return id < triangles.size() ? id : kNone;
+    const std::size_t mask = entryTable.size() - 1;
+    for (std::size_t i = firstSlot(id, entryTable.size());; i = (i + 1) & mask)
+        if (entryTable[i].id == id || entryTable[i].id == kNone)
+            return entryTable[i].entry;
+}
+
 float unitScale(const Mesh& mesh) {
     const float side = mesh.positions.empty() ? 0.0f : mesh.bounds().longestSide();
     return side > 0.0f && std::isfinite(side) ? 1.0f / side : 1.0f;
@@ -455,25 +479,48 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     // Only the triangles the view shows, numbered as the fragments first show them (the
     // connectivity then reads them nearly in order, not scattered by id); their planes over the
     // threads (each plane depends on its triangle only).
-    geometry.entry.assign(count, kNone);
-    std::uint32_t* entry = geometry.entry.data();
     const std::vector<std::uint32_t>& fragmentTriangles = stack->triangle;
     geometry.fragmentEntry.resize(fragmentTriangles.size());
     std::vector<std::uint32_t> ids;
-    for (std::size_t f = 0; f < fragmentTriangles.size(); ++f) {
-        const std::uint32_t t = fragmentTriangles[f];
-        std::uint32_t e = kNone;
-        if (t < count) {
-            e = entry[t];
-            if (e == kNone) {
-                e = entry[t] = std::uint32_t(ids.size());
-                ids.push_back(t);
+    // Gives each fragment its triangle's entry, numbering the triangles not met before.
+    const auto number = [&](auto&& slotOf) {
+        for (std::size_t f = 0; f < fragmentTriangles.size(); ++f) {
+            const std::uint32_t t = fragmentTriangles[f];
+            std::uint32_t e = kNone;
+            if (t < count) {
+                std::uint32_t& slot = slotOf(t);
+                if (slot == kNone) {
+                    slot = std::uint32_t(ids.size());
+                    ids.push_back(t);
+                }
+                e = slot;
             }
+            geometry.fragmentEntry[f] = e;
         }
-        geometry.fragmentEntry[f] = e;
+    };
+    if (count <= kSparseView * fragmentTriangles.size()) {
+        geometry.entry.assign(count, kNone);
+        number([entry = geometry.entry.data()](std::uint32_t t) -> std::uint32_t& {
+            return entry[t];
+        });
+    } else {
+        // Far more triangles than fragments: a table of twice as many slots as fragments.
+        geometry.entryTable.resize(
+            std::bit_ceil(std::max<std::size_t>(2 * fragmentTriangles.size(), 16)));
+        number([&table = geometry.entryTable](std::uint32_t t) -> std::uint32_t& {
+            const std::size_t mask = table.size() - 1;
+            for (std::size_t i = firstSlot(t, table.size());; i = (i + 1) & mask) {
+                SurfaceGeometry::EntrySlot& slot = table[i];
+                if (slot.id == kNone)
+                    slot.id = t; // a new triangle: its entry is still kNone
+                if (slot.id == t)
+                    return slot.entry;
+            }
+        });
     }
     geometry.triangles.resize(ids.size());
-    if (4 * ids.size() >= count) {
+    const std::uint32_t* entry = geometry.entry.data();
+    if (!geometry.entry.empty() && 4 * ids.size() >= count) {
         // Most of the mesh in view: read its arrays in id order (the entries are scattered).
         parallelRanges(int(count), 0, [&](int, int begin, int end) {
             for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)

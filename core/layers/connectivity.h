@@ -82,13 +82,22 @@ struct SurfaceTriangle {
 
 /**
  * Per-view input of the Surface test: pixel rays and per-triangle planes. Without entries, the
- * triangles are by triangle id; with entries, only the triangles in view are kept, in id order,
- * and entry[id] is a triangle's index among them (kNone: not in view).
+ * triangles are by triangle id; with entries (made from a stack), only the triangles in view are
+ * kept, and a triangle id's entry is its index among them (kNone: not in view): entry[id] when
+ * the view shows a good share of the mesh, else through entryTable, so that a build costs
+ * nothing per triangle of a large mesh the view shows little of.
  */
 struct SurfaceGeometry {
     PixelRays rays;
     std::vector<SurfaceTriangle> triangles;
     std::vector<std::uint32_t> entry;
+    /** A triangle id and its entry; a free slot has id kNone. */
+    struct EntrySlot {
+        std::uint32_t id = kNone;
+        std::uint32_t entry = kNone;
+    };
+    /** Open-addressed by id (linear probing), a power of two of slots. */
+    std::vector<EntrySlot> entryTable;
     /**
      * With entries: each fragment's triangle entry (kNone when unknown), for the stack the
      * geometry was made from. The triangles are numbered in the order the fragments first show
@@ -96,12 +105,12 @@ struct SurfaceGeometry {
      */
     std::vector<std::uint32_t> fragmentEntry;
 
-    /** Triangle id's entry, or nullptr when unknown (out of range or not in view). */
-    const SurfaceTriangle* find(std::uint32_t id) const {
-        if (entry.empty())
-            return id < triangles.size() ? &triangles[id] : nullptr;
-        return id < entry.size() ? atEntry(entry[id]) : nullptr;
-    }
+    /** Whether only the triangles in view are kept (and entries find them). */
+    bool hasEntries() const { return !entry.empty() || !entryTable.empty(); }
+    /** Triangle id's index in triangles: kNone when out of range or not in view. */
+    std::uint32_t entryOf(std::uint32_t id) const;
+    /** Triangle id's triangle, or nullptr when unknown (out of range or not in view). */
+    const SurfaceTriangle* find(std::uint32_t id) const { return atEntry(entryOf(id)); }
     /** The triangle of an entry (as entry and fragmentEntry hold), or nullptr for kNone. */
     const SurfaceTriangle* atEntry(std::uint32_t index) const {
         return index != kNone ? &triangles[index] : nullptr;
@@ -111,8 +120,8 @@ struct SurfaceGeometry {
 /**
  * Planes of mesh's triangles in view's view space, with topology's corners/components, indexed by
  * triangle id. With stack, only the triangles with a fragment in it are computed and kept (the
- * only ones the Surface test reads; SurfaceGeometry::entry and fragmentEntry find them): a mesh of
- * millions of triangles costs a word per triangle, not a plane.
+ * only ones the Surface test reads; SurfaceGeometry's entries and fragmentEntry find them): a mesh
+ * of millions of triangles costs at most a word per triangle, not a plane.
  */
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
                                     const View& view, const LayerStack* stack = nullptr);

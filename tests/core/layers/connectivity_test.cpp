@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -247,35 +249,53 @@ TEST(Connectivity, LinksPointAtExistingFragments) {
 // ---------------------------------------------------------------------------------------------
 
 TEST(SurfaceGeometry, WithAStackOnlyTheShownTrianglesGetPlanes) {
-    const core::Mesh mesh = core::makeTrefoil(60, 24);
-    const core::MeshTopology topology = core::buildMeshTopology(mesh);
-    const core::Camera camera = core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 2.0f);
-    const core::View view = camera.view(120, 80);
-    const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
-    const core::SurfaceGeometry all = core::makeSurfaceGeometry(mesh, topology, view);
-    const core::SurfaceGeometry shown = core::makeSurfaceGeometry(mesh, topology, view, &stack);
-    ASSERT_EQ(shown.entry.size(), mesh.triangleCount());
-    std::vector<bool> inView(mesh.triangleCount(), false);
-    for (std::uint32_t t : stack.triangle)
-        inView[t] = true;
-    std::size_t computed = 0, skipped = 0;
-    for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
-        const core::SurfaceTriangle* got = shown.find(t);
-        if (inView[t]) {
-            ++computed;
-            ASSERT_NE(got, nullptr) << "triangle " << t;
-            EXPECT_EQ(got->plane, all.triangles[t].plane) << "triangle " << t;
-            EXPECT_EQ(got->corners, all.triangles[t].corners) << "triangle " << t;
-            EXPECT_EQ(got->component, all.triangles[t].component) << "triangle " << t;
-        } else {
-            ++skipped;
-            EXPECT_EQ(got, nullptr) << "triangle " << t;
+    // A view showing a good share of the mesh finds entries through a word per mesh triangle; a
+    // small one, with fewer fragments than an eighth of the triangles, through a table.
+    for (const auto& [segments, width, height, sparse] :
+         {std::tuple{60, 120, 80, false}, {240, 48, 32, true}}) {
+        SCOPED_TRACE(std::to_string(segments) + " segments, " + std::to_string(width) + "x" +
+                     std::to_string(height));
+        const core::Mesh mesh = core::makeTrefoil(segments, segments * 2 / 5);
+        const core::MeshTopology topology = core::buildMeshTopology(mesh);
+        const core::Camera camera = core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 2.0f);
+        const core::View view = camera.view(width, height);
+        const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
+        const core::SurfaceGeometry all = core::makeSurfaceGeometry(mesh, topology, view);
+        const core::SurfaceGeometry shown = core::makeSurfaceGeometry(mesh, topology, view, &stack);
+        ASSERT_EQ(sparse, 8 * stack.fragmentCount() < mesh.triangleCount());
+        EXPECT_EQ(shown.entry.size(), sparse ? 0 : mesh.triangleCount());
+        EXPECT_EQ(shown.entryTable.empty(), !sparse);
+        std::vector<bool> inView(mesh.triangleCount(), false);
+        for (std::uint32_t t : stack.triangle)
+            inView[t] = true;
+        std::size_t computed = 0, skipped = 0;
+        for (std::uint32_t t = 0; t < mesh.triangleCount(); ++t) {
+            const core::SurfaceTriangle* got = shown.find(t);
+            if (inView[t]) {
+                ++computed;
+                ASSERT_NE(got, nullptr) << "triangle " << t;
+                EXPECT_EQ(got->plane, all.triangles[t].plane) << "triangle " << t;
+                EXPECT_EQ(got->corners, all.triangles[t].corners) << "triangle " << t;
+                EXPECT_EQ(got->component, all.triangles[t].component) << "triangle " << t;
+            } else {
+                ++skipped;
+                EXPECT_EQ(got, nullptr) << "triangle " << t;
+            }
         }
+        EXPECT_EQ(shown.find(core::kNone), nullptr);
+        EXPECT_EQ(shown.find(std::uint32_t(mesh.triangleCount())), nullptr);
+        // Only the shown triangles are kept, each fragment finds its own.
+        EXPECT_EQ(shown.triangles.size(), computed);
+        EXPECT_GT(computed, 100u);
+        EXPECT_GT(skipped, 100u); // back faces and hidden sides are skipped
+        for (std::size_t f = 0; f < stack.fragmentCount(); ++f)
+            ASSERT_EQ(shown.fragmentEntry[f], shown.entryOf(stack.triangle[f])) << "fragment " << f;
+        // The same links as with every triangle's plane.
+        core::ConnectivityOptions options;
+        options.unitScale = core::unitScale(mesh);
+        EXPECT_EQ(core::computeConnectivity(stack, options, &shown).links,
+                  core::computeConnectivity(stack, options, &all).links);
     }
-    // Only the shown triangles are kept, in id order.
-    EXPECT_EQ(shown.triangles.size(), computed);
-    EXPECT_GT(computed, 100u);
-    EXPECT_GT(skipped, 100u); // back faces and hidden sides are skipped
 }
 
 TEST(SurfaceGeometry, PlanesAreTheViewSpaceTrianglesPlanesForAnyViewMatrix) {
