@@ -14,7 +14,8 @@ namespace core {
 /**
  * Connectivity of a Mesh after welding vertices by position, so seam and hard-edge duplicates
  * (same place, different normal or UV) join. Used by the Surface connection test (which
- * triangles share an edge, which belong to different parts) and by the quality measurements.
+ * triangles share an edge, which belong to different parts, and the triangles' planes, which a
+ * view only transforms) and by the quality measurements.
  */
 struct MeshTopology {
     /** Per vertex: its welded vertex id, numbered in order of first occurrence. */
