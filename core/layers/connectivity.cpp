@@ -91,10 +91,17 @@ struct LazyDepths {
  */
 constexpr std::size_t kSparseView = 8;
 
-/** First slot of triangle id in an entry table of size slots (a power of two). */
-inline std::size_t firstSlot(std::uint32_t id, std::size_t size) {
-    return std::size_t((std::uint64_t(id) * 0x9E3779B97F4A7C15ull) >>
-                       (64 - std::countr_zero(size)));
+/**
+ * The slot of triangle id in an entry table (a power of two of slots, never full): the one that
+ * holds id, else the free one where it would go.
+ */
+template <typename Table> auto& slotOf(Table& table, std::uint32_t id) {
+    const std::size_t mask = table.size() - 1;
+    std::size_t i = std::size_t((std::uint64_t(id) * 0x9E3779B97F4A7C15ull) >>
+                                (64 - std::countr_zero(table.size())));
+    while (table[i].id != id && table[i].id != kNone)
+        i = (i + 1) & mask;
+    return table[i];
 }
 
 /** Rows to a work item: small enough to balance two loaded cores, large enough to stream. */
@@ -387,10 +394,7 @@ std::uint32_t SurfaceGeometry::entryOf(std::uint32_t id) const {
         return id < entry.size() ? entry[id] : kNone;
     if (entryTable.empty())
         return id < triangles.size() ? id : kNone;
-    const std::size_t mask = entryTable.size() - 1;
-    for (std::size_t i = firstSlot(id, entryTable.size());; i = (i + 1) & mask)
-        if (entryTable[i].id == id || entryTable[i].id == kNone)
-            return entryTable[i].entry;
+    return slotOf(entryTable, id).entry;
 }
 
 float unitScale(const Mesh& mesh) {
@@ -483,12 +487,12 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
     geometry.fragmentEntry.resize(fragmentTriangles.size());
     std::vector<std::uint32_t> ids;
     // Gives each fragment its triangle's entry, numbering the triangles not met before.
-    const auto number = [&](auto&& slotOf) {
+    const auto number = [&](auto&& entrySlot) {
         for (std::size_t f = 0; f < fragmentTriangles.size(); ++f) {
             const std::uint32_t t = fragmentTriangles[f];
             std::uint32_t e = kNone;
             if (t < count) {
-                std::uint32_t& slot = slotOf(t);
+                std::uint32_t& slot = entrySlot(t);
                 if (slot == kNone) {
                     slot = std::uint32_t(ids.size());
                     ids.push_back(t);
@@ -508,14 +512,9 @@ SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topolo
         geometry.entryTable.resize(
             std::bit_ceil(std::max<std::size_t>(2 * fragmentTriangles.size(), 16)));
         number([&table = geometry.entryTable](std::uint32_t t) -> std::uint32_t& {
-            const std::size_t mask = table.size() - 1;
-            for (std::size_t i = firstSlot(t, table.size());; i = (i + 1) & mask) {
-                SurfaceGeometry::EntrySlot& slot = table[i];
-                if (slot.id == kNone)
-                    slot.id = t; // a new triangle: its entry is still kNone
-                if (slot.id == t)
-                    return slot.entry;
-            }
+            SurfaceGeometry::EntrySlot& slot = slotOf(table, t);
+            slot.id = t; // a new triangle's entry is still kNone
+            return slot.entry;
         });
     }
     geometry.triangles.resize(ids.size());
