@@ -21,6 +21,10 @@
 #include "render/shader_library.h"
 #include "render/software_gl.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace render {
 
 namespace {
@@ -42,6 +46,24 @@ void prefetch(const void* address) {
 #else
     (void)address;
 #endif
+}
+
+/** The end of the run of empty heads from `pixel` on, within [pixel, last). */
+std::size_t emptyRunEnd(const std::uint32_t* heads, std::size_t pixel, std::size_t last) {
+#if defined(__SSE2__)
+    // Eight heads at a time: runs around a model are most of a view's pixels.
+    const __m128i empty = _mm_set1_epi32(-1);
+    for (; pixel + 8 <= last; pixel += 8) {
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(heads + pixel));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(heads + pixel + 4));
+        const __m128i both = _mm_and_si128(_mm_cmpeq_epi32(a, empty), _mm_cmpeq_epi32(b, empty));
+        if (_mm_movemask_epi8(both) != 0xffff)
+            break;
+    }
+#endif
+    while (pixel < last && heads[pixel] == kEmpty)
+        ++pixel;
+    return pixel;
 }
 
 // Float bits to an unsigned key with the same order (negative depths included), and back.
@@ -389,6 +411,15 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
         const std::size_t last =
             std::min(std::size_t(b + 1) * kBandRows, std::size_t(height)) * std::size_t(width);
         for (std::size_t pixel = first; pixel < last; ++pixel) {
+            // A run of empty pixels: each starts (and ends) at the band's fragments so far.
+            if (headWords[pixel] == kEmpty) {
+                const std::size_t end = emptyRunEnd(headWords, pixel, last);
+                std::fill(stack.offsets.begin() + std::ptrdiff_t(pixel),
+                          stack.offsets.begin() + std::ptrdiff_t(end),
+                          std::uint32_t(band.keys.size()));
+                pixel = end - 1;
+                continue;
+            }
             // The walk waits on cache misses: nodes lie in rasterization order, not pixel
             // order. Prefetch the first two nodes of pixels ahead.
             if (pixel + 2 * kAhead < last)
@@ -401,8 +432,6 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
             const std::size_t begin = band.keys.size();
             stack.offsets[pixel] = std::uint32_t(begin);
             std::uint32_t node = headWords[pixel];
-            if (node == kEmpty)
-                continue;
             headWords[pixel] = kEmpty;
             // Bounded by the nodes written, so a corrupt list cannot loop forever.
             for (std::uint32_t steps = 0; node < nodeLimit && steps < nodeLimit; ++steps) {
