@@ -44,7 +44,11 @@ inline std::uint32_t target(const LayerStack& stack, std::size_t q, std::uint32_
     return layer != 0 && layer <= stack.layerCount(q) ? stack.offsets[q] + layer - 1 : kNone;
 }
 
-/** Joins the same-layer links of rows [y0, y1) that stay inside those rows. */
+/**
+ * Joins the same-layer links of rows [y0, y1) that stay inside those rows. In scan order, each
+ * fragment joins the sets of its left and upper neighbours on its layer (already labelled) if
+ * either end of the pair links to the other: every pair is met once, at its later fragment.
+ */
 void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y0,
                int y1) {
     const int w = stack.width;
@@ -57,23 +61,23 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
             for (std::uint32_t k = 1; k <= n; ++k) {
                 const std::uint32_t f = first + k - 1;
                 const std::uint8_t* l = links + 4 * std::size_t(f);
-                // Right and down cover every pair once; left and up add the pairs linked only
-                // the other way (links need not be symmetric): a pair the neighbour's right or
-                // down link joined already is not looked up again.
-                if (l[kRight] == k && x + 1 < w)
-                    if (const std::uint32_t g = target(stack, p + 1, k); g != kNone)
-                        unite(parent, f, g);
-                if (l[kDown] == k && y + 1 < y1)
-                    if (const std::uint32_t g = target(stack, p + std::size_t(w), k); g != kNone)
-                        unite(parent, f, g);
-                if (l[kLeft] == k && x > 0)
+                std::uint32_t root = f;
+                if (x > 0)
                     if (const std::uint32_t g = target(stack, p - 1, k);
-                        g != kNone && links[4 * std::size_t(g) + kRight] != k)
-                        unite(parent, f, g);
-                if (l[kUp] == k && y - 1 >= y0)
+                        g != kNone && (l[kLeft] == k || links[4 * std::size_t(g) + kRight] == k))
+                        root = findRoot(parent, g);
+                if (y > y0)
                     if (const std::uint32_t g = target(stack, p - std::size_t(w), k);
-                        g != kNone && links[4 * std::size_t(g) + kDown] != k)
-                        unite(parent, f, g);
+                        g != kNone && (l[kUp] == k || links[4 * std::size_t(g) + kDown] == k)) {
+                        const std::uint32_t above = findRoot(parent, g);
+                        if (root == f)
+                            root = above;
+                        else if (above < root)
+                            root = parent[root] = above;
+                        else if (root < above)
+                            parent[above] = root;
+                    }
+                parent[f] = root;
             }
         }
 }
