@@ -78,9 +78,13 @@ bool StrokeTracker::setLayers(const LayerStack& stack, const Connectivity& conne
         return false;
     m_stack = &stack;
     m_connectivity = &connectivity;
-    // Allocated once per view; every dab afterwards only touches what it reaches (generations).
-    m_fragments.assign(fragments, {});
-    m_pixels.assign(pixels, {});
+    // Every dab only touches what it reaches (generations). The marks of earlier views are
+    // older than any generation to come, so arrays of the same size are kept as they are:
+    // clearing a 1280×720 view's pixels took longer than segmenting it.
+    if (m_fragments.size() != fragments)
+        m_fragments.assign(fragments, {});
+    if (m_pixels.size() != pixels)
+        m_pixels.assign(pixels, {});
     return true;
 }
 
@@ -168,11 +172,12 @@ float StrokeTracker::stepFor(float pressure) const {
 }
 
 void StrokeTracker::beginMaps() {
-    if (++m_gen == 0) {
+    m_gen = ++m_lastGen;
+    if (m_gen == 0) {
         // 2^32 dabs later: clear the marks once instead of comparing wider generations.
         std::fill(m_fragments.begin(), m_fragments.end(), FragmentMarks{});
         std::fill(m_pixels.begin(), m_pixels.end(), PixelSlot{});
-        m_gen = 1;
+        m_gen = m_lastGen = 1;
     }
     m_mpPixels.clear();
     m_mtPixels.clear();

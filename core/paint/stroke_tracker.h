@@ -212,8 +212,9 @@ private:
     float m_sizeFactor = 1.0f;
 
     // The maps of the last painted dab (generation m_gen).
-    bool m_tracking = false; // the last painted dab was layer-aware: its Mt answers lookups
-    std::uint32_t m_gen = 0;
+    bool m_tracking = false;     // the last painted dab was layer-aware: its Mt answers lookups
+    std::uint32_t m_gen = 0;     // 0 while no dab of these layers has been painted
+    std::uint32_t m_lastGen = 0; // the last generation begun, in any view: no mark is later
     glm::vec2 m_center{0.0f};
     float m_trackRadius2 = 0.0f;
     std::uint32_t m_trackLimit = 0;

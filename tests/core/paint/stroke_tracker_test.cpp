@@ -383,6 +383,44 @@ TEST(StrokeResampling, DabsAreSpacedAlongThePathNotAtTheEvents) {
     EXPECT_EQ(tracker.moveStroke({{50.5f, 20.5f}, 1.0f}, dabs), 0u);
 }
 
+TEST(StrokeTracker, NewLayersOfTheSameSizeKeepNothingOfTheLastOnes) {
+    // A tracker keeps its mark arrays across views of one size: the marks of a stroke before
+    // must neither show in the new layers' maps nor change the next stroke's dabs.
+    const Scene s = strandUnderOccluder();
+    const core::Brush brush = testBrush(10.0f);
+    auto stroke = [&](StrokeTracker& tracker, StrokePoint from, StrokePoint to) {
+        std::vector<Dab> dabs;
+        tracker.startStroke(from, brush, dabs);
+        tracker.moveStroke(to, dabs);
+        tracker.completeTrackableMap();
+        tracker.endStroke();
+        return dabs;
+    };
+    StrokeTracker used;
+    ASSERT_TRUE(used.setLayers(s.stack, s.connectivity));
+    ASSERT_GT(stroke(used, {{20.5f, 20.5f}, 1.0f}, {{130.5f, 20.5f}, 1.0f}).size(), 20u);
+    ASSERT_NE(used.trackableLayer(125 + 20 * 300), 0u); // the last dab's maps
+    ASSERT_TRUE(used.setLayers(s.stack, s.connectivity));
+    for (std::size_t p = 0; p < s.stack.pixelCount(); ++p) {
+        ASSERT_EQ(used.paintableLayer(p), 0u) << "pixel " << p;
+        ASSERT_EQ(used.trackableLayer(p), 0u) << "pixel " << p;
+    }
+    StrokeTracker fresh;
+    ASSERT_TRUE(fresh.setLayers(s.stack, s.connectivity));
+    const std::vector<Dab> again = stroke(used, {{120.5f, 22.5f}, 1.0f}, {{40.5f, 18.5f}, 1.0f});
+    const std::vector<Dab> first = stroke(fresh, {{120.5f, 22.5f}, 1.0f}, {{40.5f, 18.5f}, 1.0f});
+    ASSERT_EQ(again.size(), first.size());
+    for (std::size_t i = 0; i < first.size(); ++i) {
+        EXPECT_EQ(again[i].layer, first[i].layer) << "dab " << i;
+        ASSERT_EQ(again[i].paintable.size(), first[i].paintable.size()) << "dab " << i;
+        for (std::size_t k = 0; k < first[i].paintable.size(); ++k)
+            EXPECT_EQ(again[i].paintable[k].fragment, first[i].paintable[k].fragment)
+                << "dab " << i;
+    }
+    for (std::size_t p = 0; p < s.stack.pixelCount(); ++p)
+        ASSERT_EQ(used.trackableLayer(p), fresh.trackableLayer(p)) << "pixel " << p;
+}
+
 TEST(StrokeTracker, ConventionalModePaintsTheVisibleSurfaceOnly) {
     const Scene s = strandUnderOccluder();
     StrokeTracker tracker;
