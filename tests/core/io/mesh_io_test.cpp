@@ -557,6 +557,10 @@ std::vector<BrokenCase> brokenCases() {
                             "more than the"));
     cases.push_back(written("many-faces.off", "OFF\n3 1000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
                             "more than the"));
+    // Assimp reads a count by its leading digits: 10^17 faces (found by fuzzing).
+    cases.push_back(written("many-faces-then-letters.off",
+                            "OFF\n3 100000000000000000storage 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+                            "more than the"));
     cases.push_back(written("empty-face.obj", "mtllib x.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf\n",
                             "face without vertices"));
     // Found by fuzzing (tests/fuzz): Assimp hangs or reads past its buffer on these.
