@@ -11,17 +11,20 @@
 # added to the corpus (listed in sorted order), skipping the inputs found so far, until the
 # budget is spent (at most 32 segments). Every finding is classified by the innermost frame of
 # its stack: "ours" (core/, the targets) or "third-party" (a parser only the importer process can
-# contain), and replayed through the dev build's layerpaint-cli, out of process, which must give
-# a one-line error naming the file (or load it) and not crash. A summary ends the output.
+# contain). A finding of ours is run again alone, in a fresh process of its target: one that
+# passes there is "after an earlier input" (see alone() below). Every finding is replayed through
+# the dev build's layerpaint-cli, out of process, which must give a one-line error naming the
+# file (or load it) and not crash. A summary ends the output.
 #
 #   scripts/fuzz.sh --runs N      CI: N inputs per target in all (the segments' executed inputs,
 #                                 each restart's corpus replay included), seeds 1, 2, ... (no
-#                                 wall-clock budget). Fails on a finding in our code, on a replay
-#                                 (of a finding or of tests/data/crashers) that crashes or does not
-#                                 give a clean error, on a budget not spent in 32 segments, and on
-#                                 a run that ends without a finding but not cleanly. A third-party
-#                                 finding the importer process contains only is reported (add it
-#                                 to tests/data/crashers).
+#                                 wall-clock budget). Fails on a finding in our code that fails
+#                                 alone too, on a replay (of a finding or of tests/data/crashers)
+#                                 that crashes or does not give a clean error, on a budget not
+#                                 spent in 32 segments, and on a run that ends without a finding
+#                                 but not cleanly. A third-party finding the importer process
+#                                 contains is only reported (add it to tests/data/crashers), as is
+#                                 one after an earlier input.
 #   scripts/fuzz.sh [SECONDS]     exploration: SECONDS per target in all (default 1800), seeds
 #                                 from LAYERPAINT_FUZZ_SEED (default: random, printed). Findings
 #                                 are in build/fuzz/run/artifacts; the script fails only if a
@@ -260,6 +263,19 @@ origin() {
     echo "${where:-ours}"
 }
 
+# A finding of ours, run again alone in a fresh process of its target (without the skip list,
+# which holds it). The targets keep nothing from one input to the next, so a bug of our code
+# fails there too. One that passes is the after-effect of an earlier input of the same process:
+# Assimp is not instrumented, so its writes to freed or foreign heap memory go unseen until
+# whatever next touches that memory fails (ASan's quarantine, libFuzzer's own tables or our
+# code). Returns 0 if the input passes alone.
+alone() {
+    local name=$1 artifact=$2
+    LAYERPAINT_FUZZ_SCRATCH=/tmp/layerpaint-fuzz-alone "${norandom[@]}" \
+        "build/fuzz/tests/fuzz/$name" -timeout=20 -rss_limit_mb=3072 -max_len=65536 \
+        "$artifact" >"$work/alone-$(basename "$artifact").log" 2>&1
+}
+
 summary=()
 for name in fuzz_loaders fuzz_project; do
     if [[ ! -f $work/$name.runs ]]; then
@@ -283,9 +299,14 @@ for name in fuzz_loaders fuzz_project; do
             kind=crash
         fi
         where=$(origin "$work/$name-$segment.log")
+        if [[ $where == ours ]] && alone "$name" "$artifact"; then
+            where=earlier
+        fi
         count[$where-$kind]=$((${count[$where-$kind]:-0} + 1))
         echo "-- $where $kind (segment $segment, seed $((seed + segment - 1)), by input $at):" \
             "$artifact"
+        [[ $where == earlier ]] &&
+            echo "   (in our code, but it passes alone: $work/alone-$(basename "$artifact").log)"
         grep -E 'ERROR: |runtime error|#[0-9]+ 0x[0-9a-f]+ in ' "$work/$name-$segment.log" |
             head -n 12 || true
         [[ -n $runs && $where == ours ]] && status=1
@@ -299,11 +320,11 @@ for name in fuzz_loaders fuzz_project; do
                 out=$(contained "$file") || status=1
             fi
             echo "   replay: $out"
-            [[ $where == third-party ]] && lines+=("    third-party $kind $(basename "$artifact"): $out")
+            [[ $where != ours ]] && lines+=("    $where $kind $(basename "$artifact"): $out")
         else
-            [[ -n $runs && $where == third-party ]] && status=1
-            [[ $where == third-party ]] &&
-                lines+=("    third-party $kind $(basename "$artifact"): not replayed (no dev build)")
+            [[ -n $runs && $where != ours ]] && status=1
+            [[ $where != ours ]] &&
+                lines+=("    $where $kind $(basename "$artifact"): not replayed (no dev build)")
         fi
     done 3<"$work/$name.findings"
     end=$(cat "$work/$name.end")
@@ -319,7 +340,7 @@ for name in fuzz_loaders fuzz_project; do
     esac
     f() { echo "crash ${count[$1-crash]:-0}, oom ${count[$1-oom]:-0}, timeout ${count[$1-timeout]:-0}"; }
     summary+=("$name: $executed inputs run in $segments segment(s) (seeds $seed-$((seed + segments - 1)))$( [[ $end == budget ]] || echo ", stopped: $end")")
-    summary+=("    ours: $(f ours); third-party: $(f third-party)")
+    summary+=("    ours: $(f ours); third-party: $(f third-party); after an earlier input: $(f earlier)")
     summary+=("${lines[@]}")
     unset count
 done
