@@ -5,8 +5,13 @@
 #include <atomic>
 #include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <memory>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
@@ -57,14 +62,55 @@ inline float planeDepth(const glm::vec4& plane, const Ray& ray) {
            denom;
 }
 
-/** One pixel's fragments (up to kMaxLinkedLayers) with what the test needs, loaded once. */
+/** Four floats or four 32-bit integers in one SIMD register (GCC's and Clang's vectors). */
+using Floats4 = float __attribute__((vector_size(16)));
+using Ints4 = std::int32_t __attribute__((vector_size(16)));
+/** Room for a pixel's fragments, rounded up to whole groups of four. */
+constexpr std::uint32_t kSideRoom = (kMaxLinkedLayers + 3) / 4 * 4;
+
+/** |v| lane by lane (NaN stays NaN). */
+inline Floats4 abs4(Floats4 v) {
+    return Floats4(Ints4(v) & (Ints4{} + 0x7fffffff));
+}
+
+/** a where mask is set (all ones), else b. */
+inline Floats4 select4(Ints4 mask, Floats4 a, Floats4 b) {
+    return Floats4((Ints4(a) & mask) | (Ints4(b) & ~mask));
+}
+
+/** Bit k set where lane k of mask is set (lanes all ones or all zeros). */
+inline unsigned bits4(Ints4 mask) {
+#if defined(__SSE__)
+    return unsigned(_mm_movemask_ps(__m128(mask)));
+#else
+    return (unsigned(mask[0]) & 1u) | (unsigned(mask[1]) & 2u) | (unsigned(mask[2]) & 4u) |
+           (unsigned(mask[3]) & 8u);
+#endif
+}
+
+/** Four values from p on (any alignment). */
+template <typename V, typename T> V load4(const T* p) {
+    V v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/**
+ * One pixel's fragments (up to kMaxLinkedLayers) with what the test needs, loaded once. Arrays
+ * have room for whole groups of four; what lies past count is left from earlier pixels.
+ */
 struct Side {
     std::uint32_t first = 0; // index of the layer-1 fragment
     std::uint32_t count = 0; // fragments considered (capped)
-    float depth[kMaxLinkedLayers];
-    std::uint32_t triangle[kMaxLinkedLayers];
-    const SurfaceTriangle* info[kMaxLinkedLayers]; // nullptr when unknown
-    std::uint32_t component[kMaxLinkedLayers];     // info->component, kept beside the others
+    float depth[kSideRoom] = {};
+    std::uint32_t triangle[kSideRoom] = {};
+    const SurfaceTriangle* info[kSideRoom] = {}; // nullptr when unknown
+    std::uint32_t component[kSideRoom] = {};     // info->component, kept beside the others
+    // Of info, for deep pixels (see Linker::pack()): its plane (x, y, z, w; 0 when unknown)
+    // and corners, kept beside the others.
+    bool packed = false;
+    float plane[4][kSideRoom] = {};
+    std::uint32_t corner[3][kSideRoom] = {};
 };
 
 /**
@@ -73,7 +119,7 @@ struct Side {
  * stamp equals the pair's.
  */
 struct LazyDepths {
-    float value[kMaxLinkedLayers];
+    float value[kSideRoom] = {};
     std::uint32_t stamp[kMaxLinkedLayers] = {};
 
     float get(const Side& side, std::uint32_t k, const Ray& ray, std::uint32_t now) {
@@ -109,6 +155,13 @@ template <typename Table> auto& slotOf(Table& table, std::uint32_t id) {
     return table[i];
 }
 
+/**
+ * Fragment pairs of two neighbouring pixels from which all their plane depths are computed at
+ * once and the pairs decided four at a time (deep pixels need nearly all of those depths;
+ * shallow ones few, and one pair at a time costs them less).
+ */
+constexpr std::uint32_t kDeepPair = 16;
+
 /** Rows to a work item: small enough to balance two loaded cores, large enough to stream. */
 constexpr int kRowsPerChunk = 8;
 
@@ -126,6 +179,7 @@ public:
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
         m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
         m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
+        m_deepPair = options.batchDeepPixels ? kDeepPair : kNone;
     }
 
     /**
@@ -189,10 +243,12 @@ private:
             const std::uint32_t* entries = m_fragmentEntry ? m_fragmentEntry + side.first : nullptr;
             for (std::uint32_t k = 0; k < side.count; ++k) {
                 side.triangle[k] = triangle[k];
-                side.info[k] =
+                const SurfaceTriangle* info =
                     entries ? m_geometry->atEntry(entries[k]) : m_geometry->find(triangle[k]);
-                side.component[k] = side.info[k] ? side.info[k]->component : kNone;
+                side.info[k] = info;
+                side.component[k] = info ? info->component : kNone;
             }
+            side.packed = false;
         }
     }
 
@@ -206,8 +262,8 @@ private:
      * Error of joining fragment i of a (at P) with fragment j of b (at Q); kFail when the test
      * fails. Symmetric in (a, i) and (b, j) up to swapping P and Q.
      */
-    float score(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
-                const PairRays& rays) {
+    [[gnu::always_inline]] float score(const Side& a, std::uint32_t i, const Side& b,
+                                       std::uint32_t j, const PairRays& rays) {
         const SurfaceTriangle* ta = a.info[i];
         const SurfaceTriangle* tb = b.info[j];
         if (ta && tb) {
@@ -269,6 +325,59 @@ private:
         return kFail;
     }
 
+    /** What deepScores() finds for four fragment pairs. */
+    struct Scores4 {
+        Ints4 known;   // lanes whose score is known: the score, or failing
+        Floats4 score; // of the known lanes; kFail when they fail
+    };
+
+    /**
+     * score() (and contactScore()) of a's fragment i with b's fragments j0 to j0 + 3, from the
+     * plane depths pair() computed for all fragments of two deep pixels, for the lanes where
+     * these decide: the two share a triangle, their depths on the midpoint ray are within the
+     * threshold (of one mesh part) or the contact limit (of two), or no crease, arc or facet
+     * test could join them. Lanes with a plane depth unknown (grazing, degenerate, no triangle)
+     * or a test to run are left to score(). Exactly score()'s arithmetic, four lanes at a time.
+     */
+    Scores4 deepScores(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j0) const {
+        const Ints4 all = Ints4{} - 1;
+        const auto lanes = [all](bool value) { return value ? all : Ints4{}; };
+        const Floats4 error = abs4(m_midA.value[i] - load4<Floats4>(m_midB.value + j0));
+        const Ints4 valid = error == error; // not NaN: both plane depths known
+        const Ints4 sameTriangle = load4<Ints4>(b.triangle + j0) == std::int32_t(a.triangle[i]);
+        const Ints4 samePart = load4<Ints4>(b.component + j0) == std::int32_t(a.component[i]);
+        const Ints4 near = (samePart & (error < m_limit)) | (~samePart & (error < m_contactLimit));
+        const Floats4 fail = Floats4{} + kFail, same = Floats4{} - 1.0f;
+        const Floats4 score = select4(sameTriangle, same, select4(near, error, fail));
+        // Beyond the threshold, within one part: a crease (shared corner, planes crossing
+        // between the pixels), an arc (planes crossing) or a facet (shared corner) may join.
+        const Ints4 beyond = valid & samePart & ~sameTriangle & ~near;
+        if (bits4(beyond) == 0)
+            return {valid, score};
+        const Floats4 cosine = a.plane[0][i] * load4<Floats4>(b.plane[0] + j0) +
+                               a.plane[1][i] * load4<Floats4>(b.plane[1] + j0) +
+                               a.plane[2][i] * load4<Floats4>(b.plane[2] + j0);
+        const Floats4 bAtP = load4<Floats4>(m_atP.value + j0);
+        const float aAtQ = m_atQ.value[i];
+        const Ints4 cross = (bAtP > 0.0f) & lanes(aAtQ > 0.0f) &
+                            ((a.depth[i] - bAtP) * (aAtQ - load4<Floats4>(b.depth + j0)) <= 0.0f);
+        const Ints4 smooth = cross & (cosine >= m_smoothCos);
+        // Lanes where a shared corner would decide (a crease, a facet).
+        const Ints4 cornerCounts =
+            beyond & ~smooth & ((cross & (cosine >= m_creaseCos)) | (cosine >= kFacetCosine));
+        Ints4 corner{};
+        if (a.corner[0][i] != kNone && bits4(cornerCounts) != 0) {
+            for (int c = 0; c < 3; ++c) {
+                const Ints4 other = load4<Ints4>(b.corner[c] + j0);
+                for (int d = 0; d < 3; ++d)
+                    corner |= other == std::int32_t(a.corner[d][i]);
+            }
+            corner &= load4<Ints4>(b.corner[0] + j0) != std::int32_t(kNone);
+        }
+        const Ints4 tests = beyond & (smooth | (corner & cornerCounts));
+        return {valid & ~tests, score};
+    }
+
     /** score() for fragments with known triangles of different mesh parts. */
     float contactScore(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
                        const PairRays& rays) {
@@ -322,7 +431,7 @@ private:
     }
 
     template <bool kSurface>
-    void pair(const Side& a, const Side& b, const Ray& rayP, float px, float py, float dx, float dy,
+    void pair(Side& a, Side& b, const Ray& rayP, float px, float py, float dx, float dy,
               int forward, int backward) {
         PairRays rays{rayP, {}, {}};
         if constexpr (kSurface) {
@@ -335,6 +444,66 @@ private:
                 m_stamp = 1;
             }
         }
+        if constexpr (kSurface) {
+            if (a.count * b.count >= m_deepPair) {
+                deepPair(a, b, rays, forward, backward);
+                return;
+            }
+        }
+        link(a, b, forward, backward, [&](std::uint32_t i, auto&& take) {
+            for (std::uint32_t j = 0; j < b.count; ++j) {
+                if constexpr (kSurface) {
+                    // Fragments of different mesh parts (most pairs in a deep pixel) join only
+                    // where they touch: score()'s contact test, without its other loads.
+                    if (a.info[i] && b.info[j] && a.component[i] != b.component[j])
+                        take(j, contactScore(a, i, b, j, rays));
+                    else
+                        take(j, score(a, i, b, j, rays));
+                } else
+                    take(j, plainScore(a.depth[i], b.depth[j]));
+            }
+        });
+    }
+
+    /**
+     * pair() for two deep pixels: every plane depth the tests read, four fragments at a time,
+     * then deepScores() for all fragment pairs, four at a time; score() only for what it leaves.
+     */
+    [[gnu::noinline]] void deepPair(Side& a, Side& b, const PairRays& rays, int forward,
+                                    int backward) {
+        pack(a);
+        pack(b);
+        fill(m_midA, a, rays.m);
+        fill(m_midB, b, rays.m);
+        fill(m_atQ, a, rays.q);
+        fill(m_atP, b, rays.p);
+        link(a, b, forward, backward, [&](std::uint32_t i, auto&& take) {
+            for (std::uint32_t j0 = 0; j0 < b.count; j0 += 4) {
+                const Scores4 known = deepScores(a, i, b, j0);
+                const unsigned inside = b.count - j0 >= 4 ? 15u : (1u << (b.count - j0)) - 1u;
+                for (unsigned joins = bits4(known.known & (known.score != kFail)) & inside;
+                     joins != 0; joins &= joins - 1) {
+                    const unsigned k = unsigned(std::countr_zero(joins));
+                    take(j0 + k, known.score[k]);
+                }
+                for (unsigned rest = bits4(~known.known) & inside; rest != 0; rest &= rest - 1) {
+                    const std::uint32_t j = j0 + unsigned(std::countr_zero(rest));
+                    take(j, a.info[i] && b.info[j] && a.component[i] != b.component[j]
+                                ? contactScore(a, i, b, j, rays)
+                                : score(a, i, b, j, rays));
+                }
+            }
+        });
+    }
+
+    /**
+     * Writes the links between the fragments of a and b: each fragment's best partner by
+     * (score, rank), among the pairs for which scores(i, take) calls take(j, score) (at most
+     * once each; pairs not taken fail). The order does not matter.
+     */
+    template <typename Scores>
+    [[gnu::always_inline]] void link(const Side& a, const Side& b, int forward, int backward,
+                                     Scores&& scores) {
         float bestForB[kMaxLinkedLayers];
         std::uint32_t choiceForB[kMaxLinkedLayers];
         std::fill_n(bestForB, b.count, kFail);
@@ -343,19 +512,9 @@ private:
         for (std::uint32_t i = 0; i < a.count; ++i) {
             float bestScore = kFail;
             std::uint32_t best = 0;
-            for (std::uint32_t j = 0; j < b.count; ++j) {
-                float s;
-                if constexpr (kSurface) {
-                    // Fragments of different mesh parts (most pairs in a deep pixel) join only
-                    // where they touch: score()'s contact test, without its other loads.
-                    if (a.info[i] && b.info[j] && a.component[i] != b.component[j])
-                        s = contactScore(a, i, b, j, rays);
-                    else
-                        s = score(a, i, b, j, rays);
-                } else
-                    s = plainScore(a.depth[i], b.depth[j]);
+            scores(i, [&](std::uint32_t j, float s) {
                 if (s == kFail)
-                    continue;
+                    return;
                 if (better(s, j + 1, bestScore, best, i + 1)) {
                     bestScore = s;
                     best = j + 1;
@@ -364,12 +523,47 @@ private:
                     bestForB[j] = s;
                     choiceForB[j] = i + 1;
                 }
-            }
+            });
             links[4 * std::size_t(a.first + i) + std::size_t(forward)] = std::uint8_t(best);
         }
         for (std::uint32_t j = 0; j < b.count; ++j)
             links[4 * std::size_t(b.first + j) + std::size_t(backward)] =
                 std::uint8_t(choiceForB[j]);
+    }
+
+    /** Copies the planes and corners of side's fragments into its arrays, once per load. */
+    static void pack(Side& side) {
+        if (side.packed)
+            return;
+        side.packed = true;
+        for (std::uint32_t k = 0; k < side.count; ++k) {
+            const SurfaceTriangle* info = side.info[k];
+            for (int c = 0; c < 4; ++c)
+                side.plane[c][k] = info ? info->plane[c] : 0.0f;
+            for (int c = 0; c < 3; ++c)
+                side.corner[c][k] = info ? info->corners[std::size_t(c)] : kNone;
+        }
+    }
+
+    /**
+     * Computes lazy's depths of all of side's fragments on ray: planeDepth(), four at a time (a
+     * fragment without a triangle has a zero plane, which gives NaN as a grazing one does).
+     */
+    void fill(LazyDepths& lazy, const Side& side, const Ray& ray) const {
+        const float minDenom2 = kMinRayCosine * kMinRayCosine * ray.length2;
+        const Floats4 nan = Floats4{} + std::numeric_limits<float>::quiet_NaN();
+        for (std::uint32_t k = 0; k < side.count; k += 4) {
+            const Floats4 x = load4<Floats4>(side.plane[0] + k);
+            const Floats4 y = load4<Floats4>(side.plane[1] + k);
+            const Floats4 z = load4<Floats4>(side.plane[2] + k);
+            const Floats4 w = load4<Floats4>(side.plane[3] + k);
+            const Floats4 denom = x * ray.direction.x + y * ray.direction.y + z * ray.direction.z;
+            const Floats4 depth =
+                -(w + x * ray.origin.x + y * ray.origin.y + z * ray.origin.z) / denom;
+            const Floats4 value = select4(denom * denom >= minDenom2, depth, nan);
+            std::memcpy(lazy.value + k, &value, sizeof value);
+        }
+        std::fill_n(lazy.stamp, side.count, m_stamp);
     }
 
     float plainScore(float za, float zb) const {
@@ -386,6 +580,7 @@ private:
     float m_contactLimit = 0.0f;
     float m_creaseCos = 0.0f;
     float m_smoothCos = 1.0f;
+    std::uint32_t m_deepPair = kDeepPair; // fragment pairs from which pair() takes deepPair()
     Side m_sides[3];
     // Plane depths of a's and b's fragments on the midpoint ray, of b's on P's ray, of a's on Q's.
     LazyDepths m_midA, m_midB, m_atP, m_atQ;

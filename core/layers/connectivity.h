@@ -47,6 +47,12 @@ struct ConnectivityOptions {
     float contactFactor = 0.1f;
     /** Worker threads; 0 = std::thread::hardware_concurrency(). Results do not depend on it. */
     unsigned threads = 0;
+    /**
+     * Surface: two neighbouring pixels with 16 fragment pairs or more have all their plane
+     * depths computed at once and most pairs decided four at a time, only the rest one by one.
+     * Results do not depend on it (false: every pair one by one, as tests compare).
+     */
+    bool batchDeepPixels = true;
 };
 
 /** The mesh's unit-cube scale, 1 / bounds().longestSide(); 1 for an empty or flat-point mesh. */

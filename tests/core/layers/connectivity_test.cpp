@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -243,6 +244,93 @@ TEST(Connectivity, LinksPointAtExistingFragments) {
                     }
                 }
             }
+    }
+}
+
+TEST(Connectivity, DeepPixelsBatchedGiveTheSameLinksAsOneByOne) {
+    // Deep pixels of random triangles, made so that every case of the Surface test occurs:
+    // planes through a few shared points at random angles (so they cross between pixels),
+    // grazing and degenerate planes, triangles out of range, three mesh parts and a part
+    // unknown, corners drawn from a small pool (shared often) or unknown, and depths on, near
+    // or off the planes.
+    const int w = 28, h = 20, triangles = 60;
+    const core::View view = frontView(w, h);
+    std::mt19937 rng(20261129);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    core::SurfaceGeometry geometry;
+    geometry.rays = core::PixelRays::fromView(view);
+    const auto rayAt = [&](float px, float py) {
+        return std::pair(geometry.rays.origin(px, py), geometry.rays.direction(px, py));
+    };
+    const auto randomUnit = [&] {
+        glm::vec3 v;
+        do
+            v = glm::vec3(unit(rng), unit(rng), unit(rng)) * 2.0f - 1.0f;
+        while (glm::dot(v, v) < 0.01f || glm::dot(v, v) > 1.0f);
+        return glm::normalize(v);
+    };
+    std::vector<glm::vec3> anchors;
+    for (int k = 0; k < 5; ++k) {
+        const auto [o, d] = rayAt(unit(rng) * float(w), unit(rng) * float(h));
+        anchors.push_back(o + (1.8f + 0.4f * unit(rng)) * d);
+    }
+    for (int t = 0; t < triangles; ++t) {
+        core::SurfaceTriangle tri;
+        const glm::vec3 at = anchors[std::size_t(t) % anchors.size()];
+        glm::vec3 normal = randomUnit();
+        if (t % 11 == 3) // grazing: along the view direction
+            normal =
+                glm::normalize(glm::cross(rayAt(float(w) / 2, float(h) / 2).second, randomUnit()));
+        if (t % 13 != 5) // else degenerate: a zero plane
+            tri.plane = glm::vec4(normal, -glm::dot(normal, at));
+        tri.component = t % 7 == 6 ? core::kNone : std::uint32_t(t % 3);
+        for (std::uint32_t& corner : tri.corners)
+            corner = std::uint32_t(rng() % 24);
+        if (t % 9 == 4)
+            tri.corners[0] = core::kNone;
+        geometry.triangles.push_back(tri);
+    }
+    core::LayerStack stack;
+    stack.width = w;
+    stack.height = h;
+    stack.offsets.push_back(0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::uint32_t layers = std::uint32_t(rng() % 12);
+            std::vector<std::pair<float, std::uint32_t>> fragments;
+            for (std::uint32_t k = 0; k < layers; ++k) {
+                const auto t = std::uint32_t(rng() % std::uint32_t(triangles + 4));
+                float depth = 1.5f + unit(rng);
+                if (t < std::uint32_t(triangles)) {
+                    const glm::vec4 plane = geometry.triangles[t].plane;
+                    const auto [o, d] = rayAt(float(x) + 0.5f, float(y) + 0.5f);
+                    const float onPlane =
+                        -(plane.w + glm::dot(glm::vec3(plane), o)) / glm::dot(glm::vec3(plane), d);
+                    const float off[] = {0.0f, 1e-4f, 3e-3f, 0.05f};
+                    if (std::isfinite(onPlane) && onPlane > 0.5f && onPlane < 4.0f)
+                        depth = onPlane + off[rng() % 4] * (unit(rng) < 0.5f ? -1.0f : 1.0f);
+                }
+                fragments.emplace_back(depth, t);
+            }
+            std::sort(fragments.begin(), fragments.end());
+            for (const auto& [depth, t] : fragments) {
+                stack.depth.push_back(depth);
+                stack.triangle.push_back(t);
+            }
+            stack.offsets.push_back(std::uint32_t(stack.depth.size()));
+        }
+    for (float threshold : {0.002f, 0.02f}) {
+        core::ConnectivityOptions options;
+        options.threshold = threshold;
+        options.contactFactor = 0.5f;
+        options.threads = 1;
+        const core::Connectivity batched = core::computeConnectivity(stack, options, &geometry);
+        options.batchDeepPixels = false;
+        const core::Connectivity oneByOne = core::computeConnectivity(stack, options, &geometry);
+        const auto linked = std::count_if(oneByOne.links.begin(), oneByOne.links.end(),
+                                          [](std::uint8_t l) { return l != 0; });
+        EXPECT_GT(linked, std::ptrdiff_t(oneByOne.links.size() / 20)) << threshold;
+        EXPECT_TRUE(batched.links == oneByOne.links) << "threshold " << threshold;
     }
 }
 
