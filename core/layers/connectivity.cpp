@@ -14,8 +14,6 @@
 #endif
 
 #include <glm/geometric.hpp>
-#include <glm/mat4x4.hpp>
-#include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
 #include "core/base/parallel.h"
