@@ -40,16 +40,6 @@ struct Ray {
     float length2;
 };
 
-/**
- * Sets out to the ray through (px, py) in place: a Ray returned and copied was stored in pieces
- * and loaded whole, which stalled the loads (a quarter of the connectivity's time).
- */
-inline void setRay(const PixelRays& rays, float px, float py, Ray& out) {
-    out.origin = rays.origin(px, py);
-    out.direction = rays.direction(px, py);
-    out.length2 = glm::dot(out.direction, out.direction);
-}
-
 /** Depth at which ray meets plane; NaN when grazing or degenerate (so any test with it fails). */
 inline float planeDepth(const glm::vec4& plane, const Ray& ray) {
     const float denom =
@@ -91,6 +81,33 @@ template <typename V, typename T> V load4(const T* p) {
     V v;
     std::memcpy(&v, p, sizeof v);
     return v;
+}
+
+/** PixelRays with each vector in one register (the fourth lane unused). */
+struct PixelRays4 {
+    Floats4 origin0, originDx, originDy, direction0, directionDx, directionDy;
+
+    explicit PixelRays4(const PixelRays& rays)
+        : origin0(of(rays.origin0)), originDx(of(rays.originDx)), originDy(of(rays.originDy)),
+          direction0(of(rays.direction0)), directionDx(of(rays.directionDx)),
+          directionDy(of(rays.directionDy)) {}
+
+private:
+    static Floats4 of(const glm::vec3& v) { return Floats4{v.x, v.y, v.z, 0.0f}; }
+};
+
+/**
+ * Sets out to the ray through (px, py) in place (a Ray returned and copied was stored in pieces
+ * and loaded whole, which stalled the loads): PixelRays::origin() and direction() and their
+ * dot product, with the same operations lane by lane.
+ */
+inline void setRay(const PixelRays4& rays, float px, float py, Ray& out) {
+    const Floats4 origin = rays.origin0 + px * rays.originDx + py * rays.originDy;
+    const Floats4 direction = rays.direction0 + px * rays.directionDx + py * rays.directionDy;
+    const Floats4 squares = direction * direction;
+    out.origin = glm::vec3(origin[0], origin[1], origin[2]);
+    out.direction = glm::vec3(direction[0], direction[1], direction[2]);
+    out.length2 = squares[0] + squares[1] + squares[2];
 }
 
 /**
@@ -144,7 +161,7 @@ public:
     Linker(const LayerStack& stack, const ConnectivityOptions& options,
            const SurfaceGeometry* geometry, Connectivity& out)
         : m_stack(stack), m_geometry(options.test == ConnectionTest::Surface ? geometry : nullptr),
-          m_out(out) {
+          m_rays(m_geometry ? m_geometry->rays : PixelRays{}), m_out(out) {
         if (m_geometry && m_geometry->hasEntries() &&
             m_geometry->fragmentEntry.size() == stack.fragmentCount())
             m_fragmentEntry = m_geometry->fragmentEntry.data();
@@ -189,7 +206,7 @@ private:
                 const float px = float(x) + 0.5f, py = float(y) + 0.5f;
                 Ray rayP{};
                 if constexpr (kSurface)
-                    setRay(m_geometry->rays, px, py, rayP);
+                    setRay(m_rays, px, py, rayP);
                 if (y + 1 < h && m_stack.layerCount(p + std::size_t(w)) != 0) {
                     load<kSurface>(*down, p + std::size_t(w));
                     pair<kSurface>(*cur, *down, rayP, px, py, 0.0f, 1.0f, kDown, kUp);
@@ -407,11 +424,20 @@ private:
     template <bool kSurface>
     void pair(Side& a, Side& b, const Ray& rayP, float px, float py, float dx, float dy,
               int forward, int backward) {
+        std::uint8_t* links = m_out.links.data();
+        const bool single = a.count == 1 && b.count == 1;
+        if constexpr (kSurface) {
+            // One fragment each of one triangle: score() joins them without the rays.
+            if (single && a.info[0] && b.info[0] && a.triangle[0] == b.triangle[0]) {
+                links[4 * std::size_t(a.first) + std::size_t(forward)] = 1;
+                links[4 * std::size_t(b.first) + std::size_t(backward)] = 1;
+                return;
+            }
+        }
         PairRays rays{rayP, {}, {}};
         if constexpr (kSurface) {
-            const PixelRays& pixelRays = m_geometry->rays;
-            setRay(pixelRays, px + dx, py + dy, rays.q);
-            setRay(pixelRays, px + 0.5f * dx, py + 0.5f * dy, rays.m);
+            setRay(m_rays, px + dx, py + dy, rays.q);
+            setRay(m_rays, px + 0.5f * dx, py + 0.5f * dy, rays.m);
             if (++m_stamp == 0) { // wrapped: forget every stamp
                 for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ})
                     std::fill_n(lazy->stamp, kMaxLinkedLayers, 0u);
@@ -421,6 +447,17 @@ private:
         if constexpr (kSurface) {
             if (a.count * b.count >= m_deepPair) {
                 deepPair(a, b, rays, forward, backward);
+                return;
+            }
+            if (single) {
+                // One fragment each (most pairs of a shallow view): they are each other's best
+                // partner exactly when the pair does not fail.
+                const float s = a.info[0] && b.info[0] && a.component[0] != b.component[0]
+                                    ? contactScore(a, 0, b, 0, rays)
+                                    : score(a, 0, b, 0, rays);
+                const std::uint8_t linked = s < kFail ? 1 : 0;
+                links[4 * std::size_t(a.first) + std::size_t(forward)] = linked;
+                links[4 * std::size_t(b.first) + std::size_t(backward)] = linked;
                 return;
             }
         }
@@ -547,6 +584,7 @@ private:
 
     const LayerStack& m_stack;
     const SurfaceGeometry* m_geometry;
+    PixelRays4 m_rays;                              // m_geometry's rays (or the default ones)
     const std::uint32_t* m_fragmentEntry = nullptr; // SurfaceGeometry::fragmentEntry, if made
     Connectivity& m_out;
     bool m_truncated = false;
