@@ -45,10 +45,16 @@ struct ConnectivityOptions {
     unsigned threads = 0;
     /**
      * Surface: two neighbouring pixels with 16 fragment pairs or more have all their plane
-     * depths computed at once and most pairs decided four at a time, only the rest one by one.
-     * Results do not depend on it (false: every pair one by one, as tests compare).
+     * depths computed at once and most pairs decided in groups of lanes (see wideLanes), only
+     * the rest one by one. Results do not depend on it (false: every pair one by one, as tests
+     * compare).
      */
     bool batchDeepPixels = true;
+    /**
+     * Groups of eight lanes (AVX2) where the processor has AVX2, else of four. Results do not
+     * depend on it (false: four lanes everywhere, as tests compare).
+     */
+    bool wideLanes = true;
 };
 
 /** The mesh's unit-cube scale, 1 / bounds().longestSide(); 1 for an empty or flat-point mesh. */

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "core/io/mesh_io.h"
+#include "core/layers/connectivity.h"
 #include "core/layers/cpu_capture.h"
 #include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
@@ -83,6 +84,15 @@ Hashes build(const core::Mesh& mesh, int width, int height, unsigned threads) {
     links.vector(layers.connectivity.links);
     links.bytes(&layers.connectivity.truncated, sizeof layers.connectivity.truncated);
     out.links = links.value;
+    // The same links in four lanes where the processor has eight (AVX2).
+    core::ConnectivityOptions fourLanes;
+    fourLanes.threshold = options.threshold;
+    fourLanes.unitScale = core::unitScale(mesh);
+    fourLanes.threads = threads;
+    fourLanes.wideLanes = false;
+    const core::Connectivity narrow =
+        core::computeConnectivity(layers.stack, fourLanes, &layers.geometry);
+    EXPECT_TRUE(narrow.links == layers.connectivity.links) << "four lanes";
 
     Hash labels;
     labels.vector(layers.segmentation.region);

@@ -296,7 +296,8 @@ TEST(Connectivity, DeepPixelsBatchedGiveTheSameLinksAsOneByOne) {
     stack.offsets.push_back(0);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
-            const std::uint32_t layers = std::uint32_t(rng() % 12);
+            // Up to 19 fragments: groups of four and of eight lanes, whole and in part.
+            const std::uint32_t layers = std::uint32_t(rng() % 20);
             std::vector<std::pair<float, std::uint32_t>> fragments;
             for (std::uint32_t k = 0; k < layers; ++k) {
                 const auto t = std::uint32_t(rng() % std::uint32_t(triangles + 4));
@@ -325,12 +326,15 @@ TEST(Connectivity, DeepPixelsBatchedGiveTheSameLinksAsOneByOne) {
         options.contactFactor = 0.5f;
         options.threads = 1;
         const core::Connectivity batched = core::computeConnectivity(stack, options, &geometry);
+        options.wideLanes = false;
+        const core::Connectivity fourLanes = core::computeConnectivity(stack, options, &geometry);
         options.batchDeepPixels = false;
         const core::Connectivity oneByOne = core::computeConnectivity(stack, options, &geometry);
         const auto linked = std::count_if(oneByOne.links.begin(), oneByOne.links.end(),
                                           [](std::uint8_t l) { return l != 0; });
         EXPECT_GT(linked, std::ptrdiff_t(oneByOne.links.size() / 20)) << threshold;
         EXPECT_TRUE(batched.links == oneByOne.links) << "threshold " << threshold;
+        EXPECT_TRUE(fourLanes.links == oneByOne.links) << "threshold " << threshold;
     }
 }
 
