@@ -36,11 +36,19 @@ inline unsigned bitsN(IntsN mask) {
 #endif
 }
 
+/** kDeepPair for this lane width: eight lanes take pairs of eight fragment pairs or more. */
+constexpr std::uint32_t kDeepPairOf = kLanes == 8 ? 8 : kDeepPair;
+
 /** A group of lanes from p on (any alignment). */
 template <typename V, typename T> V loadLanes(const T* p) {
     V v;
     std::memcpy(&v, p, sizeof v);
     return v;
+}
+
+/** One of 32 bits for a corner id (a multiplicative hash), for a quick test of shared corners. */
+inline std::uint32_t cornerBit(std::uint32_t corner) {
+    return 1u << ((corner * 2654435761u) >> 27);
 }
 
 /** The lanes of the group from j0 on that hold one of count fragments. */
@@ -64,6 +72,9 @@ struct Side {
     bool packed = false;
     float plane[4][kSideRoom] = {};
     std::uint32_t corner[3][kSideRoom] = {};
+    // A bit per corner (cornerBit()); 0 without corners. Two triangles sharing a corner have a
+    // bit in common.
+    std::uint32_t cornerBits[kSideRoom] = {};
 };
 
 /**
@@ -98,7 +109,7 @@ public:
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
         m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
         m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
-        m_deepPair = options.batchDeepPixels ? kDeepPair : kNone;
+        m_deepPair = options.batchDeepPixels ? kDeepPairOf : kNone;
     }
 
     /**
@@ -280,11 +291,14 @@ private:
             (bAtP > 0.0f) & (IntsN{} - (aAtQ > 0.0f ? 1 : 0)) &
             ((a.depth[i] - bAtP) * (aAtQ - loadLanes<FloatsN>(b.depth + j0)) <= 0.0f);
         const IntsN smooth = cross & (cosine >= m_smoothCos);
-        // Lanes where a shared corner would decide (a crease, a facet).
+        // Lanes where a shared corner would decide (a crease, a facet), of those whose corner
+        // bits meet (all that share a corner, and a few more).
         const IntsN cornerCounts =
-            beyond & ~smooth & ((cross & (cosine >= m_creaseCos)) | (cosine >= kFacetCosine));
+            beyond & ~smooth &
+            ((loadLanes<IntsN>(b.cornerBits + j0) & std::int32_t(a.cornerBits[i])) != 0) &
+            ((cross & (cosine >= m_creaseCos)) | (cosine >= kFacetCosine));
         IntsN corner{};
-        if (a.corner[0][i] != kNone && bitsN(cornerCounts) != 0) {
+        if (bitsN(cornerCounts) != 0) {
             for (int c = 0; c < 3; ++c) {
                 const IntsN other = loadLanes<IntsN>(b.corner[c] + j0);
                 for (int d = 0; d < 3; ++d)
@@ -484,8 +498,12 @@ private:
             const SurfaceTriangle* info = side.info[k];
             for (int c = 0; c < 4; ++c)
                 side.plane[c][k] = info ? info->plane[c] : 0.0f;
-            for (int c = 0; c < 3; ++c)
+            std::uint32_t bits = 0;
+            for (int c = 0; c < 3; ++c) {
                 side.corner[c][k] = info ? info->corners[std::size_t(c)] : kNone;
+                bits |= cornerBit(side.corner[c][k]);
+            }
+            side.cornerBits[k] = side.corner[0][k] != kNone ? bits : 0u;
         }
     }
 
@@ -525,7 +543,7 @@ private:
     float m_contactLimit = 0.0f;
     float m_creaseCos = 0.0f;
     float m_smoothCos = 1.0f;
-    std::uint32_t m_deepPair = kDeepPair; // fragment pairs from which pair() takes deepPair()
+    std::uint32_t m_deepPair = kDeepPairOf; // fragment pairs from which pair() takes deepPair()
     Side m_sides[3];
     // Plane depths of a's and b's fragments on the midpoint ray, of b's on P's ray, of a's on Q's.
     LazyDepths m_midA, m_midB, m_atP, m_atQ;
