@@ -45,11 +45,15 @@ void CpuCapture(benchmark::State& state) {
 }
 BENCHMARK(CpuCapture)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-/** The surface or the plain connection test; arg: worker threads. */
-void Connectivity(benchmark::State& state, core::ConnectionTest test) {
+/**
+ * The surface or the plain connection test, in eight lanes where the processor has AVX2 or in
+ * four (wideLanes false); arg: worker threads.
+ */
+void Connectivity(benchmark::State& state, core::ConnectionTest test, bool wideLanes) {
     const TrefoilScene& s = trefoilScene();
     core::ConnectivityOptions options;
     options.test = test;
+    options.wideLanes = wideLanes;
     options.unitScale = core::unitScale(*s.mesh);
     options.threads = unsigned(state.range(0));
     for (auto _ : state) {
@@ -59,13 +63,19 @@ void Connectivity(benchmark::State& state, core::ConnectionTest test) {
     }
     state.counters["per_fragment"] = perFragment(s);
 }
-BENCHMARK_CAPTURE(Connectivity, surface, core::ConnectionTest::Surface)
+BENCHMARK_CAPTURE(Connectivity, surface, core::ConnectionTest::Surface, true)
     ->ArgName("threads")
     ->Arg(1)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
-BENCHMARK_CAPTURE(Connectivity, plain, core::ConnectionTest::Plain)
+BENCHMARK_CAPTURE(Connectivity, surface_four_lanes, core::ConnectionTest::Surface, false)
+    ->ArgName("threads")
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(Connectivity, plain, core::ConnectionTest::Plain, true)
     ->ArgName("threads")
     ->Arg(1)
     ->Arg(2)
