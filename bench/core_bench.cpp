@@ -20,6 +20,11 @@ namespace {
 using bench::trefoilScene;
 using bench::TrefoilScene;
 
+/** Arg: worker threads, 1 and 2; milliseconds of real time. */
+void oneAndTwoThreads(benchmark::internal::Benchmark* b) {
+    b->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
+
 /** A per-fragment time (the unit of docs/architecture.md §5's budget), from the benchmark's. */
 benchmark::Counter perFragment(const TrefoilScene& s) {
     return benchmark::Counter(double(s.layers.stack.fragmentCount()),
@@ -64,23 +69,10 @@ void Connectivity(benchmark::State& state, core::ConnectionTest test, bool wideL
     state.counters["per_fragment"] = perFragment(s);
 }
 BENCHMARK_CAPTURE(Connectivity, surface, core::ConnectionTest::Surface, true)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+    ->Apply(oneAndTwoThreads);
 BENCHMARK_CAPTURE(Connectivity, surface_four_lanes, core::ConnectionTest::Surface, false)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(Connectivity, plain, core::ConnectionTest::Plain, true)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+    ->Apply(oneAndTwoThreads);
+BENCHMARK_CAPTURE(Connectivity, plain, core::ConnectionTest::Plain, true)->Apply(oneAndTwoThreads);
 
 void SurfacePlanes(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
@@ -105,12 +97,7 @@ void Segmentation(benchmark::State& state) {
     state.counters["regions"] = double(regions);
     state.counters["per_fragment"] = perFragment(s);
 }
-BENCHMARK(Segmentation)
-    ->ArgName("threads")
-    ->Arg(1)
-    ->Arg(2)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+BENCHMARK(Segmentation)->Apply(oneAndTwoThreads);
 
 /** The points of the path where a stroke starts with a dab (on the surface). */
 std::vector<core::StrokePoint> startPoints(const TrefoilScene& s, core::StrokeTracker& tracker) {
