@@ -80,14 +80,6 @@ inline void setRay(const PixelRays4& rays, float px, float py, Ray& out) {
     out.length2 = squares[0] + squares[1] + squares[2];
 }
 
-/**
- * Fragment pairs of two neighbouring pixels from which all their plane depths are computed at
- * once and the pairs decided in groups of four lanes (deep pixels need nearly all of those
- * depths; shallow ones few, and one pair at a time costs them less). Eight lanes take half as
- * many (kDeepPairOf in the linker).
- */
-constexpr std::uint32_t kDeepPair = 16;
-
 /** Rows to a work item: small enough to balance two loaded cores, large enough to stream. */
 constexpr int kRowsPerChunk = 8;
 

@@ -44,10 +44,10 @@ struct ConnectivityOptions {
     /** Worker threads; 0 = std::thread::hardware_concurrency(). Results do not depend on it. */
     unsigned threads = 0;
     /**
-     * Surface: two neighbouring pixels with 16 fragment pairs or more have all their plane
-     * depths computed at once and most pairs decided in groups of lanes (see wideLanes), only
-     * the rest one by one. Results do not depend on it (false: every pair one by one, as tests
-     * compare).
+     * Surface: two neighbouring pixels with 16 fragment pairs or more (8 in eight lanes) have
+     * all their plane depths computed at once and most pairs decided in groups of lanes (see
+     * wideLanes), only the rest one by one. Results do not depend on it (false: every pair one by
+     * one, as tests compare).
      */
     bool batchDeepPixels = true;
     /**

@@ -36,8 +36,13 @@ inline unsigned bitsN(IntsN mask) {
 #endif
 }
 
-/** kDeepPair for this lane width: eight lanes take pairs of eight fragment pairs or more. */
-constexpr std::uint32_t kDeepPairOf = kLanes == 8 ? 8 : kDeepPair;
+/**
+ * Fragment pairs of two neighbouring pixels from which all their plane depths are computed at
+ * once and the pairs decided in groups of lanes (deep pixels need nearly all of those depths;
+ * shallow ones few, and one pair at a time costs them less): a group's worth of pairs in eight
+ * lanes, four groups' in four.
+ */
+constexpr std::uint32_t kDeepPair = kLanes == 8 ? 8 : 16;
 
 /** A group of lanes from p on (any alignment). */
 template <typename V, typename T> V loadLanes(const T* p) {
@@ -109,7 +114,7 @@ public:
         m_contactLimit = m_limit * std::max(options.contactFactor, 0.0f);
         m_creaseCos = std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
         m_smoothCos = std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
-        m_deepPair = options.batchDeepPixels ? kDeepPairOf : kNone;
+        m_deepPair = options.batchDeepPixels ? kDeepPair : kNone;
     }
 
     /**
@@ -543,7 +548,7 @@ private:
     float m_contactLimit = 0.0f;
     float m_creaseCos = 0.0f;
     float m_smoothCos = 1.0f;
-    std::uint32_t m_deepPair = kDeepPairOf; // fragment pairs from which pair() takes deepPair()
+    std::uint32_t m_deepPair = kDeepPair; // fragment pairs from which pair() takes deepPair()
     Side m_sides[3];
     // Plane depths of a's and b's fragments on the midpoint ray, of b's on P's ray, of a's on Q's.
     LazyDepths m_midA, m_midB, m_atP, m_atQ;
