@@ -122,7 +122,7 @@ struct Glb {
     }
 };
 
-constexpr int kUByte = 5121, kByte = 5120, kUShort = 5123, kUInt = 5125, kFloat = 5126;
+constexpr int kByte = 5120, kUShort = 5123, kUInt = 5125, kFloat = 5126;
 
 /** One mesh with one primitive of attrs (and indices), one node (with extra node JSON). */
 void addScene(Glb& glb, Json prim, const Json& node = Json::object()) {

@@ -35,8 +35,6 @@ struct Snapshot {
     std::vector<std::vector<std::uint8_t>> planes;
     core::PaintSelection selection;
     std::vector<std::uint8_t> base, color, mr;
-
-    friend bool operator==(const Snapshot&, const Snapshot&) = default;
 };
 
 std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
