@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # README command 2: install dependencies, build, and run the whole test suite headless: GL tests on
-# EGL (llvmpipe), widget tests each on an Xvfb of its own (tests/ui/own_display.sh); then the
+# EGL (llvmpipe), widget tests each on an Xvfb of its own (tests/ui/own_session.sh); then the
 # core/render/CLI tests again under ASan/UBSan; then the loaders and the project reader are fuzzed
 # for a fixed number of runs from fixed seeds, going on after each finding (one in our code fails;
 # one in a third-party parser must be turned into an error by the importer process) and the

@@ -93,14 +93,16 @@ private:
         if (!modal || !modal->isVisible() || !modal->windowHandle() ||
             !modal->windowHandle()->isExposed())
             return;
-        if (auto* dialog = qobject_cast<QFileDialog*>(modal); dialog && !m_choseFile) {
+        if (auto* dialog = qobject_cast<QFileDialog*>(modal)) {
             auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
             if (!name)
                 return;
+            // The path is set, not typed: typed, it pops up the file-name completer, which can
+            // take the Return meant for the dialog when its folder listing arrives late. Return
+            // is pressed again on every tick the dialog stays open.
             m_choseFile = true;
             name->setFocus();
-            name->selectAll();
-            QTest::keyClicks(name, m_path);
+            name->setText(m_path);
             QTest::keyClick(name, Qt::Key_Return);
         } else if (auto* box = qobject_cast<QMessageBox*>(modal);
                    box && box->objectName() == QLatin1String("unsavedChangesBox")) {
