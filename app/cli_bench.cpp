@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_timing.h"
 #include "core/document/document.h"
 #include "core/io/mesh_io.h"
 #include "core/layers/layers.h"
@@ -31,27 +32,6 @@ namespace cli {
 
 namespace {
 using nlohmann::json;
-using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> values) {
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-double percentile(std::vector<double> values, double p) {
-    if (values.empty())
-        return 0.0;
-    std::sort(values.begin(), values.end());
-    return values[std::min(values.size() - 1, std::size_t(p * double(values.size())))];
-}
-
-double msSince(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 /**
  * Peak resident memory (VmHWM) in MiB. Between stages the peak is reset to the current size
  * (/proc/self/clear_refs, "5"), so each stage reports its own peak; where that is refused, the

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_timing.h"
 #include "core/document/document.h"
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_io_in_process.h"
@@ -23,19 +24,11 @@ namespace cli {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n == 0 ? 0.0 : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 /** Milliseconds one load takes, or a negative number (and the message on stderr) if it fails. */
 template <typename Load> double timed(const std::string& model, Load load) {
     const Clock::time_point start = Clock::now();
     const core::Result<core::Mesh> mesh = load(model);
-    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    const double ms = msSince(start);
     if (!mesh) {
         std::cerr << "layerpaint-cli: " << mesh.error() << '\n';
         return -1.0;
@@ -101,8 +94,7 @@ int runBenchLoad(const std::vector<std::string>& models, int runs) {
                 std::cerr << "layerpaint-cli: " << models[i] << ": " << target.error() << '\n';
                 return 1;
             }
-            samples.push_back(
-                std::chrono::duration<double, std::milli>(Clock::now() - start).count());
+            samples.push_back(msSince(start));
         }
         setUp[i] = median(samples);
     }

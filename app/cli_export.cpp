@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_timing.h"
 #include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
@@ -17,11 +18,6 @@
 namespace cli {
 
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
-}
 
 /** The format named, or the one the extension of out implies. */
 std::optional<core::ExportFormat> formatOf(const ExportArgs& args) {

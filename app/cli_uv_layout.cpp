@@ -2,13 +2,13 @@
 // `layerpaint-cli uv-layout`: the automatic UV layout of a model and its quality figures.
 #include "app/cli_uv_layout.h"
 
-#include <chrono>
 #include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
+#include "app/cli_timing.h"
 #include "core/base/parallel.h"
 #include "core/io/gltf_export.h"
 #include "core/io/image_write.h"
@@ -58,12 +58,11 @@ core::Status writeChartImage(const std::string& path, const core::UvLayout& layo
 } // namespace
 
 int runUvLayout(const UvLayoutArgs& args) {
-    using Clock = std::chrono::steady_clock;
     const auto loadStart = Clock::now();
     core::Result<core::Mesh> mesh = core::loadMesh(args.model);
     if (!mesh)
         return fail(mesh.error());
-    const double loadSeconds = std::chrono::duration<double>(Clock::now() - loadStart).count();
+    const double loadSeconds = msSince(loadStart) / 1000.0;
     const bool hadUvs = mesh->hasUvs();
     if (hadUvs && !args.keepUvs)
         return fail(args.model + ": the model has texture coordinates already (--replace-uvs "
@@ -82,7 +81,7 @@ int runUvLayout(const UvLayoutArgs& args) {
         options.sharpEdgeDegrees = args.sharpEdge;
     const auto start = Clock::now();
     core::Result<core::UvLayout> layout = core::makeUvLayout(*mesh, options);
-    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    const double seconds = msSince(start) / 1000.0;
     if (!layout)
         return fail(args.model + ": " + layout.error());
     const core::UvLayoutMetrics m = core::measureUvLayout(*layout, args.threads);

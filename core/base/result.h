@@ -28,6 +28,11 @@ inline Error cancelledError(std::string message = "cancelled") {
     return Error{std::move(message), ErrorKind::Cancelled};
 }
 
+/** The Error of a file or a value that is not what it should be. */
+inline Error badInput(std::string message) {
+    return Error{std::move(message), ErrorKind::BadInput};
+}
+
 /** A value or an Error. Core functions return this instead of throwing. */
 template <typename T> class Result {
 public:

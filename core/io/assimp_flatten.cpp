@@ -27,10 +27,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string str(std::uint64_t v) {
-    return std::to_string(v);
-}
-
 glm::dmat4 toGlm(const aiMatrix4x4& m) {
     // aiMatrix4x4 is row-major (a1..a4 is the first row); glm is column-major.
     return glm::dmat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
@@ -48,13 +44,14 @@ Status checkRawScene(const aiScene& scene, const LoadLimits& limits) {
     std::uint64_t rawVertices = 0;
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         aiMesh* mesh = scene.mMeshes[m];
-        const std::string where = "mesh " + str(m);
+        const std::string where = "mesh " + std::to_string(m);
         if (mesh == nullptr)
             return Error{where + " is missing", ErrorKind::BadInput};
         const unsigned nv = mesh->mNumVertices;
         rawVertices += nv;
         if (rawVertices > maxRawVertices)
-            return Error{"too many vertices (more than " + str(maxRawVertices) + " before merging)",
+            return Error{"too many vertices (more than " + std::to_string(maxRawVertices) +
+                             " before merging)",
                          ErrorKind::BadInput};
         if (nv > 0 && mesh->mVertices == nullptr)
             return Error{where + " has no vertex positions", ErrorKind::BadInput};
@@ -67,8 +64,9 @@ Status checkRawScene(const aiScene& scene, const LoadLimits& limits) {
                 return Error{where + " has a face without vertices", ErrorKind::BadInput};
             for (unsigned k = 0; k < face.mNumIndices; ++k)
                 if (face.mIndices[k] >= nv)
-                    return Error{where + ": vertex index " + str(face.mIndices[k]) +
-                                     " is out of range (the mesh has " + str(nv) + " vertices)",
+                    return Error{where + ": vertex index " + std::to_string(face.mIndices[k]) +
+                                     " is out of range (the mesh has " + std::to_string(nv) +
+                                     " vertices)",
                                  ErrorKind::BadInput};
             types |= face.mNumIndices == 1   ? aiPrimitiveType_POINT
                      : face.mNumIndices == 2 ? aiPrimitiveType_LINE
@@ -123,7 +121,7 @@ private:
 bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
     if (meshIndex >= m_scene.mNumMeshes || m_scene.mMeshes == nullptr ||
         m_scene.mMeshes[meshIndex] == nullptr)
-        return fail("a node uses mesh " + str(meshIndex) + ", which does not exist");
+        return fail("a node uses mesh " + std::to_string(meshIndex) + ", which does not exist");
     const aiMesh& am = *m_scene.mMeshes[meshIndex];
     const unsigned vertexCount = am.mNumVertices;
     if (vertexCount == 0 || am.mVertices == nullptr || am.mFaces == nullptr)
@@ -140,8 +138,9 @@ bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
         }
         for (unsigned k = 0; k < 3; ++k) {
             if (face.mIndices[k] >= vertexCount)
-                return fail("mesh " + str(meshIndex) + ": vertex index " + str(face.mIndices[k]) +
-                            " is out of range (the mesh has " + str(vertexCount) + " vertices)");
+                return fail("mesh " + std::to_string(meshIndex) + ": vertex index " +
+                            std::to_string(face.mIndices[k]) + " is out of range (the mesh has " +
+                            std::to_string(vertexCount) + " vertices)");
             tris.push_back(face.mIndices[k]);
         }
     }
@@ -164,10 +163,11 @@ bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
             continue;
         const aiVector3D& p = am.mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            return fail("mesh " + str(meshIndex) + ": a vertex position is not a finite number");
+            return fail("mesh " + std::to_string(meshIndex) +
+                        ": a vertex position is not a finite number");
         glm::vec3 tp;
         if (!toFloat(glm::dvec3(transform * glm::dvec4(p.x, p.y, p.z, 1.0)), tp))
-            return fail("mesh " + str(meshIndex) +
+            return fail("mesh " + std::to_string(meshIndex) +
                         ": a vertex position is not finite after the node transform");
         m_mesh.positions.push_back(tp);
         if (hasNormals) {
@@ -294,14 +294,14 @@ void AssimpFlattener::addMaterials() {
         const aiMaterial* am = m_scene.mMaterials ? m_scene.mMaterials[i] : nullptr;
         Material mat;
         if (am == nullptr) {
-            mat.name = "material " + str(i);
+            mat.name = "material " + std::to_string(i);
             m_mesh.materials.push_back(mat);
             continue;
         }
         aiString name;
         mat.name = am->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0
                        ? std::string(name.C_Str())
-                       : "material " + str(i);
+                       : "material " + std::to_string(i);
         aiColor4D color(1.0f, 1.0f, 1.0f, 1.0f);
         const bool pbrColor = am->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS;
         bool diffuseColor = false;
@@ -366,7 +366,8 @@ bool AssimpFlattener::run(Mesh& out) {
     if (m_skippedFaces > 0)
         m_mesh.warnings.push_back(m_skippedFaces == 1
                                       ? std::string("1 point or line face was skipped")
-                                      : str(m_skippedFaces) + " point and line faces were skipped");
+                                      : std::to_string(m_skippedFaces) +
+                                            " point and line faces were skipped");
     if (m_mesh.indices.empty())
         return fail("the file contains no triangles");
 

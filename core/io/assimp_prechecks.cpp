@@ -15,14 +15,6 @@ namespace core::detail::assimp {
 
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string str(std::uint64_t v) {
-    return std::to_string(v);
-}
-
-} // namespace
-
 /**
  * OBJ syntax Assimp forgives silently: a face statement without vertices. Such a file is
  * malformed (truncated or hand-broken), so it is refused instead of loading with a hole.
@@ -50,7 +42,7 @@ Status checkObjFaces(const fs::path& file) {
         if (b != std::string::npos && logical[b] == 'f' &&
             (b + 1 == logical.size() || logical[b + 1] == ' ' || logical[b + 1] == '\t') &&
             logical.find_first_not_of(" \t", b + 1) == std::string::npos)
-            return Error{"line " + str(startLine) + ": a face without vertices",
+            return Error{"line " + std::to_string(startLine) + ": a face without vertices",
                          ErrorKind::BadInput};
         logical.clear();
     }
@@ -98,8 +90,8 @@ bool parseLeadingCount(const std::string& token, std::uint64_t& out) {
 }
 
 std::string tooManyElements(std::uint64_t count, const std::string& what, std::uint64_t size) {
-    return "the header declares " + str(count) + " " + what + ", more than the " + str(size) +
-           "-byte file can hold";
+    return "the header declares " + std::to_string(count) + " " + what + ", more than the " +
+           std::to_string(size) + "-byte file can hold";
 }
 
 /**
@@ -161,25 +153,26 @@ Status checkOffFaces(const fs::path& file) {
         ++seenFaces;
         std::uint64_t corners = 0;
         if (!parseCount(tokens[0], corners))
-            return Error{"line " + str(lineNo) +
+            return Error{"line " + std::to_string(lineNo) +
                              ": an OFF face must start with its number of vertices",
                          ErrorKind::BadInput};
         if (tokens.size() < corners + 1)
-            return Error{"line " + str(lineNo) + ": the face lists " + str(tokens.size() - 1) +
-                             " vertex indices but says it has " + str(corners),
+            return Error{"line " + std::to_string(lineNo) + ": the face lists " +
+                             std::to_string(tokens.size() - 1) +
+                             " vertex indices but says it has " + std::to_string(corners),
                          ErrorKind::BadInput};
         for (std::size_t k = 1; k <= corners; ++k) {
             std::uint64_t index = 0;
             if (!parseCount(tokens[k], index) || index >= vertices)
-                return Error{"line " + str(lineNo) + ": the face uses vertex \"" + tokens[k] +
-                                 "\", which is not one of the file's " + str(vertices) +
-                                 " vertices",
+                return Error{"line " + std::to_string(lineNo) + ": the face uses vertex \"" +
+                                 tokens[k] + "\", which is not one of the file's " +
+                                 std::to_string(vertices) + " vertices",
                              ErrorKind::BadInput};
         }
     }
     if (stage == Stage::Faces && seenFaces < faces)
-        return Error{"the OFF file ends after " + str(seenFaces) + " of the " + str(faces) +
-                         " faces its header declares",
+        return Error{"the OFF file ends after " + std::to_string(seenFaces) + " of the " +
+                         std::to_string(faces) + " faces its header declares",
                      ErrorKind::BadInput};
     return {};
 }
@@ -234,7 +227,7 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
         if (t >= tokens.size() || !parseLeadingCount(tokens[t], vertices))
             return {};
         if (vertices > maxRaw)
-            return Error{"too many vertices (the header declares " + str(vertices) + ")",
+            return Error{"too many vertices (the header declares " + std::to_string(vertices) + ")",
                          ErrorKind::BadInput};
         // "0 0 0\n" is the shortest vertex line, "0\n" the shortest face line.
         if (vertices > fileSize / 6)
@@ -283,7 +276,7 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
         std::vector<std::string> w;
         for (std::string word; words >> word;)
             w.push_back(word);
-        const std::string where = "line " + str(std::uint64_t(lineNo)) + " of the PLY header: ";
+        const std::string where = "line " + std::to_string(lineNo) + " of the PLY header: ";
         if (w.empty() || w[0] == "comment" || w[0] == "obj_info" ||
             (lineNo == 1 && w[0].rfind("ply", 0) == 0))
             continue;
@@ -315,18 +308,18 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
     }
     if (!ended)
         return Error{"the PLY header does not end (no end_header line in its first " +
-                         str(head.size()) + " bytes)",
+                         std::to_string(head.size()) + " bytes)",
                      ErrorKind::BadInput}; // Assimp would read on and hang
     const std::uint64_t body = fileSize > bodyStart ? fileSize - bodyStart : 0;
     for (const Element& e : elements)
         if (e.count > 0 && e.minBytes == 0) // Assimp would loop over them without moving on
-            return Error{"the PLY header declares " + str(e.count) + " \"" + e.name +
+            return Error{"the PLY header declares " + std::to_string(e.count) + " \"" + e.name +
                              "\" elements without properties",
                          ErrorKind::BadInput};
     std::uint64_t needed = 0;
     for (const Element& e : elements) {
         if (e.name == "vertex" && e.count > maxRaw)
-            return Error{"too many vertices (the header declares " + str(e.count) + ")",
+            return Error{"too many vertices (the header declares " + std::to_string(e.count) + ")",
                          ErrorKind::BadInput};
         std::uint64_t bytes = 0;
         if (__builtin_mul_overflow(e.count, std::max<std::uint64_t>(e.minBytes, 1), &bytes) ||

@@ -15,10 +15,6 @@ std::uint32_t u32(std::span<const std::uint8_t> bytes, std::uint64_t at) {
     return v;
 }
 
-Error bad(std::string problem) {
-    return Error{std::move(problem), ErrorKind::BadInput};
-}
-
 } // namespace
 
 bool hasMagic(std::span<const std::uint8_t> bytes) {
@@ -27,7 +23,7 @@ bool hasMagic(std::span<const std::uint8_t> bytes) {
 
 Result<Layout> readHead(std::span<const std::uint8_t> head, std::uint64_t fileSize) {
     if (fileSize < 12 || head.size() < 12)
-        return bad("the binary glTF file is truncated (no complete header)");
+        return badInput("the binary glTF file is truncated (no complete header)");
     const std::uint32_t version = u32(head, 4);
     if (version != 2)
         return Error{"binary glTF version " + std::to_string(version) +
@@ -35,15 +31,16 @@ Result<Layout> readHead(std::span<const std::uint8_t> head, std::uint64_t fileSi
                      ErrorKind::Unsupported};
     const std::uint64_t length = u32(head, 8);
     if (length > fileSize)
-        return bad("the binary glTF file is truncated (the header says " + std::to_string(length) +
-                   " bytes, the file has " + std::to_string(fileSize) + ")");
+        return badInput("the binary glTF file is truncated (the header says " +
+                        std::to_string(length) + " bytes, the file has " +
+                        std::to_string(fileSize) + ")");
     if (length < kHeadBytes || head.size() < kHeadBytes)
-        return bad("the binary glTF file is truncated (no JSON chunk)");
+        return badInput("the binary glTF file is truncated (no JSON chunk)");
     const std::uint64_t jsonLength = u32(head, 12);
     if (u32(head, 16) != kChunkJson)
-        return bad("the first chunk of the binary glTF file is not JSON");
+        return badInput("the first chunk of the binary glTF file is not JSON");
     if (jsonLength == 0 || kHeadBytes + jsonLength > length)
-        return bad("the binary glTF file is truncated (the JSON chunk runs past the end)");
+        return badInput("the binary glTF file is truncated (the JSON chunk runs past the end)");
     return Layout{kHeadBytes, jsonLength, length};
 }
 
@@ -55,12 +52,12 @@ Result<Layout> readContainer(std::span<const std::uint8_t> bytes) {
     const std::uint64_t binHeader = kHeadBytes + layout->jsonLength;
     if (binHeader < length) {
         if (binHeader + 8 > length)
-            return bad("the binary glTF file is truncated (incomplete BIN chunk header)");
+            return badInput("the binary glTF file is truncated (incomplete BIN chunk header)");
         const std::uint64_t binLength = u32(bytes, binHeader);
         if (u32(bytes, binHeader + 4) != kChunkBin)
-            return bad("the second chunk of the binary glTF file is not BIN");
+            return badInput("the second chunk of the binary glTF file is not BIN");
         if (binHeader + 8 + binLength > length)
-            return bad("the binary glTF file is truncated (the BIN chunk runs past the end)");
+            return badInput("the binary glTF file is truncated (the BIN chunk runs past the end)");
     }
     return layout;
 }

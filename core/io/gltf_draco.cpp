@@ -14,10 +14,6 @@ namespace core::detail::gltf {
 
 namespace {
 
-Error bad(const std::string& message) {
-    return Error{message, ErrorKind::BadInput};
-}
-
 /** One attribute into out (components per point); false with why on failure. */
 bool readAttribute(const draco::Mesh& mesh, const std::string& name, std::uint32_t id,
                    int minComponents, int maxComponents, std::vector<float>& out, int& components,
@@ -81,45 +77,46 @@ Result<DracoPrimitive> decodeDraco(const std::uint8_t* data, std::size_t size,
     buffer.Init(reinterpret_cast<const char*>(data), size);
     const auto type = draco::Decoder::GetEncodedGeometryType(&buffer);
     if (!type.ok())
-        return bad("the Draco data cannot be decoded (" + type.status().error_msg_string() + ")");
+        return badInput("the Draco data cannot be decoded (" + type.status().error_msg_string() +
+                        ")");
     if (type.value() != draco::TRIANGULAR_MESH)
-        return bad("the Draco data is not a triangle mesh");
+        return badInput("the Draco data is not a triangle mesh");
     draco::Decoder decoder;
     auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
     if (!decoded.ok())
-        return bad("the Draco data cannot be decoded (" + decoded.status().error_msg_string() +
-                   ")");
+        return badInput("the Draco data cannot be decoded (" + decoded.status().error_msg_string() +
+                        ")");
     const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
     if (!mesh)
-        return bad("the Draco data cannot be decoded");
+        return badInput("the Draco data cannot be decoded");
 
     DracoPrimitive out;
     out.vertexCount = mesh->num_points();
     const std::uint64_t faces = mesh->num_faces();
     if (out.vertexCount == 0 || faces == 0)
-        return bad("the Draco data holds no triangles");
+        return badInput("the Draco data holds no triangles");
     if (out.vertexCount > limits.maxVertices)
-        return bad("the Draco data has too many vertices (" + str(out.vertexCount) + ")");
+        return badInput("the Draco data has too many vertices (" + str(out.vertexCount) + ")");
     if (faces > limits.maxTriangles)
-        return bad("the Draco data has too many triangles (" + str(faces) + ")");
+        return badInput("the Draco data has too many triangles (" + str(faces) + ")");
 
     std::string why;
     int components = 0;
     const auto pos = attributeIds.find("POSITION");
     if (pos == attributeIds.end())
-        return bad("the Draco extension maps no POSITION attribute");
+        return badInput("the Draco extension maps no POSITION attribute");
     if (!readAttribute(*mesh, "POSITION", pos->second, 3, 3, out.positions, components, why))
-        return bad(why);
+        return badInput(why);
     if (const auto it = attributeIds.find("NORMAL"); it != attributeIds.end())
         if (!readAttribute(*mesh, "NORMAL", it->second, 3, 3, out.normals, components, why))
-            return bad(why);
+            return badInput(why);
     if (const auto it = attributeIds.find(uvName); it != attributeIds.end())
         if (!readAttribute(*mesh, uvName, it->second, 2, 2, out.uvs, components, why))
-            return bad(why);
+            return badInput(why);
     if (const auto it = attributeIds.find("COLOR_0"); it != attributeIds.end()) {
         if (!readAttribute(*mesh, "COLOR_0", it->second, 3, 4, out.colors, out.colorComponents,
                            why))
-            return bad(why);
+            return badInput(why);
     }
 
     out.indices.reserve(static_cast<std::size_t>(faces) * 3);
@@ -127,7 +124,7 @@ Result<DracoPrimitive> decodeDraco(const std::uint8_t* data, std::size_t size,
         const draco::Mesh::Face& face = mesh->face(draco::FaceIndex(f));
         for (const draco::PointIndex& p : face) {
             if (p.value() >= out.vertexCount)
-                return bad("the Draco data has an index out of range");
+                return badInput("the Draco data has an index out of range");
             out.indices.push_back(p.value());
         }
     }

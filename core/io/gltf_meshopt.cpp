@@ -44,10 +44,6 @@ bool uintField(const Json& o, const char* key, std::uint64_t& out, bool required
     return out <= kMaxByteSize;
 }
 
-Error bad(const std::string& message) {
-    return Error{message, ErrorKind::BadInput};
-}
-
 } // namespace
 
 bool replaceFallbackBuffers(Json& json) {
@@ -82,8 +78,9 @@ Status decodeMeshoptViews(tinygltf::Model& model, const Json& json, const LoadLi
             !uintField(*ext, "byteOffset", offset, false) ||
             !uintField(*ext, "byteLength", length, true) ||
             !uintField(*ext, "byteStride", stride, true) || !uintField(*ext, "count", count, true))
-            return bad(where + " needs buffer, byteLength, byteStride and count as non-negative "
-                               "integers");
+            return badInput(where +
+                            " needs buffer, byteLength, byteStride and count as non-negative "
+                            "integers");
         const std::string mode = ext->value("mode", Json()).is_string()
                                      ? (*ext)["mode"].get<std::string>()
                                      : std::string();
@@ -92,41 +89,42 @@ Status decodeMeshoptViews(tinygltf::Model& model, const Json& json, const LoadLi
             filterJson.is_string() ? filterJson.get<std::string>() : std::string("?");
 
         if (buffer >= model.buffers.size())
-            return bad(where + " uses buffer " + str(buffer) + ", which does not exist");
+            return badInput(where + " uses buffer " + str(buffer) + ", which does not exist");
         const std::vector<unsigned char>& source = model.buffers[buffer].data;
         std::uint64_t end = 0;
         if (addOverflows(offset, length, end) || end > source.size())
-            return bad(where + " reaches past the end of buffer " + str(buffer) + " (" +
-                       str(source.size()) + " bytes)");
+            return badInput(where + " reaches past the end of buffer " + str(buffer) + " (" +
+                            str(source.size()) + " bytes)");
 
         const bool attributes = mode == "ATTRIBUTES";
         if (!attributes && mode != "TRIANGLES" && mode != "INDICES")
-            return bad(where + " has an invalid mode");
+            return badInput(where + " has an invalid mode");
         if (attributes ? (stride == 0 || stride > 256 || stride % 4 != 0)
                        : (stride != 2 && stride != 4))
-            return bad(where + " has an invalid byteStride " + str(stride) + " for mode " + mode);
+            return badInput(where + " has an invalid byteStride " + str(stride) + " for mode " +
+                            mode);
         const std::uint64_t cap = attributes ? limits.maxVertices : limits.maxTriangles * 3 + 2;
         if (count == 0 || count > cap)
-            return bad(where + " has an invalid count " + str(count));
+            return badInput(where + " has an invalid count " + str(count));
         if (mode == "TRIANGLES" && count % 3 != 0)
-            return bad(where + " has a count " + str(count) + " that is not a multiple of 3");
+            return badInput(where + " has a count " + str(count) + " that is not a multiple of 3");
         if (filter != "NONE" && !attributes)
-            return bad(where + " has a filter on indices");
+            return badInput(where + " has a filter on indices");
         if ((filter == "OCTAHEDRAL" && stride != 4 && stride != 8) ||
             (filter == "QUATERNION" && stride != 8) || (filter == "EXPONENTIAL" && stride % 4))
-            return bad(where + " has a byteStride " + str(stride) + " the filter " + filter +
-                       " does not allow");
+            return badInput(where + " has a byteStride " + str(stride) + " the filter " + filter +
+                            " does not allow");
         if (filter != "NONE" && filter != "OCTAHEDRAL" && filter != "QUATERNION" &&
             filter != "EXPONENTIAL")
-            return bad(where + " has an unsupported filter");
+            return badInput(where + " has an unsupported filter");
 
         tinygltf::BufferView& view = model.bufferViews[i];
         std::uint64_t decodedSize = 0;
         if (mulOverflows(count, stride, decodedSize) || decodedSize != view.byteLength)
-            return bad(where + " decodes to " + str(count) + " × " + str(stride) +
-                       " bytes, but the view's byteLength is " + str(view.byteLength));
+            return badInput(where + " decodes to " + str(count) + " × " + str(stride) +
+                            " bytes, but the view's byteLength is " + str(view.byteLength));
         if (view.byteStride != 0 && attributes && view.byteStride != stride)
-            return bad(where + " has a byteStride other than the view's");
+            return badInput(where + " has a byteStride other than the view's");
 
         tinygltf::Buffer decoded;
         decoded.data.resize(static_cast<std::size_t>(decodedSize));
@@ -142,7 +140,8 @@ Status decodeMeshoptViews(tinygltf::Model& model, const Json& json, const LoadLi
         else
             rc = meshopt_decodeIndexSequence(decoded.data.data(), n, s, src, len);
         if (rc != 0)
-            return bad(where + " cannot be decoded (the compressed data is malformed or cut off)");
+            return badInput(where +
+                            " cannot be decoded (the compressed data is malformed or cut off)");
         if (filter == "OCTAHEDRAL")
             meshopt_decodeFilterOct(decoded.data.data(), n, s);
         else if (filter == "QUATERNION")

@@ -5,10 +5,9 @@
 #include <utility>
 #include <vector>
 
-namespace core {
+#include "core/base/index.h"
 
-/** No fragment / no connection / no region. */
-inline constexpr std::uint32_t kNone = 0xffffffffu;
+namespace core {
 
 /**
  * Every captured fragment of one view as per-pixel lists sorted front to back (docs/architecture.md

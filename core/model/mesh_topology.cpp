@@ -9,8 +9,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/base/index.h"
 #include "core/base/parallel.h"
-#include "core/layers/layer_stack.h"
 
 namespace core {
 

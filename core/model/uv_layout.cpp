@@ -19,7 +19,6 @@ namespace core {
 namespace {
 
 using uvl::Chart;
-using uvl::kNone;
 
 Error cancelled() {
     return Error{"the UV layout was cancelled", ErrorKind::Cancelled};

@@ -15,13 +15,12 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/base/index.h"
 #include "core/base/result.h"
 #include "core/model/mesh_topology.h"
 #include "core/model/uv_layout.h"
 
 namespace core::uvl {
-
-inline constexpr std::uint32_t kNone = 0xffffffffu;
 
 /** The welded surface the layout works on, in double precision. */
 struct Surface {

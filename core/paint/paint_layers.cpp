@@ -11,8 +11,6 @@ namespace core {
 
 namespace {
 
-constexpr int kTile = TiledPlane::kPlaneTile;
-
 using layer_bytes::fromByte;
 using layer_bytes::toByte;
 
@@ -264,12 +262,13 @@ void PaintLayerStack::compositeTexel(std::uint32_t page, int x, int y, std::size
 
 void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
     const PageSize size = m_pages.at(page);
-    const int across = (size.width + kTile - 1) / kTile;
+    const int across = (size.width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile;
     if (across == 0)
         return;
-    const int x0 = int(tile % std::uint32_t(across)) * kTile;
-    const int y0 = int(tile / std::uint32_t(across)) * kTile;
-    const int x1 = std::min(size.width, x0 + kTile), y1 = std::min(size.height, y0 + kTile);
+    const int x0 = int(tile % std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    const int y0 = int(tile / std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    const int x1 = std::min(size.width, x0 + TiledPlane::kPlaneTile),
+              y1 = std::min(size.height, y0 + TiledPlane::kPlaneTile);
     std::size_t end = 0; // layers above the last one touching this tile change nothing here
     for (std::size_t l = 0; l < m_layers.size(); ++l)
         if (m_layers[l]->touchesTile(page, tile))
@@ -305,8 +304,10 @@ void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
 std::vector<TileKey> PaintLayerStack::allTiles() const {
     std::vector<TileKey> tiles;
     for (std::uint32_t p = 0; p < m_pages.size(); ++p) {
-        const std::uint32_t across = std::uint32_t((m_pages[p].width + kTile - 1) / kTile);
-        const std::uint32_t down = std::uint32_t((m_pages[p].height + kTile - 1) / kTile);
+        const std::uint32_t across =
+            std::uint32_t((m_pages[p].width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile);
+        const std::uint32_t down = std::uint32_t((m_pages[p].height + TiledPlane::kPlaneTile - 1) /
+                                                 TiledPlane::kPlaneTile);
         for (std::uint32_t t = 0; t < across * down; ++t)
             tiles.push_back({p, t});
     }

@@ -15,7 +15,6 @@ namespace core {
 
 namespace {
 
-constexpr int kTile = TiledPlane::kPlaneTile;
 constexpr unsigned kAllChannels = 7;
 /** Tiles whose lower layers a stroke keeps at most (80 KB each); past that it recomputes them. */
 constexpr std::size_t kMaxKeptTiles = 512;
@@ -53,12 +52,13 @@ template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
 }
 
 TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
-    const int across = std::max(1, (size.width + kTile - 1) / kTile);
+    const int across =
+        std::max(1, (size.width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile);
     TileRect r;
-    r.x = int(tile % std::uint32_t(across)) * kTile;
-    r.y = int(tile / std::uint32_t(across)) * kTile;
-    r.width = std::min(size.width, r.x + kTile) - r.x;
-    r.height = std::min(size.height, r.y + kTile) - r.y;
+    r.x = int(tile % std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    r.y = int(tile / std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    r.width = std::min(size.width, r.x + TiledPlane::kPlaneTile) - r.x;
+    r.height = std::min(size.height, r.y + TiledPlane::kPlaneTile) - r.y;
     return r;
 }
 
