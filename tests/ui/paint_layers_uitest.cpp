@@ -13,6 +13,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QDrag>
 #include <QFileDialog>
 #include <QImage>
 #include <QLineEdit>
@@ -377,12 +378,16 @@ TEST_F(PaintLayersUiTest, DraggingARowReordersThePaintLayersOneUndoStep) {
     const QPoint over(nameX, blueRow.top() + 2); // the upper edge: above the blue row
     QCursor::setPos(list->viewport()->mapToGlobal(from));
 
-    // Once the drag runs its loop: over the blue row in steps, then the release. A guard ends
-    // a drag that never ends (Escape cancels it) so the test fails instead of hanging.
+    // Once the drag runs its loop (the list owns its QDrag then; a tick before that, say while
+    // a loaded machine still delivers the first moves, waits for the next): over the blue row in
+    // steps, then the release. A guard ends a drag that never ends (Escape cancels it) so the
+    // test fails instead of hanging.
     bool dragLoopRan = false;
     QTimer steer;
-    steer.setSingleShot(true);
     QObject::connect(&steer, &QTimer::timeout, [&] {
+        if (!list->findChild<QDrag*>())
+            return;
+        steer.stop();
         dragLoopRan = true;
         for (int i = 1; i <= 4; ++i)
             QTest::mouseMove(window, inWindow(from + (over - from) * i / 4));
