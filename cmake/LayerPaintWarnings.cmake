@@ -6,11 +6,11 @@ function(layerpaint_set_flags target)
     # Debug sections compressed (zlib) in objects, archives and binaries: about half the disk a
     # build with debug info takes; gdb and the sanitizers' symbolizers read them as they are.
     target_compile_options(${target} PRIVATE -gz)
+    target_link_options(${target} PRIVATE -gz)
     # A source file of a unity build is not the main file, so GCC would warn about each class
     # there with a member of a type from that file's anonymous namespace.
-    target_compile_options(${target} PRIVATE
-        $<$<AND:$<CXX_COMPILER_ID:GNU>,$<BOOL:$<TARGET_PROPERTY:UNITY_BUILD>>>:-Wno-subobject-linkage>)
-    target_link_options(${target} PRIVATE -gz)
+    set(unity_gcc $<AND:$<CXX_COMPILER_ID:GNU>,$<BOOL:$<TARGET_PROPERTY:UNITY_BUILD>>>)
+    target_compile_options(${target} PRIVATE $<${unity_gcc}:-Wno-subobject-linkage>)
     if(LAYERPAINT_STRICT)
         target_compile_options(${target} PRIVATE -Werror)
     endif()
