@@ -19,7 +19,7 @@
 #include "core/model/camera.h"
 #include "tests/app/cli_run.h"
 
-namespace {
+namespace cli_gltest {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -490,4 +490,4 @@ TEST(Cli, PickSetsTheBrushToTheSurfaceColourUnderThePoint) {
     EXPECT_FALSE(fs::exists(dir / "miss.glb"));
 }
 
-} // namespace
+} // namespace cli_gltest

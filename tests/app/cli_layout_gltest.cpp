@@ -14,7 +14,7 @@
 #include "core/io/project_file.h"
 #include "tests/app/cli_run.h"
 
-namespace {
+namespace cli_layout_gltest {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -108,4 +108,4 @@ TEST_F(CliLayout, ScriptOperationSetTargetTextureMakesTheLayout) {
     EXPECT_EQ(reopened->uvs, p->mesh.uvs);
 }
 
-} // namespace
+} // namespace cli_layout_gltest

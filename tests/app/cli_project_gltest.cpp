@@ -18,7 +18,7 @@
 #include "core/paint/paint_target.h"
 #include "tests/app/cli_run.h"
 
-namespace {
+namespace cli_project_gltest {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -54,8 +54,6 @@ const json kFirstScript = {
      {{{"op", "set-mode"}, {"layer_aware", false}},
       {{"op", "set-brush"}, {"color", "#ff0000"}, {"radius", 9}, {"hardness", 0.75}},
       {{"op", "stroke"}, {"points", {{120, 100}, {140, 120}, {160, 140}}}}}}};
-
-} // namespace
 
 TEST_F(CliProject, PaintSavesAProjectWithTheScriptsState) {
     writeScript("a.json", kFirstScript);
@@ -258,3 +256,5 @@ TEST_F(CliProject, ExportPerLayerWritesEachPaintLayersChannelsAndMask) {
                              "vertex-colors", "--per-layer"});
     EXPECT_NE(none.exitCode, 0);
 }
+
+} // namespace cli_project_gltest

@@ -13,7 +13,7 @@
 #include "core/io/project_file.h"
 #include "tests/app/cli_run.h"
 
-namespace {
+namespace cli_tips_gltest {
 
 namespace fs = std::filesystem;
 using cli_test::CliRun;
@@ -66,8 +66,6 @@ json spatterBrush(std::uint32_t seed) {
             {"jitter", {{"size", 0.5}, {"opacity", 0.3}, {"angle", 40}, {"scatter", 1.5}}},
             {"seed", seed}};
 }
-
-} // namespace
 
 TEST_F(CliTips, ASpatterStrokeWithJitterReplaysToTheSameBytes) {
     CliRun r;
@@ -140,3 +138,5 @@ TEST_F(CliTips, ABadTipFileIsOneErrorNamingIt) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     }
 }
+
+} // namespace cli_tips_gltest

@@ -16,7 +16,7 @@
 #include "core/model/camera.h"
 #include "tests/app/cli_run.h"
 
-namespace {
+namespace experiment_gltest {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -130,10 +130,6 @@ TEST(PaperExperiments, OneLongStrokePaintsTheHiddenStrandAndNotTheOccluder) {
     EXPECT_EQ(conventional[std::size_t(crossing.hidden)], 0);
 }
 
-} // namespace
-
-namespace {
-
 /** Red texels of the saved texture inside the UV rectangle [origin, origin + size). */
 int redTexelsIn(const core::Mesh& mesh, glm::vec2 origin, float size) {
     if (mesh.textures.empty())
@@ -221,4 +217,4 @@ TEST(PaperExperiments, EachBodyOfTheRowGetsItsMarkFromOneView) {
               8 * *std::min_element(red.begin(), red.end()));
 }
 
-} // namespace
+} // namespace experiment_gltest

@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-namespace {
+namespace translations_test {
 
 struct Message {
     QString context;
@@ -188,4 +188,4 @@ TEST(Translations, EverySourceStringHasAFinishedTranslationInEveryLanguage) {
         << problems.mid(0, 60).join(QLatin1Char('\n')).toStdString();
 }
 
-} // namespace
+} // namespace translations_test

@@ -24,7 +24,7 @@
 #include "render/layer_capture.h"
 #include "render/software_gl.h"
 
-namespace {
+namespace gpu_connectivity_gltest {
 
 using core::ConnectionTest;
 
@@ -497,4 +497,4 @@ TEST_F(GpuConnectivityGlTest, BackendPolicy) {
     }
 }
 
-} // namespace
+} // namespace gpu_connectivity_gltest

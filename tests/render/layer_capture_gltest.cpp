@@ -22,7 +22,7 @@
 #include "render/layer_capture.h"
 #include "render/offscreen_target.h"
 
-namespace {
+namespace layer_capture_gltest {
 
 class LayerCaptureGlTest : public render_test::GlTest {
 protected:
@@ -571,4 +571,4 @@ TEST_F(LayerCaptureGlTest, FailuresAreReported) {
     EXPECT_NE(notReady.error().find("not initialized"), std::string::npos);
 }
 
-} // namespace
+} // namespace layer_capture_gltest

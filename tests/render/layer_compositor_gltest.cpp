@@ -29,7 +29,7 @@
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 
-namespace {
+namespace layer_compositor_gltest {
 
 using core::kNone;
 
@@ -646,4 +646,4 @@ TEST_F(LayerCompositorGlTest, TrefoilAt1280x720MatchesPlainRenderAndTheCpuLookup
     }
 }
 
-} // namespace
+} // namespace layer_compositor_gltest

@@ -20,7 +20,7 @@
 #include "render/layer_compositor.h"
 #include "render/offscreen_target.h"
 
-namespace {
+namespace material_channels_gltest {
 
 constexpr int kWidth = 200;
 constexpr int kHeight = 120;
@@ -160,4 +160,4 @@ TEST_F(MaterialChannelsGlTest, PaintedRoughnessAndMetallicShowInTheirChannelsAnd
     EXPECT_EQ(rgb(material, 100, 30), rgb(before, 100, 30));
 }
 
-} // namespace
+} // namespace material_channels_gltest

@@ -16,7 +16,7 @@
 #include "render/shader_library.h"
 #include "render/software_gl.h"
 
-namespace {
+namespace mesh_renderer_gltest {
 
 using render_test::GlTest;
 
@@ -218,4 +218,4 @@ TEST_F(GlTest, VertexColourUpdatesLookLikeAFreshUpload) {
     EXPECT_EQ(largeDifferences(updated, fresh, 1), 0);
 }
 
-} // namespace
+} // namespace mesh_renderer_gltest

@@ -19,7 +19,7 @@
 #include "core/paint/paint_target.h"
 #include "render/gl_layer_capturer.h"
 
-namespace {
+namespace paint_projection_gltest {
 
 using core::kNone;
 
@@ -230,4 +230,4 @@ TEST_F(PaintProjectionGlTest, PaintingTheSecondLayerShownAloneLeavesTheFrontStra
     EXPECT_EQ(frontChanged, 0u) << "the stroke painted the front strand";
 }
 
-} // namespace
+} // namespace paint_projection_gltest

@@ -22,7 +22,7 @@
 #include "render/layer_compositor.h"
 #include "render/offscreen_target.h"
 
-namespace {
+namespace storage_split_gltest {
 
 constexpr std::size_t kTinyBlock = 64 * 1024;
 
@@ -248,4 +248,4 @@ TEST_F(StorageSplitGlTest, CaptureBeyondEveryChunkIsAClearError) {
     capture.release();
 }
 
-} // namespace
+} // namespace storage_split_gltest

@@ -16,7 +16,7 @@
 #include "core/paint/paint_target.h"
 #include "render/gl_layer_capturer.h"
 
-namespace {
+namespace stroke_line_gltest {
 
 using core_test::addQuad;
 using core_test::pixelView;
@@ -109,4 +109,4 @@ TEST_F(StrokeLineGlTest, ALineFromAHiddenSurfaceRunsBehindTheOccluderOnIt) {
     EXPECT_NE(frontHalf(*doc), front);
 }
 
-} // namespace
+} // namespace stroke_line_gltest

@@ -22,7 +22,7 @@
 #include "core/paint/paint_target.h"
 #include "render/gl_layer_capturer.h"
 
-namespace {
+namespace uv_footprint_gltest {
 
 namespace fs = std::filesystem;
 using core::kNone;
@@ -301,4 +301,4 @@ TEST_F(UvFootprintGlTest, DabOnTheCylinderHeadPaintsTheTexelsUnderTheBrushDisc) 
     EXPECT_GT(painted, inner / 2);
 }
 
-} // namespace
+} // namespace uv_footprint_gltest

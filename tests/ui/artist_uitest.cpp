@@ -47,7 +47,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace artist_uitest {
 
 using namespace ui_test;
 
@@ -629,4 +629,4 @@ TEST_F(ArtistTest, RecentColoursArePersisted) {
     EXPECT_EQ(ui::BrushToolBar::toQColor(document().brush().color), recent.at(1));
 }
 
-} // namespace
+} // namespace artist_uitest

@@ -12,7 +12,7 @@
 
 #include "ui/shell/background_task.h"
 
-namespace {
+namespace background_task_uitest {
 
 constexpr int kWaitMs = 60000;
 
@@ -66,4 +66,4 @@ TEST(BackgroundTaskTest, AJobThatFinishesDespiteCancelSucceeds) {
     EXPECT_EQ(finished.size(), 1);
 }
 
-} // namespace
+} // namespace background_task_uitest

@@ -26,7 +26,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace brush_tips_uitest {
 
 using namespace ui_test;
 
@@ -114,8 +114,6 @@ protected:
     }
 };
 
-} // namespace
-
 TEST_F(BrushTipsTest, AChosenTipPaintsTheStroke) {
     openTrefoil();
     const auto paths = runs();
@@ -160,3 +158,5 @@ TEST_F(BrushTipsTest, AChosenTipPaintsTheStroke) {
     if (viewport()->grabFramebuffer().save(shot))
         std::printf("[ picture ] %s\n", qPrintable(shot));
 }
+
+} // namespace brush_tips_uitest

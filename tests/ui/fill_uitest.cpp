@@ -31,7 +31,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace fill_uitest {
 
 using namespace ui_test;
 
@@ -198,4 +198,4 @@ TEST_F(FillTest, OptionsAreRememberedAndAClickOnTheBackgroundFillsNothing) {
     EXPECT_FALSE(document().history().canUndo());
 }
 
-} // namespace
+} // namespace fill_uitest

@@ -55,7 +55,7 @@
     *out << '"' << text.toStdString() << '"';
 }
 
-namespace {
+namespace first_session_uitest {
 
 using namespace ui_test;
 
@@ -665,4 +665,4 @@ TEST(FirstStart, TheWindowFitsTheScreen) {
     EXPECT_GE(window.width(), std::min(1280, available.width() * 9 / 10) - 1);
 }
 
-} // namespace
+} // namespace first_session_uitest

@@ -25,7 +25,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace framing_uitest {
 
 using namespace ui_test;
 
@@ -243,4 +243,4 @@ TEST_F(FramingTest, SmallestWindowKeepsAUsableViewAndWholeStatusTexts) {
     EXPECT_EQ(layerInfo->property("shownText").toString(), layerInfo->text());
 }
 
-} // namespace
+} // namespace framing_uitest

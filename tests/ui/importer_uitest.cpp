@@ -30,7 +30,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace importer_uitest {
 
 using namespace ui_test;
 
@@ -183,4 +183,4 @@ TEST_F(ImporterTest, AFileThatCrashesTheParserLeavesThePaintedModelAsItWas) {
     EXPECT_EQ(pageBytes(), original);
 }
 
-} // namespace
+} // namespace importer_uitest

@@ -34,7 +34,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace material_uitest {
 
 using namespace ui_test;
 
@@ -195,4 +195,4 @@ TEST_F(MaterialUiTest, GlbExportFromTheGuiHasTheMetallicRoughnessComposite) {
     grabView().save(QDir::current().absoluteFilePath(QStringLiteral("material_uitest.png")));
 }
 
-} // namespace
+} // namespace material_uitest

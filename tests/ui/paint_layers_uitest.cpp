@@ -47,7 +47,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace paint_layers_uitest {
 
 using namespace ui_test;
 using Panel = ui::PaintLayersPanel;
@@ -559,4 +559,4 @@ TEST_F(PaintLayersUiTest, ExportWritesEachPaintLayerAsTheCommandLineDoes) {
     EXPECT_TRUE(wasChecked) << "the box forgot it was ticked";
 }
 
-} // namespace
+} // namespace paint_layers_uitest

@@ -31,7 +31,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace painting_uitest {
 
 using namespace ui_test;
 
@@ -295,4 +295,4 @@ TEST_F(PaintingTest, BrushMapsShowAroundTheStroke) {
     EXPECT_GT(blue, 500);
 }
 
-} // namespace
+} // namespace painting_uitest

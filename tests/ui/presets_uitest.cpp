@@ -24,7 +24,7 @@
 #include "ui/panels/brush_presets_panel.h"
 #include "ui/shell/quick_guide.h"
 
-namespace {
+namespace presets_uitest {
 
 using namespace ui_test;
 
@@ -76,8 +76,6 @@ protected:
         return brush;
     }
 };
-
-} // namespace
 
 TEST_F(PresetsTest, PresetsRoundTripThroughTheSettings) {
     ASSERT_GE(panel()->presets().size(), 8u); // the starter set
@@ -271,3 +269,5 @@ TEST_F(PresetsTest, TheStatusBarHintFollowsTheTool) {
     QTest::keyClick(m_window.get(), Qt::Key_P);
     EXPECT_TRUE(hint->text().contains(QStringLiteral("Ctrl+Shift+click")));
 }
+
+} // namespace presets_uitest

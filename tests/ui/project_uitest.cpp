@@ -42,7 +42,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace project_uitest {
 
 using namespace ui_test;
 
@@ -514,4 +514,4 @@ TEST_F(ProjectTest, ExportsRunOffTheGuiThreadWithProgress) {
     EXPECT_EQ(refused.size(), 1);
 }
 
-} // namespace
+} // namespace project_uitest

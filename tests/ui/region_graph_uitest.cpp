@@ -30,7 +30,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace region_graph_uitest {
 
 using namespace ui_test;
 
@@ -232,4 +232,4 @@ TEST_F(RegionGraphTest, ZoomPanFitFilterHoverAndClickOnTheEngine) {
     }
 }
 
-} // namespace
+} // namespace region_graph_uitest

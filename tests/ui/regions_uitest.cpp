@@ -28,7 +28,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace regions_uitest {
 
 using namespace ui_test;
 
@@ -191,4 +191,4 @@ TEST_F(RegionsTest, OrbitTurnsAboutThePoppedUpSurfacePointUnderTheCursor) {
     EXPECT_NE(viewport()->view().view, before.view);
 }
 
-} // namespace
+} // namespace regions_uitest

@@ -28,7 +28,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace script_uitest {
 
 using namespace ui_test;
 
@@ -178,4 +178,4 @@ TEST_F(ScriptSessionTest, TheHeadlessToolReplaysAGuiSessionToTheSameProject) {
     EXPECT_FALSE(document().history().canUndo());
 }
 
-} // namespace
+} // namespace script_uitest

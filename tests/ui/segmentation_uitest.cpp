@@ -43,7 +43,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace segmentation_uitest {
 
 using namespace ui_test;
 
@@ -475,10 +475,6 @@ TEST_F(SegmentationTest, ThresholdSliderIsLogarithmic) {
     EXPECT_EQ(value->text(), Controls::formatThreshold(0.001f));
 }
 
-} // namespace
-
-namespace {
-
 TEST_F(SegmentationTest, ConnectivityEngineChoiceGivesTheSameRegions) {
     openTrefoil();
     // On a software renderer Automatic means the C++ path.
@@ -501,4 +497,4 @@ TEST_F(SegmentationTest, ConnectivityEngineChoiceGivesTheSameRegions) {
               QStringLiteral("gpu"));
 }
 
-} // namespace
+} // namespace segmentation_uitest

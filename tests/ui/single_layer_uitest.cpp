@@ -21,7 +21,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace single_layer_uitest {
 
 using core::kNone;
 using namespace ui_test;
@@ -124,4 +124,4 @@ TEST(SingleLayerTest, AStrokeInTheLayerTwoViewPaintsLayerTwoNotTheFrontStrand) {
     QSettings().clear();
 }
 
-} // namespace
+} // namespace single_layer_uitest

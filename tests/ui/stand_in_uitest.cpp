@@ -28,7 +28,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace stand_in_uitest {
 
 using namespace ui_test;
 
@@ -240,4 +240,4 @@ TEST_F(StandInTest, TheStandInShowsThePaintLayersAndMaterialAsTheSettledView) {
     }
 }
 
-} // namespace
+} // namespace stand_in_uitest

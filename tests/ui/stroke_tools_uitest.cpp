@@ -31,7 +31,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace stroke_tools_uitest {
 
 using namespace ui_test;
 
@@ -384,4 +384,4 @@ TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {
     EXPECT_TRUE(after.save(shot));
 }
 
-} // namespace
+} // namespace stroke_tools_uitest

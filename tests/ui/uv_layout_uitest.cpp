@@ -28,7 +28,7 @@
 #include "ui/view/layer_builder.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace uv_layout_uitest {
 
 using namespace ui_test;
 
@@ -117,4 +117,4 @@ TEST_F(UvLayoutUiTest, ModelWithoutUvsGetsAnAutomaticLayoutAndTheChoiceIsUndoabl
     EXPECT_TRUE(texture()->mesh().hasUvs());
 }
 
-} // namespace
+} // namespace uv_layout_uitest

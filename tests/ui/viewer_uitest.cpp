@@ -36,7 +36,7 @@
 #include "ui/shell/recent_files.h"
 #include "ui/view/viewport.h"
 
-namespace {
+namespace viewer_uitest {
 
 using namespace ui_test;
 
@@ -557,4 +557,4 @@ TEST(ModelLoaderTest, CancelAndSupersede) {
     QTest::qWait(50);
 }
 
-} // namespace
+} // namespace viewer_uitest

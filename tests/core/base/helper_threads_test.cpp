@@ -10,7 +10,7 @@
 
 #include "core/base/helper_threads.h"
 
-namespace {
+namespace helper_threads_test {
 
 TEST(HelperThreads, EveryPartRunsOnceAndTheHelpersTakeTheirShare) {
     core::HelperThreads helpers(3);
@@ -75,4 +75,4 @@ TEST(HelperThreads, WithoutHelpersTheCallerRunsEveryPart) {
     EXPECT_EQ(order, (std::vector<int>{0, 1, 2}));
 }
 
-} // namespace
+} // namespace helper_threads_test

@@ -8,7 +8,7 @@
 
 #include "core/base/parallel.h"
 
-namespace {
+namespace parallel_test {
 
 TEST(ParallelRanges, EveryItemIsVisitedOnceInContiguousParts) {
     for (unsigned threads : {1u, 2u, 3u, 8u}) {
@@ -42,4 +42,4 @@ TEST(ParallelRanges, AThrowingPartReachesTheCallerAfterTheOthersFinished) {
                  std::runtime_error);
 }
 
-} // namespace
+} // namespace parallel_test

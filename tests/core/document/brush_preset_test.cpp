@@ -8,7 +8,7 @@
 #include "core/document/brush_preset.h"
 #include "core/paint/brush_preview.h"
 
-namespace {
+namespace brush_preset_test {
 
 using nlohmann::json;
 
@@ -108,4 +108,4 @@ TEST(BrushPresetTest, PreviewsShowTheBrushShape) {
     EXPECT_EQ(core::renderBrushPreview(presets[3].brush, 96, 48), previews[3]);
 }
 
-} // namespace
+} // namespace brush_preset_test

@@ -10,7 +10,7 @@
 #include "core/document/document.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace document_order_test {
 
 using core::kNone;
 using core_test::addQuad;
@@ -157,4 +157,4 @@ TEST(DocumentOrder, ThePivotIsThePointOfTheVisibleFragment) {
     EXPECT_FALSE(s.doc.surfacePoint({1.5f, 1.5f}).has_value());
 }
 
-} // namespace
+} // namespace document_order_test

@@ -8,7 +8,7 @@
 #include "core/document/history.h"
 #include "tests/core/fake_tile_store.h"
 
-namespace {
+namespace history_test {
 
 using test::FakeStore;
 
@@ -194,4 +194,4 @@ TEST(History, SquashMakesTheStepsSinceAMarkOne) {
     EXPECT_FALSE(history.squash(mark, core::StepKind::Script));
 }
 
-} // namespace
+} // namespace history_test

@@ -14,7 +14,7 @@
 #include "core/paint/layout_target.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace layout_target_test {
 
 using core_test::pixelView;
 
@@ -191,4 +191,4 @@ TEST(LayoutTarget, DefaultIsATextureWhereVertexColoursWouldBeCoarse) {
     EXPECT_EQ(doc.suggestedPaintTargetKind(), core::PaintTargetKind::VertexColors);
 }
 
-} // namespace
+} // namespace layout_target_test

@@ -15,7 +15,7 @@
 #include "core/paint/paint_target.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace paint_layers_document_test {
 
 constexpr int kWidth = 64, kHeight = 64;
 
@@ -335,4 +335,4 @@ TEST_F(PaintLayersDocumentTest, EightLayersWithAFewStrokesCostLessThanOneFullLay
                 layers, double(layers) / double(full));
 }
 
-} // namespace
+} // namespace paint_layers_document_test

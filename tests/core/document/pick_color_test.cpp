@@ -15,7 +15,7 @@
 #include "core/paint/dab.h"
 #include "core/paint/paint_target.h"
 
-namespace {
+namespace pick_color_test {
 
 /** An orthographic view whose world x, y are window pixels (y down), looking down -Z. */
 core::View pixelView(int width, int height) {
@@ -193,4 +193,4 @@ TEST(PressureCurveTest, MapsPressureByGamma) {
     EXPECT_FLOAT_EQ(extreme.apply(0.5f), std::pow(0.5f, core::PressureCurve::kMaxGamma));
 }
 
-} // namespace
+} // namespace pick_color_test

@@ -10,7 +10,7 @@
 #include "core/document/script.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace script_test {
 
 using core_test::addQuad;
 using core_test::pixelView;
@@ -214,10 +214,6 @@ TEST(Script, RunAllCanBeCancelled) {
     EXPECT_EQ(s.runner.count(), 1u);
 }
 
-} // namespace
-
-namespace {
-
 /** Every byte of every paint layer of a session's texture target, with the shown pages. */
 std::vector<std::uint8_t> layerBytes(core::Document& doc) {
     const auto& target = *dynamic_cast<const core::TextureTarget*>(doc.paintTarget());
@@ -243,8 +239,6 @@ std::vector<std::uint8_t> layerBytes(core::Document& doc) {
     }
     return out;
 }
-
-} // namespace
 
 TEST(Script, PaintLayerOperations) {
     Session s;
@@ -372,3 +366,5 @@ TEST(Script, FillLayerValuesChangeAfterCreationAsOneUndoStep) {
     EXPECT_FALSE(bad.ok());
     EXPECT_NE(bad.error().find("fill layer"), std::string::npos) << bad.error();
 }
+
+} // namespace script_test

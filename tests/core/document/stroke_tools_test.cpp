@@ -13,7 +13,7 @@
 #include "core/document/script.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace stroke_tools_test {
 
 using core_test::addQuad;
 using core_test::pixelView;
@@ -229,4 +229,4 @@ TEST(StrokeTools, AProjectKeepsTheStabilizerSettings) {
     EXPECT_FALSE(warnings.empty());
 }
 
-} // namespace
+} // namespace stroke_tools_test

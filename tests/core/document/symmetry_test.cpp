@@ -18,7 +18,7 @@
 #include "core/document/script_symmetry.h"
 #include "core/paint/symmetry.h"
 
-namespace {
+namespace symmetry_test {
 
 constexpr int kWidth = 320, kHeight = 240, kTexture = 512;
 
@@ -293,4 +293,4 @@ TEST(Symmetry, ScriptSettingsRoundTripAndBadInputIsOneError) {
     EXPECT_FALSE(copy.symmetry.active());
 }
 
-} // namespace
+} // namespace symmetry_test

@@ -15,7 +15,7 @@
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 
-namespace {
+namespace channel_export_test {
 
 using core_test::readFile;
 using core_test::TempDir;
@@ -144,4 +144,4 @@ TEST(ChannelExport, TextureFormatsWriteAnImagePerChannel) {
     EXPECT_EQ(plain->size(), 1u);
 }
 
-} // namespace
+} // namespace channel_export_test

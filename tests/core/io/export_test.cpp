@@ -25,7 +25,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace export_test {
 
 using core_test::TempDir;
 
@@ -124,8 +124,6 @@ core::Image gradient(int width, int height, bool opaque) {
         }
     return img;
 }
-
-} // namespace
 
 TEST(Export, GlbRoundTrip) {
     TempDir dir;
@@ -404,3 +402,5 @@ TEST(Export, FailuresNameTheFile) {
     EXPECT_TRUE(core::parseExportFormat("png16") == core::ExportFormat::Png16);
     EXPECT_FALSE(core::parseExportFormat("bmp").has_value());
 }
+
+} // namespace export_test

@@ -9,7 +9,7 @@
 
 #include "core/io/glb_container.h"
 
-namespace {
+namespace glb_container_test {
 
 using Bytes = std::vector<std::uint8_t>;
 
@@ -87,4 +87,4 @@ TEST(GlbContainer, NamesWhatIsWrong) {
     EXPECT_EQ(core::glb::readContainer(b).errorKind(), core::ErrorKind::BadInput);
 }
 
-} // namespace
+} // namespace glb_container_test

@@ -32,7 +32,7 @@
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-namespace {
+namespace gltf_compression_test {
 
 /** The reference mesh: an n × n grid bent into a wave, with normals and UVs. */
 struct Grid {
@@ -517,4 +517,4 @@ TEST(GltfCompression, DISABLED_WriteDataFiles) {
     writeMeshopt(g, kData / "crashers/glb-meshopt-wrong-count.glb", 6);
 }
 
-} // namespace
+} // namespace gltf_compression_test

@@ -29,7 +29,7 @@
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-namespace {
+namespace gltf_export_test {
 
 using core_test::readFile;
 using core_test::TempDir;
@@ -555,4 +555,4 @@ TEST(GltfExportTest, EncodeGlbMatchesSavedFile) {
     EXPECT_TRUE(core::encodeGlb(bad).ok());
 }
 
-} // namespace
+} // namespace gltf_export_test

@@ -26,7 +26,7 @@
 #include "core/io/mesh_io_in_process.h"
 #include "tests/core/test_files.h"
 
-namespace {
+namespace importer_test {
 
 namespace fs = std::filesystem;
 using core_test::readFile;
@@ -530,4 +530,4 @@ TEST(Importer, TheSandboxAllowsReadingTheModelsFolderOnly) {
     }
 }
 
-} // namespace
+} // namespace importer_test

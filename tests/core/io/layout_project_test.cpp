@@ -15,7 +15,7 @@
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 
-namespace {
+namespace layout_project_test {
 
 using core_test::TempDir;
 
@@ -123,4 +123,4 @@ TEST(LayoutProject, ExportsWriteTheGeneratedUvs) {
     }
 }
 
-} // namespace
+} // namespace layout_project_test

@@ -29,7 +29,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace mesh_io_test {
 
 using core_test::readFile;
 
@@ -1180,4 +1180,4 @@ TEST(DecodeImage, RefusesGarbage) {
     EXPECT_FALSE(img.ok());
 }
 
-} // namespace
+} // namespace mesh_io_test

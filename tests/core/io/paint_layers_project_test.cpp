@@ -23,7 +23,7 @@
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 
-namespace {
+namespace paint_layers_project_test {
 
 using core_test::TempDir;
 using Json = nlohmann::json;
@@ -333,4 +333,4 @@ TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
     EXPECT_EQ(missing.error().rfind(path + ": ", 0), 0u) << missing.error();
 }
 
-} // namespace
+} // namespace paint_layers_project_test

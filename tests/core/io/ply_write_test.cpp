@@ -9,7 +9,7 @@
 
 #include "core/io/ply_write.h"
 
-namespace {
+namespace ply_write_test {
 
 core::Mesh oneTriangle() {
     core::Mesh mesh;
@@ -74,4 +74,4 @@ TEST(PlyWrite, NormalsUvsAndColours) {
     EXPECT_EQ(core::encodePly(noUvs).find("property float s"), std::string::npos);
 }
 
-} // namespace
+} // namespace ply_write_test

@@ -30,7 +30,7 @@
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-namespace {
+namespace project_test {
 
 using core_test::readFile;
 using core_test::TempDir;
@@ -192,8 +192,6 @@ void reopen(const std::string& path, core::Document& doc, core::ProjectState& st
     const core::Status applied = core::applyProjectState(doc, state);
     EXPECT_TRUE(applied.ok()) << applied.error();
 }
-
-} // namespace
 
 TEST(ProjectState, JsonRoundTripKeepsEveryField) {
     const core::ProjectState state = unusualState();
@@ -601,3 +599,5 @@ TEST(Project, FileOpensInOtherGltfTools) {
     EXPECT_EQ(faces, painted.triangleCount());
     EXPECT_GE(scene->mNumTextures + scene->mNumMaterials, 1u);
 }
+
+} // namespace project_test

@@ -29,7 +29,7 @@
 
 namespace fs = std::filesystem;
 
-namespace {
+namespace save_crash_test {
 
 using core_test::readFile;
 
@@ -160,8 +160,6 @@ std::vector<fs::path> temporaries(const fs::path& folder) {
     return out;
 }
 
-} // namespace
-
 TEST(SaveCrash, KilledSavesLeaveTheOldOrTheNewVersionComplete) {
     const save_crash::Version versions[2] = {save_crash::makeVersion(0),
                                              save_crash::makeVersion(1)};
@@ -265,3 +263,5 @@ TEST(SaveCrash, ReadOnlyFolderLeavesTheFileIntactAndSaysSo) {
     EXPECT_FALSE(fs::exists(path + ".bak"));
     EXPECT_TRUE(temporaries(folder).empty());
 }
+
+} // namespace save_crash_test

@@ -9,7 +9,7 @@
 #include "core/model/uv_layout.h"
 #include "tests/core/model/uv_layout_checks.h"
 
-namespace {
+namespace uv_layout_corpus_test {
 
 namespace fs = std::filesystem;
 
@@ -61,4 +61,4 @@ TEST(UvLayoutCorpus, EngineWithoutUvsGetsAValidLayout) {
     EXPECT_EQ(oneThread->mesh.indices, small->mesh.indices);
 }
 
-} // namespace
+} // namespace uv_layout_corpus_test

@@ -21,7 +21,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 
-namespace {
+namespace build_hash_test {
 
 /** FNV-1a over bytes, 64 bit. */
 struct Hash {
@@ -145,4 +145,4 @@ TEST(BuildHash, EngineMatchesTheReference) {
                   0x1c0179edf9bddc30});
 }
 
-} // namespace
+} // namespace build_hash_test

@@ -21,7 +21,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 
-namespace {
+namespace connectivity_test {
 
 using core::ConnectionTest;
 
@@ -571,4 +571,4 @@ TEST(LayerStack, CountsLayers) {
     EXPECT_TRUE(core::LayerStack{}.fragmentsPerLayer().empty());
 }
 
-} // namespace
+} // namespace connectivity_test

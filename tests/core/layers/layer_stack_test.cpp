@@ -8,7 +8,7 @@
 
 #include "core/layers/layer_stack.h"
 
-namespace {
+namespace layer_stack_test {
 
 /** A stack of the given size whose pixel p has counts[p] fragments (depths and ids unused). */
 core::LayerStack stackWith(int width, int height, const std::vector<std::uint32_t>& counts) {
@@ -71,4 +71,4 @@ TEST(LayerStack, RowSpanAgreesWithAScanOnSparseRows) {
     }
 }
 
-} // namespace
+} // namespace layer_stack_test

@@ -20,7 +20,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 
-namespace {
+namespace segmentation_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -386,4 +386,4 @@ TEST(Segmentation, FragmentsBeyondLayer255AreUnlinkedSingletons) {
     EXPECT_NE(seg.region[255], seg.region[n + 255]);
 }
 
-} // namespace
+} // namespace segmentation_test

@@ -10,7 +10,7 @@
 
 #include "core/model/builtin_models.h"
 
-namespace {
+namespace builtin_models_test {
 
 using core::Mesh;
 
@@ -133,8 +133,6 @@ TEST(BuiltinModels, UnknownNameIsAnError) {
     EXPECT_NE(mesh.error().find("builtin:teapot"), std::string::npos);
 }
 
-} // namespace
-
 TEST(BuiltinModels, KnotHasAboutTheTrianglesAskedForAndIsAClosedTube) {
     for (const std::size_t asked : {std::size_t(1000), std::size_t(20000), std::size_t(123457)}) {
         const core::Result<Mesh> knot =
@@ -194,3 +192,5 @@ TEST(BuiltinModels, KnotRejectsBadParametersNamingThem) {
               "not \"99999999999999999999999\"");
     EXPECT_NE(error("knots").find("no such built-in model"), std::string::npos);
 }
+
+} // namespace builtin_models_test

@@ -8,7 +8,7 @@
 
 #include "core/model/camera.h"
 
-namespace {
+namespace camera_test {
 
 core::Bounds unitBox() {
     return {glm::vec3(-0.5f), glm::vec3(0.5f)};
@@ -145,4 +145,4 @@ TEST(Camera, PitchIsClampedShortOfThePoles) {
     EXPECT_FALSE(std::isnan(m[0][0]));
 }
 
-} // namespace
+} // namespace camera_test

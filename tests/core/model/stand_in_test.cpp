@@ -8,7 +8,7 @@
 #include "core/model/builtin_models.h"
 #include "core/model/stand_in.h"
 
-namespace {
+namespace stand_in_test {
 
 using core::Mesh;
 using core::StandIn;
@@ -148,4 +148,4 @@ TEST(StandInTest, ProgressCancels) {
     EXPECT_TRUE(standIn.cancelled());
 }
 
-} // namespace
+} // namespace stand_in_test

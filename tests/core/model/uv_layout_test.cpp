@@ -11,7 +11,7 @@
 #include "core/paint/uv_raster.h"
 #include "tests/core/model/uv_layout_checks.h"
 
-namespace {
+namespace uv_layout_test {
 
 using core::Mesh;
 using core::UvLayout;
@@ -257,4 +257,4 @@ TEST(UvLayout, DegenerateTrianglesKeepTheirPlaceAndCoverNothing) {
     EXPECT_EQ(areaUv(*layout, middle / 3), 0.0);
 }
 
-} // namespace
+} // namespace uv_layout_test

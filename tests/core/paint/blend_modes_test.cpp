@@ -3,7 +3,7 @@
 
 #include "core/paint/blend_modes.h"
 
-namespace {
+namespace blend_modes_test {
 
 using core::blend;
 using core::BlendMode;
@@ -46,4 +46,4 @@ TEST(BlendModes, NamesRoundTripAndUnknownNamesAreRefused) {
     EXPECT_FALSE(core::blendModeFromName("").has_value());
 }
 
-} // namespace
+} // namespace blend_modes_test

@@ -20,7 +20,7 @@
 #include "core/paint/stroke_tracker.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace brush_tips_test {
 
 using core_test::addQuad;
 using core_test::pixelView;
@@ -250,4 +250,4 @@ TEST(BrushTips, UserImagesBecomeAlphaTips) {
     EXPECT_TRUE(core::tipFromRgba(0, 0, {}).alpha.empty());
 }
 
-} // namespace
+} // namespace brush_tips_test

@@ -15,7 +15,7 @@
 #include "core/paint/paint_target.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace composite_update_test {
 
 using core::BlendMode;
 using core::PaintLayerKind;
@@ -305,4 +305,4 @@ TEST_F(CompositeUpdateTest, OneOpaqueLayerOverTheBaseGivesTheFullRecomputesBytes
     EXPECT_GE(m_changed, 4) << "the strokes changed the composite";
 }
 
-} // namespace
+} // namespace composite_update_test

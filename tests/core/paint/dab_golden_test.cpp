@@ -21,7 +21,7 @@
 #include "core/paint/paint_layers.h"
 #include "core/paint/paint_target.h"
 
-namespace {
+namespace dab_golden_test {
 
 constexpr int kWidth = 320, kHeight = 240;
 
@@ -254,4 +254,4 @@ TEST_F(DabGoldenDense, ChalkOnTopOfEightPaintLayers) {
     EXPECT_EQ(run(), kDenseChalkLayers);
 }
 
-} // namespace
+} // namespace dab_golden_test

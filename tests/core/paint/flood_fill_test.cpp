@@ -20,7 +20,7 @@
 #include "core/paint/flood_fill.h"
 #include "core/paint/paint_target.h"
 
-namespace {
+namespace flood_fill_test {
 
 using core::FillMode;
 using core::kNone;
@@ -510,4 +510,4 @@ TEST(FloodFill, OpacityBlendsLikeAStrokeOfThatOpacity) {
         EXPECT_NEAR(got[k], expected[k], 1e-6f);
 }
 
-} // namespace
+} // namespace flood_fill_test

@@ -8,7 +8,7 @@
 
 #include "core/paint/paint_layers.h"
 
-namespace {
+namespace paint_layers_test {
 
 using core::BlendMode;
 using core::PaintChannel;
@@ -458,4 +458,4 @@ TEST(PaintTexel, LanesAreThoseOfTheArithmetic) {
     EXPECT_EQ(kept[1], 100);
 }
 
-} // namespace
+} // namespace paint_layers_test

@@ -20,7 +20,7 @@
 #include "core/paint/undo_tiles.h"
 #include "tests/core/test_scenes.h"
 
-namespace {
+namespace paint_target_test {
 
 using core::kNone;
 using core_test::addQuad;
@@ -759,4 +759,4 @@ TEST_F(TrefoilPaint, LayerTwoDabPaintsTheHiddenStrand) {
     checkDab(*target, dab);
 }
 
-} // namespace
+} // namespace paint_target_test

@@ -14,7 +14,7 @@
 
 #include "core/paint/stroke_stabilizer.h"
 
-namespace {
+namespace stroke_stabilizer_test {
 
 using core::StrokePoint;
 using core::StrokeStabilizer;
@@ -183,4 +183,4 @@ TEST(StrokeStabilizer, NonsenseSettingsAndInputDoNotBreakIt) {
     EXPECT_EQ(tip->position, glm::vec2(9.0f, 5.0f));
 }
 
-} // namespace
+} // namespace stroke_stabilizer_test

@@ -24,7 +24,7 @@
 #include "core/model/mesh_topology.h"
 #include "core/paint/stroke_tracker.h"
 
-namespace {
+namespace stroke_tracker_test {
 
 namespace fs = std::filesystem;
 using core::Dab;
@@ -748,4 +748,4 @@ TEST(StrokeTrefoil, LongStrokeFollowsTheStrandUnderACrossing) {
                 dabs.size(), layer2Fragments, worst);
 }
 
-} // namespace
+} // namespace stroke_tracker_test

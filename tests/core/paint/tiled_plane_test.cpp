@@ -7,7 +7,7 @@
 #include "core/paint/tiled_plane.h"
 #include "core/paint/undo_tiles.h"
 
-namespace {
+namespace tiled_plane_test {
 
 using core::TiledPlane;
 
@@ -54,4 +54,4 @@ TEST(TiledPlane, UndoRestoresBytesAndGivesTheMemoryBack) {
     EXPECT_EQ(plane.tileBytes({0, 99}), 0u);
 }
 
-} // namespace
+} // namespace tiled_plane_test

@@ -7,7 +7,7 @@
 #include "core/paint/undo_tiles.h"
 #include "tests/core/fake_tile_store.h"
 
-namespace {
+namespace undo_tiles_test {
 
 using test::FakeStore;
 
@@ -43,4 +43,4 @@ TEST(TileUndoRecord, AMismatchedStoreIsLeftUntouched) {
     EXPECT_FALSE(record.isUndone());
 }
 
-} // namespace
+} // namespace undo_tiles_test

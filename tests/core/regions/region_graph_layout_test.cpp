@@ -10,7 +10,7 @@
 
 #include "core/regions/region_graph_layout.h"
 
-namespace {
+namespace region_graph_layout_test {
 
 using core::kNone;
 using core::RegionGraphLayout;
@@ -206,4 +206,4 @@ TEST(RegionGraphLayout, EmptyAndBrokenGraphs) {
     EXPECT_TRUE(layout.edges.empty());
 }
 
-} // namespace
+} // namespace region_graph_layout_test

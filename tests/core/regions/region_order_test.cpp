@@ -11,7 +11,7 @@
 #include "core/paint/stroke_tracker.h"
 #include "core/regions/region_order.h"
 
-namespace {
+namespace region_order_test {
 
 using core::kNone;
 using core::RegionOrder;
@@ -223,4 +223,4 @@ TEST(RegionOrderTest, RanksDriveVisibleFragmentLookup) {
     EXPECT_EQ(visible(1), kNone);
 }
 
-} // namespace
+} // namespace region_order_test
