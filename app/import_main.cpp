@@ -31,6 +31,7 @@
 #include <unistd.h>
 
 #include "app/import_sandbox.h"
+#include "core/io/image_codecs.h"
 #include "core/io/import_protocol.h"
 #include "core/io/mesh_io_in_process.h"
 
@@ -75,6 +76,7 @@ void prepareWhileIdle() {
     pollfd pfd{STDIN_FILENO, POLLIN, 0};
     if (::poll(&pfd, 1, 0) != 0)
         return;
+    core::imageCodecs(); // most models have images; its pages are touched below with the rest
     // Blocks up to 32 MiB come from the heap (not fresh mappings) and freed memory stays there.
     ::mallopt(M_MMAP_THRESHOLD, 32 << 20);
     ::mallopt(M_TRIM_THRESHOLD, 512 << 20);
@@ -266,6 +268,9 @@ int main(int argc, char** argv) {
 
     importer::SandboxOptions sandbox;
     sandbox.readable = readablePaths(o);
+    // The image codecs module is loaded on the first image (its libraries are readable anyway).
+    if (const core::Result<std::string> codecs = core::findImageCodecs())
+        sandbox.readable.push_back(*codecs);
     sandbox.maxSeconds = core::detail::importSeconds(o.file, o.limits);
     const importer::SandboxReport report = importer::applySandbox(sandbox);
     if (o.probe) {

@@ -108,6 +108,8 @@ echo "seeds: $seeds model files, $(ls "$work/seeds-project" | wc -l) project inp
 # Allocations beyond 3 GiB fail the same way everywhere (not by what the machine can map).
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=3072
 export UBSAN_OPTIONS=print_stacktrace=1
+# The targets decode images in process, through the image codecs module of the fuzz build.
+export LAYERPAINT_IMAGE_CODECS=$PWD/build/fuzz/app/layerpaint-image-codecs.so
 if [[ -n $runs ]]; then
     seed=1
     echo "seeds from $seed, $runs runs per target"

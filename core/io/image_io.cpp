@@ -1,23 +1,21 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Image decoding through OpenImageIO, from memory or from a file.
+// Image decoding (through the image codecs module, image_codecs.h), from memory or from a file.
 #include <algorithm>
 #include <array>
 #include <cctype>
 #include <cstdint>
 #include <cstring>
-#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
-
 #include "core/base/text.h"
 #include "core/io/gltf_export.h"
+#include "core/io/image_codecs.h"
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_io_in_process.h"
 
@@ -122,98 +120,6 @@ Status checkPngChunks(const std::uint8_t* data, std::size_t size) {
     }
 }
 
-std::string oneLine(std::string s) {
-    std::replace(s.begin(), s.end(), '\n', ' ');
-    std::replace(s.begin(), s.end(), '\r', ' ');
-    while (!s.empty() && s.back() == ' ')
-        s.pop_back();
-    return s;
-}
-
-Result<Image> decode(const std::uint8_t* data, std::size_t size, const std::string& label,
-                     const std::string& name, const LoadLimits& limits) {
-    const std::string format = formatName(data, size, name);
-    if (format.empty())
-        return Error{label + ": unknown image format", ErrorKind::Unsupported};
-    if (format == "png")
-        if (Status checked = checkPngChunks(data, size); !checked)
-            return Error{label + ": " + checked.error(), checked.errorKind()};
-
-    OIIO::Filesystem::IOMemReader proxy(data, size);
-    OIIO::ImageSpec config;
-    // PNG and TGA alpha stays straight (not premultiplied), as glTF expects.
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    auto in = OIIO::ImageInput::create(format, false, &config, &proxy);
-    if (!in) {
-        OIIO::geterror(); // clear the pending message
-        return Error{label + ": no decoder for " + format + " images"};
-    }
-    if (!in->supports("ioproxy"))
-        return Error{label + ": the " + format + " decoder cannot read from memory"};
-    // Both ways of handing over the proxy: create() only keeps it when it opens the file itself.
-    in->set_ioproxy(&proxy);
-    void* proxyPtr = &proxy;
-    config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxyPtr);
-    // The reader reads through the proxy; the name only appears in its messages.
-    OIIO::ImageSpec spec;
-    if (!in->open("memory." + format, spec, config)) {
-        const std::string why = oneLine(in->geterror());
-        return Error{label + ": cannot decode the " + format + " image" +
-                     (why.empty() ? std::string() : " (" + why + ")")};
-    }
-    const std::int64_t w = spec.width, h = spec.height;
-    // Only the first four channels matter (RGBA or grey + alpha); reading fewer saves memory.
-    const std::int64_t channels = std::min(spec.nchannels, 4);
-    if (w <= 0 || h <= 0 || channels <= 0 || spec.depth > 1) {
-        in->close();
-        return Error{label + ": the image has an invalid size"};
-    }
-    // Check before allocating: a hostile header can claim any size.
-    if (static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) > limits.maxImagePixels ||
-        w > 65536 || h > 65536) {
-        in->close();
-        return Error{label + ": the image is too large (" + std::to_string(w) + " x " +
-                     std::to_string(h) + " pixels)"};
-    }
-    std::vector<std::uint8_t> pixels(static_cast<std::size_t>(w * h * channels));
-    if (!in->read_image(0, 0, 0, static_cast<int>(channels), OIIO::TypeDesc::UINT8,
-                        pixels.data())) {
-        const std::string why = oneLine(in->geterror());
-        in->close();
-        return Error{label + ": cannot decode the " + format + " image" +
-                     (why.empty() ? std::string() : " (" + why + ")")};
-    }
-    in->close();
-
-    // Grey(+alpha) expands to RGB(+alpha); missing alpha becomes opaque.
-    Image img;
-    img.width = static_cast<int>(w);
-    img.height = static_cast<int>(h);
-    img.rgba.resize(static_cast<std::size_t>(w * h * 4));
-    // Alpha is the channel the reader names so; a fourth channel of another name is not alpha.
-    std::int64_t alphaChannel = spec.alpha_channel;
-    if (alphaChannel < 0 || alphaChannel >= channels) {
-        alphaChannel = -1;
-        for (std::int64_t c = 0; c < channels && c < std::ssize(spec.channelnames); ++c)
-            if (spec.channelnames[static_cast<std::size_t>(c)] == "A")
-                alphaChannel = c;
-    }
-    const std::size_t n = static_cast<std::size_t>(w * h);
-    for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* src = &pixels[i * static_cast<std::size_t>(channels)];
-        std::uint8_t* dst = &img.rgba[i * 4];
-        if (channels >= 3) {
-            dst[0] = src[0];
-            dst[1] = src[1];
-            dst[2] = src[2];
-        } else {
-            dst[0] = dst[1] = dst[2] = src[0];
-        }
-        dst[3] = alphaChannel >= 0 ? src[alphaChannel] : 255;
-    }
-    return img;
-}
-
 } // namespace
 
 Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std::string& name,
@@ -221,13 +127,16 @@ Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std:
     const std::string label = name.empty() ? std::string("image") : name;
     if (data == nullptr || size == 0)
         return Error{label + ": the image is empty"};
-    try {
-        return decode(data, size, label, name, limits);
-    } catch (const std::exception& e) {
-        return Error{label + ": cannot decode the image (" + oneLine(e.what()) + ")"};
-    } catch (...) {
-        return Error{label + ": cannot decode the image"};
-    }
+    const std::string format = formatName(data, size, name);
+    if (format.empty())
+        return Error{label + ": unknown image format", ErrorKind::Unsupported};
+    if (format == "png")
+        if (Status checked = checkPngChunks(data, size); !checked)
+            return Error{label + ": " + checked.error(), checked.errorKind()};
+    Result<const ImageCodecs*> codecs = imageCodecs();
+    if (!codecs)
+        return Error{label + ": " + codecs.error()};
+    return (*codecs)->decode(data, size, label, format, limits);
 }
 
 Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits) {

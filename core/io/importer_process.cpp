@@ -34,15 +34,10 @@
 #include "core/io/import_protocol.h"
 #include "core/io/mesh_io.h"
 #include "core/io/mesh_io_in_process.h"
+#include "core/io/program_files.h"
 #include "core/model/builtin_models.h"
 
 extern char** environ;
-
-// Where the importer is installed, relative to the folder of the programs (set by CMake from
-// the install directories).
-#ifndef LAYERPAINT_LIBEXEC_FROM_BIN
-#define LAYERPAINT_LIBEXEC_FROM_BIN "../libexec"
-#endif
 
 namespace core {
 
@@ -57,36 +52,9 @@ constexpr const char* kImporterStderrVariable = "LAYERPAINT_IMPORTER_STDERR";
 /** How often cancel and the deadline are checked while waiting for the importer. */
 constexpr auto kCheckInterval = std::chrono::milliseconds(100);
 
-bool executable(const fs::path& path) {
-    std::error_code ec;
-    return fs::is_regular_file(path, ec) && ::access(path.c_str(), X_OK) == 0;
-}
-
 /** The importer program, or the problem (where it was looked for). */
 Result<std::string> findImporter() {
-    if (const char* configured = std::getenv(kImporterVariable);
-        configured != nullptr && *configured != '\0') {
-        if (executable(configured))
-            return std::string(configured);
-        return Error{std::string("the importer program ") + configured + " (set in " +
-                     kImporterVariable + ") does not exist or cannot be run"};
-    }
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (ec)
-        return Error{std::string("the importer program ") + kImporterName +
-                     " cannot be found (the running program's folder is unknown; set " +
-                     kImporterVariable + " to its path)"};
-    const fs::path beside = self.parent_path() / kImporterName;
-    const fs::path installed =
-        (self.parent_path() / LAYERPAINT_LIBEXEC_FROM_BIN / "layerpaint" / kImporterName)
-            .lexically_normal();
-    for (const fs::path& candidate : {beside, installed})
-        if (executable(candidate))
-            return candidate.string();
-    return Error{std::string("the importer program ") + kImporterName + " is missing (looked for " +
-                 beside.string() + " and " + installed.string() + "; set " + kImporterVariable +
-                 " to its path)"};
+    return findProgramFile(kImporterName, kImporterVariable, "the importer program", true);
 }
 
 std::string signalName(int sig) {

@@ -79,6 +79,7 @@ endforeach()
 # Files, under /usr.
 execute_process(COMMAND "${DPKG_DEB}" --contents "${deb}" OUTPUT_VARIABLE contents)
 foreach(file bin/layerpaint bin/layerpaint-cli libexec/layerpaint/layerpaint-import
+        libexec/layerpaint/layerpaint-image-codecs.so
         share/applications/${id}.desktop share/metainfo/${id}.metainfo.xml
         share/icons/hicolor/scalable/apps/${id}.svg share/doc/layerpaint/copyright
         share/doc/layerpaint/changelog.gz share/man/man1/layerpaint.1.gz
@@ -108,11 +109,11 @@ if(NOT changelog MATCHES "^layerpaint \\(${VERSION}\\) ")
     fail("the changelog's latest entry is not ${VERSION} (add one to data/debian/changelog)")
 endif()
 
-# Runs a program of the unpacked root in a clean environment: no display, no importer from the
-# build tree, settings in the work folder; the output goes to out.
+# Runs a program of the unpacked root in a clean environment: no display, no importer or image
+# codecs from the build tree, settings in the work folder; the output goes to out.
 function(run out language program)
     execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY
-        --unset=LAYERPAINT_IMPORTER --unset=LC_ALL --unset=LC_MESSAGES QT_QPA_PLATFORM=offscreen
+        --unset=LAYERPAINT_IMPORTER --unset=LAYERPAINT_IMAGE_CODECS --unset=LC_ALL --unset=LC_MESSAGES QT_QPA_PLATFORM=offscreen
         "XDG_CONFIG_HOME=${WORK}/config" "LANG=${language}" "LANGUAGE="
         "${root}/usr/bin/${program}" ${ARGN}
         RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
@@ -140,6 +141,11 @@ file(WRITE "${WORK}/triangle.obj" "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
 run(output C layerpaint-cli info "${WORK}/triangle.obj")
 if(NOT output MATCHES "\"triangles\": 1")
     fail("the packaged layerpaint-cli cannot load a model: ${output}")
+endif()
+# Images go through the image codecs module, found the same way.
+run(output C layerpaint-cli export builtin:trefoil --out "${WORK}/paint.png")
+if(NOT EXISTS "${WORK}/paint.png")
+    fail("the packaged layerpaint-cli cannot write an image: ${output}")
 endif()
 
 # Every Depends resolves on this system (a simulation: nothing is installed).

@@ -20,6 +20,7 @@ if(NOT result EQUAL 0)
 endif()
 
 foreach(file bin/layerpaint bin/layerpaint-cli ${LIBEXECDIR}/layerpaint/layerpaint-import
+        ${LIBEXECDIR}/layerpaint/layerpaint-image-codecs.so
         share/applications/${id}.desktop
         share/metainfo/${id}.metainfo.xml share/icons/hicolor/scalable/apps/${id}.svg)
     if(NOT EXISTS "${PREFIX}/${file}")
@@ -35,6 +36,13 @@ execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=LAYERPAINT_IMPORTER
     RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
 if(NOT result EQUAL 0 OR NOT output MATCHES "\"triangles\": 1")
     fail("the installed layerpaint-cli cannot load a model (${result}): ${output}${error}")
+endif()
+# Images go through the image codecs module, found the same way.
+execute_process(COMMAND "${CMAKE_COMMAND}" -E env --unset=LAYERPAINT_IMAGE_CODECS
+    "${PREFIX}/bin/layerpaint-cli" export builtin:trefoil --out "${PREFIX}/paint.png"
+    RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+if(NOT result EQUAL 0 OR NOT EXISTS "${PREFIX}/paint.png")
+    fail("the installed layerpaint-cli cannot write an image (${result}): ${output}${error}")
 endif()
 
 # The metainfo carries this version; the desktop entry starts the installed program.

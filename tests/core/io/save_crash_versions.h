@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The two project versions the save-crash test and its helper write: the same small trefoil with
-// a 1024² texture of noise (so encoding and writing take a while) that differs per version.
+// a 512² texture of noise (so encoding and writing take a while) that differs per version.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ inline Version makeVersion(int which) {
     Version v;
     v.mesh = core::makeTrefoil(40, 12);
     core::Image page;
-    page.width = page.height = 1024;
+    page.width = page.height = 512;
     page.rgba.resize(std::size_t(page.width) * std::size_t(page.height) * 4);
     std::uint32_t x = 0x9E3779B9u * std::uint32_t(which + 1);
     for (std::size_t i = 0; i < page.rgba.size(); i += 4) {
