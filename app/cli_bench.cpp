@@ -428,11 +428,11 @@ int runBench(const BenchArgs& args) {
                       {"results", results}};
     if (!args.jsonOut.empty()) {
         std::ofstream file(args.jsonOut);
-        file << out.dump(2) << '\n';
+        file << jsonText(out, 2) << '\n';
         if (!file)
             return fail(args.jsonOut + ": write failed");
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << jsonText(out, 2) << '\n';
     return 0;
 }
 

@@ -118,7 +118,7 @@ int runBenchLoad(const std::vector<std::string>& models, int runs) {
              {"importer_extra_percent_of_open",
               100.0 * median(extraMs[i]) / (median(paused[i]) + setUp[i])}});
     }
-    std::cout << out.dump(2) << '\n';
+    std::cout << jsonText(out, 2) << '\n';
     return 0;
 }
 

@@ -122,6 +122,10 @@ core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& 
     return camera;
 }
 
+std::string jsonText(const json& value, int indent) {
+    return value.dump(indent, ' ', false, json::error_handler_t::replace);
+}
+
 namespace {
 
 /** Writes the flattened triangles in triangle-id order as binary little-endian PLY. */
@@ -136,7 +140,7 @@ core::Status writePly(const std::string& path, const core::Mesh& mesh) {
 
 core::Status writeJson(const std::string& path, const json& value) {
     std::ofstream out(path);
-    out << value.dump(1) << '\n';
+    out << jsonText(value, 1) << '\n';
     out.close();
     if (!out)
         return core::Error{path + ": write failed"};
@@ -220,7 +224,7 @@ int runInfo(const std::string& model) {
         {"materials", materials},
         {"warnings", mesh->warnings},
     };
-    std::cout << out.dump(2) << '\n';
+    std::cout << jsonText(out, 2) << '\n';
     return 0;
 }
 
@@ -369,7 +373,7 @@ int runLayers(const LayersArgs& args) {
         return fail(s.error());
     if (const core::Status s = writeJson((dir / "summary.json").string(), summary); !s)
         return fail(s.error());
-    std::cout << summary.dump(1) << '\n';
+    std::cout << jsonText(summary, 1) << '\n';
     return 0;
 }
 

@@ -84,6 +84,12 @@ makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 int fail(const std::string& message);
 
 /**
+ * value as the CLI prints it; bytes that are not UTF-8 (a file's material or texture names can
+ * hold any) become U+FFFD, where dump() would throw.
+ */
+std::string jsonText(const nlohmann::json& value, int indent);
+
+/**
  * The command line's --target ("texture", "vertex-colors" or empty: unchanged) and --resolution
  * (0: unchanged) applied to options.
  */

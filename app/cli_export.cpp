@@ -104,7 +104,7 @@ int runExport(const ExportArgs& args) {
                                 {"files", *files},
                                 {"load_ms", loadMs},
                                 {"export_ms", msSince(exportStart)}};
-    std::cout << out.dump(2) << '\n';
+    std::cout << jsonText(out, 2) << '\n';
     return 0;
 }
 

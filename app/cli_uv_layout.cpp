@@ -118,10 +118,10 @@ int runUvLayout(const UvLayoutArgs& args) {
         {"load_seconds", loadSeconds},
         {"layout_seconds", seconds},
     };
-    std::cout << out.dump(2) << '\n';
+    std::cout << jsonText(out, 2) << '\n';
     if (!args.jsonOut.empty()) {
         std::ofstream file(args.jsonOut, std::ios::trunc);
-        file << out.dump(2) << '\n';
+        file << jsonText(out, 2) << '\n';
         if (!file.flush())
             return fail(args.jsonOut + ": cannot write the file");
     }

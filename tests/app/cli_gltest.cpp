@@ -87,6 +87,20 @@ TEST(Cli, BadInputIsOneLineOnStderrAndAFailureCode) {
     EXPECT_NE(badSize.err.find("--size"), std::string::npos);
 }
 
+/** A file's names may hold any bytes; info still prints JSON (found by the fuzz run). */
+TEST(Cli, InfoPrintsJsonForNamesThatAreNotUtf8) {
+    const fs::path obj = fs::temp_directory_path() / "layerpaint cli latin1.obj";
+    std::ofstream(obj) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl T\xffim\nf 1 2 3\n";
+    const CliRun run = runCli({"info", obj.string()});
+    fs::remove(obj);
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json info = json::parse(run.out);
+    bool replaced = false;
+    for (const json& material : info["materials"])
+        replaced = replaced || material["name"] == "T\xef\xbf\xbdim"; // U+FFFD for the byte
+    EXPECT_TRUE(replaced) << run.out;
+}
+
 /** The OFF file that crashes Assimp 5.2: the importer process stops, the CLI reports it. */
 TEST(Cli, AFileThatCrashesTheParserIsAnErrorNotACrash) {
     const std::string crasher = std::string(LAYERPAINT_TEST_DATA) + "/crashers/off-assimp-segv.off";
