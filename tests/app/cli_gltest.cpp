@@ -27,9 +27,25 @@ using nlohmann::json;
 using cli_test::CliRun;
 using cli_test::readFile;
 
+/** The folder of this test process for the CLI's output. */
+fs::path outputFolder() {
+    return fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
+}
+
+/** Removes the output folder when the process's tests are done. */
+class OutputFolderCleanup : public testing::Environment {
+public:
+    void TearDown() override {
+        std::error_code ec;
+        fs::remove_all(outputFolder(), ec);
+    }
+};
+[[maybe_unused]] testing::Environment* const kCleanup =
+    testing::AddGlobalTestEnvironment(new OutputFolderCleanup);
+
 /** Runs layerpaint-cli with arguments, its output kept in a folder of this test process. */
 CliRun runCli(const std::vector<std::string>& args) {
-    const fs::path dir = fs::temp_directory_path() / ("lpcli_" + std::to_string(::getpid()));
+    const fs::path dir = outputFolder();
     fs::create_directories(dir);
     return cli_test::runCli(args, dir);
 }
