@@ -125,6 +125,7 @@ OIIO::TypeDesc typeDesc(PixelType type) {
     }
     return OIIO::TypeDesc::UNKNOWN;
 }
+
 struct OiioProgress {
     const ProgressFn* progress = nullptr;
     bool cancelled = false;
