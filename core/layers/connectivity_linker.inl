@@ -148,17 +148,15 @@ private:
                 if (!curLoaded)
                     load<kSurface>(*cur, p);
                 const float px = float(x) + 0.5f, py = float(y) + 0.5f;
-                Ray rayP{};
-                if constexpr (kSurface)
-                    setRay(m_rays, px, py, rayP);
+                LazyRay rayP{m_rays, px, py}; // shared by both pairs, made if one needs it
                 if (y + 1 < h && m_stack.layerCount(p + std::size_t(w)) != 0) {
                     load<kSurface>(*down, p + std::size_t(w));
-                    pair<kSurface>(*cur, *down, rayP, px, py, 0.0f, 1.0f, kDown, kUp);
+                    pair<kSurface>(*cur, *down, rayP, 0.0f, 1.0f, kDown, kUp);
                 }
                 curLoaded = false;
                 if (x + 1 < w && m_stack.layerCount(p + 1) != 0) {
                     load<kSurface>(*next, p + 1);
-                    pair<kSurface>(*cur, *next, rayP, px, py, 1.0f, 0.0f, kRight, kLeft);
+                    pair<kSurface>(*cur, *next, rayP, 1.0f, 0.0f, kRight, kLeft);
                     std::swap(cur, next);
                     curLoaded = true;
                 }
@@ -187,10 +185,35 @@ private:
         }
     }
 
-    /** The rays of one pixel pair and the lazily computed plane depths on them. */
+    /**
+     * The ray through one window position, set on first use: most pairs need only the midpoint
+     * ray (their depths there decide), the pixels' own rays only for the crease and arc tests.
+     */
+    class LazyRay {
+    public:
+        LazyRay(const PixelRays4& rays, float x, float y) : m_rays(rays), m_x(x), m_y(y) {}
+        const Ray& get() {
+            if (!m_set) {
+                setRay(m_rays, m_x, m_y, m_ray);
+                m_set = true;
+            }
+            return m_ray;
+        }
+        float x() const { return m_x; }
+        float y() const { return m_y; }
+
+    private:
+        const PixelRays4& m_rays;
+        float m_x, m_y;
+        bool m_set = false;
+        Ray m_ray{};
+    };
+
+    /** The rays of one pixel pair: P's and Q's (made on first use) and their midpoint's. */
     struct PairRays {
-        const Ray& p;
-        Ray q, m;
+        LazyRay& p;
+        LazyRay q;
+        Ray m;
     };
 
     /**
@@ -198,7 +221,7 @@ private:
      * fails. Symmetric in (a, i) and (b, j) up to swapping P and Q.
      */
     [[gnu::always_inline]] float score(const Side& a, std::uint32_t i, const Side& b,
-                                       std::uint32_t j, const PairRays& rays) {
+                                       std::uint32_t j, PairRays& rays) {
         const SurfaceTriangle* ta = a.info[i];
         const SurfaceTriangle* tb = b.info[j];
         if (ta && tb) {
@@ -221,8 +244,8 @@ private:
                     // The planes' depth difference along P→Q keeps its sign except at one
                     // point (1/depth is affine on screen), so a sign change means their line of
                     // intersection passes between the pixel centres.
-                    const float bAtP = m_atP.get(b, j, rays.p, m_stamp);
-                    const float aAtQ = m_atQ.get(a, i, rays.q, m_stamp);
+                    const float bAtP = m_atP.get(b, j, rays.p.get(), m_stamp);
+                    const float aAtQ = m_atQ.get(a, i, rays.q.get(), m_stamp);
                     const bool cross = bAtP > 0.0f && aAtQ > 0.0f &&
                                        (a.depth[i] - bAtP) * (aAtQ - b.depth[j]) <= 0.0f;
                     if (crease && cross)
@@ -317,7 +340,7 @@ private:
 
     /** score() for fragments with known triangles of different mesh parts. */
     float contactScore(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
-                       const PairRays& rays) {
+                       PairRays& rays) {
         const float za = m_midA.get(a, i, rays.m, m_stamp);
         const float zb = m_midB.get(b, j, rays.m, m_stamp);
         const float error = !std::isnan(za) && !std::isnan(zb) ? std::abs(za - zb)
@@ -333,12 +356,14 @@ private:
      * angle). Two unrelated sheets fail by a factor of about 2 even when one is seen edge-on, and
      * parallel sheets by their gap. Returns the larger distance, or kFail.
      */
-    float arcError(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j,
-                   const PairRays& rays, float cosine, float slack) const {
+    float arcError(const Side& a, std::uint32_t i, const Side& b, std::uint32_t j, PairRays& rays,
+                   float cosine, float slack) const {
         const glm::vec4& planeA = a.info[i]->plane;
         const glm::vec4& planeB = b.info[j]->plane;
-        const glm::vec3 pointA = rays.p.origin + a.depth[i] * rays.p.direction;
-        const glm::vec3 pointB = rays.q.origin + b.depth[j] * rays.q.direction;
+        const Ray& p = rays.p.get();
+        const Ray& q = rays.q.get();
+        const glm::vec3 pointA = p.origin + a.depth[i] * p.direction;
+        const glm::vec3 pointB = q.origin + b.depth[j] * q.direction;
         const float chord = glm::length(pointB - pointA);
         const float sinHalf = std::sqrt(std::max(0.0f, 0.5f * (1.0f - cosine)));
         const float bound = slack * chord * sinHalf + m_limit;
@@ -368,8 +393,7 @@ private:
     }
 
     template <bool kSurface>
-    void pair(Side& a, Side& b, const Ray& rayP, float px, float py, float dx, float dy,
-              int forward, int backward) {
+    void pair(Side& a, Side& b, LazyRay& rayP, float dx, float dy, int forward, int backward) {
         std::uint8_t* links = m_out.links.data();
         const bool single = a.count == 1 && b.count == 1;
         if constexpr (kSurface) {
@@ -380,9 +404,9 @@ private:
                 return;
             }
         }
-        PairRays rays{rayP, {}, {}};
+        const float px = rayP.x(), py = rayP.y();
+        PairRays rays{rayP, LazyRay(m_rays, px + dx, py + dy), {}};
         if constexpr (kSurface) {
-            setRay(m_rays, px + dx, py + dy, rays.q);
             setRay(m_rays, px + 0.5f * dx, py + 0.5f * dy, rays.m);
             if (++m_stamp == 0) { // wrapped: forget every stamp
                 for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ})
@@ -427,21 +451,20 @@ private:
      * then deepScores() for all fragment pairs, kLanes at a time; score() only for what it
      * leaves.
      */
-    [[gnu::noinline]] void deepPair(Side& a, Side& b, const PairRays& rays, int forward,
-                                    int backward) {
+    [[gnu::noinline]] void deepPair(Side& a, Side& b, PairRays& rays, int forward, int backward) {
         pack(a);
         pack(b);
         fill(m_midA, a, rays.m);
         fill(m_midB, b, rays.m);
-        fill(m_atQ, a, rays.q);
-        fill(m_atP, b, rays.p);
+        fill(m_atQ, a, rays.q.get());
+        fill(m_atP, b, rays.p.get());
         link(a, b, forward, backward,
              [&](std::uint32_t i, auto&& take) { deepRow(a, i, b, rays, take); });
     }
 
     /** deepPair()'s scores of a's fragment i with each of b's, given to take(j, score). */
     template <typename Take>
-    void deepRow(const Side& a, std::uint32_t i, const Side& b, const PairRays& rays, Take& take) {
+    void deepRow(const Side& a, std::uint32_t i, const Side& b, PairRays& rays, Take& take) {
         for (std::uint32_t j0 = 0; j0 < b.count; j0 += kLanes) {
             const Scores known = deepScores(a, i, b, j0);
             const unsigned inside = lanesOf(b.count, j0);
