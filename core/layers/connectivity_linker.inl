@@ -51,9 +51,12 @@ template <typename V, typename T> V loadLanes(const T* p) {
     return v;
 }
 
-/** One of 32 bits for a corner id (a multiplicative hash), for a quick test of shared corners. */
+/**
+ * One of 32 bits for a corner id (its low five bits: the corners of nearby triangles have nearby
+ * ids), for a quick test of shared corners.
+ */
 inline std::uint32_t cornerBit(std::uint32_t corner) {
-    return 1u << ((corner * 2654435761u) >> 27);
+    return 1u << (corner & 31u);
 }
 
 /** The lanes of the group from j0 on that hold one of count fragments. */
@@ -85,14 +88,15 @@ struct Side {
 /**
  * Plane depths of one side's fragments on one ray, computed on first use within a pixel pair
  * (most pairs never need them: same triangle, or another mesh part). A value is valid while its
- * stamp equals the pair's.
+ * stamp, or the stamp of all values, equals the pair's.
  */
 struct LazyDepths {
     float value[kSideRoom] = {};
     std::uint32_t stamp[kMaxLinkedLayers] = {};
+    std::uint32_t all = 0; // the pair for which every fragment's value was computed at once
 
     float get(const Side& side, std::uint32_t k, const Ray& ray, std::uint32_t now) {
-        if (stamp[k] != now) {
+        if (all != now && stamp[k] != now) {
             stamp[k] = now;
             value[k] = planeDepth(side.info[k]->plane, ray);
         }
@@ -170,11 +174,13 @@ private:
         m_truncated = m_truncated || layers > kMaxLinkedLayers;
         side.count = std::min(layers, kMaxLinkedLayers);
         const float* depth = m_stack.depth.data() + side.first;
-        std::copy_n(depth, side.count, side.depth);
         if constexpr (kSurface) {
             const std::uint32_t* triangle = m_stack.triangle.data() + side.first;
             const std::uint32_t* entries = m_fragmentEntry ? m_fragmentEntry + side.first : nullptr;
+            // Depths copied in this loop: most pixels hold one or two fragments, for which a
+            // call of memcpy costs more than the copy.
             for (std::uint32_t k = 0; k < side.count; ++k) {
+                side.depth[k] = depth[k];
                 side.triangle[k] = triangle[k];
                 const SurfaceTriangle* info =
                     entries ? m_geometry->atEntry(entries[k]) : m_geometry->find(triangle[k]);
@@ -182,6 +188,8 @@ private:
                 side.component[k] = info ? info->component : kNone;
             }
             side.packed = false;
+        } else {
+            std::copy_n(depth, side.count, side.depth);
         }
     }
 
@@ -409,8 +417,10 @@ private:
         if constexpr (kSurface) {
             setRay(m_rays, px + 0.5f * dx, py + 0.5f * dy, rays.m);
             if (++m_stamp == 0) { // wrapped: forget every stamp
-                for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ})
+                for (LazyDepths* lazy : {&m_midA, &m_midB, &m_atP, &m_atQ}) {
                     std::fill_n(lazy->stamp, kMaxLinkedLayers, 0u);
+                    lazy->all = 0;
+                }
                 m_stamp = 1;
             }
         }
@@ -522,16 +532,18 @@ private:
         if (side.packed)
             return;
         side.packed = true;
+        static const SurfaceTriangle unknown{}; // a zero plane, no corners
         for (std::uint32_t k = 0; k < side.count; ++k) {
-            const SurfaceTriangle* info = side.info[k];
+            const SurfaceTriangle& info = side.info[k] ? *side.info[k] : unknown;
             for (int c = 0; c < 4; ++c)
-                side.plane[c][k] = info ? info->plane[c] : 0.0f;
-            std::uint32_t bits = 0;
-            for (int c = 0; c < 3; ++c) {
-                side.corner[c][k] = info ? info->corners[std::size_t(c)] : kNone;
-                bits |= cornerBit(side.corner[c][k]);
-            }
-            side.cornerBits[k] = side.corner[0][k] != kNone ? bits : 0u;
+                side.plane[c][k] = info.plane[c];
+            const auto& corners = info.corners;
+            for (int c = 0; c < 3; ++c)
+                side.corner[c][k] = corners[std::size_t(c)];
+            side.cornerBits[k] =
+                corners[0] != kNone
+                    ? cornerBit(corners[0]) | cornerBit(corners[1]) | cornerBit(corners[2])
+                    : 0u;
         }
     }
 
@@ -553,7 +565,7 @@ private:
             const FloatsN value = selectN(denom * denom >= minDenom2, depth, nan);
             std::memcpy(lazy.value + k, &value, sizeof value);
         }
-        std::fill_n(lazy.stamp, side.count, m_stamp);
+        lazy.all = m_stamp;
     }
 
     float plainScore(float za, float zb) const {
