@@ -88,11 +88,17 @@ void GlCapture(benchmark::State& state) {
         state.SkipWithError(warm.error().c_str());
         return;
     }
+    double gpuMs = 0.0, resolveMs = 0.0;
     for (auto _ : state) {
         auto stack = capturer.capture(s.view, true, &stats);
         benchmark::DoNotOptimize(stack->depth.data());
+        gpuMs += stats.gpuMs;
+        resolveMs += stats.resolveMs;
     }
     state.counters["fragments"] = double(s.layers.stack.fragmentCount());
+    state.counters["gpu_ms"] = benchmark::Counter(gpuMs, benchmark::Counter::kAvgIterations);
+    state.counters["resolve_ms"] =
+        benchmark::Counter(resolveMs, benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(GlCapture)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 #include <mutex>
+#include <new>
 #include <string>
 #include <thread>
 
@@ -21,10 +22,6 @@
 #include "render/shader_library.h"
 #include "render/software_gl.h"
 
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
-
 namespace render {
 
 namespace {
@@ -34,37 +31,16 @@ double msSince(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-constexpr std::uint32_t kEmpty = 0xffffffffu;
-constexpr std::size_t kNodeBytes = 3 * sizeof(std::uint32_t); // depth bits, triangle, next
+constexpr std::uint32_t kNone = 0xffffffffu;                  // node indices stay below it
+constexpr std::size_t kNodeBytes = 3 * sizeof(std::uint32_t); // depth bits, triangle, pixel
 constexpr int kMaxNodeChunks = 8;                             // capture.frag's NODE_CHUNKS at most
-constexpr int kBandRows = 8;                                  // rows per resolve work unit
-constexpr std::size_t kAhead = 64;                            // prefetch distance, in pixels
-
-void prefetch(const void* address) {
-#if defined(__GNUC__)
-    __builtin_prefetch(address);
-#else
-    (void)address;
-#endif
-}
-
-/** The end of the run of empty heads from `pixel` on, within [pixel, last). */
-std::size_t emptyRunEnd(const std::uint32_t* heads, std::size_t pixel, std::size_t last) {
-#if defined(__SSE2__)
-    // Eight heads at a time: runs around a model are most of a view's pixels.
-    const __m128i empty = _mm_set1_epi32(-1);
-    for (; pixel + 8 <= last; pixel += 8) {
-        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(heads + pixel));
-        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(heads + pixel + 4));
-        const __m128i both = _mm_and_si128(_mm_cmpeq_epi32(a, empty), _mm_cmpeq_epi32(b, empty));
-        if (_mm_movemask_epi8(both) != 0xffff)
-            break;
-    }
-#endif
-    while (pixel < last && heads[pixel] == kEmpty)
-        ++pixel;
-    return pixel;
-}
+// The resolve sorts the nodes by band of 2^kBandShift pixels (about 8 rows of a 1920-pixel view),
+// then each band by pixel: a band's counts and fragments stay in a core's cache.
+constexpr unsigned kBandShift = 14;
+constexpr std::size_t kBandPixels = std::size_t(1) << kBandShift;
+// The passes over the list take it in slices of at least kSliceNodes nodes, at most kMaxSlices.
+constexpr std::size_t kSliceNodes = std::size_t(1) << 16;
+constexpr int kMaxSlices = 32;
 
 // Float bits to an unsigned key with the same order (negative depths included), and back.
 std::uint32_t sortableDepth(std::uint32_t bits) {
@@ -75,11 +51,10 @@ std::uint32_t depthBits(std::uint32_t key) {
 }
 
 /**
- * One band of rows after the walk: its fragments sorted per pixel as depth key << 32 | triangle.
- * Aligned so that two threads filling neighbouring bands never share a cache line.
+ * What one band's resolve found: [k] pixels with more than k fragments. Aligned so that two
+ * threads filling neighbouring bands never share a cache line.
  */
 struct alignas(64) Band {
-    std::vector<std::uint64_t> keys;
     std::vector<std::uint32_t> perLayer;
 };
 
@@ -257,20 +232,22 @@ struct LayerCapture::Impl {
     // The nodes are split into chunks of 2^chunkShift nodes (the last one shorter), each its own
     // storage block: one block caps a buffer, not the list. A list that fits one chunk is one
     // buffer as large as it needs.
-    MappedBuffer counter, heads;
+    MappedBuffer counter;
     std::vector<MappedBuffer> nodes;
     std::vector<const std::uint32_t*> nodeData; // each chunk's mapping
     std::size_t capacity = 0;                   // nodes that fit in `nodes`
     std::size_t requestedCapacity = 0;          // from setNodeCapacity, applied at the next capture
-    bool headsEmpty = false;                    // every head is kEmpty (the resolve resets them)
     bool software = false;                      // a software rasterizer (see drawPieces())
     int totalRecaptures = 0;
     std::unique_ptr<BandPool> pool;
+    // The resolve's working memory, kept between captures.
     std::vector<Band> bands;
+    std::vector<std::uint32_t> sliceCounts; // [slice * bands + band]: nodes, then cursors
+    std::vector<std::uint16_t> pixelInBand; // each fragment's pixel within its band
 
     std::size_t chunkNodes() const { return std::size_t(1) << chunkShift; }
     std::size_t maxNodes() const {
-        return std::min<std::size_t>(chunkNodes() * std::size_t(maxChunks), kEmpty - 1);
+        return std::min<std::size_t>(chunkNodes() * std::size_t(maxChunks), kNone - 1);
     }
     void freeNodes() {
         for (MappedBuffer& chunk : nodes)
@@ -335,11 +312,6 @@ core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
 }
 
 void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
-    if (!headsEmpty) {
-        const GLuint empty = kEmpty;
-        glClearNamedBufferData(heads.id, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
-    }
-    headsEmpty = false;
     const GLuint zero = 0;
     glClearNamedBufferData(counter.id, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
 
@@ -359,16 +331,15 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     glUniform1ui(p.capacityLocation, GLuint(capacity));
     glUniform1ui(p.chunkShiftLocation, GLuint(chunkShift));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter.id);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, heads.id);
     for (std::size_t c = 0; c < nodes.size(); ++c)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(2 + c), nodes[c].id);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(1 + c), nodes[c].id);
     glBindVertexArray(vertexArray);
     const std::size_t triangles = soupVertices / 3;
     const int pieces = drawPieces(software, triangles, std::size_t(view.width) * view.height);
     drawInPieces(0, triangles, pieces, [](std::size_t first, std::size_t count) {
         glDrawArrays(GL_TRIANGLES, GLint(3 * first), GLsizei(3 * count));
     });
-    for (GLuint binding = 0; binding < GLuint(2 + nodes.size()); ++binding)
+    for (GLuint binding = 0; binding < GLuint(1 + nodes.size()); ++binding)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
 
     // Shader writes reach the persistent mappings once the fence has signalled.
@@ -382,118 +353,164 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
 
 core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& view,
                                                            std::size_t written, Timings* timings) {
-    const int width = view.width, height = view.height;
-    const int bandCount = (height + kBandRows - 1) / kBandRows;
-    if (int(bands.size()) < bandCount)
-        bands.resize(std::size_t(bandCount));
-    auto* headWords = static_cast<std::uint32_t*>(heads.data);
-    const std::uint32_t* const* chunkWords = nodeData.data();
+    const std::size_t pixels = std::size_t(view.width) * std::size_t(view.height);
+    const std::size_t bandCount = (pixels + kBandPixels - 1) >> kBandShift;
+    const int slices = int(std::clamp<std::size_t>(written / kSliceNodes, 1, kMaxSlices));
     const unsigned shift = chunkShift;
-    const std::uint32_t mask = std::uint32_t(chunkNodes() - 1);
-    const auto nodeWords = [&](std::uint32_t node) {
-        return chunkWords[node >> shift] + std::size_t(node & mask) * 3;
-    };
-    const auto nodeLimit = std::uint32_t(written);
-
-    core::LayerStack stack;
-    stack.width = width;
-    stack.height = height;
-    stack.offsets.resize(std::size_t(width) * height + 1);
-
-    // Pass 1, per band: walk each pixel's list, sort it into the band's buffer, and store the
-    // offset of its first fragment within the band. Heads are reset on the way, which spares
-    // the next capture its clear.
-    const std::function<void(int)> walkBand = [&](int b) {
-        Band& band = bands[std::size_t(b)];
-        band.keys.clear();
-        band.perLayer.clear();
-        const std::size_t first = std::size_t(b) * kBandRows * width;
-        const std::size_t last =
-            std::min(std::size_t(b + 1) * kBandRows, std::size_t(height)) * std::size_t(width);
-        for (std::size_t pixel = first; pixel < last; ++pixel) {
-            // A run of empty pixels: each starts (and ends) at the band's fragments so far.
-            if (headWords[pixel] == kEmpty) {
-                const std::size_t end = emptyRunEnd(headWords, pixel, last);
-                std::fill(stack.offsets.begin() + std::ptrdiff_t(pixel),
-                          stack.offsets.begin() + std::ptrdiff_t(end),
-                          std::uint32_t(band.keys.size()));
-                pixel = end - 1;
-                continue;
-            }
-            // The walk waits on cache misses: nodes lie in rasterization order, not pixel
-            // order. Prefetch the first two nodes of pixels ahead.
-            if (pixel + 2 * kAhead < last)
-                if (const std::uint32_t h = headWords[pixel + 2 * kAhead]; h < nodeLimit)
-                    prefetch(nodeWords(h));
-            if (pixel + kAhead < last)
-                if (const std::uint32_t h = headWords[pixel + kAhead]; h < nodeLimit)
-                    if (const std::uint32_t next = nodeWords(h)[2]; next < nodeLimit)
-                        prefetch(nodeWords(next));
-            const std::size_t begin = band.keys.size();
-            stack.offsets[pixel] = std::uint32_t(begin);
-            std::uint32_t node = headWords[pixel];
-            headWords[pixel] = kEmpty;
-            // Bounded by the nodes written, so a corrupt list cannot loop forever.
-            for (std::uint32_t steps = 0; node < nodeLimit && steps < nodeLimit; ++steps) {
-                const std::uint32_t* n = nodeWords(node);
-                band.keys.push_back(std::uint64_t(sortableDepth(n[0])) << 32 | n[1]);
-                node = n[2];
-            }
-            const auto begins = band.keys.begin() + std::ptrdiff_t(begin);
-            const std::size_t count = band.keys.size() - begin;
-            if (count <= 16) {
-                for (auto i = begins + 1; i < band.keys.end(); ++i)
-                    for (auto j = i; j != begins && *j < *(j - 1); --j)
-                        std::iter_swap(j, j - 1);
-            } else {
-                std::sort(begins, band.keys.end());
-            }
-            if (band.perLayer.size() < count)
-                band.perLayer.resize(count, 0);
-            for (std::size_t k = 0; k < count; ++k)
-                ++band.perLayer[k];
+    const std::size_t mask = chunkNodes() - 1;
+    const std::uint32_t* const* chunkWords = nodeData.data();
+    // Calls visit(words) for the nodes [first, last) in order, chunk by chunk.
+    const auto forNodes = [&](std::size_t first, std::size_t last, auto&& visit) {
+        while (first < last) {
+            const std::size_t chunkEnd = std::min(last, ((first >> shift) + 1) << shift);
+            const std::uint32_t* words = chunkWords[first >> shift] + (first & mask) * 3;
+            for (std::size_t node = first; node < chunkEnd; ++node, words += 3)
+                visit(words);
+            first = chunkEnd;
         }
     };
+    const auto sliceFirst = [&](int s) { return written * std::size_t(s) / std::size_t(slices); };
 
-    // Pass 2, per band: offsets made global, fragments decoded into their place.
-    std::vector<std::size_t> bandStart(std::size_t(bandCount) + 1, 0);
-    const std::function<void(int)> writeBand = [&](int b) {
-        const Band& band = bands[std::size_t(b)];
-        const std::size_t start = bandStart[std::size_t(b)];
-        const std::size_t first = std::size_t(b) * kBandRows * width;
-        const std::size_t last =
-            std::min(std::size_t(b + 1) * kBandRows, std::size_t(height)) * std::size_t(width);
-        if (start > 0)
-            for (std::size_t pixel = first; pixel < last; ++pixel)
-                stack.offsets[pixel] += std::uint32_t(start);
-        for (std::size_t k = 0; k < band.keys.size(); ++k) {
-            const std::uint32_t bits = depthBits(std::uint32_t(band.keys[k] >> 32));
-            std::memcpy(&stack.depth[start + k], &bits, sizeof(float));
-            stack.triangle[start + k] = std::uint32_t(band.keys[k]);
+    core::LayerStack stack;
+    stack.width = view.width;
+    stack.height = view.height;
+    stack.offsets.resize(pixels + 1);
+    if (bands.size() < bandCount)
+        bands.resize(bandCount);
+
+    // Pass 1, per slice of the list: its nodes in each band. A node naming no pixel of the view
+    // (only a corrupt list has one) is left out here and below.
+    sliceCounts.assign(std::size_t(slices) * bandCount, 0);
+    const std::function<void(int)> countSlice = [&](int s) {
+        std::uint32_t* counts = sliceCounts.data() + std::size_t(s) * bandCount;
+        forNodes(sliceFirst(s), sliceFirst(s + 1), [&](const std::uint32_t* words) {
+            if (words[2] < pixels)
+                ++counts[words[2] >> kBandShift];
+        });
+    };
+    // Where each band's fragments begin, and each slice's within the band: the counts become
+    // cursors.
+    std::vector<std::size_t> bandBegin(bandCount + 1, 0);
+    const auto placeSlices = [&] {
+        std::size_t total = 0;
+        for (std::size_t b = 0; b < bandCount; ++b) {
+            bandBegin[b] = total;
+            for (int s = 0; s < slices; ++s) {
+                std::uint32_t& count = sliceCounts[std::size_t(s) * bandCount + b];
+                const std::uint32_t nodesHere = count;
+                count = std::uint32_t(total);
+                total += nodesHere;
+            }
+        }
+        bandBegin[bandCount] = total;
+        return total;
+    };
+    // Pass 2, per slice: the nodes into their band's range of the stack, unsorted, with their
+    // pixel within the band.
+    const std::function<void(int)> scatterSlice = [&](int s) {
+        std::uint32_t* cursors = sliceCounts.data() + std::size_t(s) * bandCount;
+        float* depth = stack.depth.data();
+        std::uint32_t* triangle = stack.triangle.data();
+        std::uint16_t* pixelOf = pixelInBand.data();
+        forNodes(sliceFirst(s), sliceFirst(s + 1), [&](const std::uint32_t* words) {
+            const std::uint32_t pixel = words[2];
+            if (pixel >= pixels)
+                return;
+            const std::uint32_t at = cursors[pixel >> kBandShift]++;
+            std::memcpy(&depth[at], &words[0], sizeof(float));
+            triangle[at] = words[1];
+            pixelOf[at] = std::uint16_t(pixel & (kBandPixels - 1));
+        });
+    };
+    // Pass 3, per band: a counting sort by pixel, then each pixel's fragments front to back
+    // (ties by triangle id), written back in place; the band's offsets.
+    const std::function<void(int)> sortBand = [&](int b) {
+        Band& band = bands[std::size_t(b)];
+        band.perLayer.clear();
+        const std::size_t first = bandBegin[std::size_t(b)], last = bandBegin[std::size_t(b) + 1];
+        const std::size_t firstPixel = std::size_t(b) << kBandShift;
+        const std::size_t bandPixels = std::min(kBandPixels, pixels - firstPixel);
+        std::uint32_t* offsets = stack.offsets.data() + firstPixel;
+        if (first == last) {
+            std::fill(offsets, offsets + bandPixels, std::uint32_t(first));
+            return;
+        }
+        thread_local std::vector<std::uint32_t> ends;
+        thread_local std::vector<std::uint64_t> keys;
+        ends.assign(bandPixels, 0);
+        const std::uint16_t* pixelOf = pixelInBand.data() + first;
+        const std::size_t count = last - first;
+        for (std::size_t k = 0; k < count; ++k)
+            ++ends[pixelOf[k]];
+        std::uint32_t at = 0;
+        for (std::size_t i = 0; i < bandPixels; ++i) {
+            offsets[i] = std::uint32_t(first) + at;
+            at += ends[i];
+            ends[i] = offsets[i] - std::uint32_t(first); // the pixel's next free place
+        }
+        keys.resize(count);
+        const float* depth = stack.depth.data() + first;
+        const std::uint32_t* triangle = stack.triangle.data() + first;
+        for (std::size_t k = 0; k < count; ++k) {
+            std::uint32_t bits;
+            std::memcpy(&bits, &depth[k], sizeof bits);
+            keys[ends[pixelOf[k]]++] = std::uint64_t(sortableDepth(bits)) << 32 | triangle[k];
+        }
+        std::uint64_t* const key = keys.data();
+        std::size_t begin = 0;
+        for (std::size_t i = 0; i < bandPixels; ++i) {
+            const std::size_t end = ends[i], n = end - begin;
+            if (n > 16) {
+                std::sort(key + begin, key + end);
+            } else {
+                for (std::size_t j = begin + 1; j < end; ++j) {
+                    const std::uint64_t k = key[j];
+                    std::size_t to = j;
+                    for (; to > begin && key[to - 1] > k; --to)
+                        key[to] = key[to - 1];
+                    key[to] = k;
+                }
+            }
+            if (band.perLayer.size() < n)
+                band.perLayer.resize(n, 0);
+            for (std::size_t k = 0; k < n; ++k)
+                ++band.perLayer[k];
+            begin = end;
+        }
+        float* outDepth = stack.depth.data() + first;
+        std::uint32_t* outTriangle = stack.triangle.data() + first;
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t bits = depthBits(std::uint32_t(key[k] >> 32));
+            std::memcpy(&outDepth[k], &bits, sizeof(float));
+            outTriangle[k] = std::uint32_t(key[k]);
         }
     };
 
     const core::Error outOfMemory{"layer capture: out of memory for the layer stack"};
-    if (!pool->run(bandCount, walkBand))
+    try {
+        if (!pool->run(slices, countSlice))
+            return outOfMemory;
+        const std::size_t total = placeSlices();
+        stack.depth.resize(total);
+        stack.triangle.resize(total);
+        pixelInBand.resize(total);
+        if (!pool->run(slices, scatterSlice) || !pool->run(int(bandCount), sortBand))
+            return outOfMemory;
+        stack.offsets.back() = std::uint32_t(total);
+        if (timings) {
+            std::vector<std::uint32_t> perLayer;
+            for (std::size_t b = 0; b < bandCount; ++b) {
+                const Band& band = bands[b];
+                if (perLayer.size() < band.perLayer.size())
+                    perLayer.resize(band.perLayer.size(), 0);
+                for (std::size_t k = 0; k < band.perLayer.size(); ++k)
+                    perLayer[k] += band.perLayer[k];
+            }
+            timings->fragments = total;
+            timings->fragmentsPerLayer = std::move(perLayer);
+        }
+    } catch (const std::bad_alloc&) {
         return outOfMemory;
-    std::vector<std::uint32_t> perLayer;
-    for (int b = 0; b < bandCount; ++b) {
-        const Band& band = bands[std::size_t(b)];
-        bandStart[std::size_t(b) + 1] = bandStart[std::size_t(b)] + band.keys.size();
-        if (perLayer.size() < band.perLayer.size())
-            perLayer.resize(band.perLayer.size(), 0);
-        for (std::size_t k = 0; k < band.perLayer.size(); ++k)
-            perLayer[k] += band.perLayer[k];
-    }
-    const std::size_t total = bandStart[std::size_t(bandCount)];
-    stack.depth.resize(total);
-    stack.triangle.resize(total);
-    if (!pool->run(bandCount, writeBand))
-        return outOfMemory;
-    stack.offsets.back() = std::uint32_t(total);
-    if (timings) {
-        timings->fragments = total;
-        timings->fragmentsPerLayer = std::move(perLayer);
     }
     return stack;
 }
@@ -518,13 +535,13 @@ core::Status LayerCapture::initialize() {
     GLint fragmentBlocks = 0, bindings = 0;
     glGetIntegerv(GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS, &fragmentBlocks);
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS, &bindings);
-    // Counter and heads take two blocks; the rest can hold node chunks.
-    d.maxChunks = std::clamp(std::min(fragmentBlocks, bindings) - 2, 1, kMaxNodeChunks);
+    // The counter takes one block; the rest can hold node chunks.
+    d.maxChunks = std::clamp(std::min(fragmentBlocks, bindings) - 1, 1, kMaxNodeChunks);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &d.maxFramebufferWidth);
     glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &d.maxFramebufferHeight);
     // Node indices are 32-bit with 0xffffffff as "none"; offsets are 32-bit too.
     d.maxBufferBytes =
-        std::size_t(std::clamp<GLint64>(maxBlock, 0, GLint64(kEmpty - 1) * GLint64(kNodeBytes)));
+        std::size_t(std::clamp<GLint64>(maxBlock, 0, GLint64(kNone - 1) * GLint64(kNodeBytes)));
     if (d.maxBufferBytes < kNodeBytes || d.maxFramebufferWidth <= 0 || d.maxFramebufferHeight <= 0)
         return core::Error{"layer capture: OpenGL reports no shader storage or framebuffer size"};
     d.planChunks();
@@ -593,14 +610,6 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
     }
     if (!d.counter.id && !d.counter.allocate(sizeof(std::uint32_t)))
         return core::Error{"layer capture: out of GPU memory"};
-    if (d.heads.bytes < pixels * sizeof(std::uint32_t)) {
-        if (pixels * sizeof(std::uint32_t) > d.maxBufferBytes)
-            return core::Error{"layer capture: " + std::to_string(pixels) +
-                               " pixels exceed this OpenGL's buffer size"};
-        d.headsEmpty = false;
-        if (!d.heads.allocate(pixels * sizeof(std::uint32_t)))
-            return core::Error{"layer capture: out of GPU memory for the list heads"};
-    }
     if (d.requestedCapacity) {
         d.capacity = 0; // reallocates to the requested size, smaller or larger
         const core::Status status = d.ensureNodes(d.requestedCapacity);
@@ -638,11 +647,8 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
 
     const Clock::time_point resolveStart = Clock::now();
     core::Result<core::LayerStack> stack = d.resolve(view, written, timings);
-    if (!stack) {
-        d.headsEmpty = false;
+    if (!stack)
         return stack;
-    }
-    d.headsEmpty = true;
     if (timings) {
         timings->gpuMs = gpuMs;
         timings->resolveMs = msSince(resolveStart);
@@ -679,9 +685,7 @@ void LayerCapture::release() {
         return;
     Impl& d = *m_impl;
     d.counter.free();
-    d.heads.free();
     d.freeNodes();
-    d.headsEmpty = false;
     d.releaseMesh();
     if (d.framebuffer)
         glDeleteFramebuffers(1, &d.framebuffer);
@@ -690,6 +694,8 @@ void LayerCapture::release() {
     d.programs.clear();
     d.pool.reset();
     d.bands.clear();
+    d.sliceCounts.clear();
+    d.pixelInBand = {};
 }
 
 double timePlainPass(MeshRenderer& renderer, const OffscreenTarget& target, const core::View& view,

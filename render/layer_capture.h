@@ -25,7 +25,7 @@ struct LayerCaptureOptions {
 /** What one capture cost and found. */
 struct LayerCaptureTimings {
     double gpuMs = 0.0;     // clears, draws (every attempt) and the wait for the GPU
-    double resolveMs = 0.0; // walking, sorting and writing the lists on the CPU
+    double resolveMs = 0.0; // sorting the list into the stack on the CPU
     int recaptures = 0;     // extra draws because the node buffer was too small
     std::size_t fragments = 0;
     std::vector<std::uint32_t> fragmentsPerLayer; // [k - 1]: fragments on layer k
@@ -33,12 +33,13 @@ struct LayerCaptureTimings {
 
 /**
  * Captures every fragment of a view as a core::LayerStack (docs/architecture.md §3 step 2) in one
- * geometry pass: a fragment shader appends each fragment to its pixel's linked list in GL buffers,
- * then CPU threads sort the lists front to back straight from the mapped buffers (ties by triangle
- * id, so the result is deterministic). If a view has more fragments than the node buffer holds,
- * the buffers grow and the view is drawn again; the capacity is kept for later captures.
- * GPU memory: 36 bytes a triangle, 4 a pixel, 12 a fragment. capture() blocks until the lists
- * are resolved. Needs a current GL 4.5 context for every call, the one it was initialized in.
+ * geometry pass: a fragment shader appends each fragment with its pixel to a list in GL buffers,
+ * then CPU threads sort the list straight from the mapped buffers by band of pixels, each band by
+ * pixel and each pixel front to back (ties by triangle id, so the result is deterministic). If a
+ * view has more fragments than the node buffer holds, the buffers grow and the view is drawn
+ * again; the capacity is kept for later captures. GPU memory: 36 bytes a triangle, 12 a
+ * fragment; CPU memory beside the stack: 2 bytes a fragment. capture() blocks until the list
+ * is sorted. Needs a current GL 4.5 context for every call, the one it was initialized in.
  */
 class LayerCapture {
 public:

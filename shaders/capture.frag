@@ -1,6 +1,8 @@
 #version 450 core
-// Layer capture: appends every fragment to its pixel's linked list (a head per pixel, one global
-// node counter). Depth test off, no color output: the framebuffer has no attachments.
+// Layer capture: appends every fragment, with its pixel, to one list (a global node counter).
+// Depth test off, no color output: the framebuffer has no attachments. The CPU sorts the list
+// by pixel and each pixel front to back; a per-pixel linked list (an atomic exchange on a head
+// per pixel) would spare it the sort by pixel, but costs llvmpipe more than that sort.
 in float vViewDepth;
 flat in uint vTriangle;
 
@@ -12,25 +14,22 @@ uniform uint uCapacity; // nodes that fit; the counter keeps counting past it
 layout(std430, binding = 0) coherent buffer Counter {
     uint nodeCount;
 };
-layout(std430, binding = 1) coherent buffer Heads {
-    uint heads[]; // 0xffffffff = empty list
-};
-// Node i: [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] next node. The nodes lie in
-// NODE_CHUNKS buffers (bindings 2, 3, ...) of 2^uChunkShift nodes each, so no one storage block
+// Node i: [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] pixel. The nodes lie in
+// NODE_CHUNKS buffers (bindings 1, 2, ...) of 2^uChunkShift nodes each, so no one storage block
 // caps the list: node i is entry i & (2^uChunkShift - 1) of chunk i >> uChunkShift.
 #ifndef NODE_CHUNKS
 #define NODE_CHUNKS 1
 #endif
 uniform uint uChunkShift;
 #define NODE_CHUNK(k)                                                                              \
-    layout(std430, binding = 2 + k) writeonly buffer Nodes##k {                                    \
+    layout(std430, binding = 1 + k) writeonly buffer Nodes##k {                                    \
         uint nodes##k[];                                                                           \
     };
 #define STORE_CHUNK(k)                                                                             \
     else if (chunk == uint(k)) {                                                                   \
         nodes##k[i] = depth;                                                                       \
         nodes##k[i + 1u] = triangle;                                                               \
-        nodes##k[i + 2u] = next;                                                                   \
+        nodes##k[i + 2u] = pixel;                                                                   \
     }
 NODE_CHUNK(0)
 #if NODE_CHUNKS > 1
@@ -55,12 +54,12 @@ NODE_CHUNK(6)
 NODE_CHUNK(7)
 #endif
 
-void storeNode(uint node, uint depth, uint triangle, uint next) {
+void storeNode(uint node, uint depth, uint triangle, uint pixel) {
 #if NODE_CHUNKS == 1
     uint i = 3u * node;
     nodes0[i] = depth;
     nodes0[i + 1u] = triangle;
-    nodes0[i + 2u] = next;
+    nodes0[i + 2u] = pixel;
 #else
     uint chunk = node >> uChunkShift;
     uint i = 3u * (node & ((1u << uChunkShift) - 1u));
@@ -96,6 +95,5 @@ void main() {
         return;
     ivec2 p = ivec2(gl_FragCoord.xy);
     uint pixel = uint(uHeight - 1 - p.y) * uint(uWidth) + uint(p.x);
-    uint next = atomicExchange(heads[pixel], node);
-    storeNode(node, floatBitsToUint(vViewDepth), vTriangle, next);
+    storeNode(node, floatBitsToUint(vViewDepth), vTriangle, pixel);
 }
