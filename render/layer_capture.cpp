@@ -436,17 +436,32 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
             return;
         }
         thread_local std::vector<std::uint32_t> ends;
+        thread_local std::vector<std::uint16_t> occupied; // the pixels with fragments
         thread_local std::vector<std::uint64_t> keys;
         ends.assign(bandPixels, 0);
+        occupied.resize(bandPixels);
         const std::uint16_t* pixelOf = pixelInBand.data() + first;
         const std::size_t count = last - first;
         for (std::size_t k = 0; k < count; ++k)
             ++ends[pixelOf[k]];
         std::uint32_t at = 0;
+        std::size_t used = 0;
         for (std::size_t i = 0; i < bandPixels; ++i) {
+            // Eight empty pixels at a time: around a model most of a view's pixels are empty.
+            if (std::uint64_t w[4]; i + 8 <= bandPixels) {
+                std::memcpy(w, &ends[i], sizeof w);
+                if ((w[0] | w[1] | w[2] | w[3]) == 0) {
+                    std::fill_n(offsets + i, 8, std::uint32_t(first) + at);
+                    i += 7;
+                    continue;
+                }
+            }
+            const std::uint32_t n = ends[i];
             offsets[i] = std::uint32_t(first) + at;
-            at += ends[i];
-            ends[i] = offsets[i] - std::uint32_t(first); // the pixel's next free place
+            ends[i] = at; // the pixel's next free place
+            occupied[used] = std::uint16_t(i);
+            used += n != 0;
+            at += n;
         }
         keys.resize(count);
         const float* depth = stack.depth.data() + first;
@@ -457,9 +472,9 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
             keys[ends[pixelOf[k]]++] = std::uint64_t(sortableDepth(bits)) << 32 | triangle[k];
         }
         std::uint64_t* const key = keys.data();
-        std::size_t begin = 0;
-        for (std::size_t i = 0; i < bandPixels; ++i) {
-            const std::size_t end = ends[i], n = end - begin;
+        for (std::size_t u = 0; u < used; ++u) {
+            const std::size_t i = occupied[u];
+            const std::size_t begin = offsets[i] - first, end = ends[i], n = end - begin;
             if (n > 16) {
                 std::sort(key + begin, key + end);
             } else {
@@ -475,7 +490,6 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
                 band.perLayer.resize(n, 0);
             for (std::size_t k = 0; k < n; ++k)
                 ++band.perLayer[k];
-            begin = end;
         }
         float* outDepth = stack.depth.data() + first;
         std::uint32_t* outTriangle = stack.triangle.data() + first;
