@@ -2,6 +2,7 @@
 #include "render/layer_capture.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <condition_variable>
 #include <cstring>
@@ -34,6 +35,8 @@ double msSince(Clock::time_point start) {
 constexpr std::uint32_t kNone = 0xffffffffu;                  // node indices stay below it
 constexpr std::size_t kNodeBytes = 3 * sizeof(std::uint32_t); // depth bits, triangle, pixel
 constexpr int kMaxNodeChunks = 8;                             // capture.frag's NODE_CHUNKS at most
+constexpr std::size_t kMaxNodeRanges = 8;                     // capture.frag's uRangeStart[8]
+constexpr std::size_t kCounterStride = 16; // words between the ranges' counters: a cache line
 // The resolve sorts the nodes by band of 2^kBandShift pixels (about 8 rows of a 1920-pixel view),
 // then each band by pixel: a band's counts and fragments stay in a core's cache.
 constexpr unsigned kBandShift = 14;
@@ -196,7 +199,8 @@ private:
 struct CaptureProgram {
     ShaderProgram program;
     GLint viewLocation = -1, projLocation = -1;
-    GLint widthLocation = -1, heightLocation = -1, capacityLocation = -1, chunkShiftLocation = -1;
+    GLint widthLocation = -1, heightLocation = -1, chunkShiftLocation = -1;
+    GLint rangeMaskLocation = -1, rangeStartLocation = -1, rangeCapacityLocation = -1;
 };
 
 core::Result<CaptureProgram> buildCaptureProgram(int chunks) {
@@ -211,8 +215,10 @@ core::Result<CaptureProgram> buildCaptureProgram(int chunks) {
                       {&p.projLocation, "uProj"},
                       {&p.widthLocation, "uWidth"},
                       {&p.heightLocation, "uHeight"},
-                      {&p.capacityLocation, "uCapacity"},
-                      {&p.chunkShiftLocation, "uChunkShift"}});
+                      {&p.chunkShiftLocation, "uChunkShift"},
+                      {&p.rangeMaskLocation, "uRangeMask"},
+                      {&p.rangeStartLocation, "uRangeStart"},
+                      {&p.rangeCapacityLocation, "uRangeCapacity"}});
     return p;
 }
 
@@ -237,7 +243,14 @@ struct LayerCapture::Impl {
     std::vector<const std::uint32_t*> nodeData; // each chunk's mapping
     std::size_t capacity = 0;                   // nodes that fit in `nodes`
     std::size_t requestedCapacity = 0;          // from setNodeCapacity, applied at the next capture
-    bool software = false;                      // a software rasterizer (see drawPieces())
+    // The nodes' ranges, each with its own counter (capture.frag): a power of two of them, one
+    // on a hardware GPU. `written` is what the last draw counted, perhaps more than fits.
+    struct NodeRange {
+        std::size_t first = 0, capacity = 0, written = 0;
+    };
+    std::vector<NodeRange> ranges{1};
+    std::size_t plannedCapacity = 0; // the capacity the ranges were planned for
+    bool software = false;           // a software rasterizer (see drawPieces())
     int totalRecaptures = 0;
     std::unique_ptr<BandPool> pool;
     // The resolve's working memory, kept between captures.
@@ -265,6 +278,28 @@ struct LayerCapture::Impl {
         soupVertices = 0;
     }
     core::Status ensureNodes(std::size_t wanted);
+    /**
+     * Splits the capacity between the ranges: each gets what the last draw wrote into it (with
+     * `fromLastDraw`) and an even share of the rest.
+     */
+    void setRanges(std::size_t count) {
+        ranges.assign(count, {});
+        plannedCapacity = 0;
+    }
+    void planRanges(bool fromLastDraw) {
+        std::size_t need = 0;
+        for (const NodeRange& range : ranges)
+            need += fromLastDraw ? range.written : 0;
+        const std::size_t share = (capacity - std::min(need, capacity)) / ranges.size();
+        std::size_t first = 0;
+        for (NodeRange& range : ranges) {
+            range.first = first;
+            range.capacity = (fromLastDraw ? range.written : 0) + share;
+            first += range.capacity;
+        }
+        ranges.back().capacity += capacity - std::min(first, capacity);
+        plannedCapacity = capacity;
+    }
     /** The chunk size: the largest power of two of nodes within a (possibly capped) block. */
     void planChunks() {
         const std::size_t block = blockCap ? std::min(blockCap, maxBufferBytes) : maxBufferBytes;
@@ -284,8 +319,7 @@ struct LayerCapture::Impl {
         return {};
     }
     void draw(const core::View& view, const Options& options);
-    core::Result<core::LayerStack> resolve(const core::View& view, std::size_t written,
-                                           Timings* timings);
+    core::Result<core::LayerStack> resolve(const core::View& view, Timings* timings);
 };
 
 core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
@@ -314,6 +348,11 @@ core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
 void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     const GLuint zero = 0;
     glClearNamedBufferData(counter.id, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    GLuint rangeStart[kMaxNodeRanges] = {}, rangeCapacity[kMaxNodeRanges] = {};
+    for (std::size_t r = 0; r < ranges.size(); ++r) {
+        rangeStart[r] = GLuint(ranges[r].first);
+        rangeCapacity[r] = GLuint(ranges[r].capacity);
+    }
 
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, framebuffer);
     glViewport(0, 0, view.width, view.height);
@@ -328,7 +367,9 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     glUniformMatrix4fv(p.projLocation, 1, GL_FALSE, glm::value_ptr(view.proj));
     glUniform1i(p.widthLocation, view.width);
     glUniform1i(p.heightLocation, view.height);
-    glUniform1ui(p.capacityLocation, GLuint(capacity));
+    glUniform1ui(p.rangeMaskLocation, GLuint(ranges.size() - 1));
+    glUniform1uiv(p.rangeStartLocation, GLsizei(kMaxNodeRanges), rangeStart);
+    glUniform1uiv(p.rangeCapacityLocation, GLsizei(kMaxNodeRanges), rangeCapacity);
     glUniform1ui(p.chunkShiftLocation, GLuint(chunkShift));
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counter.id);
     for (std::size_t c = 0; c < nodes.size(); ++c)
@@ -352,21 +393,30 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
 }
 
 core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& view,
-                                                           std::size_t written, Timings* timings) {
+                                                           Timings* timings) {
+    std::size_t written = 0; // the ranges' nodes as one list
+    for (const NodeRange& range : ranges)
+        written += range.written;
     const std::size_t pixels = std::size_t(view.width) * std::size_t(view.height);
     const std::size_t bandCount = (pixels + kBandPixels - 1) >> kBandShift;
     const int slices = int(std::clamp<std::size_t>(written / kSliceNodes, 1, kMaxSlices));
     const unsigned shift = chunkShift;
     const std::size_t mask = chunkNodes() - 1;
     const std::uint32_t* const* chunkWords = nodeData.data();
-    // Calls visit(words) for the nodes [first, last) in order, chunk by chunk.
+    // Calls visit(words) for the nodes [first, last) of that list in order, chunk by chunk.
     const auto forNodes = [&](std::size_t first, std::size_t last, auto&& visit) {
-        while (first < last) {
-            const std::size_t chunkEnd = std::min(last, ((first >> shift) + 1) << shift);
-            const std::uint32_t* words = chunkWords[first >> shift] + (first & mask) * 3;
-            for (std::size_t node = first; node < chunkEnd; ++node, words += 3)
-                visit(words);
-            first = chunkEnd;
+        std::size_t rangeBegins = 0;
+        for (const NodeRange& range : ranges) {
+            std::size_t node = range.first + std::max(first, rangeBegins) - rangeBegins;
+            const std::size_t end =
+                range.first + std::min(last, rangeBegins + range.written) - rangeBegins;
+            rangeBegins += range.written;
+            while (node < end) {
+                const std::size_t chunkEnd = std::min(end, ((node >> shift) + 1) << shift);
+                const std::uint32_t* words = chunkWords[node >> shift] + (node & mask) * 3;
+                for (; node < chunkEnd; ++node, words += 3)
+                    visit(words);
+            }
         }
     };
     const auto sliceFirst = [&](int s) { return written * std::size_t(s) / std::size_t(slices); };
@@ -559,12 +609,13 @@ core::Status LayerCapture::initialize() {
     if (d.maxBufferBytes < kNodeBytes || d.maxFramebufferWidth <= 0 || d.maxFramebufferHeight <= 0)
         return core::Error{"layer capture: OpenGL reports no shader storage or framebuffer size"};
     d.planChunks();
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    // A node range for each rasterizer thread llvmpipe may run (one a core).
+    d.setRanges(d.software ? std::min<std::size_t>(std::bit_ceil(cores), kMaxNodeRanges) : 1);
     if (!d.framebuffer)
         glCreateFramebuffers(1, &d.framebuffer);
-    if (!d.pool) {
-        const int cores = int(std::thread::hardware_concurrency());
-        d.pool = std::make_unique<BandPool>(std::clamp(cores - 1, 0, 15));
-    }
+    if (!d.pool)
+        d.pool = std::make_unique<BandPool>(std::clamp(int(cores) - 1, 0, 15));
     return {};
 }
 
@@ -622,7 +673,8 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
         d.framebufferWidth = view.width;
         d.framebufferHeight = view.height;
     }
-    if (!d.counter.id && !d.counter.allocate(sizeof(std::uint32_t)))
+    const std::size_t counterBytes = d.ranges.size() * kCounterStride * sizeof(std::uint32_t);
+    if (d.counter.bytes != counterBytes && !d.counter.allocate(counterBytes))
         return core::Error{"layer capture: out of GPU memory"};
     if (d.requestedCapacity) {
         d.capacity = 0; // reallocates to the requested size, smaller or larger
@@ -638,21 +690,32 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
 
     if (const core::Status status = d.ensureProgram(); !status)
         return core::Error{status.error()};
+    if (d.plannedCapacity != d.capacity)
+        d.planRanges(false);
     int recaptures = 0;
-    std::size_t written = 0;
     {
         const StateGuard guard;
         for (;;) {
             d.draw(view, options);
-            written = *static_cast<const volatile std::uint32_t*>(d.counter.data);
-            if (written <= d.capacity)
+            const auto* counts = static_cast<const volatile std::uint32_t*>(d.counter.data);
+            std::size_t written = 0;
+            bool fits = true;
+            for (std::size_t r = 0; r < d.ranges.size(); ++r) {
+                Impl::NodeRange& range = d.ranges[r];
+                range.written = counts[r * kCounterStride];
+                written += range.written;
+                fits = fits && range.written <= range.capacity;
+            }
+            if (fits)
                 break;
-            // Lists cut at the capacity are incomplete: grow with some headroom and draw again.
+            // Lists cut at a range's capacity are incomplete: grow with some headroom if the
+            // whole list does not fit, split the nodes as this draw needs them and draw again.
             const std::size_t grown = std::min(d.maxNodes(), written + written / 8);
             if (const core::Status status = d.ensureNodes(std::max(grown, written)); !status)
                 return core::Error{status.error()};
             if (const core::Status status = d.ensureProgram(); !status)
                 return core::Error{status.error()};
+            d.planRanges(true);
             ++recaptures;
             ++d.totalRecaptures;
         }
@@ -660,7 +723,7 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
     const double gpuMs = msSince(start);
 
     const Clock::time_point resolveStart = Clock::now();
-    core::Result<core::LayerStack> stack = d.resolve(view, written, timings);
+    core::Result<core::LayerStack> stack = d.resolve(view, timings);
     if (!stack)
         return stack;
     if (timings) {
@@ -684,6 +747,15 @@ void LayerCapture::setStorageBlockCap(std::size_t bytes) {
     d.blockCap = bytes;
     d.freeNodes();
     d.planChunks();
+}
+
+void LayerCapture::setNodeRanges(std::size_t count) {
+    m_impl->setRanges(std::clamp<std::size_t>(std::bit_floor(std::max<std::size_t>(count, 1)), 1,
+                                              kMaxNodeRanges));
+}
+
+std::size_t LayerCapture::nodeRanges() const {
+    return m_impl->ranges.size();
 }
 
 std::size_t LayerCapture::nodeChunks() const {

@@ -80,6 +80,14 @@ public:
      * tests run small views through the split path. Frees the node buffers.
      */
     void setStorageBlockCap(std::size_t bytes);
+    /**
+     * Splits the nodes into `count` ranges (rounded down to a power of two, 1 to 8), each with
+     * its own counter: a fragment at x takes a node of range (x / 64) mod count. On a software
+     * rasterizer initialize() chooses one a core, so that its threads, each on a 64-pixel tile,
+     * seldom count on one cache line; elsewhere one. Tests choose others; the stack is the same.
+     */
+    void setNodeRanges(std::size_t count);
+    std::size_t nodeRanges() const;
     /** How many buffers the fragment (node) list is split into (0 before the first capture). */
     std::size_t nodeChunks() const;
     /** Recaptures forced by a full node buffer over this object's lifetime. */

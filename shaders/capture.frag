@@ -1,5 +1,5 @@
 #version 450 core
-// Layer capture: appends every fragment, with its pixel, to one list (a global node counter).
+// Layer capture: appends every fragment, with its pixel, to a list of nodes (atomic counters).
 // Depth test off, no color output: the framebuffer has no attachments. The CPU sorts the list
 // by pixel and each pixel front to back; a per-pixel linked list (an atomic exchange on a head
 // per pixel) would spare it the sort by pixel, but costs llvmpipe more than that sort.
@@ -9,14 +9,19 @@ flat in uint vTriangle;
 // Pixels are numbered top row first (y = 0 at the top), as in core::LayerStack.
 uniform int uWidth;
 uniform int uHeight;
-uniform uint uCapacity; // nodes that fit; the counter keeps counting past it
+// The nodes are split into ranges, each with its own counter (16 words apart, a cache line
+// each): a fragment takes a node of range (x / 64) & uRangeMask. llvmpipe's threads rasterize
+// neighbouring 64-pixel tiles at once, so they seldom count on the same cache line.
+uniform uint uRangeMask;
+uniform uint uRangeStart[8];
+uniform uint uRangeCapacity[8]; // nodes that fit; the counter keeps counting past it
 
 layout(std430, binding = 0) coherent buffer Counter {
-    uint nodeCount;
+    uint nodeCount[];
 };
-// Node i: [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] pixel. The nodes lie in
-// NODE_CHUNKS buffers (bindings 1, 2, ...) of 2^uChunkShift nodes each, so no one storage block
-// caps the list: node i is entry i & (2^uChunkShift - 1) of chunk i >> uChunkShift.
+// Node i (of any range): [3i] depth (float bits), [3i + 1] triangle id, [3i + 2] pixel. The
+// nodes lie in NODE_CHUNKS buffers (bindings 1, 2, ...) of 2^uChunkShift nodes each, so no one
+// storage block caps the list: node i is entry i & (2^uChunkShift - 1) of chunk i >> uChunkShift.
 #ifndef NODE_CHUNKS
 #define NODE_CHUNKS 1
 #endif
@@ -29,7 +34,7 @@ uniform uint uChunkShift;
     else if (chunk == uint(k)) {                                                                   \
         nodes##k[i] = depth;                                                                       \
         nodes##k[i + 1u] = triangle;                                                               \
-        nodes##k[i + 2u] = pixel;                                                                   \
+        nodes##k[i + 2u] = pixel;                                                                  \
     }
 NODE_CHUNK(0)
 #if NODE_CHUNKS > 1
@@ -89,11 +94,13 @@ void storeNode(uint node, uint depth, uint triangle, uint pixel) {
 }
 
 void main() {
-    uint node = atomicAdd(nodeCount, 1u);
-    // Past the capacity the draw only counts; the CPU grows the buffers and draws again.
-    if (node >= uCapacity)
-        return;
     ivec2 p = ivec2(gl_FragCoord.xy);
+    uint range = (uint(p.x) >> 6) & uRangeMask;
+    uint local = atomicAdd(nodeCount[16u * range], 1u);
+    // Past its capacity a range only counts; the CPU grows the buffers and draws again.
+    if (local >= uRangeCapacity[range])
+        return;
+    uint node = uRangeStart[range] + local;
     uint pixel = uint(uHeight - 1 - p.y) * uint(uWidth) + uint(p.x);
     storeNode(node, floatBitsToUint(vViewDepth), vTriangle, pixel);
 }

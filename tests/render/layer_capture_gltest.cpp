@@ -512,6 +512,35 @@ TEST_F(LayerCaptureGlTest, GrowsTinyNodeBufferAndMatchesNormalCapture) {
     EXPECT_EQ(third.depth, normal.depth);
 }
 
+TEST_F(LayerCaptureGlTest, NodeRangesGiveTheSameStack) {
+    const core::Mesh mesh = core::makeTrefoil();
+    m_capture.setMesh(mesh);
+    // 320 pixels are five 64-pixel columns: with 8 ranges, three get no fragment at all.
+    const core::View view = trefoilView(mesh, 320, 240);
+    m_capture.setNodeRanges(1);
+    render::LayerCapture::Timings oneTimings;
+    const core::LayerStack one = capture(view, true, &oneTimings);
+    for (const std::size_t ranges : {2u, 4u, 8u}) {
+        SCOPED_TRACE(ranges);
+        m_capture.setNodeRanges(ranges);
+        EXPECT_EQ(m_capture.nodeRanges(), ranges);
+        m_capture.setNodeCapacity(16); // every range overflows; the second draw fits
+        render::LayerCapture::Timings timings;
+        const core::LayerStack split = capture(view, true, &timings);
+        EXPECT_EQ(timings.recaptures, 1);
+        EXPECT_EQ(split.offsets, one.offsets);
+        EXPECT_EQ(split.depth, one.depth);
+        EXPECT_EQ(split.triangle, one.triangle);
+        EXPECT_EQ(timings.fragmentsPerLayer, oneTimings.fragmentsPerLayer);
+        // The split the last draw needed is kept: the same view draws once.
+        render::LayerCapture::Timings again;
+        EXPECT_EQ(capture(view, true, &again).triangle, one.triangle);
+        EXPECT_EQ(again.recaptures, 0);
+    }
+    m_capture.setNodeRanges(3);
+    EXPECT_EQ(m_capture.nodeRanges(), 2u);
+}
+
 TEST_F(LayerCaptureGlTest, ChangingSizeKeepsListsClean) {
     const core::Mesh mesh = core::makeTrefoil(120, 30);
     m_capture.setMesh(mesh);
