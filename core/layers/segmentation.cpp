@@ -220,8 +220,13 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                 region[own.roots[i]] = nextId[own.rootLayers[i] - 1]++;
     }
 
-    // 4. Every fragment's id, the partial region nodes and the cross-layer links, per band.
-    //    Another band's ids are read through the (final) roots only.
+    // 4. Every fragment's id, from its root's (roots keep theirs: other bands read them).
+    forBands([&](int, int y0, int y1) {
+        for (std::uint32_t f = rowFragment(y0), f1 = rowFragment(y1); f < f1; ++f)
+            if (parent[f] != f)
+                region[f] = region[findRootReadOnly(parent, f)];
+    });
+    // 5. The partial region nodes and the cross-layer links, per band.
     forBands([&](int index, int y0, int y1) {
         Part& own = part[std::size_t(index)];
         own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
@@ -253,11 +258,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                     runs.resize(n);
                 for (std::uint32_t k = 1; k <= n; ++k) {
                     const std::uint32_t f = stack.offsets[p] + k - 1;
-                    // Roots keep their id (other bands read it); the rest take their root's.
-                    const bool root = parent[f] == f;
-                    const std::uint32_t r = root ? region[f] : region[findRootReadOnly(parent, f)];
-                    if (!root)
-                        region[f] = r;
+                    const std::uint32_t r = region[f];
                     if (Run& run = runs[k - 1]; run.region == r) {
                         ++run.pixels;
                         run.maxX = x;
@@ -284,7 +285,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                         const std::uint32_t g = target(stack, q, l[d]);
                         if (g == kNone)
                             continue;
-                        const std::uint64_t a = r, b = region[findRootReadOnly(parent, g)];
+                        const std::uint64_t a = r, b = region[g];
                         own.addPair(a < b ? (a << 32) | b : (b << 32) | a);
                     }
                 }
@@ -296,7 +297,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
     });
 
     const auto graphStart = std::chrono::steady_clock::now();
-    // 5. Region nodes: merge the bands' partial nodes.
+    // 6. Region nodes: merge the bands' partial nodes.
     RegionGraph& graph = out.graph;
     graph.regions = std::move(part[0].regions);
     for (int index = 1; index < parts; ++index)
@@ -317,7 +318,7 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
             graph.regions[id].layer = k + 1;
         }
 
-    // 6. Region edges: count the unordered region pairs of the cross-layer links.
+    // 7. Region edges: count the unordered region pairs of the cross-layer links.
     //    Each band sorted its own; merged here.
     std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
     for (const Part& own : part) {
