@@ -2,8 +2,10 @@
 #include "core/layers/segmentation.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <climits>
+#include <memory>
 #include <numeric>
 
 #include "core/base/parallel.h"
@@ -37,6 +39,20 @@ inline void unite(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
         parent[b] = a;
     else if (b < a)
         parent[a] = b;
+}
+
+/**
+ * The high bit of byte d set where a fragment's link byte d (Direction order) joins another
+ * layer than its own, `layer`: neither 0 (no link) nor `layer`.
+ */
+inline std::uint32_t crossLayerLinks(const std::uint8_t* links, std::uint32_t layer) {
+    const std::uint32_t word = std::uint32_t(links[0]) | std::uint32_t(links[1]) << 8 |
+                               std::uint32_t(links[2]) << 16 | std::uint32_t(links[3]) << 24;
+    // The high bit of each byte that is not zero, exactly (no carries between bytes).
+    const auto nonZero = [](std::uint32_t v) {
+        return (((v & 0x7f7f7f7fu) + 0x7f7f7f7fu) | v) & 0x80808080u;
+    };
+    return nonZero(word) & nonZero(word ^ (layer * 0x01010101u));
 }
 
 /** The fragment that link value `layer` of a fragment at pixel p points to at pixel q, or kNone. */
@@ -165,8 +181,9 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
 
     // 1. Label each band of rows on its own, flatten it (parent[i] <= i, so one ascending pass)
     //    and note its roots.
-    std::vector<std::uint32_t> parentStore(fragments);
-    std::uint32_t* parent = parentStore.data();
+    // Every entry is set (per band) before it is read.
+    const auto parentStore = std::make_unique_for_overwrite<std::uint32_t[]>(fragments);
+    std::uint32_t* parent = parentStore.get();
     forBands([&](int index, int y0, int y1) {
         Part& own = part[std::size_t(index)];
         const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
@@ -219,12 +236,22 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
             if (parent[own.roots[i]] == own.roots[i])
                 region[own.roots[i]] = nextId[own.rootLayers[i] - 1]++;
     }
+    // The band roots the stitching joined to others take their final root's id and become
+    // roots again (a root reached on the way already has its final id).
+    for (const Part& own : part)
+        for (const std::uint32_t root : own.roots)
+            if (parent[root] != root) {
+                region[root] = region[findRootReadOnly(parent, root)];
+                parent[root] = root;
+            }
 
-    // 4. Every fragment's id, from its root's (roots keep theirs: other bands read them).
+    // 4. Every other fragment's id: its parent is a band root (flattened per band, and the
+    //    stitching's path halving links only to band roots), whose id is final; only the ids
+    //    of band roots are read across bands.
     forBands([&](int, int y0, int y1) {
         for (std::uint32_t f = rowFragment(y0), f1 = rowFragment(y1); f < f1; ++f)
             if (parent[f] != f)
-                region[f] = region[findRootReadOnly(parent, f)];
+                region[f] = region[parent[f]];
     });
     // 5. The partial region nodes and the cross-layer links, per band.
     forBands([&](int index, int y0, int y1) {
@@ -269,9 +296,8 @@ Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, un
                     if (k > kMaxLinkedLayers)
                         continue;
                     const std::uint8_t* l = conn.links.data() + 4 * std::size_t(f);
-                    for (int d = 0; d < 4; ++d) {
-                        if (l[d] == 0 || l[d] == k)
-                            continue;
+                    for (unsigned cross = crossLayerLinks(l, k); cross != 0; cross &= cross - 1) {
+                        const int d = std::countr_zero(cross) / 8;
                         const bool inside = d == kRight  ? x + 1 < w
                                             : d == kLeft ? x > 0
                                             : d == kUp   ? y > 0
