@@ -278,14 +278,14 @@ struct LayerCapture::Impl {
         soupVertices = 0;
     }
     core::Status ensureNodes(std::size_t wanted);
-    /**
-     * Splits the capacity between the ranges: each gets what the last draw wrote into it (with
-     * `fromLastDraw`) and an even share of the rest.
-     */
     void setRanges(std::size_t count) {
         ranges.assign(count, {});
         plannedCapacity = 0;
     }
+    /**
+     * Splits the capacity between the ranges: each gets what the last draw wrote into it (with
+     * `fromLastDraw`) and an even share of the rest.
+     */
     void planRanges(bool fromLastDraw) {
         std::size_t need = 0;
         for (const NodeRange& range : ranges)
