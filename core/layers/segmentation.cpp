@@ -69,6 +69,9 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
                int y1) {
     const int w = stack.width;
     const std::uint8_t* links = conn.links.data();
+    // The root each layer's fragment took at the pixel before: still its set's root, as only
+    // sets of the same layer are joined.
+    std::uint32_t leftRoot[kMaxLinkedLayers];
     for (int y = y0; y < y1; ++y)
         for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
             const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
@@ -78,10 +81,11 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
                 const std::uint32_t f = first + k - 1;
                 const std::uint8_t* l = links + 4 * std::size_t(f);
                 std::uint32_t root = f;
+                // A fragment on the left exists only within the row's span, taken just before.
                 if (x > 0)
                     if (const std::uint32_t g = target(stack, p - 1, k);
                         g != kNone && (l[kLeft] == k || links[4 * std::size_t(g) + kRight] == k))
-                        root = findRoot(parent, g);
+                        root = leftRoot[k - 1];
                 if (y > y0)
                     if (const std::uint32_t g = target(stack, p - std::size_t(w), k);
                         g != kNone && (l[kUp] == k || links[4 * std::size_t(g) + kDown] == k)) {
@@ -94,6 +98,7 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
                             parent[above] = root;
                     }
                 parent[f] = root;
+                leftRoot[k - 1] = root;
             }
         }
 }
