@@ -424,13 +424,9 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     core::LayerStack stack;
     stack.width = view.width;
     stack.height = view.height;
-    stack.offsets.resize(pixels + 1);
-    if (bands.size() < bandCount)
-        bands.resize(bandCount);
 
     // Pass 1, per slice of the list: its nodes in each band. A node naming no pixel of the view
     // (only a corrupt list has one) is left out here and below.
-    sliceCounts.assign(std::size_t(slices) * bandCount, 0);
     const std::function<void(int)> countSlice = [&](int s) {
         std::uint32_t* counts = sliceCounts.data() + std::size_t(s) * bandCount;
         forNodes(sliceFirst(s), sliceFirst(s + 1), [&](const std::uint32_t* words) {
@@ -440,7 +436,7 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     };
     // Where each band's fragments begin, and each slice's within the band: the counts become
     // cursors.
-    std::vector<std::size_t> bandBegin(bandCount + 1, 0);
+    std::vector<std::size_t> bandBegin;
     const auto placeSlices = [&] {
         std::size_t total = 0;
         for (std::size_t b = 0; b < bandCount; ++b) {
@@ -551,7 +547,13 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     };
 
     const core::Error outOfMemory{"layer capture: out of memory for the layer stack"};
+    // Every allocation is in here: running out of memory is an error, not an abort.
     try {
+        stack.offsets.resize(pixels + 1);
+        if (bands.size() < bandCount)
+            bands.resize(bandCount);
+        sliceCounts.assign(std::size_t(slices) * bandCount, 0);
+        bandBegin.assign(bandCount + 1, 0);
         if (!pool->run(slices, countSlice))
             return outOfMemory;
         const std::size_t total = placeSlices();
