@@ -17,14 +17,14 @@
 
 #include "app/cli_commands.h"
 #include "app/cli_timing.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
 #include "core/io/mesh_io.h"
-#include "core/layers/layers.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
+#include "render/depth_compositor.h"
 #include "render/gl_context.h"
-#include "render/gl_layer_capturer.h"
+#include "render/gl_depth_capturer.h"
 #include "render/gpu_connectivity.h"
-#include "render/layer_compositor.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 

@@ -17,8 +17,8 @@
 #include "app/cli_commands.h"
 #include "app/cli_timing.h"
 #include "core/document/document.h"
+#include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/mesh_io.h"
-#include "core/io/mesh_io_in_process.h"
 
 namespace cli {
 

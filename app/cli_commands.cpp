@@ -10,15 +10,15 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/io/gltf_export.h"
-#include "core/io/image_write.h"
+#include "core/io/gltf/gltf_export.h"
+#include "core/io/image/image_write.h"
 #include "core/io/mesh_io.h"
 #include "core/io/ply_write.h"
-#include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "render/gl_context.h"
-#include "render/gl_layer_capturer.h"
+#include "render/gl_depth_capturer.h"
 #include "render/gpu_connectivity.h"
 
 namespace cli {

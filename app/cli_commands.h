@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/result.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/script.h"
-#include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 

@@ -12,8 +12,8 @@
 #include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
-#include "core/io/layer_export.h"
-#include "core/io/project_file.h"
+#include "core/io/paint_layers_export.h"
+#include "core/io/project/project_file.h"
 
 namespace cli {
 

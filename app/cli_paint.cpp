@@ -8,12 +8,12 @@
 #include "app/cli_commands.h"
 #include "core/document/document.h"
 #include "core/document/script.h"
-#include "core/io/gltf_export.h"
+#include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
-#include "core/io/project_file_tip.h"
+#include "core/io/project/project_file.h"
+#include "core/io/project/project_file_tip.h"
 #include "render/gl_context.h"
-#include "render/gl_layer_capturer.h"
+#include "render/gl_depth_capturer.h"
 
 namespace cli {
 

@@ -10,12 +10,12 @@
 #include "app/cli_commands.h"
 #include "app/cli_timing.h"
 #include "core/base/parallel.h"
-#include "core/io/gltf_export.h"
-#include "core/io/image_write.h"
+#include "core/io/gltf/gltf_export.h"
+#include "core/io/image/image_write.h"
 #include "core/io/mesh_io.h"
 #include "core/model/uv_layout.h"
-#include "core/paint/layout_target.h"
-#include "core/paint/uv_raster.h"
+#include "core/paint/targets/layout_target.h"
+#include "core/paint/targets/uv_raster.h"
 
 namespace cli {
 

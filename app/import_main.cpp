@@ -31,9 +31,9 @@
 #include <unistd.h>
 
 #include "app/import_sandbox.h"
-#include "core/io/image_codecs.h"
-#include "core/io/import_protocol.h"
-#include "core/io/mesh_io_in_process.h"
+#include "core/io/image/image_codecs.h"
+#include "core/io/importer/import_protocol.h"
+#include "core/io/importer/mesh_io_in_process.h"
 
 namespace {
 

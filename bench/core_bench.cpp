@@ -7,13 +7,13 @@
 #include <benchmark/benchmark.h>
 
 #include "bench/trefoil_scene.h"
-#include "core/layers/connectivity.h"
-#include "core/layers/cpu_capture.h"
-#include "core/layers/segmentation.h"
-#include "core/paint/paint_layers.h"
-#include "core/paint/paint_target.h"
-#include "core/paint/stroke_tracker.h"
-#include "core/paint/undo_tiles.h"
+#include "core/depth/connectivity.h"
+#include "core/depth/cpu_capture.h"
+#include "core/paint/paint_layers/paint_layers.h"
+#include "core/paint/paint_layers/undo_tiles.h"
+#include "core/paint/targets/paint_target.h"
+#include "core/paint/tracking/stroke_tracker.h"
+#include "core/regions/segmentation.h"
 
 namespace {
 

@@ -10,11 +10,11 @@
 
 #include "bench/trefoil_scene.h"
 #include "core/regions/region_order.h"
+#include "render/depth_capture.h"
+#include "render/depth_compositor.h"
 #include "render/gl_context.h"
-#include "render/gl_layer_capturer.h"
+#include "render/gl_depth_capturer.h"
 #include "render/gpu_connectivity.h"
-#include "render/layer_capture.h"
-#include "render/layer_compositor.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 

@@ -14,8 +14,8 @@
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/stand_in.h"
+#include "render/depth_capture.h"
 #include "render/gl_context.h"
-#include "render/layer_capture.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_target.h"
 

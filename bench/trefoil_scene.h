@@ -12,12 +12,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/io/mesh_io_in_process.h"
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
+#include "core/io/importer/mesh_io_in_process.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/tracking/stroke_tracker.h"
 
 namespace bench {
 

@@ -6,9 +6,9 @@
 #include <string_view>
 
 #include "core/base/result.h"
-#include "core/layers/connectivity.h"
-#include "core/layers/layer_stack.h"
-#include "core/layers/layers.h"
+#include "core/depth/connectivity.h"
+#include "core/depth/depth_layers.h"
+#include "core/depth/depth_stack.h"
 
 namespace render {
 

@@ -8,7 +8,7 @@
 #include <epoxy/gl.h>
 
 #include "core/base/color.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace render {
 

@@ -182,7 +182,7 @@ vec3 srgbToLinear(vec3 c) {
     return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(vec3(0.04045), c));
 }
 
-// The same formula as render::regionColor() (layer_compositor.cpp): keep the two in step.
+// The same formula as render::regionColor() (depth_compositor.cpp): keep the two in step.
 vec3 regionColor(uint region) {
     uint h = region * 0x9e3779b9u;
     float hue = float(h >> 8) / 16777216.0;

@@ -10,7 +10,7 @@
 
 #include "core/base/result.h"
 #include "core/document/script_tips.h"
-#include "core/paint/dab.h"
+#include "core/paint/brush/dab.h"
 
 namespace core {
 

@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/layers/connectivity.h"
+#include "core/depth/connectivity.h"
 
 namespace core {
 

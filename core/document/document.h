@@ -8,18 +8,18 @@
 #include <string>
 
 #include "core/base/progress.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/history.h"
 #include "core/document/session_log.h"
-#include "core/layers/layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/dab.h"
-#include "core/paint/flood_fill.h"
-#include "core/paint/layout_target.h"
-#include "core/paint/paint_target.h"
-#include "core/paint/stroke_stabilizer.h"
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/targets/flood_fill.h"
+#include "core/paint/targets/layout_target.h"
+#include "core/paint/targets/paint_target.h"
+#include "core/paint/tracking/stroke_stabilizer.h"
+#include "core/paint/tracking/stroke_tracker.h"
 #include "core/regions/region_order.h"
 
 namespace core {

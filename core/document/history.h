@@ -9,8 +9,8 @@
 #include <variant>
 #include <vector>
 
-#include "core/paint/paint_target.h"
-#include "core/paint/undo_tiles.h"
+#include "core/paint/paint_layers/undo_tiles.h"
+#include "core/paint/targets/paint_target.h"
 #include "core/regions/region_order.h"
 
 namespace core {

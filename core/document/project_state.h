@@ -12,12 +12,12 @@
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
-#include "core/paint/dab.h"
-#include "core/paint/paint_layers.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/paint_layers/paint_layers.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace core {
 

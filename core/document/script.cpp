@@ -12,11 +12,11 @@
 #include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/document/project_state.h"
-#include "core/document/script_layers.h"
+#include "core/document/script_paint_layers.h"
 #include "core/document/script_stroke.h"
 #include "core/document/script_symmetry.h"
 #include "core/document/script_tips.h"
-#include "core/paint/flood_fill.h"
+#include "core/paint/targets/flood_fill.h"
 
 namespace core {
 

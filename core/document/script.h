@@ -10,8 +10,8 @@
 #include "core/base/progress.h"
 #include "core/base/result.h"
 #include "core/model/camera.h"
-#include "core/paint/dab.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace core {
 

@@ -10,7 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/result.h"
-#include "core/paint/dab.h"
+#include "core/paint/brush/dab.h"
 
 namespace core {
 

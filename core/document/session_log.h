@@ -5,11 +5,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/depth/depth_layers.h"
 #include "core/document/script.h"
-#include "core/layers/layers.h"
 #include "core/model/camera.h"
-#include "core/paint/dab.h"
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/tracking/stroke_tracker.h"
 
 namespace core {
 

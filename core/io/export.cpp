@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
-#include "core/io/gltf_export.h"
-#include "core/io/image_encode.h"
+#include "core/io/gltf/gltf_export.h"
+#include "core/io/image/image_encode.h"
 #include "core/io/ply_write.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace core {
 

@@ -15,7 +15,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/base/text.h"
-#include "core/io/mesh_io_in_process.h"
+#include "core/io/importer/mesh_io_in_process.h"
 #include "core/model/builtin_models.h"
 
 namespace core {

@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/model/uv_layout_internal.h"
-#include "core/paint/uv_raster.h"
+#include "core/paint/targets/uv_raster.h"
 
 namespace core::uvl {
 

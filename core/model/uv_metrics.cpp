@@ -10,7 +10,7 @@
 #include "core/base/parallel.h"
 #include "core/model/mesh_topology.h"
 #include "core/model/uv_layout.h"
-#include "core/paint/uv_raster.h"
+#include "core/paint/targets/uv_raster.h"
 
 namespace core {
 

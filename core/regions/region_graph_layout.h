@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/layers/layer_stack.h"
-#include "core/layers/segmentation.h"
+#include "core/depth/depth_stack.h"
+#include "core/regions/segmentation.h"
 
 namespace core {
 

@@ -6,7 +6,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/tracking/stroke_tracker.h"
 
 namespace core {
 

@@ -8,8 +8,8 @@
 
 #include <glm/vec2.hpp>
 
-#include "core/layers/layer_stack.h"
-#include "core/layers/segmentation.h"
+#include "core/depth/depth_stack.h"
+#include "core/regions/segmentation.h"
 
 namespace core {
 

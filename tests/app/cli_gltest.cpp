@@ -12,9 +12,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "core/depth/cpu_capture.h"
+#include "core/depth/depth_layers.h"
 #include "core/io/mesh_io.h"
-#include "core/layers/cpu_capture.h"
-#include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "tests/app/cli_run.h"

@@ -11,7 +11,7 @@
 #include <unistd.h>
 
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "tests/app/cli_run.h"
 
 namespace cli_layout_gltest {

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 #include <unistd.h>
 
-#include "core/io/gltf_export.h"
+#include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
-#include "core/paint/paint_target.h"
+#include "core/io/project/project_file.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/app/cli_run.h"
 
 namespace cli_project_gltest {

@@ -9,8 +9,8 @@
 #include <unistd.h>
 
 #include "core/io/export.h"
-#include "core/io/image_encode.h"
-#include "core/io/project_file.h"
+#include "core/io/image/image_encode.h"
+#include "core/io/project/project_file.h"
 #include "tests/app/cli_run.h"
 
 namespace cli_tips_gltest {

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "core/paint/undo_tiles.h"
+#include "core/paint/paint_layers/undo_tiles.h"
 
 namespace test {
 

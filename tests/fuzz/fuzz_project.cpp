@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/io/json_depth.h"
-#include "core/io/mesh_io_in_process.h"
-#include "core/io/project_file.h"
+#include "core/io/importer/mesh_io_in_process.h"
+#include "core/io/json_nesting.h"
+#include "core/io/project/project_file.h"
 #include "tests/fuzz/fuzz_input.h"
 
 namespace {

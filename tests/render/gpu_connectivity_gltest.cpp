@@ -13,15 +13,15 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "core/layers/connectivity.h"
-#include "core/layers/cpu_capture.h"
-#include "core/layers/layer_stack.h"
+#include "core/depth/connectivity.h"
+#include "core/depth/cpu_capture.h"
+#include "core/depth/depth_stack.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
+#include "render/depth_capture.h"
 #include "render/gl_context.h"
 #include "render/gpu_connectivity.h"
-#include "render/layer_capture.h"
 #include "render/software_gl.h"
 
 namespace gpu_connectivity_gltest {

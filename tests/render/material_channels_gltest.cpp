@@ -13,11 +13,11 @@
 #include "tests/render/gl_test.h"
 
 #include "core/document/document.h"
-#include "core/io/image_write.h"
+#include "core/io/image/image_write.h"
 #include "core/model/camera.h"
-#include "core/paint/paint_target.h"
-#include "render/gl_layer_capturer.h"
-#include "render/layer_compositor.h"
+#include "core/paint/targets/paint_target.h"
+#include "render/depth_compositor.h"
+#include "render/gl_depth_capturer.h"
 #include "render/offscreen_target.h"
 
 namespace material_channels_gltest {

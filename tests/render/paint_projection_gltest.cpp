@@ -12,12 +12,12 @@
 
 #include "tests/render/gl_test.h"
 
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
-#include "core/paint/paint_target.h"
-#include "render/gl_layer_capturer.h"
+#include "core/paint/targets/paint_target.h"
+#include "render/gl_depth_capturer.h"
 
 namespace paint_projection_gltest {
 

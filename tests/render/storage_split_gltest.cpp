@@ -12,14 +12,14 @@
 
 #include "tests/render/gl_test.h"
 
+#include "core/depth/depth_layers.h"
 #include "core/io/mesh_io.h"
-#include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
-#include "render/gl_layer_capturer.h"
-#include "render/layer_capture.h"
-#include "render/layer_compositor.h"
+#include "render/depth_capture.h"
+#include "render/depth_compositor.h"
+#include "render/gl_depth_capturer.h"
 #include "render/offscreen_target.h"
 
 namespace storage_split_gltest {

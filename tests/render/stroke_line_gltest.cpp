@@ -13,8 +13,8 @@
 #include "tests/render/gl_test.h"
 
 #include "core/document/document.h"
-#include "core/paint/paint_target.h"
-#include "render/gl_layer_capturer.h"
+#include "core/paint/targets/paint_target.h"
+#include "render/gl_depth_capturer.h"
 
 namespace stroke_line_gltest {
 

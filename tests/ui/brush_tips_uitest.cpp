@@ -19,11 +19,11 @@
 #include <vector>
 
 #include "core/document/document.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace brush_tips_uitest {

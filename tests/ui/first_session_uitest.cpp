@@ -40,14 +40,14 @@
 #include <set>
 
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/panels/brush_toolbar.h"
 #include "ui/panels/color_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 // Readable failures: gtest prints a QString as its text.

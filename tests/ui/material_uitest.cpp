@@ -24,14 +24,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/document/document.h"
-#include "core/io/glb_container.h"
+#include "core/io/gltf/glb_container.h"
 #include "core/io/mesh_io.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace material_uitest {

@@ -37,14 +37,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/document/document.h"
-#include "core/io/layer_export.h"
+#include "core/io/paint_layers_export.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/panels/brush_panel.h"
 #include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace paint_layers_uitest {

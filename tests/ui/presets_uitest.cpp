@@ -19,7 +19,7 @@
 
 #include <cstdio>
 
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/ui/window_test.h"
 #include "ui/panels/brush_presets_panel.h"
 #include "ui/shell/quick_guide.h"

@@ -32,14 +32,14 @@
 #include <vector>
 
 #include "core/document/document.h"
-#include "core/io/gltf_export.h"
+#include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
-#include "core/paint/paint_target.h"
+#include "core/io/project/project_file.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/ui/ui_test_util.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace project_uitest {

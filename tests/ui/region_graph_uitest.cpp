@@ -27,7 +27,7 @@
 #include "tests/ui/window_test.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace region_graph_uitest {

@@ -25,7 +25,7 @@
 #include "ui/panels/hidden_regions_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/tools/region_tools.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace regions_uitest {

@@ -19,13 +19,13 @@
 #include <memory>
 
 #include "core/document/document.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace script_uitest {

@@ -32,15 +32,15 @@
 #include <set>
 
 #include "core/document/document.h"
-#include "render/layer_compositor.h"
+#include "render/depth_compositor.h"
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
-#include "ui/panels/layers_panel.h"
+#include "ui/panels/depth_layers_panel.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/panels/segmentation_controls.h"
 #include "ui/shell/main_window.h"
 #include "ui/tools/tool.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace segmentation_uitest {

@@ -16,9 +16,9 @@
 
 #include "core/document/document.h"
 #include "tests/ui/ui_test_util.h"
-#include "ui/panels/layers_panel.h"
+#include "ui/panels/depth_layers_panel.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace single_layer_uitest {

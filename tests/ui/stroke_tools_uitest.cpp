@@ -28,7 +28,7 @@
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace stroke_tools_uitest {

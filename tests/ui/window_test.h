@@ -14,11 +14,11 @@
 #include <memory>
 #include <optional>
 
+#include "core/depth/depth_stack.h"
 #include "core/document/document.h"
-#include "core/layers/layer_stack.h"
 #include "tests/ui/ui_test_util.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace ui_test {

@@ -7,7 +7,7 @@
 #include <QString>
 
 #include "core/document/history.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 
 class QUndoStack;
 

@@ -26,8 +26,8 @@
 #include <QVBoxLayout>
 
 #include "core/base/color.h"
-#include "core/io/project_file_tip.h"
-#include "core/paint/brush_preview.h"
+#include "core/io/project/project_file_tip.h"
+#include "core/paint/brush/brush_preview.h"
 
 namespace ui {
 

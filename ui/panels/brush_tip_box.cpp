@@ -20,7 +20,7 @@
 #include <cmath>
 #include <memory>
 
-#include "core/io/project_file_tip.h"
+#include "core/io/project/project_file_tip.h"
 #include "ui/panels/value_spin_box.h"
 #include "ui/shell/background_task.h"
 

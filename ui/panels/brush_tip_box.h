@@ -5,7 +5,7 @@
 #include <QGroupBox>
 #include <QThreadPool>
 
-#include "core/paint/dab.h"
+#include "core/paint/brush/dab.h"
 
 class QComboBox;
 class QListWidget;

@@ -3,8 +3,8 @@
 
 #include <QToolBar>
 
-#include "core/paint/dab.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/targets/paint_target.h"
 
 class QComboBox;
 class QSpinBox;

@@ -3,7 +3,7 @@
 
 #include <QWidget>
 
-#include "core/paint/flood_fill.h"
+#include "core/paint/targets/flood_fill.h"
 
 class QComboBox;
 class QLabel;

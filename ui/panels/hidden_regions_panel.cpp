@@ -10,9 +10,9 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 #include "core/regions/region_order.h"
-#include "render/layer_compositor.h"
+#include "render/depth_compositor.h"
 
 namespace ui {
 

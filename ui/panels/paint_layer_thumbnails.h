@@ -3,7 +3,7 @@
 
 #include <QImage>
 
-#include "core/paint/paint_layers.h"
+#include "core/paint/paint_layers/paint_layers.h"
 
 namespace ui {
 

@@ -6,7 +6,7 @@
 #include <QColor>
 #include <QWidget>
 
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 
 class QAction;
 class QCheckBox;

@@ -27,8 +27,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/layers/layers.h"
-#include "render/layer_compositor.h"
+#include "core/depth/depth_layers.h"
+#include "render/depth_compositor.h"
 
 namespace ui {
 

@@ -7,8 +7,8 @@
 #include <QRectF>
 #include <QWidget>
 
-#include "core/layers/segmentation.h"
 #include "core/regions/region_graph_layout.h"
+#include "core/regions/segmentation.h"
 
 class QCheckBox;
 class QGraphicsItem;

@@ -3,7 +3,7 @@
 
 #include <QWidget>
 
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 
 class QCheckBox;
 class QComboBox;

@@ -3,7 +3,7 @@
 
 #include <QGroupBox>
 
-#include "core/paint/dab.h"
+#include "core/paint/brush/dab.h"
 
 class QCheckBox;
 class QComboBox;

@@ -30,7 +30,7 @@
 
 #include "core/model/builtin_models.h"
 #include "ui/commands/history_bridge.h"
-#include "ui/panels/layers_panel.h"
+#include "ui/panels/depth_layers_panel.h"
 #include "ui/panels/region_graph_panel.h"
 #include "ui/panels/segmentation_controls.h"
 #include "ui/shell/dock_size_keeper.h"
@@ -39,7 +39,7 @@
 #include "ui/shell/model_loader.h"
 #include "ui/shell/project_controller.h"
 #include "ui/tools/region_tools.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/message_bar.h"
 #include "ui/view/viewport.h"
 

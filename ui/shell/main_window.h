@@ -14,9 +14,9 @@
 #include <QTimer>
 
 #include "core/document/document.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "core/model/mesh.h"
-#include "render/layer_compositor.h"
+#include "render/depth_compositor.h"
 #include "ui/shell/paint_target_job.h"
 #include "ui/shell/preferences.h"
 #include "ui/shell/recent_files.h"

@@ -35,7 +35,7 @@
 #include "ui/shell/script_actions.h"
 #include "ui/tools/region_tools.h"
 #include "ui/tools/tool_cursors.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace ui {

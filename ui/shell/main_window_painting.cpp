@@ -32,7 +32,7 @@
 #include "ui/shell/project_controller.h"
 #include "ui/tools/region_tools.h"
 #include "ui/tools/tool_cursors.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/message_bar.h"
 #include "ui/view/viewport.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "ui/shell/background_task.h"
 
 namespace ui {

@@ -10,7 +10,7 @@
 #include <QString>
 #include <QThreadPool>
 
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "core/model/mesh.h"
 
 namespace ui {

@@ -6,7 +6,7 @@
 #include <QProgressDialog>
 #include <QWidget>
 
-#include "core/paint/layout_target.h"
+#include "core/paint/targets/layout_target.h"
 #include "ui/shell/background_task.h"
 
 namespace ui {

@@ -13,7 +13,7 @@
 
 #include "core/model/mesh.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 
 class QProgressDialog;
 class QWidget;

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <iterator>
 
-#include "core/paint/dab.h"
+#include "core/paint/brush/dab.h"
 
 namespace ui {
 

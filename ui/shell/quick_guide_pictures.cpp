@@ -15,8 +15,8 @@
 #include <glm/vec4.hpp>
 
 #include "core/base/color.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 
 namespace ui {

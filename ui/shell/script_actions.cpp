@@ -13,10 +13,10 @@
 #include <QStatusBar>
 
 #include "core/document/document.h"
-#include "core/io/project_file_tip.h"
+#include "core/io/project/project_file_tip.h"
 #include "ui/commands/history_bridge.h"
 #include "ui/shell/main_window.h"
-#include "ui/view/layer_builder.h"
+#include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
 namespace ui {

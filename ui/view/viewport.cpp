@@ -16,7 +16,7 @@
 
 #include "core/document/document.h"
 #include "render/brush_overlay.h"
-#include "render/gl_layer_capturer.h"
+#include "render/gl_depth_capturer.h"
 #include "render/mesh_renderer.h"
 #include "ui/shell/stand_in_job.h"
 

@@ -13,15 +13,15 @@
 #include <QTimer>
 
 #include "core/base/result.h"
-#include "core/layers/layer_stack.h"
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
+#include "core/depth/depth_stack.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "core/model/stand_in.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 #include "render/brush_overlay.h"
+#include "render/depth_compositor.h"
 #include "render/gpu_connectivity.h"
-#include "render/layer_compositor.h"
 
 namespace core {
 class Document;

@@ -6,7 +6,7 @@
 #include <numeric>
 
 #include "core/document/brush_preset.h"
-#include "core/paint/brush_preview.h"
+#include "core/paint/brush/brush_preview.h"
 
 namespace brush_preset_test {
 

@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
+#include "core/depth/cpu_capture.h"
 #include "core/document/document.h"
 #include "core/document/script.h"
-#include "core/layers/cpu_capture.h"
 #include "core/model/builtin_models.h"
-#include "core/paint/layout_target.h"
+#include "core/paint/targets/layout_target.h"
 #include "tests/core/test_scenes.h"
 
 namespace layout_target_test {

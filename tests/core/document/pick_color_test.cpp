@@ -10,10 +10,10 @@
 #include <gtest/gtest.h>
 
 #include "core/base/color.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
-#include "core/paint/dab.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/brush/dab.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace pick_color_test {
 

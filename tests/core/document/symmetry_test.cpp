@@ -16,7 +16,7 @@
 
 #include "core/document/document.h"
 #include "core/document/script_symmetry.h"
-#include "core/paint/symmetry.h"
+#include "core/paint/brush/symmetry.h"
 
 namespace symmetry_test {
 

@@ -18,9 +18,9 @@
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/glb_container.h"
+#include "core/io/gltf/glb_container.h"
 
 namespace glb_container_test {
 

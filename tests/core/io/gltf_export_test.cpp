@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/io/gltf_export.h"
+#include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"

@@ -21,9 +21,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/io/import_protocol.h"
+#include "core/io/importer/import_protocol.h"
+#include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/mesh_io.h"
-#include "core/io/mesh_io_in_process.h"
 #include "tests/core/test_files.h"
 
 namespace importer_test {

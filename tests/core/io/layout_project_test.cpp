@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
+#include "core/depth/cpu_capture.h"
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
-#include "core/layers/cpu_capture.h"
+#include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 

@@ -23,8 +23,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/mesh_io.h"
-#include "core/io/mesh_io_in_process.h"
 #include "tests/core/test_files.h"
 
 namespace fs = std::filesystem;

@@ -15,11 +15,11 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "core/depth/cpu_capture.h"
 #include "core/document/document.h"
-#include "core/io/gltf_export.h"
-#include "core/io/mesh_io_in_process.h"
-#include "core/io/project_file.h"
-#include "core/layers/cpu_capture.h"
+#include "core/io/gltf/gltf_export.h"
+#include "core/io/importer/mesh_io_in_process.h"
+#include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 

@@ -21,9 +21,9 @@
 #include <tiny_gltf.h>
 
 #include "core/document/document.h"
-#include "core/io/gltf_export.h"
+#include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
 #include "tests/core/test_files.h"
 

@@ -23,7 +23,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "tests/core/io/save_crash_versions.h"
 #include "tests/core/test_files.h"
 

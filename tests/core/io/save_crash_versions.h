@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "core/io/project_file.h"
+#include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
 #include "core/model/mesh.h"
 

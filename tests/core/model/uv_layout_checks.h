@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "core/model/uv_layout.h"
-#include "core/paint/uv_raster.h"
+#include "core/paint/targets/uv_raster.h"
 
 namespace uvcheck {
 

@@ -8,7 +8,7 @@
 
 #include "core/model/builtin_models.h"
 #include "core/model/uv_layout.h"
-#include "core/paint/uv_raster.h"
+#include "core/paint/targets/uv_raster.h"
 #include "tests/core/model/uv_layout_checks.h"
 
 namespace uv_layout_test {

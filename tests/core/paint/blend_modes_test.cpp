@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
-#include "core/paint/blend_modes.h"
+#include "core/paint/paint_layers/blend_modes.h"
 
 namespace blend_modes_test {
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Brush tips (core/paint/brush_tips.h): the built-in set, a turned tip's weights, the seeded
+// Brush tips (core/paint/brush/brush_tips.h): the built-in set, a turned tip's weights, the seeded
 // jitter of a stroke's dabs, and what a textured tip paints on a texture.
 #include <algorithm>
 #include <cmath>
@@ -13,11 +13,11 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/brush_tips.h"
-#include "core/paint/paint_target.h"
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/brush/brush_tips.h"
+#include "core/paint/targets/paint_target.h"
+#include "core/paint/tracking/stroke_tracker.h"
 #include "tests/core/test_scenes.h"
 
 namespace brush_tips_test {

@@ -9,10 +9,10 @@
 
 #include <gtest/gtest.h>
 
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
-#include "core/paint/paint_layers.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/paint_layers/paint_layers.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/core/test_scenes.h"
 
 namespace composite_update_test {

@@ -14,12 +14,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
-#include "core/paint/paint_layers.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/paint_layers/paint_layers.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace dab_golden_test {
 

@@ -14,11 +14,11 @@
 #include <gtest/gtest.h>
 
 #include "core/base/color.h"
+#include "core/depth/depth_layers.h"
 #include "core/document/document.h"
-#include "core/layers/layers.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/flood_fill.h"
-#include "core/paint/paint_target.h"
+#include "core/paint/targets/flood_fill.h"
+#include "core/paint/targets/paint_target.h"
 
 namespace flood_fill_test {
 

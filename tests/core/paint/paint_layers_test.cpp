@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/paint/paint_layers.h"
+#include "core/paint/paint_layers/paint_layers.h"
 
 namespace paint_layers_test {
 

@@ -12,12 +12,12 @@
 #include <gtest/gtest.h>
 
 #include "core/base/color.h"
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/paint_target.h"
-#include "core/paint/undo_tiles.h"
+#include "core/paint/paint_layers/undo_tiles.h"
+#include "core/paint/targets/paint_target.h"
 #include "tests/core/test_scenes.h"
 
 namespace paint_target_test {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The lazy-mouse stroke stabilizer (core/paint/stroke_stabilizer.h) on its own: a jittered path
-// comes out smooth, the tip trails by the string's length, release catches up or not, and off it
-// passes every point through.
+// The lazy-mouse stroke stabilizer (core/paint/tracking/stroke_stabilizer.h) on its own: a jittered
+// path comes out smooth, the tip trails by the string's length, release catches up or not, and off
+// it passes every point through.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
-#include "core/paint/stroke_stabilizer.h"
+#include "core/paint/tracking/stroke_stabilizer.h"
 
 namespace stroke_stabilizer_test {
 

@@ -18,11 +18,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "core/layers/layers.h"
+#include "core/depth/depth_layers.h"
 #include "core/model/builtin_models.h"
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/tracking/stroke_tracker.h"
 
 namespace stroke_tracker_test {
 

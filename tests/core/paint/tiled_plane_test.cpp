@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "core/paint/tiled_plane.h"
-#include "core/paint/undo_tiles.h"
+#include "core/paint/paint_layers/tiled_plane.h"
+#include "core/paint/paint_layers/undo_tiles.h"
 
 namespace tiled_plane_test {
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/paint/undo_tiles.h"
+#include "core/paint/paint_layers/undo_tiles.h"
 #include "tests/core/fake_tile_store.h"
 
 namespace undo_tiles_test {

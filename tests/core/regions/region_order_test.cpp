@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/paint/stroke_tracker.h"
+#include "core/paint/tracking/stroke_tracker.h"
 #include "core/regions/region_order.h"
 
 namespace region_order_test {

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <memory>
+
+#include "core/base/result.h"
+#include "core/depth/connectivity.h"
+#include "core/depth/depth_stack.h"
+#include "core/model/camera.h"
+#include "core/model/mesh.h"
+#include "core/model/mesh_topology.h"
+#include "core/regions/segmentation.h"
+
+namespace core {
+
+/** What the capture step costs, as reported by a LayerCapturer. */
+struct CaptureStats {
+    double gpuMs = 0.0;     // drawing the fragments (0 for a CPU capturer)
+    double resolveMs = 0.0; // sorting them into the LayerStack
+    int recaptures = 0;     // extra draws because a buffer had to grow
+};
+
+/**
+ * The GPU part of build_layers (docs/architecture.md §2): render implements it on OpenGL; tests and
+ * headless use without GL can use CpuLayerCapturer.
+ */
+class LayerCapturer {
+public:
+    virtual ~LayerCapturer() = default;
+    /** Makes mesh the one captured from now on. */
+    virtual void setMesh(const Mesh& mesh) = 0;
+    /** Every front-facing fragment of view (both sides when !cullBackFaces), or an Error. */
+    virtual Result<LayerStack> capture(const View& view, bool cullBackFaces,
+                                       CaptureStats* stats) = 0;
+};
+
+/** The CPU stand-in (core/cpu_capture.h). Keeps a copy of the mesh. */
+class CpuLayerCapturer : public LayerCapturer {
+public:
+    void setMesh(const Mesh& mesh) override { m_mesh = mesh; }
+    Result<LayerStack> capture(const View& view, bool cullBackFaces, CaptureStats* stats) override;
+
+private:
+    Mesh m_mesh;
+};
+
+/**
+ * Computes pixel connectivity for build_layers. Without one, core's CPU reference
+ * (computeConnectivity) is used; render offers an OpenGL compute pass with the same output.
+ */
+class ConnectivityEngine {
+public:
+    virtual ~ConnectivityEngine() = default;
+    virtual Connectivity compute(const LayerStack& stack, const ConnectivityOptions& options,
+                                 const SurfaceGeometry* geometry) = 0;
+};
+
+struct LayerOptions {
+    ConnectionTest test = ConnectionTest::Surface;
+    float threshold = 0.001f; // unit-cube units
+    bool cullBackFaces = true;
+    unsigned threads = 0; // 0 = hardware concurrency
+};
+
+/** Milliseconds of the parts of build_layers (the paper's Table 2 splits them like this). */
+struct LayerTimings {
+    CaptureStats capture;
+    double connectivityMs = 0.0;
+    double surfaceMs = 0.0;      // the Surface test's planes of the triangles this view shows
+    double segmentationMs = 0.0; // region labels and the region graph
+    double graphMs = 0.0;        // ... of which assembling the region graph
+    double totalMs() const {
+        return capture.gpuMs + capture.resolveMs + surfaceMs + connectivityMs + segmentationMs;
+    }
+};
+
+/** Everything build_layers derives from one view: layers, connectivity, regions, region graph. */
+struct Layers {
+    View view;
+    LayerOptions options;
+    LayerStack stack;
+    SurfaceGeometry geometry; // the Surface test's per-view planes, kept for re-segmenting
+    Connectivity connectivity;
+    Segmentation segmentation;
+    LayerTimings timings;
+};
+
+/**
+ * build_layers (docs/architecture.md §3 step 2): capture, pixel connectivity, segmentation, region
+ * graph. topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
+ */
+Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
+                           const View& view, const LayerOptions& options,
+                           ConnectivityEngine* engine = nullptr);
+
+/**
+ * The CPU part of build_layers, for callers that capture themselves (the GUI captures on its GL
+ * thread and finishes on a worker thread): connectivity, segmentation and region graph of stack.
+ */
+Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
+                    const MeshTopology& topology, const View& view, const LayerOptions& options,
+                    ConnectivityEngine* engine = nullptr);
+
+/**
+ * Recomputes connectivity and regions with new options (threshold, test) without capturing
+ * again, as the threshold slider does. The capture options (cullBackFaces) are kept.
+ */
+void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options,
+                     ConnectivityEngine* engine = nullptr);
+
+} // namespace core

@@ -1,0 +1,580 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Binary glTF 2.0 writer. The GLB container is written here with nlohmann::json rather than
+// through tinygltf's writer: the layout (one buffer, 4-byte aligned views, strides, PNG images in
+// views) is then exactly what mesh_io_gltf.cpp reads back, and no image is re-encoded behind our
+// back. Images are encoded to PNG in memory by encodeImage() (image_encode.h).
+#include "core/io/gltf/gltf_export.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <new>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include <glm/common.hpp>
+
+#include "core/io/atomic_write.h"
+#include "core/io/gltf/glb_container.h"
+#include "core/io/image/image_encode.h"
+#include "core/io/json_nesting.h"
+
+static_assert(std::endian::native == std::endian::little,
+              "glTF buffers are little-endian and are written with memcpy");
+
+namespace core {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+using Bytes = std::vector<std::uint8_t>;
+
+constexpr std::uint64_t kMaxGlbBytes = 0xFFFFFFFFu; // the header's length is 32 bits
+constexpr int kUnsignedInt = 5125;
+constexpr int kFloat = 5126;
+constexpr int kArrayBuffer = 34962;
+constexpr int kElementArrayBuffer = 34963;
+constexpr std::uint64_t kMaxJsonBytes = 256ull << 20;
+
+std::size_t padded4(std::size_t n) {
+    return (n + 3) & ~std::size_t{3};
+}
+
+void putU32(Bytes& out, std::uint32_t v) {
+    const auto at = out.size();
+    out.resize(at + 4);
+    std::memcpy(out.data() + at, &v, 4);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Geometry
+
+/** Consecutive triangles [first, first + count) with one material. */
+struct Run {
+    std::size_t firstTriangle = 0;
+    std::size_t triangleCount = 0;
+    std::uint32_t material = 0;
+};
+
+std::vector<Run> materialRuns(const Mesh& mesh) {
+    std::vector<Run> runs;
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        if (runs.empty() || runs.back().material != mesh.triangleMaterial[t])
+            runs.push_back(Run{t, 0, mesh.triangleMaterial[t]});
+        ++runs.back().triangleCount;
+    }
+    return runs;
+}
+
+/** The binary chunk under construction and the buffer views into it. */
+class BinBuilder {
+public:
+    /** Appends size bytes as a new buffer view (4-byte aligned); returns its index. */
+    int addView(const void* data, std::size_t size, int target, int stride) {
+        const std::size_t offset = m_bytes.size();
+        m_bytes.resize(offset + padded4(size), 0);
+        std::memcpy(m_bytes.data() + offset, data, size);
+        Json view = {{"buffer", 0}, {"byteOffset", offset}, {"byteLength", size}};
+        if (stride > 0)
+            view["byteStride"] = stride;
+        if (target > 0)
+            view["target"] = target;
+        m_views.push_back(std::move(view));
+        return static_cast<int>(m_views.size() - 1);
+    }
+    Bytes& bytes() { return m_bytes; }
+    Json& views() { return m_views; }
+
+private:
+    Bytes m_bytes;
+    Json m_views = Json::array();
+};
+
+/** Vertex data of all runs, one run after the other; each run's vertices in original order. */
+struct RunGeometry {
+    std::vector<float> positions, normals, uvs, colors;
+    std::vector<std::uint32_t> indices; // local to each run
+    struct Range {
+        std::size_t firstVertex = 0, vertexCount = 0, firstIndex = 0, indexCount = 0;
+        glm::vec3 min{0.0f}, max{0.0f};
+    };
+    std::vector<Range> ranges; // per run
+};
+
+RunGeometry gatherRuns(const Mesh& mesh, const std::vector<Run>& runs) {
+    RunGeometry g;
+    const std::size_t n = mesh.vertexCount();
+    constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> local(n, kNone);
+    std::vector<std::uint32_t> used;
+    g.positions.reserve(n * 3);
+    g.normals.reserve(n * 3);
+    g.uvs.reserve(mesh.hasUvs() ? n * 2 : 0);
+    g.colors.reserve(mesh.hasColors() ? n * 4 : 0);
+    g.indices.reserve(mesh.indices.size());
+    for (const Run& run : runs) {
+        const std::size_t begin = run.firstTriangle * 3, end = begin + run.triangleCount * 3;
+        used.clear();
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::uint32_t v = mesh.indices[i];
+            if (local[v] == kNone) {
+                local[v] = 0;
+                used.push_back(v);
+            }
+        }
+        // Original order: the loader keeps a primitive's vertices in accessor order.
+        std::sort(used.begin(), used.end());
+        for (std::size_t k = 0; k < used.size(); ++k)
+            local[used[k]] = static_cast<std::uint32_t>(k);
+
+        RunGeometry::Range r;
+        r.firstVertex = g.positions.size() / 3;
+        r.vertexCount = used.size();
+        r.firstIndex = g.indices.size();
+        r.indexCount = end - begin;
+        r.min = r.max = mesh.positions[used.front()];
+        for (std::uint32_t v : used) {
+            const glm::vec3& p = mesh.positions[v];
+            r.min = glm::min(r.min, p);
+            r.max = glm::max(r.max, p);
+            g.positions.insert(g.positions.end(), {p.x, p.y, p.z});
+            const glm::vec3& nv = mesh.normals[v];
+            g.normals.insert(g.normals.end(), {nv.x, nv.y, nv.z});
+            if (mesh.hasUvs())
+                g.uvs.insert(g.uvs.end(), {mesh.uvs[v].x, mesh.uvs[v].y});
+            if (mesh.hasColors()) {
+                const glm::vec4& c = mesh.colors[v];
+                g.colors.insert(g.colors.end(), {c.r, c.g, c.b, c.a});
+            }
+        }
+        for (std::size_t i = begin; i < end; ++i)
+            g.indices.push_back(local[mesh.indices[i]]);
+        for (std::uint32_t v : used)
+            local[v] = kNone;
+        g.ranges.push_back(r);
+    }
+    return g;
+}
+
+Json vec(const glm::vec3& v) {
+    return Json::array({v.x, v.y, v.z});
+}
+
+/** A finite factor component, as the loader would read it (non-finite ones become 1). */
+double factor(float v) {
+    return std::isfinite(v) ? static_cast<double>(v) : 1.0;
+}
+
+struct GlbParts {
+    Bytes head; // GLB header, JSON chunk, BIN chunk header
+    Bytes bin;  // BIN chunk data, 4-byte aligned
+};
+
+Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
+                             const ProgressFn& progress) {
+    Json extras = additions.extras;
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
+    if (!extras.is_null() && !extras.is_object())
+        return Error{"the extras to save are not a JSON object"};
+    if (!reportProgress(progress, 0.0))
+        return cancelledError();
+
+    const std::vector<Run> runs = materialRuns(mesh);
+    const RunGeometry g = gatherRuns(mesh, runs);
+    BinBuilder bin;
+    const int posView = bin.addView(g.positions.data(), g.positions.size() * 4, kArrayBuffer, 12);
+    const int nrmView = bin.addView(g.normals.data(), g.normals.size() * 4, kArrayBuffer, 12);
+    const int uvView =
+        mesh.hasUvs() ? bin.addView(g.uvs.data(), g.uvs.size() * 4, kArrayBuffer, 8) : -1;
+    const int colView =
+        mesh.hasColors() ? bin.addView(g.colors.data(), g.colors.size() * 4, kArrayBuffer, 16) : -1;
+    const int idxView = bin.addView(g.indices.data(), g.indices.size() * 4, kElementArrayBuffer, 0);
+    if (!reportProgress(progress, 0.2))
+        return cancelledError();
+
+    Json accessors = Json::array();
+    auto addAccessor = [&](int view, std::size_t element, std::size_t first, std::size_t count,
+                           int componentType, const char* type) {
+        accessors.push_back({{"bufferView", view},
+                             {"byteOffset", first * element},
+                             {"componentType", componentType},
+                             {"count", count},
+                             {"type", type}});
+        return static_cast<int>(accessors.size() - 1);
+    };
+    Json primitives = Json::array();
+    for (std::size_t r = 0; r < runs.size(); ++r) {
+        const RunGeometry::Range& range = g.ranges[r];
+        Json attributes;
+        const int pos =
+            addAccessor(posView, 12, range.firstVertex, range.vertexCount, kFloat, "VEC3");
+        accessors[static_cast<std::size_t>(pos)]["min"] = vec(range.min);
+        accessors[static_cast<std::size_t>(pos)]["max"] = vec(range.max);
+        attributes["POSITION"] = pos;
+        attributes["NORMAL"] =
+            addAccessor(nrmView, 12, range.firstVertex, range.vertexCount, kFloat, "VEC3");
+        if (uvView >= 0)
+            attributes["TEXCOORD_0"] =
+                addAccessor(uvView, 8, range.firstVertex, range.vertexCount, kFloat, "VEC2");
+        if (colView >= 0)
+            attributes["COLOR_0"] =
+                addAccessor(colView, 16, range.firstVertex, range.vertexCount, kFloat, "VEC4");
+        const int idx =
+            addAccessor(idxView, 4, range.firstIndex, range.indexCount, kUnsignedInt, "SCALAR");
+        primitives.push_back({{"attributes", std::move(attributes)},
+                              {"indices", idx},
+                              {"material", runs[r].material},
+                              {"mode", 4}});
+    }
+
+    // Textures the materials use, in order of first use (the order the loader gives them).
+    std::vector<int> textureIndex(mesh.textures.size(), -1);
+    std::vector<std::size_t> written; // mesh texture per glTF texture
+    for (const Material& m : mesh.materials) {
+        if (m.baseColorTexture < 0)
+            continue;
+        const auto t = static_cast<std::size_t>(m.baseColorTexture);
+        if (textureIndex[t] < 0 && !mesh.textures[t].empty()) {
+            textureIndex[t] = static_cast<int>(written.size());
+            written.push_back(t);
+        }
+    }
+    Json images = Json::array(), textures = Json::array();
+    for (std::size_t k = 0; k < written.size(); ++k) {
+        const Result<Bytes> png = encodeImage(mesh.textures[written[k]], ExportFormat::Png8);
+        if (!png)
+            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG (" +
+                             png.error() + ")",
+                         png.errorKind()};
+        const int view = bin.addView(png->data(), png->size(), 0, 0);
+        images.push_back({{"bufferView", view},
+                          {"mimeType", "image/png"},
+                          {"name", "texture " + std::to_string(written[k])}});
+        textures.push_back({{"source", k}, {"sampler", 0}});
+        if (!reportProgress(progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
+                                                static_cast<double>(written.size())))
+            return cancelledError();
+    }
+
+    // Metallic-roughness images the materials use, after the base colour textures.
+    std::vector<int> mrTexture(additions.metallicRoughness.size(), -1);
+    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
+        const int source = mi < additions.materialMetallicRoughness.size()
+                               ? additions.materialMetallicRoughness[mi]
+                               : -1;
+        if (source < 0 || std::size_t(source) >= mrTexture.size() ||
+            mrTexture[std::size_t(source)] >= 0 ||
+            additions.metallicRoughness[std::size_t(source)].empty())
+            continue;
+        const Result<Bytes> png =
+            encodeImage(additions.metallicRoughness[std::size_t(source)], ExportFormat::Png8);
+        if (!png)
+            return Error{"metallic-roughness texture " + std::to_string(source) +
+                             " cannot be encoded as PNG (" + png.error() + ")",
+                         png.errorKind()};
+        const int view = bin.addView(png->data(), png->size(), 0, 0);
+        images.push_back({{"bufferView", view},
+                          {"mimeType", "image/png"},
+                          {"name", "metallic-roughness " + std::to_string(source)}});
+        mrTexture[std::size_t(source)] = static_cast<int>(textures.size());
+        textures.push_back({{"source", images.size() - 1}, {"sampler", 0}});
+    }
+    if (!additions.attachments.empty() && extras.is_object()) {
+        Json views = Json::array();
+        for (const Bytes& blob : additions.attachments)
+            views.push_back(bin.addView(blob.data(), blob.size(), 0, 0));
+        extras[additions.attachmentsAt] = std::move(views);
+    }
+
+    Json materials = Json::array();
+    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
+        const Material& m = mesh.materials[mi];
+        const int mrSource = mi < additions.materialMetallicRoughness.size()
+                                 ? additions.materialMetallicRoughness[mi]
+                                 : -1;
+        const int mr = mrSource >= 0 && std::size_t(mrSource) < mrTexture.size()
+                           ? mrTexture[std::size_t(mrSource)]
+                           : -1;
+        Json pbr = {{"baseColorFactor",
+                     Json::array({factor(m.baseColorFactor.r), factor(m.baseColorFactor.g),
+                                  factor(m.baseColorFactor.b), factor(m.baseColorFactor.a)})},
+                    {"metallicFactor", mr >= 0 ? 1.0 : 0.0},
+                    {"roughnessFactor", 1.0}};
+        if (mr >= 0)
+            pbr["metallicRoughnessTexture"] = {{"index", mr}};
+        if (m.baseColorTexture >= 0 &&
+            textureIndex[static_cast<std::size_t>(m.baseColorTexture)] >= 0)
+            pbr["baseColorTexture"] = {
+                {"index", textureIndex[static_cast<std::size_t>(m.baseColorTexture)]}};
+        Json material = {{"pbrMetallicRoughness", std::move(pbr)}};
+        if (!m.name.empty())
+            material["name"] = m.name;
+        materials.push_back(std::move(material));
+    }
+
+    Json asset = {{"version", "2.0"}, {"generator", "LayerPaint"}};
+    if (extras.is_object())
+        asset["extras"] = extras;
+    Json root = {
+        {"asset", std::move(asset)},
+        {"scene", 0},
+        {"scenes", Json::array({{{"nodes", Json::array({0})}}})},
+        {"nodes", Json::array({{{"mesh", 0}, {"name", "mesh"}}})},
+        {"meshes", Json::array({{{"primitives", std::move(primitives)}, {"name", "mesh"}}})},
+        {"materials", std::move(materials)},
+        {"accessors", std::move(accessors)},
+        {"bufferViews", std::move(bin.views())},
+        {"buffers", Json::array({{{"byteLength", bin.bytes().size()}}})}};
+    if (!textures.empty()) {
+        // Painting wraps UVs outside 0..1 (paint_target.h), so do viewers.
+        root["samplers"] = Json::array(
+            {{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}});
+        root["images"] = std::move(images);
+        root["textures"] = std::move(textures);
+    }
+
+    // Invalid UTF-8 (material names from other formats, extras) is replaced, not thrown on.
+    std::string json = root.dump(-1, ' ', false, Json::error_handler_t::replace);
+    json.resize(padded4(json.size()), ' ');
+    const std::uint64_t total = 12 + 8 + json.size() + 8 + bin.bytes().size();
+    if (total > kMaxGlbBytes)
+        return Error{"the mesh and its textures are too large for a binary glTF file (" +
+                     std::to_string(total) + " bytes, at most 4 GiB)"};
+
+    GlbParts parts;
+    parts.head.reserve(28 + json.size());
+    putU32(parts.head, glb::kMagic);
+    putU32(parts.head, 2);
+    putU32(parts.head, static_cast<std::uint32_t>(total));
+    putU32(parts.head, static_cast<std::uint32_t>(json.size()));
+    putU32(parts.head, glb::kChunkJson);
+    parts.head.insert(parts.head.end(), json.begin(), json.end());
+    putU32(parts.head, static_cast<std::uint32_t>(bin.bytes().size()));
+    putU32(parts.head, glb::kChunkBin);
+    parts.bin = std::move(bin.bytes());
+    if (!reportProgress(progress, 0.95))
+        return cancelledError();
+    return parts;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading extras
+
+/** The glTF JSON of path and, for a binary file, where its BIN chunk's data is. */
+struct GltfRoot {
+    Json root;
+    std::uint64_t binOffset = 0, binLength = 0; // 0, 0: no BIN chunk
+};
+
+Result<GltfRoot> readRoot(const std::string& path) {
+    std::error_code ec;
+    if (!fs::is_regular_file(path, ec))
+        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
+                     ErrorKind::Io};
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (ec)
+        return Error{"cannot be read (" + ec.message() + ")", ErrorKind::Io};
+    if (size == 0)
+        return Error{"is empty"};
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        return Error{"cannot be read", ErrorKind::Io};
+    std::uint8_t header[glb::kHeadBytes] = {};
+    const auto headSize = std::min<std::uint64_t>(glb::kHeadBytes, size);
+    in.read(reinterpret_cast<char*>(header), static_cast<std::streamsize>(headSize));
+    const std::span<const std::uint8_t> head(header, static_cast<std::size_t>(headSize));
+    std::uint64_t jsonOffset = 0, jsonLength = size;
+    if (glb::hasMagic(head)) {
+        Result<glb::Layout> layout = glb::readHead(head, size);
+        if (!layout)
+            return layout.takeError();
+        jsonOffset = layout->jsonOffset;
+        jsonLength = layout->jsonLength;
+    }
+    if (jsonLength > kMaxJsonBytes)
+        return Error{"the glTF JSON is too large (" + std::to_string(jsonLength) + " bytes)"};
+    std::string text(static_cast<std::size_t>(jsonLength), '\0');
+    in.clear();
+    in.seekg(static_cast<std::streamoff>(jsonOffset));
+    if (!in.read(text.data(), static_cast<std::streamsize>(jsonLength)))
+        return Error{"cannot be read", ErrorKind::Io};
+    if (jsonNestingTooDeep(text))
+        return Error{"the JSON is nested too deeply"};
+    Json root;
+    try {
+        root = Json::parse(text);
+    } catch (const Json::exception& e) {
+        std::string what = e.what();
+        if (const std::size_t p = what.find("] "); p != std::string::npos)
+            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
+        return Error{"is not valid glTF JSON (" + what + ")"};
+    }
+    if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
+        return Error{"is not a glTF file (no asset)"};
+    GltfRoot out;
+    const std::uint64_t binHead = jsonOffset + jsonLength;
+    if (glb::hasMagic(head) && binHead + 8 <= size) {
+        std::uint8_t chunk[8] = {};
+        in.seekg(static_cast<std::streamoff>(binHead));
+        if (in.read(reinterpret_cast<char*>(chunk), 8)) {
+            std::uint32_t length = 0, type = 0;
+            std::memcpy(&length, chunk, 4);
+            std::memcpy(&type, chunk + 4, 4);
+            if (type == glb::kChunkBin && binHead + 8 + length <= size) {
+                out.binOffset = binHead + 8;
+                out.binLength = length;
+            }
+        }
+    }
+    out.root = std::move(root);
+    return out;
+}
+
+Result<Json> readExtras(const std::string& path) {
+    Result<GltfRoot> gltf = readRoot(path);
+    if (!gltf)
+        return gltf.takeError();
+    const Json& asset = gltf->root["asset"];
+    const auto it = asset.find("extras");
+    if (it == asset.end())
+        return Json::object();
+    if (!it->is_object())
+        return Error{"asset.extras is not a JSON object"};
+    return *it;
+}
+
+} // namespace
+
+Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::json& extras,
+                                            const ProgressFn& progress) {
+    GlbAdditions additions;
+    additions.extras = extras;
+    return encodeGlbWith(mesh, additions, progress);
+}
+
+Result<std::vector<std::uint8_t>> encodeGlbWith(const Mesh& mesh, const GlbAdditions& additions,
+                                                const ProgressFn& progress) {
+    try {
+        Result<GlbParts> parts = encodeParts(mesh, additions, progress);
+        if (!parts)
+            return parts.takeError();
+        Bytes out = std::move(parts->head);
+        out.insert(out.end(), parts->bin.begin(), parts->bin.end());
+        return out;
+    } catch (const std::bad_alloc&) {
+        return Error{"not enough memory to encode the file"};
+    } catch (const std::exception& e) {
+        return Error{std::string("cannot be encoded (") + e.what() + ")"};
+    }
+}
+
+Status saveGlb(const std::string& path, const Mesh& mesh, const nlohmann::json& extras,
+               const ProgressFn& progress, bool keepBackup) {
+    GlbAdditions additions;
+    additions.extras = extras;
+    return saveGlbWith(path, mesh, additions, progress, keepBackup);
+}
+
+Status saveGlbWith(const std::string& path, const Mesh& mesh, const GlbAdditions& additions,
+                   const ProgressFn& progress, bool keepBackup) {
+    try {
+        Result<GlbParts> parts = encodeParts(mesh, additions, progress);
+        if (!parts)
+            return Status(Error{path + ": " + parts.error(), parts.errorKind()});
+        const std::span<const std::uint8_t> spans[] = {parts->head, parts->bin};
+        Status status = writePartsAtomically(path, spans, keepBackup);
+        if (status)
+            reportProgress(progress, 1.0); // too late to cancel: the file is saved
+        return status;
+    } catch (const std::bad_alloc&) {
+        return Status(Error{path + ": not enough memory to save the file"});
+    } catch (const std::exception& e) {
+        return Status(Error{path + ": cannot be saved (" + std::string(e.what()) + ")"});
+    }
+}
+
+Result<nlohmann::json> readGlbExtras(const std::string& path) {
+    try {
+        Result<Json> extras = readExtras(path);
+        if (!extras)
+            return Error{path + ": " + extras.error(), extras.errorKind()};
+        return extras;
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to read the file"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
+    }
+}
+
+namespace {
+
+Result<std::vector<Bytes>> readViews(const std::string& path, const std::vector<int>& wanted,
+                                     std::uint64_t maxBytes) {
+    Result<GltfRoot> gltf = readRoot(path);
+    if (!gltf)
+        return gltf.takeError();
+    const Json& root = gltf->root;
+    const auto views = root.find("bufferViews");
+    std::vector<Bytes> out;
+    std::uint64_t total = 0;
+    std::ifstream in(path, std::ios::binary);
+    for (const int v : wanted) {
+        const std::string name = "buffer view " + std::to_string(v);
+        if (views == root.end() || !views->is_array() || v < 0 || std::size_t(v) >= views->size() ||
+            !(*views)[std::size_t(v)].is_object())
+            return Error{name + " is missing"};
+        const Json& view = (*views)[std::size_t(v)];
+        const auto number = [&](const char* key) -> std::optional<std::uint64_t> {
+            const auto it = view.find(key);
+            if (it == view.end())
+                return std::uint64_t{0};
+            if (!it->is_number_unsigned())
+                return std::nullopt;
+            return it->get<std::uint64_t>();
+        };
+        const std::optional<std::uint64_t> offset = number("byteOffset"),
+                                           length = number("byteLength");
+        if (!offset || !length || view.value("buffer", Json(-1)) != Json(0) ||
+            *offset > gltf->binLength || *length > gltf->binLength - *offset)
+            return Error{name + " lies outside the binary chunk"};
+        total += *length;
+        if (total > maxBytes)
+            return Error{"the paint layer images are too large (over " + std::to_string(maxBytes) +
+                         " bytes)"};
+        Bytes bytes(static_cast<std::size_t>(*length));
+        in.seekg(static_cast<std::streamoff>(gltf->binOffset + *offset));
+        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(*length)))
+            return Error{"cannot be read", ErrorKind::Io};
+        out.push_back(std::move(bytes));
+    }
+    return out;
+}
+
+} // namespace
+
+Result<std::vector<std::vector<std::uint8_t>>>
+readGlbViews(const std::string& path, const std::vector<int>& views, std::uint64_t maxBytes) {
+    try {
+        Result<std::vector<Bytes>> out = readViews(path, views, maxBytes);
+        if (!out)
+            return Error{path + ": " + out.error(), out.errorKind()};
+        return out;
+    } catch (const std::bad_alloc&) {
+        return Error{path + ": not enough memory to read the file"};
+    } catch (const std::exception& e) {
+        return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
+    }
+}
+
+} // namespace core

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Flattening a parsed glTF scene into one Mesh: the default scene (else scene 0; without any, the
+// root nodes or the meshes in order, with a warning) depth-first in document order, each node
+// reached once (a cycle or a node with two parents is an error: sharing would let a small file
+// instance geometry exponentially); each primitive contributes the vertices its indices
+// reference, in their original order; materials and their base colour textures.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <tiny_gltf.h>
+
+#include "core/base/progress.h"
+#include "core/base/result.h"
+#include "core/io/gltf/gltf_file_access.h"
+#include "core/io/mesh_io.h"
+#include "core/model/mesh.h"
+
+namespace core::detail::gltf {
+
+/**
+ * model (as tinygltf parsed it from json) as a Mesh without normals repaired (finishMesh() does
+ * that); quantized allows KHR_mesh_quantization's attribute types. Progress goes from 0.5 to 0.9.
+ * The Error names no file.
+ */
+Result<Mesh> flattenGltf(const tinygltf::Model& model, const nlohmann::json& json,
+                         const FileAccess& access, bool quantized, const ProgressFn& progress,
+                         const LoadLimits& limits);
+
+} // namespace core::detail::gltf

@@ -1,0 +1,404 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/io/importer/import_protocol.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <new>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+namespace core::importer {
+
+static_assert(sizeof(FrameHeader) == 16 && sizeof(MeshHeader) == 64 &&
+              sizeof(MaterialHeader) == 24 && sizeof(ImageHeader) == 8);
+static_assert(sizeof(glm::vec2) == 8 && sizeof(glm::vec3) == 12 && sizeof(glm::vec4) == 16,
+              "the arrays travel as their bytes");
+
+namespace {
+
+constexpr std::uint64_t kMaxTextBytes = 64u << 10;
+constexpr std::size_t kMaxWarnings = 1000;
+constexpr std::uint64_t kMaxMaterials = 1u << 20;
+constexpr std::uint64_t kMaxTextures = 1u << 16;
+constexpr std::size_t kMaxLine = 2000;
+
+template <typename T> std::size_t bytesOf(const std::vector<T>& v) {
+    return v.size() * sizeof(T);
+}
+
+/** a * b, or the maximum on overflow (a cap check then fails). */
+std::uint64_t mul(std::uint64_t a, std::uint64_t b) {
+    if (a != 0 && b > std::numeric_limits<std::uint64_t>::max() / a)
+        return std::numeric_limits<std::uint64_t>::max();
+    return a * b;
+}
+
+std::uint64_t add(std::uint64_t a, std::uint64_t b) {
+    return b > std::numeric_limits<std::uint64_t>::max() - a
+               ? std::numeric_limits<std::uint64_t>::max()
+               : a + b;
+}
+
+} // namespace
+
+std::string cleanText(std::string text) {
+    for (char& c : text)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            c = ' ';
+    if (text.size() > kMaxLine) {
+        text.resize(kMaxLine);
+        // Not in the middle of a UTF-8 sequence.
+        while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+            text.pop_back();
+        if (!text.empty() && static_cast<unsigned char>(text.back()) >= 0xC0)
+            text.pop_back();
+        text += "...";
+    }
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+    return text;
+}
+
+std::uint64_t maxOutputBytes(const LoadLimits& limits) {
+    // Positions, normals, colours and UVs per vertex; indices and a material per triangle;
+    // textures worth eight of the largest images; text and materials.
+    std::uint64_t bytes = mul(limits.maxVertices, 12 + 12 + 16 + 8);
+    bytes = add(bytes, mul(limits.maxTriangles, 12 + 4));
+    bytes = add(bytes, mul(limits.maxImagePixels, 4 * 8));
+    return add(bytes, 64u << 20);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing (the importer process)
+
+bool FrameWriter::writeAll(const void* data, std::size_t size) {
+    const auto* p = static_cast<const std::uint8_t*>(data);
+    // The pipe holds references to the pages until they are read (see lendUntilExit()); small
+    // payloads are not worth the pinning. A refusal (not a pipe) falls back to write().
+    constexpr std::size_t kLendFrom = 64u << 10;
+    while (m_lend && size >= kLendFrom) {
+        iovec part{const_cast<std::uint8_t*>(p), std::min<std::size_t>(size, 1u << 30)};
+        const ssize_t n = ::vmsplice(m_fd, &part, 1, 0);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) {
+            m_lend = false;
+            break;
+        }
+        p += n;
+        size -= static_cast<std::size_t>(n);
+    }
+    while (size > 0) {
+        const ssize_t n = ::write(m_fd, p, std::min<std::size_t>(size, 1u << 30));
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            return false;
+        p += n;
+        size -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+bool FrameWriter::frame(Tag tag, const void* a, std::size_t aSize, const void* b,
+                        std::size_t bSize) {
+    if (!m_ok)
+        return false;
+    const FrameHeader header{kMagic, static_cast<std::uint32_t>(tag), aSize + bSize};
+    m_ok = writeAll(&header, sizeof header) && (aSize == 0 || writeAll(a, aSize)) &&
+           (bSize == 0 || writeAll(b, bSize));
+    return m_ok;
+}
+
+bool FrameWriter::progress(double fraction) {
+    return frame(Tag::Progress, &fraction, sizeof fraction);
+}
+
+bool FrameWriter::text(Tag tag, const std::string& text) {
+    return frame(tag, text.data(), std::min<std::size_t>(text.size(), kMaxTextBytes));
+}
+
+bool FrameWriter::image(const Image& image) {
+    const ImageHeader header{static_cast<std::uint32_t>(image.width),
+                             static_cast<std::uint32_t>(image.height)};
+    return frame(Tag::Image, &header, sizeof header, image.rgba.data(), image.rgba.size());
+}
+
+bool FrameWriter::mesh(const Mesh& mesh) {
+    for (const std::string& warning : mesh.warnings)
+        text(Tag::Warning, warning);
+    const MeshHeader header{mesh.positions.size(), mesh.indices.size(),
+                            mesh.normals.size(),   mesh.uvs.size(),
+                            mesh.colors.size(),    mesh.triangleMaterial.size(),
+                            mesh.materials.size(), mesh.textures.size()};
+    frame(Tag::MeshBegin, &header, sizeof header);
+    frame(Tag::Positions, mesh.positions.data(), bytesOf(mesh.positions));
+    if (!mesh.normals.empty())
+        frame(Tag::Normals, mesh.normals.data(), bytesOf(mesh.normals));
+    if (!mesh.uvs.empty())
+        frame(Tag::Uvs, mesh.uvs.data(), bytesOf(mesh.uvs));
+    if (!mesh.colors.empty())
+        frame(Tag::Colors, mesh.colors.data(), bytesOf(mesh.colors));
+    frame(Tag::Indices, mesh.indices.data(), bytesOf(mesh.indices));
+    if (!mesh.triangleMaterial.empty())
+        frame(Tag::TriangleMaterials, mesh.triangleMaterial.data(), bytesOf(mesh.triangleMaterial));
+    for (const Material& m : mesh.materials) {
+        const MaterialHeader mh{
+            {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.baseColorFactor.a},
+            m.baseColorTexture,
+            static_cast<std::uint32_t>(m.name.size())};
+        frame(Tag::Material, &mh, sizeof mh, m.name.data(), m.name.size());
+    }
+    for (const Image& image : mesh.textures) {
+        const ImageHeader ih{static_cast<std::uint32_t>(image.width),
+                             static_cast<std::uint32_t>(image.height)};
+        frame(Tag::Texture, &ih, sizeof ih, image.rgba.data(), image.rgba.size());
+    }
+    return frame(Tag::MeshEnd, nullptr, 0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reading (the application)
+
+namespace {
+
+class Reader {
+public:
+    Reader(FrameSource& source, const LoadLimits& limits, const ProgressFn& progress)
+        : m_source(source), m_limits(limits), m_progress(progress),
+          m_budget(maxOutputBytes(limits)) {}
+
+    Received run() {
+        try {
+            while (!m_done && m_received.malformed.empty() && !m_received.cancelled) {
+                FrameHeader header{};
+                if (!m_source.read(&header, sizeof header))
+                    break;
+                if (header.magic != kMagic) {
+                    m_received.malformed = "it wrote something that is not a frame";
+                    break;
+                }
+                if (header.length > m_budget) {
+                    m_received.malformed = "it sent more data than the limits allow";
+                    break;
+                }
+                m_budget -= header.length;
+                if (!frame(static_cast<Tag>(header.tag), header.length))
+                    break;
+            }
+        } catch (const std::bad_alloc&) {
+            m_received.malformed = "not enough memory for what it sent";
+        }
+        if (!m_done) {
+            m_received.mesh.reset();
+            m_received.image.reset();
+        }
+        return std::move(m_received);
+    }
+
+private:
+    bool fail(std::string what) {
+        m_received.malformed = std::move(what);
+        return false;
+    }
+
+    template <typename T>
+    bool readArray(std::vector<T>& out, std::uint64_t count, std::uint64_t length, bool& seen) {
+        if (seen)
+            return fail("it sent an array twice");
+        if (length != mul(count, sizeof(T)))
+            return fail("an array's length does not match the counts it announced");
+        seen = true;
+        out.resize(static_cast<std::size_t>(count));
+        return count == 0 || m_source.read(out.data(), static_cast<std::size_t>(length));
+    }
+
+    bool array(Tag tag, std::uint64_t length) {
+        if (!m_mesh)
+            return fail("it sent an array outside a mesh");
+        Mesh& m = *m_mesh;
+        switch (tag) {
+        case Tag::Positions:
+            return readArray(m.positions, m_header.vertices, length, m_seen[0]);
+        case Tag::Normals:
+            return readArray(m.normals, m_header.normals, length, m_seen[1]);
+        case Tag::Uvs:
+            return readArray(m.uvs, m_header.uvs, length, m_seen[2]);
+        case Tag::Colors:
+            return readArray(m.colors, m_header.colors, length, m_seen[3]);
+        case Tag::Indices:
+            return readArray(m.indices, m_header.indices, length, m_seen[4]);
+        default:
+            return readArray(m.triangleMaterial, m_header.triangleMaterials, length, m_seen[5]);
+        }
+    }
+
+    bool readText(std::uint64_t length, std::string& out) {
+        if (length > kMaxTextBytes)
+            return fail("it sent a message that is too long");
+        out.resize(static_cast<std::size_t>(length));
+        return length == 0 || m_source.read(out.data(), out.size());
+    }
+
+    bool readImage(std::uint64_t length, Image& out) {
+        ImageHeader header{};
+        if (length < sizeof header || !m_source.read(&header, sizeof header))
+            return length < sizeof header ? fail("it sent a truncated image") : false;
+        const std::uint64_t pixels = std::uint64_t(header.width) * header.height;
+        if (header.width == 0 || header.height == 0 || header.width > 65536 ||
+            header.height > 65536 || pixels > m_limits.maxImagePixels)
+            return fail("it sent an image of an impossible size");
+        if (length - sizeof header != pixels * 4)
+            return fail("an image's length does not match its size");
+        out.width = static_cast<int>(header.width);
+        out.height = static_cast<int>(header.height);
+        out.rgba.resize(static_cast<std::size_t>(pixels * 4));
+        return m_source.read(out.rgba.data(), out.rgba.size());
+    }
+
+    bool frame(Tag tag, std::uint64_t length) {
+        switch (tag) {
+        case Tag::Progress: {
+            double fraction = 0.0;
+            if (length != sizeof fraction)
+                return fail("it sent a malformed progress report");
+            if (!m_source.read(&fraction, sizeof fraction))
+                return false;
+            if (!std::isfinite(fraction))
+                return fail("it sent a malformed progress report");
+            if (!reportProgress(m_progress, std::clamp(fraction, 0.0, 1.0))) {
+                m_received.cancelled = true;
+                return false;
+            }
+            return true;
+        }
+        case Tag::Warning: {
+            std::string text;
+            if (!readText(length, text))
+                return false;
+            if (m_received.warnings.size() < kMaxWarnings)
+                m_received.warnings.push_back(cleanText(std::move(text)));
+            return true;
+        }
+        case Tag::Error: {
+            std::string text;
+            if (!readText(length, text))
+                return false;
+            m_received.error = cleanText(std::move(text));
+            m_done = true;
+            return true;
+        }
+        case Tag::Image: {
+            if (m_mesh)
+                return fail("it sent an image inside a mesh");
+            Image image;
+            if (!readImage(length, image))
+                return false;
+            m_received.image = std::move(image);
+            m_done = true;
+            return true;
+        }
+        case Tag::MeshBegin: {
+            MeshHeader h{};
+            if (m_mesh)
+                return fail("it started a second mesh");
+            if (length != sizeof h)
+                return fail("it sent a malformed mesh header");
+            if (!m_source.read(&h, sizeof h))
+                return false;
+            const bool perVertex = (h.normals == 0 || h.normals == h.vertices) &&
+                                   (h.uvs == 0 || h.uvs == h.vertices) &&
+                                   (h.colors == 0 || h.colors == h.vertices);
+            if (h.vertices > m_limits.maxVertices || h.indices % 3 != 0 ||
+                h.indices / 3 > m_limits.maxTriangles || !perVertex ||
+                (h.triangleMaterials != 0 && h.triangleMaterials != h.indices / 3) ||
+                h.materials > kMaxMaterials || h.textures > kMaxTextures)
+                return fail("it announced a mesh beyond the limits");
+            m_header = h;
+            m_mesh.emplace();
+            m_mesh->materials.reserve(static_cast<std::size_t>(h.materials));
+            return true;
+        }
+        case Tag::Positions:
+        case Tag::Normals:
+        case Tag::Uvs:
+        case Tag::Colors:
+        case Tag::Indices:
+        case Tag::TriangleMaterials:
+            return array(tag, length);
+        case Tag::Material: {
+            MaterialHeader h{};
+            if (!m_mesh || m_mesh->materials.size() >= m_header.materials)
+                return fail("it sent more materials than it announced");
+            if (length < sizeof h || length - sizeof h > kMaxTextBytes)
+                return fail("it sent a malformed material");
+            if (!m_source.read(&h, sizeof h))
+                return false;
+            if (h.nameLength != length - sizeof h)
+                return fail("it sent a malformed material");
+            Material m;
+            m.baseColorFactor = glm::vec4(h.baseColorFactor[0], h.baseColorFactor[1],
+                                          h.baseColorFactor[2], h.baseColorFactor[3]);
+            for (int k = 0; k < 4; ++k)
+                if (!std::isfinite(m.baseColorFactor[k]))
+                    return fail("it sent a material colour that is not a number");
+            m.baseColorTexture = h.baseColorTexture < 0 ? -1 : h.baseColorTexture;
+            m.name.resize(h.nameLength);
+            if (h.nameLength > 0 && !m_source.read(m.name.data(), m.name.size()))
+                return false;
+            m_mesh->materials.push_back(std::move(m));
+            return true;
+        }
+        case Tag::Texture: {
+            if (!m_mesh || m_mesh->textures.size() >= m_header.textures)
+                return fail("it sent more textures than it announced");
+            Image image;
+            if (!readImage(length, image))
+                return false;
+            m_mesh->textures.push_back(std::move(image));
+            return true;
+        }
+        case Tag::MeshEnd: {
+            if (!m_mesh || length != 0)
+                return fail("it ended a mesh it had not started");
+            const bool complete = m_seen[0] && (m_header.normals == 0 || m_seen[1]) &&
+                                  (m_header.uvs == 0 || m_seen[2]) &&
+                                  (m_header.colors == 0 || m_seen[3]) && m_seen[4] &&
+                                  (m_header.triangleMaterials == 0 || m_seen[5]) &&
+                                  m_mesh->materials.size() == m_header.materials &&
+                                  m_mesh->textures.size() == m_header.textures;
+            if (!complete)
+                return fail("it ended a mesh before sending all of it");
+            m_mesh->warnings = m_received.warnings;
+            m_received.mesh = std::move(m_mesh);
+            m_done = true;
+            return true;
+        }
+        }
+        return fail("it sent a frame of an unknown kind");
+    }
+
+    FrameSource& m_source;
+    const LoadLimits& m_limits;
+    const ProgressFn& m_progress;
+    std::uint64_t m_budget;
+    Received m_received;
+    bool m_done = false;
+    std::optional<Mesh> m_mesh;
+    MeshHeader m_header{};
+    bool m_seen[6] = {}; // positions, normals, uvs, colors, indices, triangle materials
+};
+
+} // namespace
+
+Received readFrames(FrameSource& source, const LoadLimits& limits, const ProgressFn& progress) {
+    return Reader(source, limits, progress).run();
+}
+
+} // namespace core::importer

@@ -1,0 +1,579 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// PaintLayerStack's composite updates during a stroke: the texels a dab touched, from the layers
+// below the stroke's layer kept per tile, layer by layer over a rectangle with the blend mode
+// chosen once per layer. Gives the bytes updateTile() gives (the same float operations in the
+// same order per texel).
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <optional>
+#include <type_traits>
+
+#include "core/paint/paint_layers/paint_layers.h"
+
+namespace core {
+
+namespace {
+
+constexpr unsigned kAllChannels = 7;
+/** Tiles whose lower layers a stroke keeps at most (80 KB each); past that it recomputes them. */
+constexpr std::size_t kMaxKeptTiles = 512;
+
+using layer_bytes::fromByte;
+using layer_bytes::toByte;
+#if defined(__SSE2__)
+using layer_bytes::fromBytes4;
+using layer_bytes::toBytes4;
+#endif
+
+template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
+    switch (mode) {
+    case BlendMode::Normal:
+        return fn(std::integral_constant<BlendMode, BlendMode::Normal>{});
+    case BlendMode::Multiply:
+        return fn(std::integral_constant<BlendMode, BlendMode::Multiply>{});
+    case BlendMode::Screen:
+        return fn(std::integral_constant<BlendMode, BlendMode::Screen>{});
+    case BlendMode::Overlay:
+        return fn(std::integral_constant<BlendMode, BlendMode::Overlay>{});
+    case BlendMode::SoftLight:
+        return fn(std::integral_constant<BlendMode, BlendMode::SoftLight>{});
+    case BlendMode::Add:
+        return fn(std::integral_constant<BlendMode, BlendMode::Add>{});
+    case BlendMode::Subtract:
+        return fn(std::integral_constant<BlendMode, BlendMode::Subtract>{});
+    case BlendMode::Darken:
+        return fn(std::integral_constant<BlendMode, BlendMode::Darken>{});
+    case BlendMode::Lighten:
+        return fn(std::integral_constant<BlendMode, BlendMode::Lighten>{});
+    case BlendMode::Difference:
+        return fn(std::integral_constant<BlendMode, BlendMode::Difference>{});
+    }
+}
+
+TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
+    const int across =
+        std::max(1, (size.width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile);
+    TileRect r;
+    r.x = int(tile % std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    r.y = int(tile / std::uint32_t(across)) * TiledPlane::kPlaneTile;
+    r.width = std::min(size.width, r.x + TiledPlane::kPlaneTile) - r.x;
+    r.height = std::min(size.height, r.y + TiledPlane::kPlaneTile) - r.y;
+    return r;
+}
+
+/** The texels [x0, x1) of row y of rect to visit: rows[y - rect.y], or the whole row. */
+TexelSpan rowOf(const TileRect& rect, std::span<const TexelSpan> rows, int y) {
+    return rows.empty() ? TexelSpan{rect.x, rect.x + rect.width} : rows[std::size_t(y - rect.y)];
+}
+
+/**
+ * Calls fn(i, local) for every texel of rect (or of its rows): i is its first byte in the
+ * page's four-byte texels (width texels a row), local its index in its tile, whose rectangle is
+ * tile.
+ */
+template <typename Fn>
+void forEachTexel(const TileRect& rect, std::span<const TexelSpan> rows, const TileRect& tile,
+                  std::size_t width, Fn&& fn) {
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        const std::size_t row = std::size_t(y - tile.y) * std::size_t(tile.width);
+        for (int x = span.x0; x < span.x1; ++x)
+            fn((std::size_t(y) * width + std::size_t(x)) * 4, row + std::size_t(x - tile.x));
+    }
+}
+
+/** How many texels rect (or its rows) holds. */
+std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
+    if (rows.empty())
+        return std::size_t(rect.width) * std::size_t(rect.height);
+    std::size_t n = 0;
+    for (const TexelSpan& r : rows)
+        n += r.x1 > r.x0 ? std::size_t(r.x1 - r.x0) : 0;
+    return n;
+}
+
+/** What blending one channel of a paint layer over a tile reads. */
+struct ChannelSource {
+    const std::uint8_t* texels = nullptr; // nullptr: a fill
+    std::array<float, 3> fill{};
+    const std::uint8_t* mask = nullptr;
+    std::uint8_t maskFill = 255;
+    bool masked = false;
+    float opacity = 1.0f;
+    int comps = 1;         // 3 for base colour, 1 for roughness and metallic
+    std::size_t first = 0; // its first of the 5 value planes
+};
+
+/**
+ * How much of src texel local takes (its coverage times the layer's opacity and mask), with
+ * texel set to its bytes (nullptr for a fill).
+ */
+inline float coverageOf(const ChannelSource& src, std::size_t local, const std::uint8_t*& texel) {
+    float a = 1.0f;
+    texel = nullptr;
+    if (src.texels != nullptr) {
+        texel = src.texels + local * std::size_t(src.comps + 1);
+        a = fromByte(texel[src.comps]);
+    }
+    a *= src.opacity;
+    if (src.masked)
+        a *= fromByte(src.mask != nullptr ? src.mask[local] : src.maskFill);
+    return a;
+}
+
+/**
+ * Channel c of layer in tile of page, or nothing when it changes no texel there: hidden, fully
+ * transparent, a paint layer that never wrote the tile, or a fill without a value for c.
+ */
+std::optional<ChannelSource> channelSource(const PaintLayer& layer, std::size_t c,
+                                           std::uint32_t page, std::uint32_t tile) {
+    const PaintLayerSettings& st = layer.settings;
+    ChannelSource src;
+    src.opacity = std::clamp(st.opacity, 0.0f, 1.0f);
+    if (!st.visible || !(src.opacity > 0.0f))
+        return std::nullopt; // every texel's coverage is 0 (or NaN): compositeTexel() skips them
+    src.comps = c == 0 ? 3 : 1;
+    src.first = c == 0 ? 0 : c + 2;
+    src.masked = layer.mask != nullptr;
+    src.mask = src.masked ? layer.mask->tile(page, tile) : nullptr;
+    src.maskFill = src.masked ? layer.mask->fill()[0] : 255;
+    if (st.kind == PaintLayerKind::Fill) {
+        if (c == 0 && st.fill.baseColor)
+            src.fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
+        else if (c == 1 && st.fill.roughness)
+            src.fill[0] = *st.fill.roughness;
+        else if (c == 2 && st.fill.metallic)
+            src.fill[0] = *st.fill.metallic;
+        else
+            return std::nullopt;
+    } else {
+        const TiledPlane* plane = layer.channels[c].get();
+        src.texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
+        if (src.texels == nullptr)
+            return std::nullopt; // unwritten: coverage 0 everywhere
+    }
+    return src;
+}
+
+/**
+ * Whether every byte b gives b again through fromByte() and toByte(): then a texel no layer
+ * touches composites to its base bytes, which can be copied.
+ */
+bool byteRoundTrips() {
+    static const bool roundTrips = [] {
+        for (int b = 0; b < 256; ++b)
+            if (toByte(fromByte(std::uint8_t(b))) != std::uint8_t(b))
+                return false;
+        return true;
+    }();
+    return roundTrips;
+}
+
+} // namespace
+
+PaintLayerStack::PageBytes PaintLayerStack::pageBytes(std::uint32_t page, unsigned channels) {
+    const bool material = hasMaterialChannels() && (channels & 6u) != 0;
+    return {std::size_t(m_pages[page].width), m_baseColor[page].data(),
+            m_compositeColor[page].rgba.data(),
+            material ? m_baseMetallicRoughness[page].data() : nullptr,
+            material ? m_compositeMr[page].rgba.data() : nullptr};
+}
+
+void PaintLayerStack::copyBase(std::uint32_t page, const TileRect& rect, unsigned channels,
+                               std::span<const TexelSpan> rows) {
+    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    const bool material = mr != nullptr;
+    for (int y = rect.y; y < rect.y + rect.height; ++y) {
+        const TexelSpan span = rowOf(rect, rows, y);
+        if (span.x1 <= span.x0)
+            continue;
+        const std::size_t i = (std::size_t(y) * width + std::size_t(span.x0)) * 4;
+        const std::size_t bytes = std::size_t(span.x1 - span.x0) * 4;
+        if ((channels & 1u) != 0)
+            std::memcpy(color + i, baseColor + i, bytes);
+        if (material) {
+            if ((channels & 6u) == 6u) {
+                std::memcpy(mr + i, baseMr + i, bytes);
+            } else {
+                // Roughness (byte 1) or metallic (byte 2) alone; bytes 0 and 3 are the base's.
+                const std::size_t keep = (channels & 2u) != 0 ? 2 : 1;
+                for (std::size_t j = i; j < i + bytes; j += 4) {
+                    const std::uint8_t kept = mr[j + keep];
+                    std::memcpy(mr + j, baseMr + j, 4);
+                    mr[j + keep] = kept;
+                }
+            }
+        }
+    }
+}
+
+bool PaintLayerStack::composeOverBase(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                      std::size_t from, std::size_t to, unsigned channels,
+                                      std::span<const TexelSpan> rows) {
+    // What blendLayers() reads, per layer and channel that takes part: the Normal mode only.
+    std::array<ChannelSource, 3 * 8> sources;
+    std::size_t count = 0;
+    const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
+    for (std::size_t l = from; l < to; ++l) {
+        for (std::size_t c = 0; c < channelCount; ++c) {
+            if ((channels & (1u << c)) == 0)
+                continue;
+            const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
+            if (!src)
+                continue;
+            if (m_layers[l]->settings.blend != BlendMode::Normal || count == sources.size())
+                return false;
+            sources[count++] = *src;
+        }
+    }
+
+    // Where each channel's topmost source is a paint layer's texels at full opacity without a
+    // mask, a texel it covers fully (coverage byte 255) ends with that layer's bytes: the blend
+    // gives v + 1·(l - v), within 2⁻²³ of l = fromByte(b), and toByte() of that is b whatever v
+    // the layers below left. A channel without a source keeps the base's bytes.
+    std::array<const ChannelSource*, kPaintChannels> top{};
+    bool opaqueTops = byteRoundTrips() && fromByte(255) == 1.0f;
+    for (std::size_t j = 0; j < count; ++j)
+        top[sources[j].first == 0 ? 0 : sources[j].first - 2] = &sources[j];
+    for (const ChannelSource* src : top)
+        opaqueTops =
+            opaqueTops &&
+            (src == nullptr || (src->texels != nullptr && !src->masked && src->opacity == 1.0f));
+    const auto topByte = [&](std::size_t ch, std::size_t local, int k, std::uint8_t base) {
+        const ChannelSource* src = top[ch];
+        return src != nullptr ? src->texels[local * std::size_t(src->comps + 1) + std::size_t(k)]
+                              : base;
+    };
+
+    const TileRect tr = tileRectOf(m_pages[page], tile);
+    // Named, not bound: the texel loops' lambdas take them (clang 14 cannot capture bindings).
+    const PageBytes pixels = pageBytes(page, channels);
+    const std::size_t width = pixels.width;
+    const std::uint8_t *baseColor = pixels.baseColor, *baseMr = pixels.baseMr;
+    std::uint8_t *color = pixels.color, *mr = pixels.mr;
+    const bool material = mr != nullptr;
+#if defined(__SSE2__)
+    // One unmasked paint layer's texels per channel at most (painting a paint layer with
+    // nothing below it in this tile): a texel's colour in four lanes (red, green, blue and an
+    // unused one), its roughness and metallic in lanes 1 and 2, the operations of the loop below.
+    bool lanes = true;
+    for (std::size_t j = 0; j < count; ++j)
+        lanes = lanes && sources[j].texels != nullptr && !sources[j].masked &&
+                top[sources[j].first == 0 ? 0 : sources[j].first - 2] == &sources[j];
+    // min and max clamp as std::clamp does for values that are not NaN (bytes give none).
+    const auto blend4 = [](__m128 below, __m128 layer, __m128 a) {
+        const __m128 over = _mm_min_ps(_mm_max_ps(layer, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+        return _mm_add_ps(below, _mm_mul_ps(a, _mm_sub_ps(over, below)));
+    };
+    if (lanes) {
+        // Without branches per texel: where the layer's coverage is 0 the blend gives the
+        // value below exactly (v + 0·(l − v)), so every texel takes the blend. A channel not
+        // painted here (or without a source) keeps its bytes: colour's fourth byte and the
+        // first and fourth of roughness-metallic are the base's.
+        static constexpr std::uint8_t kNothing[4] = {};
+        const bool colour = (channels & 1u) != 0;
+        const std::uint8_t* colourTexels = colour && top[0] != nullptr ? top[0]->texels : kNothing;
+        const std::size_t colourStep = colour && top[0] != nullptr ? 4 : 0;
+        const __m128 colourOpacity = _mm_set1_ps(top[0] != nullptr ? top[0]->opacity : 0.0f);
+        const std::uint8_t* rough =
+            (channels & 2u) != 0 && top[1] != nullptr ? top[1]->texels : nullptr;
+        const std::uint8_t* metal =
+            (channels & 4u) != 0 && top[2] != nullptr ? top[2]->texels : nullptr;
+        const __m128 mrOpacity = _mm_setr_ps(0.0f, rough != nullptr ? top[1]->opacity : 0.0f,
+                                             metal != nullptr ? top[2]->opacity : 0.0f, 0.0f);
+        const std::uint32_t mrPainted =
+            ((channels & 2u) != 0 ? 0x0000ff00u : 0u) | ((channels & 4u) != 0 ? 0x00ff0000u : 0u);
+        const auto word = [](const std::uint8_t* p) {
+            std::uint32_t w;
+            std::memcpy(&w, p, 4);
+            return w;
+        };
+        const auto bytesOf = [](__m128 v) { return layer_bytes::packBytes4(toBytes4(v)); };
+        forEachTexel(rect, rows, tr, width, [&](std::size_t i, std::size_t local) {
+            if (colour) {
+                const __m128 layer = fromBytes4(colourTexels + local * colourStep);
+                const __m128 a = _mm_mul_ps(_mm_shuffle_ps(layer, layer, _MM_SHUFFLE(3, 3, 3, 3)),
+                                            colourOpacity);
+                const std::uint32_t bytes = bytesOf(blend4(fromBytes4(baseColor + i), layer, a));
+                const std::uint32_t out =
+                    (bytes & 0x00ffffffu) | (word(baseColor + i) & 0xff000000u);
+                std::memcpy(color + i, &out, 4);
+            }
+            if (material) {
+                std::uint32_t values = 0, covers = 0;
+                if (rough != nullptr) {
+                    values |= std::uint32_t(rough[local * 2]) << 8;
+                    covers |= std::uint32_t(rough[local * 2 + 1]) << 8;
+                }
+                if (metal != nullptr) {
+                    values |= std::uint32_t(metal[local * 2]) << 16;
+                    covers |= std::uint32_t(metal[local * 2 + 1]) << 16;
+                }
+                const __m128 a = _mm_mul_ps(
+                    fromBytes4(reinterpret_cast<const std::uint8_t*>(&covers)), mrOpacity);
+                const std::uint32_t bytes =
+                    bytesOf(blend4(fromBytes4(baseMr + i),
+                                   fromBytes4(reinterpret_cast<const std::uint8_t*>(&values)), a));
+                const std::uint32_t out = (bytes & mrPainted) | (word(baseMr + i) & 0xff0000ffu) |
+                                          (word(mr + i) & ~(mrPainted | 0xff0000ffu));
+                std::memcpy(mr + i, &out, 4);
+            }
+        });
+        return true;
+    }
+#endif
+    forEachTexel(rect, rows, tr, width, [&](std::size_t i, std::size_t local) {
+        if (opaqueTops && std::all_of(top.begin(), top.end(), [&](const ChannelSource* src) {
+                return src == nullptr ||
+                       src->texels[local * std::size_t(src->comps + 1) + std::size_t(src->comps)] ==
+                           255;
+            })) {
+            if ((channels & 1u) != 0) {
+                for (int k = 0; k < 3; ++k)
+                    color[i + std::size_t(k)] = topByte(0, local, k, baseColor[i + std::size_t(k)]);
+                color[i + 3] = baseColor[i + 3];
+            }
+            if (material) {
+                mr[i] = baseMr[i];
+                if ((channels & 2u) != 0)
+                    mr[i + 1] = topByte(1, local, 0, baseMr[i + 1]);
+                if ((channels & 4u) != 0)
+                    mr[i + 2] = topByte(2, local, 0, baseMr[i + 2]);
+                mr[i + 3] = baseMr[i + 3];
+            }
+            return;
+        }
+        // As baseValues(), blendLayers() and updateRect()'s store, texel by texel: the same
+        // operations on each value in the same order.
+        float v[5] = {};
+        if ((channels & 1u) != 0)
+            for (std::size_t k = 0; k < 3; ++k)
+                v[k] = fromByte(baseColor[i + k]);
+        if (baseMr != nullptr) {
+            if ((channels & 2u) != 0)
+                v[3] = fromByte(baseMr[i + 1]);
+            if ((channels & 4u) != 0)
+                v[4] = fromByte(baseMr[i + 2]);
+        }
+        for (std::size_t j = 0; j < count; ++j) {
+            const ChannelSource& src = sources[j];
+            const std::uint8_t* t = nullptr;
+            const float a = coverageOf(src, local, t);
+            if (!(a > 0.0f))
+                continue;
+            for (int k = 0; k < src.comps; ++k) {
+                const float layer = t != nullptr ? fromByte(t[k]) : src.fill[std::size_t(k)];
+                float& value = v[src.first + std::size_t(k)];
+                value += a * (blendAs<BlendMode::Normal>(value, layer) - value);
+            }
+        }
+        if ((channels & 1u) != 0) {
+            color[i] = toByte(v[0]);
+            color[i + 1] = toByte(v[1]);
+            color[i + 2] = toByte(v[2]);
+            color[i + 3] = baseColor[i + 3];
+        }
+        if (material) {
+            mr[i] = baseMr[i];
+            if ((channels & 2u) != 0)
+                mr[i + 1] = toByte(v[3]);
+            if ((channels & 4u) != 0)
+                mr[i + 2] = toByte(v[4]);
+            mr[i + 3] = baseMr[i + 3];
+        }
+    });
+    return true;
+}
+
+void PaintLayerStack::beginStroke(std::uint64_t layerId, unsigned channels) {
+    m_below.clear();
+    m_inStroke = true;
+    m_strokeLayer = layerId;
+    m_strokeChannels = channels & (hasMaterialChannels() ? kAllChannels : 1u);
+}
+
+void PaintLayerStack::endStroke() {
+    m_inStroke = false;
+    m_below = {};
+}
+
+void PaintLayerStack::dropStrokeCache() {
+    m_below.clear();
+}
+
+void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
+                                 float* values, std::span<const TexelSpan> rows) const {
+    const std::size_t n = texelsOf(rect, rows);
+    const std::size_t width = std::size_t(m_pages[page].width);
+    const std::uint8_t* color = m_baseColor[page].data();
+    const std::uint8_t* mr = hasMaterialChannels() ? m_baseMetallicRoughness[page].data() : nullptr;
+    std::size_t at = 0;
+    for (int y = rect.y; y < rect.y + rect.height; ++y)
+        for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
+            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+            if ((channels & 1u) != 0)
+                for (std::size_t k = 0; k < 3; ++k)
+                    values[k * n + at] = fromByte(color[i + k]);
+            // Without material channels roughness and metallic are never read.
+            if (mr != nullptr) {
+                if ((channels & 2u) != 0)
+                    values[3 * n + at] = fromByte(mr[i + 1]);
+                if ((channels & 4u) != 0)
+                    values[4 * n + at] = fromByte(mr[i + 2]);
+            }
+        }
+}
+
+void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                  std::size_t from, std::size_t to, unsigned channels,
+                                  float* values, std::span<const TexelSpan> rows) const {
+    const std::size_t n = texelsOf(rect, rows);
+    const TileRect tr = tileRectOf(m_pages[page], tile);
+    const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
+    for (std::size_t l = from; l < to; ++l) {
+        const PaintLayerSettings& st = m_layers[l]->settings;
+        for (std::size_t c = 0; c < channelCount; ++c) {
+            if ((channels & (1u << c)) == 0)
+                continue;
+            const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
+            if (!src)
+                continue;
+            const ChannelSource& s = *src;
+            withMode(st.blend, [&](auto mode) {
+                constexpr BlendMode kMode = decltype(mode)::value;
+                std::size_t at = 0;
+                for (int y = rect.y; y < rect.y + rect.height; ++y) {
+                    const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
+                    const TexelSpan span = rowOf(rect, rows, y);
+                    for (int x = span.x0; x < span.x1; ++x, ++at) {
+                        const std::size_t local = row + std::size_t(x - tr.x);
+                        const std::uint8_t* t = nullptr;
+                        const float a = coverageOf(s, local, t);
+                        if (!(a > 0.0f))
+                            continue;
+                        for (int k = 0; k < s.comps; ++k) {
+                            const float layer =
+                                t != nullptr ? fromByte(t[k]) : s.fill[std::size_t(k)];
+                            float& v = values[(s.first + std::size_t(k)) * n + at];
+                            v += a * (blendAs<kMode>(v, layer) - v);
+                        }
+                    }
+                }
+            });
+        }
+    }
+}
+
+void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                 std::span<const TexelSpan> rows) {
+    if (rect.width <= 0 || rect.height <= 0)
+        return;
+    const TileRect tr = tileRectOf(m_pages.at(page), tile);
+    const std::size_t n = texelsOf(rect, rows);
+    unsigned channels = hasMaterialChannels() ? kAllChannels : 1u;
+    std::size_t from = 0; // the first layer to blend over the values below it
+    std::uint64_t strokeLayer = 0;
+    if (m_inStroke) {
+        channels = m_strokeChannels;
+        strokeLayer = m_strokeLayer;
+    }
+    if (strokeLayer != 0) {
+        const std::optional<std::size_t> index = indexOf(strokeLayer);
+        if (index)
+            from = *index;
+        else
+            channels = hasMaterialChannels() ? kAllChannels : 1u;
+    }
+    if (channels == 0)
+        return;
+    std::size_t end = 0; // layers above the last one touching this tile change nothing here
+    for (std::size_t l = 0; l < m_layers.size(); ++l)
+        if (m_layers[l]->touchesTile(page, tile))
+            end = l + 1;
+
+    if (end == 0 && byteRoundTrips()) {
+        copyBase(page, rect, channels, rows);
+        return;
+    }
+
+    bool belowTouches = false;
+    for (std::size_t l = 0; l < std::min(from, end) && !belowTouches; ++l)
+        belowTouches = m_layers[l]->touchesTile(page, tile);
+    if (!belowTouches && composeOverBase(page, tile, rect, from, end, channels, rows))
+        return;
+
+    // Per thread: updates of different tiles may run at the same time.
+    thread_local std::vector<float> scratch;
+    scratch.resize(5 * n);
+    float* values = scratch.data();
+    if (!belowTouches) {
+        baseValues(page, rect, channels, values, rows);
+    } else {
+        // The layers below the stroke's: kept per tile for the stroke (whole tile, once).
+        const std::uint64_t key = (std::uint64_t(page) << 32) | tile;
+        const std::vector<float>* kept = nullptr;
+        bool keep = false;
+        {
+            const std::lock_guard lock(m_belowLock);
+            if (const auto found = m_below.find(key); found != m_below.end())
+                kept = &found->second;
+            else
+                keep = m_below.size() < kMaxKeptTiles;
+        }
+        if (keep) {
+            const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
+            std::vector<float> below(5 * tn);
+            baseValues(page, tr, channels, below.data());
+            blendLayers(page, tile, tr, 0, from, channels, below.data());
+            const std::lock_guard lock(m_belowLock); // elements stay where they are on insertion
+            kept = &m_below.emplace(key, std::move(below)).first->second;
+        }
+        if (kept != nullptr) {
+            const std::size_t tn = std::size_t(tr.width) * std::size_t(tr.height);
+            for (std::size_t v = 0; v < 5; ++v) {
+                if ((channels & (1u << (v < 3 ? 0 : v - 2))) == 0)
+                    continue;
+                std::size_t at = 0;
+                for (int y = rect.y; y < rect.y + rect.height; ++y) {
+                    const TexelSpan span = rowOf(rect, rows, y);
+                    if (span.x1 <= span.x0)
+                        continue;
+                    const float* src = kept->data() + v * tn +
+                                       std::size_t(y - tr.y) * std::size_t(tr.width) +
+                                       std::size_t(span.x0 - tr.x);
+                    std::copy_n(src, span.x1 - span.x0, values + v * n + at);
+                    at += std::size_t(span.x1 - span.x0);
+                }
+            }
+        } else {
+            baseValues(page, rect, channels, values, rows);
+            blendLayers(page, tile, rect, 0, from, channels, values, rows);
+        }
+    }
+    blendLayers(page, tile, rect, from, std::max(from, end), channels, values, rows);
+
+    const auto [width, baseColor, color, baseMr, mr] = pageBytes(page, channels);
+    const bool material = mr != nullptr;
+    std::size_t at = 0;
+    for (int y = rect.y; y < rect.y + rect.height; ++y)
+        for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
+            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
+            if ((channels & 1u) != 0) {
+                color[i] = toByte(values[at]);
+                color[i + 1] = toByte(values[n + at]);
+                color[i + 2] = toByte(values[2 * n + at]);
+                color[i + 3] = baseColor[i + 3];
+            }
+            if (material) {
+                mr[i] = baseMr[i];
+                if ((channels & 2u) != 0)
+                    mr[i + 1] = toByte(values[3 * n + at]);
+                if ((channels & 4u) != 0)
+                    mr[i + 2] = toByte(values[4 * n + at]);
+                mr[i + 3] = baseMr[i + 3];
+            }
+        }
+}
+
+} // namespace core

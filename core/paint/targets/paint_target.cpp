@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What both paint targets share: the stroke (its start, its tiles, the undo record at its end),
+// the checks on the mesh, and makePaintTarget() choosing between them. The targets themselves are
+// in texture_target.cpp and vertex_color_target.cpp, their shared dab machinery in
+// paint_context.cpp.
+#include "core/paint/targets/paint_target.h"
+
+#include <utility>
+
+#include "core/paint/targets/paint_context.h"
+
+namespace core {
+
+// ---------------------------------------------------------------------------------------------
+// PaintTarget
+
+PaintTarget::PaintTarget(std::shared_ptr<const Mesh> mesh,
+                         std::shared_ptr<const MeshTopology> topology,
+                         const PaintTargetOptions& options)
+    : m_context(std::make_unique<Context>()) {
+    Context& c = *m_context;
+    c.mesh = std::move(mesh);
+    c.topology = std::move(topology);
+    c.options = options;
+    c.marks.resize(c.mesh->triangleCount());
+    m_drawMaterials = c.mesh->materials;
+    for (Material& m : m_drawMaterials)
+        m.baseColorFactor = glm::vec4(1.0f);
+}
+
+PaintTarget::~PaintTarget() = default;
+
+const Mesh& PaintTarget::mesh() const {
+    return *m_context->mesh;
+}
+
+Status PaintTarget::checkMesh(const std::shared_ptr<const Mesh>& mesh,
+                              std::shared_ptr<const MeshTopology>& topology) {
+    if (!mesh)
+        return Error{"no mesh to paint"};
+    if (const Status valid = mesh->validate(); !valid)
+        return Error{"cannot paint the mesh: " + valid.error(), ErrorKind::BadInput};
+    if (!topology || topology->triangleCount() != mesh->triangleCount())
+        topology = std::make_shared<const MeshTopology>(buildMeshTopology(*mesh));
+    return {};
+}
+
+std::size_t PaintTarget::contextBytes() const {
+    const Context& c = *m_context;
+    std::size_t views = c.current.bytes();
+    for (const ViewState& kept : c.keptViews)
+        views += kept.bytes();
+    return views + c.marks.capacity() * sizeof(TriangleMark) +
+           (c.window.capacity() + c.windowSums.capacity()) * sizeof(std::uint32_t) +
+           c.triangleCover.capacity() * sizeof(float) +
+           c.coveredTriangles.capacity() * sizeof(std::uint32_t) +
+           c.slots.size() * (c.elementsPerTile * sizeof(float) + c.bytesPerTile);
+}
+
+PaintChanges PaintTarget::changes(const TileUndoRecord& record) const {
+    PaintChanges result;
+    std::vector<TileKey> keys;
+    for (std::size_t i = 0; i < record.tileCount(); ++i)
+        if (tileBytes(record.tile(i)) > 0)
+            keys.push_back(record.tile(i));
+    addChanges(keys, result);
+    return result;
+}
+
+const PaintChanges& PaintTarget::touchedChanges() {
+    Context& c = *m_context;
+    c.keys.clear();
+    for (const std::uint32_t slot : c.touched)
+        c.keys.push_back(c.slots[slot].key);
+    addChanges(c.keys, c.changes);
+    return c.changes;
+}
+
+void PaintTarget::setUpStrokeTiles(const std::vector<std::uint32_t>& tilesPerPage,
+                                   std::size_t elementsPerTile, std::size_t bytesPerTile) {
+    Context& c = *m_context;
+    c.tileSlot.clear();
+    for (const std::uint32_t tiles : tilesPerPage)
+        c.tileSlot.emplace_back(tiles, -1);
+    c.elementsPerTile = elementsPerTile;
+    c.bytesPerTile = bytesPerTile;
+    c.slots.clear();
+    c.slotsUsed = 0;
+    c.scratch.resize(bytesPerTile);
+}
+
+void PaintTarget::beginStroke(const Brush& brush) {
+    Context& c = *m_context;
+    if (c.inStroke)
+        endStroke();
+    c.inStroke = true;
+    c.group = 0;
+    c.brush = brush;
+    c.strokePlane = 0;
+    const SrgbTables& t = SrgbTables::get();
+    for (int k = 0; k < 4; ++k) {
+        c.colorLinear[k] =
+            std::clamp(std::isfinite(brush.color[k]) ? brush.color[k] : 0.0f, 0.0f, 1.0f);
+        c.colorBytes[std::size_t(k)] =
+            k < 3 ? t.encode(c.colorLinear[k]) : encodeUnorm(c.colorLinear[k]);
+    }
+    strokeStarted();
+}
+
+void PaintTarget::beginDabGroup() {
+    Context& c = *m_context;
+    if (++c.groupSerial == 0) {
+        for (StrokeTile& s : c.slots)
+            s.group = 0;
+        c.groupSerial = 1;
+    }
+    c.group = c.groupSerial;
+}
+
+bool PaintTarget::inStroke() const {
+    return m_context->inStroke;
+}
+
+TileUndoRecord PaintTarget::endStroke() {
+    Context& c = *m_context;
+    TileUndoRecord record;
+    if (!c.inStroke)
+        return record;
+    c.inStroke = false;
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < c.slotsUsed; ++i) {
+        StrokeTile& s = c.slots[i];
+        const std::size_t size = tileBytes(s.key);
+        readTile(s.key, std::span<std::uint8_t>(c.scratch.data(), size));
+        // A tile the stroke only looked at (coverage stayed 0) or painted back is not kept.
+        if (std::memcmp(c.scratch.data(), s.before.data(), size) != 0) {
+            std::swap(c.slots[changed], s);
+            ++changed;
+        }
+    }
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < changed; ++i)
+        total += tileBytes(c.slots[i].key);
+    record.reserve(changed, total);
+    for (std::size_t i = 0; i < changed; ++i) {
+        const StrokeTile& s = c.slots[i];
+        record.addTile(s.key, std::span<const std::uint8_t>(s.before.data(), tileBytes(s.key)));
+    }
+    for (std::size_t i = 0; i < c.slotsUsed; ++i)
+        c.tileSlot[c.slots[i].key.page][c.slots[i].key.tile] = -1;
+    c.slotsUsed = 0;
+    strokeEnded();
+    // Keep the pool for the next stroke, but not what one huge stroke needed.
+    constexpr std::size_t kKeptSlots = 512;
+    if (c.slots.size() > kKeptSlots)
+        c.slots.resize(kKeptSlots);
+    return record;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+Result<std::unique_ptr<PaintTarget>> makePaintTarget(std::shared_ptr<const Mesh> mesh,
+                                                     std::shared_ptr<const MeshTopology> topology,
+                                                     const PaintTargetOptions& options) {
+    const bool texture =
+        options.kind ? *options.kind == PaintTargetKind::Texture : (mesh && mesh->hasUvs());
+    if (texture) {
+        auto target = TextureTarget::create(std::move(mesh), std::move(topology), options);
+        if (!target)
+            return target.takeError();
+        return Result<std::unique_ptr<PaintTarget>>(std::move(target).value());
+    }
+    auto target = VertexColorTarget::create(std::move(mesh), std::move(topology), options);
+    if (!target)
+        return target.takeError();
+    return Result<std::unique_ptr<PaintTarget>>(std::move(target).value());
+}
+
+} // namespace core

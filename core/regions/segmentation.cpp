@@ -1,0 +1,395 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "core/regions/segmentation.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <climits>
+#include <memory>
+#include <numeric>
+
+#include "core/base/parallel.h"
+
+namespace core {
+
+namespace {
+
+// Union-find on a flat parent array whose root is always the smallest fragment index of its set.
+// Fragments are stored in scan order, so a root is its region's first pixel, and parent[i] <= i
+// holds throughout, which lets a single ascending pass flatten a range.
+
+inline std::uint32_t findRoot(std::uint32_t* parent, std::uint32_t x) {
+    while (parent[x] != x) {
+        parent[x] = parent[parent[x]]; // path halving
+        x = parent[x];
+    }
+    return x;
+}
+
+inline std::uint32_t findRootReadOnly(const std::uint32_t* parent, std::uint32_t x) {
+    while (parent[x] != x)
+        x = parent[x];
+    return x;
+}
+
+inline void unite(std::uint32_t* parent, std::uint32_t a, std::uint32_t b) {
+    a = findRoot(parent, a);
+    b = findRoot(parent, b);
+    if (a < b)
+        parent[b] = a;
+    else if (b < a)
+        parent[a] = b;
+}
+
+/**
+ * The high bit of byte d set where a fragment's link byte d (Direction order) joins another
+ * layer than its own, `layer`: neither 0 (no link) nor `layer`.
+ */
+inline std::uint32_t crossLayerLinks(const std::uint8_t* links, std::uint32_t layer) {
+    const std::uint32_t word = std::uint32_t(links[0]) | std::uint32_t(links[1]) << 8 |
+                               std::uint32_t(links[2]) << 16 | std::uint32_t(links[3]) << 24;
+    // The high bit of each byte that is not zero, exactly (no carries between bytes).
+    const auto nonZero = [](std::uint32_t v) {
+        return (((v & 0x7f7f7f7fu) + 0x7f7f7f7fu) | v) & 0x80808080u;
+    };
+    return nonZero(word) & nonZero(word ^ (layer * 0x01010101u));
+}
+
+/** The fragment that link value `layer` of a fragment at pixel p points to at pixel q, or kNone. */
+inline std::uint32_t target(const LayerStack& stack, std::size_t q, std::uint32_t layer) {
+    return layer != 0 && layer <= stack.layerCount(q) ? stack.offsets[q] + layer - 1 : kNone;
+}
+
+/**
+ * Joins the same-layer links of rows [y0, y1) that stay inside those rows. In scan order, each
+ * fragment joins the sets of its left and upper neighbours on its layer (already labelled) if
+ * either end of the pair links to the other: every pair is met once, at its later fragment.
+ */
+void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y0,
+               int y1) {
+    const int w = stack.width;
+    const std::uint8_t* links = conn.links.data();
+    // The root each layer's fragment took at the pixel before: still its set's root, as only
+    // sets of the same layer are joined.
+    std::uint32_t leftRoot[kMaxLinkedLayers];
+    for (int y = y0; y < y1; ++y)
+        for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const std::uint32_t n = std::min(stack.layerCount(p), kMaxLinkedLayers);
+            const std::uint32_t first = stack.offsets[p];
+            for (std::uint32_t k = 1; k <= n; ++k) {
+                const std::uint32_t f = first + k - 1;
+                const std::uint8_t* l = links + 4 * std::size_t(f);
+                std::uint32_t root = f;
+                // A fragment on the left exists only within the row's span, taken just before.
+                if (x > 0)
+                    if (const std::uint32_t g = target(stack, p - 1, k);
+                        g != kNone && (l[kLeft] == k || links[4 * std::size_t(g) + kRight] == k))
+                        root = leftRoot[k - 1];
+                if (y > y0)
+                    if (const std::uint32_t g = target(stack, p - std::size_t(w), k);
+                        g != kNone && (l[kUp] == k || links[4 * std::size_t(g) + kDown] == k)) {
+                        const std::uint32_t above = findRoot(parent, g);
+                        if (root == f)
+                            root = above;
+                        else if (above < root)
+                            root = parent[root] = above;
+                        else if (root < above)
+                            parent[above] = root;
+                    }
+                parent[f] = root;
+                leftRoot[k - 1] = root;
+            }
+        }
+}
+
+/** Joins the same-layer links between row y - 1 and row y. */
+void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y) {
+    const int w = stack.width;
+    // Every link between the rows has a fragment at both ends: the columns both rows span.
+    const auto [above, aboveEnd] = stack.rowSpan(y - 1);
+    const auto [below, belowEnd] = stack.rowSpan(y);
+    for (int x = std::max(above, below), end = std::min(aboveEnd, belowEnd); x < end; ++x) {
+        const std::size_t q = std::size_t(y) * std::size_t(w) + std::size_t(x);
+        const std::size_t p = q - std::size_t(w);
+        for (std::uint32_t k = 1; k <= std::min(stack.layerCount(p), kMaxLinkedLayers); ++k)
+            if (conn.link(stack.offsets[p] + k - 1, kDown) == k)
+                if (const std::uint32_t g = target(stack, q, k); g != kNone)
+                    unite(parent, stack.offsets[p] + k - 1, g);
+        for (std::uint32_t k = 1; k <= std::min(stack.layerCount(q), kMaxLinkedLayers); ++k)
+            if (conn.link(stack.offsets[q] + k - 1, kUp) == k)
+                if (const std::uint32_t g = target(stack, p, k); g != kNone)
+                    unite(parent, stack.offsets[q] + k - 1, g);
+    }
+}
+
+} // namespace
+
+Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, unsigned threads,
+                           SegmentationTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    Segmentation out;
+    const std::size_t fragments = stack.fragmentCount();
+    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1 ||
+        conn.width != stack.width || conn.height != stack.height ||
+        conn.links.size() != 4 * fragments || stack.offsets.back() != fragments) {
+        out.graph.neighborOffsets.assign(1, 0);
+        return out;
+    }
+    const int w = stack.width, h = stack.height;
+    const int parts = partCount(h, threads);
+    auto rowFragment = [&](int y) { return stack.offsets[std::size_t(y) * std::size_t(w)]; };
+    // Bands of rows with about as many fragments each (a model seldom fills the view evenly):
+    // band i is rows [bandRow[i], bandRow[i + 1]), perhaps empty.
+    std::vector<int> bandRow(std::size_t(parts) + 1, h);
+    for (int index = 0; index < parts; ++index) {
+        const std::uint64_t wanted =
+            std::uint64_t(fragments) * std::uint64_t(index) / std::uint64_t(parts);
+        int lo = 0, hi = h; // the first row starting at or after the wanted fragment
+        while (lo < hi) {
+            const int mid = lo + (hi - lo) / 2;
+            if (rowFragment(mid) < wanted)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        bandRow[std::size_t(index)] = index == 0 ? 0 : lo;
+    }
+    // Calls fn(band, y0, y1) for every band, each on its own thread.
+    const auto forBands = [&](auto&& fn) {
+        parallelRanges(parts, unsigned(parts), [&](int, int begin, int end) {
+            for (int index = begin; index < end; ++index)
+                fn(index, bandRow[std::size_t(index)], bandRow[std::size_t(index) + 1]);
+        });
+    };
+    struct Part {
+        std::vector<std::uint32_t> roots;      // local roots in scan order
+        std::vector<std::uint32_t> rootLayers; // their 1-based layers
+        std::vector<Region> regions;           // partial nodes, by region id
+        // Cross-layer links as (smaller, larger) ids with their count; neighbouring pixels
+        // mostly repeat a pair, which a small direct-mapped table of recent pairs counts in
+        // place, so far fewer entries are sorted.
+        std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
+        std::vector<std::uint32_t> recent; // kRecentPairs slots: an index into pairs, or kNone
+        void addPair(std::uint64_t key) {
+            const std::size_t slot = std::size_t((key * 0x9e3779b97f4a7c15ull) >> 52);
+            std::uint32_t& index = recent[slot];
+            if (index != kNone && pairs[index].first == key) {
+                ++pairs[index].second;
+                return;
+            }
+            index = std::uint32_t(pairs.size());
+            pairs.emplace_back(key, 1u);
+        }
+    };
+    std::vector<Part> part(static_cast<std::size_t>(parts));
+
+    // 1. Label each band of rows on its own, flatten it (parent[i] <= i, so one ascending pass)
+    //    and note its roots.
+    // Every entry is set (per band) before it is read.
+    const auto parentStore = std::make_unique_for_overwrite<std::uint32_t[]>(fragments);
+    std::uint32_t* parent = parentStore.get();
+    forBands([&](int index, int y0, int y1) {
+        Part& own = part[std::size_t(index)];
+        const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
+        std::iota(parent + f0, parent + f1, f0);
+        labelRows(stack, conn, parent, y0, y1);
+        for (int y = y0; y < y1; ++y)
+            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1];
+                     ++f, ++k) {
+                    parent[f] = parent[parent[f]];
+                    if (parent[f] == f) {
+                        own.roots.push_back(f);
+                        own.rootLayers.push_back(k);
+                    }
+                }
+            }
+    });
+    // 2. Stitch the bands in order; this only touches roots and short paths.
+    for (int index = 1; index < parts; ++index)
+        if (const int y = bandRow[std::size_t(index)]; y > 0 && y < h)
+            stitchRows(stack, conn, parent, y);
+
+    // 3. Number the surviving roots by layer, then scan order (bands are in scan order).
+    std::uint32_t layers = 0;
+    for (const Part& own : part)
+        for (std::uint32_t k : own.rootLayers)
+            layers = std::max(layers, k);
+    std::vector<std::uint32_t> base(std::size_t(parts) * layers, 0);
+    for (int index = 0; index < parts; ++index) {
+        const Part& own = part[std::size_t(index)];
+        for (std::size_t i = 0; i < own.roots.size(); ++i)
+            if (parent[own.roots[i]] == own.roots[i])
+                ++base[std::size_t(index) * layers + own.rootLayers[i] - 1];
+    }
+    std::uint32_t regionCount = 0;
+    for (std::uint32_t k = 0; k < layers; ++k)
+        for (int index = 0; index < parts; ++index) {
+            std::uint32_t& slot = base[std::size_t(index) * layers + k];
+            const std::uint32_t count = slot;
+            slot = regionCount;
+            regionCount += count;
+        }
+    out.region.resize(fragments);
+    std::uint32_t* region = out.region.data();
+    for (int index = 0; index < parts; ++index) {
+        const Part& own = part[std::size_t(index)];
+        std::uint32_t* nextId = base.data() + std::size_t(index) * layers;
+        for (std::size_t i = 0; i < own.roots.size(); ++i)
+            if (parent[own.roots[i]] == own.roots[i])
+                region[own.roots[i]] = nextId[own.rootLayers[i] - 1]++;
+    }
+    // The band roots the stitching joined to others take their final root's id and become
+    // roots again (a root reached on the way already has its final id).
+    for (const Part& own : part)
+        for (const std::uint32_t root : own.roots)
+            if (parent[root] != root) {
+                region[root] = region[findRootReadOnly(parent, root)];
+                parent[root] = root;
+            }
+
+    // 4. Every other fragment's id: its parent is a band root (flattened per band, and the
+    //    stitching's path halving links only to band roots), whose id is final; only the ids
+    //    of band roots are read across bands.
+    forBands([&](int, int y0, int y1) {
+        for (std::uint32_t f = rowFragment(y0), f1 = rowFragment(y1); f < f1; ++f)
+            if (parent[f] != f)
+                region[f] = region[parent[f]];
+    });
+    // 5. The partial region nodes and the cross-layer links, per band.
+    forBands([&](int index, int y0, int y1) {
+        Part& own = part[std::size_t(index)];
+        own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
+        own.recent.assign(std::size_t(1) << 12, kNone);
+        // Per layer, the run of the row's fragments in one region so far (layer k's at k - 1):
+        // a region's node takes a run at once, not each of its fragments.
+        struct Run {
+            std::uint32_t region = kNone;
+            std::uint32_t pixels = 0;
+            int minX = 0, maxX = 0;
+        };
+        std::vector<Run> runs;
+        const auto close = [&](Run& run, int y) {
+            if (run.region == kNone)
+                return;
+            Region& node = own.regions[run.region];
+            node.pixels += run.pixels;
+            node.minX = std::min(node.minX, run.minX);
+            node.maxX = std::max(node.maxX, run.maxX);
+            node.minY = std::min(node.minY, y);
+            node.maxY = std::max(node.maxY, y);
+            run.region = kNone;
+        };
+        for (int y = y0; y < y1; ++y) {
+            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+                const std::uint32_t n = stack.layerCount(p);
+                if (runs.size() < n)
+                    runs.resize(n);
+                for (std::uint32_t k = 1; k <= n; ++k) {
+                    const std::uint32_t f = stack.offsets[p] + k - 1;
+                    const std::uint32_t r = region[f];
+                    if (Run& run = runs[k - 1]; run.region == r) {
+                        ++run.pixels;
+                        run.maxX = x;
+                    } else {
+                        close(run, y);
+                        run = {r, 1, x, x};
+                    }
+                    if (k > kMaxLinkedLayers)
+                        continue;
+                    const std::uint8_t* l = conn.links.data() + 4 * std::size_t(f);
+                    for (unsigned cross = crossLayerLinks(l, k); cross != 0; cross &= cross - 1) {
+                        const int d = std::countr_zero(cross) / 8;
+                        const bool inside = d == kRight  ? x + 1 < w
+                                            : d == kLeft ? x > 0
+                                            : d == kUp   ? y > 0
+                                                         : y + 1 < h;
+                        if (!inside)
+                            continue;
+                        const std::size_t q = d == kRight  ? p + 1
+                                              : d == kLeft ? p - 1
+                                              : d == kUp   ? p - std::size_t(w)
+                                                           : p + std::size_t(w);
+                        const std::uint32_t g = target(stack, q, l[d]);
+                        if (g == kNone)
+                            continue;
+                        const std::uint64_t a = r, b = region[g];
+                        own.addPair(a < b ? (a << 32) | b : (b << 32) | a);
+                    }
+                }
+            }
+            for (Run& run : runs)
+                close(run, y);
+        }
+        std::sort(own.pairs.begin(), own.pairs.end());
+    });
+
+    const auto graphStart = std::chrono::steady_clock::now();
+    // 6. Region nodes: merge the bands' partial nodes.
+    RegionGraph& graph = out.graph;
+    graph.regions = std::move(part[0].regions);
+    for (int index = 1; index < parts; ++index)
+        for (std::uint32_t r = 0; r < regionCount; ++r) {
+            Region& node = graph.regions[r];
+            const Region& more = part[std::size_t(index)].regions[r];
+            node.pixels += more.pixels;
+            node.minX = std::min(node.minX, more.minX);
+            node.maxX = std::max(node.maxX, more.maxX);
+            node.minY = std::min(node.minY, more.minY);
+            node.maxY = std::max(node.maxY, more.maxY);
+        }
+    // Ids run layer by layer; after numbering, the last band's counter of a layer is the
+    // layer's end.
+    for (std::uint32_t k = 0, id = 0; k < layers; ++k)
+        for (const std::uint32_t end = base[std::size_t(parts - 1) * layers + k]; id < end; ++id) {
+            graph.regions[id].id = id;
+            graph.regions[id].layer = k + 1;
+        }
+
+    // 7. Region edges: count the unordered region pairs of the cross-layer links.
+    //    Each band sorted its own; merged here.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
+    for (const Part& own : part) {
+        const std::ptrdiff_t sorted = std::ptrdiff_t(pairs.size());
+        pairs.insert(pairs.end(), own.pairs.begin(), own.pairs.end());
+        std::inplace_merge(pairs.begin(), pairs.begin() + sorted, pairs.end());
+    }
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges; // unique pair, link count
+    for (std::size_t i = 0; i < pairs.size();) {
+        std::uint32_t count = 0;
+        std::size_t j = i;
+        for (; j < pairs.size() && pairs[j].first == pairs[i].first; ++j)
+            count += pairs[j].second;
+        edges.emplace_back(pairs[i].first, count);
+        i = j;
+    }
+    graph.neighborOffsets.assign(std::size_t(regionCount) + 1, 0);
+    for (const auto& [key, count] : edges) {
+        ++graph.neighborOffsets[(key >> 32) + 1];
+        ++graph.neighborOffsets[(key & 0xffffffffu) + 1];
+    }
+    std::partial_sum(graph.neighborOffsets.begin(), graph.neighborOffsets.end(),
+                     graph.neighborOffsets.begin());
+    graph.neighbors.resize(graph.neighborOffsets.back());
+    // Edges are sorted by (smaller, larger) id, so appending to both ends fills every list in
+    // ascending neighbour order: first the smaller neighbours, then the larger ones.
+    std::vector<std::uint32_t> fill(graph.neighborOffsets.begin(), graph.neighborOffsets.end() - 1);
+    for (const auto& [key, count] : edges) {
+        const std::uint32_t r = std::uint32_t(key >> 32), s = std::uint32_t(key & 0xffffffffu);
+        graph.neighbors[fill[r]++] = {s, count};
+        graph.neighbors[fill[s]++] = {r, count};
+    }
+    if (timings) {
+        const auto ms = [](auto a, auto b) {
+            return std::chrono::duration<double, std::milli>(b - a).count();
+        };
+        const auto end = std::chrono::steady_clock::now();
+        *timings = {ms(start, graphStart), ms(graphStart, end)};
+    }
+    return out;
+}
+
+} // namespace core

@@ -1,0 +1,477 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The compositor's uploads: the mesh (vertices, triangles, materials, textures), one build's
+// fragments and segmentation, the region order, and painting's texel and vertex colour updates.
+#include "render/depth_compositor.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <epoxy/gl.h>
+#include <glm/vec4.hpp>
+
+#include "render/depth_compositor_impl.h"
+
+namespace render {
+
+using namespace compositor;
+
+namespace {
+/**
+ * A normal octahedral-encoded as 2 × snorm16 (composite_shade.comp decodes it): one shader load
+ * instead of three, within 0.01° of the direction. Zero or non-finite normals give +Z.
+ */
+std::uint32_t octNormal(const glm::vec3& n) {
+    const float sum = std::abs(n.x) + std::abs(n.y) + std::abs(n.z);
+    float x = 0.0f, y = 0.0f;
+    if (sum > 0.0f && std::isfinite(sum)) {
+        x = n.x / sum;
+        y = n.y / sum;
+        if (n.z < 0.0f) {
+            const float fx = (1.0f - std::abs(y)) * (x >= 0.0f ? 1.0f : -1.0f);
+            const float fy = (1.0f - std::abs(x)) * (y >= 0.0f ? 1.0f : -1.0f);
+            x = fx;
+            y = fy;
+        }
+    }
+    const auto snorm = [](float v) {
+        return std::uint32_t(
+            std::uint16_t(std::int16_t(std::lround(std::clamp(v, -1.0f, 1.0f) * 32767.0f))));
+    };
+    return snorm(x) | snorm(y) << 16;
+}
+
+core::Error tooLarge(const char* what) {
+    return core::Error{std::string("layer compositor: ") + what +
+                       " exceed the GL's shader storage block size"};
+}
+core::Error outOfMemory(const char* what) {
+    return core::Error{std::string("layer compositor: out of GL memory for ") + what};
+}
+} // namespace
+
+void LayerCompositor::Impl::findTiles(const core::LayerStack& stack) {
+    const int tilesX = (stack.width + kTileSize - 1) / kTileSize;
+    const int tilesY = (stack.height + kTileSize - 1) / kTileSize;
+    tiles.clear();
+    std::vector<char> used(static_cast<std::size_t>(tilesX));
+    for (int ty = 0; ty < tilesY; ++ty) {
+        std::fill(used.begin(), used.end(), 0);
+        for (int y = ty * kTileSize; y < std::min(stack.height, (ty + 1) * kTileSize); ++y) {
+            const std::uint32_t* row = stack.offsets.data() + std::size_t(y) * stack.width;
+            for (int tx = 0; tx < tilesX; ++tx) {
+                const int x0 = tx * kTileSize, x1 = std::min(stack.width, x0 + kTileSize);
+                used[std::size_t(tx)] |= row[x0] != row[x1];
+            }
+        }
+        for (int tx = 0; tx < tilesX; ++tx)
+            if (used[std::size_t(tx)])
+                tiles.push_back(std::uint32_t(tx) | std::uint32_t(ty) << 16);
+    }
+}
+
+bool LayerCompositor::Impl::uploadRanks(const std::vector<std::uint32_t>& rank) {
+    const std::size_t regions = rank.size();
+    rankData.assign(regions + maxLayers, core::kNone);
+    std::copy(rank.begin(), rank.end(), rankData.begin());
+    std::vector<std::uint32_t> lowestOnLayer(std::size_t(maxLayers) + 2, core::kNone);
+    bool layersKnown = true;
+    for (std::size_t r = 0; r < regions; ++r) {
+        const std::uint32_t layer = regionLayer[r];
+        if (layer < 1 || layer > maxLayers)
+            layersKnown = false;
+        else
+            lowestOnLayer[layer] = std::min(lowestOnLayer[layer], rank[r]);
+    }
+    std::uint32_t deeper = core::kNone;
+    for (std::uint32_t layer = maxLayers; layer >= 1; --layer) {
+        // Unknown layers disable the early exit: a cutoff of 0 is never beaten.
+        rankData[regions + layer - 1] = layersKnown ? deeper : 0;
+        deeper = std::min(deeper, lowestOnLayer[layer]);
+    }
+    ++version;
+    return buffers[kRanks].upload(rankData, maxBlockBytes);
+}
+
+core::Status LayerCompositor::Impl::uploadSegmentation(const core::Layers& layers) {
+    const core::Segmentation& segmentation = layers.segmentation;
+    const core::Connectivity& connectivity = layers.connectivity;
+    bool ok;
+    if (segmentation.region.size() == fragments) {
+        ok = buffers[kFragmentRegions].upload(segmentation.region, maxBlockBytes, true);
+    } else {
+        // No (matching) segmentation: every fragment unranked, drawn front-most first.
+        const std::vector<std::uint32_t> none(fragments, core::kNone);
+        ok = buffers[kFragmentRegions].upload(none, maxBlockBytes, true);
+    }
+    // Four link bytes a fragment read as one little-endian uint: byte d = direction d.
+    if (connectivity.links.size() == 4 * fragments) {
+        ok = ok && buffers[kFragmentLinks].upload(connectivity.links, maxBlockBytes, true);
+    } else {
+        const std::vector<std::uint32_t> unlinked(fragments, 0u);
+        ok = ok && buffers[kFragmentLinks].upload(unlinked, maxBlockBytes, true);
+    }
+    const std::vector<core::Region>& regions = segmentation.graph.regions;
+    regionLayer.resize(regions.size());
+    regionBox.resize(regions.size());
+    std::vector<std::uint32_t> rank(regions.size());
+    for (std::size_t r = 0; r < regions.size(); ++r) {
+        regionLayer[r] = regions[r].layer;
+        regionBox[r] = {regions[r].minX, regions[r].minY, regions[r].maxX, regions[r].maxY};
+        rank[r] = std::uint32_t(r); // ids are ordered by layer, then scan order
+    }
+    if (!fits(rank.size() + maxLayers, sizeof(std::uint32_t)))
+        return tooLarge("the regions");
+    ok = ok && uploadRanks(rank);
+    if (!ok)
+        return outOfMemory("the segmentation");
+    return {};
+}
+
+namespace {
+/** Where the part that begins at firstTriangle ends: as many triangles as fit a block. */
+struct PartPlan {
+    std::uint32_t firstTriangle = 0, triangleCount = 0;
+};
+
+/**
+ * Splits triangles into runs whose triangle array and vertex arrays (vertexBytes a vertex,
+ * counting each vertex once per part) each fit blockBytes. Empty if not even one triangle fits.
+ */
+std::vector<PartPlan> planParts(const std::vector<glm::uvec4>& packed, std::size_t vertices,
+                                std::size_t blockBytes, std::size_t vertexBytes) {
+    const std::size_t maxTriangles = blockBytes / sizeof(glm::uvec4);
+    const std::size_t maxVertices = blockBytes / vertexBytes;
+    if (maxTriangles < 1 || maxVertices < 3)
+        return {};
+    std::vector<PartPlan> parts;
+    std::vector<std::uint32_t> partOf(vertices, core::kNone); // the last part to use a vertex
+    PartPlan part;
+    std::size_t used = 0;
+    for (std::size_t t = 0; t < packed.size(); ++t) {
+        const glm::uvec4& triangle = packed[t];
+        const auto partIndex = std::uint32_t(parts.size());
+        const auto fresh = [&] {
+            std::size_t count = 0;
+            if (triangle.w == core::kNone)
+                return count; // drawn grey: reads no vertex
+            for (int i = 0; i < 3; ++i)
+                count += partOf[triangle[i]] != partIndex &&
+                         (i == 0 || triangle[i] != triangle[0]) &&
+                         (i < 2 || triangle[2] != triangle[1]);
+            return count;
+        };
+        if (part.triangleCount + 1 > maxTriangles || used + fresh() > maxVertices) {
+            parts.push_back(part);
+            part = {std::uint32_t(t), 0};
+            used = 0;
+        }
+        const auto current = std::uint32_t(parts.size());
+        if (triangle.w != core::kNone)
+            for (int i = 0; i < 3; ++i)
+                if (partOf[triangle[i]] != current) {
+                    partOf[triangle[i]] = current;
+                    ++used;
+                }
+        ++part.triangleCount;
+    }
+    parts.push_back(part);
+    return parts;
+}
+
+template <typename T, typename F>
+std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
+    std::vector<T> out(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+        out[i] = value(vertices[i]);
+    return out;
+}
+} // namespace
+
+core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
+    Impl& d = *m_impl;
+    d.hasMesh = false;
+    ++d.version;
+    ++d.geometryVersion;
+    d.releaseTextures();
+    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+    if (!d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
+        return tooLarge("the mesh's materials");
+    if (triangles > core::kNone - 1)
+        return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
+
+    // Triangles with a bad index or material are drawn grey rather than read out of bounds.
+    std::vector<glm::uvec4> packed(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
+                            c = mesh.indices[3 * t + 2];
+        const std::uint32_t material =
+            t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
+        const bool valid =
+            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
+        packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
+    }
+
+    // One pass per distinct texture; textures beyond the resolved byte's range stay unsampled.
+    std::vector<int> passOf(mesh.textures.size(), -1);
+    std::vector<int> passImages;
+    std::vector<GpuMaterial> materials(mesh.materials.size());
+    for (std::size_t m = 0; m < materials.size(); ++m) {
+        const core::Material& material = mesh.materials[m];
+        const int texture = material.baseColorTexture;
+        materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
+        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
+            mesh.textures[std::size_t(texture)].empty())
+            continue;
+        int& pass = passOf[std::size_t(texture)];
+        if (pass < 0 && passImages.size() < kMaxTexturePasses) {
+            pass = int(passImages.size());
+            passImages.push_back(texture);
+        }
+        const core::Image& image = mesh.textures[std::size_t(texture)];
+        materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
+    }
+
+    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
+    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
+    std::vector<std::uint32_t> normals(vertices, octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
+    if (mesh.normals.size() == vertices)
+        std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
+
+    // The largest vertex element: a colour (vec4) or a position (3 floats).
+    const std::size_t vertexBytes = d.hasColors ? sizeof(glm::vec4) : sizeof(glm::vec3);
+    const std::size_t block = d.planBytes();
+    std::vector<PartPlan> plan;
+    const bool onePart = triangles <= block / sizeof(glm::uvec4) && vertices <= block / vertexBytes;
+    if (onePart)
+        plan.push_back({0, std::uint32_t(triangles)});
+    else
+        plan = planParts(packed, vertices, block, vertexBytes);
+    if (plan.empty())
+        return tooLarge("one triangle's vertices");
+
+    const std::size_t limit = d.maxBlockBytes;
+    bool ok = d.buffers[kMaterials].upload(materials, limit);
+    // Parts beyond the plan are freed; the others keep their buffers while the data fits.
+    for (std::size_t i = plan.size(); i < d.meshParts.size(); ++i)
+        for (Buffer& buffer : d.meshParts[i].buffers)
+            buffer.free();
+    d.meshParts.resize(plan.size());
+    for (std::size_t i = 0; i < plan.size() && ok; ++i) {
+        MeshPart& part = d.meshParts[i];
+        part.firstTriangle = plan[i].firstTriangle;
+        part.triangleCount = plan[i].triangleCount;
+        part.vertices.clear();
+        part.renumbered = !onePart;
+        auto& buffers = part.buffers;
+        const auto upload = [&](std::size_t binding, const auto& values, bool present) {
+            Buffer& buffer = buffers[binding - kTriangles];
+            return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
+        };
+        if (onePart) {
+            ok = upload(kTriangles, packed, true) && upload(kPositions, mesh.positions, true) &&
+                 upload(kNormals, normals, true) && upload(kUvs, mesh.uvs, d.hasUvs) &&
+                 upload(kColors, mesh.colors, d.hasColors);
+            continue;
+        }
+        // The part's vertices in ascending order, and its triangles renumbered to them.
+        const auto begin = packed.begin() + part.firstTriangle;
+        std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
+        for (const glm::uvec4& triangle : local)
+            if (triangle.w != core::kNone)
+                part.vertices.insert(part.vertices.end(), {triangle.x, triangle.y, triangle.z});
+        std::sort(part.vertices.begin(), part.vertices.end());
+        part.vertices.erase(std::unique(part.vertices.begin(), part.vertices.end()),
+                            part.vertices.end());
+        const auto localOf = [&](std::uint32_t v) {
+            return std::uint32_t(std::lower_bound(part.vertices.begin(), part.vertices.end(), v) -
+                                 part.vertices.begin());
+        };
+        for (glm::uvec4& triangle : local)
+            if (triangle.w != core::kNone)
+                triangle = {localOf(triangle.x), localOf(triangle.y), localOf(triangle.z),
+                            triangle.w};
+        const std::vector<std::uint32_t>& v = part.vertices;
+        ok = upload(kTriangles, local, true) &&
+             upload(kPositions,
+                    gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }),
+                    true) &&
+             upload(kNormals, gather<std::uint32_t>(v, [&](std::uint32_t g) { return normals[g]; }),
+                    true) &&
+             upload(kUvs,
+                    d.hasUvs ? gather<glm::vec2>(v, [&](std::uint32_t g) { return mesh.uvs[g]; })
+                             : std::vector<glm::vec2>(),
+                    d.hasUvs) &&
+             upload(kColors,
+                    d.hasColors
+                        ? gather<glm::vec4>(v, [&](std::uint32_t g) { return mesh.colors[g]; })
+                        : std::vector<glm::vec4>(),
+                    d.hasColors);
+    }
+    if (!ok) {
+        d.meshParts.clear();
+        return outOfMemory("the mesh (open a model with fewer triangles)");
+    }
+
+    // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
+    for (int texture : passImages) {
+        d.passTextures.emplace_back();
+        d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
+    }
+    d.passOfTexture = std::move(passOf);
+    d.vertexCount = vertices;
+    d.triangleCount = std::uint32_t(triangles);
+    d.hasMesh = true;
+    return {};
+}
+
+void LayerCompositor::setStorageBlockCap(std::size_t bytes) {
+    m_impl->blockCap = bytes;
+}
+
+std::size_t LayerCompositor::meshPartCount() const {
+    return m_impl->hasMesh ? m_impl->meshParts.size() : 0;
+}
+
+core::Status LayerCompositor::setLayers(const core::Layers& layers) {
+    Impl& d = *m_impl;
+    d.hasLayers = false;
+    ++d.version;
+    ++d.geometryVersion;
+    const core::LayerStack& stack = layers.stack;
+    const std::size_t pixels = stack.pixelCount(), fragments = stack.fragmentCount();
+    if (stack.width <= 0 || stack.height <= 0 || stack.width >= 65536 || stack.height >= 65536 ||
+        stack.offsets.size() != pixels + 1 || stack.triangle.size() != fragments ||
+        stack.depth.size() != fragments || stack.offsets.front() != 0 ||
+        stack.offsets.back() != fragments)
+        return core::Error{"layer compositor: inconsistent layer stack"};
+    // Every per-fragment array (the shading too) is a word a fragment; Visible two a pixel.
+    if (!d.fits(2 * pixels, sizeof(std::uint32_t)) || !d.fits(fragments, sizeof(std::uint32_t)) ||
+        fragments > kMaxFragments)
+        return core::Error{"layer compositor: the view's " + std::to_string(fragments) +
+                           " fragments exceed the GL's shader storage block size (" +
+                           std::to_string(d.planBytes() / sizeof(std::uint32_t)) +
+                           " at most); make the view smaller"};
+
+    d.findTiles(stack);
+    std::vector<std::uint32_t> fragmentPixel(fragments);
+    for (std::size_t p = 0; p < pixels; ++p) {
+        if (stack.offsets[p + 1] < stack.offsets[p])
+            return core::Error{"layer compositor: inconsistent layer stack"};
+        std::fill(fragmentPixel.begin() + stack.offsets[p],
+                  fragmentPixel.begin() + stack.offsets[p + 1], std::uint32_t(p));
+    }
+    const std::size_t limit = d.maxBlockBytes;
+    const bool ok =
+        d.buffers[kOffsets].upload(stack.offsets, limit, true) &&
+        d.buffers[kFragmentTriangles].upload(stack.triangle, limit, true) &&
+        d.buffers[kFragmentDepths].upload(stack.depth, limit, true) &&
+        d.buffers[kFragmentPixels].upload(fragmentPixel, limit, true) &&
+        d.buffers[kShadingColor].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingUv].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingLight].upload(nullptr, fragments * 4, limit, true) &&
+        d.buffers[kShadingNormal].upload(nullptr, fragments * 4, limit, true) &&
+        // The visible fragments, then the under ones (transparency).
+        d.buffers[kVisible].upload(nullptr, 2 * pixels * sizeof(std::uint32_t), limit, true) &&
+        d.buffers[kTiles].upload(d.tiles, limit, true);
+    if (!ok)
+        return outOfMemory("the layer stack");
+    // Pixels outside the drawn tiles are never written: they read as background.
+    const std::uint32_t noFragment = 0x7fffffffu;
+    glClearNamedBufferSubData(d.buffers[kVisible].id, GL_R32UI, 0,
+                              GLsizeiptr(pixels * sizeof(std::uint32_t)), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &noFragment);
+
+    d.width = stack.width;
+    d.height = stack.height;
+    d.fragments = fragments;
+    d.view = layers.view.view;
+    // The rays of the stack's own pixels, whatever size the view says.
+    core::View view = layers.view;
+    view.width = stack.width;
+    view.height = stack.height;
+    d.rays = core::PixelRays::fromView(view);
+    d.maxLayers = stack.maxLayers();
+    const core::Status status = d.uploadSegmentation(layers);
+    d.hasLayers = status.ok();
+    return status;
+}
+
+core::Status LayerCompositor::updateSegmentation(const core::Layers& layers) {
+    Impl& d = *m_impl;
+    if (!d.hasLayers || layers.stack.fragmentCount() != d.fragments ||
+        layers.stack.width != d.width || layers.stack.height != d.height)
+        return core::Error{"layer compositor: segmentation of another capture"};
+    const core::Status status = d.uploadSegmentation(layers);
+    d.hasLayers = status.ok();
+    return status;
+}
+
+void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+                                   const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
+        return;
+    d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
+}
+
+void LayerCompositor::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0 ||
+        image.empty())
+        return;
+    d.passMetallicRoughness.resize(d.passTextures.size());
+    d.passMetallicRoughness[std::size_t(d.passOfTexture[texture])].create(image, true);
+}
+
+void LayerCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
+                                              int height, const core::Image& image) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
+        return;
+    const auto pass = std::size_t(d.passOfTexture[texture]);
+    if (pass < d.passMetallicRoughness.size())
+        d.passMetallicRoughness[pass].update(image, x, y, width, height);
+}
+
+void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
+    Impl& d = *m_impl;
+    if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
+        return;
+    const std::size_t count = std::min(colors.size(), d.vertexCount - first);
+    for (MeshPart& part : d.meshParts) {
+        const GLuint buffer = part.buffers[kColors - kTriangles].id;
+        if (!part.renumbered) {
+            glNamedBufferSubData(buffer, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
+                                 GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
+            continue;
+        }
+        // The part's copies of those vertices: a run of its ascending local ones.
+        const auto lo = std::lower_bound(part.vertices.begin(), part.vertices.end(), first);
+        const auto hi = std::lower_bound(lo, part.vertices.end(), std::uint32_t(first + count));
+        if (lo == hi)
+            continue;
+        std::vector<glm::vec4> local;
+        local.reserve(std::size_t(hi - lo));
+        for (auto v = lo; v != hi; ++v)
+            local.push_back(colors[*v - first]);
+        glNamedBufferSubData(buffer,
+                             GLintptr(lo - part.vertices.begin()) * GLintptr(sizeof(glm::vec4)),
+                             GLsizeiptr(local.size() * sizeof(glm::vec4)), local.data());
+    }
+    // The shading holds the colours; the visible fragments stay as picked.
+    ++d.geometryVersion;
+}
+
+bool LayerCompositor::setRegionRanks(const std::vector<std::uint32_t>& rank) {
+    Impl& d = *m_impl;
+    if (!d.hasLayers || rank.size() != d.regionLayer.size())
+        return false;
+    return d.uploadRanks(rank);
+}
+
+} // namespace render

@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "render/gl_depth_capturer.h"
+
+namespace render {
+
+core::Result<core::LayerStack> GlLayerCapturer::capture(const core::View& view, bool cullBackFaces,
+                                                        core::CaptureStats* stats) {
+    LayerCapture::Options options;
+    options.cullBackFaces = cullBackFaces;
+    LayerCapture::Timings timings;
+    auto stack = m_capture.capture(view, options, &timings);
+    if (stats)
+        *stats = {timings.gpuMs, timings.resolveMs, timings.recaptures};
+    return stack;
+}
+
+} // namespace render
