@@ -75,8 +75,8 @@ struct PeakMemory {
 /** Medians of every timed part over the runs of one model at one size. */
 struct Samples {
     std::vector<double> plain, captureGpu, captureResolve, surface, connectivity, segmentation,
-        graph, buildLayers, drawLayers, firstDraw, startStroke, moveStroke, dab, connectivityCpu,
-        connectivityGpu, popUp, seeThroughDraw;
+        graph, buildDepthLayers, drawLayers, firstDraw, startStroke, moveStroke, dab,
+        connectivityCpu, connectivityGpu, popUp, seeThroughDraw;
 };
 
 struct StrokeTimes {
@@ -92,7 +92,7 @@ struct StrokeTimes {
  */
 StrokeTimes timeStroke(core::Document& doc, const core::View& view) {
     StrokeTimes times;
-    const core::LayerStack& stack = doc.layers()->stack;
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     const int y = view.height / 2;
     doc.brush().radius = 32.0f;
     core::PaintChanges changes;
@@ -179,7 +179,7 @@ PaintLayerTimes timePaintLayers(core::Document& doc, const core::View& view, int
     // Painted once more and kept, for the memory the layers hold.
     core::PaintChanges kept;
     const int y = view.height / 2;
-    const core::LayerStack& stack = doc.layers()->stack;
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     for (int x = view.width / 10; x < view.width * 9 / 10; ++x)
         if (stack.layerCount(std::size_t(y) * view.width + x) > 0) {
             if (doc.beginStroke({{float(x) + 0.5f, float(y) + 0.5f}, 1.0f}, kept))
@@ -187,7 +187,7 @@ PaintLayerTimes timePaintLayers(core::Document& doc, const core::View& view, int
             break;
         }
     if (const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget())) {
-        times.stackBytes = texture->layerStack().layerBytes();
+        times.stackBytes = texture->paintLayerStack().layerBytes();
         times.targetBytes = texture->bytes();
     }
     doc.brush() = brush;
@@ -214,8 +214,8 @@ int runBench(const BenchArgs& args) {
         if (!mesh)
             return fail(mesh.error());
         render::MeshRenderer renderer;
-        render::GlLayerCapturer capturer;
-        render::LayerCompositor compositor;
+        render::GlDepthCapturer capturer;
+        render::DepthCompositor compositor;
         for (const core::Status& s :
              {renderer.initialize(), capturer.initialize(), compositor.initialize()})
             if (!s)
@@ -276,12 +276,12 @@ int runBench(const BenchArgs& args) {
                 const double plain = render::timePlainPass(renderer, target, *view, plainOptions);
                 memory.mark("plain_pass");
                 const auto start = Clock::now();
-                if (const core::Status s = doc.buildLayers(capturer, *view); !s)
+                if (const core::Status s = doc.buildDepthLayers(capturer, *view); !s)
                     return fail(model + ": " + s.error());
                 const double build = msSince(start);
                 memory.mark("build_layers");
-                const core::Layers* layers = doc.layers();
-                if (const core::Status s = compositor.setLayers(*layers); !s)
+                const core::DepthLayers* layers = doc.depthLayers();
+                if (const core::Status s = compositor.setDepthLayers(*layers); !s)
                     return fail(model + ": " + s.error());
                 target.bind();
                 // The first draw after a build also shades every fragment once; later draws
@@ -346,7 +346,7 @@ int runBench(const BenchArgs& args) {
                 samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
                                           stroke.moves.end());
                 samples.dab.insert(samples.dab.end(), stroke.dabs.begin(), stroke.dabs.end());
-                const core::LayerTimings& t = layers->timings;
+                const core::DepthLayerTimings& t = layers->timings;
                 samples.plain.push_back(plain);
                 samples.captureGpu.push_back(t.capture.gpuMs);
                 samples.captureResolve.push_back(t.capture.resolveMs);
@@ -354,7 +354,7 @@ int runBench(const BenchArgs& args) {
                 samples.surface.push_back(t.surfaceMs);
                 samples.segmentation.push_back(t.segmentationMs - t.graphMs);
                 samples.graph.push_back(t.graphMs);
-                samples.buildLayers.push_back(build);
+                samples.buildDepthLayers.push_back(build);
                 samples.drawLayers.push_back(draw);
                 samples.firstDraw.push_back(firstDraw);
                 samples.popUp.push_back(popUp);
@@ -367,7 +367,7 @@ int runBench(const BenchArgs& args) {
             }
             const PaintLayerTimes paintLayers = timePaintLayers(doc, *view, runs);
             memory.mark("paint_layers");
-            const double plain = median(samples.plain), build = median(samples.buildLayers);
+            const double plain = median(samples.plain), build = median(samples.buildDepthLayers);
             json row = {
                 {"model", model},
                 {"vertices", mesh->vertexCount()},

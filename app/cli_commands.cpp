@@ -46,18 +46,18 @@ core::Result<glm::mat4> readMatrix(const json& value, const std::string& file, c
 
 } // namespace
 
-core::Result<std::unique_ptr<core::LayerCapturer>>
+core::Result<std::unique_ptr<core::DepthCapturer>>
 makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context) {
     if (cpu)
-        return std::unique_ptr<core::LayerCapturer>(std::make_unique<core::CpuLayerCapturer>());
+        return std::unique_ptr<core::DepthCapturer>(std::make_unique<core::CpuDepthCapturer>());
     auto created = render::HeadlessContext::create();
     if (!created)
         return core::Error{created.error() + " (use --cpu to capture without OpenGL)"};
     context = std::move(created).value();
-    auto gl = std::make_unique<render::GlLayerCapturer>();
+    auto gl = std::make_unique<render::GlDepthCapturer>();
     if (const core::Status s = gl->initialize(); !s)
         return s.takeError();
-    return std::unique_ptr<core::LayerCapturer>(std::move(gl));
+    return std::unique_ptr<core::DepthCapturer>(std::move(gl));
 }
 
 void applyTargetArgs(const std::string& target, int resolution, core::PaintTargetOptions& options) {
@@ -148,9 +148,9 @@ core::Status writeJson(const std::string& path, const json& value) {
 }
 
 /** Writes the per-layer images of docs/architecture.md §4 for layer (1-based). */
-core::Status writeLayerImages(const std::filesystem::path& dir, const core::Layers& layers,
+core::Status writeLayerImages(const std::filesystem::path& dir, const core::DepthLayers& layers,
                               std::uint32_t layer) {
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthStack& stack = layers.stack;
     const std::size_t pixels = stack.pixelCount();
     std::vector<float> depth(pixels, 0.0f);
     std::vector<std::uint32_t> triangle(pixels, 0), region(pixels, 0);
@@ -234,13 +234,13 @@ int runInfo(const std::string& model) {
  * does for the GUI, whose drawing matches it (tested). Operations that turn the camera leave the
  * map of the view they end in.
  */
-core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& args,
-                          const core::Mesh& mesh, core::LayerCapturer& capturer,
-                          core::ConnectivityEngine* engine, const core::LayerOptions& options,
-                          core::Layers layers, core::View view) {
+core::Status writeVisible(const std::filesystem::path& dir, const DepthLayersArgs& args,
+                          const core::Mesh& mesh, core::DepthCapturer& capturer,
+                          core::ConnectivityEngine* engine, const core::DepthLayerOptions& options,
+                          core::DepthLayers layers, core::View view) {
     core::Document doc;
     doc.setMesh(mesh, args.model);
-    doc.setLayerOptions(options);
+    doc.setDepthLayerOptions(options);
     doc.setConnectivityEngine(engine);
     doc.adoptLayers(std::move(layers), doc.meshSerial());
     if (!args.script.empty()) {
@@ -250,10 +250,10 @@ core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& ar
         if (const core::Status s = replayScript(*script, args.script, doc, capturer, view); !s)
             return s;
     }
-    if (!doc.layers())
-        if (const core::Status s = doc.buildLayers(capturer, view); !s)
+    if (!doc.depthLayers())
+        if (const core::Status s = doc.buildDepthLayers(capturer, view); !s)
             return s;
-    const core::LayerStack& stack = doc.layers()->stack;
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     std::vector<std::uint32_t> visible(stack.pixelCount(), 0);
     for (std::size_t p = 0; p < visible.size(); ++p) {
         const std::uint32_t f = doc.visibleFragment(p);
@@ -263,7 +263,7 @@ core::Status writeVisible(const std::filesystem::path& dir, const LayersArgs& ar
                             core::PixelType::UInt32, visible.data());
 }
 
-int runLayers(const LayersArgs& args) {
+int runDepthLayers(const DepthLayersArgs& args) {
     if (!args.script.empty())
         if (auto script = core::readScript(args.script); !script)
             return fail(script.error()); // before any work
@@ -286,13 +286,13 @@ int runLayers(const LayersArgs& args) {
     auto made = makeCapturer(args.cpuCapture, context);
     if (!made)
         return fail(made.error());
-    std::unique_ptr<core::LayerCapturer> capturer = std::move(made).value();
+    std::unique_ptr<core::DepthCapturer> capturer = std::move(made).value();
     if (!args.cpuCapture)
         engine = std::make_unique<render::GlConnectivityEngine>(
             backend.value_or(render::ConnectivityBackend::Auto));
     capturer->setMesh(*mesh);
 
-    core::LayerOptions options;
+    core::DepthLayerOptions options;
     if (args.threshold) {
         if (!(*args.threshold > 0.0f) || !std::isfinite(*args.threshold))
             return fail("--threshold must be a positive number");
@@ -301,7 +301,7 @@ int runLayers(const LayersArgs& args) {
     options.test = args.plainTest ? core::ConnectionTest::Plain : core::ConnectionTest::Surface;
     options.cullBackFaces = !args.twoSided;
     const core::MeshTopology topology = core::buildMeshTopology(*mesh);
-    auto layers = core::buildLayers(*capturer, *mesh, topology, *view, options, engine.get());
+    auto layers = core::buildDepthLayers(*capturer, *mesh, topology, *view, options, engine.get());
     if (!layers)
         return fail(args.model + ": " + layers.error());
 
@@ -338,7 +338,7 @@ int runLayers(const LayersArgs& args) {
             {"cross_component_share", q.crossComponentShare()}};
     }
 
-    const core::LayerTimings& t = layers->timings;
+    const core::DepthLayerTimings& t = layers->timings;
     const json summary = {
         {"model", args.model},
         {"width", view->width},

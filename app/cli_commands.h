@@ -16,7 +16,7 @@
 
 namespace core {
 class Document;
-class LayerCapturer;
+class DepthCapturer;
 } // namespace core
 namespace render {
 class HeadlessContext;
@@ -31,7 +31,7 @@ struct CameraArgs {
     std::string size = "1280x720";
 };
 
-struct LayersArgs {
+struct DepthLayersArgs {
     std::string model;
     CameraArgs camera;
     std::optional<float> threshold;
@@ -77,7 +77,7 @@ struct BenchArgs {
  * context, which is kept in context (it must outlive the capturer). The Error says why OpenGL
  * is unavailable.
  */
-core::Result<std::unique_ptr<core::LayerCapturer>>
+core::Result<std::unique_ptr<core::DepthCapturer>>
 makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 
 /** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
@@ -110,12 +110,12 @@ core::Result<core::Camera> makeCamera(const CameraArgs& args, const core::Mesh& 
  * the camera change view. An Error naming the file, the operation's number and the problem.
  */
 core::Status replayScript(const core::Script& script, const std::string& path, core::Document& doc,
-                          core::LayerCapturer& capturer, core::View& view);
+                          core::DepthCapturer& capturer, core::View& view);
 
 /** `info MODEL`: prints the model's JSON summary on stdout; returns the exit code. */
 int runInfo(const std::string& model);
 /** `layers MODEL ...`: writes the files of docs/architecture.md §4; returns the exit code. */
-int runLayers(const LayersArgs& args);
+int runDepthLayers(const DepthLayersArgs& args);
 /** `paint MODEL --script S.json --out RESULT.glb`: replays and saves; the exit code. */
 int runPaint(const PaintArgs& args);
 /** `export INPUT --out FILE`: writes a model or paint texture format; the exit code. */

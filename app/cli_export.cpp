@@ -95,7 +95,7 @@ int runExport(const ExportArgs& args) {
         if (!texture)
             return fail(args.input + ": there are no paint layers to export (they need a paint "
                                      "texture)");
-        auto layers = core::exportPaintLayerImages(args.out, texture->layerStack());
+        auto layers = core::exportPaintLayerImages(args.out, texture->paintLayerStack());
         if (!layers)
             return fail(layers.error());
         files->insert(files->end(), layers->begin(), layers->end());

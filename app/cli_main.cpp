@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     CLI::App* info = app.add_subcommand("info", "Print a model's summary as JSON");
     info->add_option("MODEL", infoModel, "Model file or builtin:NAME")->required();
 
-    cli::LayersArgs layers;
+    cli::DepthLayersArgs layers;
     CLI::App* layersCommand = app.add_subcommand(
         "layers", "Capture a view's depth layers, connectivity and regions into files");
     layersCommand->add_option("MODEL", layers.model, "Model file or builtin:NAME")->required();
@@ -175,7 +175,7 @@ int main(int argc, char** argv) {
     if (info->parsed())
         return cli::runInfo(infoModel);
     if (layersCommand->parsed())
-        return cli::runLayers(layers);
+        return cli::runDepthLayers(layers);
     if (paintCommand->parsed())
         return cli::runPaint(paint);
     if (exportCommand->parsed())

@@ -20,20 +20,20 @@ namespace cli {
 /** The headless tool's script host: layers captured by capturer (GL or the CPU reference). */
 class CapturerHost final : public core::ScriptHost {
 public:
-    explicit CapturerHost(core::LayerCapturer& capturer) : m_capturer(capturer) {}
-    core::Status buildLayers(core::Document& doc, const core::View& view) override {
-        return doc.buildLayers(m_capturer, view);
+    explicit CapturerHost(core::DepthCapturer& capturer) : m_capturer(capturer) {}
+    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
+        return doc.buildDepthLayers(m_capturer, view);
     }
     core::Result<std::shared_ptr<const core::TipImage>> loadTip(const std::string& path) override {
         return core::loadTipImageFile(path);
     }
 
 private:
-    core::LayerCapturer& m_capturer;
+    core::DepthCapturer& m_capturer;
 };
 
 core::Status replayScript(const core::Script& script, const std::string& path, core::Document& doc,
-                          core::LayerCapturer& capturer, core::View& view) {
+                          core::DepthCapturer& capturer, core::View& view) {
     CapturerHost host(capturer);
     core::ScriptRunner runner(doc, host, view);
     const core::Status status = runner.runAll(script);
@@ -89,7 +89,7 @@ int runPaint(const PaintArgs& args) {
     auto made = makeCapturer(args.cpuCapture, context);
     if (!made)
         return fail(made.error());
-    std::unique_ptr<core::LayerCapturer> capturer = std::move(made).value();
+    std::unique_ptr<core::DepthCapturer> capturer = std::move(made).value();
     capturer->setMesh(doc.mesh());
 
     if (const core::Status s = replayScript(*script, args.script, doc, *capturer, *view); !s)

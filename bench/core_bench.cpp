@@ -43,7 +43,7 @@ core::Brush brush32() {
 void CpuCapture(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     for (auto _ : state) {
-        const core::LayerStack stack = core::captureLayersCpu(*s.mesh, s.view);
+        const core::DepthStack stack = core::captureDepthLayersCpu(*s.mesh, s.view);
         benchmark::DoNotOptimize(stack.depth.data());
     }
     state.counters["fragments"] = double(s.layers.stack.fragmentCount());
@@ -89,8 +89,8 @@ void Segmentation(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     std::size_t regions = 0;
     for (auto _ : state) {
-        const core::Segmentation segmentation =
-            core::segmentLayers(s.layers.stack, s.layers.connectivity, unsigned(state.range(0)));
+        const core::Segmentation segmentation = core::segmentDepthLayers(
+            s.layers.stack, s.layers.connectivity, unsigned(state.range(0)));
         regions = segmentation.graph.regions.size();
         benchmark::DoNotOptimize(segmentation.region.data());
     }
@@ -117,7 +117,7 @@ std::vector<core::StrokePoint> startPoints(const TrefoilScene& s, core::StrokeTr
  */
 std::vector<core::StrokePoint> readyToStroke(benchmark::State& state, const TrefoilScene& s,
                                              core::StrokeTracker& tracker) {
-    if (!tracker.setLayers(s.layers)) {
+    if (!tracker.setDepthLayers(s.layers)) {
         state.SkipWithError("the scene's layers are not usable");
         return {};
     }
@@ -157,7 +157,7 @@ BENCHMARK(StartStroke)->Unit(benchmark::kMillisecond)->UseRealTime();
 void MoveStroke(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     core::StrokeTracker tracker;
-    if (!tracker.setLayers(s.layers) || s.path.size() < 2) {
+    if (!tracker.setDepthLayers(s.layers) || s.path.size() < 2) {
         state.SkipWithError("the scene's layers are not usable");
         return;
     }
@@ -212,7 +212,7 @@ BENCHMARK(CompleteTrackableMap)->Unit(benchmark::kMillisecond)->UseRealTime();
 void DabOnTexture(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     core::StrokeTracker tracker;
-    if (!tracker.setLayers(s.layers)) {
+    if (!tracker.setDepthLayers(s.layers)) {
         state.SkipWithError("the scene's layers are not usable");
         return;
     }
@@ -249,7 +249,7 @@ BENCHMARK(DabOnTexture)->Unit(benchmark::kMillisecond)->UseRealTime();
 void DabOnPaintLayer(benchmark::State& state) {
     const TrefoilScene& s = trefoilScene();
     core::StrokeTracker tracker;
-    if (!tracker.setLayers(s.layers)) {
+    if (!tracker.setDepthLayers(s.layers)) {
         state.SkipWithError("the scene's layers are not usable");
         return;
     }
@@ -266,7 +266,7 @@ void DabOnPaintLayer(benchmark::State& state) {
         state.SkipWithError(target ? "the stroke made no dab" : target.error().c_str());
         return;
     }
-    core::PaintLayerStack& stack = (*target)->layerStack();
+    core::PaintLayerStack& stack = (*target)->paintLayerStack();
     for (int i = 0; i < 8; ++i)
         stack.add({.name = "layer " + std::to_string(i + 1)}, stack.size());
     (*target)->setSelection({stack.layer(stack.size() - 1).id, false});

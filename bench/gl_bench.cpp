@@ -43,7 +43,7 @@ bool glContext(benchmark::State& state) {
 }
 
 /** capturer initialized with the scene's mesh; false after SkipWithError. */
-bool readyCapturer(benchmark::State& state, render::GlLayerCapturer& capturer,
+bool readyCapturer(benchmark::State& state, render::GlDepthCapturer& capturer,
                    const TrefoilScene& s) {
     if (const core::Status status = capturer.initialize(); !status) {
         state.SkipWithError(status.error().c_str());
@@ -80,7 +80,7 @@ void GlCapture(benchmark::State& state) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
-    render::GlLayerCapturer capturer;
+    render::GlDepthCapturer capturer;
     if (!readyCapturer(state, capturer, s))
         return;
     core::CaptureStats stats;
@@ -107,13 +107,13 @@ void BuildLayersGl(benchmark::State& state) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
-    render::GlLayerCapturer capturer;
+    render::GlDepthCapturer capturer;
     if (!readyCapturer(state, capturer, s))
         return;
     render::GlConnectivityEngine engine;
-    core::buildLayers(capturer, *s.mesh, *s.topology, s.view, {}, &engine); // warm-up
+    core::buildDepthLayers(capturer, *s.mesh, *s.topology, s.view, {}, &engine); // warm-up
     for (auto _ : state) {
-        auto layers = core::buildLayers(capturer, *s.mesh, *s.topology, s.view, {}, &engine);
+        auto layers = core::buildDepthLayers(capturer, *s.mesh, *s.topology, s.view, {}, &engine);
         benchmark::DoNotOptimize(layers->segmentation.region.data());
     }
     state.SetLabel(std::string("connectivity on ") +
@@ -162,14 +162,14 @@ enum DrawCase { kComposite, kBoundaries, kSegmentation, kPoppedUp, kFirstAfterSe
 /**
  * draw_layers: a redraw from the captured fragments (glFinish on both sides): the composite, with
  * region boundaries, the segmentation display, the composite with the largest layer-2 region
- * popped up (defeats the fragment search's early exit), and the first draw after setLayers(),
+ * popped up (defeats the fragment search's early exit), and the first draw after setDepthLayers(),
  * which also shades every fragment.
  */
 void DrawLayers(benchmark::State& state, DrawCase drawCase) {
     if (!glContext(state))
         return;
     const TrefoilScene& s = trefoilScene();
-    render::LayerCompositor compositor;
+    render::DepthCompositor compositor;
     render::OffscreenTarget target;
     if (!compositor.initialize() || !compositor.setMesh(*s.mesh) ||
         !target.create(s.view.width, s.view.height)) {
@@ -179,13 +179,13 @@ void DrawLayers(benchmark::State& state, DrawCase drawCase) {
     target.bind();
     render::CompositeOptions options;
     compositor.draw(options); // compiles the programs
-    if (const core::Status status = compositor.setLayers(s.layers); !status) {
+    if (const core::Status status = compositor.setDepthLayers(s.layers); !status) {
         state.SkipWithError(status.error().c_str());
         return;
     }
     options.boundaries = drawCase == kBoundaries;
     if (drawCase == kSegmentation)
-        options.display = render::LayerDisplay::Segmentation;
+        options.display = render::DepthLayerDisplay::Segmentation;
     if (drawCase == kPoppedUp) {
         const core::RegionGraph& graph = s.layers.segmentation.graph;
         core::RegionOrder order(graph);
@@ -206,7 +206,7 @@ void DrawLayers(benchmark::State& state, DrawCase drawCase) {
     for (auto _ : state) {
         if (drawCase == kFirstAfterSetLayers) {
             state.PauseTiming();
-            compositor.setLayers(s.layers);
+            compositor.setDepthLayers(s.layers);
             glFinish();
             state.ResumeTiming();
         }

@@ -26,7 +26,7 @@ struct TrefoilScene {
     std::shared_ptr<core::MeshTopology> topology;
     core::View view;
     /** build_layers of the view with the CPU capture (the same stack as the GL capture's). */
-    core::Layers layers;
+    core::DepthLayers layers;
     /** Window positions 5 px apart along the knot's centre line, all the way round (a 200 Hz
      *  tablet at 1000 px/s), crossing over and under the other strands. */
     std::vector<core::StrokePoint> path;
@@ -62,9 +62,9 @@ inline const TrefoilScene& trefoilScene() {
                 core::Camera::fromOrbit(s.mesh->bounds(), 30.0f, 20.0f, 1.6f).view(width, height);
         }
         s.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*s.mesh));
-        core::CpuLayerCapturer capturer;
+        core::CpuDepthCapturer capturer;
         capturer.setMesh(*s.mesh);
-        auto built = core::buildLayers(capturer, *s.mesh, *s.topology, s.view, {});
+        auto built = core::buildDepthLayers(capturer, *s.mesh, *s.topology, s.view, {});
         if (built)
             s.layers = std::move(built).value();
         // The tube's centre line, as core::makeTrefoil() sweeps it.

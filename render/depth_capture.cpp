@@ -222,7 +222,7 @@ core::Result<CaptureProgram> buildCaptureProgram(int chunks) {
     return p;
 }
 
-struct LayerCapture::Impl {
+struct DepthCapture::Impl {
     std::map<int, CaptureProgram> programs; // by node chunks; 1 built by initialize()
     // The mesh as a triangle soup: 3 positions a triangle, in triangle order.
     GLuint vertexArray = 0, positions = 0;
@@ -319,10 +319,10 @@ struct LayerCapture::Impl {
         return {};
     }
     void draw(const core::View& view, const Options& options);
-    core::Result<core::LayerStack> resolve(const core::View& view, Timings* timings);
+    core::Result<core::DepthStack> resolve(const core::View& view, Timings* timings);
 };
 
-core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
+core::Status DepthCapture::Impl::ensureNodes(std::size_t wanted) {
     if (wanted > maxNodes())
         return core::Error{"layer capture: the view has " + std::to_string(wanted) +
                            " fragments, more than this OpenGL holds (" +
@@ -345,7 +345,7 @@ core::Status LayerCapture::Impl::ensureNodes(std::size_t wanted) {
     return {};
 }
 
-void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
+void DepthCapture::Impl::draw(const core::View& view, const Options& options) {
     const GLuint zero = 0;
     glClearNamedBufferData(counter.id, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     GLuint rangeStart[kMaxNodeRanges] = {}, rangeCapacity[kMaxNodeRanges] = {};
@@ -392,7 +392,7 @@ void LayerCapture::Impl::draw(const core::View& view, const Options& options) {
     glDeleteSync(fence);
 }
 
-core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& view,
+core::Result<core::DepthStack> DepthCapture::Impl::resolve(const core::View& view,
                                                            Timings* timings) {
     std::size_t written = 0; // the ranges' nodes as one list
     for (const NodeRange& range : ranges)
@@ -421,7 +421,7 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     };
     const auto sliceFirst = [&](int s) { return written * std::size_t(s) / std::size_t(slices); };
 
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = view.width;
     stack.height = view.height;
 
@@ -581,13 +581,13 @@ core::Result<core::LayerStack> LayerCapture::Impl::resolve(const core::View& vie
     return stack;
 }
 
-LayerCapture::LayerCapture() : m_impl(std::make_unique<Impl>()) {}
+DepthCapture::DepthCapture() : m_impl(std::make_unique<Impl>()) {}
 
-LayerCapture::~LayerCapture() {
+DepthCapture::~DepthCapture() {
     release();
 }
 
-core::Status LayerCapture::initialize() {
+core::Status DepthCapture::initialize() {
     Impl& d = *m_impl;
     d.software = isSoftwareRenderer();
     auto program = buildCaptureProgram(1);
@@ -621,7 +621,7 @@ core::Status LayerCapture::initialize() {
     return {};
 }
 
-void LayerCapture::setMesh(const core::Mesh& mesh) {
+void DepthCapture::setMesh(const core::Mesh& mesh) {
     Impl& d = *m_impl;
     d.releaseMesh();
     const std::size_t triangles = mesh.triangleCount();
@@ -642,11 +642,11 @@ void LayerCapture::setMesh(const core::Mesh& mesh) {
     d.soupVertices = soup.size();
 }
 
-bool LayerCapture::hasMesh() const {
+bool DepthCapture::hasMesh() const {
     return m_impl->soupVertices > 0;
 }
 
-core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, const Options& options,
+core::Result<core::DepthStack> DepthCapture::capture(const core::View& view, const Options& options,
                                                      Timings* timings) {
     Impl& d = *m_impl;
     if (timings)
@@ -661,7 +661,7 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
                            std::to_string(d.maxFramebufferHeight) + ")"};
     const std::size_t pixels = std::size_t(view.width) * std::size_t(view.height);
     if (d.soupVertices == 0) {
-        core::LayerStack empty;
+        core::DepthStack empty;
         empty.width = view.width;
         empty.height = view.height;
         empty.offsets.assign(pixels + 1, 0);
@@ -725,7 +725,7 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
     const double gpuMs = msSince(start);
 
     const Clock::time_point resolveStart = Clock::now();
-    core::Result<core::LayerStack> stack = d.resolve(view, timings);
+    core::Result<core::DepthStack> stack = d.resolve(view, timings);
     if (!stack)
         return stack;
     if (timings) {
@@ -736,39 +736,39 @@ core::Result<core::LayerStack> LayerCapture::capture(const core::View& view, con
     return stack;
 }
 
-std::size_t LayerCapture::nodeCapacity() const {
+std::size_t DepthCapture::nodeCapacity() const {
     return m_impl->capacity;
 }
 
-void LayerCapture::setNodeCapacity(std::size_t nodes) {
+void DepthCapture::setNodeCapacity(std::size_t nodes) {
     m_impl->requestedCapacity = std::max<std::size_t>(nodes, 1);
 }
 
-void LayerCapture::setStorageBlockCap(std::size_t bytes) {
+void DepthCapture::setStorageBlockCap(std::size_t bytes) {
     Impl& d = *m_impl;
     d.blockCap = bytes;
     d.freeNodes();
     d.planChunks();
 }
 
-void LayerCapture::setNodeRanges(std::size_t count) {
+void DepthCapture::setNodeRanges(std::size_t count) {
     m_impl->setRanges(std::clamp<std::size_t>(std::bit_floor(std::max<std::size_t>(count, 1)), 1,
                                               kMaxNodeRanges));
 }
 
-std::size_t LayerCapture::nodeRanges() const {
+std::size_t DepthCapture::nodeRanges() const {
     return m_impl->ranges.size();
 }
 
-std::size_t LayerCapture::nodeChunks() const {
+std::size_t DepthCapture::nodeChunks() const {
     return m_impl->nodes.size();
 }
 
-int LayerCapture::totalRecaptures() const {
+int DepthCapture::totalRecaptures() const {
     return m_impl->totalRecaptures;
 }
 
-void LayerCapture::release() {
+void DepthCapture::release() {
     if (!m_impl)
         return;
     Impl& d = *m_impl;

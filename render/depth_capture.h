@@ -17,13 +17,13 @@ class MeshRenderer;
 class OffscreenTarget;
 struct DrawOptions;
 
-/** Options of LayerCapture::capture(). */
-struct LayerCaptureOptions {
+/** Options of DepthCapture::capture(). */
+struct DepthCaptureOptions {
     bool cullBackFaces = true; // false: two-sided, back faces are captured too
 };
 
 /** What one capture cost and found. */
-struct LayerCaptureTimings {
+struct DepthCaptureTimings {
     double gpuMs = 0.0;     // clears, draws (every attempt) and the wait for the GPU
     double resolveMs = 0.0; // sorting the list into the stack on the CPU
     int recaptures = 0;     // extra draws because the node buffer was too small
@@ -32,7 +32,7 @@ struct LayerCaptureTimings {
 };
 
 /**
- * Captures every fragment of a view as a core::LayerStack (docs/architecture.md §3 step 2) in one
+ * Captures every fragment of a view as a core::DepthStack (docs/architecture.md §3 step 2) in one
  * geometry pass: a fragment shader appends each fragment with its pixel to a list in GL buffers,
  * then CPU threads sort the list straight from the mapped buffers by band of pixels, each band by
  * pixel and each pixel front to back (ties by triangle id, so the result is deterministic). If a
@@ -41,16 +41,16 @@ struct LayerCaptureTimings {
  * fragment; CPU memory beside the stack: 2 bytes a fragment. capture() blocks until the list
  * is sorted. Needs a current GL 4.5 context for every call, the one it was initialized in.
  */
-class LayerCapture {
+class DepthCapture {
 public:
     // Outside the class only so they can be default arguments of its members.
-    using Options = LayerCaptureOptions;
-    using Timings = LayerCaptureTimings;
+    using Options = DepthCaptureOptions;
+    using Timings = DepthCaptureTimings;
 
-    LayerCapture();
-    ~LayerCapture();
-    LayerCapture(const LayerCapture&) = delete;
-    LayerCapture& operator=(const LayerCapture&) = delete;
+    DepthCapture();
+    ~DepthCapture();
+    DepthCapture(const DepthCapture&) = delete;
+    DepthCapture& operator=(const DepthCapture&) = delete;
 
     /** Compiles the shaders and reads the GL's limits; an Error if either fails. */
     core::Status initialize();
@@ -68,7 +68,7 @@ public:
      * not capped by one storage block: they are split into chunks of a block each (up to 8,
      * as the GL's storage bindings allow: 67 million fragments on llvmpipe).
      */
-    core::Result<core::LayerStack> capture(const core::View& view, const Options& options = {},
+    core::Result<core::DepthStack> capture(const core::View& view, const Options& options = {},
                                            Timings* timings = nullptr);
 
     /** Fragments the node buffer holds (0 before the first capture). */

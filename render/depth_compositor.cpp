@@ -92,7 +92,7 @@ std::uint32_t hash32(std::uint32_t x) {
 }
 } // namespace
 
-core::Result<const Program*> LayerCompositor::Impl::program(unsigned variant) {
+core::Result<const Program*> DepthCompositor::Impl::program(unsigned variant) {
     auto found = programs.find(variant);
     if (found == programs.end()) {
         auto built = buildProgram(variant);
@@ -103,13 +103,13 @@ core::Result<const Program*> LayerCompositor::Impl::program(unsigned variant) {
     return &found->second;
 }
 
-LayerCompositor::LayerCompositor() : m_impl(std::make_unique<Impl>()) {}
+DepthCompositor::DepthCompositor() : m_impl(std::make_unique<Impl>()) {}
 
-LayerCompositor::~LayerCompositor() {
+DepthCompositor::~DepthCompositor() {
     release();
 }
 
-core::Status LayerCompositor::initialize() {
+core::Status DepthCompositor::initialize() {
     Impl& d = *m_impl;
     // The everyday variants, so a broken shader shows here; others build on first use.
     for (unsigned variant : {unsigned(kShade), unsigned(kResolve), 0u}) {
@@ -130,15 +130,15 @@ core::Status LayerCompositor::initialize() {
     return {};
 }
 
-bool LayerCompositor::hasLayers() const {
-    return m_impl->hasLayers;
+bool DepthCompositor::hasDepthLayers() const {
+    return m_impl->hasDepthLayers;
 }
 
-void LayerCompositor::draw(const CompositeOptions& options) {
+void DepthCompositor::draw(const CompositeOptions& options) {
     Impl& d = *m_impl;
     const glm::vec4& background = options.background;
     glClearColor(background.r, background.g, background.b, background.a);
-    if (!d.hasLayers) {
+    if (!d.hasDepthLayers) {
         glClear(GL_COLOR_BUFFER_BIT);
         return;
     }
@@ -156,7 +156,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     if (d.tiles.empty())
         return;
 
-    const bool segmentation = options.display == LayerDisplay::Segmentation;
+    const bool segmentation = options.display == DepthLayerDisplay::Segmentation;
     const bool textured = d.hasMesh && !d.passTextures.empty();
     unsigned shadeVariant = kShade;
     if (textured)
@@ -165,7 +165,7 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         shadeVariant |= kWithColors;
     // What Visible must hold: which fragment is picked and whether boundaries are marked.
     unsigned resolveVariant = 0;
-    if (options.display == LayerDisplay::SingleLayer)
+    if (options.display == DepthLayerDisplay::SingleLayer)
         resolveVariant |= kSingleLayer;
     if (options.boundaries)
         resolveVariant |= kBoundaries;
@@ -193,9 +193,10 @@ void LayerCompositor::draw(const CompositeOptions& options) {
         composeVariant |= kBoundaries;
     if (options.highlightRegion != core::kNone)
         composeVariant |= kHighlight;
-    const std::uint32_t layer = options.display == LayerDisplay::SingleLayer ? options.layer : 0;
+    const std::uint32_t layer =
+        options.display == DepthLayerDisplay::SingleLayer ? options.layer : 0;
     const bool transparent =
-        options.popUpOpacity < 1.0f && options.display != LayerDisplay::SingleLayer;
+        options.popUpOpacity < 1.0f && options.display != DepthLayerDisplay::SingleLayer;
     if (transparent) {
         resolveVariant |= kTransparency;
         composeVariant |= kTransparency;
@@ -336,9 +337,9 @@ void LayerCompositor::draw(const CompositeOptions& options) {
     glUseProgram(0);
 }
 
-std::vector<std::uint32_t> LayerCompositor::readVisible() const {
+std::vector<std::uint32_t> DepthCompositor::readVisible() const {
     const Impl& d = *m_impl;
-    if (!d.hasLayers || d.resolvedVersion != d.version)
+    if (!d.hasDepthLayers || d.resolvedVersion != d.version)
         return {};
     std::vector<std::uint32_t> visible(std::size_t(d.width) * std::size_t(d.height));
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -352,7 +353,7 @@ std::vector<std::uint32_t> LayerCompositor::readVisible() const {
     return visible;
 }
 
-void LayerCompositor::release() {
+void DepthCompositor::release() {
     if (!m_impl)
         return;
     Impl& d = *m_impl;
@@ -368,7 +369,7 @@ void LayerCompositor::release() {
     d.vao = 0;
     d.programs.clear();
     d.hasMesh = false;
-    d.hasLayers = false;
+    d.hasDepthLayers = false;
     ++d.version;
     ++d.geometryVersion;
 }

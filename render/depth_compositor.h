@@ -18,7 +18,7 @@
 namespace render {
 
 /** What draw_layers shows. */
-enum class LayerDisplay {
+enum class DepthLayerDisplay {
     Composite,    // the visible fragment of each pixel, shaded (the normal painting view)
     SingleLayer,  // layer k alone, shaded; pixels without a k-th fragment show the background
     Segmentation, // the visible fragment coloured by its region (the paper's Figure 2)
@@ -27,7 +27,7 @@ enum class LayerDisplay {
 // MaterialChannel (render/material_channel.h): which channel Composite and SingleLayer show.
 
 struct CompositeOptions {
-    LayerDisplay display = LayerDisplay::Composite;
+    DepthLayerDisplay display = DepthLayerDisplay::Composite;
     MaterialChannel channel = MaterialChannel::Material;
     std::uint32_t layer = 1; // for SingleLayer (1-based)
     /**
@@ -69,12 +69,12 @@ struct CompositeOptions {
  * metallic-roughness textures.
  * Needs a current GL context for every call, the one it was initialized in.
  */
-class LayerCompositor {
+class DepthCompositor {
 public:
-    LayerCompositor();
-    ~LayerCompositor();
-    LayerCompositor(const LayerCompositor&) = delete;
-    LayerCompositor& operator=(const LayerCompositor&) = delete;
+    DepthCompositor();
+    ~DepthCompositor();
+    DepthCompositor(const DepthCompositor&) = delete;
+    DepthCompositor& operator=(const DepthCompositor&) = delete;
 
     /** Compiles the shaders (other feature variants on first use); an Error if they fail. */
     core::Status initialize();
@@ -112,13 +112,13 @@ public:
      * Error (and keeps no layers) if the stack is inconsistent or exceeds the GL's limits.
      * Buffers are reused while the data fits, so a rebuild does not reallocate.
      */
-    core::Status setLayers(const core::Layers& layers);
+    core::Status setDepthLayers(const core::DepthLayers& layers);
     /**
-     * Re-uploads links and regions after resegmentLayers() (same capture) and resets the region
-     * order, since region ids change. An Error if there are no layers or sizes do not match.
+     * Re-uploads links and regions after resegmentDepthLayers() (same capture) and resets the
+     * region order, since region ids change. An Error if there are no layers or sizes do not match.
      */
-    core::Status updateSegmentation(const core::Layers& layers);
-    bool hasLayers() const;
+    core::Status updateSegmentation(const core::DepthLayers& layers);
+    bool hasDepthLayers() const;
     /**
      * The region order: rank[r] is region r's place front to back (lower is in front), or
      * core::kNone for a hidden region. Size = region count; returns false (and keeps the old
@@ -128,7 +128,7 @@ public:
     /**
      * Draws into the currently bound framebuffer at the layers' view size (viewport at the
      * origin), replacing every pixel of it; without layers it only clears to the background.
-     * The first draw after setMesh() or setLayers() also shades every fragment, and the first
+     * The first draw after setMesh() or setDepthLayers() also shades every fragment, and the first
      * after a new region order, display layer or boundaries setting also picks the visible
      * fragments again. One pass per base color texture of the mesh. Leaves depth test,
      * blending, face culling and stencil test disabled.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Internal to the compositor's .cpp files (it includes the GL header): the GL objects of
-// LayerCompositor, shared by its drawing (depth_compositor.cpp) and its uploads
+// DepthCompositor, shared by its drawing (depth_compositor.cpp) and its uploads
 // (depth_compositor_upload.cpp).
 #pragma once
 
@@ -140,7 +140,7 @@ struct Program {
 
 namespace render {
 
-struct LayerCompositor::Impl {
+struct DepthCompositor::Impl {
     std::map<unsigned, compositor::Program> programs; // built on first use
     GLuint vao = 0;
     std::array<compositor::Buffer, compositor::kBufferCount> buffers;
@@ -163,8 +163,8 @@ struct LayerCompositor::Impl {
     std::vector<int> passOfTexture;                  // per mesh texture: its pass, -1 for none
     std::vector<PaintTexture> passMetallicRoughness; // per pass; id 0 where it has none
 
-    // Layers
-    bool hasLayers = false;
+    // Depth layers
+    bool hasDepthLayers = false;
     int width = 0;
     int height = 0;
     std::size_t fragments = 0;
@@ -198,11 +198,11 @@ struct LayerCompositor::Impl {
     /** The program of a variant, built on first use; an Error if it does not compile. */
     core::Result<const compositor::Program*> program(unsigned variant);
     /** The tiles holding at least one fragment (offsets only grow along a row). */
-    void findTiles(const core::LayerStack& stack);
+    void findTiles(const core::DepthStack& stack);
     /** Ranks plus, per layer j, the lowest rank deeper than j (the shader's early exit). */
     bool uploadRanks(const std::vector<std::uint32_t>& rank);
     /** Links and regions of layers, and the initial region order. */
-    core::Status uploadSegmentation(const core::Layers& layers);
+    core::Status uploadSegmentation(const core::DepthLayers& layers);
 };
 
 } // namespace render

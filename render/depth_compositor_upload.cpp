@@ -54,7 +54,7 @@ core::Error outOfMemory(const char* what) {
 }
 } // namespace
 
-void LayerCompositor::Impl::findTiles(const core::LayerStack& stack) {
+void DepthCompositor::Impl::findTiles(const core::DepthStack& stack) {
     const int tilesX = (stack.width + kTileSize - 1) / kTileSize;
     const int tilesY = (stack.height + kTileSize - 1) / kTileSize;
     tiles.clear();
@@ -74,7 +74,7 @@ void LayerCompositor::Impl::findTiles(const core::LayerStack& stack) {
     }
 }
 
-bool LayerCompositor::Impl::uploadRanks(const std::vector<std::uint32_t>& rank) {
+bool DepthCompositor::Impl::uploadRanks(const std::vector<std::uint32_t>& rank) {
     const std::size_t regions = rank.size();
     rankData.assign(regions + maxLayers, core::kNone);
     std::copy(rank.begin(), rank.end(), rankData.begin());
@@ -97,7 +97,7 @@ bool LayerCompositor::Impl::uploadRanks(const std::vector<std::uint32_t>& rank) 
     return buffers[kRanks].upload(rankData, maxBlockBytes);
 }
 
-core::Status LayerCompositor::Impl::uploadSegmentation(const core::Layers& layers) {
+core::Status DepthCompositor::Impl::uploadSegmentation(const core::DepthLayers& layers) {
     const core::Segmentation& segmentation = layers.segmentation;
     const core::Connectivity& connectivity = layers.connectivity;
     bool ok;
@@ -192,7 +192,7 @@ std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
 }
 } // namespace
 
-core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
+core::Status DepthCompositor::setMesh(const core::Mesh& mesh) {
     Impl& d = *m_impl;
     d.hasMesh = false;
     ++d.version;
@@ -329,20 +329,20 @@ core::Status LayerCompositor::setMesh(const core::Mesh& mesh) {
     return {};
 }
 
-void LayerCompositor::setStorageBlockCap(std::size_t bytes) {
+void DepthCompositor::setStorageBlockCap(std::size_t bytes) {
     m_impl->blockCap = bytes;
 }
 
-std::size_t LayerCompositor::meshPartCount() const {
+std::size_t DepthCompositor::meshPartCount() const {
     return m_impl->hasMesh ? m_impl->meshParts.size() : 0;
 }
 
-core::Status LayerCompositor::setLayers(const core::Layers& layers) {
+core::Status DepthCompositor::setDepthLayers(const core::DepthLayers& layers) {
     Impl& d = *m_impl;
-    d.hasLayers = false;
+    d.hasDepthLayers = false;
     ++d.version;
     ++d.geometryVersion;
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthStack& stack = layers.stack;
     const std::size_t pixels = stack.pixelCount(), fragments = stack.fragmentCount();
     if (stack.width <= 0 || stack.height <= 0 || stack.width >= 65536 || stack.height >= 65536 ||
         stack.offsets.size() != pixels + 1 || stack.triangle.size() != fragments ||
@@ -397,21 +397,21 @@ core::Status LayerCompositor::setLayers(const core::Layers& layers) {
     d.rays = core::PixelRays::fromView(view);
     d.maxLayers = stack.maxLayers();
     const core::Status status = d.uploadSegmentation(layers);
-    d.hasLayers = status.ok();
+    d.hasDepthLayers = status.ok();
     return status;
 }
 
-core::Status LayerCompositor::updateSegmentation(const core::Layers& layers) {
+core::Status DepthCompositor::updateSegmentation(const core::DepthLayers& layers) {
     Impl& d = *m_impl;
-    if (!d.hasLayers || layers.stack.fragmentCount() != d.fragments ||
+    if (!d.hasDepthLayers || layers.stack.fragmentCount() != d.fragments ||
         layers.stack.width != d.width || layers.stack.height != d.height)
         return core::Error{"layer compositor: segmentation of another capture"};
     const core::Status status = d.uploadSegmentation(layers);
-    d.hasLayers = status.ok();
+    d.hasDepthLayers = status.ok();
     return status;
 }
 
-void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
+void DepthCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
                                    const core::Image& image) {
     Impl& d = *m_impl;
     if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
@@ -419,7 +419,7 @@ void LayerCompositor::updateTexels(std::uint32_t texture, int x, int y, int widt
     d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
 }
 
-void LayerCompositor::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
+void DepthCompositor::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
     Impl& d = *m_impl;
     if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0 ||
         image.empty())
@@ -428,7 +428,7 @@ void LayerCompositor::setMetallicRoughness(std::uint32_t texture, const core::Im
     d.passMetallicRoughness[std::size_t(d.passOfTexture[texture])].create(image, true);
 }
 
-void LayerCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
+void DepthCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
                                               int height, const core::Image& image) {
     Impl& d = *m_impl;
     if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
@@ -438,7 +438,7 @@ void LayerCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int 
         d.passMetallicRoughness[pass].update(image, x, y, width, height);
 }
 
-void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
+void DepthCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
     Impl& d = *m_impl;
     if (!d.hasMesh || !d.hasColors || first >= d.vertexCount || colors.empty())
         return;
@@ -467,9 +467,9 @@ void LayerCompositor::updateVertexColors(std::uint32_t first, std::span<const gl
     ++d.geometryVersion;
 }
 
-bool LayerCompositor::setRegionRanks(const std::vector<std::uint32_t>& rank) {
+bool DepthCompositor::setRegionRanks(const std::vector<std::uint32_t>& rank) {
     Impl& d = *m_impl;
-    if (!d.hasLayers || rank.size() != d.regionLayer.size())
+    if (!d.hasDepthLayers || rank.size() != d.regionLayer.size())
         return false;
     return d.uploadRanks(rank);
 }

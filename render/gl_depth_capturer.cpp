@@ -3,11 +3,11 @@
 
 namespace render {
 
-core::Result<core::LayerStack> GlLayerCapturer::capture(const core::View& view, bool cullBackFaces,
+core::Result<core::DepthStack> GlDepthCapturer::capture(const core::View& view, bool cullBackFaces,
                                                         core::CaptureStats* stats) {
-    LayerCapture::Options options;
+    DepthCapture::Options options;
     options.cullBackFaces = cullBackFaces;
-    LayerCapture::Timings timings;
+    DepthCapture::Timings timings;
     auto stack = m_capture.capture(view, options, &timings);
     if (stats)
         *stats = {timings.gpuMs, timings.resolveMs, timings.recaptures};

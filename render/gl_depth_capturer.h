@@ -6,18 +6,18 @@
 
 namespace render {
 
-/** core::LayerCapturer on OpenGL: build_layers' capture step through render::LayerCapture. */
-class GlLayerCapturer : public core::LayerCapturer {
+/** core::DepthCapturer on OpenGL: build_layers' capture step through render::DepthCapture. */
+class GlDepthCapturer : public core::DepthCapturer {
 public:
     /** Compiles the capture shaders; needs the current context, used for every later call. */
     core::Status initialize() { return m_capture.initialize(); }
     void setMesh(const core::Mesh& mesh) override { m_capture.setMesh(mesh); }
-    core::Result<core::LayerStack> capture(const core::View& view, bool cullBackFaces,
+    core::Result<core::DepthStack> capture(const core::View& view, bool cullBackFaces,
                                            core::CaptureStats* stats) override;
-    LayerCapture& layerCapture() { return m_capture; }
+    DepthCapture& depthCapture() { return m_capture; }
 
 private:
-    LayerCapture m_capture;
+    DepthCapture m_capture;
 };
 
 } // namespace render

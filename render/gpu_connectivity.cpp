@@ -152,7 +152,7 @@ bool GpuConnectivity::initialized() const {
     return m_impl->program.valid();
 }
 
-core::Result<core::Connectivity> GpuConnectivity::compute(const core::LayerStack& stack,
+core::Result<core::Connectivity> GpuConnectivity::compute(const core::DepthStack& stack,
                                                           const core::ConnectivityOptions& options,
                                                           const core::SurfaceGeometry* geometry,
                                                           double* ms) {
@@ -313,7 +313,7 @@ void GpuConnectivity::release() {
 }
 
 core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectivity* gpu,
-                                       const core::LayerStack& stack,
+                                       const core::DepthStack& stack,
                                        const core::ConnectivityOptions& options,
                                        const core::SurfaceGeometry* geometry,
                                        ConnectivityBackend* used) {
@@ -343,7 +343,7 @@ GlConnectivityEngine::GlConnectivityEngine(ConnectivityBackend requested)
 
 GlConnectivityEngine::~GlConnectivityEngine() = default;
 
-core::Connectivity GlConnectivityEngine::compute(const core::LayerStack& stack,
+core::Connectivity GlConnectivityEngine::compute(const core::DepthStack& stack,
                                                  const core::ConnectivityOptions& options,
                                                  const core::SurfaceGeometry* geometry) {
     return computeConnectivity(m_backend, m_gpu.get(), stack, options, geometry);

@@ -56,7 +56,7 @@ public:
      * limit (128 MiB on llvmpipe: 33 million fragments or 4 million triangles), if GPU memory runs
      * out or the dispatch fails; callers then use the CPU reference.
      */
-    core::Result<core::Connectivity> compute(const core::LayerStack& stack,
+    core::Result<core::Connectivity> compute(const core::DepthStack& stack,
                                              const core::ConnectivityOptions& options,
                                              const core::SurfaceGeometry* geometry,
                                              double* ms = nullptr);
@@ -75,7 +75,7 @@ private:
  * when gpu is null or its pass fails. used, if given, receives the backend that ran.
  */
 core::Connectivity computeConnectivity(ConnectivityBackend backend, GpuConnectivity* gpu,
-                                       const core::LayerStack& stack,
+                                       const core::DepthStack& stack,
                                        const core::ConnectivityOptions& options,
                                        const core::SurfaceGeometry* geometry,
                                        ConnectivityBackend* used = nullptr);
@@ -89,7 +89,7 @@ public:
     /** Resolves Auto by the current renderer; a GPU pass that fails to build falls back to CPU. */
     explicit GlConnectivityEngine(ConnectivityBackend requested = ConnectivityBackend::Auto);
     ~GlConnectivityEngine() override;
-    core::Connectivity compute(const core::LayerStack& stack,
+    core::Connectivity compute(const core::DepthStack& stack,
                                const core::ConnectivityOptions& options,
                                const core::SurfaceGeometry* geometry) override;
     /** Cpu or Gpu: what runs now. */

@@ -62,7 +62,7 @@ public:
                       const core::Image& image);
     /**
      * Sets the metallic-roughness image of mesh texture `texture` (RGBA8, G roughness, B
-     * metallic, linear; same size), as LayerCompositor::setMetallicRoughness(); a material with
+     * metallic, linear; same size), as DepthCompositor::setMetallicRoughness(); a material with
      * that base colour texture is then lit as metallic-roughness. A new mesh clears them.
      */
     void setMetallicRoughness(std::uint32_t texture, const core::Image& image);

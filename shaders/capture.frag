@@ -6,7 +6,7 @@
 in float vViewDepth;
 flat in uint vTriangle;
 
-// Pixels are numbered top row first (y = 0 at the top), as in core::LayerStack.
+// Pixels are numbered top row first (y = 0 at the top), as in core::DepthStack.
 uniform int uWidth;
 uniform int uHeight;
 // The nodes are split into ranges, each with its own counter (16 words apart, a cache line

@@ -24,7 +24,7 @@ uniform int uWidth;
 uniform int uHeight;
 
 // Storage bindings are shared with composite_shade.comp, which reads the mesh (1, 2, 6-11, 13).
-// core::LayerStack: pixel p's fragments are [offsets[p], offsets[p + 1]), front to back.
+// core::DepthStack: pixel p's fragments are [offsets[p], offsets[p + 1]), front to back.
 layout(std430, binding = 0) readonly buffer Offsets {
     uint offsets[];
 };
@@ -62,7 +62,7 @@ layout(std430, binding = 17) readonly buffer ShadingNormal {
     uint shadingNormal[];
 };
 
-// Pixel centres in LayerStack coordinates (y down).
+// Pixel centres in DepthStack coordinates (y down).
 vec2 pixelCentre() {
     return vec2(gl_FragCoord.x, float(uHeight) - gl_FragCoord.y);
 }
@@ -123,7 +123,7 @@ uint pickFragment(uint first, uint end, out uint under) {
 
 #ifdef BOUNDARIES
 // Whether fragment f (on layer, at pix) ends its region towards a neighbour that shows a surface:
-// no same-layer link either way, as segmentLayers() joins fragments (the paper's Figure 3 lines).
+// no same-layer link either way, as segmentDepthLayers() joins fragments (the paper's Figure 3 lines).
 bool onBoundary(uint f, uint layer, ivec2 pix) {
     const ivec2 steps[4] = ivec2[4](ivec2(1, 0), ivec2(-1, 0), ivec2(0, -1), ivec2(0, 1));
     uint links = fragmentLinks[f];

@@ -12,7 +12,7 @@
 //   NaN tests look at the bits, which no compiler rewrites.
 layout(local_size_x = 64) in;
 
-// The core::LayerStack: fragments of pixel p are [offsets[p], offsets[p + 1]).
+// The core::DepthStack: fragments of pixel p are [offsets[p], offsets[p + 1]).
 layout(std430, binding = 0) readonly buffer Offsets {
     uint offsets[];
 };

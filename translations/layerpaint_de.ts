@@ -668,7 +668,7 @@
     </message>
 </context>
 <context>
-    <name>ui::LayerBuilder</name>
+    <name>ui::DepthLayersBuilder</name>
     <message>
         <source>not enough memory for the depth layers of this view</source>
         <translation>nicht genug Speicher für die Tiefenebenen dieser Ansicht</translation>
@@ -679,7 +679,7 @@
     </message>
 </context>
 <context>
-    <name>ui::LayersPanel</name>
+    <name>ui::DepthLayersPanel</name>
     <message>
         <source>The whole view, front to back</source>
         <translation>Die ganze Ansicht, von vorn nach hinten</translation>

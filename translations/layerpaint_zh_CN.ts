@@ -667,7 +667,7 @@
     </message>
 </context>
 <context>
-    <name>ui::LayerBuilder</name>
+    <name>ui::DepthLayersBuilder</name>
     <message>
         <source>not enough memory for the depth layers of this view</source>
         <translation>内存不足，无法构建此视图的深度层</translation>
@@ -678,7 +678,7 @@
     </message>
 </context>
 <context>
-    <name>ui::LayersPanel</name>
+    <name>ui::DepthLayersPanel</name>
     <message>
         <source>The whole view, front to back</source>
         <translation>整个视图，由前到后</translation>

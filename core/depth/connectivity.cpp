@@ -111,7 +111,7 @@ namespace lanes8 {
 #endif
 
 /** The linker for this processor: eight lanes where it (and its operating system) runs AVX2. */
-using LinkBands = bool (*)(const LayerStack&, const ConnectivityOptions&, const SurfaceGeometry*,
+using LinkBands = bool (*)(const DepthStack&, const ConnectivityOptions&, const SurfaceGeometry*,
                            Connectivity&, std::atomic<int>&, int);
 LinkBands linkBandsFor(const ConnectivityOptions& options) {
 #if defined(LAYERPAINT_LINKER_AVX2)
@@ -128,7 +128,7 @@ float unitScale(const Mesh& mesh) {
     return side > 0.0f && std::isfinite(side) ? 1.0f / side : 1.0f;
 }
 
-Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOptions& options,
+Connectivity computeConnectivity(const DepthStack& stack, const ConnectivityOptions& options,
                                  const SurfaceGeometry* geometry) {
     Connectivity out;
     out.width = stack.width;
@@ -151,7 +151,7 @@ Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOpti
     return out;
 }
 
-ConnectivityQuality measureConnectivity(const LayerStack& stack, const Connectivity& connectivity,
+ConnectivityQuality measureConnectivity(const DepthStack& stack, const Connectivity& connectivity,
                                         const MeshTopology& topology) {
     ConnectivityQuality quality;
     if (connectivity.links.size() != 4 * stack.fragmentCount() ||

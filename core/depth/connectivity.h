@@ -63,10 +63,10 @@ float unitScale(const Mesh& mesh);
 /** Link directions, in the order links are stored: right, left, up (y - 1), down (y + 1). */
 enum Direction : int { kRight = 0, kLeft = 1, kUp = 2, kDown = 3 };
 
-/** Layers deeper than this cannot be stored in a link byte: they are left unconnected. */
+/** Depth layers deeper than this cannot be stored in a link byte: they are left unconnected. */
 inline constexpr std::uint32_t kMaxLinkedLayers = 255;
 
-/** Pixel-level connectivity (docs/architecture.md §3 step 2) of a LayerStack. */
+/** Pixel-level connectivity (docs/architecture.md §3 step 2) of a DepthStack. */
 struct Connectivity {
     int width = 0;
     int height = 0;
@@ -93,7 +93,7 @@ struct Connectivity {
  * first, then the smallest depth error, then the same layer, then the shallowest layer. The
  * test and its error are symmetric, but the choice is made per side, so link(p→q) = b does not
  * always imply link(q→p) = a (it does whenever a is b's best candidate too, as on any single
- * surface); segmentLayers() joins a pair linked in either direction.
+ * surface); segmentDepthLayers() joins a pair linked in either direction.
  *
  * Surface test for fragments a, b of triangles A, B at pixel centres P, Q (M their midpoint),
  * all errors in unit-cube units:
@@ -119,7 +119,7 @@ struct Connectivity {
  * threshold × contactFactor, or one part's sheets closer than threshold (both look touching).
  * Without geometry (nullptr) the Surface test falls back to the Plain test.
  */
-Connectivity computeConnectivity(const LayerStack& stack, const ConnectivityOptions& options,
+Connectivity computeConnectivity(const DepthStack& stack, const ConnectivityOptions& options,
                                  const SurfaceGeometry* geometry = nullptr);
 
 /** How well connectivity follows the mesh (for the README and regression tests). */
@@ -156,7 +156,7 @@ struct ConnectivityQuality {
  * pixels. Fragments whose triangle id is outside topology are skipped; mismatched sizes give
  * all zeros.
  */
-ConnectivityQuality measureConnectivity(const LayerStack& stack, const Connectivity& connectivity,
+ConnectivityQuality measureConnectivity(const DepthStack& stack, const Connectivity& connectivity,
                                         const MeshTopology& topology);
 
 } // namespace core

@@ -106,7 +106,7 @@ struct LazyDepths {
 
 class Linker {
 public:
-    Linker(const LayerStack& stack, const ConnectivityOptions& options,
+    Linker(const DepthStack& stack, const ConnectivityOptions& options,
            const SurfaceGeometry* geometry, Connectivity& out)
         : m_stack(stack), m_geometry(options.test == ConnectionTest::Surface ? geometry : nullptr),
           m_rays(m_geometry ? m_geometry->rays : PixelRays{}), m_out(out) {
@@ -573,7 +573,7 @@ private:
         return error < m_limit ? error : kFail;
     }
 
-    const LayerStack& m_stack;
+    const DepthStack& m_stack;
     const SurfaceGeometry* m_geometry;
     PixelRays4 m_rays;                              // m_geometry's rays (or the default ones)
     const std::uint32_t* m_fragmentEntry = nullptr; // SurfaceGeometry::fragmentEntry, if made
@@ -595,7 +595,7 @@ private:
  * them), until all chunks bands are done. Returns whether a pixel had more than
  * kMaxLinkedLayers fragments.
  */
-bool linkBands(const LayerStack& stack, const ConnectivityOptions& options,
+bool linkBands(const DepthStack& stack, const ConnectivityOptions& options,
                const SurfaceGeometry* geometry, Connectivity& out, std::atomic<int>& next,
                int chunks) {
     auto linker = std::make_unique<Linker>(stack, options, geometry, out);

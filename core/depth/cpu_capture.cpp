@@ -116,8 +116,9 @@ template <typename Emit> void rasterize(const Setup& s, int width, int y0, int y
 
 } // namespace
 
-LayerStack captureLayersCpu(const Mesh& mesh, const View& view, const CpuCaptureOptions& options) {
-    LayerStack stack;
+DepthStack captureDepthLayersCpu(const Mesh& mesh, const View& view,
+                                 const CpuCaptureOptions& options) {
+    DepthStack stack;
     if (view.width <= 0 || view.height <= 0)
         return stack;
     stack.width = view.width;

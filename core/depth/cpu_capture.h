@@ -13,16 +13,16 @@ struct CpuCaptureOptions {
 };
 
 /**
- * A CPU stand-in for the GL layer capture (render::LayerCapture), for tests and headless use
+ * A CPU stand-in for the GL layer capture (render::DepthCapture), for tests and headless use
  * without GL: rasterizes every triangle at pixel centres with a fill rule like GL's (vertices
- * snapped to 1/256 pixel, a pixel centre on a shared edge covered exactly once) into a LayerStack
+ * snapped to 1/256 pixel, a pixel centre on a shared edge covered exactly once) into a DepthStack
  * sorted front to back, ties by triangle id. Depth is the perspective-correct positive view depth.
  * Front faces are counter-clockwise in normalized device coordinates, as GL's default. No clipping:
  * a triangle with a vertex at or behind the eye plane (clip w <= 0) or beyond ±2^20 pixels is
  * skipped, and so are fragments outside the near/far planes. Results do not depend on the thread
  * count. An empty or invalid view gives a stack without fragments.
  */
-LayerStack captureLayersCpu(const Mesh& mesh, const View& view,
-                            const CpuCaptureOptions& options = {});
+DepthStack captureDepthLayersCpu(const Mesh& mesh, const View& view,
+                                 const CpuCaptureOptions& options = {});
 
 } // namespace core

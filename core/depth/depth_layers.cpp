@@ -14,31 +14,32 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 } // namespace
 
-Result<LayerStack> CpuLayerCapturer::capture(const View& view, bool cullBackFaces,
+Result<DepthStack> CpuDepthCapturer::capture(const View& view, bool cullBackFaces,
                                              CaptureStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     CpuCaptureOptions options;
     options.cullBackFaces = cullBackFaces;
-    LayerStack stack = captureLayersCpu(m_mesh, view, options);
+    DepthStack stack = captureDepthLayersCpu(m_mesh, view, options);
     if (stats)
         *stats = {0.0, millisecondsSince(start), 0};
     return stack;
 }
 
-Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
-                           const View& view, const LayerOptions& options,
-                           ConnectivityEngine* engine) {
+Result<DepthLayers> buildDepthLayers(DepthCapturer& capturer, const Mesh& mesh,
+                                     const MeshTopology& topology, const View& view,
+                                     const DepthLayerOptions& options, ConnectivityEngine* engine) {
     CaptureStats stats;
     auto stack = capturer.capture(view, options.cullBackFaces, &stats);
     if (!stack)
         return stack.takeError();
-    return finishLayers(std::move(stack).value(), stats, mesh, topology, view, options, engine);
+    return finishDepthLayers(std::move(stack).value(), stats, mesh, topology, view, options,
+                             engine);
 }
 
-Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
-                    const MeshTopology& topology, const View& view, const LayerOptions& options,
-                    ConnectivityEngine* engine) {
-    Layers layers;
+DepthLayers finishDepthLayers(DepthStack stack, const CaptureStats& captureStats, const Mesh& mesh,
+                              const MeshTopology& topology, const View& view,
+                              const DepthLayerOptions& options, ConnectivityEngine* engine) {
+    DepthLayers layers;
     layers.view = view;
     layers.options = options;
     layers.stack = std::move(stack);
@@ -46,12 +47,12 @@ Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Me
     const auto start = std::chrono::steady_clock::now();
     layers.geometry = makeSurfaceGeometry(mesh, topology, view, &layers.stack);
     layers.timings.surfaceMs = millisecondsSince(start);
-    resegmentLayers(layers, mesh, options, engine);
+    resegmentDepthLayers(layers, mesh, options, engine);
     return layers;
 }
 
-void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options,
-                     ConnectivityEngine* engine) {
+void resegmentDepthLayers(DepthLayers& layers, const Mesh& mesh, const DepthLayerOptions& options,
+                          ConnectivityEngine* engine) {
     const bool cull = layers.options.cullBackFaces;
     layers.options = options;
     layers.options.cullBackFaces = cull;
@@ -70,7 +71,7 @@ void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& optio
     start = std::chrono::steady_clock::now();
     SegmentationTimings segmentation;
     layers.segmentation =
-        segmentLayers(layers.stack, layers.connectivity, options.threads, &segmentation);
+        segmentDepthLayers(layers.stack, layers.connectivity, options.threads, &segmentation);
     layers.timings.segmentationMs = millisecondsSince(start);
     layers.timings.graphMs = segmentation.graphMs;
 }

@@ -13,32 +13,32 @@
 
 namespace core {
 
-/** What the capture step costs, as reported by a LayerCapturer. */
+/** What the capture step costs, as reported by a DepthCapturer. */
 struct CaptureStats {
     double gpuMs = 0.0;     // drawing the fragments (0 for a CPU capturer)
-    double resolveMs = 0.0; // sorting them into the LayerStack
+    double resolveMs = 0.0; // sorting them into the DepthStack
     int recaptures = 0;     // extra draws because a buffer had to grow
 };
 
 /**
  * The GPU part of build_layers (docs/architecture.md §2): render implements it on OpenGL; tests and
- * headless use without GL can use CpuLayerCapturer.
+ * headless use without GL can use CpuDepthCapturer.
  */
-class LayerCapturer {
+class DepthCapturer {
 public:
-    virtual ~LayerCapturer() = default;
+    virtual ~DepthCapturer() = default;
     /** Makes mesh the one captured from now on. */
     virtual void setMesh(const Mesh& mesh) = 0;
     /** Every front-facing fragment of view (both sides when !cullBackFaces), or an Error. */
-    virtual Result<LayerStack> capture(const View& view, bool cullBackFaces,
+    virtual Result<DepthStack> capture(const View& view, bool cullBackFaces,
                                        CaptureStats* stats) = 0;
 };
 
 /** The CPU stand-in (core/cpu_capture.h). Keeps a copy of the mesh. */
-class CpuLayerCapturer : public LayerCapturer {
+class CpuDepthCapturer : public DepthCapturer {
 public:
     void setMesh(const Mesh& mesh) override { m_mesh = mesh; }
-    Result<LayerStack> capture(const View& view, bool cullBackFaces, CaptureStats* stats) override;
+    Result<DepthStack> capture(const View& view, bool cullBackFaces, CaptureStats* stats) override;
 
 private:
     Mesh m_mesh;
@@ -51,11 +51,11 @@ private:
 class ConnectivityEngine {
 public:
     virtual ~ConnectivityEngine() = default;
-    virtual Connectivity compute(const LayerStack& stack, const ConnectivityOptions& options,
+    virtual Connectivity compute(const DepthStack& stack, const ConnectivityOptions& options,
                                  const SurfaceGeometry* geometry) = 0;
 };
 
-struct LayerOptions {
+struct DepthLayerOptions {
     ConnectionTest test = ConnectionTest::Surface;
     float threshold = 0.001f; // unit-cube units
     bool cullBackFaces = true;
@@ -63,7 +63,7 @@ struct LayerOptions {
 };
 
 /** Milliseconds of the parts of build_layers (the paper's Table 2 splits them like this). */
-struct LayerTimings {
+struct DepthLayerTimings {
     CaptureStats capture;
     double connectivityMs = 0.0;
     double surfaceMs = 0.0;      // the Surface test's planes of the triangles this view shows
@@ -75,37 +75,39 @@ struct LayerTimings {
 };
 
 /** Everything build_layers derives from one view: layers, connectivity, regions, region graph. */
-struct Layers {
+struct DepthLayers {
     View view;
-    LayerOptions options;
-    LayerStack stack;
+    DepthLayerOptions options;
+    DepthStack stack;
     SurfaceGeometry geometry; // the Surface test's per-view planes, kept for re-segmenting
     Connectivity connectivity;
     Segmentation segmentation;
-    LayerTimings timings;
+    DepthLayerTimings timings;
 };
 
 /**
  * build_layers (docs/architecture.md §3 step 2): capture, pixel connectivity, segmentation, region
  * graph. topology must be buildMeshTopology(mesh). Returns the capture's Error if it fails.
  */
-Result<Layers> buildLayers(LayerCapturer& capturer, const Mesh& mesh, const MeshTopology& topology,
-                           const View& view, const LayerOptions& options,
-                           ConnectivityEngine* engine = nullptr);
+Result<DepthLayers> buildDepthLayers(DepthCapturer& capturer, const Mesh& mesh,
+                                     const MeshTopology& topology, const View& view,
+                                     const DepthLayerOptions& options,
+                                     ConnectivityEngine* engine = nullptr);
 
 /**
  * The CPU part of build_layers, for callers that capture themselves (the GUI captures on its GL
  * thread and finishes on a worker thread): connectivity, segmentation and region graph of stack.
  */
-Layers finishLayers(LayerStack stack, const CaptureStats& captureStats, const Mesh& mesh,
-                    const MeshTopology& topology, const View& view, const LayerOptions& options,
-                    ConnectivityEngine* engine = nullptr);
+DepthLayers finishDepthLayers(DepthStack stack, const CaptureStats& captureStats, const Mesh& mesh,
+                              const MeshTopology& topology, const View& view,
+                              const DepthLayerOptions& options,
+                              ConnectivityEngine* engine = nullptr);
 
 /**
  * Recomputes connectivity and regions with new options (threshold, test) without capturing
  * again, as the threshold slider does. The capture options (cullBackFaces) are kept.
  */
-void resegmentLayers(Layers& layers, const Mesh& mesh, const LayerOptions& options,
-                     ConnectivityEngine* engine = nullptr);
+void resegmentDepthLayers(DepthLayers& layers, const Mesh& mesh, const DepthLayerOptions& options,
+                          ConnectivityEngine* engine = nullptr);
 
 } // namespace core

@@ -5,7 +5,7 @@
 
 namespace core {
 
-std::pair<int, int> LayerStack::rowSpan(int y) const {
+std::pair<int, int> DepthStack::rowSpan(int y) const {
     // Offsets never fall: a row's first pixel with fragments is the first whose end is past the
     // row's start, and its pixels from the one starting at the row's end on are empty.
     const std::uint32_t* row = offsets.data() + std::size_t(y) * std::size_t(width);
@@ -16,7 +16,7 @@ std::pair<int, int> LayerStack::rowSpan(int y) const {
     return {int(firstEnd - row) - 1, int(std::lower_bound(row, rowEnd, *rowEnd) - row)};
 }
 
-std::uint32_t LayerStack::maxLayers() const {
+std::uint32_t DepthStack::maxLayers() const {
     std::uint32_t deepest = 0;
     const std::size_t pixels = offsets.empty() ? 0 : std::min(pixelCount(), offsets.size() - 1);
     for (std::size_t p = 0; p < pixels; ++p)
@@ -24,7 +24,7 @@ std::uint32_t LayerStack::maxLayers() const {
     return deepest;
 }
 
-std::vector<std::uint32_t> LayerStack::fragmentsPerLayer() const {
+std::vector<std::uint32_t> DepthStack::fragmentsPerLayer() const {
     std::vector<std::uint32_t> counts(maxLayers(), 0);
     const std::size_t pixels = offsets.empty() ? 0 : std::min(pixelCount(), offsets.size() - 1);
     // Layer k is present at a pixel iff the pixel has at least k fragments, so counting the

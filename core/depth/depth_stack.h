@@ -16,7 +16,7 @@ namespace core {
  * fragment, so a fragment on layer j implies fragments on layers 1..j-1. Pixel y = 0 is the top
  * row.
  */
-struct LayerStack {
+struct DepthStack {
     int width = 0;
     int height = 0;
     std::vector<std::uint32_t> offsets;  // width * height + 1

@@ -81,7 +81,7 @@ PixelRays PixelRays::fromView(const View& view) {
 }
 
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
-                                    const View& view, const LayerStack* stack) {
+                                    const View& view, const DepthStack* stack) {
     SurfaceGeometry geometry;
     geometry.rays = PixelRays::fromView(view);
     const std::size_t count = mesh.triangleCount();

@@ -89,6 +89,6 @@ struct SurfaceGeometry {
  * of millions of triangles costs at most a word per triangle, not a plane.
  */
 SurfaceGeometry makeSurfaceGeometry(const Mesh& mesh, const MeshTopology& topology,
-                                    const View& view, const LayerStack* stack = nullptr);
+                                    const View& view, const DepthStack* stack = nullptr);
 
 } // namespace core

@@ -14,7 +14,7 @@ namespace {
 class PresetHost : public ScriptHost {
 public:
     explicit PresetHost(const TipLoader& load) : m_load(load) {}
-    Status buildLayers(Document&, const View&) override {
+    Status buildDepthLayers(Document&, const View&) override {
         return Error{"a brush preset cannot build layers"};
     }
     Result<std::shared_ptr<const TipImage>> loadTip(const std::string& path) override {

@@ -20,7 +20,7 @@ void Document::setMesh(Mesh mesh, std::string name) {
     m_topology = std::move(topology);
     m_name = std::move(name);
     ++m_meshSerial;
-    clearLayers();
+    clearDepthLayers();
     m_paintTarget.reset();
     ++m_targetSerial;
     m_history.clear();
@@ -38,19 +38,19 @@ void Document::setViewAspect(float aspect) {
         m_viewAspect = aspect;
 }
 
-void Document::clearLayers() {
+void Document::clearDepthLayers() {
     if (m_tracker.inStroke())
         endStroke();
     if (m_hideRanks)
         endHide();
-    if (m_layers) {
+    if (m_depthLayers) {
         // The order steps of these layers name regions that are gone with them.
-        ++m_layersSerial;
-        m_history.dropStaleOrders(m_layersSerial);
+        ++m_depthLayersSerial;
+        m_history.dropStaleOrders(m_depthLayersSerial);
     }
-    m_tracker.clearLayers();
+    m_tracker.clearDepthLayers();
     m_lineStart.reset(); // pixels of another view
-    m_layers.reset();
+    m_depthLayers.reset();
     m_order = {};
     m_ranks.clear();
     m_fragmentHidden.clear();
@@ -58,16 +58,16 @@ void Document::clearLayers() {
 }
 
 void Document::layersChanged() {
-    m_tracker.setLayers(*m_layers);
-    m_order = RegionOrder(m_layers->segmentation.graph);
-    ++m_layersSerial;
-    m_history.dropStaleOrders(m_layersSerial);
+    m_tracker.setDepthLayers(*m_depthLayers);
+    m_order = RegionOrder(m_depthLayers->segmentation.graph);
+    ++m_depthLayersSerial;
+    m_history.dropStaleOrders(m_depthLayersSerial);
     orderChanged();
     m_tracker.setVisibleFragment([this](std::size_t pixel) { return visibleFragment(pixel); });
 }
 
 void Document::setRegionOrder(RegionOrder order) {
-    if (!m_layers || order.regionCount() != m_layers->segmentation.graph.regions.size())
+    if (!m_depthLayers || order.regionCount() != m_depthLayers->segmentation.graph.regions.size())
         return;
     m_order = std::move(order);
     orderChanged();
@@ -77,7 +77,7 @@ void Document::orderChanged() {
     m_ranks = m_order.ranks();
     ++m_orderSerial;
     // Hidden regions take no paint: the tracker skips their fragments.
-    const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+    const std::vector<std::uint32_t>& region = m_depthLayers->segmentation.region;
     const bool anyHidden = std::any_of(m_ranks.begin(), m_ranks.end(),
                                        [](std::uint32_t rank) { return rank == kNone; });
     m_fragmentHidden.clear();
@@ -90,9 +90,9 @@ void Document::orderChanged() {
 }
 
 std::optional<std::size_t> Document::pixelIndex(glm::vec2 pixel) const {
-    if (!m_layers)
+    if (!m_depthLayers)
         return std::nullopt;
-    const LayerStack& stack = m_layers->stack;
+    const DepthStack& stack = m_depthLayers->stack;
     // Compared as floats first: converting a huge or NaN float to an integer is undefined.
     if (!(pixel.x >= 0.0f && pixel.y >= 0.0f && pixel.x < float(stack.width) &&
           pixel.y < float(stack.height)))
@@ -109,7 +109,7 @@ std::uint32_t Document::popUpAt(glm::vec2 pixel) {
         return kNone;
     m_session.noteState(*this);
     const std::vector<std::uint32_t> regions =
-        regionsAtPixel(m_layers->stack, m_layers->segmentation.region, *index);
+        regionsAtPixel(m_depthLayers->stack, m_depthLayers->segmentation.region, *index);
     RegionOrderState before = m_order.state();
     const std::uint32_t region = m_order.cycleAt(regions);
     if (region != kNone) {
@@ -137,12 +137,12 @@ void Document::pushOrderStep(StepKind kind, RegionOrderState before) {
     if (after == before)
         return;
     HistoryStep step{kind, {}};
-    step.parts.emplace_back(OrderChange{std::move(before), std::move(after), m_layersSerial});
+    step.parts.emplace_back(OrderChange{std::move(before), std::move(after), m_depthLayersSerial});
     m_history.push(std::move(step));
 }
 
 void Document::beginHide() {
-    if (!m_layers || m_hideRanks)
+    if (!m_depthLayers || m_hideRanks)
         return;
     m_session.noteState(*this);
     m_hideRanks = m_ranks;
@@ -170,7 +170,7 @@ void Document::endHide() {
 }
 
 bool Document::unhideRegions(std::span<const std::uint32_t> regions) {
-    if (!m_layers)
+    if (!m_depthLayers)
         return false;
     m_session.noteState(*this);
     RegionOrderState before = m_order.state();
@@ -190,7 +190,7 @@ bool Document::unhideRegions(std::span<const std::uint32_t> regions) {
 }
 
 bool Document::unhideAll() {
-    if (!m_layers || m_order.hiddenRegions().empty())
+    if (!m_depthLayers || m_order.hiddenRegions().empty())
         return false;
     m_session.noteState(*this);
     RegionOrderState before = m_order.state();
@@ -202,7 +202,7 @@ bool Document::unhideAll() {
 }
 
 bool Document::resetRegionOrder() {
-    if (!m_layers)
+    if (!m_depthLayers)
         return false;
     RegionOrderState before = m_order.state();
     m_order.reset();
@@ -217,10 +217,10 @@ bool Document::resetRegionOrder() {
 
 std::size_t Document::hideAlong(glm::vec2 a, glm::vec2 b, float radius,
                                 std::span<const std::uint32_t> ranks) {
-    if (!m_layers || !(radius >= 0.0f))
+    if (!m_depthLayers || !(radius >= 0.0f))
         return 0;
-    const std::vector<std::uint32_t> regions =
-        visibleRegionsAlong(m_layers->stack, m_layers->segmentation.region, ranks, a, b, radius);
+    const std::vector<std::uint32_t> regions = visibleRegionsAlong(
+        m_depthLayers->stack, m_depthLayers->segmentation.region, ranks, a, b, radius);
     std::size_t hidden = 0;
     for (const std::uint32_t region : regions) {
         if (!m_order.isHidden(region)) {
@@ -240,35 +240,36 @@ std::optional<glm::vec3> Document::surfacePoint(glm::vec2 pixel) const {
     const std::uint32_t fragment = visibleFragment(*index);
     if (fragment == kNone)
         return std::nullopt;
-    const LayerStack& stack = m_layers->stack;
+    const DepthStack& stack = m_depthLayers->stack;
     const glm::vec2 centre(float(*index % std::size_t(stack.width)) + 0.5f,
                            float(*index / std::size_t(stack.width)) + 0.5f);
-    return m_layers->view.unproject(centre, stack.depth[fragment]);
+    return m_depthLayers->view.unproject(centre, stack.depth[fragment]);
 }
 
 std::uint32_t Document::visibleFragment(std::size_t pixel) const {
-    if (!m_layers)
+    if (!m_depthLayers)
         return kNone;
     if (m_shownLayer > 0) {
-        if (pixel >= m_layers->stack.pixelCount())
+        if (pixel >= m_depthLayers->stack.pixelCount())
             return kNone;
-        const std::uint32_t fragment = m_layers->stack.fragment(pixel, m_shownLayer);
-        const std::vector<std::uint32_t>& region = m_layers->segmentation.region;
+        const std::uint32_t fragment = m_depthLayers->stack.fragment(pixel, m_shownLayer);
+        const std::vector<std::uint32_t>& region = m_depthLayers->segmentation.region;
         if (fragment == kNone || fragment >= region.size() || region[fragment] >= m_ranks.size() ||
             m_ranks[region[fragment]] == kNone)
             return kNone;
         return fragment;
     }
-    return visibleFragmentByRank(m_layers->stack, m_layers->segmentation.region, m_ranks, pixel);
+    return visibleFragmentByRank(m_depthLayers->stack, m_depthLayers->segmentation.region, m_ranks,
+                                 pixel);
 }
 
 std::optional<glm::vec4> Document::pickColor(std::size_t pixel) {
-    if (!m_layers || pixel >= m_layers->stack.pixelCount())
+    if (!m_depthLayers || pixel >= m_depthLayers->stack.pixelCount())
         return std::nullopt;
     const std::uint32_t fragment = visibleFragment(pixel);
     if (fragment == kNone)
         return std::nullopt;
-    const std::uint32_t triangle = m_layers->stack.triangle[fragment];
+    const std::uint32_t triangle = m_depthLayers->stack.triangle[fragment];
     if (triangle >= m_mesh->triangleCount())
         return std::nullopt;
     PaintTarget* target = paintTarget();
@@ -277,8 +278,8 @@ std::optional<glm::vec4> Document::pickColor(std::size_t pixel) {
     // Where the ray through the pixel centre meets the triangle's plane, in view space, as
     // barycentric weights. The capture covered this pixel centre with this triangle, so the
     // point lies on it (up to rounding; colorAt drops small negative weights).
-    const View& view = m_layers->view;
-    const int width = m_layers->stack.width;
+    const View& view = m_depthLayers->view;
+    const int width = m_depthLayers->stack.width;
     const float px = float(pixel % std::size_t(width)) + 0.5f;
     const float py = float(pixel / std::size_t(width)) + 0.5f;
     const PixelRays rays = PixelRays::fromView(view);
@@ -305,39 +306,41 @@ std::optional<glm::vec4> Document::pickColor(std::size_t pixel) {
     return target->colorAt(triangle, weights);
 }
 
-void Document::setLayerOptions(const LayerOptions& options) {
-    const bool recapture = options.cullBackFaces != m_layerOptions.cullBackFaces;
-    m_layerOptions = options;
+void Document::setDepthLayerOptions(const DepthLayerOptions& options) {
+    const bool recapture = options.cullBackFaces != m_depthLayerOptions.cullBackFaces;
+    m_depthLayerOptions = options;
     if (recapture) {
-        clearLayers();
-    } else if (m_layers) {
+        clearDepthLayers();
+    } else if (m_depthLayers) {
         if (m_tracker.inStroke())
             endStroke();
-        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
+        resegmentDepthLayers(*m_depthLayers, *m_mesh, m_depthLayerOptions, m_engine);
         layersChanged();
     }
 }
 
-Status Document::buildLayers(LayerCapturer& capturer, const View& view) {
-    auto layers = core::buildLayers(capturer, *m_mesh, *m_topology, view, m_layerOptions, m_engine);
+Status Document::buildDepthLayers(DepthCapturer& capturer, const View& view) {
+    auto layers =
+        core::buildDepthLayers(capturer, *m_mesh, *m_topology, view, m_depthLayerOptions, m_engine);
     if (!layers)
         return layers.takeError();
-    clearLayers();
-    m_layers = std::make_unique<Layers>(std::move(layers).value());
+    clearDepthLayers();
+    m_depthLayers = std::make_unique<DepthLayers>(std::move(layers).value());
     layersChanged();
     return {};
 }
 
-bool Document::adoptLayers(Layers layers, std::uint64_t meshSerial) {
-    const LayerOptions& o = layers.options;
-    if (meshSerial != m_meshSerial || o.cullBackFaces != m_layerOptions.cullBackFaces)
+bool Document::adoptLayers(DepthLayers layers, std::uint64_t meshSerial) {
+    const DepthLayerOptions& o = layers.options;
+    if (meshSerial != m_meshSerial || o.cullBackFaces != m_depthLayerOptions.cullBackFaces)
         return false;
-    const bool resegment = o.threshold != m_layerOptions.threshold || o.test != m_layerOptions.test;
-    clearLayers();
-    m_layers = std::make_unique<Layers>(std::move(layers));
+    const bool resegment =
+        o.threshold != m_depthLayerOptions.threshold || o.test != m_depthLayerOptions.test;
+    clearDepthLayers();
+    m_depthLayers = std::make_unique<DepthLayers>(std::move(layers));
     // The threshold may have moved while the worker ran: bring the result up to date.
     if (resegment)
-        resegmentLayers(*m_layers, *m_mesh, m_layerOptions, m_engine);
+        resegmentDepthLayers(*m_depthLayers, *m_mesh, m_depthLayerOptions, m_engine);
     layersChanged();
     return true;
 }
@@ -408,7 +411,7 @@ void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
 }
 
 Result<PaintTarget*> Document::readyToPaint() {
-    if (!m_layers)
+    if (!m_depthLayers)
         return Error{"the layers of this view are not built yet"};
     Result<PaintTarget*> target = ensurePaintTarget();
     if (target && m_tracker.inStroke())
@@ -460,7 +463,7 @@ void Document::paintDabs(PaintChanges& changes) {
             popUpUnder(dab);
         if (m_copiesPaint)
             m_paintTarget->beginDabGroup();
-        const PaintChanges& dabChanges = m_paintTarget->paint(*m_layers, dab);
+        const PaintChanges& dabChanges = m_paintTarget->paint(*m_depthLayers, dab);
         changes.texels.insert(changes.texels.end(), dabChanges.texels.begin(),
                               dabChanges.texels.end());
         changes.vertices.insert(changes.vertices.end(), dabChanges.vertices.begin(),
@@ -477,10 +480,10 @@ void Document::popUpUnder(const Dab& dab) {
     const auto index = pixelIndex(dab.center);
     if (!index || dab.layer == 0)
         return;
-    const std::uint32_t fragment = m_layers->stack.fragment(*index, dab.layer);
+    const std::uint32_t fragment = m_depthLayers->stack.fragment(*index, dab.layer);
     if (fragment == kNone || fragment == visibleFragment(*index))
         return;
-    const std::uint32_t region = m_layers->segmentation.region[fragment];
+    const std::uint32_t region = m_depthLayers->segmentation.region[fragment];
     if (region >= m_order.regionCount() || m_order.isHidden(region))
         return;
     m_order.popUp(region);
@@ -496,7 +499,8 @@ void Document::endStroke(PaintChanges& changes) {
     changes.clear();
     // Catch-up: the tip goes the rest of the string to where the pointer was released.
     const std::optional<StrokePoint> rest = m_stabilizer.release();
-    if (rest && m_tracker.inStroke() && m_paintTarget && m_paintTarget->inStroke() && m_layers) {
+    if (rest && m_tracker.inStroke() && m_paintTarget && m_paintTarget->inStroke() &&
+        m_depthLayers) {
         m_dabs.clear();
         m_tracker.moveStroke(*rest, m_dabs);
         paintDabs(changes);
@@ -511,7 +515,7 @@ void Document::endStroke(PaintChanges& changes) {
 
 Status Document::startLine(nlohmann::json op, PaintChanges& changes) {
     changes.clear();
-    if (!m_layers)
+    if (!m_depthLayers)
         return Error{"the layers of this view are not built yet"};
     if (m_tracker.inStroke())
         endStroke();
@@ -573,9 +577,9 @@ void Document::pushStrokeStep() {
     HistoryStep step{StepKind::Stroke, {}};
     if (TileUndoRecord record = m_paintTarget->endStroke(); !record.empty())
         step.parts.emplace_back(std::move(record));
-    if (m_layers && m_order.state() != m_strokeOrderBefore)
+    if (m_depthLayers && m_order.state() != m_strokeOrderBefore)
         step.parts.emplace_back(
-            OrderChange{std::move(m_strokeOrderBefore), m_order.state(), m_layersSerial});
+            OrderChange{std::move(m_strokeOrderBefore), m_order.state(), m_depthLayersSerial});
     m_strokeOrderBefore = {};
     m_history.push(std::move(step));
 }
@@ -586,7 +590,7 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
     if (!ready)
         return ready.takeError();
     PaintTarget* target = *ready;
-    const LayerStack& stack = m_layers->stack;
+    const DepthStack& stack = m_depthLayers->stack;
     const auto pixel = pixelIndex(position);
     if (!pixel)
         return {};
@@ -609,10 +613,11 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
     target->beginStroke(brush);
     switch (mode) {
     case FillMode::Region: {
-        const std::uint32_t region = fragment < m_layers->segmentation.region.size()
-                                         ? m_layers->segmentation.region[fragment]
+        const std::uint32_t region = fragment < m_depthLayers->segmentation.region.size()
+                                         ? m_depthLayers->segmentation.region[fragment]
                                          : kNone;
-        changes = target->paint(*m_layers, regionFillDab(*m_layers, region, brush.opacity));
+        changes =
+            target->paint(*m_depthLayers, regionFillDab(*m_depthLayers, region, brush.opacity));
         break;
     }
     case FillMode::Surface:
@@ -620,7 +625,7 @@ Status Document::fill(glm::vec2 position, FillMode mode, float tolerance, PaintC
             triangleElements(*target, componentTriangles(*m_topology, triangle)));
         break;
     case FillMode::Color:
-        if (const auto point = surfacePointAt(*m_mesh, m_layers->view, triangle, position))
+        if (const auto point = surfacePointAt(*m_mesh, m_depthLayers->view, triangle, position))
             changes = target->paintElements(
                 similarColorElements(*target, *m_topology, triangle, *point, tolerance));
         break;
@@ -644,11 +649,11 @@ void Document::applyStep(HistoryStep& step, bool undo, PaintChanges& changes) {
                                         touched.vertices.end());
             }
         } else if (auto* order = std::get_if<OrderChange>(&part)) {
-            if (m_layers && order->layersSerial == m_layersSerial &&
+            if (m_depthLayers && order->depthLayersSerial == m_depthLayersSerial &&
                 m_order.setState(undo ? order->before : order->after))
                 orderChanged();
-        } else if (auto* layerChange = std::get_if<LayerChange>(&part)) {
-            applyLayerChange(*layerChange, changes);
+        } else if (auto* layerChange = std::get_if<PaintLayerChange>(&part)) {
+            applyPaintLayerChange(*layerChange, changes);
         } else if (auto* swap = std::get_if<TargetSwap>(&part)) {
             std::swap(m_paintTarget, swap->other);
             std::swap(m_paintOptions, swap->otherOptions);

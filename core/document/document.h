@@ -61,29 +61,29 @@ public:
     Camera& camera() { return m_camera; }
     const Camera& camera() const { return m_camera; }
 
-    const LayerOptions& layerOptions() const { return m_layerOptions; }
+    const DepthLayerOptions& depthLayerOptions() const { return m_depthLayerOptions; }
     /**
      * Sets the build_layers options. A new threshold or connection test re-segments the current
      * layers at once (no capture); a new capture option (cullBackFaces) drops them.
      */
-    void setLayerOptions(const LayerOptions& options);
+    void setDepthLayerOptions(const DepthLayerOptions& options);
 
     /**
-     * The connectivity engine used by buildLayers() and re-segmentation on this thread (nullptr:
-     * the CPU reference). Not owned; it must outlive its use here.
+     * The connectivity engine used by buildDepthLayers() and re-segmentation on this thread
+     * (nullptr: the CPU reference). Not owned; it must outlive its use here.
      */
     void setConnectivityEngine(ConnectivityEngine* engine) { m_engine = engine; }
     /** build_layers for view, synchronously. Keeps the old layers if the capture fails. */
-    Status buildLayers(LayerCapturer& capturer, const View& view);
+    Status buildDepthLayers(DepthCapturer& capturer, const View& view);
     /**
-     * Adopts layers finished elsewhere (see finishLayers()); ignored and false when they were
+     * Adopts layers finished elsewhere (see finishDepthLayers()); ignored and false when they were
      * made for another mesh (meshSerial) or with other options, so a stale result is never used.
      */
-    bool adoptLayers(Layers layers, std::uint64_t meshSerial);
+    bool adoptLayers(DepthLayers layers, std::uint64_t meshSerial);
     /** The current view's layers, or nullptr before the first build or after a change. */
-    const Layers* layers() const { return m_layers.get(); }
+    const DepthLayers* depthLayers() const { return m_depthLayers.get(); }
     /** Drops the layers, e.g. when the view changes (they describe the old view). */
-    void clearLayers();
+    void clearDepthLayers();
 
     // Region order (docs/architecture.md §3 step 3), of the current layers; a new build or
     // re-segmentation starts from the initial order (region ids change).
@@ -111,7 +111,7 @@ public:
     void setShownLayer(std::uint32_t layer) { m_shownLayer = layer; }
     std::uint32_t shownLayer() const { return m_shownLayer; }
     /** Changes whenever the layers are replaced or re-segmented (region ids change). */
-    std::uint64_t layersSerial() const { return m_layersSerial; }
+    std::uint64_t depthLayersSerial() const { return m_depthLayersSerial; }
     /** Changes with every change of the order (pop-up, hiding, reset, new layers). */
     std::uint64_t regionOrderSerial() const { return m_orderSerial; }
     /**
@@ -262,7 +262,7 @@ public:
      * for the current layers: at the first symmetric stroke (captured on the CPU on this thread),
      * or ahead of it elsewhere (symmetryBuild(), adoptSymmetry()); empty without symmetry.
      */
-    std::vector<const Layers*> symmetryLayers() const;
+    std::vector<const DepthLayers*> symmetryLayers() const;
 
     /**
      * What the symmetric copies' layers are made from: the views of the copies of the current
@@ -271,14 +271,15 @@ public:
      */
     struct SymmetryBuild {
         BrushSymmetry symmetry;
-        std::uint64_t layersSerial = 0;
+        std::uint64_t depthLayersSerial = 0;
         std::uint64_t meshSerial = 0;
         std::shared_ptr<const Mesh> mesh;
         std::shared_ptr<const MeshTopology> topology;
-        LayerOptions options;
+        DepthLayerOptions options;
         std::vector<glm::mat4> transforms;
         std::vector<View> views;
-        std::vector<std::optional<Layers>> layers; // per view, after build(); none if it failed
+        std::vector<std::optional<DepthLayers>>
+            layers; // per view, after build(); none if it failed
         /**
          * Captures (on the CPU) and finishes every view's layers; progress gets the fraction of
          * copies done and stops the build (false, nothing built) when it returns false.
@@ -325,12 +326,12 @@ public:
 
     // Paint layers of a texture target (docs/architecture.md §3 step 6). Each operation makes the
     // target if there is none yet, is one undo step (StepKind::PaintLayers), is written to the
-    // session log, and puts what the composite changed in changes. Layers are named by id
+    // session log, and puts what the composite changed in changes. Paint layers are named by id
     // (PaintLayer::id); index 0 is the layer right above the base. An Error (nothing changed)
     // for a vertex colour target, an unknown id or an operation that does not apply.
 
     /** The texture target (made on first use), or an Error for a vertex colour target. */
-    Result<TextureTarget*> layerTarget();
+    Result<TextureTarget*> paintLayerTarget();
     /**
      * Adds a layer right above the selected one (above the base: at the bottom) and selects it.
      * Returns its id.
@@ -378,9 +379,9 @@ private:
     /** point with the pressure curve applied. */
     StrokePoint curved(StrokePoint point) const;
     /** Applies a paint-layer change (both directions: it swaps), adding what changed. */
-    void applyLayerChange(LayerChange& change, PaintChanges& changes);
+    void applyPaintLayerChange(PaintLayerChange& change, PaintChanges& changes);
     /** Applies change, records it as a step and logs op. */
-    void pushLayerChange(LayerChange change, nlohmann::json op, PaintChanges& changes);
+    void pushPaintLayerChange(PaintLayerChange change, nlohmann::json op, PaintChanges& changes);
     /** The index of layer id in the texture target's stack, or an Error. */
     Result<std::size_t> paintLayerIndex(std::uint64_t id);
     /** Applies (undo) or re-applies (redo) one step's parts. */
@@ -417,14 +418,14 @@ private:
     std::uint64_t m_meshSerial = 0;
     Camera m_camera;
     float m_viewAspect = 1.0f;
-    LayerOptions m_layerOptions;
+    DepthLayerOptions m_depthLayerOptions;
     ConnectivityEngine* m_engine = nullptr;
-    std::unique_ptr<Layers> m_layers;
+    std::unique_ptr<DepthLayers> m_depthLayers;
     RegionOrder m_order;
     std::vector<std::uint32_t> m_ranks;
     std::vector<std::uint8_t> m_fragmentHidden; // per fragment, empty when nothing is hidden
     std::uint64_t m_orderSerial = 0;
-    std::uint64_t m_layersSerial = 0;
+    std::uint64_t m_depthLayersSerial = 0;
     bool m_autoPopUp = true;
     std::optional<std::vector<std::uint32_t>> m_hideRanks; // during a paint-to-hide stroke
     RegionOrderState m_hideBefore;
@@ -447,13 +448,13 @@ private:
     struct SymmetryCopy {
         glm::mat4 transform{1.0f};
         bool reflects = false;
-        std::unique_ptr<Layers> layers;
+        std::unique_ptr<DepthLayers> layers;
         StrokeTracker tracker;
         bool started = false;
     };
     std::vector<std::unique_ptr<SymmetryCopy>> m_copies;
     BrushSymmetry m_copiesSymmetry;       // what m_copies were made for
-    std::uint64_t m_copiesLayers = ~0ull; // m_layersSerial they were made for
+    std::uint64_t m_copiesLayers = ~0ull; // m_depthLayersSerial they were made for
     std::uint64_t m_copiesMesh = ~0ull;   // m_meshSerial they were made for
     bool m_symmetryOnStroke = true;
     bool m_copiesPaint = false; // the stroke in progress paints m_copies

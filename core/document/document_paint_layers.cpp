@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The document's paint-layer operations (docs/architecture.md, "The controller and its history"):
-// each builds a LayerChange, applies it to the texture target's stack and records it.
+// each builds a PaintLayerChange, applies it to the texture target's stack and records it.
 #include <algorithm>
 #include <cmath>
 
@@ -41,10 +41,10 @@ nlohmann::json fillValuesJson(const ChannelValues& v, bool nulls) {
  * (merge down, flatten): that layer goes into held and the removed ones back into the stack, so
  * that applying the change (a swap) does the operation and undoing it puts them back.
  */
-LayerChange swapBack(PaintLayerStack& stack, std::size_t index,
-                     std::vector<std::unique_ptr<PaintLayer>>& removed) {
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
+PaintLayerChange swapBack(PaintLayerStack& stack, std::size_t index,
+                          std::vector<std::unique_ptr<PaintLayer>>& removed) {
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Swap;
     change.index = index;
     change.count = removed.size();
     change.held.push_back(stack.take(index));
@@ -56,7 +56,7 @@ LayerChange swapBack(PaintLayerStack& stack, std::size_t index,
 
 } // namespace
 
-Result<TextureTarget*> Document::layerTarget() {
+Result<TextureTarget*> Document::paintLayerTarget() {
     Result<PaintTarget*> target = ensurePaintTarget();
     if (!target)
         return target.takeError();
@@ -70,27 +70,27 @@ Result<TextureTarget*> Document::layerTarget() {
 }
 
 Result<std::size_t> Document::paintLayerIndex(std::uint64_t id) {
-    Result<TextureTarget*> target = layerTarget();
+    Result<TextureTarget*> target = paintLayerTarget();
     if (!target)
         return target.takeError();
-    const std::optional<std::size_t> index = (*target)->layerStack().indexOf(id);
+    const std::optional<std::size_t> index = (*target)->paintLayerStack().indexOf(id);
     if (!index)
         return Error{"no paint layer " + std::to_string(id), ErrorKind::BadInput};
     return *index;
 }
 
-void Document::applyLayerChange(LayerChange& change, PaintChanges& changes) {
+void Document::applyPaintLayerChange(PaintLayerChange& change, PaintChanges& changes) {
     auto* target = dynamic_cast<TextureTarget*>(m_paintTarget.get());
     if (!target)
         return;
-    PaintLayerStack& stack = target->layerStack();
+    PaintLayerStack& stack = target->paintLayerStack();
     std::vector<TileKey> tiles;
     const auto covered = [&](const PaintLayer& layer) {
         const std::vector<TileKey> t = stack.tilesCovered(layer);
         tiles.insert(tiles.end(), t.begin(), t.end());
     };
     switch (change.kind) {
-    case LayerChange::Kind::Swap: {
+    case PaintLayerChange::Kind::Swap: {
         std::vector<std::unique_ptr<PaintLayer>> out;
         for (std::size_t i = 0; i < change.count && change.index < stack.size(); ++i) {
             out.push_back(stack.take(change.index));
@@ -105,14 +105,14 @@ void Document::applyLayerChange(LayerChange& change, PaintChanges& changes) {
         change.count = in;
         break;
     }
-    case LayerChange::Kind::Move:
+    case PaintLayerChange::Kind::Move:
         if (stack.size() > 0) {
             stack.move(change.from, change.to);
             covered(stack.layer(std::min(change.to, stack.size() - 1)));
             std::swap(change.from, change.to);
         }
         break;
-    case LayerChange::Kind::Settings:
+    case PaintLayerChange::Kind::Settings:
         if (const auto index = stack.indexOf(change.id)) {
             covered(stack.layer(*index));
             PaintLayerSettings old = stack.layer(*index).settings;
@@ -121,7 +121,7 @@ void Document::applyLayerChange(LayerChange& change, PaintChanges& changes) {
             covered(stack.layer(*index));
         }
         break;
-    case LayerChange::Kind::Mask:
+    case PaintLayerChange::Kind::Mask:
         if (const auto index = stack.indexOf(change.id)) {
             std::unique_ptr<TiledPlane> old = stack.takeMask(*index);
             stack.setMask(*index, std::move(change.mask));
@@ -147,10 +147,11 @@ void Document::applyLayerChange(LayerChange& change, PaintChanges& changes) {
     changes.texels.insert(changes.texels.end(), refreshed.texels.begin(), refreshed.texels.end());
 }
 
-void Document::pushLayerChange(LayerChange change, nlohmann::json op, PaintChanges& changes) {
+void Document::pushPaintLayerChange(PaintLayerChange change, nlohmann::json op,
+                                    PaintChanges& changes) {
     m_session.noteState(*this);
     m_session.add(std::move(op));
-    applyLayerChange(change, changes);
+    applyPaintLayerChange(change, changes);
     HistoryStep step{StepKind::PaintLayers, {}};
     step.parts.emplace_back(std::move(change));
     m_history.push(std::move(step));
@@ -158,11 +159,11 @@ void Document::pushLayerChange(LayerChange change, nlohmann::json op, PaintChang
 
 Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, PaintChanges& changes) {
     changes.clear();
-    Result<TextureTarget*> ready = layerTarget();
+    Result<TextureTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
     TextureTarget& target = **ready;
-    PaintLayerStack& stack = target.layerStack();
+    PaintLayerStack& stack = target.paintLayerStack();
     std::size_t index = stack.size();
     if (target.selection().layer == 0)
         index = 0;
@@ -175,13 +176,13 @@ Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, Paint
     if (settings.kind == PaintLayerKind::Fill)
         op["values"] = fillValuesJson(settings.fill, false);
     index = stack.add(std::move(settings), index);
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Swap;
     change.index = index;
     change.held.push_back(stack.take(index));
     const std::uint64_t id = change.held.back()->id;
     change.selection = {id, false};
-    pushLayerChange(std::move(change), std::move(op), changes);
+    pushPaintLayerChange(std::move(change), std::move(op), changes);
     return id;
 }
 
@@ -190,16 +191,16 @@ Result<std::uint64_t> Document::duplicatePaintLayer(std::uint64_t id, PaintChang
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    PaintLayerStack& stack = (*layerTarget())->layerStack();
+    PaintLayerStack& stack = (*paintLayerTarget())->paintLayerStack();
     const std::size_t at = stack.duplicate(*index);
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Swap;
     change.index = at;
     change.held.push_back(stack.take(at));
     const std::uint64_t copy = change.held.back()->id;
     change.selection = {copy, false};
-    pushLayerChange(std::move(change), {{"op", "layer-duplicate"}, {"layer", layerRef(*index)}},
-                    changes);
+    pushPaintLayerChange(std::move(change),
+                         {{"op", "layer-duplicate"}, {"layer", layerRef(*index)}}, changes);
     return copy;
 }
 
@@ -208,16 +209,16 @@ Status Document::deletePaintLayer(std::uint64_t id, PaintChanges& changes) {
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **layerTarget();
-    LayerChange change;
-    change.kind = LayerChange::Kind::Swap;
+    TextureTarget& target = **paintLayerTarget();
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Swap;
     change.index = *index;
     change.count = 1;
     change.selection = target.selection();
     if (change.selection.layer == id)
-        change.selection = {*index > 0 ? target.layerStack().layer(*index - 1).id : 0, false};
-    pushLayerChange(std::move(change), {{"op", "layer-delete"}, {"layer", layerRef(*index)}},
-                    changes);
+        change.selection = {*index > 0 ? target.paintLayerStack().layer(*index - 1).id : 0, false};
+    pushPaintLayerChange(std::move(change), {{"op", "layer-delete"}, {"layer", layerRef(*index)}},
+                         changes);
     return {};
 }
 
@@ -226,17 +227,18 @@ Status Document::movePaintLayer(std::uint64_t id, std::size_t to, PaintChanges& 
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **layerTarget();
-    to = std::min(to, target.layerStack().size() - 1);
+    TextureTarget& target = **paintLayerTarget();
+    to = std::min(to, target.paintLayerStack().size() - 1);
     if (to == *index)
         return {};
-    LayerChange change;
-    change.kind = LayerChange::Kind::Move;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Move;
     change.from = *index;
     change.to = to;
     change.selection = target.selection();
-    pushLayerChange(std::move(change),
-                    {{"op", "layer-move"}, {"layer", layerRef(*index)}, {"index", to}}, changes);
+    pushPaintLayerChange(std::move(change),
+                         {{"op", "layer-move"}, {"layer", layerRef(*index)}, {"index", to}},
+                         changes);
     return {};
 }
 
@@ -246,11 +248,11 @@ Status Document::setPaintLayerSettings(std::uint64_t id, PaintLayerSettings sett
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **layerTarget();
+    TextureTarget& target = **paintLayerTarget();
     if (!std::isfinite(settings.opacity))
         return Error{"the opacity is not a number", ErrorKind::BadInput};
     settings.opacity = std::clamp(settings.opacity, 0.0f, 1.0f);
-    const PaintLayerSettings& old = target.layerStack().layer(*index).settings;
+    const PaintLayerSettings& old = target.paintLayerStack().layer(*index).settings;
     if (settings == old)
         return {};
     nlohmann::json op = {{"op", "layer-set"}, {"layer", layerRef(*index)}};
@@ -266,12 +268,12 @@ Status Document::setPaintLayerSettings(std::uint64_t id, PaintLayerSettings sett
         op["lock"] = settings.lockTransparency;
     if (settings.fill != old.fill)
         op["values"] = fillValuesJson(settings.fill, true);
-    LayerChange change;
-    change.kind = LayerChange::Kind::Settings;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Settings;
     change.id = id;
     change.settings = std::move(settings);
     change.selection = target.selection();
-    pushLayerChange(std::move(change), std::move(op), changes);
+    pushPaintLayerChange(std::move(change), std::move(op), changes);
     return {};
 }
 
@@ -283,28 +285,28 @@ Status Document::mergePaintLayerDown(std::uint64_t id, PaintChanges& changes) {
     if (*index == 0)
         return Error{"the lowest paint layer has no paint layer below to merge into",
                      ErrorKind::BadInput};
-    TextureTarget& target = **layerTarget();
-    PaintLayerStack& stack = target.layerStack();
+    TextureTarget& target = **paintLayerTarget();
+    PaintLayerStack& stack = target.paintLayerStack();
     // Merged here, then put back as it was, so the change applies (and undoes) as a swap.
     std::vector<std::unique_ptr<PaintLayer>> removed;
     stack.mergeDown(*index, &removed);
-    pushLayerChange(swapBack(stack, *index - 1, removed),
-                    {{"op", "layer-merge-down"}, {"layer", layerRef(*index)}}, changes);
+    pushPaintLayerChange(swapBack(stack, *index - 1, removed),
+                         {{"op", "layer-merge-down"}, {"layer", layerRef(*index)}}, changes);
     return {};
 }
 
 Status Document::flattenPaintLayers(std::string name, PaintChanges& changes) {
     changes.clear();
-    Result<TextureTarget*> ready = layerTarget();
+    Result<TextureTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
-    PaintLayerStack& stack = (*ready)->layerStack();
+    PaintLayerStack& stack = (*ready)->paintLayerStack();
     if (stack.size() == 0)
         return Error{"there are no paint layers to flatten", ErrorKind::BadInput};
     nlohmann::json op = {{"op", "layer-flatten"}, {"name", name}};
     std::vector<std::unique_ptr<PaintLayer>> removed;
     stack.flatten(std::move(name), &removed);
-    pushLayerChange(swapBack(stack, 0, removed), std::move(op), changes);
+    pushPaintLayerChange(swapBack(stack, 0, removed), std::move(op), changes);
     return {};
 }
 
@@ -313,16 +315,17 @@ Status Document::addPaintLayerMask(std::uint64_t id, PaintChanges& changes) {
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    const PaintLayerStack& stack = (*layerTarget())->layerStack();
+    const PaintLayerStack& stack = (*paintLayerTarget())->paintLayerStack();
     if (stack.layer(*index).mask)
         return Error{"the paint layer already has a mask", ErrorKind::BadInput};
-    LayerChange change;
-    change.kind = LayerChange::Kind::Mask;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Mask;
     change.id = id;
     change.mask = std::make_unique<TiledPlane>(stack.pages(), 1,
                                                std::array<std::uint8_t, 4>{255, 255, 255, 255});
     change.selection = {id, true};
-    pushLayerChange(std::move(change), {{"op", "mask-add"}, {"layer", layerRef(*index)}}, changes);
+    pushPaintLayerChange(std::move(change), {{"op", "mask-add"}, {"layer", layerRef(*index)}},
+                         changes);
     return {};
 }
 
@@ -331,32 +334,32 @@ Status Document::deletePaintLayerMask(std::uint64_t id, PaintChanges& changes) {
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **layerTarget();
-    if (!target.layerStack().layer(*index).mask)
+    TextureTarget& target = **paintLayerTarget();
+    if (!target.paintLayerStack().layer(*index).mask)
         return Error{"the paint layer has no mask", ErrorKind::BadInput};
-    LayerChange change;
-    change.kind = LayerChange::Kind::Mask;
+    PaintLayerChange change;
+    change.kind = PaintLayerChange::Kind::Mask;
     change.id = id;
     change.selection = target.selection();
     if (change.selection == PaintSelection{id, true})
         change.selection.mask = false;
-    pushLayerChange(std::move(change), {{"op", "mask-delete"}, {"layer", layerRef(*index)}},
-                    changes);
+    pushPaintLayerChange(std::move(change), {{"op", "mask-delete"}, {"layer", layerRef(*index)}},
+                         changes);
     return {};
 }
 
 Status Document::selectPaint(PaintSelection selection) {
-    Result<TextureTarget*> ready = layerTarget();
+    Result<TextureTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
     TextureTarget& target = **ready;
     if (selection.layer == 0) {
         selection.mask = false;
     } else {
-        const auto index = target.layerStack().indexOf(selection.layer);
+        const auto index = target.paintLayerStack().indexOf(selection.layer);
         if (!index)
             return Error{"no paint layer " + std::to_string(selection.layer), ErrorKind::BadInput};
-        if (selection.mask && !target.layerStack().layer(*index).mask)
+        if (selection.mask && !target.paintLayerStack().layer(*index).mask)
             return Error{"the paint layer has no mask", ErrorKind::BadInput};
     }
     if (selection == target.selection())
@@ -365,7 +368,7 @@ Status Document::selectPaint(PaintSelection selection) {
     if (selection.layer == 0)
         op["layer"] = "base";
     else
-        op["layer"] = layerRef(*target.layerStack().indexOf(selection.layer));
+        op["layer"] = layerRef(*target.paintLayerStack().indexOf(selection.layer));
     // Logged so a replayed session paints where the user did, but no undo step: clicks on layers
     // would otherwise fill Edit > Undo (an operation's undo restores the selection it had).
     m_session.noteState(*this);

@@ -12,8 +12,8 @@
 
 namespace core {
 
-std::vector<const Layers*> Document::symmetryLayers() const {
-    std::vector<const Layers*> out;
+std::vector<const DepthLayers*> Document::symmetryLayers() const {
+    std::vector<const DepthLayers*> out;
     for (const auto& copy : m_copies)
         out.push_back(copy->layers.get());
     return out;
@@ -21,30 +21,30 @@ std::vector<const Layers*> Document::symmetryLayers() const {
 
 std::optional<Document::SymmetryBuild> Document::symmetryBuild() const {
     const BrushSymmetry& symmetry = m_brush.symmetry;
-    if (!symmetry.active() || !m_layers)
+    if (!symmetry.active() || !m_depthLayers)
         return std::nullopt;
-    if (m_copiesSymmetry == symmetry && m_copiesLayers == m_layersSerial &&
+    if (m_copiesSymmetry == symmetry && m_copiesLayers == m_depthLayersSerial &&
         m_copiesMesh == m_meshSerial)
         return std::nullopt; // made for these (an empty list when every copy failed)
     SymmetryBuild build;
     build.symmetry = symmetry;
-    build.layersSerial = m_layersSerial;
+    build.depthLayersSerial = m_depthLayersSerial;
     build.meshSerial = m_meshSerial;
     build.mesh = m_mesh;
     build.topology = m_topology;
-    build.options = m_layers->options;
+    build.options = m_depthLayers->options;
     const glm::vec3 centre = symmetry.center == BrushSymmetry::Center::Origin
                                  ? glm::vec3(0.0f)
                                  : m_mesh->bounds().center();
     build.transforms = symmetryTransforms(symmetry, centre);
     for (const glm::mat4& transform : build.transforms)
-        build.views.push_back(symmetricView(m_layers->view, transform));
+        build.views.push_back(symmetricView(m_depthLayers->view, transform));
     return build;
 }
 
 bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngine* engine) {
     layers.clear();
-    CpuLayerCapturer capturer;
+    CpuDepthCapturer capturer;
     capturer.setMesh(*mesh);
     for (std::size_t i = 0; i < views.size(); ++i) {
         if (!reportProgress(progress, double(i) / double(views.size()))) {
@@ -52,7 +52,7 @@ bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngi
             return false;
         }
         CaptureStats stats;
-        Result<LayerStack> stack = capturer.capture(views[i], options.cullBackFaces, &stats);
+        Result<DepthStack> stack = capturer.capture(views[i], options.cullBackFaces, &stats);
         if (!stack) {
             layers.emplace_back(); // that copy paints nothing, the others still do
             continue;
@@ -62,8 +62,8 @@ bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngi
             layers.clear();
             return false;
         }
-        layers.emplace_back(finishLayers(std::move(stack).value(), stats, *mesh, *topology,
-                                         views[i], options, engine));
+        layers.emplace_back(finishDepthLayers(std::move(stack).value(), stats, *mesh, *topology,
+                                              views[i], options, engine));
     }
     reportProgress(progress, 1.0);
     return true;
@@ -71,13 +71,14 @@ bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngi
 
 bool Document::adoptSymmetry(SymmetryBuild build) {
     if (build.layers.size() != build.transforms.size() || build.meshSerial != m_meshSerial ||
-        build.layersSerial != m_layersSerial || !m_layers || build.symmetry != m_brush.symmetry)
+        build.depthLayersSerial != m_depthLayersSerial || !m_depthLayers ||
+        build.symmetry != m_brush.symmetry)
         return false;
     // Adopted during a stroke, the copies wait for the next one (startSymmetry()).
     m_copiesPaint = false;
     m_copies.clear();
     m_copiesSymmetry = build.symmetry;
-    m_copiesLayers = build.layersSerial;
+    m_copiesLayers = build.depthLayersSerial;
     m_copiesMesh = build.meshSerial;
     for (std::size_t i = 0; i < build.transforms.size(); ++i) {
         if (!build.layers[i])
@@ -85,8 +86,8 @@ bool Document::adoptSymmetry(SymmetryBuild build) {
         auto copy = std::make_unique<SymmetryCopy>();
         copy->transform = build.transforms[i];
         copy->reflects = symmetryReflects(copy->transform);
-        copy->layers = std::make_unique<Layers>(std::move(*build.layers[i]));
-        copy->tracker.setLayers(*copy->layers);
+        copy->layers = std::make_unique<DepthLayers>(std::move(*build.layers[i]));
+        copy->tracker.setDepthLayers(*copy->layers);
         m_copies.push_back(std::move(copy));
     }
     return true;
@@ -94,7 +95,7 @@ bool Document::adoptSymmetry(SymmetryBuild build) {
 
 void Document::startSymmetry() {
     m_copiesPaint = false;
-    if (!m_brush.symmetry.active() || !m_layers)
+    if (!m_brush.symmetry.active() || !m_depthLayers)
         return; // the copies stay for these layers and symmetry: turned on again, they are ready
     if (std::optional<SymmetryBuild> build = symmetryBuild()) {
         m_copies.clear();

@@ -48,8 +48,8 @@ std::size_t TargetSwap::bytes() const {
     return sizeof(TargetSwap) + (other ? other->bytes() : 0);
 }
 
-std::size_t LayerChange::bytes() const {
-    std::size_t total = sizeof(LayerChange) + settings.name.capacity();
+std::size_t PaintLayerChange::bytes() const {
+    std::size_t total = sizeof(PaintLayerChange) + settings.name.capacity();
     for (const auto& layer : held)
         total += sizeof(PaintLayer) + layer->bytes();
     return total + (mask ? mask->allocatedBytes() : 0);
@@ -137,14 +137,14 @@ void History::clear() {
     ++m_revision;
 }
 
-void History::dropStaleOrders(std::uint64_t layersSerial) {
+void History::dropStaleOrders(std::uint64_t depthLayersSerial) {
     bool changed = false;
     for (std::size_t i = m_steps.size(); i-- > 0;) {
         Entry& entry = m_steps[i];
         auto& parts = entry.step.parts;
-        const auto stale = [layersSerial](const StepPart& part) {
+        const auto stale = [depthLayersSerial](const StepPart& part) {
             const auto* order = std::get_if<OrderChange>(&part);
-            return order && order->layersSerial != layersSerial;
+            return order && order->depthLayersSerial != depthLayersSerial;
         };
         if (std::none_of(parts.begin(), parts.end(), stale))
             continue;

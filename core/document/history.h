@@ -35,7 +35,7 @@ const char* stepKindName(StepKind kind);
 struct OrderChange {
     RegionOrderState before;
     RegionOrderState after;
-    std::uint64_t layersSerial = 0;
+    std::uint64_t depthLayersSerial = 0;
 
     std::size_t bytes() const;
 };
@@ -59,7 +59,7 @@ struct TargetSwap {
  * and, always, the target's selection is exchanged with selection (selecting alone is no change:
  * it makes no undo step).
  */
-struct LayerChange {
+struct PaintLayerChange {
     enum class Kind : std::uint8_t { Swap, Move, Settings, Mask };
     Kind kind = Kind::Swap;
     std::size_t index = 0, count = 0;
@@ -74,7 +74,7 @@ struct LayerChange {
 };
 
 /** One part of a step: paint tiles, a region order change or a paint target swap. */
-using StepPart = std::variant<TileUndoRecord, OrderChange, TargetSwap, LayerChange>;
+using StepPart = std::variant<TileUndoRecord, OrderChange, TargetSwap, PaintLayerChange>;
 
 /** One undoable step: its parts are undone last to first and redone first to last. */
 struct HistoryStep {
@@ -134,10 +134,10 @@ public:
     void clear();
 
     /**
-     * Forgets the region order changes made on other layers than layersSerial (their region ids
-     * are gone); steps left with nothing are removed. Call when the layers are replaced.
+     * Forgets the region order changes made on other layers than depthLayersSerial (their region
+     * ids are gone); steps left with nothing are removed. Call when the layers are replaced.
      */
-    void dropStaleOrders(std::uint64_t layersSerial);
+    void dropStaleOrders(std::uint64_t depthLayersSerial);
 
     /** The current state, for squash(): steps done after it can become one. */
     std::uint64_t mark() const { return stateId(); }

@@ -437,7 +437,7 @@ ProjectState captureProjectState(const Document& doc, ProjectState base) {
     s.camera = doc.camera();
     s.brush = doc.brush();
     s.foreground = doc.brush().color; // the colour panel, where there is one, sets its own
-    s.layers = doc.layerOptions();
+    s.layers = doc.depthLayerOptions();
     s.target = doc.paintTargetOptions();
     // The target in use is what the file holds: an automatic choice is saved as what it chose.
     if (doc.hasPaintTarget())
@@ -449,11 +449,11 @@ ProjectState captureProjectState(const Document& doc, ProjectState base) {
 }
 
 Status applyProjectState(Document& doc, const ProjectState& state) {
-    LayerOptions layers = doc.layerOptions();
+    DepthLayerOptions layers = doc.depthLayerOptions();
     layers.threshold = state.layers.threshold;
     layers.test = state.layers.test;
     layers.cullBackFaces = state.layers.cullBackFaces;
-    doc.setLayerOptions(layers);
+    doc.setDepthLayerOptions(layers);
     doc.brush() = state.brush;
     doc.setLayerAware(state.layerAware);
     doc.setAutoPopUp(state.autoPopUp);

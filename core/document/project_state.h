@@ -81,7 +81,7 @@ struct ProjectState {
     /** Recently used colours, most recent first (at most kMaxPaletteColors are kept). */
     std::vector<glm::vec4> palette;
     /** Threshold, connection test and back-face culling (two-sided = !cullBackFaces). */
-    LayerOptions layers;
+    DepthLayerOptions layers;
     /** Paint target kind (empty: automatic) and the resolution of a new texture. */
     PaintTargetOptions target;
     bool layerAware = true;

@@ -153,9 +153,9 @@ Result<SavedPaintLayers> paintLayersFromJson(const Json& j, std::vector<std::str
 
 std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) {
     const auto* target = dynamic_cast<const TextureTarget*>(doc.currentPaintTarget());
-    if (!target || target->layerStack().size() == 0)
+    if (!target || target->paintLayerStack().size() == 0)
         return nullptr;
-    const PaintLayerStack& stack = target->layerStack();
+    const PaintLayerStack& stack = target->paintLayerStack();
     auto saved = std::make_shared<SavedPaintLayers>();
     for (std::size_t i = 0; i < stack.size(); ++i) {
         const PaintLayer& layer = stack.layer(i);
@@ -185,11 +185,11 @@ std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) 
 Status restorePaintLayers(Document& doc, const SavedPaintLayers& saved) {
     if (!dynamic_cast<const TextureTarget*>(doc.currentPaintTarget()))
         return Error{"the paint layers need a texture to paint into; they are left out"};
-    Result<TextureTarget*> ready = doc.layerTarget();
+    Result<TextureTarget*> ready = doc.paintLayerTarget();
     if (!ready)
         return ready.takeError();
     TextureTarget& target = **ready;
-    PaintLayerStack& stack = target.layerStack();
+    PaintLayerStack& stack = target.paintLayerStack();
     const auto fits = [&](const std::shared_ptr<const TiledPlane>& plane, int texelBytes) {
         return !plane || (plane->pages() == stack.pages() && plane->texelBytes() == texelBytes);
     };

@@ -298,15 +298,15 @@ json viewOperation(const Camera& c, const View& view) {
 ScriptRunner::ScriptRunner(Document& doc, ScriptHost& host, const View& view)
     : m_doc(doc), m_host(host), m_view(view) {}
 
-Status ScriptRunner::ensureLayers() {
-    if (m_doc.layers())
+Status ScriptRunner::ensureDepthLayers() {
+    if (m_doc.depthLayers())
         return {};
-    return m_host.buildLayers(m_doc, m_view);
+    return m_host.buildDepthLayers(m_doc, m_view);
 }
 
 void ScriptRunner::setView(const View& view) {
     m_view = view;
-    m_doc.clearLayers();
+    m_doc.clearDepthLayers();
     m_host.viewChanged(m_view);
 }
 
@@ -325,7 +325,7 @@ Status ScriptRunner::runAll(const Script& script, const ProgressFn& progress) {
 Status ScriptRunner::run(const json& op) {
     const std::size_t index = ++m_count;
     const auto need = [this] {
-        if (Status s = ensureLayers(); !s)
+        if (Status s = ensureDepthLayers(); !s)
             throw OpError{s.error()};
     };
     PaintChanges changes; // the caller refreshes its own copy of the target
@@ -394,7 +394,7 @@ Status ScriptRunner::run(const json& op) {
                 throw OpError{"\"layer\" must be a depth layer number (0 for all layers)"};
             m_doc.setShownLayer(op["layer"].get<std::uint32_t>());
         } else if (name == "set-segmentation") {
-            LayerOptions options = m_doc.layerOptions();
+            DepthLayerOptions options = m_doc.depthLayerOptions();
             options.threshold = number(op, "threshold", options.threshold, 1e-6f, 1.0f);
             if (op.contains("test")) {
                 if (op["test"] == "plain")
@@ -405,7 +405,7 @@ Status ScriptRunner::run(const json& op) {
                     throw OpError{"\"test\" must be \"plain\" or \"surface\""};
             }
             options.cullBackFaces = !boolean(op, "two_sided", !options.cullBackFaces);
-            m_doc.setLayerOptions(options);
+            m_doc.setDepthLayerOptions(options);
         } else if (name == "stroke") {
             const std::vector<StrokePoint> points = strokePoints(op);
             need();
@@ -433,7 +433,7 @@ Status ScriptRunner::run(const json& op) {
             // The eyedropper: the brush takes the surface colour of the visible fragment.
             const glm::vec2 at = pixelAt(op.value("at", json()), "at");
             need();
-            const LayerStack& stack = m_doc.layers()->stack;
+            const DepthStack& stack = m_doc.depthLayers()->stack;
             if (!(at.x >= 0.0f && at.y >= 0.0f && at.x < float(stack.width) &&
                   at.y < float(stack.height)))
                 throw OpError{"pick position " + op["at"].dump() + " is outside the view"};
@@ -477,7 +477,7 @@ Status ScriptRunner::run(const json& op) {
             }
             setView(view);
         } else if (name == "build-layers") {
-            m_doc.clearLayers();
+            m_doc.clearDepthLayers();
             need();
         } else if (name == "popup") {
             // The paper's intentional pop-up: a click at a pixel (cycling on repeats), or a
@@ -536,9 +536,10 @@ Status ScriptRunner::run(const json& op) {
             need();
             if (const std::optional<Status> lineOp = runLineOperation(m_doc, name, op); !*lineOp)
                 throw OpError{lineOp->error()};
-        } else if (const std::optional<Status> layerOp = runLayerOperation(m_doc, name, op)) {
-            if (!*layerOp)
-                throw OpError{layerOp->error()};
+        } else if (const std::optional<Status> paintLayerOp =
+                       runPaintLayerOperation(m_doc, name, op)) {
+            if (!*paintLayerOp)
+                throw OpError{paintLayerOp->error()};
         } else {
             throw OpError{"unknown operation \"" + name + "\""};
         }

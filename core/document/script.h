@@ -61,7 +61,7 @@ class ScriptHost {
 public:
     virtual ~ScriptHost() = default;
     /** Builds doc's layers for view, synchronously; an Error if they cannot be built. */
-    virtual Status buildLayers(Document& doc, const View& view) = 0;
+    virtual Status buildDepthLayers(Document& doc, const View& view) = 0;
     /** The script moved the camera (orbit, orbit-about, view); the view it paints in now. */
     virtual void viewChanged(const View& view) { (void)view; }
     /** Decodes an image file into a brush tip (set-brush "tip"); an Error naming the file. */
@@ -71,7 +71,7 @@ public:
 };
 
 /**
- * Replays operations on a document. Layers are built (through the host) whenever an operation
+ * Replays operations on a document. Depth layers are built (through the host) whenever an operation
  * needs them and the document has none. Errors name the operation's number (1-based) and the
  * problem; the operations before it stay done.
  */
@@ -90,7 +90,7 @@ public:
     std::size_t count() const { return m_count; }
 
 private:
-    Status ensureLayers();
+    Status ensureDepthLayers();
     void setView(const View& view);
 
     Document& m_doc;

@@ -14,13 +14,13 @@ namespace {
 
 using json = nlohmann::json;
 
-struct LayerOpError {
+struct PaintLayerOpError {
     std::string message;
 };
 
 float unitValue(const json& value, const char* what) {
     if (!value.is_number() || !(value.get<double>() >= 0.0) || !(value.get<double>() <= 1.0))
-        throw LayerOpError{std::string("\"") + what + "\" must be a number from 0 to 1"};
+        throw PaintLayerOpError{std::string("\"") + what + "\" must be a number from 0 to 1"};
     return value.get<float>();
 }
 
@@ -28,7 +28,7 @@ bool flag(const json& op, const char* key, bool fallback) {
     if (!op.contains(key))
         return fallback;
     if (!op[key].is_boolean())
-        throw LayerOpError{std::string("\"") + key + "\" must be true or false"};
+        throw PaintLayerOpError{std::string("\"") + key + "\" must be true or false"};
     return op[key].get<bool>();
 }
 
@@ -38,12 +38,12 @@ glm::vec3 srgbColor(const json& value, const char* what) {
         const std::string s = value.get<std::string>();
         unsigned r = 0, g = 0, b = 0;
         if (s.size() != 7 || std::sscanf(s.c_str(), "#%2x%2x%2x", &r, &g, &b) != 3)
-            throw LayerOpError{std::string("\"") + what + "\" must be #rrggbb"};
+            throw PaintLayerOpError{std::string("\"") + what + "\" must be #rrggbb"};
         return glm::vec3(float(r), float(g), float(b)) / 255.0f;
     }
     if (value.is_array() && value.size() == 3)
         return {unitValue(value[0], what), unitValue(value[1], what), unitValue(value[2], what)};
-    throw LayerOpError{std::string("\"") + what + "\" must be #rrggbb or [r, g, b] (0 to 1)"};
+    throw PaintLayerOpError{std::string("\"") + what + "\" must be #rrggbb or [r, g, b] (0 to 1)"};
 }
 
 /**
@@ -51,14 +51,14 @@ glm::vec3 srgbColor(const json& value, const char* what) {
  * selected layer without one.
  */
 std::uint64_t layerId(const TextureTarget& target, const json& op, bool baseAllowed) {
-    const PaintLayerStack& stack = target.layerStack();
+    const PaintLayerStack& stack = target.paintLayerStack();
     std::uint64_t id = target.selection().layer;
     if (op.contains("layer")) {
         const json& ref = op["layer"];
         if (ref.is_number_unsigned()) {
             if (ref.get<std::uint64_t>() >= stack.size())
-                throw LayerOpError{"there is no paint layer " + ref.dump() + " (there are " +
-                                   std::to_string(stack.size()) + ")"};
+                throw PaintLayerOpError{"there is no paint layer " + ref.dump() + " (there are " +
+                                        std::to_string(stack.size()) + ")"};
             id = stack.layer(ref.get<std::size_t>()).id;
         } else if (ref == "base") {
             id = 0;
@@ -70,19 +70,20 @@ std::uint64_t layerId(const TextureTarget& target, const json& op, bool baseAllo
                     break;
                 }
             if (id == 0)
-                throw LayerOpError{"there is no paint layer named " + ref.dump()};
+                throw PaintLayerOpError{"there is no paint layer named " + ref.dump()};
         } else {
-            throw LayerOpError{"\"layer\" must be a paint layer's index, its name or \"base\""};
+            throw PaintLayerOpError{
+                "\"layer\" must be a paint layer's index, its name or \"base\""};
         }
     }
     if (id == 0 && !baseAllowed)
-        throw LayerOpError{"the operation needs a paint layer, not the base"};
+        throw PaintLayerOpError{"the operation needs a paint layer, not the base"};
     return id;
 }
 
 void check(const Status& status) {
     if (!status)
-        throw LayerOpError{status.error()};
+        throw PaintLayerOpError{status.error()};
 }
 
 } // namespace
@@ -90,11 +91,11 @@ void check(const Status& status) {
 Status applyBrushChannels(Brush& brush, const json& channels) {
     try {
         if (!channels.is_object())
-            throw LayerOpError{"\"channels\" must be an object with \"base_color\", "
-                               "\"roughness\" and \"metallic\" (any of them)"};
+            throw PaintLayerOpError{"\"channels\" must be an object with \"base_color\", "
+                                    "\"roughness\" and \"metallic\" (any of them)"};
         for (const auto& [key, value] : channels.items())
             if (key != "base_color" && key != "roughness" && key != "metallic")
-                throw LayerOpError{"unknown channel \"" + key + "\""};
+                throw PaintLayerOpError{"unknown channel \"" + key + "\""};
         Brush b = brush;
         b.paintBaseColor = channels.contains("base_color");
         if (b.paintBaseColor && !channels["base_color"].is_boolean()) {
@@ -110,7 +111,7 @@ Status applyBrushChannels(Brush& brush, const json& channels) {
         if (b.paintMetallic)
             b.metallic = unitValue(channels["metallic"], "metallic");
         brush = b;
-    } catch (const LayerOpError& e) {
+    } catch (const PaintLayerOpError& e) {
         return Error{e.message, ErrorKind::BadInput};
     }
     return {};
@@ -127,31 +128,33 @@ json brushChannelsJson(const Brush& brush) {
     return channels;
 }
 
-std::optional<Status> runLayerOperation(Document& doc, const std::string& name, const json& op) {
+std::optional<Status> runPaintLayerOperation(Document& doc, const std::string& name,
+                                             const json& op) {
     if (name.rfind("layer-", 0) != 0 && name.rfind("mask-", 0) != 0)
         return std::nullopt;
     try {
-        Result<TextureTarget*> ready = doc.layerTarget();
+        Result<TextureTarget*> ready = doc.paintLayerTarget();
         if (!ready)
-            throw LayerOpError{ready.error()};
+            throw PaintLayerOpError{ready.error()};
         TextureTarget& target = **ready;
         PaintChanges changes; // the caller refreshes its own copy of the target
         if (name == "layer-add") {
             PaintLayerSettings settings;
-            settings.name = op.contains("name") && op["name"].is_string()
-                                ? op["name"].get<std::string>()
-                                : "Paint Layer " + std::to_string(target.layerStack().size() + 1);
+            settings.name =
+                op.contains("name") && op["name"].is_string()
+                    ? op["name"].get<std::string>()
+                    : "Paint Layer " + std::to_string(target.paintLayerStack().size() + 1);
             const std::string kind = op.value("kind", json("paint")).is_string()
                                          ? op.value("kind", std::string("paint"))
                                          : std::string();
             if (kind == "fill")
                 settings.kind = PaintLayerKind::Fill;
             else if (kind != "paint")
-                throw LayerOpError{"\"kind\" must be \"paint\" or \"fill\""};
+                throw PaintLayerOpError{"\"kind\" must be \"paint\" or \"fill\""};
             if (op.contains("values")) {
                 const json& v = op["values"];
                 if (!v.is_object())
-                    throw LayerOpError{"\"values\" must be an object"};
+                    throw PaintLayerOpError{"\"values\" must be an object"};
                 if (v.contains("base_color"))
                     settings.fill.baseColor = srgbColor(v["base_color"], "base_color");
                 if (v.contains("roughness"))
@@ -163,7 +166,7 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
                 settings.opacity = unitValue(op["opacity"], "opacity");
             Result<std::uint64_t> id = doc.addPaintLayer(std::move(settings), changes);
             if (!id)
-                throw LayerOpError{id.error()};
+                throw PaintLayerOpError{id.error()};
         } else if (name == "layer-select") {
             check(doc.selectPaint({layerId(target, op, true), false}));
         } else if (name == "mask-select") {
@@ -171,10 +174,10 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
         } else if (name == "layer-set") {
             const std::uint64_t id = layerId(target, op, false);
             PaintLayerSettings s =
-                target.layerStack().layer(*target.layerStack().indexOf(id)).settings;
+                target.paintLayerStack().layer(*target.paintLayerStack().indexOf(id)).settings;
             if (op.contains("name")) {
                 if (!op["name"].is_string())
-                    throw LayerOpError{"\"name\" must be a string"};
+                    throw PaintLayerOpError{"\"name\" must be a string"};
                 s.name = op["name"].get<std::string>();
             }
             if (op.contains("opacity"))
@@ -184,8 +187,8 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
                                       ? blendModeFromName(op["blend"].get<std::string>())
                                       : std::nullopt;
                 if (!mode)
-                    throw LayerOpError{"\"blend\" must be a blend mode's name (normal, "
-                                       "multiply, screen, overlay, soft-light, ...)"};
+                    throw PaintLayerOpError{"\"blend\" must be a blend mode's name (normal, "
+                                            "multiply, screen, overlay, soft-light, ...)"};
                 s.blend = *mode;
             }
             s.visible = flag(op, "visible", s.visible);
@@ -194,9 +197,9 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
                 // A fill layer's values: the channels named change, null leaves one alone.
                 const json& v = op["values"];
                 if (!v.is_object())
-                    throw LayerOpError{"\"values\" must be an object"};
+                    throw PaintLayerOpError{"\"values\" must be an object"};
                 if (s.kind != PaintLayerKind::Fill)
-                    throw LayerOpError{"\"values\" are a fill layer's; this is a paint layer"};
+                    throw PaintLayerOpError{"\"values\" are a fill layer's; this is a paint layer"};
                 if (v.contains("base_color"))
                     s.fill.baseColor =
                         v["base_color"].is_null()
@@ -215,14 +218,14 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
         } else if (name == "layer-move") {
             const std::uint64_t id = layerId(target, op, false);
             if (!op.contains("index") || !op["index"].is_number_unsigned())
-                throw LayerOpError{"\"index\" must be the layer's new index (0 = the lowest)"};
+                throw PaintLayerOpError{"\"index\" must be the layer's new index (0 = the lowest)"};
             check(doc.movePaintLayer(id, op["index"].get<std::size_t>(), changes));
         } else if (name == "layer-delete") {
             check(doc.deletePaintLayer(layerId(target, op, false), changes));
         } else if (name == "layer-duplicate") {
             Result<std::uint64_t> id = doc.duplicatePaintLayer(layerId(target, op, false), changes);
             if (!id)
-                throw LayerOpError{id.error()};
+                throw PaintLayerOpError{id.error()};
         } else if (name == "layer-merge-down") {
             check(doc.mergePaintLayerDown(layerId(target, op, false), changes));
         } else if (name == "layer-flatten") {
@@ -235,9 +238,9 @@ std::optional<Status> runLayerOperation(Document& doc, const std::string& name, 
         } else if (name == "mask-delete") {
             check(doc.deletePaintLayerMask(layerId(target, op, false), changes));
         } else {
-            throw LayerOpError{"unknown operation \"" + name + "\""};
+            throw PaintLayerOpError{"unknown operation \"" + name + "\""};
         }
-    } catch (const LayerOpError& e) {
+    } catch (const PaintLayerOpError& e) {
         return Status(Error{e.message, ErrorKind::BadInput});
     }
     return Status{};

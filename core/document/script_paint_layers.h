@@ -19,8 +19,8 @@ class Document;
  * Runs op if name is a paint-layer operation: its Status (an Error saying what is wrong with
  * op). Nothing for any other name.
  */
-std::optional<Status> runLayerOperation(Document& doc, const std::string& name,
-                                        const nlohmann::json& op);
+std::optional<Status> runPaintLayerOperation(Document& doc, const std::string& name,
+                                             const nlohmann::json& op);
 
 /**
  * Applies a set-brush operation's "channels" object to brush: the channels it names are painted

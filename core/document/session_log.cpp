@@ -16,7 +16,7 @@ void SessionLog::noteState(const Document& doc) {
         m_target = doc.paintTargetOptions();
         m_target->kind = doc.paintTargetKind();
     }
-    if (const Layers* layers = doc.layers()) {
+    if (const DepthLayers* layers = doc.depthLayers()) {
         json view = viewOperation(doc.camera(), layers->view);
         if (m_view != view) {
             m_operations.push_back(view);
@@ -33,7 +33,7 @@ void SessionLog::noteState(const Document& doc) {
         m_operations.push_back({{"op", "show-layer"}, {"layer", doc.shownLayer()}});
         m_shownLayer = doc.shownLayer();
     }
-    const LayerOptions& o = doc.layerOptions();
+    const DepthLayerOptions& o = doc.depthLayerOptions();
     json segmentation = {{"op", "set-segmentation"},
                          {"threshold", o.threshold},
                          {"test", o.test == ConnectionTest::Plain ? "plain" : "surface"},

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/depth/depth_stack.h"
-#include "core/regions/segmentation.h"
+#include "core/base/index.h"
+#include "core/regions/region_graph.h"
 
 namespace core {
 

@@ -196,7 +196,7 @@ std::vector<std::uint32_t> RegionOrder::prunedRanks(bool transparency) const {
     return rank;
 }
 
-std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
+std::vector<std::uint32_t> regionsAtPixel(const DepthStack& stack,
                                           std::span<const std::uint32_t> fragmentRegion,
                                           std::size_t pixel) {
     std::vector<std::uint32_t> out;
@@ -207,7 +207,7 @@ std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
     return out;
 }
 
-std::vector<std::uint32_t> visibleRegionsAlong(const LayerStack& stack,
+std::vector<std::uint32_t> visibleRegionsAlong(const DepthStack& stack,
                                                std::span<const std::uint32_t> fragmentRegion,
                                                std::span<const std::uint32_t> ranks, glm::vec2 a,
                                                glm::vec2 b, float radius) {

@@ -40,7 +40,7 @@ public:
     const std::vector<std::uint32_t>& order() const { return m_order; }
     /**
      * rank[r] = region r's place front to back among the non-hidden regions (0, 1, ...), kNone
-     * when hidden: the format of visibleFragmentByRank and LayerCompositor::setRegionRanks.
+     * when hidden: the format of visibleFragmentByRank and DepthCompositor::setRegionRanks.
      */
     std::vector<std::uint32_t> ranks() const;
 
@@ -117,7 +117,7 @@ private:
  * The regions of pixel's fragments front to back (layer 1 first), kNone for a fragment without
  * a valid region; fragmentRegion is Segmentation::region.
  */
-std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
+std::vector<std::uint32_t> regionsAtPixel(const DepthStack& stack,
                                           std::span<const std::uint32_t> fragmentRegion,
                                           std::size_t pixel);
 
@@ -126,7 +126,7 @@ std::vector<std::uint32_t> regionsAtPixel(const LayerStack& stack,
  * ranks) at pixels whose centre lies within radius of the segment from a to b, plus the pixel
  * under a itself; ascending, each once. Window pixels, y down.
  */
-std::vector<std::uint32_t> visibleRegionsAlong(const LayerStack& stack,
+std::vector<std::uint32_t> visibleRegionsAlong(const DepthStack& stack,
                                                std::span<const std::uint32_t> fragmentRegion,
                                                std::span<const std::uint32_t> ranks, glm::vec2 a,
                                                glm::vec2 b, float radius);

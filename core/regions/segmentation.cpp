@@ -56,7 +56,7 @@ inline std::uint32_t crossLayerLinks(const std::uint8_t* links, std::uint32_t la
 }
 
 /** The fragment that link value `layer` of a fragment at pixel p points to at pixel q, or kNone. */
-inline std::uint32_t target(const LayerStack& stack, std::size_t q, std::uint32_t layer) {
+inline std::uint32_t target(const DepthStack& stack, std::size_t q, std::uint32_t layer) {
     return layer != 0 && layer <= stack.layerCount(q) ? stack.offsets[q] + layer - 1 : kNone;
 }
 
@@ -65,7 +65,7 @@ inline std::uint32_t target(const LayerStack& stack, std::size_t q, std::uint32_
  * fragment joins the sets of its left and upper neighbours on its layer (already labelled) if
  * either end of the pair links to the other: every pair is met once, at its later fragment.
  */
-void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y0,
+void labelRows(const DepthStack& stack, const Connectivity& conn, std::uint32_t* parent, int y0,
                int y1) {
     const int w = stack.width;
     const std::uint8_t* links = conn.links.data();
@@ -104,7 +104,7 @@ void labelRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t*
 }
 
 /** Joins the same-layer links between row y - 1 and row y. */
-void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t* parent, int y) {
+void stitchRows(const DepthStack& stack, const Connectivity& conn, std::uint32_t* parent, int y) {
     const int w = stack.width;
     // Every link between the rows has a fragment at both ends: the columns both rows span.
     const auto [above, aboveEnd] = stack.rowSpan(y - 1);
@@ -125,8 +125,8 @@ void stitchRows(const LayerStack& stack, const Connectivity& conn, std::uint32_t
 
 } // namespace
 
-Segmentation segmentLayers(const LayerStack& stack, const Connectivity& conn, unsigned threads,
-                           SegmentationTimings* timings) {
+Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& conn, unsigned threads,
+                                SegmentationTimings* timings) {
     const auto start = std::chrono::steady_clock::now();
     Segmentation out;
     const std::size_t fragments = stack.fragmentCount();

@@ -139,10 +139,10 @@ TEST(Cli, LayersWritesTheFilesOfTheContract) {
     auto mesh = core::loadMesh("builtin:hexring");
     ASSERT_TRUE(mesh);
     core::Camera camera = core::Camera::fromOrbit(mesh->bounds(), 20, 35, 2.5f);
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(*mesh);
     const core::MeshTopology topology = core::buildMeshTopology(*mesh);
-    auto layers = core::buildLayers(capturer, *mesh, topology, camera.view(160, 120), {});
+    auto layers = core::buildDepthLayers(capturer, *mesh, topology, camera.view(160, 120), {});
     ASSERT_TRUE(layers);
 
     const json summary = json::parse(readFile(out / "summary.json"));
@@ -294,7 +294,7 @@ TEST(Cli, OrbitAboutKeepsThePickedPointUnderThePixel) {
     EXPECT_NEAR(projected.y, centre.y, 0.01f);
     auto mesh = core::loadMesh("builtin:row");
     ASSERT_TRUE(mesh.ok()) << mesh.error();
-    const core::LayerStack after = core::captureLayersCpu(*mesh, turned);
+    const core::DepthStack after = core::captureDepthLayersCpu(*mesh, turned);
     const std::uint32_t front = after.fragment(pixel, 1);
     ASSERT_NE(front, core::kNone);
     EXPECT_EQ(after.triangle[front] + 1, before[pixel]);
@@ -306,7 +306,7 @@ TEST(Cli, OrbitAboutKeepsThePickedPointUnderThePixel) {
     EXPECT_EQ(visible[pixel], 1u);
     // The tool turned about P: its map is the turned view's, and differs from the starting
     // view's. The tolerance is far below what a pivot one pixel to the side gives (about 100).
-    const auto differing = [&](const core::LayerStack& stack) {
+    const auto differing = [&](const core::DepthStack& stack) {
         std::size_t n = 0;
         for (std::size_t p = 0; p < visible.size(); ++p)
             n += (visible[p] != 0) != (stack.layerCount(p) > 0);
@@ -316,8 +316,9 @@ TEST(Cli, OrbitAboutKeepsThePickedPointUnderThePixel) {
     EXPECT_LE(differing(after), kTolerance);
     ASSERT_GT(depth[pixel + 1], 0.0f);
     const glm::vec3 beside = view.unproject(centre + glm::vec2(1.0f, 0.0f), depth[pixel + 1]);
-    EXPECT_GT(differing(core::captureLayersCpu(*mesh, view.orbitedAbout(beside, kYaw, kPitch))),
-              10 * kTolerance);
+    EXPECT_GT(
+        differing(core::captureDepthLayersCpu(*mesh, view.orbitedAbout(beside, kYaw, kPitch))),
+        10 * kTolerance);
     std::size_t changed = 0;
     for (std::size_t p = 0; p < visible.size(); ++p)
         changed += (visible[p] != 0) != (before[p] != 0);

@@ -24,7 +24,7 @@
 
 namespace layer_capture_gltest {
 
-class LayerCaptureGlTest : public render_test::GlTest {
+class DepthCaptureGlTest : public render_test::GlTest {
 protected:
     void SetUp() override {
         ASSERT_TRUE(s_context);
@@ -33,16 +33,16 @@ protected:
     }
     void TearDown() override { m_capture.release(); }
 
-    core::LayerStack capture(const core::View& view, bool cullBackFaces = true,
-                             render::LayerCapture::Timings* timings = nullptr) {
-        render::LayerCapture::Options options;
+    core::DepthStack capture(const core::View& view, bool cullBackFaces = true,
+                             render::DepthCapture::Timings* timings = nullptr) {
+        render::DepthCapture::Options options;
         options.cullBackFaces = cullBackFaces;
         auto result = m_capture.capture(view, options, timings);
         EXPECT_TRUE(result) << result.error();
-        return result ? std::move(result).value() : core::LayerStack{};
+        return result ? std::move(result).value() : core::DepthStack{};
     }
 
-    render::LayerCapture m_capture;
+    render::DepthCapture m_capture;
 };
 
 /** A parallelogram: corners o, o + u, o + u + v, o + v; front-facing where u × v faces the eye. */
@@ -143,7 +143,7 @@ core::View quadView(bool orthographic) {
 }
 
 /** Compares a capture of the quads with ray casting; returns pixels by their layer count. */
-std::map<std::size_t, int> expectAnalytic(const core::LayerStack& stack, const core::View& view,
+std::map<std::size_t, int> expectAnalytic(const core::DepthStack& stack, const core::View& view,
                                           const std::vector<Quad>& quads,
                                           const std::vector<bool>& front, bool cull) {
     std::map<std::size_t, int> pixelsByLayers;
@@ -185,7 +185,7 @@ std::map<std::size_t, int> expectAnalytic(const core::LayerStack& stack, const c
     return pixelsByLayers;
 }
 
-void expectStackedQuads(const core::LayerStack& stack, const core::View& view, bool cull) {
+void expectStackedQuads(const core::DepthStack& stack, const core::View& view, bool cull) {
     auto pixelsByLayers =
         expectAnalytic(stack, view, stackedQuads(), {true, true, true, false, true}, cull);
     // The scene has pixels with 1 to 4 layers (5 with the back face).
@@ -193,19 +193,19 @@ void expectStackedQuads(const core::LayerStack& stack, const core::View& view, b
         EXPECT_GT(pixelsByLayers[layers], 10) << layers << " layers";
 }
 
-TEST_F(LayerCaptureGlTest, StackedQuadsPerspective) {
+TEST_F(DepthCaptureGlTest, StackedQuadsPerspective) {
     m_capture.setMesh(quadMesh(stackedQuads()));
     const core::View view = quadView(false);
     expectStackedQuads(capture(view), view, true);
 }
 
-TEST_F(LayerCaptureGlTest, StackedQuadsOrthographic) {
+TEST_F(DepthCaptureGlTest, StackedQuadsOrthographic) {
     m_capture.setMesh(quadMesh(stackedQuads()));
     const core::View view = quadView(true);
     expectStackedQuads(capture(view), view, true);
 }
 
-TEST_F(LayerCaptureGlTest, TwoSidedCapturesBackFaces) {
+TEST_F(DepthCaptureGlTest, TwoSidedCapturesBackFaces) {
     m_capture.setMesh(quadMesh(stackedQuads()));
     for (bool orthographic : {false, true}) {
         const core::View view = quadView(orthographic);
@@ -213,7 +213,7 @@ TEST_F(LayerCaptureGlTest, TwoSidedCapturesBackFaces) {
     }
 }
 
-TEST_F(LayerCaptureGlTest, ClippedTrianglesKeepIdsAndDepthPrecision) {
+TEST_F(DepthCaptureGlTest, ClippedTrianglesKeepIdsAndDepthPrecision) {
     // A floor from behind the eye to beyond the far plane: both clip planes cut its triangles.
     // With near/far at 1:10000 the z-buffer resolves little in the distance; view depth must not
     // care.
@@ -232,7 +232,7 @@ TEST_F(LayerCaptureGlTest, ClippedTrianglesKeepIdsAndDepthPrecision) {
     EXPECT_GT(pixelsByLayers[2], 20); // the wall's foot, behind the floor
 }
 
-TEST_F(LayerCaptureGlTest, TopRowIsFirst) {
+TEST_F(DepthCaptureGlTest, TopRowIsFirst) {
     // One quad covering only the upper half of the view.
     m_capture.setMesh(quadMesh({{{-2.0f, 0.0f, 0.0f}, {4.0f, 0.0f, 0.0f}, {0.0f, 2.0f, 0.0f}}}));
     core::View view;
@@ -240,7 +240,7 @@ TEST_F(LayerCaptureGlTest, TopRowIsFirst) {
     view.height = 8;
     view.view = glm::lookAt(glm::vec3(0, 0, 2), glm::vec3(0.0f), glm::vec3(0, 1, 0));
     view.proj = glm::ortho(-1.0f, 1.0f, -1.0f, 1.0f, 0.1f, 10.0f);
-    const core::LayerStack stack = capture(view);
+    const core::DepthStack stack = capture(view);
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             EXPECT_EQ(stack.layerCount(std::size_t(y) * 8 + x), y < 4 ? 1u : 0u) << x << "," << y;
@@ -255,8 +255,8 @@ core::View trefoilView(const core::Mesh& mesh, int width, int height, bool ortho
 }
 
 /** Checks the CSR layout, the front-to-back order and the per-layer counts. */
-void expectWellFormed(const core::LayerStack& stack, std::size_t triangleCount,
-                      const render::LayerCapture::Timings& timings) {
+void expectWellFormed(const core::DepthStack& stack, std::size_t triangleCount,
+                      const render::DepthCapture::Timings& timings) {
     ASSERT_EQ(stack.offsets.size(), stack.pixelCount() + 1);
     ASSERT_EQ(stack.offsets.front(), 0u);
     ASSERT_EQ(stack.offsets.back(), stack.fragmentCount());
@@ -289,19 +289,19 @@ void expectWellFormed(const core::LayerStack& stack, std::size_t triangleCount,
         EXPECT_LE(perLayer[k], perLayer[k - 1]);
 }
 
-TEST_F(LayerCaptureGlTest, TrefoilLayersAreOrderedAndComplete) {
+TEST_F(DepthCaptureGlTest, TrefoilLayersAreOrderedAndComplete) {
     const core::Mesh mesh = core::makeTrefoil();
     m_capture.setMesh(mesh);
-    render::LayerCapture::Timings timings;
-    const core::LayerStack stack = capture(trefoilView(mesh, 320, 240), true, &timings);
+    render::DepthCapture::Timings timings;
+    const core::DepthStack stack = capture(trefoilView(mesh, 320, 240), true, &timings);
     expectWellFormed(stack, mesh.triangleCount(), timings);
     // The knot's crossings put a second front face behind the first.
     ASSERT_GE(timings.fragmentsPerLayer.size(), 2u);
     EXPECT_GT(timings.fragmentsPerLayer[1], timings.fragmentsPerLayer[0] / 20);
 
     // Two-sided, every tube wall behind the first counts as well.
-    render::LayerCapture::Timings twoSided;
-    const core::LayerStack all = capture(trefoilView(mesh, 320, 240), false, &twoSided);
+    render::DepthCapture::Timings twoSided;
+    const core::DepthStack all = capture(trefoilView(mesh, 320, 240), false, &twoSided);
     expectWellFormed(all, mesh.triangleCount(), twoSided);
     EXPECT_GE(twoSided.fragmentsPerLayer.size(), 4u);
 }
@@ -374,7 +374,7 @@ std::vector<std::vector<CpuFragment>> cpuFragments(const core::Mesh& mesh, const
     return pixels;
 }
 
-void expectMatchesCpu(const core::LayerStack& stack, const core::Mesh& mesh, const core::View& view,
+void expectMatchesCpu(const core::DepthStack& stack, const core::Mesh& mesh, const core::View& view,
                       bool cull) {
     const auto reference = cpuFragments(mesh, view, cull);
     std::size_t checked = 0, badPixels = 0, possibleTaken = 0;
@@ -409,7 +409,7 @@ void expectMatchesCpu(const core::LayerStack& stack, const core::Mesh& mesh, con
                 possibleTaken, worstRelative);
 }
 
-TEST_F(LayerCaptureGlTest, TrefoilMatchesCpuRasterizer) {
+TEST_F(DepthCaptureGlTest, TrefoilMatchesCpuRasterizer) {
     const core::Mesh mesh = core::makeTrefoil();
     m_capture.setMesh(mesh);
     for (bool orthographic : {false, true}) {
@@ -418,7 +418,7 @@ TEST_F(LayerCaptureGlTest, TrefoilMatchesCpuRasterizer) {
     }
 }
 
-TEST_F(LayerCaptureGlTest, HexRingTwoSidedMatchesCpuRasterizer) {
+TEST_F(DepthCaptureGlTest, HexRingTwoSidedMatchesCpuRasterizer) {
     const core::Mesh mesh = core::makeHexRing();
     m_capture.setMesh(mesh);
     core::Camera camera;
@@ -429,15 +429,15 @@ TEST_F(LayerCaptureGlTest, HexRingTwoSidedMatchesCpuRasterizer) {
 }
 
 /**
- * Against core::captureLayersCpu, which rasterizes with GL's rules: the same fragments per pixel
- * and the same depths, but for a few pixels where llvmpipe's fixed-point edge arithmetic and
+ * Against core::captureDepthLayersCpu, which rasterizes with GL's rules: the same fragments per
+ * pixel and the same depths, but for a few pixels where llvmpipe's fixed-point edge arithmetic and
  * the reference's disagree about a centre on a shared edge.
  */
-void expectMatchesCoreCapture(const core::LayerStack& gpu, const core::Mesh& mesh,
+void expectMatchesCoreCapture(const core::DepthStack& gpu, const core::Mesh& mesh,
                               const core::View& view, bool cull) {
     core::CpuCaptureOptions options;
     options.cullBackFaces = cull;
-    const core::LayerStack cpu = core::captureLayersCpu(mesh, view, options);
+    const core::DepthStack cpu = core::captureDepthLayersCpu(mesh, view, options);
     ASSERT_EQ(cpu.pixelCount(), gpu.pixelCount());
     std::size_t covered = 0, countDiffers = 0, fragmentDiffers = 0;
     double worstRelative = 0.0;
@@ -462,7 +462,7 @@ void expectMatchesCoreCapture(const core::LayerStack& gpu, const core::Mesh& mes
                 countDiffers, covered, fragmentDiffers, worstRelative);
 }
 
-TEST_F(LayerCaptureGlTest, TrefoilMatchesCoreCpuCapture) {
+TEST_F(DepthCaptureGlTest, TrefoilMatchesCoreCpuCapture) {
     const core::Mesh mesh = core::makeTrefoil();
     m_capture.setMesh(mesh);
     for (bool cull : {true, false}) {
@@ -471,12 +471,12 @@ TEST_F(LayerCaptureGlTest, TrefoilMatchesCoreCpuCapture) {
     }
 }
 
-TEST_F(LayerCaptureGlTest, ClosedTubeTwoSidedDoublesEveryPixel) {
+TEST_F(DepthCaptureGlTest, ClosedTubeTwoSidedDoublesEveryPixel) {
     // A ray through a closed surface leaves it as often as it enters.
     const core::Mesh mesh = core::makeTrefoil(60, 24);
     m_capture.setMesh(mesh);
     const core::View view = trefoilView(mesh, 160, 120);
-    const core::LayerStack culled = capture(view, true), twoSided = capture(view, false);
+    const core::DepthStack culled = capture(view, true), twoSided = capture(view, false);
     std::size_t covered = 0, doubled = 0;
     for (std::size_t p = 0; p < culled.pixelCount(); ++p) {
         covered += culled.layerCount(p) > 0;
@@ -486,17 +486,17 @@ TEST_F(LayerCaptureGlTest, ClosedTubeTwoSidedDoublesEveryPixel) {
     EXPECT_GE(doubled, covered * 99 / 100);
 }
 
-TEST_F(LayerCaptureGlTest, GrowsTinyNodeBufferAndMatchesNormalCapture) {
+TEST_F(DepthCaptureGlTest, GrowsTinyNodeBufferAndMatchesNormalCapture) {
     const core::Mesh mesh = core::makeTrefoil();
     m_capture.setMesh(mesh);
     const core::View view = trefoilView(mesh, 320, 240);
-    render::LayerCapture::Timings normalTimings;
-    const core::LayerStack normal = capture(view, true, &normalTimings);
+    render::DepthCapture::Timings normalTimings;
+    const core::DepthStack normal = capture(view, true, &normalTimings);
 
     m_capture.setNodeCapacity(16);
-    render::LayerCapture::Timings grownTimings;
+    render::DepthCapture::Timings grownTimings;
     const int before = m_capture.totalRecaptures();
-    const core::LayerStack grown = capture(view, true, &grownTimings);
+    const core::DepthStack grown = capture(view, true, &grownTimings);
     EXPECT_EQ(grownTimings.recaptures, 1);
     EXPECT_EQ(m_capture.totalRecaptures(), before + 1);
     EXPECT_GE(m_capture.nodeCapacity(), grown.fragmentCount());
@@ -506,34 +506,34 @@ TEST_F(LayerCaptureGlTest, GrowsTinyNodeBufferAndMatchesNormalCapture) {
     EXPECT_EQ(grownTimings.fragmentsPerLayer, normalTimings.fragmentsPerLayer);
 
     // The grown capacity is kept: the same view needs no second draw.
-    render::LayerCapture::Timings again;
-    const core::LayerStack third = capture(view, true, &again);
+    render::DepthCapture::Timings again;
+    const core::DepthStack third = capture(view, true, &again);
     EXPECT_EQ(again.recaptures, 0);
     EXPECT_EQ(third.depth, normal.depth);
 }
 
-TEST_F(LayerCaptureGlTest, NodeRangesGiveTheSameStack) {
+TEST_F(DepthCaptureGlTest, NodeRangesGiveTheSameStack) {
     const core::Mesh mesh = core::makeTrefoil();
     m_capture.setMesh(mesh);
     // 320 pixels are five 64-pixel columns: with 8 ranges, three get no fragment at all.
     const core::View view = trefoilView(mesh, 320, 240);
     m_capture.setNodeRanges(1);
-    render::LayerCapture::Timings oneTimings;
-    const core::LayerStack one = capture(view, true, &oneTimings);
+    render::DepthCapture::Timings oneTimings;
+    const core::DepthStack one = capture(view, true, &oneTimings);
     for (const std::size_t ranges : {2u, 4u, 8u}) {
         SCOPED_TRACE(ranges);
         m_capture.setNodeRanges(ranges);
         EXPECT_EQ(m_capture.nodeRanges(), ranges);
         m_capture.setNodeCapacity(16); // every range overflows; the second draw fits
-        render::LayerCapture::Timings timings;
-        const core::LayerStack split = capture(view, true, &timings);
+        render::DepthCapture::Timings timings;
+        const core::DepthStack split = capture(view, true, &timings);
         EXPECT_EQ(timings.recaptures, 1);
         EXPECT_EQ(split.offsets, one.offsets);
         EXPECT_EQ(split.depth, one.depth);
         EXPECT_EQ(split.triangle, one.triangle);
         EXPECT_EQ(timings.fragmentsPerLayer, oneTimings.fragmentsPerLayer);
         // The split the last draw needed is kept: the same view draws once.
-        render::LayerCapture::Timings again;
+        render::DepthCapture::Timings again;
         EXPECT_EQ(capture(view, true, &again).triangle, one.triangle);
         EXPECT_EQ(again.recaptures, 0);
     }
@@ -541,19 +541,19 @@ TEST_F(LayerCaptureGlTest, NodeRangesGiveTheSameStack) {
     EXPECT_EQ(m_capture.nodeRanges(), 2u);
 }
 
-TEST_F(LayerCaptureGlTest, ChangingSizeKeepsListsClean) {
+TEST_F(DepthCaptureGlTest, ChangingSizeKeepsListsClean) {
     const core::Mesh mesh = core::makeTrefoil(120, 30);
     m_capture.setMesh(mesh);
     const core::View large = trefoilView(mesh, 300, 200), small = trefoilView(mesh, 130, 90);
-    const core::LayerStack first = capture(small);
+    const core::DepthStack first = capture(small);
     capture(large);
-    const core::LayerStack second = capture(small);
+    const core::DepthStack second = capture(small);
     EXPECT_EQ(first.offsets, second.offsets);
     EXPECT_EQ(first.depth, second.depth);
     EXPECT_EQ(first.triangle, second.triangle);
 }
 
-TEST_F(LayerCaptureGlTest, TooManyFragmentsFailOrAreAllKept) {
+TEST_F(DepthCaptureGlTest, TooManyFragmentsFailOrAreAllKept) {
     // 5 layers of 1536² pixels, 11.8 million fragments: more than llvmpipe's 128 MiB storage
     // blocks hold. Either every fragment arrives or the capture says why; none are dropped.
     std::vector<Quad> quads;
@@ -578,15 +578,15 @@ TEST_F(LayerCaptureGlTest, TooManyFragmentsFailOrAreAllKept) {
     EXPECT_EQ(small->fragmentCount(), small->pixelCount() * 5);
 }
 
-TEST_F(LayerCaptureGlTest, WithoutMeshTheStackIsEmpty) {
-    const core::LayerStack stack = capture(quadView(false));
+TEST_F(DepthCaptureGlTest, WithoutMeshTheStackIsEmpty) {
+    const core::DepthStack stack = capture(quadView(false));
     EXPECT_EQ(stack.width, 64);
     EXPECT_EQ(stack.height, 48);
     EXPECT_EQ(stack.offsets.size(), stack.pixelCount() + 1);
     EXPECT_EQ(stack.fragmentCount(), 0u);
 }
 
-TEST_F(LayerCaptureGlTest, FailuresAreReported) {
+TEST_F(DepthCaptureGlTest, FailuresAreReported) {
     m_capture.setMesh(quadMesh(stackedQuads()));
     core::View huge = quadView(false);
     huge.width = 1 << 20;
@@ -594,7 +594,7 @@ TEST_F(LayerCaptureGlTest, FailuresAreReported) {
     ASSERT_FALSE(result);
     EXPECT_NE(result.error().find("not supported"), std::string::npos) << result.error();
 
-    render::LayerCapture uninitialized;
+    render::DepthCapture uninitialized;
     auto notReady = uninitialized.capture(quadView(false), {});
     ASSERT_FALSE(notReady);
     EXPECT_NE(notReady.error().find("not initialized"), std::string::npos);

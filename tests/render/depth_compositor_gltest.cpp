@@ -35,7 +35,7 @@ using core::kNone;
 
 constexpr std::uint32_t kUnranked = 0xfffffffeu;
 
-class LayerCompositorGlTest : public render_test::GlTest {
+class DepthCompositorGlTest : public render_test::GlTest {
 protected:
     void SetUp() override {
         ASSERT_TRUE(s_context);
@@ -48,26 +48,28 @@ protected:
     }
     void TearDown() override {
         m_compositor.release();
-        m_capturer.layerCapture().release();
+        m_capturer.depthCapture().release();
         m_renderer.release();
     }
 
     /** build_layers through the GL capture, then uploads mesh and layers to the compositor. */
-    core::Layers build(const core::Mesh& mesh, const core::View& view) {
+    core::DepthLayers build(const core::Mesh& mesh, const core::View& view) {
         m_capturer.setMesh(mesh);
-        auto layers = core::buildLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
+        auto layers =
+            core::buildDepthLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
         EXPECT_TRUE(layers) << layers.error();
         if (!layers)
             return {};
         core::Status status = m_compositor.setMesh(mesh);
         EXPECT_TRUE(status) << status.error();
-        status = m_compositor.setLayers(*layers);
+        status = m_compositor.setDepthLayers(*layers);
         EXPECT_TRUE(status) << status.error();
         m_renderer.setMesh(mesh);
         return std::move(layers).value();
     }
 
-    core::Image composite(const core::Layers& layers, const render::CompositeOptions& options) {
+    core::Image composite(const core::DepthLayers& layers,
+                          const render::CompositeOptions& options) {
         render::OffscreenTarget target;
         EXPECT_TRUE(target.create(layers.stack.width, layers.stack.height));
         target.bind();
@@ -85,8 +87,8 @@ protected:
         return target.readColor();
     }
 
-    render::LayerCompositor m_compositor;
-    render::GlLayerCapturer m_capturer;
+    render::DepthCompositor m_compositor;
+    render::GlDepthCapturer m_capturer;
     render::MeshRenderer m_renderer;
 };
 
@@ -129,8 +131,8 @@ bool near(const core::Image& image, std::size_t pixel, const glm::vec4& color, i
 
 /** The CPU lookup of the visible fragment (docs/architecture.md §3 step 3), kNone for background.
  */
-std::uint32_t visibleFragment(const core::Layers& layers, const std::vector<std::uint32_t>& rank,
-                              std::size_t pixel) {
+std::uint32_t visibleFragment(const core::DepthLayers& layers,
+                              const std::vector<std::uint32_t>& rank, std::size_t pixel) {
     std::uint32_t best = kNone, chosen = kNone;
     for (std::uint32_t f = layers.stack.offsets[pixel]; f < layers.stack.offsets[pixel + 1]; ++f) {
         const std::uint32_t region = layers.segmentation.region[f];
@@ -144,8 +146,8 @@ std::uint32_t visibleFragment(const core::Layers& layers, const std::vector<std:
 }
 
 /** The Boundaries overlay's rule on the CPU: fragment f at pixel ends its region somewhere. */
-bool onBoundary(const core::Layers& layers, std::size_t pixel, std::uint32_t f) {
-    const core::LayerStack& stack = layers.stack;
+bool onBoundary(const core::DepthLayers& layers, std::size_t pixel, std::uint32_t f) {
+    const core::DepthStack& stack = layers.stack;
     const int x = int(pixel % std::size_t(stack.width)), y = int(pixel / std::size_t(stack.width));
     const std::uint32_t layer = f - stack.offsets[pixel] + 1;
     const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, -1, 1}; // right, left, up, down
@@ -164,7 +166,7 @@ bool onBoundary(const core::Layers& layers, std::size_t pixel, std::uint32_t f) 
     return false;
 }
 
-std::vector<std::uint32_t> defaultRanks(const core::Layers& layers) {
+std::vector<std::uint32_t> defaultRanks(const core::DepthLayers& layers) {
     std::vector<std::uint32_t> rank(layers.segmentation.graph.regions.size());
     for (std::size_t r = 0; r < rank.size(); ++r)
         rank[r] = std::uint32_t(r);
@@ -177,7 +179,7 @@ struct Comparison {
     std::size_t differing = 0;
     double meanDifference = 0.0;
 };
-Comparison compare(const core::Image& a, const core::Image& b, const core::LayerStack& stack,
+Comparison compare(const core::Image& a, const core::Image& b, const core::DepthStack& stack,
                    int tolerance) {
     Comparison result;
     double sum = 0.0;
@@ -194,7 +196,7 @@ Comparison compare(const core::Image& a, const core::Image& b, const core::Layer
 }
 
 void expectMatchesPlainRender(const core::Image& composited, const core::Image& rendered,
-                              const core::LayerStack& stack) {
+                              const core::DepthStack& stack) {
     const Comparison c = compare(composited, rendered, stack, 6);
     ::testing::Test::RecordProperty("differing_pixels", std::to_string(c.differing) + " of " +
                                                             std::to_string(c.covered));
@@ -207,7 +209,7 @@ void expectMatchesPlainRender(const core::Image& composited, const core::Image& 
     EXPECT_LT(c.meanDifference, 1.0);
 }
 
-TEST_F(LayerCompositorGlTest, DefaultOrderMatchesPlainRender) {
+TEST_F(DepthCompositorGlTest, DefaultOrderMatchesPlainRender) {
     struct Case {
         const char* name;
         core::Mesh mesh;
@@ -218,8 +220,8 @@ TEST_F(LayerCompositorGlTest, DefaultOrderMatchesPlainRender) {
     for (const Case& c : cases) {
         SCOPED_TRACE(c.name);
         const core::View view = orbitView(c.mesh, c.yaw, c.pitch, 320, 240, 0.6f);
-        const core::Layers layers = build(c.mesh, view);
-        ASSERT_TRUE(m_compositor.hasLayers());
+        const core::DepthLayers layers = build(c.mesh, view);
+        ASSERT_TRUE(m_compositor.hasDepthLayers());
         const render::CompositeOptions options;
         const core::Image composited = composite(layers, options);
         const core::Image rendered = plain(view, options.background);
@@ -229,14 +231,14 @@ TEST_F(LayerCompositorGlTest, DefaultOrderMatchesPlainRender) {
     }
 }
 
-TEST_F(LayerCompositorGlTest, SingleLayerShowsExactlyThePixelsWithThatLayer) {
+TEST_F(DepthCompositorGlTest, SingleLayerShowsExactlyThePixelsWithThatLayer) {
     const core::Mesh mesh = core::makeTrefoil(120, 40);
     const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
-    const core::Layers layers = build(mesh, view);
+    const core::DepthLayers layers = build(mesh, view);
     const std::uint32_t maxLayers = layers.stack.maxLayers();
     ASSERT_GE(maxLayers, 3u);
     render::CompositeOptions options;
-    options.display = render::LayerDisplay::SingleLayer;
+    options.display = render::DepthLayerDisplay::SingleLayer;
     options.background = {0.0f, 0.0f, 0.0f, 0.0f}; // alpha 0 tells background from surface
     for (std::uint32_t k = 1; k <= maxLayers + 1; ++k) {
         SCOPED_TRACE("layer " + std::to_string(k));
@@ -256,15 +258,15 @@ TEST_F(LayerCompositorGlTest, SingleLayerShowsExactlyThePixelsWithThatLayer) {
     }
 }
 
-TEST_F(LayerCompositorGlTest, SegmentationColoursTheVisibleRegion) {
+TEST_F(DepthCompositorGlTest, SegmentationColoursTheVisibleRegion) {
     const core::Mesh mesh = core::makeTrefoil(120, 40);
     const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
-    const core::Layers layers = build(mesh, view);
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthLayers layers = build(mesh, view);
+    const core::DepthStack& stack = layers.stack;
     ASSERT_EQ(layers.segmentation.region.size(), stack.fragmentCount());
 
     render::CompositeOptions options;
-    options.display = render::LayerDisplay::Segmentation;
+    options.display = render::DepthLayerDisplay::Segmentation;
     options.shadeSegmentation = false;
     core::Image image = composite(layers, options);
     saveImage(image, "trefoil_segmentation_flat");
@@ -316,11 +318,11 @@ TEST_F(LayerCompositorGlTest, SegmentationColoursTheVisibleRegion) {
     EXPECT_EQ(wrong, 0u);
 }
 
-TEST_F(LayerCompositorGlTest, RegionRanksChangeThePictureWithoutRecapture) {
+TEST_F(DepthCompositorGlTest, RegionRanksChangeThePictureWithoutRecapture) {
     const core::Mesh mesh = core::makeTrefoil(120, 40);
     const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
-    const core::Layers layers = build(mesh, view);
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthLayers layers = build(mesh, view);
+    const core::DepthStack& stack = layers.stack;
     const std::vector<core::Region>& regions = layers.segmentation.graph.regions;
 
     // Pop up the largest layer-2 region and hide the largest layer-1 one.
@@ -338,7 +340,7 @@ TEST_F(LayerCompositorGlTest, RegionRanksChangeThePictureWithoutRecapture) {
     rank[hidden] = kNone;
 
     render::CompositeOptions options;
-    options.display = render::LayerDisplay::Segmentation;
+    options.display = render::DepthLayerDisplay::Segmentation;
     options.shadeSegmentation = false;
     const core::Image before = composite(layers, options);
     render::CompositeOptions shaded;
@@ -414,11 +416,11 @@ TEST_F(LayerCompositorGlTest, RegionRanksChangeThePictureWithoutRecapture) {
  * map equals the CPU lookup with the full ranks, pixel for pixel; with transparency the
  * see-through fragments blend over the next one in the order.
  */
-TEST_F(LayerCompositorGlTest, DrawnVisibleMapEqualsTheCpuLookupAfterPopUpsAndHiding) {
+TEST_F(DepthCompositorGlTest, DrawnVisibleMapEqualsTheCpuLookupAfterPopUpsAndHiding) {
     const core::Mesh mesh = core::makeTrefoil(120, 40);
     const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
-    const core::Layers layers = build(mesh, view);
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthLayers layers = build(mesh, view);
+    const core::DepthStack& stack = layers.stack;
     const std::vector<std::uint32_t>& region = layers.segmentation.region;
     core::RegionOrder order(layers.segmentation.graph);
 
@@ -430,7 +432,7 @@ TEST_F(LayerCompositorGlTest, DrawnVisibleMapEqualsTheCpuLookupAfterPopUpsAndHid
     ASSERT_GT(deep.size(), 20u);
 
     render::CompositeOptions options;
-    options.display = render::LayerDisplay::Segmentation;
+    options.display = render::DepthLayerDisplay::Segmentation;
     options.shadeSegmentation = false;
     const auto check = [&](const char* step) {
         for (const bool transparency : {false, true}) {
@@ -482,20 +484,20 @@ TEST_F(LayerCompositorGlTest, DrawnVisibleMapEqualsTheCpuLookupAfterPopUpsAndHid
     check("hidden");
 }
 
-TEST_F(LayerCompositorGlTest, UpdateSegmentationFollowsNewRegions) {
+TEST_F(DepthCompositorGlTest, UpdateSegmentationFollowsNewRegions) {
     const core::Mesh mesh = core::makeTrefoil(120, 40);
     const core::View view = orbitView(mesh, 45.0f, 60.0f, 320, 240, 0.6f);
-    core::Layers layers = build(mesh, view);
+    core::DepthLayers layers = build(mesh, view);
     render::CompositeOptions options;
-    options.display = render::LayerDisplay::Segmentation;
+    options.display = render::DepthLayerDisplay::Segmentation;
     options.shadeSegmentation = false;
     (void)composite(layers, options);
 
     // The paper's plain depth test splits the tube into many more regions.
-    core::LayerOptions plain;
+    core::DepthLayerOptions plain;
     plain.test = core::ConnectionTest::Plain;
     const std::size_t before = layers.segmentation.graph.regions.size();
-    core::resegmentLayers(layers, mesh, plain);
+    core::resegmentDepthLayers(layers, mesh, plain);
     ASSERT_NE(layers.segmentation.graph.regions.size(), before);
     const core::Status status = m_compositor.updateSegmentation(layers);
     ASSERT_TRUE(status) << status.error();
@@ -511,12 +513,12 @@ TEST_F(LayerCompositorGlTest, UpdateSegmentationFollowsNewRegions) {
     EXPECT_EQ(wrong, 0u);
 
     // Another capture's segmentation is refused.
-    core::Layers other = layers;
+    core::DepthLayers other = layers;
     other.stack.width += 1;
     EXPECT_FALSE(m_compositor.updateSegmentation(other));
 }
 
-TEST_F(LayerCompositorGlTest, TexturedModelShowsItsTexture) {
+TEST_F(DepthCompositorGlTest, TexturedModelShowsItsTexture) {
     const std::string path =
         std::string(LAYERPAINT_ASSIMP_MODELS) + "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
     if (!std::filesystem::exists(path))
@@ -525,7 +527,7 @@ TEST_F(LayerCompositorGlTest, TexturedModelShowsItsTexture) {
     ASSERT_TRUE(mesh) << mesh.error();
     ASSERT_FALSE(mesh->textures.empty());
     const core::View view = orbitView(*mesh, 30.0f, 25.0f, 320, 240);
-    const core::Layers layers = build(*mesh, view);
+    const core::DepthLayers layers = build(*mesh, view);
     const render::CompositeOptions options;
     const core::Image composited = composite(layers, options);
     const core::Image rendered = plain(view, options.background);
@@ -546,7 +548,7 @@ TEST_F(LayerCompositorGlTest, TexturedModelShowsItsTexture) {
 }
 
 /** Two quads facing the camera with one texture each and one untextured: one pass per texture. */
-TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
+TEST_F(DepthCompositorGlTest, EachTextureGetsItsPass) {
     core::Mesh mesh;
     const auto quad = [&](float x0, std::uint32_t material) {
         const auto base = std::uint32_t(mesh.positions.size());
@@ -578,7 +580,7 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
     core::Camera camera;
     camera.frame(mesh.bounds());
     const core::View view = camera.view(240, 120);
-    const core::Layers layers = build(mesh, view);
+    const core::DepthLayers layers = build(mesh, view);
     const render::CompositeOptions options;
     const core::Image composited = composite(layers, options);
     const core::Image rendered = plain(view, options.background);
@@ -603,7 +605,7 @@ TEST_F(LayerCompositorGlTest, EachTextureGetsItsPass) {
  * the drawn fragment of every pixel is the CPU lookup's. How long these draws take is measured by
  * the benchmarks (bench/gl_bench.cpp), not here.
  */
-TEST_F(LayerCompositorGlTest, TrefoilAt1280x720MatchesPlainRenderAndTheCpuLookup) {
+TEST_F(DepthCompositorGlTest, TrefoilAt1280x720MatchesPlainRenderAndTheCpuLookup) {
     const core::Mesh mesh = core::makeTrefoil();
     struct Case {
         const char* name;
@@ -612,8 +614,8 @@ TEST_F(LayerCompositorGlTest, TrefoilAt1280x720MatchesPlainRenderAndTheCpuLookup
     for (const Case& c : {Case{"framed", 0.0f, 0.0f, 1.0f}, Case{"close", 45.0f, 60.0f, 0.6f}}) {
         SCOPED_TRACE(c.name);
         const core::View view = orbitView(mesh, c.yaw, c.pitch, 1280, 720, c.zoom);
-        const core::Layers layers = build(mesh, view);
-        ASSERT_TRUE(m_compositor.hasLayers());
+        const core::DepthLayers layers = build(mesh, view);
+        ASSERT_TRUE(m_compositor.hasDepthLayers());
         const render::CompositeOptions options;
         const core::Image composited = composite(layers, options);
         const core::Image rendered = plain(view, options.background);

@@ -45,7 +45,7 @@ struct Scene {
     core::Mesh mesh;
     core::MeshTopology topology;
     core::View view;
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::SurfaceGeometry geometry;
 };
 
@@ -55,7 +55,7 @@ Scene makeScene(std::string name, core::Mesh mesh, const core::View& view, bool 
     s.mesh = std::move(mesh);
     s.topology = core::buildMeshTopology(s.mesh);
     s.view = view;
-    s.stack = core::captureLayersCpu(s.mesh, view, {cull, 2});
+    s.stack = core::captureDepthLayersCpu(s.mesh, view, {cull, 2});
     s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, view);
     return s;
 }
@@ -74,7 +74,7 @@ core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, float dista
  * hinges on it: there up to 1 byte in 10,000 may differ.
  */
 void expectSameLinks(const core::Connectivity& cpu, const core::Connectivity& gpu,
-                     const core::LayerStack& stack, const std::string& what) {
+                     const core::DepthStack& stack, const std::string& what) {
     EXPECT_EQ(gpu.width, cpu.width) << what;
     EXPECT_EQ(gpu.height, cpu.height) << what;
     EXPECT_EQ(gpu.truncated, cpu.truncated) << what;
@@ -200,7 +200,7 @@ TEST_F(GpuConnectivityGlTest, BuiltinModelsMatchReferenceFromSeveralViews) {
                 s.mesh = model.mesh;
                 s.topology = topology;
                 s.view = orbitView(s.mesh, v[0], v[1], v[2], 320, 240, orthographic);
-                s.stack = core::captureLayersCpu(s.mesh, s.view, {true, 2});
+                s.stack = core::captureDepthLayersCpu(s.mesh, s.view, {true, 2});
                 s.geometry = core::makeSurfaceGeometry(s.mesh, topology, s.view);
                 expectSameAsReference(m_gpu, s);
             }
@@ -231,7 +231,7 @@ TEST_F(GpuConnectivityGlTest, Trefoil1280x720MatchesReference) {
 
 TEST_F(GpuConnectivityGlTest, GlCaptureMatchesReference) {
     // Stacks from the GL capture (a different rasterizer than the CPU stand-in).
-    render::LayerCapture capture;
+    render::DepthCapture capture;
     ASSERT_TRUE(capture.initialize());
     for (const char* name : {"trefoil", "row"}) {
         auto mesh = core::makeBuiltinModel(name);
@@ -243,7 +243,7 @@ TEST_F(GpuConnectivityGlTest, GlCaptureMatchesReference) {
             s.mesh = *mesh;
             s.topology = core::buildMeshTopology(s.mesh);
             s.view = orbitView(s.mesh, -70.0f, 15.0f, 1.7f, 400, 300, false);
-            render::LayerCaptureOptions options;
+            render::DepthCaptureOptions options;
             options.cullBackFaces = !twoSided;
             auto stack = capture.capture(s.view, options);
             ASSERT_TRUE(stack) << stack.error();
@@ -336,7 +336,7 @@ TEST_F(GpuConnectivityGlTest, NonDefaultAnglesAndUnknownTrianglesMatchReference)
 TEST_F(GpuConnectivityGlTest, FragmentsBeyondLayer255AreTruncatedAsInReference) {
     // Three pixels in an L with 300 fragments each (more layers than a capture of a real mesh
     // reaches), coincident and on stacked planes, for both tests.
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2;
     stack.height = 2;
     const std::uint32_t n = 300;
@@ -372,7 +372,7 @@ TEST_F(GpuConnectivityGlTest, FragmentsBeyondLayer255AreTruncatedAsInReference) 
 TEST_F(GpuConnectivityGlTest, MalformedAndEmptyStacks) {
     core::ConnectivityOptions options;
     // No fragments at all.
-    core::LayerStack empty;
+    core::DepthStack empty;
     empty.width = 5;
     empty.height = 3;
     empty.offsets.assign(16, 0);
@@ -381,7 +381,7 @@ TEST_F(GpuConnectivityGlTest, MalformedAndEmptyStacks) {
     EXPECT_TRUE(result->links.empty());
     EXPECT_FALSE(result->truncated);
     // Wrong offsets size: the reference's all-zero links.
-    core::LayerStack wrongSize;
+    core::DepthStack wrongSize;
     wrongSize.width = 2;
     wrongSize.height = 1;
     wrongSize.offsets = {0, 1};
@@ -391,7 +391,7 @@ TEST_F(GpuConnectivityGlTest, MalformedAndEmptyStacks) {
     ASSERT_TRUE(result) << result.error();
     EXPECT_EQ(result->links, core::computeConnectivity(wrongSize, options).links);
     // Offsets that do not describe the fragments: an error, not a read out of bounds.
-    core::LayerStack descending;
+    core::DepthStack descending;
     descending.width = 2;
     descending.height = 1;
     descending.offsets = {0, 2, 1};
@@ -420,7 +420,7 @@ TEST_F(GpuConnectivityGlTest, BuffersShrinkAndGrowBetweenCalls) {
 TEST_F(GpuConnectivityGlTest, ManyFragmentsDispatchInRowsOfGroups) {
     // More fragments than one row of work groups holds on llvmpipe (65535 × 64): the dispatch
     // becomes two-dimensional. One fragment a pixel, depths in steps around the threshold.
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2100;
     stack.height = 2100;
     const std::size_t pixels = stack.pixelCount();

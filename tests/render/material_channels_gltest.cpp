@@ -52,7 +52,7 @@ protected:
     }
     void TearDown() override {
         m_compositor.release();
-        m_capturer.layerCapture().release();
+        m_capturer.depthCapture().release();
     }
 
     core::Image draw(render::MaterialChannel channel, const std::string& name) {
@@ -81,8 +81,8 @@ protected:
         doc.endStroke();
     }
 
-    render::GlLayerCapturer m_capturer;
-    render::LayerCompositor m_compositor;
+    render::GlDepthCapturer m_capturer;
+    render::DepthCompositor m_compositor;
 };
 
 std::array<int, 3> rgb(const core::Image& image, int x, int y) {
@@ -97,7 +97,7 @@ TEST_F(MaterialChannelsGlTest, PaintedRoughnessAndMetallicShowInTheirChannelsAnd
     camera.frame(doc.mesh().bounds());
     doc.camera() = camera;
     m_capturer.setMesh(doc.mesh());
-    ASSERT_TRUE(doc.buildLayers(m_capturer, camera.view(kWidth, kHeight)));
+    ASSERT_TRUE(doc.buildDepthLayers(m_capturer, camera.view(kWidth, kHeight)));
 
     core::PaintChanges changes;
     auto layer = doc.addPaintLayer({.name = "material"}, changes);
@@ -108,7 +108,7 @@ TEST_F(MaterialChannelsGlTest, PaintedRoughnessAndMetallicShowInTheirChannelsAnd
     // Shown before painting, as the viewport does; painting then updates touched texels only.
     ASSERT_TRUE(m_compositor.setMesh(doc.paintedMesh()));
     m_compositor.setMetallicRoughness(0, target->metallicRoughnessPage(0));
-    ASSERT_TRUE(m_compositor.setLayers(*doc.layers()));
+    ASSERT_TRUE(m_compositor.setDepthLayers(*doc.depthLayers()));
     const core::Image before = draw(render::MaterialChannel::Material, "material_before");
 
     core::Brush& brush = doc.brush();

@@ -31,7 +31,7 @@ protected:
         ASSERT_TRUE(status) << status.error();
         s_trefoil = s_trefoil ? s_trefoil : std::make_shared<core::Mesh>(core::makeTrefoil());
     }
-    void TearDown() override { m_capturer.layerCapture().release(); }
+    void TearDown() override { m_capturer.depthCapture().release(); }
 
     /** The trefoil, as the headless tool shows it by default, its layers built at size × scale. */
     std::unique_ptr<core::Document> open(int width, int height, int scale) {
@@ -43,7 +43,7 @@ protected:
         doc->camera() = camera;
         m_capturer.setMesh(doc->mesh());
         const core::Status status =
-            doc->buildLayers(m_capturer, camera.view(width * scale, height * scale));
+            doc->buildDepthLayers(m_capturer, camera.view(width * scale, height * scale));
         EXPECT_TRUE(status) << status.error();
         return doc;
     }
@@ -61,18 +61,18 @@ protected:
         return red;
     }
 
-    render::GlLayerCapturer m_capturer;
+    render::GlDepthCapturer m_capturer;
     inline static std::shared_ptr<core::Mesh> s_trefoil;
 };
 
 /** Pixels of a layer stack with exactly one fragment (the surface seen alone). */
-bool single(const core::LayerStack& stack, int x, int y) {
+bool single(const core::DepthStack& stack, int x, int y) {
     if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
         return false;
     const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
     return stack.offsets[i + 1] - stack.offsets[i] == 1;
 }
-bool empty(const core::LayerStack& stack, int x, int y) {
+bool empty(const core::DepthStack& stack, int x, int y) {
     if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
         return true;
     const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
@@ -84,7 +84,7 @@ bool empty(const core::LayerStack& stack, int x, int y) {
  * narrower than 2 × radius - 8 (so a dab there covers the tube from outline to outline), with
  * nothing but background or that tube within radius + 4. nullopt if the view has none.
  */
-std::optional<glm::ivec2> crossableTube(const core::LayerStack& stack, int radius) {
+std::optional<glm::ivec2> crossableTube(const core::DepthStack& stack, int radius) {
     for (int y = radius + 4; y < stack.height - radius - 4; y += 3) {
         for (int left = radius + 4; left < stack.width - radius - 4; ++left) {
             if (!single(stack, left, y) || !empty(stack, left - 1, y))
@@ -119,7 +119,7 @@ TEST_F(PaintProjectionGlTest, StrokeEdgeAtTheOutlineFollowsTheSurfaceNotThePixel
     constexpr int kWidth = 640, kHeight = 480, kRadius = 30, kScale = 4;
     const auto paint = [&](int scale) {
         auto doc = open(kWidth, kHeight, scale);
-        const auto at = crossableTube(open(kWidth, kHeight, 1)->layers()->stack, kRadius);
+        const auto at = crossableTube(open(kWidth, kHeight, 1)->depthLayers()->stack, kRadius);
         EXPECT_TRUE(at.has_value());
         doc->setLayerAware(false);
         core::Brush& brush = doc->brush();
@@ -159,8 +159,8 @@ TEST_F(PaintProjectionGlTest, PaintingTheSecondLayerShownAloneLeavesTheFrontStra
     // paints that strand, and not one texel of the strand in front of it.
     constexpr int kWidth = 640, kHeight = 480, kRadius = 6;
     auto doc = open(kWidth, kHeight, 1);
-    const core::Layers& layers = *doc->layers();
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthLayers& layers = *doc->depthLayers();
+    const core::DepthStack& stack = layers.stack;
     const auto index = [&](int x, int y) {
         return std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
     };

@@ -63,7 +63,7 @@ class StorageSplitGlTest : public render_test::GlTest {
 protected:
     void SetUp() override {
         ASSERT_TRUE(s_context);
-        for (render::LayerCompositor* compositor : {&m_whole, &m_split}) {
+        for (render::DepthCompositor* compositor : {&m_whole, &m_split}) {
             const core::Status status = compositor->initialize();
             ASSERT_TRUE(status) << status.error();
         }
@@ -73,17 +73,18 @@ protected:
     void TearDown() override {
         m_whole.release();
         m_split.release();
-        m_capturer.layerCapture().release();
+        m_capturer.depthCapture().release();
     }
 
-    core::Layers build(const core::Mesh& mesh, const core::View& view) {
+    core::DepthLayers build(const core::Mesh& mesh, const core::View& view) {
         m_capturer.setMesh(mesh);
-        auto layers = core::buildLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
+        auto layers =
+            core::buildDepthLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
         EXPECT_TRUE(layers) << layers.error();
-        return layers ? std::move(layers).value() : core::Layers{};
+        return layers ? std::move(layers).value() : core::DepthLayers{};
     }
 
-    static core::Image draw(render::LayerCompositor& compositor, const core::Layers& layers,
+    static core::Image draw(render::DepthCompositor& compositor, const core::DepthLayers& layers,
                             const render::CompositeOptions& options) {
         render::OffscreenTarget target;
         EXPECT_TRUE(target.create(layers.stack.width, layers.stack.height));
@@ -92,9 +93,9 @@ protected:
         return target.readColor();
     }
 
-    render::LayerCompositor m_whole;
-    render::LayerCompositor m_split;
-    render::GlLayerCapturer m_capturer;
+    render::DepthCompositor m_whole;
+    render::DepthCompositor m_split;
+    render::GlDepthCapturer m_capturer;
 };
 
 std::size_t differingBytes(const core::Image& a, const core::Image& b) {
@@ -108,16 +109,16 @@ std::size_t differingBytes(const core::Image& a, const core::Image& b) {
 TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
     for (const Scene& scene : scenes()) {
         SCOPED_TRACE(scene.name);
-        const core::Layers layers = build(scene.mesh, scene.view);
+        const core::DepthLayers layers = build(scene.mesh, scene.view);
         ASSERT_GT(layers.stack.fragmentCount(), 0u);
         // The cap plans the mesh parts; the fragment arrays keep the whole block (a tiny one
         // would refuse them, see CompositorShadesAsManyFragmentsAsItsFragmentArraysHold).
         m_split.setStorageBlockCap(scene.block);
-        for (render::LayerCompositor* compositor : {&m_whole, &m_split}) {
+        for (render::DepthCompositor* compositor : {&m_whole, &m_split}) {
             core::Status status = compositor->setMesh(scene.mesh);
             ASSERT_TRUE(status) << status.error();
             compositor->setStorageBlockCap(0);
-            status = compositor->setLayers(layers);
+            status = compositor->setDepthLayers(layers);
             ASSERT_TRUE(status) << status.error();
         }
         EXPECT_EQ(m_whole.meshPartCount(), 1u);
@@ -128,7 +129,7 @@ TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
         render::CompositeOptions options;
         const core::Image whole = draw(m_whole, layers, options);
         EXPECT_EQ(differingBytes(whole, draw(m_split, layers, options)), 0u);
-        options.display = render::LayerDisplay::SingleLayer;
+        options.display = render::DepthLayerDisplay::SingleLayer;
         options.layer = 2;
         EXPECT_EQ(differingBytes(draw(m_whole, layers, options), draw(m_split, layers, options)),
                   0u);
@@ -161,17 +162,18 @@ TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHol
     // arrays holds the shading too (one buffer of four words a fragment held a quarter of them).
     const core::Mesh trefoil = core::makeTrefoil();
     // Close up: the knot fills the view, two to four sheets deep.
-    const core::Layers layers = build(trefoil, orbitView(trefoil, 45.0f, 60.0f, 320, 240, 0.35f));
+    const core::DepthLayers layers =
+        build(trefoil, orbitView(trefoil, 45.0f, 60.0f, 320, 240, 0.35f));
     const std::size_t fragments = layers.stack.fragmentCount();
     const std::size_t pixels = layers.stack.pixelCount();
     // The largest other array: the visible and under fragment of each pixel.
     const std::size_t block = std::max(fragments * 4, 2 * pixels * 4);
     ASSERT_LT(block, fragments * 16) << "the scene must have more fragments than pixels / 2";
     m_split.setStorageBlockCap(block);
-    for (render::LayerCompositor* compositor : {&m_whole, &m_split}) {
+    for (render::DepthCompositor* compositor : {&m_whole, &m_split}) {
         core::Status status = compositor->setMesh(trefoil);
         ASSERT_TRUE(status) << status.error();
-        status = compositor->setLayers(layers);
+        status = compositor->setDepthLayers(layers);
         ASSERT_TRUE(status) << status.error();
     }
     render::CompositeOptions options;
@@ -186,7 +188,7 @@ TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHol
 
     // One fragment more than a block holds is refused with what to do about it.
     m_split.setStorageBlockCap(fragments * 4 - 4);
-    const core::Status refused = m_split.setLayers(layers);
+    const core::Status refused = m_split.setDepthLayers(layers);
     ASSERT_FALSE(refused);
     EXPECT_NE(refused.error().find("make the view smaller"), std::string::npos) << refused.error();
 }
@@ -194,13 +196,13 @@ TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHol
 TEST_F(StorageSplitGlTest, CaptureNodeChunksGiveTheSameLayerStack) {
     for (const Scene& scene : scenes()) {
         SCOPED_TRACE(scene.name);
-        render::LayerCapture whole, split;
+        render::DepthCapture whole, split;
         ASSERT_TRUE(whole.initialize());
         ASSERT_TRUE(split.initialize());
         whole.setMesh(scene.mesh);
         split.setMesh(scene.mesh);
         for (const bool twoSided : {false, true}) {
-            render::LayerCapture::Options options;
+            render::DepthCapture::Options options;
             options.cullBackFaces = !twoSided;
             auto reference = whole.capture(scene.view, options);
             ASSERT_TRUE(reference) << reference.error();
@@ -234,7 +236,7 @@ TEST_F(StorageSplitGlTest, CaptureNodeChunksGiveTheSameLayerStack) {
 
 TEST_F(StorageSplitGlTest, CaptureBeyondEveryChunkIsAClearError) {
     const core::Mesh trefoil = core::makeTrefoil();
-    render::LayerCapture capture;
+    render::DepthCapture capture;
     ASSERT_TRUE(capture.initialize());
     capture.setMesh(trefoil);
     // 8 chunks of 4 nodes hold 32 fragments: far fewer than the view has.

@@ -30,7 +30,7 @@ protected:
         const core::Status status = m_capturer.initialize();
         ASSERT_TRUE(status) << status.error();
     }
-    void TearDown() override { m_capturer.layerCapture().release(); }
+    void TearDown() override { m_capturer.depthCapture().release(); }
 
     /**
      * A back quad (depth 8, u 0..0.5) whose middle a front quad (depth 4, u 0.5..1) covers:
@@ -46,7 +46,7 @@ protected:
         options.resolution = 128;
         EXPECT_TRUE(doc->setPaintTarget(options).ok());
         m_capturer.setMesh(doc->mesh());
-        const core::Status status = doc->buildLayers(m_capturer, pixelView(kWidth, kHeight));
+        const core::Status status = doc->buildDepthLayers(m_capturer, pixelView(kWidth, kHeight));
         EXPECT_TRUE(status) << status.error();
         doc->brush().radius = 3.0f;
         doc->brush().hardness = 1.0f;
@@ -69,7 +69,7 @@ protected:
         return out;
     }
 
-    render::GlLayerCapturer m_capturer;
+    render::GlDepthCapturer m_capturer;
 };
 
 std::size_t pixelOf(glm::vec2 p) {
@@ -78,8 +78,8 @@ std::size_t pixelOf(glm::vec2 p) {
 
 TEST_F(StrokeLineGlTest, ALineFromAHiddenSurfaceRunsBehindTheOccluderOnIt) {
     std::unique_ptr<core::Document> doc = open();
-    ASSERT_NE(doc->layers(), nullptr);
-    const core::LayerStack& stack = doc->layers()->stack;
+    ASSERT_NE(doc->depthLayers(), nullptr);
+    const core::DepthStack& stack = doc->depthLayers()->stack;
     ASSERT_EQ(stack.layerCount(pixelOf({58.0f, 42.0f})), 2u) << "both quads there";
     const std::vector<std::uint8_t> front = frontHalf(*doc);
 

@@ -71,7 +71,7 @@ protected:
             s_engine = std::make_shared<core::Mesh>(std::move(mesh).value());
         }
     }
-    void TearDown() override { m_capturer.layerCapture().release(); }
+    void TearDown() override { m_capturer.depthCapture().release(); }
 
     std::unique_ptr<core::Document> open(float yaw, float pitch) {
         auto doc = std::make_unique<core::Document>();
@@ -82,7 +82,7 @@ protected:
         doc->camera() = camera;
         m_capturer.setMesh(doc->mesh());
         m_view = camera.view(kWidth, kHeight);
-        const core::Status status = doc->buildLayers(m_capturer, m_view);
+        const core::Status status = doc->buildDepthLayers(m_capturer, m_view);
         EXPECT_TRUE(status) << status.error();
         doc->setLayerAware(false);
         return doc;
@@ -93,7 +93,7 @@ protected:
      * kRadius + 6 on the same plane in front: the face of the largest such triangle.
      */
     std::optional<glm::ivec2> flatFace(const core::Document& doc, Plane& face) const {
-        const core::LayerStack& stack = doc.layers()->stack;
+        const core::DepthStack& stack = doc.depthLayers()->stack;
         const core::Mesh& mesh = doc.mesh();
         const auto front = [&](int x, int y) {
             if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
@@ -146,7 +146,7 @@ protected:
         doc.endStroke();
     }
 
-    render::GlLayerCapturer m_capturer;
+    render::GlDepthCapturer m_capturer;
     core::View m_view;
     inline static std::shared_ptr<core::Mesh> s_engine;
 };
@@ -205,7 +205,7 @@ TEST_F(UvFootprintGlTest, DabOnTheCylinderHeadPaintsTheTexelsUnderTheBrushDisc) 
         };
         vertexDab(centre, "in the middle of the face");
         const std::size_t pixel = std::size_t(at->y) * std::size_t(kWidth) + std::size_t(at->x);
-        const core::LayerStack& stack = doc->layers()->stack;
+        const core::DepthStack& stack = doc->depthLayers()->stack;
         const std::uint32_t t = stack.triangle[stack.fragment(pixel, 1)];
         glm::vec2 corner(0.0f);
         float nearest = 1e30f;

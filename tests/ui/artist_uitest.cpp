@@ -108,7 +108,7 @@ protected:
     }
 
     bool covered(int x, int y) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
             return false;
         const std::size_t i = std::size_t(y) * stack.width + x;
@@ -120,7 +120,7 @@ protected:
      * every pixel within halfHeight above and below: a stroke there paints its full width.
      */
     std::pair<QPoint, QPoint> solidRun(int minLength, int halfHeight) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int k = 0; k < stack.height / 2; k += 3) {
             for (int y : {stack.height / 2 - k, stack.height / 2 + k}) {
                 int runStart = -1;
@@ -143,7 +143,7 @@ protected:
 
     /** Whether the surface at pixel (x, y) has exactly colour (the eyedropper's answer). */
     bool hasColor(int x, int y, const QColor& color) {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         const auto picked = document().pickColor(std::size_t(y) * stack.width + x);
         return picked && ui::BrushToolBar::toQColor(*picked) == color;
     }
@@ -215,7 +215,7 @@ TEST_F(ArtistTest, PenPressureWidensTheStrokeAndTheEraserEndErasesIt) {
     const QColor color = m_window->colorPanel()->foreground();
 
     // Two wheel notches closer: the tube is wide enough for the widest stroke.
-    QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     const QPointF middle = QPointF(viewport()->rect().center());
     QWheelEvent wheel(middle, viewport()->mapToGlobal(middle), QPoint(), QPoint(0, 240),
                       Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);

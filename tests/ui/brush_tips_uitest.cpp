@@ -41,7 +41,7 @@ protected:
 
     /** Whether the 11 × 11 pixels around p all show the model. */
     bool solid(int px, int py) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int dy = -5; dy <= 5; ++dy)
             for (int dx = -5; dx <= 5; ++dx) {
                 const int x = px + dx, y = py + dy;
@@ -56,7 +56,7 @@ protected:
 
     /** Horizontal runs across the model at least 70 px long, rows 50 px apart or more. */
     std::vector<std::pair<QPoint, QPoint>> runs() const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         std::vector<std::pair<QPoint, QPoint>> out;
         for (int y = 20; y < stack.height - 20; y += 5) {
             if (!out.empty() && y - out.back().first.y() < 50)

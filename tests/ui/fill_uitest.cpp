@@ -60,7 +60,7 @@ protected:
 
     /** Whether pixel (x, y) and its 9 × 9 neighbourhood all show the model. */
     bool solid(int px, int py) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int dy = -4; dy <= 4; ++dy)
             for (int dx = -4; dx <= 4; ++dx) {
                 const int x = px + dx, y = py + dy;
@@ -75,7 +75,7 @@ protected:
 
     /** A solid pixel near from (rings of growing size around it), or a null point. */
     QPoint solidPixel(QPoint from) const {
-        const int width = document().layers()->stack.width;
+        const int width = document().depthLayers()->stack.width;
         for (int r = 0; r < width; r += 3)
             for (int dy = -r; dy <= r; dy += 3)
                 for (int dx = -r; dx <= r; dx += 3)
@@ -121,7 +121,7 @@ TEST_F(FillTest, GChoosesFillAndEachModeFillsWhatItShould) {
     document().brush().color = {0.0f, 1.0f, 0.0f, 1.0f};
     document().brush().opacity = 1.0f;
     const std::array<std::uint8_t, 4> green{0, 255, 0, 255}, blue{0, 0, 255, 255};
-    const core::LayerStack& stack = document().layers()->stack;
+    const core::DepthStack& stack = document().depthLayers()->stack;
     const QPoint p = solidPixel({stack.width / 2, stack.height / 2});
     ASSERT_FALSE(p.isNull());
     const std::vector<std::uint8_t> original = texture().page(0).rgba;

@@ -155,15 +155,15 @@ protected:
     }
 
     void openAndBuild(const QString& source) {
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         ASSERT_TRUE(open(source));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        ASSERT_NE(document().depthLayers(), nullptr);
     }
 
     /** A pixel of the view in the middle of the model's surface (logical = device here). */
     QPoint onModel() const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         const auto covered = [&](int x, int y) {
             for (int dy = -3; dy <= 3; ++dy)
                 for (int dx = -3; dx <= 3; ++dx) {
@@ -232,8 +232,8 @@ TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
     openAndBuild(QStringLiteral("builtin:trefoil"));
     ASSERT_TRUE(saveTo(path(QStringLiteral("knot.glb"))));
     ASSERT_FALSE(m_window->projectController()->isModified());
-    const core::Layers& layers = *document().layers();
-    const core::LayerStack& stack = layers.stack;
+    const core::DepthLayers& layers = *document().depthLayers();
+    const core::DepthStack& stack = layers.stack;
     const core::RegionOrderState initial = document().regionOrder().state();
     QUndoStack* stack0 = m_window->undoStack();
     ASSERT_NE(document().paintTarget(), nullptr);

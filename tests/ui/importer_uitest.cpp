@@ -48,7 +48,7 @@ protected:
 
     /** A horizontal run of pixels that all show the model, near the middle of the view. */
     std::pair<QPoint, QPoint> pathAcrossTheModel() const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         auto covered = [&](int x, int y) {
             const std::size_t i = std::size_t(y) * stack.width + x;
             return stack.offsets[i + 1] != stack.offsets[i];
@@ -119,7 +119,7 @@ private:
 
 TEST_F(ImporterTest, AFileThatCrashesTheParserLeavesThePaintedModelAsItWas) {
     QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-    QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     m_window->openFile(QStringLiteral("builtin:trefoil"));
     ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
     ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));

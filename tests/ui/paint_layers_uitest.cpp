@@ -85,11 +85,11 @@ protected:
         if (HasFatalFailure())
             return;
         QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         m_window->openFile(QStringLiteral("builtin:trefoil"));
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(doc().layers(), nullptr);
+        ASSERT_NE(doc().depthLayers(), nullptr);
         // The panel shares its place with the Depth Layers: its tab to the front.
         auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("paintLayersDock"));
         ASSERT_NE(dock, nullptr);
@@ -109,7 +109,7 @@ protected:
         const core::TextureTarget* target = texture();
         return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
     }
-    const core::PaintLayerStack& stack() { return texture()->layerStack(); }
+    const core::PaintLayerStack& stack() { return texture()->paintLayerStack(); }
     /** Every written tile of the layer's base colour plane, in order. */
     std::vector<std::uint8_t> layerColorBytes(std::size_t index) {
         std::vector<std::uint8_t> out;

@@ -43,7 +43,7 @@ protected:
         WindowTest::openTrefoil();
         if (HasFatalFailure())
             return;
-        ASSERT_TRUE(viewport()->isShowingLayers());
+        ASSERT_TRUE(viewport()->isShowingDepthLayers());
     }
 
     const core::TextureTarget* texture() {
@@ -56,7 +56,7 @@ protected:
 
     /** Whether pixel (device = logical here) and its 9 × 9 neighbourhood all show the model. */
     bool solid(QPoint p) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int dy = -4; dy <= 4; ++dy)
             for (int dx = -4; dx <= 4; ++dx) {
                 const int x = p.x() + dx, y = p.y() + dy;
@@ -71,7 +71,7 @@ protected:
 
     /** A horizontal run across the model near the middle of the view, at least minLength long. */
     std::pair<QPoint, QPoint> pathAcrossTheKnot(int minLength = 80) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int k = 0; k < stack.height / 2; k += 7) {
             for (int y : {stack.height / 2 - k, stack.height / 2 + k}) {
                 int runStart = -1;
@@ -137,7 +137,7 @@ TEST_F(PaintingTest, DragPaintsAndUndoRedoRestoreTheTextureExactly) {
     const std::vector<std::uint8_t> painted = pageBytes();
     EXPECT_NE(painted, original);
     EXPECT_EQ(builder()->captureCount(), captures);
-    EXPECT_TRUE(viewport()->isShowingLayers());
+    EXPECT_TRUE(viewport()->isShowingDepthLayers());
     const QImage after = grab();
     int changed = 0, samples = 0;
     for (int x = a.x(); x <= b.x(); x += 3, ++samples)
@@ -219,8 +219,9 @@ TEST_F(PaintingTest, PressOnTheBackgroundPaintsNothing) {
     openTrefoil();
     const std::vector<std::uint8_t> original = pageBytes();
     const QPoint corner(3, 3);
-    ASSERT_EQ(document().layers()->stack.offsets[3 * document().layers()->stack.width + 4],
-              document().layers()->stack.offsets[3 * document().layers()->stack.width + 3]);
+    ASSERT_EQ(
+        document().depthLayers()->stack.offsets[3 * document().depthLayers()->stack.width + 4],
+        document().depthLayers()->stack.offsets[3 * document().depthLayers()->stack.width + 3]);
     QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, corner);
     EXPECT_EQ(pageBytes(), original);
     EXPECT_EQ(undoStack()->count(), 0);
@@ -240,10 +241,10 @@ TEST_F(PaintingTest, PaintingRightAfterAnOrbitUsesFreshLayers) {
     QTest::mouseMove(viewport(), start + QPoint(3, 0));
     QTest::mouseMove(viewport(), start + QPoint(6, 0));
     QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, start + QPoint(6, 0));
-    EXPECT_EQ(document().layers(), nullptr);
+    EXPECT_EQ(document().depthLayers(), nullptr);
 
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, target);
-    const core::Layers* layers = document().layers();
+    const core::DepthLayers* layers = document().depthLayers();
     ASSERT_NE(layers, nullptr);
     EXPECT_EQ(builder()->captureCount(), captures + 1);
     const core::View view = viewport()->view();
@@ -253,7 +254,7 @@ TEST_F(PaintingTest, PaintingRightAfterAnOrbitUsesFreshLayers) {
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, target + QPoint(10, 0));
     EXPECT_NE(pageBytes(), original);
     EXPECT_EQ(undoStack()->count(), 1);
-    EXPECT_TRUE(viewport()->isShowingLayers());
+    EXPECT_TRUE(viewport()->isShowingDepthLayers());
 }
 
 TEST_F(PaintingTest, UndoStackFollowsTheBudget) {

@@ -148,7 +148,7 @@ TEST_F(PresetsTest, AClickedPresetPaintsTheStroke) {
     const QPoint a(viewport()->width() / 2 - 60, viewport()->height() / 2);
     const QPoint b(viewport()->width() / 2 + 60, viewport()->height() / 2 + 10);
     // Paint where the model is: the centre row of the knot.
-    const core::LayerStack& stack = document().layers()->stack;
+    const core::DepthStack& stack = document().depthLayers()->stack;
     ASSERT_GT(
         stack.layerCount(std::size_t(a.y()) * std::size_t(stack.width) + std::size_t(a.x())) +
             stack.layerCount(std::size_t(b.y()) * std::size_t(stack.width) + std::size_t(b.x())),

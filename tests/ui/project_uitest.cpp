@@ -115,16 +115,16 @@ protected:
 
     static void openAndBuild(ui::MainWindow& window, const QString& source) {
         QSignalSpy loaded(&window, &ui::MainWindow::modelLoaded);
-        QSignalSpy built(window.layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(window.depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         window.openFile(source);
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(window.document().layers(), nullptr);
+        ASSERT_NE(window.document().depthLayers(), nullptr);
     }
 
     /** A horizontal run across the model near the middle of the view. */
     static std::pair<QPoint, QPoint> pathAcross(ui::MainWindow& window, int skipRows = 0) {
-        const core::LayerStack& stack = window.document().layers()->stack;
+        const core::DepthStack& stack = window.document().depthLayers()->stack;
         auto solid = [&](int x, int y) {
             for (int dy = -4; dy <= 4; ++dy)
                 for (int dx = -4; dx <= 4; ++dx) {
@@ -294,8 +294,8 @@ TEST_F(ProjectTest, UnsavedChangesArePromptedOnCloseAndOpen) {
     EXPECT_TRUE(onDisk->mesh.textures[0].rgba == painted[0]) << "the prompt's save missed paint";
 
     // Close → Discard: the window closes, and no recovery file is left.
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return m_window->document().layers() != nullptr; }, kBuildTimeoutMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return m_window->document().depthLayers() != nullptr; },
+                                kBuildTimeoutMs));
     const auto [e, f] = pathAcross(*m_window);
     ASSERT_GT(f.x() - e.x(), 50);
     drag(*m_window, e, f);
@@ -454,8 +454,8 @@ TEST_F(ProjectTest, ExportsRunOffTheGuiThreadWithProgress) {
     ASSERT_GE(item, 0);
     combo->setCurrentIndex(item);
     emit combo->activated(item);
-    ASSERT_TRUE(
-        QTest::qWaitFor([&] { return m_window->document().layers() != nullptr; }, kBuildTimeoutMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return m_window->document().depthLayers() != nullptr; },
+                                kBuildTimeoutMs));
     const auto [a, b] = pathAcross(*m_window);
     drag(*m_window, a, b);
     const std::vector<std::vector<std::uint8_t>> painted = pagesOf(m_window->document());

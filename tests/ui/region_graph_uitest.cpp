@@ -46,7 +46,7 @@ protected:
     ui::RegionGraphPanel* panel() const { return m_window->regionGraphPanel(); }
     QGraphicsView* view() const { return panel()->graphicsView(); }
     const core::RegionGraph& graph() const {
-        return m_window->document().layers()->segmentation.graph;
+        return m_window->document().depthLayers()->segmentation.graph;
     }
 
     /** The node items (they carry their region id) that are visible in the view. */
@@ -97,11 +97,11 @@ protected:
 TEST_F(RegionGraphTest, ZoomPanFitFilterHoverAndClickOnTheEngine) {
     if (!QFileInfo::exists(enginePath()))
         GTEST_SKIP() << "assimp test models not installed: " << enginePath().toStdString();
-    QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     m_window->openFromCommandLine({enginePath()});
     ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kLoadTimeoutMs));
     QApplication::processEvents();
-    ASSERT_NE(m_window->document().layers(), nullptr);
+    ASSERT_NE(m_window->document().depthLayers(), nullptr);
     std::printf("[ graph   ] %d regions, %d connections, %zu nodes\n", panel()->regionCount(),
                 panel()->connectionCount(), panel()->layout().nodes.size());
     ASSERT_GT(panel()->regionCount(), 2000);

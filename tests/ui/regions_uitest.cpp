@@ -43,12 +43,12 @@ protected:
         WindowTest::openTrefoil();
         if (HasFatalFailure())
             return;
-        ASSERT_TRUE(viewport()->isShowingLayers());
+        ASSERT_TRUE(viewport()->isShowingDepthLayers());
         // Device pixels are logical ones here, so the layers' pixels are the widget's.
         ASSERT_EQ(viewport()->devicePixelRatioF(), 1.0);
     }
 
-    const core::LayerStack& stack() const { return document().layers()->stack; }
+    const core::DepthStack& stack() const { return document().depthLayers()->stack; }
 
     /** Layer (1-based) of the visible fragment at p, 0 for background. */
     std::uint32_t visibleLayer(QPoint p) const {
@@ -58,7 +58,7 @@ protected:
     }
     /** A pixel near the middle with at least layers fragments, and the same around it. */
     QPoint deepPixel(std::uint32_t layers) const {
-        const core::LayerStack& s = stack();
+        const core::DepthStack& s = stack();
         QPoint best(-1, -1);
         double bestDistance = 1e30;
         for (int y = 3; y < s.height - 3; ++y)
@@ -125,10 +125,11 @@ TEST_F(RegionsTest, PaintToHideRevealsWhatLiesBehindAndThePanelUnhides) {
     ASSERT_GE(p.x(), 0);
     QTest::keyClick(m_window.get(), Qt::Key_H);
     ASSERT_EQ(m_window->tool(), ui::Tool::Hide);
-    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Segmentation);
+    EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::Segmentation);
 
     const std::size_t pixel = std::size_t(p.y()) * std::size_t(stack().width) + p.x();
-    const std::uint32_t front = document().layers()->segmentation.region[stack().offsets[pixel]];
+    const std::uint32_t front =
+        document().depthLayers()->segmentation.region[stack().offsets[pixel]];
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p);
     QTest::mouseMove(viewport(), p + QPoint(2, 0));
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p + QPoint(2, 0));
@@ -143,7 +144,7 @@ TEST_F(RegionsTest, PaintToHideRevealsWhatLiesBehindAndThePanelUnhides) {
 
     // A stroke of the brush on the revealed surface never paints the hidden region.
     QTest::keyClick(m_window.get(), Qt::Key_B);
-    EXPECT_NE(viewport()->display(), render::LayerDisplay::Segmentation);
+    EXPECT_NE(viewport()->display(), render::DepthLayerDisplay::Segmentation);
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, p);
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, p);
     const core::StrokeTracker& tracker = document().strokeTracker();
@@ -152,7 +153,7 @@ TEST_F(RegionsTest, PaintToHideRevealsWhatLiesBehindAndThePanelUnhides) {
         const std::uint32_t f = stack().fragment(q, tracker.paintableLayer(q));
         ASSERT_NE(f, core::kNone);
         EXPECT_FALSE(
-            document().regionOrder().isHidden(document().layers()->segmentation.region[f]));
+            document().regionOrder().isHidden(document().depthLayers()->segmentation.region[f]));
     }
 
     // Unhide All in the panel, then undo brings the hiding back.

@@ -49,20 +49,20 @@ protected:
 
     void open() {
         QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         m_window->openFile(QStringLiteral("builtin:trefoil"));
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        ASSERT_NE(document().depthLayers(), nullptr);
         ASSERT_EQ(viewport()->devicePixelRatioF(), 1.0);
     }
 
-    const core::LayerStack& stack() const { return document().layers()->stack; }
+    const core::DepthStack& stack() const { return document().depthLayers()->stack; }
     QString path(const QString& name) const { return m_dir.filePath(name); }
 
     /** A horizontal run of pixels on the model (layer 1 everywhere), at least length long. */
     std::pair<QPoint, QPoint> run(int length, int skipRows = 0) const {
-        const core::LayerStack& s = stack();
+        const core::DepthStack& s = stack();
         int found = 0;
         for (int y = s.height / 4; y < s.height * 3 / 4; y += 7) {
             int start = -1;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Multi-layer segmentation in the GUI through real Qt event delivery: layers built when the view
-// settles, the view modes, the Layers and Region Graph panels and the threshold slider.
+// settles, the view modes, the Depth Layers and Region Graph panels and the threshold slider.
 // Needs a display with OpenGL 4.5 (run under xvfb-run; Mesa llvmpipe is enough).
 #include <gtest/gtest.h>
 
@@ -80,8 +80,8 @@ protected:
         if (HasFatalFailure())
             return;
         // Every adopted build must describe the view on screen at that moment.
-        QObject::connect(builder(), &ui::LayerBuilder::layersBuilt, [this] {
-            const core::Layers* layers = document().layers();
+        QObject::connect(builder(), &ui::DepthLayersBuilder::depthLayersBuilt, [this] {
+            const core::DepthLayers* layers = document().depthLayers();
             ASSERT_NE(layers, nullptr);
             const core::View view = viewport()->view();
             EXPECT_EQ(layers->view.view, view.view);
@@ -98,7 +98,7 @@ protected:
         WindowTest::openTrefoil();
         if (HasFatalFailure())
             return;
-        ASSERT_TRUE(viewport()->isShowingLayers());
+        ASSERT_TRUE(viewport()->isShowingDepthLayers());
     }
 
     void orbitDrag(QPoint delta) {
@@ -112,17 +112,17 @@ protected:
 
 TEST_F(SegmentationTest, BuildsLayersWhenTheViewSettles) {
     QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     m_window->openFile(QStringLiteral("builtin:trefoil"));
     ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
     // Until the view has settled the mesh renderer draws.
-    EXPECT_EQ(document().layers(), nullptr);
-    EXPECT_FALSE(viewport()->isShowingLayers());
+    EXPECT_EQ(document().depthLayers(), nullptr);
+    EXPECT_FALSE(viewport()->isShowingDepthLayers());
     EXPECT_TRUE(builder()->isBuilding());
     const QImage fromMesh = grab();
 
     ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-    const core::Layers* layers = document().layers();
+    const core::DepthLayers* layers = document().depthLayers();
     ASSERT_NE(layers, nullptr);
     EXPECT_GE(layers->stack.maxLayers(), 2u);
     EXPECT_GT(layers->segmentation.graph.regions.size(), 1u);
@@ -131,7 +131,7 @@ TEST_F(SegmentationTest, BuildsLayersWhenTheViewSettles) {
     EXPECT_GT(builder()->lastBuildMs(), 0.0);
 
     // Shaded from the layers looks like shaded from the mesh.
-    ASSERT_TRUE(viewport()->isShowingLayers());
+    ASSERT_TRUE(viewport()->isShowingDepthLayers());
     EXPECT_LT(differingFraction(fromMesh, grab()), 0.001);
 
     // The status bar and the panels report the build.
@@ -141,7 +141,7 @@ TEST_F(SegmentationTest, BuildsLayersWhenTheViewSettles) {
         QStringLiteral("Regions: %1").arg(layers->segmentation.graph.regions.size())))
         << info->text().toStdString();
     EXPECT_TRUE(info->text().contains(QStringLiteral(" ms"))) << info->text().toStdString();
-    EXPECT_EQ(m_window->layersPanel()->layerCount(), int(layers->stack.maxLayers()));
+    EXPECT_EQ(m_window->depthLayersPanel()->layerCount(), int(layers->stack.maxLayers()));
     EXPECT_EQ(graph()->regionCount(), int(layers->segmentation.graph.regions.size()));
 }
 
@@ -155,13 +155,13 @@ TEST_F(SegmentationTest, SegmentationViewThroughTheMenuShortcut) {
 
     QTest::keyClick(m_window.get(), Qt::Key_3, Qt::ControlModifier);
     EXPECT_TRUE(action->isChecked());
-    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Segmentation);
+    EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::Segmentation);
 
     const QImage map = grab();
     EXPECT_GT(differingFraction(shaded, map), 0.05);
     // The front layer's regions show in their own colours.
     const std::map<int, qint64> hues = hueHistogram(map);
-    const core::RegionGraph& regions = document().layers()->segmentation.graph;
+    const core::RegionGraph& regions = document().depthLayers()->segmentation.graph;
     std::set<int> found;
     for (const core::Region& region : regions.regions) {
         if (region.layer != 1 || region.pixels < 500)
@@ -177,7 +177,7 @@ TEST_F(SegmentationTest, SegmentationViewThroughTheMenuShortcut) {
 
     // Ctrl+1 goes back to shaded; Ctrl+4 toggles the boundary overlay.
     QTest::keyClick(m_window.get(), Qt::Key_1, Qt::ControlModifier);
-    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Composite);
+    EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::Composite);
     QTest::keyClick(m_window.get(), Qt::Key_4, Qt::ControlModifier);
     EXPECT_TRUE(viewport()->compositeOptions().boundaries);
     EXPECT_GT(differingFraction(shaded, grab()), 0.0005);
@@ -192,28 +192,28 @@ TEST_F(SegmentationTest, ThresholdSliderResegmentsWithoutCapturing) {
     auto* summary = graph()->findChild<QLabel*>(QStringLiteral("regionSummary"));
     ASSERT_NE(summary, nullptr);
     EXPECT_TRUE(summary->text().contains(QString::number(before))) << summary->text().toStdString();
-    QSignalSpy resegmented(builder(), &ui::LayerBuilder::segmentationChanged);
+    QSignalSpy resegmented(builder(), &ui::DepthLayersBuilder::segmentationChanged);
 
     // The paper's plain depth test, chosen with the keyboard.
     auto* test = m_window->findChild<QComboBox*>(QStringLiteral("connectionTest"));
     ASSERT_NE(test, nullptr);
     test->setFocus();
     QTest::keyClick(test, Qt::Key_Down);
-    EXPECT_EQ(document().layerOptions().test, core::ConnectionTest::Plain);
+    EXPECT_EQ(document().depthLayerOptions().test, core::ConnectionTest::Plain);
 
     // The smallest threshold: a plain depth test breaks the tube into many small pieces.
     auto* slider = m_window->findChild<QSlider*>(QStringLiteral("thresholdSlider"));
     ASSERT_NE(slider, nullptr);
     slider->setFocus();
     QTest::keyClick(slider, Qt::Key_Home);
-    EXPECT_NEAR(document().layerOptions().threshold, 1e-5f, 1e-9f);
+    EXPECT_NEAR(document().depthLayerOptions().threshold, 1e-5f, 1e-9f);
     auto* value = m_window->findChild<QLabel*>(QStringLiteral("thresholdValue"));
     ASSERT_NE(value, nullptr);
     EXPECT_EQ(value->text(), QStringLiteral("0.000010"));
-    ASSERT_NE(document().layers(), nullptr);
+    ASSERT_NE(document().depthLayers(), nullptr);
     const int fine = graph()->regionCount();
     EXPECT_GT(fine, 10 * before);
-    EXPECT_EQ(fine, int(document().layers()->segmentation.graph.regions.size()));
+    EXPECT_EQ(fine, int(document().depthLayers()->segmentation.graph.regions.size()));
     EXPECT_TRUE(summary->text().contains(QLocale().toString(fine)))
         << summary->text().toStdString();
 
@@ -226,54 +226,54 @@ TEST_F(SegmentationTest, ThresholdSliderResegmentsWithoutCapturing) {
         slowestMs = std::max(slowestMs, double(clock.nsecsElapsed()) / 1e6);
     }
     std::printf("slowest threshold step: %.1f ms\n", slowestMs);
-    EXPECT_GT(document().layerOptions().threshold, 1e-4f);
+    EXPECT_GT(document().depthLayerOptions().threshold, 1e-4f);
     EXPECT_LT(graph()->regionCount(), fine);
 
     // The largest threshold joins everything that touches.
     QTest::keyClick(slider, Qt::Key_End);
-    EXPECT_NEAR(document().layerOptions().threshold, 0.1f, 1e-6f);
+    EXPECT_NEAR(document().depthLayerOptions().threshold, 0.1f, 1e-6f);
     EXPECT_LE(graph()->regionCount(), before);
 
     EXPECT_GE(resegmented.size(), 4);
     EXPECT_EQ(builder()->captureCount(), captures); // no new capture
     EXPECT_FALSE(builder()->isBuilding());
-    ASSERT_NE(document().layers(), nullptr);
-    EXPECT_TRUE(viewport()->isShowingLayers());
+    ASSERT_NE(document().depthLayers(), nullptr);
+    EXPECT_TRUE(viewport()->isShowingDepthLayers());
 }
 
 TEST_F(SegmentationTest, TwoSidedCaptureRecaptures) {
     openTrefoil();
     const int captures = builder()->captureCount();
-    const std::size_t fragments = document().layers()->stack.fragmentCount();
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    const std::size_t fragments = document().depthLayers()->stack.fragmentCount();
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
 
     auto* twoSided = m_window->findChild<QCheckBox*>(QStringLiteral("twoSidedCapture"));
     ASSERT_NE(twoSided, nullptr);
     QTest::mouseClick(twoSided, Qt::LeftButton, Qt::NoModifier, QPoint(8, twoSided->height() / 2));
-    EXPECT_FALSE(document().layerOptions().cullBackFaces);
-    EXPECT_EQ(document().layers(), nullptr); // dropped at once
+    EXPECT_FALSE(document().depthLayerOptions().cullBackFaces);
+    EXPECT_EQ(document().depthLayers(), nullptr); // dropped at once
 
     ASSERT_TRUE(built.wait(kBuildTimeoutMs));
     EXPECT_EQ(builder()->captureCount(), captures + 1);
-    ASSERT_NE(document().layers(), nullptr);
-    EXPECT_FALSE(document().layers()->options.cullBackFaces);
+    ASSERT_NE(document().depthLayers(), nullptr);
+    EXPECT_FALSE(document().depthLayers()->options.cullBackFaces);
     // A closed tube seen from both sides: each pixel meets it twice as often.
-    EXPECT_GT(document().layers()->stack.fragmentCount(), fragments * 3 / 2);
+    EXPECT_GT(document().depthLayers()->stack.fragmentCount(), fragments * 3 / 2);
 }
 
 TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
     openTrefoil();
-    auto* list = m_window->layersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
+    auto* list = m_window->depthLayersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
     ASSERT_NE(list, nullptr);
-    const core::Layers& layers = *document().layers();
+    const core::DepthLayers& layers = *document().depthLayers();
     ASSERT_EQ(list->count(), int(layers.stack.maxLayers()) + 1); // "All layers" first
-    EXPECT_EQ(m_window->layersPanel()->layerCount(), int(layers.stack.maxLayers()));
+    EXPECT_EQ(m_window->depthLayersPanel()->layerCount(), int(layers.stack.maxLayers()));
     const QImage all = grab();
 
     QListWidgetItem* second = list->item(2);
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
                       list->visualItemRect(second).center());
-    EXPECT_EQ(viewport()->display(), render::LayerDisplay::SingleLayer);
+    EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::SingleLayer);
     EXPECT_EQ(viewport()->displayLayer(), 2u);
     auto* action = m_window->findChild<QAction*>(QStringLiteral("actionDisplaySingleLayer"));
     ASSERT_NE(action, nullptr);
@@ -306,7 +306,7 @@ TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
     // "All layers" goes back.
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
                       list->visualItemRect(list->item(0)).center());
-    EXPECT_EQ(viewport()->display(), render::LayerDisplay::Composite);
+    EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::Composite);
     EXPECT_LT(differingFraction(all, grab()), 0.001);
 }
 
@@ -322,7 +322,8 @@ TEST_F(SegmentationTest, HoveringAGraphNodeHighlightsItsRegion) {
         if (!item->data(0).isValid())
             continue;
         const auto id = std::uint32_t(item->data(0).toUInt());
-        const std::uint32_t pixels = document().layers()->segmentation.graph.regions[id].pixels;
+        const std::uint32_t pixels =
+            document().depthLayers()->segmentation.graph.regions[id].pixels;
         if (pixels > largest) {
             largest = pixels;
             node = item;
@@ -359,16 +360,16 @@ TEST_F(SegmentationTest, HoveringAGraphNodeHighlightsItsRegion) {
 TEST_F(SegmentationTest, CameraChangeDropsTheLayersAndRebuildsAfterSettling) {
     openTrefoil();
     const int captures = builder()->captureCount();
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
-    QSignalSpy cleared(builder(), &ui::LayerBuilder::layersCleared);
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
+    QSignalSpy cleared(builder(), &ui::DepthLayersBuilder::depthLayersCleared);
     const std::uint64_t serial = viewport()->viewSerial();
 
     const QPoint start = viewport()->rect().center();
     QTest::mousePress(viewport(), Qt::MiddleButton, Qt::NoModifier, start);
     QTest::mouseMove(viewport(), start + QPoint(20, 0));
     // Dropped at the first move: painting never sees layers of another view.
-    EXPECT_EQ(document().layers(), nullptr);
-    EXPECT_FALSE(viewport()->isShowingLayers());
+    EXPECT_EQ(document().depthLayers(), nullptr);
+    EXPECT_FALSE(viewport()->isShowingDepthLayers());
     EXPECT_EQ(cleared.size(), 1);
     EXPECT_GT(viewport()->viewSerial(), serial);
     EXPECT_TRUE(builder()->isBuilding());
@@ -382,14 +383,14 @@ TEST_F(SegmentationTest, CameraChangeDropsTheLayersAndRebuildsAfterSettling) {
 
     ASSERT_TRUE(built.wait(kBuildTimeoutMs));
     EXPECT_EQ(builder()->captureCount(), captures + 1);
-    ASSERT_NE(document().layers(), nullptr);
-    EXPECT_TRUE(viewport()->isShowingLayers());
+    ASSERT_NE(document().depthLayers(), nullptr);
+    EXPECT_TRUE(viewport()->isShowingDepthLayers());
     EXPECT_FALSE(builder()->isBuilding());
 }
 
 TEST_F(SegmentationTest, ResultOfAViewThatMovedOnIsDropped) {
     openTrefoil();
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     // Orbit, then wait for the capture (the worker then finishes it for ~50 ms) and zoom at once.
     orbitDrag(QPoint(60, 0));
     const int captures = builder()->captureCount();
@@ -479,20 +480,20 @@ TEST_F(SegmentationTest, ConnectivityEngineChoiceGivesTheSameRegions) {
     openTrefoil();
     // On a software renderer Automatic means the C++ path.
     EXPECT_EQ(viewport()->connectivityBackend(), render::ConnectivityBackend::Cpu);
-    const std::vector<std::uint8_t> cpuLinks = document().layers()->connectivity.links;
-    const std::size_t cpuRegions = document().layers()->segmentation.graph.regions.size();
+    const std::vector<std::uint8_t> cpuLinks = document().depthLayers()->connectivity.links;
+    const std::size_t cpuRegions = document().depthLayers()->segmentation.graph.regions.size();
 
     auto* choice = m_window->findChild<QComboBox*>(QStringLiteral("connectivityBackend"));
     ASSERT_NE(choice, nullptr);
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     choice->setFocus();
     QTest::keyClick(choice, Qt::Key_End); // "Compute shader (graphics card)"
     EXPECT_EQ(choice->currentIndex(), 2);
     ASSERT_TRUE(built.wait(kBuildTimeoutMs));
-    ASSERT_NE(document().layers(), nullptr);
+    ASSERT_NE(document().depthLayers(), nullptr);
     EXPECT_EQ(viewport()->connectivityBackend(), render::ConnectivityBackend::Gpu);
-    EXPECT_EQ(document().layers()->connectivity.links, cpuLinks);
-    EXPECT_EQ(document().layers()->segmentation.graph.regions.size(), cpuRegions);
+    EXPECT_EQ(document().depthLayers()->connectivity.links, cpuLinks);
+    EXPECT_EQ(document().depthLayers()->segmentation.graph.regions.size(), cpuRegions);
     EXPECT_EQ(QSettings().value(QStringLiteral("layers/connectivity")).toString(),
               QStringLiteral("gpu"));
 }

@@ -37,16 +37,16 @@ TEST(SingleLayerTest, AStrokeInTheLayerTwoViewPaintsLayerTwoNotTheFrontStrand) {
     core::Document& doc = window->document();
     {
         QSignalSpy loaded(window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         window->openFile(QStringLiteral("builtin:trefoil"));
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
     }
-    ASSERT_NE(doc.layers(), nullptr);
+    ASSERT_NE(doc.depthLayers(), nullptr);
     ASSERT_EQ(viewport->devicePixelRatioF(), 1.0);
 
-    // Layer 2 alone, chosen with a click in the Layers panel.
-    auto* list = window->layersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
+    // Layer 2 alone, chosen with a click in the Depth Layers panel.
+    auto* list = window->depthLayersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
     ASSERT_NE(list, nullptr);
     QListWidgetItem* second = nullptr;
     for (int row = 0; row < list->count(); ++row)
@@ -55,12 +55,12 @@ TEST(SingleLayerTest, AStrokeInTheLayerTwoViewPaintsLayerTwoNotTheFrontStrand) {
     ASSERT_NE(second, nullptr);
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
                       list->visualItemRect(second).center());
-    ASSERT_EQ(viewport->display(), render::LayerDisplay::SingleLayer);
+    ASSERT_EQ(viewport->display(), render::DepthLayerDisplay::SingleLayer);
     ASSERT_EQ(viewport->displayLayer(), 2u);
     EXPECT_EQ(doc.shownLayer(), 2u);
 
     // A crossing: the front strand on layer 1 well in front of the strand on layer 2.
-    const core::LayerStack& stack = doc.layers()->stack;
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     const auto index = [&](int x, int y) {
         return std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
     };

@@ -75,7 +75,7 @@ protected:
 
     /** Distinct triangles with a fragment in the document's depth layers. */
     std::size_t capturedTriangles() const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         const std::set<std::uint32_t> triangles(stack.triangle.begin(), stack.triangle.end());
         return triangles.size();
     }
@@ -107,7 +107,7 @@ TEST_F(StandInTest, OrbitDrawsTheStandInAndTheSettledViewTheFullMesh) {
     QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, *start + QPoint(40, 10));
     // Settled, before the new layers are there: the full mesh, from the same camera.
     const QImage settled = grab();
-    ASSERT_FALSE(viewport()->isShowingLayers());
+    ASSERT_FALSE(viewport()->isShowingDepthLayers());
     EXPECT_EQ(viewport()->lastFrameTriangles(), full);
     // The stand-in looked like the model: a few pixels along the outline differ, not the shape
     // or its colours.
@@ -131,7 +131,7 @@ TEST_F(StandInTest, WheelDrawsTheStandInUntilItRests) {
     ASSERT_TRUE(QTest::qWaitFor([&] { return !viewport()->isCameraMoving(); }, kBuildTimeoutMs));
     grab();
     // The full mesh, or already the layers of the settled view.
-    if (!viewport()->isShowingLayers()) {
+    if (!viewport()->isShowingDepthLayers()) {
         EXPECT_EQ(viewport()->lastFrameTriangles(), fullTriangles());
     }
 }
@@ -142,7 +142,7 @@ TEST_F(StandInTest, PaintingAfterAnOrbitUsesTheFullMesh) {
         return;
     const std::optional<QPoint> start = solidPixel();
     ASSERT_TRUE(start.has_value());
-    QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     QTest::mousePress(viewport(), Qt::MiddleButton, Qt::NoModifier, *start);
     for (int i = 1; i <= 4; ++i) {
         QTest::mouseMove(viewport(), *start + QPoint(6 * i, 0));
@@ -151,7 +151,7 @@ TEST_F(StandInTest, PaintingAfterAnOrbitUsesTheFullMesh) {
     }
     QTest::mouseRelease(viewport(), Qt::MiddleButton, Qt::NoModifier, *start + QPoint(24, 0));
     ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-    ASSERT_NE(document().layers(), nullptr);
+    ASSERT_NE(document().depthLayers(), nullptr);
     // Captured from the full mesh: far more triangles than the stand-in has.
     EXPECT_GT(capturedTriangles(), kStandInTriangles);
 
@@ -193,8 +193,8 @@ TEST_F(StandInTest, TheStandInShowsThePaintLayersAndMaterialAsTheSettledView) {
     QTest::mouseClick(fillButton, Qt::LeftButton);
     const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
     ASSERT_NE(target, nullptr);
-    ASSERT_EQ(target->layerStack().size(), 1u);
-    ASSERT_TRUE(target->layerStack().layer(0).settings.fill.metallic.has_value());
+    ASSERT_EQ(target->paintLayerStack().size(), 1u);
+    ASSERT_TRUE(target->paintLayerStack().layer(0).settings.fill.metallic.has_value());
     const QImage filled = grab();
     const QRgb background = filled.pixel(2, 2);
     // The gold metal changes the picture far more than the stand-in may.
@@ -207,7 +207,7 @@ TEST_F(StandInTest, TheStandInShowsThePaintLayersAndMaterialAsTheSettledView) {
           render::MaterialChannel::Roughness, render::MaterialChannel::Metallic}) {
         SCOPED_TRACE(int(channel));
         viewport()->setChannel(channel);
-        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         // An orbit: the last frame while the mouse is down is the stand-in's.
         QTest::mousePress(viewport(), Qt::MiddleButton, Qt::NoModifier, *start);
         QImage moving;
@@ -221,7 +221,7 @@ TEST_F(StandInTest, TheStandInShowsThePaintLayersAndMaterialAsTheSettledView) {
         // Settled: the depth layers of the same camera, composited.
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
         ASSERT_TRUE(
-            QTest::qWaitFor([&] { return viewport()->isShowingLayers(); }, kBuildTimeoutMs));
+            QTest::qWaitFor([&] { return viewport()->isShowingDepthLayers(); }, kBuildTimeoutMs));
         const QImage settled = grab();
         ASSERT_EQ(viewport()->lastFrameTriangles(), 0u) << "not the composite";
         if (channel == render::MaterialChannel::Material) {

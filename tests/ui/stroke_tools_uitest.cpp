@@ -55,7 +55,7 @@ protected:
 
     /** Whether pixel p and its (2 margin + 1)² neighbourhood all show the model. */
     bool solid(QPoint p, int margin) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int dy = -margin; dy <= margin; ++dy)
             for (int dx = -margin; dx <= margin; ++dx) {
                 const int x = p.x() + dx, y = p.y() + dy;
@@ -69,7 +69,7 @@ protected:
     }
     /** A horizontal run over the model, at least minLength long, clear by margin on all sides. */
     std::pair<QPoint, QPoint> runAcrossTheKnot(int minLength, int margin) const {
-        const core::LayerStack& stack = document().layers()->stack;
+        const core::DepthStack& stack = document().depthLayers()->stack;
         for (int k = 0; k < stack.height / 2; k += 5) {
             for (int y : {stack.height / 2 - k, stack.height / 2 + k}) {
                 int start = -1;
@@ -281,7 +281,7 @@ TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {
     // chiral, though: where its mirror image passes behind a crossing, the copy paints a side
     // this view does not show. So the mirror image is checked where the knot shows there at the
     // stroke's depth, on the run (over the knot on both sides) that has the most such columns.
-    const core::LayerStack& stack = document().layers()->stack;
+    const core::DepthStack& stack = document().depthLayers()->stack;
     const int w = stack.width;
     const auto frontDepth = [&](int x, int y) {
         return stack.depth[stack.offsets[std::size_t(y) * std::size_t(w) + std::size_t(x)]];
@@ -333,10 +333,10 @@ TEST_F(StrokeToolsTest, ASymmetricStabilizedDragPaintsTheMirroredSide) {
     // Mirror X in the Brush panel: its views are built in the background, not on this thread.
     auto* mirrorX = m_window->findChild<QCheckBox*>(QStringLiteral("brushPanelSymmetryMirrorX"));
     ASSERT_NE(mirrorX, nullptr);
-    QSignalSpy finished(m_window->layerBuilder(), &ui::LayerBuilder::symmetryFinished);
+    QSignalSpy finished(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::symmetryFinished);
     mirrorX->setChecked(true);
     ASSERT_TRUE(document().brush().symmetry.mirrorX);
-    EXPECT_TRUE(m_window->layerBuilder()->isBuildingSymmetry());
+    EXPECT_TRUE(m_window->depthLayersBuilder()->isBuildingSymmetry());
     EXPECT_FALSE(document().symmetryReady()) << "nothing captured on the GUI thread";
     ASSERT_TRUE(finished.wait(60000));
     EXPECT_TRUE(document().symmetryReady());

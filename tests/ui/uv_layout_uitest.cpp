@@ -60,7 +60,7 @@ protected:
 
 TEST_F(UvLayoutUiTest, ModelWithoutUvsGetsAnAutomaticLayoutAndTheChoiceIsUndoable) {
     QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-    QSignalSpy built(m_window->layerBuilder(), &ui::LayerBuilder::layersBuilt);
+    QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
     m_window->openFile(m_dir.filePath(QStringLiteral("box.obj")));
     ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
 
@@ -85,7 +85,8 @@ TEST_F(UvLayoutUiTest, ModelWithoutUvsGetsAnAutomaticLayoutAndTheChoiceIsUndoabl
     EXPECT_TRUE(combo->currentText().contains(QStringLiteral("automatic UVs")));
 
     // A real drag paints the layout's texture.
-    ASSERT_TRUE(QTest::qWaitFor([&] { return document().layers() != nullptr; }, kBuildTimeoutMs));
+    ASSERT_TRUE(
+        QTest::qWaitFor([&] { return document().depthLayers() != nullptr; }, kBuildTimeoutMs));
     const std::vector<std::uint8_t> before = texture()->page(0).rgba;
     const QPoint centre = viewport()->rect().center();
     QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, centre - QPoint(40, 0));

@@ -54,7 +54,7 @@ protected:
     }
 
     ui::Viewport* viewport() const { return m_window->viewport(); }
-    ui::LayerBuilder* builder() const { return m_window->layerBuilder(); }
+    ui::DepthLayersBuilder* builder() const { return m_window->depthLayersBuilder(); }
     core::Document& document() const { return m_window->document(); }
     QUndoStack* undoStack() const { return m_window->undoStack(); }
     QImage grab() const { return viewport()->grabFramebuffer(); }
@@ -62,11 +62,11 @@ protected:
     /** Opens the built-in trefoil and waits until its depth layers are built. */
     void openTrefoil() {
         QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
-        QSignalSpy built(builder(), &ui::LayerBuilder::layersBuilt);
+        QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
         m_window->openFile(QStringLiteral("builtin:trefoil"));
         ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
         ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
-        ASSERT_NE(document().layers(), nullptr);
+        ASSERT_NE(document().depthLayers(), nullptr);
     }
 
     /**
@@ -74,7 +74,7 @@ protected:
      * the model; nothing when none does.
      */
     std::optional<QPoint> solidPixel() {
-        const core::LayerStack& layers = document().layers()->stack;
+        const core::DepthStack& layers = document().depthLayers()->stack;
         const auto covered = [&](int x, int y) {
             if (x < 0 || y < 0 || x >= layers.width || y >= layers.height)
                 return false;

@@ -34,7 +34,7 @@ QRgb toRgb(const glm::vec4& c) {
 }
 } // namespace
 
-LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
+DepthLayersPanel::DepthLayersPanel(QWidget* parent) : QWidget(parent) {
     m_hint = new QLabel(tr("Depth layers appear when the view stays still."), this);
     m_hint->setObjectName(QStringLiteral("layersHint"));
     m_hint->setWordWrap(true);
@@ -69,7 +69,7 @@ LayersPanel::LayersPanel(QWidget* parent) : QWidget(parent) {
     m_list->setVisible(false);
 }
 
-void LayersPanel::setLayers(const core::Layers* layers) {
+void DepthLayersPanel::setDepthLayers(const core::DepthLayers* layers) {
     if (!layers) {
         m_list->setEnabled(false);
         return;
@@ -77,7 +77,7 @@ void LayersPanel::setLayers(const core::Layers* layers) {
     rebuild(*layers);
 }
 
-void LayersPanel::setThumbnailStyle(ThumbnailStyle style, const core::Layers* layers) {
+void DepthLayersPanel::setThumbnailStyle(ThumbnailStyle style, const core::DepthLayers* layers) {
     if (m_style == style)
         return;
     m_style = style;
@@ -85,7 +85,7 @@ void LayersPanel::setThumbnailStyle(ThumbnailStyle style, const core::Layers* la
         rebuild(*layers);
 }
 
-void LayersPanel::setCurrentLayer(std::uint32_t layer) {
+void DepthLayersPanel::setCurrentLayer(std::uint32_t layer) {
     m_updating = true;
     for (int row = 0; row < m_list->count(); ++row) {
         if (m_list->item(row)->data(kLayerRole).toUInt() == layer) {
@@ -96,16 +96,16 @@ void LayersPanel::setCurrentLayer(std::uint32_t layer) {
     m_updating = false;
 }
 
-std::uint32_t LayersPanel::currentLayer() const {
+std::uint32_t DepthLayersPanel::currentLayer() const {
     const QListWidgetItem* item = m_list->currentItem();
     return item ? std::uint32_t(item->data(kLayerRole).toUInt()) : 0;
 }
 
-int LayersPanel::layerCount() const {
+int DepthLayersPanel::layerCount() const {
     return std::max(0, m_list->count() - 1);
 }
 
-void LayersPanel::rebuild(const core::Layers& layers) {
+void DepthLayersPanel::rebuild(const core::DepthLayers& layers) {
     const std::uint32_t current = currentLayer();
     const std::vector<std::uint32_t> fragments = layers.stack.fragmentsPerLayer();
     std::vector<std::uint32_t> regions(fragments.size(), 0);
@@ -159,9 +159,9 @@ void LayersPanel::rebuild(const core::Layers& layers) {
     m_hint->setVisible(false);
 }
 
-QImage LayersPanel::thumbnail(const core::Layers& layers, std::uint32_t layer, QSize size,
-                              ThumbnailStyle style) {
-    const core::LayerStack& stack = layers.stack;
+QImage DepthLayersPanel::thumbnail(const core::DepthLayers& layers, std::uint32_t layer, QSize size,
+                                   ThumbnailStyle style) {
+    const core::DepthStack& stack = layers.stack;
     if (stack.width <= 0 || stack.height <= 0 || size.isEmpty())
         return {};
     // The view's aspect ratio inside size.

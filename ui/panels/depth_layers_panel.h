@@ -11,31 +11,31 @@ class QLabel;
 class QListWidget;
 
 namespace core {
-struct Layers;
+struct DepthLayers;
 }
 
 namespace ui {
 
 /**
- * The Layers panel: an "All layers" row, then one row per depth layer with a thumbnail and its
- * fragment and region counts. Choosing a row asks for that layer alone (layerActivated()).
+ * The Depth Layers panel: an "All layers" row, then one row per depth layer with a thumbnail and
+ * its fragment and region counts. Choosing a row asks for that layer alone (layerActivated()).
  */
-class LayersPanel : public QWidget {
+class DepthLayersPanel : public QWidget {
     Q_OBJECT
 
 public:
     /** What the thumbnails show: the shaded layer, or its regions in their map colours. */
     enum class ThumbnailStyle { Shaded, Regions };
 
-    explicit LayersPanel(QWidget* parent = nullptr);
+    explicit DepthLayersPanel(QWidget* parent = nullptr);
 
     /**
      * Shows the rows of layers. nullptr means the layers are out of date (the view moves): the
      * old rows stay, greyed out, until the next call.
      */
-    void setLayers(const core::Layers* layers);
+    void setDepthLayers(const core::DepthLayers* layers);
     /** Changes the thumbnails' style, redrawing them from layers (may be null). */
-    void setThumbnailStyle(ThumbnailStyle style, const core::Layers* layers);
+    void setThumbnailStyle(ThumbnailStyle style, const core::DepthLayers* layers);
     ThumbnailStyle thumbnailStyle() const { return m_style; }
     /** Selects the row of a layer (1-based; 0 = all layers) without emitting layerActivated(). */
     void setCurrentLayer(std::uint32_t layer);
@@ -48,7 +48,7 @@ public:
      * A thumbnail of one layer (1-based) of at most size, with the view's aspect ratio; pixels
      * without a fragment on that layer show the viewport's background.
      */
-    static QImage thumbnail(const core::Layers& layers, std::uint32_t layer, QSize size,
+    static QImage thumbnail(const core::DepthLayers& layers, std::uint32_t layer, QSize size,
                             ThumbnailStyle style);
 
 signals:
@@ -56,7 +56,7 @@ signals:
     void layerActivated(std::uint32_t layer);
 
 private:
-    void rebuild(const core::Layers& layers);
+    void rebuild(const core::DepthLayers& layers);
 
     QLabel* m_hint = nullptr;
     QListWidget* m_list = nullptr;

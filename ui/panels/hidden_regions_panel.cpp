@@ -60,7 +60,8 @@ HiddenRegionsPanel::HiddenRegionsPanel(QWidget* parent) : QWidget(parent) {
     updateButtons();
 }
 
-void HiddenRegionsPanel::setRegions(const core::Layers* layers, const core::RegionOrder& order) {
+void HiddenRegionsPanel::setRegions(const core::DepthLayers* layers,
+                                    const core::RegionOrder& order) {
     m_list->clear();
     if (layers) {
         const std::vector<core::Region>& regions = layers->segmentation.graph.regions;

@@ -10,7 +10,7 @@ class QListWidget;
 class QPushButton;
 
 namespace core {
-struct Layers;
+struct DepthLayers;
 class RegionOrder;
 } // namespace core
 
@@ -27,7 +27,7 @@ public:
     explicit HiddenRegionsPanel(QWidget* parent = nullptr);
 
     /** Lists order's hidden regions (layers may be null: nothing is hidden then). */
-    void setRegions(const core::Layers* layers, const core::RegionOrder& order);
+    void setRegions(const core::DepthLayers* layers, const core::RegionOrder& order);
     /** The listed region ids, in list order. */
     std::vector<std::uint32_t> regions() const;
 

@@ -170,7 +170,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     connect(m_opacity, &QSlider::valueChanged, this, [this](int value) {
         m_opacityText->setText(tr("%1 %").arg(value));
         if (!m_updating)
-            editSettings(selectedLayer(), [value](core::PaintLayerSettings& settings) {
+            editSettings(selectedPaintLayer(), [value](core::PaintLayerSettings& settings) {
                 settings.opacity = float(value) / 100.0f;
             });
     });
@@ -184,7 +184,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         if (m_updating || index < 0)
             return;
         const auto mode = core::BlendMode(m_blend->itemData(index).toInt());
-        editSettings(selectedLayer(),
+        editSettings(selectedPaintLayer(),
                      [mode](core::PaintLayerSettings& settings) { settings.blend = mode; });
     });
     m_lock = new QCheckBox(tr("Lock &transparency"), m_controls);
@@ -194,7 +194,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     form->addRow(m_lock);
     connect(m_lock, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_updating)
-            editSettings(selectedLayer(), [on](core::PaintLayerSettings& settings) {
+            editSettings(selectedPaintLayer(), [on](core::PaintLayerSettings& settings) {
                 settings.lockTransparency = on;
             });
     });
@@ -220,7 +220,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         if (m_updating)
             return;
         const QColor shown = m_fillColorValue;
-        editSettings(selectedLayer(), [on, shown](core::PaintLayerSettings& settings) {
+        editSettings(selectedPaintLayer(), [on, shown](core::PaintLayerSettings& settings) {
             settings.fill.baseColor.reset();
             if (on)
                 settings.fill.baseColor =
@@ -232,7 +232,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         dialog->setObjectName(QStringLiteral("paintLayerFillColorDialog"));
         dialog->setWindowTitle(tr("Fill Layer Colour"));
         dialog->setAttribute(Qt::WA_DeleteOnClose);
-        const std::uint64_t id = selectedLayer();
+        const std::uint64_t id = selectedPaintLayer();
         connect(dialog, &QColorDialog::colorSelected, this, [this, id](const QColor& color) {
             editSettings(id, [color](core::PaintLayerSettings& settings) {
                 settings.fill.baseColor =
@@ -250,7 +250,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         connect(spin, &QSpinBox::valueChanged, this, [this, set](int value) {
             if (m_updating)
                 return;
-            editSettings(selectedLayer(), [value, set](core::PaintLayerSettings& settings) {
+            editSettings(selectedPaintLayer(), [value, set](core::PaintLayerSettings& settings) {
                 set(settings.fill, value < 0 ? std::optional<float>()
                                              : std::optional<float>(float(value) / 100.0f));
             });
@@ -313,21 +313,21 @@ void PaintLayersPanel::createActions() {
                        tr("Copy the current paint layer"), QKeySequence(Qt::CTRL | Qt::Key_J));
     connect(m_duplicate, &QAction::triggered, this, [this] {
         core::PaintChanges changes;
-        const auto copy = m_document.duplicatePaintLayer(selectedLayer(), changes);
+        const auto copy = m_document.duplicatePaintLayer(selectedPaintLayer(), changes);
         finish(copy ? core::Status{} : core::Status{core::Error{copy.error()}}, changes);
     });
     m_delete = make(tr("D&elete Paint Layer"), tr("Delete"),
                     QStringLiteral("actionDeletePaintLayer"), tr("Delete the current paint layer"));
     connect(m_delete, &QAction::triggered, this, [this] {
         core::PaintChanges changes;
-        finish(m_document.deletePaintLayer(selectedLayer(), changes), changes);
+        finish(m_document.deletePaintLayer(selectedPaintLayer(), changes), changes);
     });
     m_mergeDown = make(tr("&Merge Down"), tr("Merge"), QStringLiteral("actionMergePaintLayerDown"),
                        tr("Merge the current paint layer into the one below"),
                        QKeySequence(Qt::CTRL | Qt::Key_E));
     connect(m_mergeDown, &QAction::triggered, this, [this] {
         core::PaintChanges changes;
-        finish(m_document.mergePaintLayerDown(selectedLayer(), changes), changes);
+        finish(m_document.mergePaintLayerDown(selectedPaintLayer(), changes), changes);
     });
     m_flatten =
         make(tr("&Flatten Paint Layers"), tr("Flatten"), QStringLiteral("actionFlattenPaintLayers"),
@@ -340,19 +340,19 @@ void PaintLayersPanel::createActions() {
                      tr("Give the current paint layer a mask (black hides, white shows)"));
     connect(m_addMask, &QAction::triggered, this, [this] {
         core::PaintChanges changes;
-        finish(m_document.addPaintLayerMask(selectedLayer(), changes), changes);
+        finish(m_document.addPaintLayerMask(selectedPaintLayer(), changes), changes);
     });
     m_deleteMask =
         make(tr("Delete Mas&k"), tr("No Mask"), QStringLiteral("actionDeletePaintLayerMask"),
              tr("Remove the current paint layer's mask"));
     connect(m_deleteMask, &QAction::triggered, this, [this] {
         core::PaintChanges changes;
-        finish(m_document.deletePaintLayerMask(selectedLayer(), changes), changes);
+        finish(m_document.deletePaintLayerMask(selectedPaintLayer(), changes), changes);
     });
     m_rename = new QAction(tr("&Rename…"), this);
     m_rename->setObjectName(QStringLiteral("actionRenamePaintLayer"));
     connect(m_rename, &QAction::triggered, this, [this] {
-        if (QTreeWidgetItem* item = rowOf(selectedLayer()); item && selectedLayer() != 0)
+        if (QTreeWidgetItem* item = rowOf(selectedPaintLayer()); item && selectedPaintLayer() != 0)
             m_list->editItem(item, NameColumn);
     });
 }
@@ -377,7 +377,7 @@ QString PaintLayersPanel::disabledReason() const {
     return {};
 }
 
-std::uint64_t PaintLayersPanel::selectedLayer() const {
+std::uint64_t PaintLayersPanel::selectedPaintLayer() const {
     const core::TextureTarget* texture = target();
     return texture ? texture->selection().layer : 0;
 }
@@ -403,7 +403,7 @@ void PaintLayersPanel::refresh() {
     const core::PaintSelection selection = texture ? texture->selection() : core::PaintSelection{};
     if (reason.isEmpty()) {
         if (texture) {
-            const core::PaintLayerStack& stack = texture->layerStack();
+            const core::PaintLayerStack& stack = texture->paintLayerStack();
             for (std::size_t i = stack.size(); i-- > 0;) {
                 const core::PaintLayer& layer = stack.layer(i);
                 auto* item = new QTreeWidgetItem(m_list);
@@ -446,8 +446,9 @@ void PaintLayersPanel::refresh() {
         base->setToolTip(NameColumn, tr("The model's own surface (painting here changes it "
                                         "directly)"));
         if (texture)
-            base->setIcon(ThumbnailColumn, QIcon(QPixmap::fromImage(
-                                               baseThumbnail(texture->layerStack(), kThumbnail))));
+            base->setIcon(
+                ThumbnailColumn,
+                QIcon(QPixmap::fromImage(baseThumbnail(texture->paintLayerStack(), kThumbnail))));
         if (QTreeWidgetItem* current = rowOf(selection.layer))
             m_list->setCurrentItem(current);
     }
@@ -461,7 +462,7 @@ void PaintLayersPanel::updateControls() {
     const core::PaintLayer* layer = nullptr;
     std::size_t index = 0, count = 0;
     if (texture) {
-        const core::PaintLayerStack& stack = texture->layerStack();
+        const core::PaintLayerStack& stack = texture->paintLayerStack();
         count = stack.size();
         if (const auto at = stack.indexOf(texture->selection().layer)) {
             index = *at;
@@ -476,7 +477,7 @@ void PaintLayersPanel::updateControls() {
     m_lock->setChecked(settings.lockTransparency);
     // A fill layer's values, shown only for one.
     const bool fill = layer != nullptr && settings.kind == core::PaintLayerKind::Fill;
-    const bool material = fill && texture->layerStack().hasMaterialChannels();
+    const bool material = fill && texture->paintLayerStack().hasMaterialChannels();
     m_form->setRowVisible(m_fillColorRow, fill);
     m_form->setRowVisible(m_fillRoughness, material);
     m_form->setRowVisible(m_fillMetallic, material);
@@ -555,8 +556,8 @@ void PaintLayersPanel::onItemClicked(QTreeWidgetItem* item, int column) {
     const core::TextureTarget* texture = target();
     const core::PaintLayer* layer = nullptr;
     if (texture && id != 0)
-        if (const auto index = texture->layerStack().indexOf(id))
-            layer = &texture->layerStack().layer(*index);
+        if (const auto index = texture->paintLayerStack().indexOf(id))
+            layer = &texture->paintLayerStack().layer(*index);
     if (layer && column == EyeColumn) {
         const bool visible = !layer->settings.visible;
         editSettings(id,
@@ -587,10 +588,10 @@ template <typename Edit> void PaintLayersPanel::editSettings(std::uint64_t id, E
     const core::TextureTarget* texture = target();
     if (!texture || id == 0)
         return;
-    const auto index = texture->layerStack().indexOf(id);
+    const auto index = texture->paintLayerStack().indexOf(id);
     if (!index)
         return;
-    core::PaintLayerSettings settings = texture->layerStack().layer(*index).settings;
+    core::PaintLayerSettings settings = texture->paintLayerStack().layer(*index).settings;
     edit(settings);
     core::PaintChanges changes;
     finish(m_document.setPaintLayerSettings(id, std::move(settings), changes), changes);
@@ -600,7 +601,7 @@ void PaintLayersPanel::moveToRow(std::uint64_t id, int row) {
     const core::TextureTarget* texture = target();
     if (!texture)
         return;
-    const int count = int(texture->layerStack().size());
+    const int count = int(texture->paintLayerStack().size());
     if (count == 0)
         return;
     row = std::clamp(row, 0, count - 1);
@@ -613,7 +614,7 @@ void PaintLayersPanel::showContextMenu(const QPoint& position) {
         return;
     if (QTreeWidgetItem* item = m_list->itemAt(position)) {
         const std::uint64_t id = item->data(0, kIdRole).toULongLong();
-        if (id != selectedLayer())
+        if (id != selectedPaintLayer())
             select(id, false);
     }
     QMenu menu(this);

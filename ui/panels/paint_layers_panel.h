@@ -80,7 +80,7 @@ private:
     /** The target's stack, or nullptr (no model, vertex colours, or no target made yet). */
     const core::TextureTarget* target() const;
     /** The selected layer's id (0: Base). */
-    std::uint64_t selectedLayer() const;
+    std::uint64_t selectedPaintLayer() const;
     /** Reports an operation's result: changed() when it worked, message() when not. */
     void finish(const core::Status& status, const core::PaintChanges& changes);
     void addLayer(bool fill);

@@ -223,7 +223,7 @@ RegionGraphPanel::RegionGraphPanel(QWidget* parent)
 
 RegionGraphPanel::~RegionGraphPanel() = default;
 
-void RegionGraphPanel::setLayers(const core::Layers* layers) {
+void RegionGraphPanel::setDepthLayers(const core::DepthLayers* layers) {
     if (!layers) {
         setStale(true);
         return;

@@ -20,7 +20,7 @@ class QSpinBox;
 class QToolButton;
 
 namespace core {
-struct Layers;
+struct DepthLayers;
 }
 
 namespace ui {
@@ -53,7 +53,7 @@ public:
      * Shows the region graph of layers. nullptr means it is out of date (the view moves): the
      * old graph stays, dimmed and inert, until the next call.
      */
-    void setLayers(const core::Layers* layers);
+    void setDepthLayers(const core::DepthLayers* layers);
 
     /** Regions and connections of the graph (all of them, shown, merged or filtered out). */
     int regionCount() const { return m_regionCount; }

@@ -50,7 +50,7 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
     reset->setObjectName(QStringLiteral("thresholdReset"));
     reset->setText(tr("Reset"));
     reset->setToolTip(tr("Back to the default threshold (%1)")
-                          .arg(formatThreshold(core::LayerOptions{}.threshold)));
+                          .arg(formatThreshold(core::DepthLayerOptions{}.threshold)));
     reset->setAutoRaise(true);
 
     auto* thresholdRow = new QHBoxLayout;
@@ -105,8 +105,9 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
         updateLabels();
         emit optionsChanged(m_options);
     });
-    connect(reset, &QToolButton::clicked, this,
-            [this] { m_threshold->setValue(sliderPositionFor(core::LayerOptions{}.threshold)); });
+    connect(reset, &QToolButton::clicked, this, [this] {
+        m_threshold->setValue(sliderPositionFor(core::DepthLayerOptions{}.threshold));
+    });
     connect(m_test, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (m_updating || index < 0)
             return;
@@ -123,7 +124,7 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
     setOptions(m_options);
 }
 
-void SegmentationControls::setOptions(const core::LayerOptions& options) {
+void SegmentationControls::setOptions(const core::DepthLayerOptions& options) {
     m_updating = true;
     m_options = options;
     m_threshold->setValue(sliderPositionFor(options.threshold));

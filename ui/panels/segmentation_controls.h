@@ -29,8 +29,8 @@ public:
     explicit SegmentationControls(QWidget* parent = nullptr);
 
     /** Shows options without emitting optionsChanged(). */
-    void setOptions(const core::LayerOptions& options);
-    core::LayerOptions options() const { return m_options; }
+    void setOptions(const core::DepthLayerOptions& options);
+    core::DepthLayerOptions options() const { return m_options; }
 
     static float thresholdAt(int sliderPosition);
     static int sliderPositionFor(float threshold);
@@ -43,7 +43,7 @@ public:
     void setConnectivityInUse(const QString& name);
 
 signals:
-    void optionsChanged(const core::LayerOptions& options);
+    void optionsChanged(const core::DepthLayerOptions& options);
     void connectivityBackendChanged(int backend);
 
 protected:
@@ -52,7 +52,7 @@ protected:
 private:
     void updateLabels();
 
-    core::LayerOptions m_options;
+    core::DepthLayerOptions m_options;
     QSlider* m_threshold = nullptr;
     QLabel* m_thresholdValue = nullptr;
     QComboBox* m_test = nullptr;

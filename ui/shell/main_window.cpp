@@ -75,7 +75,7 @@ MainWindow::MainWindow(QWidget* parent)
     {
         // The last session's segmentation options.
         const QSettings settings;
-        core::LayerOptions options;
+        core::DepthLayerOptions options;
         const float threshold = settings.value(kThresholdKey, options.threshold).toFloat();
         if (threshold >= SegmentationControls::kMinThreshold &&
             threshold <= SegmentationControls::kMaxThreshold)
@@ -83,7 +83,7 @@ MainWindow::MainWindow(QWidget* parent)
         if (settings.value(kTestKey).toString() == QLatin1String("plain"))
             options.test = core::ConnectionTest::Plain;
         options.cullBackFaces = !settings.value(kTwoSidedKey, false).toBool();
-        m_document->setLayerOptions(options);
+        m_document->setDepthLayerOptions(options);
     }
 
     m_preferences = Preferences::load();
@@ -95,7 +95,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
     m_messageBar = new MessageBar(*m_viewport);
-    m_builder = new LayerBuilder(*m_document, *m_viewport, this);
+    m_builder = new DepthLayersBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);
     m_targetJob = new PaintTargetJob(*this);
     connect(m_targetJob, &PaintTargetJob::finished, this, &MainWindow::paintTargetMade);
@@ -103,9 +103,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_modelInfo = new ElidedLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);
     // Added after the model label (tests find that one first), but shown to its left.
-    m_layerInfo = new ElidedLabel(this);
-    m_layerInfo->setObjectName(QStringLiteral("layerInfo"));
-    statusBar()->insertPermanentWidget(0, m_layerInfo);
+    m_depthLayerInfo = new ElidedLabel(this);
+    m_depthLayerInfo->setObjectName(QStringLiteral("layerInfo"));
+    statusBar()->insertPermanentWidget(0, m_depthLayerInfo);
     m_brushInfo = new ElidedLabel(this);
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
     m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
@@ -135,18 +135,20 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_viewport, &Viewport::glInitializationFailed, this, [this](const QString& message) {
         showError(tr("OpenGL Error"), tr("The 3D view cannot be shown."), message);
     });
-    connect(m_viewport, &Viewport::layerRenderingFailed, this, [this](const QString& message) {
+    connect(m_viewport, &Viewport::depthLayerRenderingFailed, this, [this](const QString& message) {
         statusBar()->showMessage(message, kStatusMessageMs);
     });
-    connect(m_viewport, &Viewport::viewChanged, this, &MainWindow::updateLayerInfo);
-    connect(m_builder, &LayerBuilder::layersBuilt, this, &MainWindow::onLayersBuilt);
-    connect(m_builder, &LayerBuilder::segmentationChanged, this,
+    connect(m_viewport, &Viewport::viewChanged, this, &MainWindow::updateDepthLayerInfo);
+    connect(m_builder, &DepthLayersBuilder::depthLayersBuilt, this,
+            &MainWindow::onDepthLayersBuilt);
+    connect(m_builder, &DepthLayersBuilder::segmentationChanged, this,
             &MainWindow::onSegmentationChanged);
-    connect(m_builder, &LayerBuilder::layersCleared, this, &MainWindow::onLayersCleared);
-    connect(m_builder, &LayerBuilder::buildFailed, this, [this](const QString& message) {
+    connect(m_builder, &DepthLayersBuilder::depthLayersCleared, this,
+            &MainWindow::onDepthLayersCleared);
+    connect(m_builder, &DepthLayersBuilder::buildFailed, this, [this](const QString& message) {
         statusBar()->showMessage(tr("Could not build the depth layers: %1").arg(message),
                                  kStatusMessageMs);
-        updateLayerInfo();
+        updateDepthLayerInfo();
     });
     // The symmetric views build in the background after the layers; the status bar says how far.
     auto* symmetryTimer = new QTimer(this);
@@ -156,21 +158,22 @@ MainWindow::MainWindow(QWidget* parent)
                                      .arg(std::lround(m_builder->symmetryProgress() * 100.0)));
     };
     connect(symmetryTimer, &QTimer::timeout, this, showSymmetryProgress);
-    connect(m_builder, &LayerBuilder::symmetryStarted, this, [symmetryTimer, showSymmetryProgress] {
-        showSymmetryProgress();
-        symmetryTimer->start();
-    });
-    connect(m_builder, &LayerBuilder::symmetryFinished, this, [this, symmetryTimer] {
+    connect(m_builder, &DepthLayersBuilder::symmetryStarted, this,
+            [symmetryTimer, showSymmetryProgress] {
+                showSymmetryProgress();
+                symmetryTimer->start();
+            });
+    connect(m_builder, &DepthLayersBuilder::symmetryFinished, this, [this, symmetryTimer] {
         if (symmetryTimer->isActive())
             statusBar()->clearMessage();
         symmetryTimer->stop();
     });
-    connect(m_builder, &LayerBuilder::symmetryWaiting, this, [this] {
+    connect(m_builder, &DepthLayersBuilder::symmetryWaiting, this, [this] {
         // The stroke waits for its copies rather than painting one side only.
         statusBar()->showMessage(tr("Waiting for the symmetric views before painting…"));
         statusBar()->repaint();
     });
-    updateLayerInfo();
+    updateDepthLayerInfo();
 
     // The worker only publishes a number; polling it keeps the event queue free of updates.
     m_progressTimer.setInterval(50);
@@ -258,11 +261,11 @@ QDockWidget* MainWindow::makeDock(const QString& title, const QString& name, QWi
 
 void MainWindow::createPanels() {
     m_segmentationControls = new SegmentationControls(this);
-    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_segmentationControls->setOptions(m_document->depthLayerOptions());
     m_segmentationDock =
         makeDock(tr("Segmentation"), QStringLiteral("segmentationDock"), m_segmentationControls);
     connect(m_segmentationControls, &SegmentationControls::optionsChanged, this,
-            &MainWindow::setLayerOptions);
+            &MainWindow::setDepthLayerOptions);
     connect(m_segmentationControls, &SegmentationControls::connectivityBackendChanged, this,
             [this](int backend) {
                 setConnectivityBackend(QString::fromLatin1(render::connectivityBackendName(
@@ -273,14 +276,16 @@ void MainWindow::createPanels() {
                                .value(QStringLiteral("layers/connectivity"), QStringLiteral("auto"))
                                .toString());
 
-    m_layersPanel = new LayersPanel(this);
-    m_layersDock = makeDock(tr("Depth Layers"), QStringLiteral("layersDock"), m_layersPanel);
-    connect(m_layersPanel, &LayersPanel::layerActivated, this, [this](std::uint32_t layer) {
-        if (layer == 0)
-            setDisplay(m_allLayersDisplay);
-        else
-            setDisplay(render::LayerDisplay::SingleLayer, layer);
-    });
+    m_depthLayersPanel = new DepthLayersPanel(this);
+    m_depthLayersDock =
+        makeDock(tr("Depth Layers"), QStringLiteral("layersDock"), m_depthLayersPanel);
+    connect(m_depthLayersPanel, &DepthLayersPanel::layerActivated, this,
+            [this](std::uint32_t layer) {
+                if (layer == 0)
+                    setDisplay(m_allLayersDisplay);
+                else
+                    setDisplay(render::DepthLayerDisplay::SingleLayer, layer);
+            });
 
     m_graphPanel = new RegionGraphPanel(this);
     m_graphDock = makeDock(tr("Region Graph"), QStringLiteral("regionGraphDock"), m_graphPanel);
@@ -293,8 +298,9 @@ void MainWindow::createPanels() {
     });
 
     // Default layout (restoreState() may replace it): a column on the right.
-    resizeDocks({m_segmentationDock, m_layersDock, m_graphDock}, {300, 300, 300}, Qt::Horizontal);
-    resizeDocks({m_segmentationDock, m_layersDock, m_graphDock},
+    resizeDocks({m_segmentationDock, m_depthLayersDock, m_graphDock}, {300, 300, 300},
+                Qt::Horizontal);
+    resizeDocks({m_segmentationDock, m_depthLayersDock, m_graphDock},
                 {m_segmentationControls->sizeHint().height(), 280, 420}, Qt::Vertical);
 }
 
@@ -303,7 +309,7 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
     m_displayGroup = new QActionGroup(this);
     m_displayGroup->setExclusive(true);
     const auto addDisplay = [&](const QString& text, const QString& name, int digit,
-                                const QString& tip, render::LayerDisplay display) {
+                                const QString& tip, render::DepthLayerDisplay display) {
         QAction* action = viewMenu->addAction(text);
         action->setObjectName(name);
         action->setCheckable(true);
@@ -313,17 +319,17 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
         connect(action, &QAction::triggered, this, [this, display] { setDisplay(display); });
         return action;
     };
-    m_shadedAction =
-        addDisplay(tr("&Shaded"), QStringLiteral("actionDisplayShaded"), 1,
-                   tr("Show the model shaded, all depth layers"), render::LayerDisplay::Composite);
+    m_shadedAction = addDisplay(tr("&Shaded"), QStringLiteral("actionDisplayShaded"), 1,
+                                tr("Show the model shaded, all depth layers"),
+                                render::DepthLayerDisplay::Composite);
     m_singleLayerAction =
         addDisplay(tr("Single &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
                    tr("Show one depth layer alone (choose it in the Depth Layers panel)"),
-                   render::LayerDisplay::SingleLayer);
+                   render::DepthLayerDisplay::SingleLayer);
     m_segmentationAction =
         addDisplay(tr("Se&gmentation Map"), QStringLiteral("actionDisplaySegmentation"), 3,
                    tr("Colour every region of the visible layer differently"),
-                   render::LayerDisplay::Segmentation);
+                   render::DepthLayerDisplay::Segmentation);
     m_shadedAction->setChecked(true);
 
     m_boundariesAction = viewMenu->addAction(tr("Region &Boundaries"));
@@ -374,28 +380,28 @@ void MainWindow::createChannelActions(QMenu* viewMenu) {
         group->actions().front()->setChecked(true);
 }
 
-void MainWindow::setDisplay(render::LayerDisplay display, std::uint32_t layer) {
-    if (display == render::LayerDisplay::SingleLayer) {
+void MainWindow::setDisplay(render::DepthLayerDisplay display, std::uint32_t layer) {
+    if (display == render::DepthLayerDisplay::SingleLayer) {
         if (layer != 0)
             m_viewport->setDisplayLayer(layer);
     } else {
         m_allLayersDisplay = display;
     }
     m_viewport->setDisplay(display);
-    QAction* action = display == render::LayerDisplay::Composite     ? m_shadedAction
-                      : display == render::LayerDisplay::SingleLayer ? m_singleLayerAction
-                                                                     : m_segmentationAction;
+    QAction* action = display == render::DepthLayerDisplay::Composite     ? m_shadedAction
+                      : display == render::DepthLayerDisplay::SingleLayer ? m_singleLayerAction
+                                                                          : m_segmentationAction;
     action->setChecked(true);
-    m_layersPanel->setThumbnailStyle(display == render::LayerDisplay::Segmentation
-                                         ? LayersPanel::ThumbnailStyle::Regions
-                                         : LayersPanel::ThumbnailStyle::Shaded,
-                                     m_document->layers());
-    m_layersPanel->setCurrentLayer(
-        display == render::LayerDisplay::SingleLayer ? m_viewport->displayLayer() : 0);
+    m_depthLayersPanel->setThumbnailStyle(display == render::DepthLayerDisplay::Segmentation
+                                              ? DepthLayersPanel::ThumbnailStyle::Regions
+                                              : DepthLayersPanel::ThumbnailStyle::Shaded,
+                                          m_document->depthLayers());
+    m_depthLayersPanel->setCurrentLayer(
+        display == render::DepthLayerDisplay::SingleLayer ? m_viewport->displayLayer() : 0);
 }
 
-void MainWindow::setLayerOptions(const core::LayerOptions& options) {
-    m_builder->setLayerOptions(options);
+void MainWindow::setDepthLayerOptions(const core::DepthLayerOptions& options) {
+    m_builder->setDepthLayerOptions(options);
     m_project->markModified();
     QSettings settings;
     settings.setValue(kThresholdKey, double(options.threshold));
@@ -405,8 +411,8 @@ void MainWindow::setLayerOptions(const core::LayerOptions& options) {
     settings.setValue(kTwoSidedKey, !options.cullBackFaces);
 }
 
-void MainWindow::onLayersBuilt() {
-    const core::Layers* layers = m_document->layers();
+void MainWindow::onDepthLayersBuilt() {
+    const core::DepthLayers* layers = m_document->depthLayers();
     if (!layers)
         return;
     m_segmentationControls->setConnectivityInUse(
@@ -416,73 +422,73 @@ void MainWindow::onLayersBuilt() {
     const std::uint32_t deepest = std::max(1u, layers->stack.maxLayers());
     if (m_viewport->displayLayer() > deepest)
         m_viewport->setDisplayLayer(deepest);
-    m_layersPanel->setLayers(layers);
-    m_layersPanel->setCurrentLayer(m_viewport->display() == render::LayerDisplay::SingleLayer
-                                       ? m_viewport->displayLayer()
-                                       : 0);
+    m_depthLayersPanel->setDepthLayers(layers);
+    m_depthLayersPanel->setCurrentLayer(
+        m_viewport->display() == render::DepthLayerDisplay::SingleLayer ? m_viewport->displayLayer()
+                                                                        : 0);
     // Filling a panel can change the window's layout, and a resized view drops its layers
-    // (onLayersCleared() has run then).
-    if (m_document->layers() != layers)
+    // (onDepthLayersCleared() has run then).
+    if (m_document->depthLayers() != layers)
         return;
-    m_graphPanel->setLayers(layers);
-    if (m_document->layers() != layers)
+    m_graphPanel->setDepthLayers(layers);
+    if (m_document->depthLayers() != layers)
         return;
     m_regionTools->layersChanged();
     m_history->sync(); // order steps of the old regions go
-    updateLayerInfo();
+    updateDepthLayerInfo();
 }
 
 void MainWindow::onSegmentationChanged() {
-    const core::Layers* layers = m_document->layers();
+    const core::DepthLayers* layers = m_document->depthLayers();
     if (!layers)
         return;
-    m_graphPanel->setLayers(layers);
-    if (m_document->layers() != layers)
-        return;                       // see onLayersBuilt()
-    m_layersPanel->setLayers(layers); // region counts (and colours) per layer
-    if (m_document->layers() != layers)
+    m_graphPanel->setDepthLayers(layers);
+    if (m_document->depthLayers() != layers)
+        return;                                 // see onDepthLayersBuilt()
+    m_depthLayersPanel->setDepthLayers(layers); // region counts (and colours) per layer
+    if (m_document->depthLayers() != layers)
         return;
     m_regionTools->layersChanged();
     m_history->sync();
-    updateLayerInfo();
+    updateDepthLayerInfo();
 }
 
-void MainWindow::onLayersCleared() {
+void MainWindow::onDepthLayersCleared() {
     m_viewport->setHighlightRegion(core::kNone);
-    m_layersPanel->setLayers(nullptr);
-    m_graphPanel->setLayers(nullptr);
+    m_depthLayersPanel->setDepthLayers(nullptr);
+    m_graphPanel->setDepthLayers(nullptr);
     m_regionTools->layersChanged();
     m_history->sync();
-    updateLayerInfo();
+    updateDepthLayerInfo();
 }
 
-void MainWindow::updateLayerInfo() {
-    const core::Layers* layers = m_document->layers();
+void MainWindow::updateDepthLayerInfo() {
+    const core::DepthLayers* layers = m_document->depthLayers();
     if (!layers) {
-        m_layerInfo->setText(m_builder->isBuilding() && m_viewport->canCapture()
-                                 ? tr("Building depth layers…")
-                                 : QString());
-        m_layerInfo->setToolTip(QString());
+        m_depthLayerInfo->setText(m_builder->isBuilding() && m_viewport->canCapture()
+                                      ? tr("Building depth layers…")
+                                      : QString());
+        m_depthLayerInfo->setToolTip(QString());
         return;
     }
     const QLocale locale;
-    const core::LayerTimings& t = layers->timings;
+    const core::DepthLayerTimings& t = layers->timings;
     // Label style ("Regions: 1") reads right in English for any count without plural forms.
-    m_layerInfo->setText(
+    m_depthLayerInfo->setText(
         tr("Depth layers: %1 · Fragments: %2 · Regions: %3 · Built in %4 ms")
             .arg(locale.toString(layers->stack.maxLayers()),
                  locale.toString(qulonglong(layers->stack.fragmentCount())),
                  locale.toString(qulonglong(layers->segmentation.graph.regions.size())),
                  locale.toString(m_builder->lastBuildMs(), 'f', 0)));
-    m_layerInfo->setToolTip(tr("build_layers of this view:\n"
-                               "capture %1 ms (drawing), %2 ms (sorting)\n"
-                               "connectivity %3 ms, regions %4 ms\n"
-                               "%5 ms from the capture to the picture")
-                                .arg(locale.toString(t.capture.gpuMs, 'f', 1),
-                                     locale.toString(t.capture.resolveMs, 'f', 1),
-                                     locale.toString(t.connectivityMs, 'f', 1),
-                                     locale.toString(t.segmentationMs, 'f', 1),
-                                     locale.toString(m_builder->lastBuildMs(), 'f', 1)));
+    m_depthLayerInfo->setToolTip(tr("build_layers of this view:\n"
+                                    "capture %1 ms (drawing), %2 ms (sorting)\n"
+                                    "connectivity %3 ms, regions %4 ms\n"
+                                    "%5 ms from the capture to the picture")
+                                     .arg(locale.toString(t.capture.gpuMs, 'f', 1),
+                                          locale.toString(t.capture.resolveMs, 'f', 1),
+                                          locale.toString(t.connectivityMs, 'f', 1),
+                                          locale.toString(t.segmentationMs, 'f', 1),
+                                          locale.toString(m_builder->lastBuildMs(), 'f', 1)));
 }
 
 void MainWindow::setPreferences(const Preferences& preferences) {

@@ -42,8 +42,8 @@ class ColorPanel;
 class FillPanel;
 class HistoryBridge;
 class ScriptActions;
-class LayerBuilder;
-class LayersPanel;
+class DepthLayersBuilder;
+class DepthLayersPanel;
 class MessageBar;
 class ModelLoader;
 class PaintLayersPanel;
@@ -91,8 +91,8 @@ public:
     Viewport* viewport() const { return m_viewport; }
     core::Document& document() { return *m_document; }
     const core::Document& document() const { return *m_document; }
-    LayerBuilder* layerBuilder() const { return m_builder; }
-    LayersPanel* layersPanel() const { return m_layersPanel; }
+    DepthLayersBuilder* depthLayersBuilder() const { return m_builder; }
+    DepthLayersPanel* depthLayersPanel() const { return m_depthLayersPanel; }
     RegionGraphPanel* regionGraphPanel() const { return m_graphPanel; }
     RegionTools* regionTools() const { return m_regionTools; }
     SegmentationControls* segmentationControls() const { return m_segmentationControls; }
@@ -165,7 +165,7 @@ public:
      * Shows the layers as display; for SingleLayer, layer (1-based) is the one shown alone, 0
      * keeps the current one.
      */
-    void setDisplay(render::LayerDisplay display, std::uint32_t layer = 0);
+    void setDisplay(render::DepthLayerDisplay display, std::uint32_t layer = 0);
     /** The open model's source (absolute path or "builtin:NAME"); empty before the first load. */
     QString currentSource() const { return m_source; }
     bool isLoading() const;
@@ -266,11 +266,11 @@ private:
     /** Shift+[ and Shift+]: the hardness 10 % down or up. */
     void stepBrushHardness(int direction);
     void setPressureCurve(const core::PressureCurve& curve);
-    void setLayerOptions(const core::LayerOptions& options);
-    void onLayersBuilt();
+    void setDepthLayerOptions(const core::DepthLayerOptions& options);
+    void onDepthLayersBuilt();
     void onSegmentationChanged();
-    void onLayersCleared();
-    void updateLayerInfo();
+    void onDepthLayersCleared();
+    void updateDepthLayerInfo();
     void updateRecentMenu();
     void showOpenDialog();
     void showAbout();
@@ -292,19 +292,19 @@ private:
     Viewport* m_viewport = nullptr;
     /** Notes about the open model over the top of the viewport (load warnings, ...). */
     MessageBar* m_messageBar = nullptr;
-    LayerBuilder* m_builder = nullptr;
+    DepthLayersBuilder* m_builder = nullptr;
     ModelLoader* m_loader = nullptr;
     PaintTargetJob* m_targetJob = nullptr;
     SegmentationControls* m_segmentationControls = nullptr;
-    LayersPanel* m_layersPanel = nullptr;
+    DepthLayersPanel* m_depthLayersPanel = nullptr;
     RegionGraphPanel* m_graphPanel = nullptr;
     QDockWidget* m_segmentationDock = nullptr;
-    QDockWidget* m_layersDock = nullptr;
+    QDockWidget* m_depthLayersDock = nullptr;
     QDockWidget* m_graphDock = nullptr;
     QDockWidget* m_hiddenDock = nullptr;
     RegionTools* m_regionTools = nullptr;
     /** What leaving the hide tool (which shows the segmentation map) shows again. */
-    render::LayerDisplay m_displayBeforeHide = render::LayerDisplay::Composite;
+    render::DepthLayerDisplay m_displayBeforeHide = render::DepthLayerDisplay::Composite;
     FillPanel* m_fillPanel = nullptr;
     QDockWidget* m_fillDock = nullptr;
     BrushPanel* m_brushPanel = nullptr;
@@ -319,8 +319,8 @@ private:
     QAction* m_segmentationAction = nullptr;
     QAction* m_boundariesAction = nullptr;
     /** What "All layers" returns to: Composite or Segmentation. */
-    render::LayerDisplay m_allLayersDisplay = render::LayerDisplay::Composite;
-    QLabel* m_layerInfo = nullptr;
+    render::DepthLayerDisplay m_allLayersDisplay = render::DepthLayerDisplay::Composite;
+    QLabel* m_depthLayerInfo = nullptr;
     QLabel* m_brushInfo = nullptr;
 
     BrushToolBar* m_brushBar = nullptr;

@@ -308,8 +308,8 @@ void MainWindow::createPaintLayersPanel() {
     m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"), scroll);
     // A tab beside the Depth Layers: the columns keep their size, and the two stacks sit apart
     // by name.
-    tabifyDockWidget(m_layersDock, m_paintLayersDock);
-    m_layersDock->raise();
+    tabifyDockWidget(m_depthLayersDock, m_paintLayersDock);
+    m_depthLayersDock->raise();
     connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
             [this](const core::PaintChanges& changes) {
                 // As after a stroke: the composite's texels to the view, then the undo stack.
@@ -391,7 +391,7 @@ void MainWindow::createMenus() {
     panelsMenu->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock :
          {m_brushDock, m_presetsDock, m_colorDock, m_paintLayersDock, m_segmentationDock,
-          m_layersDock, m_graphDock, m_hiddenDock, m_fillDock})
+          m_depthLayersDock, m_graphDock, m_hiddenDock, m_fillDock})
         panelsMenu->addAction(dock->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(m_brushBar->toggleViewAction());

@@ -109,7 +109,7 @@ void MainWindow::applyProjectState(const core::ProjectState& state) {
     m_paintOptions = m_document->paintTargetOptions();
     if (m_document->hasPaintTarget())
         m_paintOptions.kind = m_document->paintTargetKind();
-    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_segmentationControls->setOptions(m_document->depthLayerOptions());
     m_colorPanel->setBackground(BrushToolBar::toQColor(state.background));
     // Oldest first, so the project's most recent colour ends up first.
     for (auto it = state.palette.rbegin(); it != state.palette.rend(); ++it)

@@ -58,9 +58,9 @@ void MainWindow::setTool(Tool tool) {
     // Paint-to-hide works on the segmentation map; leaving it brings the display back.
     if (tool == Tool::Hide) {
         m_displayBeforeHide = m_viewport->display();
-        setDisplay(render::LayerDisplay::Segmentation);
+        setDisplay(render::DepthLayerDisplay::Segmentation);
     } else if (m_tool == Tool::Hide &&
-               m_viewport->display() == render::LayerDisplay::Segmentation) {
+               m_viewport->display() == render::DepthLayerDisplay::Segmentation) {
         setDisplay(m_displayBeforeHide);
     }
     m_tool = tool;
@@ -109,7 +109,7 @@ void MainWindow::pickColor(QPointF pixel) {
     // Never pick from the layers of another view: build them now if they are not there.
     if (!m_builder->buildNow())
         return; // buildFailed() reported why
-    const core::Layers* layers = m_document->layers();
+    const core::DepthLayers* layers = m_document->depthLayers();
     if (!layers)
         return;
     const double x = std::floor(pixel.x()), y = std::floor(pixel.y());
@@ -384,7 +384,7 @@ void MainWindow::showDocumentState() {
     setBrush(m_document->brush());
     m_layerAwareAction->setChecked(m_document->layerAware());
     m_regionTools->autoPopUpAction()->setChecked(m_document->autoPopUp());
-    m_segmentationControls->setOptions(m_document->layerOptions());
+    m_segmentationControls->setOptions(m_document->depthLayerOptions());
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
     m_targetSerial = m_document->paintTargetSerial();
     m_paintOptions = m_document->paintTargetOptions();

@@ -419,7 +419,7 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
 bool ProjectController::hasPaintLayers() const {
     const auto* texture =
         dynamic_cast<const core::TextureTarget*>(m_window.document().currentPaintTarget());
-    return texture && texture->layerStack().size() > 0;
+    return texture && texture->paintLayerStack().size() > 0;
 }
 
 bool ProjectController::exportTo(core::ExportFormat format, const QString& given,
@@ -487,7 +487,7 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
             emit exportFailed(why);
             return false;
         }
-        snap->paintLayers = core::paintLayerExport(texture->layerStack());
+        snap->paintLayers = core::paintLayerExport(texture->paintLayerStack());
     }
     startProgress(tr("Exporting %1…").arg(QFileInfo(path).fileName()));
     auto files = std::make_shared<QStringList>();

@@ -25,12 +25,12 @@ namespace {
 
 /** The visible surface of doc's layers, lit from the camera, over a light background. */
 QImage shade(core::Document& doc, const core::View& view) {
-    const core::Layers* layers = doc.layers();
+    const core::DepthLayers* layers = doc.depthLayers();
     QImage image(view.width, view.height, QImage::Format_RGB32);
     image.fill(QColor(236, 238, 242));
     if (!layers)
         return image;
-    const core::LayerStack& stack = layers->stack;
+    const core::DepthStack& stack = layers->stack;
     const core::Mesh& mesh = doc.mesh();
     const glm::mat3 toView(view.view);
     for (int y = 0; y < stack.height; ++y)
@@ -79,9 +79,9 @@ void drawClick(QImage& image, QPointF at, const QColor& color) {
 }
 
 /** The row of four bodies seen from the side a little, its layers built, a texture to paint. */
-bool prepare(core::Document& doc, core::CpuLayerCapturer& capturer, const core::View& view) {
+bool prepare(core::Document& doc, core::CpuDepthCapturer& capturer, const core::View& view) {
     capturer.setMesh(doc.mesh());
-    if (!doc.buildLayers(capturer, view))
+    if (!doc.buildDepthLayers(capturer, view))
         return false;
     core::PaintTargetOptions options;
     options.kind = core::PaintTargetKind::Texture;
@@ -106,7 +106,7 @@ std::vector<QImage> makeQuickGuidePictures(QSize size, const core::ProgressFn& p
     doc.camera().distance *= 0.5f; // the row, not the room around it
     const float distance = doc.camera().distance;
     const core::View view = doc.camera().view(size.width(), size.height());
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     const float w = float(size.width()), h = float(size.height());
     const QColor pointer(20, 90, 200);
 
@@ -116,7 +116,7 @@ std::vector<QImage> makeQuickGuidePictures(QSize size, const core::ProgressFn& p
         doc.camera().yawDegrees = 35.0f;
         doc.camera().pitchDegrees = 12.0f;
         doc.camera().distance = distance;
-        doc.clearLayers();
+        doc.clearDepthLayers();
         if (!prepare(doc, capturer, view))
             return {};
         doc.resetRegionOrder();
@@ -175,9 +175,9 @@ std::vector<QImage> makeQuickGuidePictures(QSize size, const core::ProgressFn& p
             if (pivot) {
                 doc.camera().orbitAbout(*pivot, -40.0f, 10.0f);
                 const core::View turned = doc.camera().view(size.width(), size.height());
-                doc.clearLayers();
+                doc.clearDepthLayers();
                 capturer.setMesh(doc.mesh());
-                if (!doc.buildLayers(capturer, turned))
+                if (!doc.buildDepthLayers(capturer, turned))
                     return {};
                 image = shade(doc, turned);
             } else {

@@ -23,12 +23,12 @@ namespace ui {
 
 namespace {
 
-/** Layers for a script: built in the viewport, which shows the document's camera. */
+/** Depth layers for a script: built in the viewport, which shows the document's camera. */
 class ViewportHost final : public core::ScriptHost {
 public:
     explicit ViewportHost(MainWindow& window) : m_window(window) {}
 
-    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
         const core::View shown = m_window.viewport()->view();
         if (shown.width != view.width || shown.height != view.height || shown.view != view.view ||
             shown.proj != view.proj)
@@ -42,7 +42,7 @@ public:
                                    .arg(shown.height)
                                    .toStdString()};
         (void)doc;
-        if (!m_window.layerBuilder()->buildNow())
+        if (!m_window.depthLayersBuilder()->buildNow())
             return core::Error{QCoreApplication::translate(
                                    "ui::ScriptActions", "the layers of this view cannot be built")
                                    .toStdString()};

@@ -37,9 +37,9 @@ QAction* makeToggle(const QString& text, const QString& name, const QString& tip
 } // namespace
 
 RegionTools::RegionTools(core::Document& document, Viewport& viewport,
-                         std::function<bool()> ensureLayers, QObject* parent)
+                         std::function<bool()> ensureDepthLayers, QObject* parent)
     : QObject(parent), m_document(document), m_viewport(viewport),
-      m_ensureLayers(std::move(ensureLayers)) {
+      m_ensureDepthLayers(std::move(ensureDepthLayers)) {
     m_autoPopUp = makeToggle(tr("&Automatic Pop-up"), QStringLiteral("actionAutoPopUp"),
                              tr("While painting layer-aware, bring the surface under the brush "
                                 "to the front when it goes behind another"),
@@ -91,12 +91,12 @@ HiddenRegionsPanel* RegionTools::createPanel(QWidget* parent) {
                 if (m_document.unhideRegions(regions))
                     changed();
             });
-    m_panel->setRegions(m_document.layers(), m_document.regionOrder());
+    m_panel->setRegions(m_document.depthLayers(), m_document.regionOrder());
     return m_panel;
 }
 
 void RegionTools::popUpAt(QPointF pixel) {
-    if (!m_ensureLayers())
+    if (!m_ensureDepthLayers())
         return;
     const std::uint32_t region = m_document.popUpAt(toVec(pixel));
     if (region == core::kNone) {
@@ -110,7 +110,7 @@ void RegionTools::popUpAt(QPointF pixel) {
 }
 
 void RegionTools::popUpRegion(std::uint32_t region) {
-    if (!m_document.layers())
+    if (!m_document.depthLayers())
         return;
     if (m_document.popUpRegion(region))
         changed();
@@ -118,7 +118,7 @@ void RegionTools::popUpRegion(std::uint32_t region) {
 
 void RegionTools::beginHide(QPointF pixel, float radius) {
     endHide();
-    if (!m_ensureLayers())
+    if (!m_ensureDepthLayers())
         return;
     // The order at the press decides what the stroke hides: it never drills through what it
     // reveals.
@@ -172,8 +172,8 @@ void RegionTools::endStroke() {
 void RegionTools::layersChanged() {
     m_inStroke = false;
     if (m_panel)
-        m_panel->setRegions(m_document.layers(), m_document.regionOrder());
-    const bool layers = m_document.layers() != nullptr;
+        m_panel->setRegions(m_document.depthLayers(), m_document.regionOrder());
+    const bool layers = m_document.depthLayers() != nullptr;
     m_resetOrder->setEnabled(layers);
     m_unhideAll->setEnabled(layers && !m_document.regionOrder().hiddenRegions().empty());
 }
@@ -186,8 +186,8 @@ void RegionTools::changed() {
 void RegionTools::orderApplied() {
     m_viewport.regionOrderChanged();
     if (m_panel)
-        m_panel->setRegions(m_document.layers(), m_document.regionOrder());
-    m_unhideAll->setEnabled(m_document.layers() &&
+        m_panel->setRegions(m_document.depthLayers(), m_document.regionOrder());
+    m_unhideAll->setEnabled(m_document.depthLayers() &&
                             !m_document.regionOrder().hiddenRegions().empty());
 }
 

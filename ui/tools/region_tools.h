@@ -35,11 +35,11 @@ class RegionTools : public QObject {
 
 public:
     /**
-     * ensureLayers builds the current view's layers if they are missing (false if it could not).
-     * Every change is an undo step of the document; edited() follows it.
+     * ensureDepthLayers builds the current view's layers if they are missing (false if it could
+     * not). Every change is an undo step of the document; edited() follows it.
      */
-    RegionTools(core::Document& document, Viewport& viewport, std::function<bool()> ensureLayers,
-                QObject* parent = nullptr);
+    RegionTools(core::Document& document, Viewport& viewport,
+                std::function<bool()> ensureDepthLayers, QObject* parent = nullptr);
 
     /** The Paint-to-Hide panel (owned by parent). */
     HiddenRegionsPanel* createPanel(QWidget* parent);
@@ -84,7 +84,7 @@ private:
 
     core::Document& m_document;
     Viewport& m_viewport;
-    std::function<bool()> m_ensureLayers;
+    std::function<bool()> m_ensureDepthLayers;
     HiddenRegionsPanel* m_panel = nullptr;
     QAction* m_autoPopUp = nullptr;
     QAction* m_transparency = nullptr;

@@ -19,29 +19,30 @@ namespace {
 constexpr int kDefaultSettleMs = 250;
 } // namespace
 
-struct LayerBuilder::Job {
+struct DepthLayersBuilder::Job {
     std::uint64_t viewSerial = 0;
     std::uint64_t meshSerial = 0;
     QElapsedTimer clock; // from the start of the capture
     core::View view;
-    core::LayerOptions options;
+    core::DepthLayerOptions options;
     core::CaptureStats stats;
-    std::optional<core::Layers> layers;
+    std::optional<core::DepthLayers> layers;
     QString error; // shown to the user
 };
 
-struct LayerBuilder::SymmetryJob {
+struct DepthLayersBuilder::SymmetryJob {
     core::Document::SymmetryBuild build;
     bool built = false;
     QString error; // shown to the user
 };
 
-struct LayerBuilder::Captured {
+struct DepthLayersBuilder::Captured {
     std::shared_ptr<Job> job;
-    core::Result<core::LayerStack> stack;
+    core::Result<core::DepthStack> stack;
 };
 
-LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject* parent)
+DepthLayersBuilder::DepthLayersBuilder(core::Document& document, Viewport& viewport,
+                                       QObject* parent)
     : QObject(parent), m_document(document), m_viewport(viewport) {
     m_pool.setMaxThreadCount(1);
     m_symmetryPool.setMaxThreadCount(1);
@@ -49,25 +50,25 @@ LayerBuilder::LayerBuilder(core::Document& document, Viewport& viewport, QObject
     m_document.setSymmetryBuiltOnStroke(false);
     m_settle.setSingleShot(true);
     m_settle.setInterval(kDefaultSettleMs);
-    connect(&m_settle, &QTimer::timeout, this, &LayerBuilder::onSettled);
-    connect(&m_viewport, &Viewport::viewChanged, this, &LayerBuilder::invalidate);
+    connect(&m_settle, &QTimer::timeout, this, &DepthLayersBuilder::onSettled);
+    connect(&m_viewport, &Viewport::viewChanged, this, &DepthLayersBuilder::invalidate);
 }
 
-LayerBuilder::~LayerBuilder() {
+DepthLayersBuilder::~DepthLayersBuilder() {
     // The worker's report goes to a watcher that dies with this object; it only has to end first.
     m_symmetryWorker.cancel();
     m_pool.waitForDone();
     m_symmetryPool.waitForDone();
 }
 
-void LayerBuilder::setSettleDelay(int milliseconds) {
+void DepthLayersBuilder::setSettleDelay(int milliseconds) {
     m_settle.setInterval(milliseconds);
 }
 
-void LayerBuilder::setLayerOptions(const core::LayerOptions& options) {
-    const bool hadLayers = m_document.layers() != nullptr;
-    m_document.setLayerOptions(options);
-    if (m_document.layers()) {
+void DepthLayersBuilder::setDepthLayerOptions(const core::DepthLayerOptions& options) {
+    const bool hadLayers = m_document.depthLayers() != nullptr;
+    m_document.setDepthLayerOptions(options);
+    if (m_document.depthLayers()) {
         m_viewport.showSegmentation();
         emit segmentationChanged();
         refreshSymmetry(); // new regions: the copies' views are segmented again too
@@ -77,17 +78,17 @@ void LayerBuilder::setLayerOptions(const core::LayerOptions& options) {
     }
 }
 
-void LayerBuilder::invalidate() {
-    const bool hadLayers = m_document.layers() != nullptr;
-    m_document.clearLayers();
+void DepthLayersBuilder::invalidate() {
+    const bool hadLayers = m_document.depthLayers() != nullptr;
+    m_document.clearDepthLayers();
     cancelSymmetry(); // its views were of the old one
     m_wanted = true;
     m_settle.start();
     if (hadLayers)
-        emit layersCleared();
+        emit depthLayersCleared();
 }
 
-void LayerBuilder::onSettled() {
+void DepthLayersBuilder::onSettled() {
     if (!m_wanted)
         return;
     if (m_viewport.isNavigating()) {
@@ -106,21 +107,21 @@ void LayerBuilder::onSettled() {
     capture();
 }
 
-LayerBuilder::Captured LayerBuilder::captureView() {
+DepthLayersBuilder::Captured DepthLayersBuilder::captureView() {
     auto job = std::make_shared<Job>();
     job->clock.start();
     job->viewSerial = m_viewport.viewSerial();
     job->meshSerial = m_document.meshSerial();
     job->view = m_viewport.view();
-    job->options = m_document.layerOptions();
+    job->options = m_document.depthLayerOptions();
     // The GPU part, on this thread: the viewport's context is only current here.
-    core::Result<core::LayerStack> stack =
+    core::Result<core::DepthStack> stack =
         m_viewport.captureLayers(job->view, job->options.cullBackFaces, &job->stats);
     ++m_captures;
     return {std::move(job), std::move(stack)};
 }
 
-void LayerBuilder::capture() {
+void DepthLayersBuilder::capture() {
     m_captureWhenIdle = false;
     Captured captured = captureView();
     const std::shared_ptr<Job>& job = captured.job;
@@ -134,9 +135,9 @@ void LayerBuilder::capture() {
     // (a choice made where the GPU is fast).
     if (core::ConnectivityEngine* engine = m_viewport.connectivityEngine()) {
         m_document.setConnectivityEngine(engine);
-        job->layers.emplace(core::finishLayers(std::move(captured.stack).value(), job->stats,
-                                               m_document.mesh(), m_document.topology(), job->view,
-                                               job->options, engine));
+        job->layers.emplace(core::finishDepthLayers(std::move(captured.stack).value(), job->stats,
+                                                    m_document.mesh(), m_document.topology(),
+                                                    job->view, job->options, engine));
         m_job = job;
         finish(job);
         return;
@@ -152,8 +153,8 @@ void LayerBuilder::capture() {
         [job, stack = std::move(captured.stack).value(), mesh = m_document.sharedMesh(),
          topology = m_document.sharedTopology()](const core::ProgressFn&) mutable {
             try {
-                job->layers.emplace(core::finishLayers(std::move(stack), job->stats, *mesh,
-                                                       *topology, job->view, job->options));
+                job->layers.emplace(core::finishDepthLayers(std::move(stack), job->stats, *mesh,
+                                                            *topology, job->view, job->options));
             } catch (const std::bad_alloc&) {
                 job->layers.reset();
                 job->error = tr("not enough memory for the depth layers of this view");
@@ -165,8 +166,8 @@ void LayerBuilder::capture() {
         [this, job] { finish(job); });
 }
 
-bool LayerBuilder::buildNow() {
-    if (!m_wanted && m_document.layers())
+bool DepthLayersBuilder::buildNow() {
+    if (!m_wanted && m_document.depthLayers())
         return true;
     if (!m_viewport.canCapture())
         return false;
@@ -186,9 +187,9 @@ bool LayerBuilder::buildNow() {
         try {
             core::ConnectivityEngine* engine = m_viewport.connectivityEngine();
             m_document.setConnectivityEngine(engine);
-            job->layers.emplace(core::finishLayers(std::move(captured.stack).value(), job->stats,
-                                                   m_document.mesh(), m_document.topology(),
-                                                   job->view, job->options, engine));
+            job->layers.emplace(core::finishDepthLayers(
+                std::move(captured.stack).value(), job->stats, m_document.mesh(),
+                m_document.topology(), job->view, job->options, engine));
         } catch (const std::bad_alloc&) {
             job->error = tr("not enough memory for the depth layers of this view");
         } catch (const std::exception& e) {
@@ -204,19 +205,19 @@ bool LayerBuilder::buildNow() {
     return false;
 }
 
-bool LayerBuilder::adopt(Job& job) {
+bool DepthLayersBuilder::adopt(Job& job) {
     if (job.viewSerial != m_viewport.viewSerial() || !m_wanted ||
         !m_document.adoptLayers(std::move(*job.layers), job.meshSerial))
         return false;
     m_wanted = false;
     m_lastBuildMs = double(job.clock.nsecsElapsed()) / 1e6;
     m_viewport.showLayers();
-    emit layersBuilt();
+    emit depthLayersBuilt();
     refreshSymmetry();
     return true;
 }
 
-void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
+void DepthLayersBuilder::finish(const std::shared_ptr<Job>& job) {
     if (job != m_job)
         return; // buildNow() already waited for it and settled it
     m_job.reset();
@@ -236,11 +237,11 @@ void LayerBuilder::finish(const std::shared_ptr<Job>& job) {
         m_settle.start();
 }
 
-double LayerBuilder::symmetryProgress() const {
+double DepthLayersBuilder::symmetryProgress() const {
     return m_symmetryJob ? jobProgress(m_symmetryWorker) : 0.0;
 }
 
-void LayerBuilder::cancelSymmetry() {
+void DepthLayersBuilder::cancelSymmetry() {
     if (!m_symmetryJob)
         return;
     m_symmetryWorker.cancel(); // stops between copies; its report is ignored
@@ -248,12 +249,13 @@ void LayerBuilder::cancelSymmetry() {
     emit symmetryFinished();
 }
 
-void LayerBuilder::refreshSymmetry() {
+void DepthLayersBuilder::refreshSymmetry() {
     std::optional<core::Document::SymmetryBuild> build = m_document.symmetryBuild();
     if (m_symmetryJob) {
         const core::Document::SymmetryBuild& running = m_symmetryJob->build;
         if (build && running.symmetry == build->symmetry &&
-            running.layersSerial == build->layersSerial && running.meshSerial == build->meshSerial)
+            running.depthLayersSerial == build->depthLayersSerial &&
+            running.meshSerial == build->meshSerial)
             return; // already on its way
         cancelSymmetry();
     }
@@ -277,7 +279,7 @@ void LayerBuilder::refreshSymmetry() {
     emit symmetryStarted();
 }
 
-void LayerBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
+void DepthLayersBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
     if (job != m_symmetryJob)
         return; // cancelled, or settled by buildSymmetryNow()
     m_symmetryJob.reset();
@@ -294,7 +296,7 @@ void LayerBuilder::finishSymmetry(const std::shared_ptr<SymmetryJob>& job) {
     refreshSymmetry(); // the symmetry may have changed meanwhile
 }
 
-bool LayerBuilder::buildSymmetryNow() {
+bool DepthLayersBuilder::buildSymmetryNow() {
     if (m_document.symmetryReady())
         return true;
     refreshSymmetry();

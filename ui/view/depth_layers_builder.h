@@ -29,13 +29,13 @@ class Viewport;
  * for; a stale one is dropped. Threshold and test changes re-segment the current layers without a
  * capture.
  */
-class LayerBuilder : public QObject {
+class DepthLayersBuilder : public QObject {
     Q_OBJECT
 
 public:
-    LayerBuilder(core::Document& document, Viewport& viewport, QObject* parent = nullptr);
+    DepthLayersBuilder(core::Document& document, Viewport& viewport, QObject* parent = nullptr);
     /** Waits for a running worker (its result is dropped). */
-    ~LayerBuilder() override;
+    ~DepthLayersBuilder() override;
 
     /** Milliseconds the view must stay still before a build starts. */
     void setSettleDelay(int milliseconds);
@@ -45,7 +45,7 @@ public:
      * Sets the document's options: a new threshold or test re-segments the current layers at
      * once (segmentationChanged()); a new capture option drops them and builds again.
      */
-    void setLayerOptions(const core::LayerOptions& options);
+    void setDepthLayerOptions(const core::DepthLayerOptions& options);
 
     /** True from a view change until the new layers are adopted (or the build failed). */
     bool isBuilding() const { return m_wanted; }
@@ -89,9 +89,9 @@ public slots:
 
 signals:
     /** The document's layers were dropped (they described another view). */
-    void layersCleared();
+    void depthLayersCleared();
     /** New layers of the current view are in the document and shown by the viewport. */
-    void layersBuilt();
+    void depthLayersBuilt();
     /** The current layers were re-segmented (same capture, new regions). */
     void segmentationChanged();
     /** A capture failed; message is for the user. */
@@ -127,7 +127,7 @@ private:
     /** The worker's job; a finish() for any other was settled by buildNow(). */
     std::shared_ptr<Job> m_job;
     bool m_workerBusy = false;
-    /** Layers of the current view are wanted and not yet there. */
+    /** Depth layers of the current view are wanted and not yet there. */
     bool m_wanted = false;
     /** The view settled while the worker was busy: capture once it reports. */
     bool m_captureWhenIdle = false;

@@ -121,7 +121,7 @@ void Viewport::setOrthographic(bool orthographic) {
     cameraMoved();
 }
 
-void Viewport::setDisplay(render::LayerDisplay display) {
+void Viewport::setDisplay(render::DepthLayerDisplay display) {
     if (m_composite.display == display)
         return;
     m_composite.display = display;
@@ -141,7 +141,7 @@ void Viewport::setDisplayLayer(std::uint32_t layer) {
 void Viewport::shownLayerChanged() {
     // What is painted, filled or picked is what this view shows.
     m_document.setShownLayer(
-        m_composite.display == render::LayerDisplay::SingleLayer ? m_composite.layer : 0);
+        m_composite.display == render::DepthLayerDisplay::SingleLayer ? m_composite.layer : 0);
     if (m_hoverHighlight)
         updateHoverHighlight();
 }
@@ -272,7 +272,7 @@ void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
 }
 
 void Viewport::brushMapsChanged() {
-    const core::Layers* layers = m_document.layers();
+    const core::DepthLayers* layers = m_document.depthLayers();
     if (!m_brushMapsVisible || !layers)
         return;
     const int width = layers->stack.width, height = layers->stack.height;
@@ -307,7 +307,7 @@ bool Viewport::canCapture() const {
     return m_capturer && mesh() && m_document.mesh().triangleCount() > 0;
 }
 
-core::Result<core::LayerStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
+core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
                                                        core::CaptureStats* stats) {
     if (!canCapture())
         return core::Error{tr("The layer capture is not available.").toStdString()};
@@ -319,37 +319,37 @@ core::Result<core::LayerStack> Viewport::captureLayers(const core::View& view, b
 }
 
 void Viewport::showLayers() {
-    const core::Layers* layers = m_document.layers();
+    const core::DepthLayers* layers = m_document.depthLayers();
     if (!m_compositor || !layers)
         return;
     makeCurrent();
     uploadMeshIfDirty();
     const core::Status status =
-        m_compositorHasMesh ? m_compositor->setLayers(*layers) : core::Status::success();
+        m_compositorHasMesh ? m_compositor->setDepthLayers(*layers) : core::Status::success();
     doneCurrent();
     // Without them the mesh renderer goes on drawing the shaded view.
-    m_layersShown = m_compositorHasMesh && status.ok();
+    m_depthLayersShown = m_compositorHasMesh && status.ok();
     if (!status)
-        reportLayerError(status);
+        reportDepthLayerError(status);
     update();
 }
 
 void Viewport::showSegmentation() {
-    const core::Layers* layers = m_document.layers();
-    if (!m_compositor || !layers || !m_layersShown)
+    const core::DepthLayers* layers = m_document.depthLayers();
+    if (!m_compositor || !layers || !m_depthLayersShown)
         return;
     makeCurrent();
     const core::Status status = m_compositor->updateSegmentation(*layers);
     doneCurrent();
     if (!status) {
-        m_layersShown = false;
-        reportLayerError(status);
+        m_depthLayersShown = false;
+        reportDepthLayerError(status);
     }
     update();
 }
 
 void Viewport::regionOrderChanged() {
-    if (!m_compositor || !m_layersShown || !m_document.layers())
+    if (!m_compositor || !m_depthLayersShown || !m_document.depthLayers())
         return;
     makeCurrent();
     // Pruned: the same picture, fewer regions to test per pixel.
@@ -379,9 +379,10 @@ void Viewport::updateHoverHighlight() {
     if (!m_hoverHighlight)
         return;
     std::uint32_t region = core::kNone;
-    const core::Layers* layers = m_document.layers();
-    if (m_cursorInside && isShowingLayers() && layers && m_cursor.x() >= 0 && m_cursor.y() >= 0 &&
-        m_cursor.x() < layers->stack.width && m_cursor.y() < layers->stack.height) {
+    const core::DepthLayers* layers = m_document.depthLayers();
+    if (m_cursorInside && isShowingDepthLayers() && layers && m_cursor.x() >= 0 &&
+        m_cursor.y() >= 0 && m_cursor.x() < layers->stack.width &&
+        m_cursor.y() < layers->stack.height) {
         const std::size_t pixel = std::size_t(m_cursor.y()) * std::size_t(layers->stack.width) +
                                   std::size_t(m_cursor.x());
         const std::uint32_t f = m_document.visibleFragment(pixel);
@@ -391,8 +392,8 @@ void Viewport::updateHoverHighlight() {
     setHighlightRegion(region);
 }
 
-bool Viewport::isShowingLayers() const {
-    return m_layersShown && m_compositor && m_document.layers();
+bool Viewport::isShowingDepthLayers() const {
+    return m_depthLayersShown && m_compositor && m_document.depthLayers();
 }
 
 void Viewport::cameraMoved() {
@@ -402,7 +403,7 @@ void Viewport::cameraMoved() {
 
 void Viewport::invalidateView() {
     ++m_viewSerial;
-    m_layersShown = false;
+    m_depthLayersShown = false;
     m_mapsRect = {}; // they describe the old view
     emit viewChanged();
     update();
@@ -432,8 +433,8 @@ void Viewport::initializeGL() {
     QString layerError;
     if (m_renderer) {
         // Without these the mesh still shows; only the layer views are missing.
-        auto capturer = std::make_unique<render::GlLayerCapturer>();
-        auto compositor = std::make_unique<render::LayerCompositor>();
+        auto capturer = std::make_unique<render::GlDepthCapturer>();
+        auto compositor = std::make_unique<render::DepthCompositor>();
         const core::Status captureStatus = capturer->initialize();
         const core::Status compositeStatus = compositor->initialize();
         if (captureStatus && compositeStatus) {
@@ -443,7 +444,7 @@ void Viewport::initializeGL() {
             layerError = tr("The layer views could not start: %1")
                              .arg(QString::fromStdString(captureStatus ? compositeStatus.error()
                                                                        : captureStatus.error()));
-            capturer->layerCapture().release();
+            capturer->depthCapture().release();
             compositor->release();
         }
         // Without it painting works, only the brush outline and maps are missing.
@@ -459,7 +460,7 @@ void Viewport::initializeGL() {
             this, [this] { emit glInitializationFailed(m_glError); }, Qt::QueuedConnection);
     } else if (!layerError.isEmpty()) {
         QMetaObject::invokeMethod(
-            this, [this, layerError] { emit layerRenderingFailed(layerError); },
+            this, [this, layerError] { emit depthLayerRenderingFailed(layerError); },
             Qt::QueuedConnection);
     }
     m_meshDirty = true;
@@ -514,20 +515,20 @@ void Viewport::uploadMeshIfDirty() {
                 m_compositor->setMetallicRoughness(std::uint32_t(page),
                                                    texture->metallicRoughnessPage(page));
         if (!status)
-            reportLayerError(status);
+            reportDepthLayerError(status);
     }
-    m_layersShown = m_layersShown && m_compositorHasMesh;
+    m_depthLayersShown = m_depthLayersShown && m_compositorHasMesh;
     m_meshDirty = false;
     m_paintedMeshDirty = false;
     m_standInDirty = true; // setMesh dropped it
 }
 
-void Viewport::reportLayerError(const core::Status& status) {
+void Viewport::reportDepthLayerError(const core::Status& status) {
     // Queued: this may run inside paintGL or with the context current.
     const QString message =
         tr("The layers cannot be shown: %1").arg(QString::fromStdString(status.error()));
     QMetaObject::invokeMethod(
-        this, [this, message] { emit layerRenderingFailed(message); }, Qt::QueuedConnection);
+        this, [this, message] { emit depthLayerRenderingFailed(message); }, Qt::QueuedConnection);
 }
 
 void Viewport::paintGL() {
@@ -543,7 +544,7 @@ void Viewport::paintGL() {
     // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
     const core::View current = view();
     m_lastFrameTriangles = 0;
-    if (isShowingLayers()) {
+    if (isShowingDepthLayers()) {
         flushPaint(m_compositorPaint, true);
         m_compositor->draw(m_composite);
     } else {
@@ -560,12 +561,12 @@ void Viewport::paintGL() {
     render::BrushOverlayOptions overlay;
     overlay.viewWidth = current.width;
     overlay.viewHeight = current.height;
-    const core::Layers* layers = m_document.layers();
+    const core::DepthLayers* layers = m_document.depthLayers();
     if (m_brushMapsVisible && layers && !m_mapsUpload.empty()) {
         m_overlay->setMaps(layers->stack.width, layers->stack.height, m_brushMaps, m_mapsUpload);
         m_mapsUpload = {};
     }
-    if (m_brushMapsVisible && layers && isShowingLayers())
+    if (m_brushMapsVisible && layers && isShowingDepthLayers())
         overlay.maps = m_mapsRect;
     if (brushOutlineVisible()) {
         overlay.center = {float(m_cursor.x()), float(m_cursor.y())};
@@ -599,7 +600,7 @@ void Viewport::drawStabilizerString() {
 class Viewport::ContextConnectivity : public core::ConnectivityEngine {
 public:
     explicit ContextConnectivity(Viewport& viewport) : m_viewport(viewport) {}
-    core::Connectivity compute(const core::LayerStack& stack,
+    core::Connectivity compute(const core::DepthStack& stack,
                                const core::ConnectivityOptions& options,
                                const core::SurfaceGeometry* geometry) override {
         m_viewport.makeCurrent();
@@ -651,7 +652,7 @@ void Viewport::releaseGl() {
     m_connectivity.reset();
     m_renderer.reset();
     doneCurrent();
-    m_layersShown = false;
+    m_depthLayersShown = false;
 }
 
 } // namespace ui

@@ -29,7 +29,7 @@ class Document;
 
 namespace render {
 class BrushOverlay;
-class GlLayerCapturer;
+class GlDepthCapturer;
 class MeshRenderer;
 } // namespace render
 
@@ -55,7 +55,7 @@ enum class PointerKind { Mouse, Pen, Eraser };
  * The 3D view of a core::Document: turns mouse input into moves of the document's camera and
  * draws the model. While the view moves, or before the layers of the current view exist, it
  * draws the mesh with render::MeshRenderer; once they exist, it draws them with
- * render::LayerCompositor in the chosen display. The camera buttons follow the CameraMapping
+ * render::DepthCompositor in the chosen display. The camera buttons follow the CameraMapping
  * (by default middle drag orbits, Shift+middle pans, the wheel zooms, and Alt+left/right/middle
  * orbit, zoom and pan for tablets). The plain left button belongs to painting (the paint*
  * signals). Painting shows without a recapture: once the document has a paint target the
@@ -117,7 +117,8 @@ public:
     /** The GL error met in initializeGL, or empty. */
     QString glError() const { return m_glError; }
 
-    // Layers, driven by ui::LayerBuilder (the GL work it needs happens in this widget's context).
+    // Depth layers, driven by ui::DepthLayersBuilder (the GL work it needs happens in this widget's
+    // context).
     /** True once the context is up and a model is loaded: captureLayers() can run. */
     bool canCapture() const;
     /**
@@ -126,21 +127,21 @@ public:
      */
     void setConnectivityBackend(render::ConnectivityBackend backend);
     /**
-     * The engine for core::finishLayers / resegmentLayers: nullptr for the C++ reference (safe on
-     * any thread), or the compute pass in this widget's context (GUI thread only).
+     * The engine for core::finishDepthLayers / resegmentDepthLayers: nullptr for the C++ reference
+     * (safe on any thread), or the compute pass in this widget's context (GUI thread only).
      */
     core::ConnectivityEngine* connectivityEngine();
     /** The backend in use once resolved for this renderer (Cpu before the first use). */
     render::ConnectivityBackend connectivityBackend() const;
     /** The GPU part of build_layers for view, with this widget's context current. */
-    core::Result<core::LayerStack> captureLayers(const core::View& view, bool cullBackFaces,
+    core::Result<core::DepthStack> captureLayers(const core::View& view, bool cullBackFaces,
                                                  core::CaptureStats* stats);
     /** Shows the document's layers with the compositor (they must be of the current view). */
     void showLayers();
     /** The document's layers were re-segmented: updates the compositor's regions. */
     void showSegmentation();
     /** True while the picture comes from the layers (the compositor), not from the mesh. */
-    bool isShowingLayers() const;
+    bool isShowingDepthLayers() const;
     /** The document's region order changed (pop-up, hiding, undo): redraws with it. */
     void regionOrderChanged();
     /**
@@ -197,7 +198,7 @@ public:
     QPointF penTilt() const { return m_tilt; }
 
     const render::CompositeOptions& compositeOptions() const { return m_composite; }
-    render::LayerDisplay display() const { return m_composite.display; }
+    render::DepthLayerDisplay display() const { return m_composite.display; }
     std::uint32_t displayLayer() const { return m_composite.layer; }
 
 public slots:
@@ -205,7 +206,7 @@ public slots:
     void cameraMoved();
     void frameAll();
     void setOrthographic(bool orthographic);
-    void setDisplay(render::LayerDisplay display);
+    void setDisplay(render::DepthLayerDisplay display);
     /** The layer the SingleLayer display shows (1-based). */
     void setDisplayLayer(std::uint32_t layer);
     void setBoundariesVisible(bool visible);
@@ -222,7 +223,7 @@ signals:
     /** Emitted once, from the event loop, if the renderer cannot start (message for the user). */
     void glInitializationFailed(const QString& message);
     /** A render part other than the mesh renderer failed to start (layers will not show). */
-    void layerRenderingFailed(const QString& message);
+    void depthLayerRenderingFailed(const QString& message);
     /** The current model's stand-in was made (hasStandIn()). */
     void standInReady();
 
@@ -270,7 +271,7 @@ private:
     void uploadStandInIfDirty();
     /** The camera moved by the wheel: the stand-in shows until it rests. */
     void wheelMoved();
-    void reportLayerError(const core::Status& status);
+    void reportDepthLayerError(const core::Status& status);
     void releaseGl();
     /** What paint changed since a renderer last got it: a bounding rectangle per page. */
     struct PendingPaint {
@@ -287,12 +288,12 @@ private:
     core::Document& m_document;
     // These live only while the context does.
     std::unique_ptr<render::MeshRenderer> m_renderer;
-    std::unique_ptr<render::GlLayerCapturer> m_capturer;
+    std::unique_ptr<render::GlDepthCapturer> m_capturer;
     class ContextConnectivity;
     render::ConnectivityBackend m_connectivityRequest = render::ConnectivityBackend::Auto;
     std::unique_ptr<render::GlConnectivityEngine> m_connectivity;
     std::unique_ptr<ContextConnectivity> m_contextConnectivity;
-    std::unique_ptr<render::LayerCompositor> m_compositor;
+    std::unique_ptr<render::DepthCompositor> m_compositor;
     std::unique_ptr<render::BrushOverlay> m_overlay;
     bool m_meshDirty = false;
     bool m_paintedMeshDirty = false; // only the paint target's textures or colours are new
@@ -300,7 +301,7 @@ private:
     const core::PaintTarget* m_shownTarget = nullptr;
     bool m_compositorHasMesh = false;
     /** The compositor holds the document's layers of the current view. */
-    bool m_layersShown = false;
+    bool m_depthLayersShown = false;
     std::uint64_t m_viewSerial = 1;
     render::CompositeOptions m_composite;
     QString m_glError;

@@ -73,7 +73,7 @@ bool Viewport::pointerPress(Qt::MouseButton button, Qt::KeyboardModifiers modifi
     m_pressPointer = pointer;
     // Layer-aware rotation: about the visible surface point under the cursor, on any layer.
     m_orbitPivot.reset();
-    if (drag == Drag::Orbit && m_orbitAboutSurface && isShowingLayers())
+    if (drag == Drag::Orbit && m_orbitAboutSurface && isShowingDepthLayers())
         m_orbitPivot = m_document.surfacePoint({float(m_cursor.x()), float(m_cursor.y())});
     if (drag == Drag::Paint)
         emit paintPressed(toDevicePixels(position), pressure, modifiers);

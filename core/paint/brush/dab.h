@@ -14,10 +14,10 @@
 
 namespace core {
 
-/** One pixel of a paintable map Mp: the fragment (of the view's LayerStack) painted there. */
+/** One pixel of a paintable map Mp: the fragment (of the view's DepthStack) painted there. */
 struct MapPixel {
     std::uint32_t pixel = 0;    // y * width + x
-    std::uint32_t fragment = 0; // index into LayerStack arrays; its layer is the Mp layer
+    std::uint32_t fragment = 0; // index into DepthStack arrays; its layer is the Mp layer
     float distance = 0.0f;      // screen distance from the dab centre to the pixel centre, px
 };
 

@@ -392,10 +392,10 @@ std::optional<glm::vec3> surfacePointAt(const Mesh& mesh, const View& view, std:
     return glm::vec3(float(b0 / sum), float(b1 / sum), float(b2 / sum));
 }
 
-Dab regionFillDab(const Layers& layers, std::uint32_t region, float opacity) {
+Dab regionFillDab(const DepthLayers& layers, std::uint32_t region, float opacity) {
     Dab dab;
     dab.opacity = opacity;
-    const LayerStack& stack = layers.stack;
+    const DepthStack& stack = layers.stack;
     const std::vector<Region>& regions = layers.segmentation.graph.regions;
     if (region >= regions.size() || layers.segmentation.region.size() != stack.fragmentCount())
         return dab;

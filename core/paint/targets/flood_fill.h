@@ -18,7 +18,7 @@
 
 namespace core {
 
-struct Layers;
+struct DepthLayers;
 
 /** What a flood fill covers (the three fill modes). */
 enum class FillMode : std::uint8_t {
@@ -50,7 +50,7 @@ std::optional<glm::vec3> surfacePointAt(const Mesh& mesh, const View& view, std:
  * centred on the region with a radius that covers it, so a hard brush paints it all at full
  * weight through PaintTarget::paint(). No pixels for an unknown region.
  */
-Dab regionFillDab(const Layers& layers, std::uint32_t region, float opacity);
+Dab regionFillDab(const DepthLayers& layers, std::uint32_t region, float opacity);
 
 /**
  * The triangles of triangle's connected component (MeshTopology::component), ascending; just

@@ -145,8 +145,8 @@ bool PaintTarget::Context::overlapsMap(const ViewTriangle& t) const {
            sums[ay * stride + bx] + sums[by * stride + ax];
 }
 
-bool PaintTarget::Context::beginDab(const Layers& layers, const Dab& d) {
-    const LayerStack& st = layers.stack;
+bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
+    const DepthStack& st = layers.stack;
     cullBackFaces = layers.options.cullBackFaces;
     updateView(layers.view);
     nextDab();

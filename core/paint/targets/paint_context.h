@@ -171,7 +171,7 @@ struct StrokeTile {
     // And per row y of the tile, its texels [rowX0[y], rowX1[y]) (none: rowX0[y] >= rowX1[y]).
     std::array<std::uint8_t, kTextureTile> rowX0{}, rowX1{};
     // On a paint layer, that dab's tiles of the layer's channels it writes (nullptr: not one).
-    std::array<std::uint8_t*, 3> layerTiles{};
+    std::array<std::uint8_t*, 3> paintLayerTiles{};
     std::vector<float> groupAlpha; // alpha when the current dab group first touched it
     std::uint32_t group = 0;       // that group
 };
@@ -272,7 +272,7 @@ struct PaintTarget::Context {
             dab = 1;
         }
     }
-    bool beginDab(const Layers& layers, const Dab& d);
+    bool beginDab(const DepthLayers& layers, const Dab& d);
     /**
      * Starts a paintElements() call: a new dab number, nothing touched yet. Returns the coverage
      * the elements get, the stroke's opacity (0 when there is nothing to paint).
@@ -329,7 +329,7 @@ struct PaintTarget::Context {
      * painted as if their pixel were in the map, so the paint ends at the surface's outline and
      * at the dab's circle, not at the saw-tooth of whole pixels around them.
      */
-    bool coveredAtEdge(const LayerStack& stack, std::uint32_t own, const glm::vec3& p, float px,
+    bool coveredAtEdge(const DepthStack& stack, std::uint32_t own, const glm::vec3& p, float px,
                        float py) const {
         const float fx = std::floor(px), fy = std::floor(py);
         const int x = int(fx), y = int(fy);

@@ -19,7 +19,7 @@
 
 namespace core {
 
-struct Layers;
+struct DepthLayers;
 
 /** Texture tiles are kTextureTile × kTextureTile texels (edge tiles are smaller). */
 inline constexpr int kTextureTile = 64;
@@ -125,7 +125,7 @@ public:
      * +0.5). layers must be the view the dab was tracked in. Returns what changed (valid until the
      * next call); empty outside a stroke. Map entries outside the stack are ignored.
      */
-    virtual const PaintChanges& paint(const Layers& layers, const Dab& dab) = 0;
+    virtual const PaintChanges& paint(const DepthLayers& layers, const Dab& dab) = 0;
     /**
      * Paints elements at full weight, as a dab covering them would (flood fill): each gets the
      * stroke's opacity of the brush colour; texture pages pad the seams around painted texels.
@@ -212,7 +212,7 @@ public:
     ~TextureTarget() override;
 
     PaintTargetKind kind() const override { return PaintTargetKind::Texture; }
-    const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paint(const DepthLayers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     std::optional<glm::vec4> colorAt(std::uint32_t triangle,
                                      const glm::vec3& weights) const override;
@@ -232,8 +232,8 @@ public:
      * The paint layers over the base. Change them through the Document (its history); after a
      * change made directly, call refresh() with the tiles it affected.
      */
-    PaintLayerStack& layerStack() { return *m_stack; }
-    const PaintLayerStack& layerStack() const { return *m_stack; }
+    PaintLayerStack& paintLayerStack() { return *m_stack; }
+    const PaintLayerStack& paintLayerStack() const { return *m_stack; }
     /** Where the next stroke or fill paints. A selection of a missing layer paints nothing. */
     const PaintSelection& selection() const { return m_selection; }
     void setSelection(PaintSelection selection) { m_selection = selection; }
@@ -333,7 +333,7 @@ public:
     ~VertexColorTarget() override;
 
     PaintTargetKind kind() const override { return PaintTargetKind::VertexColors; }
-    const PaintChanges& paint(const Layers& layers, const Dab& dab) override;
+    const PaintChanges& paint(const DepthLayers& layers, const Dab& dab) override;
     const PaintChanges& paintElements(std::span<const PaintElement> elements) override;
     std::optional<glm::vec4> colorAt(std::uint32_t triangle,
                                      const glm::vec3& weights) const override;

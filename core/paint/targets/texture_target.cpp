@@ -266,7 +266,7 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
     for (const Page& page : pages)
         tilesPerPage.push_back(std::uint32_t(page.tilesX * page.tilesY));
     target->setUpStrokeTiles(tilesPerPage, std::size_t(kTextureTile) * kTextureTile,
-                             std::size_t(kTextureTile) * kTextureTile * kLayerTexelBytes);
+                             std::size_t(kTextureTile) * kTextureTile * kPaintLayerTexelBytes);
     return Result<std::unique_ptr<TextureTarget>>(std::move(target));
 }
 

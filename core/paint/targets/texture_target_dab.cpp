@@ -62,7 +62,7 @@ constexpr std::size_t kSecondPassParallelFrom = 2048;
 
 } // namespace
 
-const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
+const PaintChanges& TextureTarget::paint(const DepthLayers& layers, const Dab& dab) {
     Context& c = *m_context;
     c.changes.clear();
     if (!c.inStroke || m_mode == StrokeMode::Nothing || !c.beginDab(layers, dab))
@@ -87,7 +87,7 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
         const bool roundTip = !tip.textured();
         const float tipRadius = tip.radius(), hardness = tip.hardness();
         const float toleranceScale = c.toleranceScale, toleranceOffset = c.toleranceOffset;
-        const LayerStack& stack = layers.stack;
+        const DepthStack& stack = layers.stack;
 
         // Triangle si: its texels the dab reaches go to texels from used on (used counts them),
         // counted per slot of their tile in slotCounts (those of tiles without a slot get theirs
@@ -538,13 +538,13 @@ const PaintChanges& TextureTarget::paint(const Layers& layers, const Dab& dab) {
                             const std::uint32_t tile = st->key.tile;
                             const std::lock_guard lock(allocating);
                             for (std::size_t ch = 0; ch < kPaintChannels; ++ch)
-                                st->layerTiles[ch] =
+                                st->paintLayerTiles[ch] =
                                     m_planes[ch] != nullptr
                                         ? m_planes[ch]->writableTile(pageIndex, tile)
                                         : nullptr;
                         }
                     }
-                    channelTiles = st->layerTiles;
+                    channelTiles = st->paintLayerTiles;
                 }
                 Context::wrote(*st, tx % kTextureTile, ty % kTextureTile);
                 if (onBase) {

@@ -72,7 +72,7 @@ std::size_t TextureTarget::tileBytes(TileKey key) const {
         return texels * 4;
     if (!layerOfPlane(key.plane))
         return 0;
-    return texels * ((key.plane & 1) != 0 ? 1 : kLayerTexelBytes);
+    return texels * ((key.plane & 1) != 0 ? 1 : kPaintLayerTexelBytes);
 }
 
 std::optional<std::size_t> TextureTarget::layerOfPlane(std::uint64_t plane) const {
@@ -112,7 +112,7 @@ bool TextureTarget::readTile(TileKey key, std::span<std::uint8_t> out) const {
             std::fill(out.begin(), out.end(), std::uint8_t(255));
             return true;
         }
-        const std::size_t n = size / kLayerTexelBytes;
+        const std::size_t n = size / kPaintLayerTexelBytes;
         for (std::size_t c = 0; c < kPaintChannels; ++c) {
             const std::size_t bytes = n * std::size_t(channelTexelBytes(PaintChannel(c)));
             const std::span<std::uint8_t> part = out.subspan(channelOffset(c, n), bytes);
@@ -141,7 +141,7 @@ bool TextureTarget::writeTile(TileKey key, std::span<const std::uint8_t> bytes) 
         if ((key.plane & 1) != 0) {
             m_stack->maskPlane(index).writeTile(planeTile, bytes);
         } else {
-            const std::size_t n = size / kLayerTexelBytes;
+            const std::size_t n = size / kPaintLayerTexelBytes;
             for (std::size_t c = 0; c < kPaintChannels; ++c) {
                 const auto channel = PaintChannel(c);
                 const std::span<const std::uint8_t> part =

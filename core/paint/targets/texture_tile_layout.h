@@ -13,7 +13,7 @@ namespace core {
 static_assert(TiledPlane::kPlaneTile == kTextureTile, "paint layers tile as the pages do");
 
 /** Bytes per texel of a paint layer's channels as one undo tile: RGBA, roughness, metallic. */
-inline constexpr std::size_t kLayerTexelBytes = 8;
+inline constexpr std::size_t kPaintLayerTexelBytes = 8;
 /** Where a channel's plane starts in such a tile of n texels, and its bytes per texel. */
 inline std::size_t channelOffset(std::size_t channel, std::size_t n) {
     return channel == 0 ? 0 : channel == 1 ? n * 4 : n * 6;

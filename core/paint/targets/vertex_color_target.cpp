@@ -141,7 +141,7 @@ const PaintChanges& VertexColorTarget::paintElements(std::span<const PaintElemen
     return touchedChanges();
 }
 
-const PaintChanges& VertexColorTarget::paint(const Layers& layers, const Dab& dab) {
+const PaintChanges& VertexColorTarget::paint(const DepthLayers& layers, const Dab& dab) {
     Context& c = *m_context;
     c.changes.clear();
     if (!c.inStroke || !c.beginDab(layers, dab))

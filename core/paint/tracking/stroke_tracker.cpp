@@ -49,7 +49,7 @@ bool sane(glm::vec2 v) {
 
 } // namespace
 
-std::uint32_t visibleFragmentByRank(const LayerStack& stack,
+std::uint32_t visibleFragmentByRank(const DepthStack& stack,
                                     std::span<const std::uint32_t> fragmentRegion,
                                     std::span<const std::uint32_t> regionRank, std::size_t pixel) {
     if (pixel + 1 >= stack.offsets.size())
@@ -67,8 +67,8 @@ std::uint32_t visibleFragmentByRank(const LayerStack& stack,
     return best;
 }
 
-bool StrokeTracker::setLayers(const LayerStack& stack, const Connectivity& connectivity) {
-    clearLayers();
+bool StrokeTracker::setDepthLayers(const DepthStack& stack, const Connectivity& connectivity) {
+    clearDepthLayers();
     const std::size_t pixels = stack.pixelCount();
     const std::size_t fragments = stack.fragmentCount();
     if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != pixels + 1 ||
@@ -88,11 +88,11 @@ bool StrokeTracker::setLayers(const LayerStack& stack, const Connectivity& conne
     return true;
 }
 
-bool StrokeTracker::setLayers(const Layers& layers) {
-    return setLayers(layers.stack, layers.connectivity);
+bool StrokeTracker::setDepthLayers(const DepthLayers& layers) {
+    return setDepthLayers(layers.stack, layers.connectivity);
 }
 
-void StrokeTracker::clearLayers() {
+void StrokeTracker::clearDepthLayers() {
     m_stack = nullptr;
     m_connectivity = nullptr;
     m_inStroke = false;
@@ -315,7 +315,7 @@ bool StrokeTracker::searchStep(const Node& n, int d, const std::uint8_t* nodeLin
     const auto q = std::uint32_t(ny * w + nx);
     const std::uint32_t begin = offsets[q];
     if (l > offsets[q + 1] - begin)
-        return false; // a link past the neighbour's fragments: ignored, as segmentLayers does
+        return false; // a link past the neighbour's fragments: ignored, as segmentDepthLayers does
     const std::uint32_t g = begin + l - 1;
     std::uint32_t& mark = m_fragments[g].*Mark;
     if (mark == m_gen || isHidden(g))

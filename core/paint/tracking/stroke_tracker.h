@@ -15,7 +15,7 @@
 
 namespace core {
 
-struct Layers;
+struct DepthLayers;
 
 /**
  * The visible fragment of a pixel (docs/architecture.md §3 step 3): the index of the fragment whose
@@ -28,7 +28,7 @@ using VisibleFragmentFn = std::function<std::uint32_t(std::size_t pixel)>;
  * place in the front-to-back list (lower is nearer the front), kNone for a hidden region;
  * fragmentRegion is Segmentation::region. kNone when every fragment there is hidden or unknown.
  */
-std::uint32_t visibleFragmentByRank(const LayerStack& stack,
+std::uint32_t visibleFragmentByRank(const DepthStack& stack,
                                     std::span<const std::uint32_t> fragmentRegion,
                                     std::span<const std::uint32_t> regionRank, std::size_t pixel);
 
@@ -54,7 +54,8 @@ struct StrokePoint {
  * R_max (Brush::effectiveTrackRadius()) with at most ⌊√2·R_max⌋ steps. Mt is grown lazily, only
  * as far as a lookup needs (see trackedFragment in the .cpp).
  *
- * Not thread-safe. The stack and connectivity passed to setLayers() are referenced, not copied.
+ * Not thread-safe. The stack and connectivity passed to setDepthLayers() are referenced, not
+ * copied.
  */
 class StrokeTracker {
 public:
@@ -65,11 +66,11 @@ public:
      * call. Ends any stroke. Returns false (and paints nothing until the next call) when the
      * connectivity does not belong to the stack.
      */
-    bool setLayers(const LayerStack& stack, const Connectivity& connectivity);
-    /** setLayers(layers.stack, layers.connectivity). */
-    bool setLayers(const Layers& layers);
+    bool setDepthLayers(const DepthStack& stack, const Connectivity& connectivity);
+    /** setDepthLayers(layers.stack, layers.connectivity). */
+    bool setDepthLayers(const DepthLayers& layers);
     /** Forgets the layers (e.g. when the view changes) and ends any stroke. */
-    void clearLayers();
+    void clearDepthLayers();
 
     /** The region order's visible fragment; an empty function means layer 1 (the default order). */
     void setVisibleFragment(VisibleFragmentFn visible) { m_visible = std::move(visible); }
@@ -188,7 +189,7 @@ private:
     /** Draws the dab's jitter and angle; moves center by the scatter. */
     void jitterDab(glm::vec2& center, Dab& dab);
 
-    const LayerStack* m_stack = nullptr;
+    const DepthStack* m_stack = nullptr;
     const Connectivity* m_connectivity = nullptr;
     VisibleFragmentFn m_visible;
     std::span<const std::uint8_t> m_hidden;

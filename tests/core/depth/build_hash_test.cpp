@@ -50,7 +50,7 @@ Hashes build(const core::Mesh& mesh, int width, int height, unsigned threads) {
     camera.frame(mesh.bounds());
     camera.orbit(30.0f, 20.0f);
     const core::View view = camera.view(width, height);
-    core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
+    core::DepthStack stack = core::captureDepthLayersCpu(mesh, view, {true, 2});
     Hashes out;
     Hash h;
     h.vector(stack.offsets);
@@ -59,10 +59,10 @@ Hashes build(const core::Mesh& mesh, int width, int height, unsigned threads) {
     out.stack = h.value;
 
     const core::MeshTopology topology = core::buildMeshTopology(mesh);
-    core::LayerOptions options;
+    core::DepthLayerOptions options;
     options.threads = threads;
-    const core::Layers layers =
-        core::finishLayers(std::move(stack), {}, mesh, topology, view, options);
+    const core::DepthLayers layers =
+        core::finishDepthLayers(std::move(stack), {}, mesh, topology, view, options);
 
     // The planes of the triangles the view shows (the only ones connectivity reads).
     Hash planes;

@@ -49,7 +49,7 @@ struct Scene {
     core::Mesh mesh;
     core::MeshTopology topology;
     core::View view;
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::SurfaceGeometry geometry;
 };
 
@@ -58,7 +58,7 @@ Scene captureScene(core::Mesh mesh, const core::View& view, bool cull = true) {
     s.mesh = std::move(mesh);
     s.topology = core::buildMeshTopology(s.mesh);
     s.view = view;
-    s.stack = core::captureLayersCpu(s.mesh, view, {cull, 2});
+    s.stack = core::captureDepthLayersCpu(s.mesh, view, {cull, 2});
     s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, view);
     return s;
 }
@@ -86,7 +86,7 @@ Result run(const Scene& s, ConnectionTest test, float threshold = 0.001f) {
     options.threads = 2;
     Result r;
     r.conn = core::computeConnectivity(s.stack, options, &s.geometry);
-    r.seg = core::segmentLayers(s.stack, r.conn, 2);
+    r.seg = core::segmentDepthLayers(s.stack, r.conn, 2);
     r.quality = core::measureConnectivity(s.stack, r.conn, s.topology);
     return r;
 }
@@ -194,7 +194,7 @@ TEST(Connectivity, BuiltinModelsKeepTrianglesWholeAndPartsApart) {
             s.mesh = model.mesh;
             s.topology = topology;
             s.view = view;
-            s.stack = core::captureLayersCpu(s.mesh, view, {true, 2});
+            s.stack = core::captureDepthLayersCpu(s.mesh, view, {true, 2});
             s.geometry = core::makeSurfaceGeometry(s.mesh, topology, view);
             ASSERT_GT(s.stack.fragmentCount(), 0u);
             const Result surface = run(s, ConnectionTest::Surface);
@@ -290,7 +290,7 @@ TEST(Connectivity, DeepPixelsBatchedGiveTheSameLinksAsOneByOne) {
             tri.corners[0] = core::kNone;
         geometry.triangles.push_back(tri);
     }
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = w;
     stack.height = h;
     stack.offsets.push_back(0);
@@ -351,7 +351,7 @@ TEST(SurfaceGeometry, WithAStackOnlyTheShownTrianglesGetPlanes) {
         const core::MeshTopology topology = core::buildMeshTopology(mesh);
         const core::Camera camera = core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 2.0f);
         const core::View view = camera.view(width, height);
-        const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 2});
+        const core::DepthStack stack = core::captureDepthLayersCpu(mesh, view, {true, 2});
         const core::SurfaceGeometry all = core::makeSurfaceGeometry(mesh, topology, view);
         const core::SurfaceGeometry shown = core::makeSurfaceGeometry(mesh, topology, view, &stack);
         ASSERT_EQ(sparse, 8 * stack.fragmentCount() < mesh.triangleCount());
@@ -506,7 +506,7 @@ TEST(CpuCapture, CoversEachPixelOfASplitQuadOnce) {
     addGrid(mesh, {-0.6f, -0.45f, 0.0f}, {1.2f, 0, 0}, {0, 0.9f, 0}, 5);
     finish(mesh);
     const core::View view = frontView(97, 61, true);
-    const core::LayerStack stack = core::captureLayersCpu(mesh, view, {true, 3});
+    const core::DepthStack stack = core::captureDepthLayersCpu(mesh, view, {true, 3});
     ASSERT_EQ(stack.offsets.size(), stack.pixelCount() + 1);
     EXPECT_EQ(stack.maxLayers(), 1u);
     // Every pixel centre inside the quad's projection is covered.
@@ -529,15 +529,15 @@ TEST(CpuCapture, CullsBackFacesUnlessTwoSided) {
     addGrid(mesh, {0.5f, -0.5f, 0.0f}, {-1.0f, 0, 0}, {0, 1.0f, 0}, 1); // faces -Z
     finish(mesh);
     const core::View view = frontView(40, 40);
-    EXPECT_EQ(core::captureLayersCpu(mesh, view, {true, 1}).fragmentCount(), 0u);
-    EXPECT_GT(core::captureLayersCpu(mesh, view, {false, 1}).fragmentCount(), 0u);
+    EXPECT_EQ(core::captureDepthLayersCpu(mesh, view, {true, 1}).fragmentCount(), 0u);
+    EXPECT_GT(core::captureDepthLayersCpu(mesh, view, {false, 1}).fragmentCount(), 0u);
 }
 
 TEST(CpuCapture, PerspectiveDepthIsThePlaneDepthAndThreadsDoNotMatter) {
     const core::Mesh mesh = tiltedPlane(60.0f);
     const core::View view = frontView(90, 70);
-    const core::LayerStack a = core::captureLayersCpu(mesh, view, {true, 1});
-    const core::LayerStack b = core::captureLayersCpu(mesh, view, {true, 4});
+    const core::DepthStack a = core::captureDepthLayersCpu(mesh, view, {true, 1});
+    const core::DepthStack b = core::captureDepthLayersCpu(mesh, view, {true, 4});
     EXPECT_EQ(a.offsets, b.offsets);
     EXPECT_EQ(a.depth, b.depth);
     EXPECT_EQ(a.triangle, b.triangle);
@@ -556,8 +556,8 @@ TEST(CpuCapture, PerspectiveDepthIsThePlaneDepthAndThreadsDoNotMatter) {
         }
 }
 
-TEST(LayerStack, CountsLayers) {
-    core::LayerStack stack;
+TEST(DepthStack, CountsLayers) {
+    core::DepthStack stack;
     stack.width = 3;
     stack.height = 1;
     stack.offsets = {0, 2, 2, 5};
@@ -567,8 +567,8 @@ TEST(LayerStack, CountsLayers) {
     EXPECT_EQ(stack.fragmentsPerLayer(), (std::vector<std::uint32_t>{2, 2, 1}));
     EXPECT_EQ(stack.fragment(2, 3), 4u);
     EXPECT_EQ(stack.fragment(1, 1), core::kNone);
-    EXPECT_EQ(core::LayerStack{}.maxLayers(), 0u);
-    EXPECT_TRUE(core::LayerStack{}.fragmentsPerLayer().empty());
+    EXPECT_EQ(core::DepthStack{}.maxLayers(), 0u);
+    EXPECT_TRUE(core::DepthStack{}.fragmentsPerLayer().empty());
 }
 
 } // namespace connectivity_test

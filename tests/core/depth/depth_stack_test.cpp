@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// LayerStack's row spans against a scan of every pixel.
+// DepthStack's row spans against a scan of every pixel.
 #include <random>
 #include <utility>
 #include <vector>
@@ -11,8 +11,8 @@
 namespace layer_stack_test {
 
 /** A stack of the given size whose pixel p has counts[p] fragments (depths and ids unused). */
-core::LayerStack stackWith(int width, int height, const std::vector<std::uint32_t>& counts) {
-    core::LayerStack stack;
+core::DepthStack stackWith(int width, int height, const std::vector<std::uint32_t>& counts) {
+    core::DepthStack stack;
     stack.width = width;
     stack.height = height;
     stack.offsets.assign(counts.size() + 1, 0u);
@@ -24,7 +24,7 @@ core::LayerStack stackWith(int width, int height, const std::vector<std::uint32_
 }
 
 /** The span by looking at every pixel of the row. */
-std::pair<int, int> scannedSpan(const core::LayerStack& stack, int y) {
+std::pair<int, int> scannedSpan(const core::DepthStack& stack, int y) {
     int first = -1, last = -1;
     for (int x = 0; x < stack.width; ++x)
         if (stack.layerCount(std::size_t(y) * std::size_t(stack.width) + std::size_t(x)) > 0) {
@@ -35,7 +35,7 @@ std::pair<int, int> scannedSpan(const core::LayerStack& stack, int y) {
     return first < 0 ? std::pair{0, 0} : std::pair{first, last + 1};
 }
 
-TEST(LayerStack, RowSpanRunsFromTheFirstToTheLastPixelWithFragments) {
+TEST(DepthStack, RowSpanRunsFromTheFirstToTheLastPixelWithFragments) {
     // Rows: empty; first pixel only; last pixel only; a gap inside; full; one in the middle.
     const std::vector<std::uint32_t> counts = {
         0, 0, 0, 0, 0, //
@@ -45,14 +45,14 @@ TEST(LayerStack, RowSpanRunsFromTheFirstToTheLastPixelWithFragments) {
         1, 1, 2, 1, 1, //
         0, 0, 4, 0, 0, //
     };
-    const core::LayerStack stack = stackWith(5, 6, counts);
+    const core::DepthStack stack = stackWith(5, 6, counts);
     const std::vector<std::pair<int, int>> expected = {{0, 0}, {0, 1}, {4, 5},
                                                        {1, 5}, {0, 5}, {2, 3}};
     for (int y = 0; y < stack.height; ++y)
         EXPECT_EQ(stack.rowSpan(y), expected[std::size_t(y)]) << "row " << y;
 }
 
-TEST(LayerStack, RowSpanAgreesWithAScanOnSparseRows) {
+TEST(DepthStack, RowSpanAgreesWithAScanOnSparseRows) {
     std::mt19937 random(17);
     for (const int width : {1, 2, 3, 64, 1281}) {
         const int height = 40;
@@ -65,7 +65,7 @@ TEST(LayerStack, RowSpanAgreesWithAScanOnSparseRows) {
                     std::bernoulli_distribution(fill * fill * 0.5)(random) ? 1u + random() % 3u
                                                                            : 0u;
         }
-        const core::LayerStack stack = stackWith(width, height, counts);
+        const core::DepthStack stack = stackWith(width, height, counts);
         for (int y = 0; y < height; ++y)
             EXPECT_EQ(stack.rowSpan(y), scannedSpan(stack, y)) << width << " wide, row " << y;
     }

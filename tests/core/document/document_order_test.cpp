@@ -27,7 +27,7 @@ constexpr int kWidth = 96, kHeight = 64;
  */
 struct Scene {
     core::Document doc;
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     core::View view = pixelView(kWidth, kHeight);
 
     Scene() {
@@ -36,30 +36,30 @@ struct Scene {
         addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
         doc.setMesh(std::move(mesh), "two quads");
         capturer.setMesh(doc.mesh());
-        core::LayerOptions options;
-        doc.setLayerOptions(options);
-        const core::Status built = doc.buildLayers(capturer, view);
+        core::DepthLayerOptions options;
+        doc.setDepthLayerOptions(options);
+        const core::Status built = doc.buildDepthLayers(capturer, view);
         EXPECT_TRUE(built.ok()) << built.error();
     }
-    const core::Layers& layers() const { return *doc.layers(); }
+    const core::DepthLayers& depthLayers() const { return *doc.depthLayers(); }
     static std::size_t pixel(int x, int y) { return std::size_t(y) * kWidth + std::size_t(x); }
     std::uint32_t visibleLayer(int x, int y) const {
         const std::uint32_t f = doc.visibleFragment(pixel(x, y));
-        return f == kNone ? 0 : f - layers().stack.offsets[pixel(x, y)] + 1;
+        return f == kNone ? 0 : f - depthLayers().stack.offsets[pixel(x, y)] + 1;
     }
     std::uint32_t regionAt(int x, int y, std::uint32_t layer) const {
-        const std::uint32_t f = layers().stack.fragment(pixel(x, y), layer);
-        return f == kNone ? kNone : layers().segmentation.region[f];
+        const std::uint32_t f = depthLayers().stack.fragment(pixel(x, y), layer);
+        return f == kNone ? kNone : depthLayers().segmentation.region[f];
     }
 };
 
 TEST(DocumentOrder, StartsWithLayerOneVisibleEverywhere) {
     Scene s;
-    ASSERT_NE(s.doc.layers(), nullptr);
-    EXPECT_EQ(s.layers().segmentation.graph.regions.size(), 3u);
+    ASSERT_NE(s.doc.depthLayers(), nullptr);
+    EXPECT_EQ(s.depthLayers().segmentation.graph.regions.size(), 3u);
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x) {
-            const bool any = s.layers().stack.layerCount(Scene::pixel(x, y)) > 0;
+            const bool any = s.depthLayers().stack.layerCount(Scene::pixel(x, y)) > 0;
             EXPECT_EQ(s.visibleLayer(x, y), any ? 1u : 0u) << x << "," << y;
         }
     EXPECT_EQ(s.visibleLayer(0, 0), 0u); // background
@@ -103,9 +103,9 @@ TEST(DocumentOrder, HidingRevealsWhatLiesBehindAndTakesNoPaint) {
     std::size_t painted = 0;
     for (const std::uint32_t pixel : tracker.paintablePixels()) {
         const std::uint32_t layer = tracker.paintableLayer(pixel);
-        const std::uint32_t f = s.layers().stack.fragment(pixel, layer);
+        const std::uint32_t f = s.depthLayers().stack.fragment(pixel, layer);
         ASSERT_NE(f, kNone);
-        EXPECT_FALSE(s.doc.regionOrder().isHidden(s.layers().segmentation.region[f]));
+        EXPECT_FALSE(s.doc.regionOrder().isHidden(s.depthLayers().segmentation.region[f]));
         ++painted;
     }
     EXPECT_GT(painted, 100u);
@@ -136,7 +136,7 @@ TEST(DocumentOrder, ANewBuildStartsFromTheInitialOrder) {
     Scene s;
     s.doc.popUpAt({50.5f, 30.5f});
     ASSERT_EQ(s.visibleLayer(50, 30), 2u);
-    ASSERT_TRUE(s.doc.buildLayers(s.capturer, s.view).ok());
+    ASSERT_TRUE(s.doc.buildDepthLayers(s.capturer, s.view).ok());
     EXPECT_EQ(s.visibleLayer(50, 30), 1u);
     // An order of other layers is refused.
     s.doc.setRegionOrder(core::RegionOrder{});

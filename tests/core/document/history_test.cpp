@@ -18,9 +18,9 @@ core::HistoryStep step(core::TileUndoRecord record, core::StepKind kind = core::
     return s;
 }
 
-core::HistoryStep orderStep(std::uint64_t layersSerial) {
+core::HistoryStep orderStep(std::uint64_t depthLayersSerial) {
     core::HistoryStep s{core::StepKind::PopUp, {}};
-    s.parts.emplace_back(core::OrderChange{{{0, 1}, {0, 0}}, {{1, 0}, {0, 0}}, layersSerial});
+    s.parts.emplace_back(core::OrderChange{{{0, 1}, {0, 0}}, {{1, 0}, {0, 0}}, depthLayersSerial});
     return s;
 }
 

@@ -83,9 +83,9 @@ TEST(LayoutTarget, TextureOnAMeshWithoutUvsMakesTheLayoutAsAnUndoableStep) {
     EXPECT_EQ(painted.textures[0].width, 512);
 
     // A stroke paints the page.
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(doc.mesh());
-    ASSERT_TRUE(doc.buildLayers(capturer, pixelView(80, 60)).ok());
+    ASSERT_TRUE(doc.buildDepthLayers(capturer, pixelView(80, 60)).ok());
     doc.brush().color = {1.0f, 0.0f, 0.0f, 1.0f};
     doc.brush().radius = 6.0f;
     core::PaintChanges changes;
@@ -146,11 +146,11 @@ TEST(LayoutTarget, SameLayoutEveryTimeAndAdoptedOnlyForItsMesh) {
 
 class Host final : public core::ScriptHost {
 public:
-    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
         capturer.setMesh(doc.mesh());
-        return doc.buildLayers(capturer, view);
+        return doc.buildDepthLayers(capturer, view);
     }
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
 };
 
 TEST(LayoutTarget, ScriptOperationSetTargetTextureMakesTheLayout) {

@@ -54,7 +54,7 @@ std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
 
 Snapshot snapshot(const core::TextureTarget& target) {
     Snapshot s;
-    const core::PaintLayerStack& stack = target.layerStack();
+    const core::PaintLayerStack& stack = target.paintLayerStack();
     for (std::size_t i = 0; i < stack.size(); ++i) {
         const core::PaintLayer& layer = stack.layer(i);
         s.ids.push_back(layer.id);
@@ -78,9 +78,9 @@ protected:
         core::PaintTargetOptions options;
         options.resolution = 512;
         ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-        core::CpuLayerCapturer capturer;
+        core::CpuDepthCapturer capturer;
         capturer.setMesh(m_doc.mesh());
-        ASSERT_TRUE(m_doc.buildLayers(capturer, pixelView(kWidth, kHeight)).ok());
+        ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight)).ok());
         m_doc.history().clear();
         core::Brush& brush = m_doc.brush();
         brush.radius = 6.0f;
@@ -153,7 +153,7 @@ TEST_F(PaintLayersDocumentTest, AStrokeOnALayerLeavesTheBaseAndShowsInTheComposi
     addLayer("Paint 1");
     stroke({20, 30}, {44, 30});
     EXPECT_EQ(target().basePixels(0), base) << "the base is not painted";
-    const core::TiledPlane* color = target().layerStack().layer(0).channels[0].get();
+    const core::TiledPlane* color = target().paintLayerStack().layer(0).channels[0].get();
     ASSERT_NE(color, nullptr);
     std::size_t full = 0, same = 0;
     for (std::size_t i = 0; i < base.size() / 4; ++i) {
@@ -213,7 +213,7 @@ TEST_F(PaintLayersDocumentTest, AMaskHidesWhereItIsPaintedBlack) {
     m_doc.brush().radius = 40.0f;
     stroke({32, 32}, {33, 32});
     EXPECT_EQ(target().page(0).rgba, base) << "black hides the layer";
-    EXPECT_TRUE(target().layerStack().layer(0).channels[0]->anyTile(0)) << "the paint stays";
+    EXPECT_TRUE(target().paintLayerStack().layer(0).channels[0]->anyTile(0)) << "the paint stays";
 }
 
 TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
@@ -238,7 +238,7 @@ TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
     expectUndoRedo(before, "stroke on the copy");
 
     before = snapshot(target());
-    core::PaintLayerSettings s = target().layerStack().layer(1).settings;
+    core::PaintLayerSettings s = target().paintLayerStack().layer(1).settings;
     s.name = "Renamed";
     ASSERT_TRUE(m_doc.setPaintLayerSettings(*copy, s, changes).ok());
     expectUndoRedo(before, "rename");
@@ -249,7 +249,7 @@ TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
              [](core::PaintLayerSettings& x) { x.visible = false; },
              [](core::PaintLayerSettings& x) { x.lockTransparency = true; }}) {
         before = snapshot(target());
-        s = target().layerStack().layer(*target().layerStack().indexOf(*copy)).settings;
+        s = target().paintLayerStack().layer(*target().paintLayerStack().indexOf(*copy)).settings;
         change(s);
         ASSERT_TRUE(m_doc.setPaintLayerSettings(*copy, s, changes).ok());
         expectUndoRedo(before, "set");
@@ -288,12 +288,12 @@ TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
     before = snapshot(target());
     ASSERT_TRUE(m_doc.flattenPaintLayers("Flat", changes).ok());
     expectUndoRedo(before, "flatten");
-    EXPECT_EQ(target().layerStack().size(), 1u);
+    EXPECT_EQ(target().paintLayerStack().size(), 1u);
 
     // All the way back: the document as it was before the first layer.
     while (m_doc.undo(changes)) {
     }
-    EXPECT_EQ(target().layerStack().size(), 0u);
+    EXPECT_EQ(target().paintLayerStack().size(), 0u);
     EXPECT_EQ(target().page(0).rgba, target().originalPage(0).rgba);
 }
 
@@ -316,9 +316,9 @@ TEST_F(PaintLayersDocumentTest, EightLayersWithAFewStrokesCostLessThanOneFullLay
     core::PaintTargetOptions options;
     options.resolution = 4096;
     ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(m_doc.mesh());
-    ASSERT_TRUE(m_doc.buildLayers(capturer, pixelView(kWidth, kHeight)).ok());
+    ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight)).ok());
     m_doc.brush().radius = 1.5f;
     m_doc.brush().paintRoughness = true;
     for (int l = 0; l < 8; ++l) {
@@ -328,7 +328,7 @@ TEST_F(PaintLayersDocumentTest, EightLayersWithAFewStrokesCostLessThanOneFullLay
                    {float(20 + 5 * l), float(14 + 12 * s)});
     }
     const std::size_t full = std::size_t(4096) * 4096 * 4;
-    const std::size_t layers = target().layerStack().layerBytes();
+    const std::size_t layers = target().paintLayerStack().layerBytes();
     EXPECT_GT(layers, 0u);
     EXPECT_LT(double(layers) / double(full), 1.5);
     std::printf("8 layers at 4096² with 3 strokes each: %zu bytes, %.3f of one full layer\n",

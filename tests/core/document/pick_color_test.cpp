@@ -78,9 +78,9 @@ protected:
     void build(core::Mesh mesh, const core::PaintTargetOptions& options = {}) {
         m_doc.setMesh(std::move(mesh), "quads");
         ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-        core::CpuLayerCapturer capturer;
+        core::CpuDepthCapturer capturer;
         capturer.setMesh(m_doc.mesh());
-        const core::Status status = m_doc.buildLayers(capturer, pixelView(kWidth, kHeight));
+        const core::Status status = m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight));
         ASSERT_TRUE(status.ok()) << status.error();
     }
 
@@ -103,7 +103,7 @@ TEST_F(PickColorTest, PicksTheTextureColourOfTheVisibleSurface) {
     EXPECT_FALSE(m_doc.pickColor(std::size_t(kWidth) * kHeight).has_value()) << "outside";
 
     // Hiding the front quad's region shows, and picks, the back quad behind it.
-    const core::Layers& layers = *m_doc.layers();
+    const core::DepthLayers& layers = *m_doc.depthLayers();
     const std::uint32_t front = m_doc.visibleFragment(pixelAt(40, 30));
     ASSERT_NE(front, core::kNone);
     core::RegionOrder order = m_doc.regionOrder();
@@ -115,11 +115,11 @@ TEST_F(PickColorTest, PicksTheTextureColourOfTheVisibleSurface) {
 TEST_F(PickColorTest, PicksAPoppedUpSurface) {
     build(twoQuads());
     const std::size_t pixel = pixelAt(40, 30);
-    const core::LayerStack& stack = m_doc.layers()->stack;
+    const core::DepthStack& stack = m_doc.depthLayers()->stack;
     ASSERT_EQ(stack.layerCount(pixel), 2u);
     // Pop up the back quad's region where the front quad covers it: the pick follows.
     const std::uint32_t back = stack.fragment(pixel, 2);
-    ASSERT_TRUE(m_doc.popUpRegion(m_doc.layers()->segmentation.region[back]));
+    ASSERT_TRUE(m_doc.popUpRegion(m_doc.depthLayers()->segmentation.region[back]));
     ASSERT_EQ(m_doc.visibleFragment(pixel), back);
     expectColor(m_doc.pickColor(pixel), quantized(kBack), 1e-6f, "popped up");
 }

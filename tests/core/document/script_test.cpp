@@ -28,12 +28,12 @@ core::Mesh twoQuads() {
 
 class Host final : public core::ScriptHost {
 public:
-    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
         capturer.setMesh(doc.mesh());
         ++builds;
-        return doc.buildLayers(capturer, view);
+        return doc.buildDepthLayers(capturer, view);
     }
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     int builds = 0;
 };
 
@@ -134,7 +134,7 @@ TEST(Script, ErrorsNameTheOperation) {
 TEST(Script, ARecordedSessionReplaysToTheSamePicture) {
     // What a user does, through the Document's own operations (as the GUI calls them).
     Session user;
-    ASSERT_TRUE(user.host.buildLayers(user.doc, pixelView(kWidth, kHeight)).ok());
+    ASSERT_TRUE(user.host.buildDepthLayers(user.doc, pixelView(kWidth, kHeight)).ok());
     core::PaintChanges changes;
     user.doc.setLayerAware(true);
     user.doc.brush().color = {0.2f, 0.4f, 0.9f, 1.0f};
@@ -220,7 +220,7 @@ std::vector<std::uint8_t> layerBytes(core::Document& doc) {
     std::vector<std::uint8_t> out = target.page(0).rgba;
     const auto& mr = target.metallicRoughnessPage(0).rgba;
     out.insert(out.end(), mr.begin(), mr.end());
-    const core::PaintLayerStack& stack = target.layerStack();
+    const core::PaintLayerStack& stack = target.paintLayerStack();
     for (std::size_t i = 0; i < stack.size(); ++i) {
         const core::PaintLayer& layer = stack.layer(i);
         out.insert(out.end(), layer.settings.name.begin(), layer.settings.name.end());
@@ -263,7 +263,7 @@ TEST(Script, PaintLayerOperations) {
     ])json");
     ASSERT_TRUE(s.run(ops).ok());
     const auto& target = *dynamic_cast<const core::TextureTarget*>(s.doc.paintTarget());
-    const core::PaintLayerStack& stack = target.layerStack();
+    const core::PaintLayerStack& stack = target.paintLayerStack();
     ASSERT_EQ(stack.size(), 2u);
     EXPECT_EQ(stack.layer(0).settings.name, "Metal (hidden)");
     EXPECT_FALSE(stack.layer(0).settings.visible);
@@ -287,7 +287,7 @@ TEST(Script, PaintLayerOperations) {
 
 TEST(Script, ARecordedSessionWithPaintLayersReplaysToTheSameLayers) {
     Session user;
-    ASSERT_TRUE(user.host.buildLayers(user.doc, pixelView(kWidth, kHeight)).ok());
+    ASSERT_TRUE(user.host.buildDepthLayers(user.doc, pixelView(kWidth, kHeight)).ok());
     core::PaintChanges changes;
     core::PaintLayerSettings settings;
     settings.name = "One";
@@ -301,7 +301,7 @@ TEST(Script, ARecordedSessionWithPaintLayersReplaysToTheSameLayers) {
     user.doc.endStroke();
     auto two = user.doc.duplicatePaintLayer(*one, changes);
     ASSERT_TRUE(two.ok());
-    settings = user.doc.layerTarget().value()->layerStack().layer(1).settings;
+    settings = user.doc.paintLayerTarget().value()->paintLayerStack().layer(1).settings;
     settings.blend = core::BlendMode::Screen;
     settings.opacity = 0.5f;
     ASSERT_TRUE(user.doc.setPaintLayerSettings(*two, settings, changes).ok());
@@ -340,7 +340,7 @@ TEST(Script, FillLayerValuesChangeAfterCreationAsOneUndoStep) {
         {"op": "layer-set", "layer": "Gloss", "values": {"roughness": 0.8, "metallic": 1}}
     ])json"))
                     .ok());
-    const core::PaintLayerStack& stack = target.layerStack();
+    const core::PaintLayerStack& stack = target.paintLayerStack();
     EXPECT_EQ(stack.layer(0).settings.fill.roughness, 0.8f);
     EXPECT_EQ(stack.layer(0).settings.fill.metallic, 1.0f);
     EXPECT_FALSE(stack.layer(0).settings.fill.baseColor.has_value());

@@ -34,11 +34,11 @@ core::Mesh twoQuads() {
 
 class Host final : public core::ScriptHost {
 public:
-    core::Status buildLayers(core::Document& doc, const core::View& view) override {
+    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
         capturer.setMesh(doc.mesh());
-        return doc.buildLayers(capturer, view);
+        return doc.buildDepthLayers(capturer, view);
     }
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
 };
 
 struct Session {
@@ -52,7 +52,7 @@ struct Session {
         core::PaintTargetOptions options;
         options.resolution = 128;
         EXPECT_TRUE(doc.setPaintTarget(options).ok());
-        EXPECT_TRUE(host.buildLayers(doc, pixelView(kWidth, kHeight)).ok());
+        EXPECT_TRUE(host.buildDepthLayers(doc, pixelView(kWidth, kHeight)).ok());
         doc.brush().radius = 3.0f;
         doc.brush().hardness = 1.0f;
     }
@@ -135,7 +135,7 @@ TEST(StrokeTools, ALineWithoutAPreviousStrokeIsADabAndStartsTheNext) {
     ASSERT_TRUE(s.doc.lineStart());
     EXPECT_EQ(*s.doc.lineStart(), glm::vec2(20.0f, 20.0f));
     // A new view forgets it: its pixels are of the old one.
-    s.doc.clearLayers();
+    s.doc.clearDepthLayers();
     EXPECT_FALSE(s.doc.lineStart());
     EXPECT_FALSE(s.doc.lineTo({{20.0f, 20.0f}, 1.0f}, s.changes).ok());
 }

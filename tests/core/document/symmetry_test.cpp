@@ -67,7 +67,7 @@ core::Mesh symmetricScene(const std::vector<glm::mat4>& transforms) {
 
 struct Scene {
     core::Document doc;
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     core::View view;
     core::PaintChanges changes;
 
@@ -83,7 +83,7 @@ struct Scene {
         camera.pitchDegrees = pitch;
         view = camera.view(kWidth, kHeight);
         capturer.setMesh(doc.mesh());
-        EXPECT_TRUE(doc.buildLayers(capturer, view).ok());
+        EXPECT_TRUE(doc.buildDepthLayers(capturer, view).ok());
         doc.brush().radius = 10.0f;
         doc.brush().hardness = 1.0f;
         doc.brush().color = {0.0f, 0.0f, 1.0f, 1.0f};
@@ -169,7 +169,7 @@ TEST(Symmetry, MirrorReachesASurfaceHiddenBehindTheOtherBody) {
     EXPECT_GE(ratio, 0.98);
     // The copy's point (the left body's inner side) is behind the right body: not depth layer 1.
     const glm::vec3 q = s.view.project({-0.3f, 0.0f, 0.0f});
-    const core::LayerStack& stack = s.doc.layers()->stack;
+    const core::DepthStack& stack = s.doc.depthLayers()->stack;
     const std::size_t pixel = std::size_t(q.y) * std::size_t(kWidth) + std::size_t(q.x);
     ASSERT_GE(stack.layerCount(pixel), 2u);
     EXPECT_LT(stack.depth[stack.offsets[pixel]], q.z - 0.2f);

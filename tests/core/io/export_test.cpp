@@ -39,10 +39,10 @@ core::Mesh paintedTrefoil(core::PaintTargetKind kind) {
     EXPECT_TRUE(doc.setPaintTarget(options).ok());
     doc.camera() = core::Camera::fromOrbit(doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
     const int width = 240, height = 180;
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(doc.mesh());
-    EXPECT_TRUE(doc.buildLayers(capturer, doc.camera().view(width, height)).ok());
-    const core::LayerStack& stack = doc.layers()->stack;
+    EXPECT_TRUE(doc.buildDepthLayers(capturer, doc.camera().view(width, height)).ok());
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     core::PaintChanges changes;
     doc.brush().radius = 12.0f;
     for (int y = height / 3; y < 2 * height / 3; y += 15) {

@@ -30,10 +30,10 @@ core::Mesh trefoilWithoutUvs() {
 void paintAStroke(core::Document& doc) {
     constexpr int kWidth = 240, kHeight = 180;
     doc.camera() = core::Camera::fromOrbit(doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(doc.mesh());
-    ASSERT_TRUE(doc.buildLayers(capturer, doc.camera().view(kWidth, kHeight)).ok());
-    const core::LayerStack& stack = doc.layers()->stack;
+    ASSERT_TRUE(doc.buildDepthLayers(capturer, doc.camera().view(kWidth, kHeight)).ok());
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     const int y = kHeight / 2;
     int first = -1, last = -1;
     for (int x = 0; x < kWidth; ++x)

@@ -55,7 +55,7 @@ std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
 Snapshot snapshot(const core::Document& doc) {
     const auto& target = dynamic_cast<const core::TextureTarget&>(*doc.currentPaintTarget());
     Snapshot s;
-    const core::PaintLayerStack& stack = target.layerStack();
+    const core::PaintLayerStack& stack = target.paintLayerStack();
     for (std::size_t i = 0; i < stack.size(); ++i) {
         const core::PaintLayer& layer = stack.layer(i);
         s.ids.push_back(layer.id);
@@ -79,9 +79,9 @@ protected:
         options.resolution = 512;
         ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
         m_doc.camera() = core::Camera::fromOrbit(m_doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
-        core::CpuLayerCapturer capturer;
+        core::CpuDepthCapturer capturer;
         capturer.setMesh(m_doc.mesh());
-        ASSERT_TRUE(m_doc.buildLayers(capturer, m_doc.camera().view(kWidth, kHeight)).ok());
+        ASSERT_TRUE(m_doc.buildDepthLayers(capturer, m_doc.camera().view(kWidth, kHeight)).ok());
         m_doc.brush().radius = 9.0f;
         m_doc.brush().hardness = 0.7f;
     }
@@ -89,7 +89,7 @@ protected:
     /** A horizontal stroke across the model at row y. */
     void stroke(int y, glm::vec4 color) {
         m_doc.brush().color = color;
-        const core::LayerStack& stack = m_doc.layers()->stack;
+        const core::DepthStack& stack = m_doc.depthLayers()->stack;
         int first = -1, last = -1;
         for (int x = 0; x < kWidth; ++x)
             if (stack.layerCount(std::size_t(y) * kWidth + std::size_t(x)) > 0) {
@@ -124,7 +124,7 @@ protected:
     void set(std::uint64_t id, void (*change)(core::PaintLayerSettings&)) {
         const auto& target = dynamic_cast<const core::TextureTarget&>(*m_doc.currentPaintTarget());
         core::PaintLayerSettings s =
-            target.layerStack().layer(*target.layerStack().indexOf(id)).settings;
+            target.paintLayerStack().layer(*target.paintLayerStack().indexOf(id)).settings;
         change(s);
         core::PaintChanges changes;
         ASSERT_TRUE(m_doc.setPaintLayerSettings(id, s, changes).ok());
@@ -271,7 +271,7 @@ TEST_F(PaintLayersProjectTest, OlderProjectsOpenWithNoPaintLayers) {
         ASSERT_TRUE(core::applyProjectState(reopened, *project->state).ok());
         const auto& target =
             dynamic_cast<const core::TextureTarget&>(*reopened.currentPaintTarget());
-        EXPECT_EQ(target.layerStack().size(), 0u);
+        EXPECT_EQ(target.paintLayerStack().size(), 0u);
         EXPECT_TRUE(target.page(0).rgba == painted);
     }
 }

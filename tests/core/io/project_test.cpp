@@ -142,11 +142,11 @@ void expectSameState(const core::ProjectState& a, const core::ProjectState& b) {
 core::View paintSomething(core::Document& doc, int width = 320, int height = 240) {
     doc.camera() = core::Camera::fromOrbit(doc.mesh().bounds(), 30.0f, 20.0f, 1.6f);
     const core::View view = doc.camera().view(width, height);
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(doc.mesh());
-    const core::Status built = doc.buildLayers(capturer, view);
+    const core::Status built = doc.buildDepthLayers(capturer, view);
     EXPECT_TRUE(built.ok()) << built.error();
-    const core::LayerStack& stack = doc.layers()->stack;
+    const core::DepthStack& stack = doc.depthLayers()->stack;
     core::PaintChanges changes;
     int strokes = 0;
     for (int y = height / 3; y < 2 * height / 3 && strokes < 3; y += 20) {
@@ -323,10 +323,10 @@ TEST(Project, TextureSaveLoadKeepsPaintCameraAndSettings) {
     doc.brush().radius = 21.0f;
     doc.brush().hardness = 0.9f;
     doc.setLayerAware(false);
-    core::LayerOptions layers = doc.layerOptions();
+    core::DepthLayerOptions layers = doc.depthLayerOptions();
     layers.threshold = 0.004f;
     layers.test = core::ConnectionTest::Plain;
-    doc.setLayerOptions(layers);
+    doc.setDepthLayerOptions(layers);
 
     core::ProjectState state = core::captureProjectState(doc);
     EXPECT_EQ(state.source, "builtin:trefoil");
@@ -350,8 +350,8 @@ TEST(Project, TextureSaveLoadKeepsPaintCameraAndSettings) {
     EXPECT_EQ(reopened.brush().hardness, 0.9f);
     EXPECT_FALSE(reopened.layerAware());
     EXPECT_FALSE(reopened.autoPopUp());
-    EXPECT_EQ(reopened.layerOptions().threshold, 0.004f);
-    EXPECT_EQ(reopened.layerOptions().test, core::ConnectionTest::Plain);
+    EXPECT_EQ(reopened.depthLayerOptions().threshold, 0.004f);
+    EXPECT_EQ(reopened.depthLayerOptions().test, core::ConnectionTest::Plain);
     // The same geometry, triangle for triangle.
     ASSERT_EQ(reopened.mesh().triangleCount(), doc.mesh().triangleCount());
     for (std::size_t i = 0; i < doc.mesh().indices.size(); i += 97)

@@ -29,7 +29,7 @@ using core_test::Quad;
 struct Scene {
     std::shared_ptr<core::Mesh> mesh;
     std::shared_ptr<core::MeshTopology> topology;
-    core::Layers layers;
+    core::DepthLayers layers;
 };
 
 /** A 200 × 200 view filled by one textured quad. */
@@ -39,10 +39,10 @@ Scene quadScene() {
     addQuad(mesh, Quad{{0.0f, 0.0f}, {200.0f, 200.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 4});
     scene.mesh = std::make_shared<core::Mesh>(std::move(mesh));
     scene.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*scene.mesh));
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(*scene.mesh);
     auto layers =
-        core::buildLayers(capturer, *scene.mesh, *scene.topology, pixelView(200, 200), {});
+        core::buildDepthLayers(capturer, *scene.mesh, *scene.topology, pixelView(200, 200), {});
     EXPECT_TRUE(layers.ok()) << layers.error();
     scene.layers = std::move(layers).value();
     return scene;
@@ -50,7 +50,7 @@ Scene quadScene() {
 
 std::vector<core::Dab> strokeDabs(const Scene& scene, const core::Brush& brush) {
     core::StrokeTracker tracker;
-    EXPECT_TRUE(tracker.setLayers(scene.layers));
+    EXPECT_TRUE(tracker.setDepthLayers(scene.layers));
     std::vector<core::Dab> dabs;
     tracker.startStroke({{40.0f, 60.0f}, 1.0f}, brush, dabs);
     tracker.moveStroke({{160.0f, 80.0f}, 1.0f}, dabs);
@@ -199,7 +199,7 @@ TEST(BrushTips, SpacingFollowsTheJitteredSize) {
     brush.jitter.size = 0.6f;
     brush.seed = 3;
     core::StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(scene.layers));
+    ASSERT_TRUE(tracker.setDepthLayers(scene.layers));
     std::vector<core::Dab> dabs;
     tracker.startStroke({{20.0f, 100.0f}, 1.0f}, brush, dabs);
     tracker.moveStroke({{180.0f, 100.0f}, 1.0f}, dabs);
@@ -215,7 +215,7 @@ TEST(BrushTips, FollowingTheStrokeTurnsTheTipAlongThePath) {
     brush.angleMode = core::TipAngleMode::Stroke;
     brush.angle = 90.0f;
     core::StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(scene.layers));
+    ASSERT_TRUE(tracker.setDepthLayers(scene.layers));
     std::vector<core::Dab> dabs;
     tracker.startStroke({{100.0f, 20.0f}, 1.0f}, brush, dabs);
     tracker.moveStroke({{100.0f, 180.0f}, 1.0f}, dabs); // straight down: +90°

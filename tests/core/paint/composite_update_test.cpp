@@ -42,9 +42,9 @@ protected:
         core::PaintTargetOptions options;
         options.resolution = 256; // 4×4 tiles: strokes cross tile edges
         ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-        core::CpuLayerCapturer capturer;
+        core::CpuDepthCapturer capturer;
         capturer.setMesh(m_doc.mesh());
-        ASSERT_TRUE(m_doc.buildLayers(capturer, pixelView()).ok());
+        ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView()).ok());
         core::Brush& brush = m_doc.brush();
         brush.radius = 7.0f;
         brush.hardness = 0.3f; // soft: partial coverage at the edges
@@ -59,7 +59,7 @@ protected:
 
     /** The composite is what a full recompute of every tile gives, byte for byte. */
     void expectFullRecompute(const std::string& what) {
-        core::PaintLayerStack& stack = target().layerStack();
+        core::PaintLayerStack& stack = target().paintLayerStack();
         const std::vector<std::uint8_t> color = stack.compositeBaseColor(0);
         const std::vector<std::uint8_t> mr = stack.compositeMetallicRoughness(0);
         stack.updateAll();
@@ -116,8 +116,8 @@ protected:
     }
 
     void change(std::uint64_t id, void (*edit)(PaintLayerSettings&)) {
-        const std::size_t index = *target().layerStack().indexOf(id);
-        PaintLayerSettings s = target().layerStack().layer(index).settings;
+        const std::size_t index = *target().paintLayerStack().indexOf(id);
+        PaintLayerSettings s = target().paintLayerStack().layer(index).settings;
         edit(s);
         core::PaintChanges changes;
         ASSERT_TRUE(m_doc.setPaintLayerSettings(id, s, changes).ok());
@@ -206,8 +206,8 @@ TEST_F(CompositeUpdateTest, StrokesThroughTheFastPathGiveTheFullRecomputesBytes)
                                                         {BlendMode::Darken, "darken"},
                                                         {BlendMode::Lighten, "lighten"}}) {
         const BlendMode m = mode;
-        const std::size_t index = *target().layerStack().indexOf(a);
-        PaintLayerSettings s = target().layerStack().layer(index).settings;
+        const std::size_t index = *target().paintLayerStack().indexOf(a);
+        PaintLayerSettings s = target().paintLayerStack().layer(index).settings;
         s.blend = m;
         s.opacity = 0.45f;
         ASSERT_TRUE(m_doc.setPaintLayerSettings(a, s, changes).ok());
@@ -235,8 +235,8 @@ TEST_F(CompositeUpdateTest, StrokesThroughTheFastPathGiveTheFullRecomputesBytes)
     EXPECT_GE(m_changed, 15) << "the strokes changed the composite";
 }
 
-// Layers that all blend in the Normal mode over an untouched base are composed in one pass per
-// texel: with a masked fill layer, a hidden layer, partial opacity, locked transparency and the
+// Paint layers that all blend in the Normal mode over an untouched base are composed in one pass
+// per texel: with a masked fill layer, a hidden layer, partial opacity, locked transparency and the
 // material channels one at a time, the bytes are still those of the full recompute.
 TEST_F(CompositeUpdateTest, NormalLayersOverTheBaseInOnePassGiveTheFullRecomputesBytes) {
     core::Brush& brush = m_doc.brush();

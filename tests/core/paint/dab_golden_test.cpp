@@ -58,7 +58,7 @@ protected:
         camera.pitchDegrees = 15.0f;
         m_view = camera.view(kWidth, kHeight);
         m_capturer.setMesh(m_doc.mesh());
-        ASSERT_TRUE(m_doc.buildLayers(m_capturer, m_view).ok());
+        ASSERT_TRUE(m_doc.buildDepthLayers(m_capturer, m_view).ok());
         core::Brush& brush = m_doc.brush();
         brush.radius = 12.0f;
         brush.hardness = 0.5f;
@@ -90,7 +90,7 @@ protected:
             const std::uint32_t tiles =
                 std::uint32_t((page.width + core::kTextureTile - 1) / core::kTextureTile) *
                 std::uint32_t((page.height + core::kTextureTile - 1) / core::kTextureTile);
-            const core::PaintLayerStack& stack = t.layerStack();
+            const core::PaintLayerStack& stack = t.paintLayerStack();
             for (std::size_t l = 0; l < stack.size(); ++l) {
                 for (const bool mask : {false, true}) {
                     const std::uint64_t plane =
@@ -111,7 +111,7 @@ protected:
 
     /** Strokes along rows of the view in 3 px steps (the bench's path, denser). */
     void strokes() {
-        const core::LayerStack& stack = m_doc.layers()->stack;
+        const core::DepthStack& stack = m_doc.depthLayers()->stack;
         for (const int y : {kHeight / 2, kHeight / 2 + 7, kHeight / 3}) {
             for (int x = kWidth / 10; x < kWidth * 9 / 10; x += 3) {
                 const core::StrokePoint point{{float(x) + 0.5f, float(y) + 0.5f}, 1.0f};
@@ -169,7 +169,7 @@ protected:
     }
 
     core::Document m_doc;
-    core::CpuLayerCapturer m_capturer;
+    core::CpuDepthCapturer m_capturer;
     core::View m_view;
     core::PaintChanges m_changes;
 };

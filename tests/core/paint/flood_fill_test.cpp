@@ -90,7 +90,7 @@ struct TwoQuads {
     Quad back{{4.25f, 4.25f}, {60.25f, 60.25f}, 10.0f, {0.0f, 0.0f}, {0.5f, 0.5f}, 14};
     Quad front{{22.25f, 22.25f}, {42.25f, 42.25f}, 5.0f, {0.5f, 0.5f}, {1.0f, 1.0f}, 5};
     core::Document doc;
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
 
     explicit TwoQuads(core::PaintTargetKind kind, const ColorFn& backColor = {}) {
         core::Mesh mesh;
@@ -102,7 +102,7 @@ struct TwoQuads {
         options.resolution = 512;
         EXPECT_TRUE(doc.setPaintTarget(options).ok());
         capturer.setMesh(doc.mesh());
-        const core::Status built = doc.buildLayers(capturer, view);
+        const core::Status built = doc.buildDepthLayers(capturer, view);
         EXPECT_TRUE(built.ok()) << built.error();
         doc.brush().color = {0.9f, 0.2f, 0.05f, 1.0f};
         doc.brush().opacity = 1.0f;
@@ -119,7 +119,7 @@ struct TwoQuads {
         return dynamic_cast<const core::VertexColorTarget&>(*doc.paintTarget());
     }
     std::uint32_t regionAt(glm::vec2 p) const {
-        const core::Layers& layers = *doc.layers();
+        const core::DepthLayers& layers = *doc.depthLayers();
         const std::uint32_t f =
             doc.visibleFragment(std::size_t(p.y) * std::size_t(view.width) + std::size_t(p.x));
         return f == kNone ? kNone : layers.segmentation.region[f];
@@ -219,9 +219,9 @@ TEST(FloodFill, NeedsLayersAndFillsNothingOnBackground) {
     doc.setMesh(std::move(mesh), "quad");
     core::PaintChanges changes;
     EXPECT_FALSE(doc.fill({30.0f, 30.0f}, FillMode::Surface, 0.0f, changes).ok());
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(doc.mesh());
-    ASSERT_TRUE(doc.buildLayers(capturer, pixelView(64, 64)).ok());
+    ASSERT_TRUE(doc.buildDepthLayers(capturer, pixelView(64, 64)).ok());
     for (const glm::vec2 p :
          {glm::vec2(2.0f, 2.0f), glm::vec2(-5.0f, 30.0f), glm::vec2(30.0f, 64.0f),
           glm::vec2(NAN, 3.0f), glm::vec2(1e30f, 30.0f)}) {
@@ -252,7 +252,7 @@ TEST(FloodFillTexture, RegionFillsTheRegionUnderTheCursorAndItsHiddenPart) {
     EXPECT_EQ(s.doc.history().undoCount(), 1u);
 
     // Pop the part of B behind F up: a click there fills it, and still not F.
-    const core::Layers& layers = *s.doc.layers();
+    const core::DepthLayers& layers = *s.doc.depthLayers();
     const std::size_t centre = 32 * 64 + 32;
     const std::uint32_t hidden = layers.segmentation.region[layers.stack.fragment(centre, 2)];
     core::RegionOrder order = s.doc.regionOrder();

@@ -30,7 +30,7 @@ using core_test::Quad;
 struct Scene {
     std::shared_ptr<core::Mesh> mesh;
     std::shared_ptr<core::MeshTopology> topology;
-    core::Layers layers;
+    core::DepthLayers layers;
 };
 
 Scene makeScene(core::Mesh mesh, const core::View& view) {
@@ -38,16 +38,16 @@ Scene makeScene(core::Mesh mesh, const core::View& view) {
     scene.mesh = std::make_shared<core::Mesh>(std::move(mesh));
     EXPECT_TRUE(scene.mesh->validate().ok());
     scene.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*scene.mesh));
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(*scene.mesh);
-    auto layers = core::buildLayers(capturer, *scene.mesh, *scene.topology, view, {});
+    auto layers = core::buildDepthLayers(capturer, *scene.mesh, *scene.topology, view, {});
     EXPECT_TRUE(layers.ok()) << layers.error();
     scene.layers = std::move(layers).value();
     return scene;
 }
 
 /** All pixels whose centre is within radius of center and that have a fragment on layer. */
-core::Dab makeDab(const core::LayerStack& stack, glm::vec2 center, float radius,
+core::Dab makeDab(const core::DepthStack& stack, glm::vec2 center, float radius,
                   std::uint32_t layer = 1) {
     core::Dab dab;
     dab.center = center;
@@ -116,7 +116,7 @@ std::unique_ptr<core::TextureTarget> textureTarget(const Scene& scene,
 }
 
 /** Paints one stroke of dabs and returns its record. */
-core::TileUndoRecord stroke(core::PaintTarget& target, const core::Layers& layers,
+core::TileUndoRecord stroke(core::PaintTarget& target, const core::DepthLayers& layers,
                             const core::Brush& brush, const std::vector<core::Dab>& dabs) {
     target.beginStroke(brush);
     for (const core::Dab& dab : dabs)
@@ -606,7 +606,7 @@ protected:
     }
     /** A centre whose whole disc of radius has fragments on layer (and the first layer). */
     static glm::vec2 findCenter(float radius, std::uint32_t layer) {
-        const core::LayerStack& stack = s_scene->layers.stack;
+        const core::DepthStack& stack = s_scene->layers.stack;
         for (int y = int(radius) + 8; y < stack.height - int(radius) - 8; y += 7) {
             for (int x = int(radius) + 8; x < stack.width - int(radius) - 8; x += 7) {
                 bool all = true;
@@ -629,8 +629,8 @@ protected:
      */
     static void checkDab(const core::TextureTarget& target, const core::Dab& dab) {
         const core::Mesh& mesh = *s_scene->mesh;
-        const core::Layers& layers = s_scene->layers;
-        const core::LayerStack& stack = layers.stack;
+        const core::DepthLayers& layers = s_scene->layers;
+        const core::DepthStack& stack = layers.stack;
         const core::Image& page = target.page(0);
         const core::Image& original = target.originalPage(0);
         std::vector<std::uint32_t> mapFragment(stack.pixelCount(), kNone);

@@ -58,7 +58,7 @@ struct StrokeCase {
     };
     std::string name;
     std::string error;
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::Connectivity connectivity;
     std::vector<std::uint32_t> visible; // per pixel; empty = layer 1
     core::Brush brush;
@@ -176,7 +176,7 @@ TEST_P(StrokeGolden, DabsAndMapsMatch) {
     for (bool complete : {false, true}) {
         SCOPED_TRACE(complete ? "Mt completed after each step" : "Mt grown lazily");
         StrokeTracker tracker;
-        ASSERT_TRUE(tracker.setLayers(c.stack, c.connectivity));
+        ASSERT_TRUE(tracker.setDepthLayers(c.stack, c.connectivity));
         if (!c.visible.empty())
             tracker.setVisibleFragment([&](std::size_t p) {
                 return c.visible[p] ? c.stack.fragment(p, c.visible[p]) : kNone;
@@ -259,7 +259,7 @@ TEST(StrokeGoldenData, AllExpectedCasesArePresent) {
 // 100-139, all rows), S on layer 2 below O; S and O are not connected.
 
 struct Scene {
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::Connectivity connectivity;
 };
 
@@ -315,7 +315,7 @@ TEST(StrokeResampling, OneFastJumpGivesTheDabsOfManySmallMoves) {
     const StrokePoint a{{20.3f, 14.7f}, 0.4f}, b{{220.3f, 24.1f}, 1.0f};
     auto run = [&](int moves, bool completeEachTime) {
         StrokeTracker tracker;
-        EXPECT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+        EXPECT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
         std::vector<Dab> dabs;
         tracker.startStroke(a, brush, dabs);
         for (int i = 1; i <= moves; ++i) {
@@ -363,7 +363,7 @@ TEST(StrokeResampling, OneFastJumpGivesTheDabsOfManySmallMoves) {
 TEST(StrokeResampling, DabsAreSpacedAlongThePathNotAtTheEvents) {
     const Scene s = strandUnderOccluder();
     StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
     core::Brush brush = testBrush(10.0f);
     brush.spacing = 0.5f; // 5 px
     std::vector<Dab> dabs;
@@ -397,16 +397,16 @@ TEST(StrokeTracker, NewLayersOfTheSameSizeKeepNothingOfTheLastOnes) {
         return dabs;
     };
     StrokeTracker used;
-    ASSERT_TRUE(used.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(used.setDepthLayers(s.stack, s.connectivity));
     ASSERT_GT(stroke(used, {{20.5f, 20.5f}, 1.0f}, {{130.5f, 20.5f}, 1.0f}).size(), 20u);
     ASSERT_NE(used.trackableLayer(125 + 20 * 300), 0u); // the last dab's maps
-    ASSERT_TRUE(used.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(used.setDepthLayers(s.stack, s.connectivity));
     for (std::size_t p = 0; p < s.stack.pixelCount(); ++p) {
         ASSERT_EQ(used.paintableLayer(p), 0u) << "pixel " << p;
         ASSERT_EQ(used.trackableLayer(p), 0u) << "pixel " << p;
     }
     StrokeTracker fresh;
-    ASSERT_TRUE(fresh.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(fresh.setDepthLayers(s.stack, s.connectivity));
     const std::vector<Dab> again = stroke(used, {{120.5f, 22.5f}, 1.0f}, {{40.5f, 18.5f}, 1.0f});
     const std::vector<Dab> first = stroke(fresh, {{120.5f, 22.5f}, 1.0f}, {{40.5f, 18.5f}, 1.0f});
     ASSERT_EQ(again.size(), first.size());
@@ -424,7 +424,7 @@ TEST(StrokeTracker, NewLayersOfTheSameSizeKeepNothingOfTheLastOnes) {
 TEST(StrokeTracker, ConventionalModePaintsTheVisibleSurfaceOnly) {
     const Scene s = strandUnderOccluder();
     StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
     tracker.setLayerAware(false);
     std::vector<Dab> dabs;
     tracker.startStroke({{60.5f, 20.5f}, 1.0f}, testBrush(12.0f), dabs);
@@ -456,7 +456,7 @@ TEST(StrokeTracker, ConventionalModePaintsTheVisibleSurfaceOnly) {
 TEST(StrokeTracker, ModeSwitchMidStroke) {
     const Scene s = strandUnderOccluder();
     StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
     std::vector<Dab> dabs;
     tracker.startStroke({{80.5f, 20.5f}, 1.0f}, testBrush(8.0f), dabs);
     tracker.moveStroke({{110.3f, 20.5f}, 1.0f}, dabs);
@@ -492,7 +492,7 @@ TEST(StrokeTracker, IgnoresPointsOffScreenNotFiniteOrWithoutLayers) {
     std::vector<Dab> dabs;
     EXPECT_EQ(tracker.startStroke({{20.5f, 20.5f}, 1.0f}, testBrush(5.0f), dabs), 0u);
     EXPECT_EQ(tracker.paintableLayer(0), 0u);
-    ASSERT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
     EXPECT_EQ(tracker.startStroke({{-3.0f, 20.5f}, 1.0f}, testBrush(5.0f), dabs), 0u);
     EXPECT_EQ(tracker.startStroke({{NAN, 20.5f}, 1.0f}, testBrush(5.0f), dabs), 0u);
     EXPECT_FALSE(tracker.inStroke());
@@ -521,7 +521,7 @@ TEST(StrokeTracker, IgnoresPointsOffScreenNotFiniteOrWithoutLayers) {
                     // A connectivity of another stack is refused.
     core::Connectivity wrong = s.connectivity;
     wrong.links.pop_back();
-    EXPECT_FALSE(tracker.setLayers(s.stack, wrong));
+    EXPECT_FALSE(tracker.setDepthLayers(s.stack, wrong));
     EXPECT_FALSE(tracker.inStroke());
     EXPECT_EQ(tracker.startStroke({{20.5f, 20.5f}, 1.0f}, testBrush(5.0f), dabs), 0u);
 }
@@ -529,7 +529,7 @@ TEST(StrokeTracker, IgnoresPointsOffScreenNotFiniteOrWithoutLayers) {
 TEST(StrokeTracker, OverlayShowsMpRedAndTheRestOfMtBlue) {
     const Scene s = strandUnderOccluder();
     StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.stack, s.connectivity));
+    ASSERT_TRUE(tracker.setDepthLayers(s.stack, s.connectivity));
     std::vector<Dab> dabs;
     core::Brush brush = testBrush(6.0f);
     brush.trackRadius = 30.0f;
@@ -565,7 +565,7 @@ TEST(StrokeTracker, OverlayShowsMpRedAndTheRestOfMtBlue) {
 }
 
 TEST(StrokeTracker, VisibleFragmentByRankSkipsHiddenRegions) {
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2;
     stack.height = 1;
     stack.offsets = {0, 3, 3}; // pixel 0: three layers, pixel 1: background
@@ -616,7 +616,7 @@ float circularDistance(float a, float b) {
 
 struct TrefoilScene {
     int segmentsPerStrip = 0, radialSegments = 0;
-    core::Layers layers;
+    core::DepthLayers layers;
     float underT = 0.0f; // centre-line parameter of the strand passing under the crossing
     float overT = 0.0f;  // ... and of the strand passing over it
 };
@@ -633,9 +633,9 @@ TrefoilScene trefoilScene(int segmentsPerStrip, int radialSegments, int width, i
     const core::MeshTopology topology = core::buildMeshTopology(mesh);
     const core::View view =
         core::Camera::fromOrbit(mesh.bounds(), 30.0f, 20.0f, 1.6f).view(width, height);
-    core::CpuLayerCapturer capturer;
+    core::CpuDepthCapturer capturer;
     capturer.setMesh(mesh);
-    auto built = core::buildLayers(capturer, mesh, topology, view, core::LayerOptions{});
+    auto built = core::buildDepthLayers(capturer, mesh, topology, view, core::DepthLayerOptions{});
     EXPECT_TRUE(built.ok()) << built.error();
     if (!built.ok())
         return s;
@@ -667,9 +667,9 @@ TrefoilScene trefoilScene(int segmentsPerStrip, int radialSegments, int width, i
 TEST(StrokeTrefoil, LongStrokeFollowsTheStrandUnderACrossing) {
     const TrefoilScene s = trefoilScene(120, 32, 480, 320);
     ASSERT_GT(s.layers.stack.fragmentCount(), 0u);
-    const core::LayerStack& stack = s.layers.stack;
+    const core::DepthStack& stack = s.layers.stack;
     StrokeTracker tracker;
-    ASSERT_TRUE(tracker.setLayers(s.layers));
+    ASSERT_TRUE(tracker.setDepthLayers(s.layers));
     // The stroke follows the under strand's centre line across the crossing, 1 px a move.
     const core::View& view = s.layers.view;
     std::vector<StrokePoint> path;

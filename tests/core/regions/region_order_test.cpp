@@ -198,7 +198,7 @@ TEST(RegionOrderTest, ResetRestoresTheInitialOrderButKeepsHiding) {
 
 TEST(RegionOrderTest, RanksDriveVisibleFragmentLookup) {
     // Two pixels: pixel 0 has regions 0 (layer 1) and 2 (layer 2); pixel 1 has region 1 only.
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2;
     stack.height = 1;
     stack.offsets = {0, 2, 3};

@@ -43,7 +43,7 @@ std::vector<std::string> tokens(const std::string& row) {
 struct GoldenCase {
     std::string name;
     std::string error; // non-empty when the file is malformed
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::ConnectivityOptions options;
     core::SurfaceGeometry geometry;
     std::vector<std::string> links;     // per fragment, "RLUD"
@@ -177,7 +177,7 @@ TEST_P(Golden, LinksRegionsAndGraphMatch) {
                         << "links of pixel " << x << "," << y << " layer " << k;
                 }
             }
-        const core::Segmentation seg = core::segmentLayers(c.stack, conn, threads);
+        const core::Segmentation seg = core::segmentDepthLayers(c.stack, conn, threads);
         EXPECT_EQ(seg.region, c.regions);
         ASSERT_EQ(seg.graph.regions.size(), c.graphRegions.size());
         for (std::size_t r = 0; r < c.graphRegions.size(); ++r) {
@@ -219,7 +219,7 @@ struct Captured {
     core::Mesh mesh;
     core::MeshTopology topology;
     core::View view;
-    core::LayerStack stack;
+    core::DepthStack stack;
     core::SurfaceGeometry geometry;
     core::ConnectivityOptions options;
 };
@@ -230,7 +230,7 @@ Captured capture(core::Mesh mesh, float yaw, float pitch, float distance, int w,
     c.topology = core::buildMeshTopology(c.mesh);
     const core::Camera camera = core::Camera::fromOrbit(c.mesh.bounds(), yaw, pitch, distance);
     c.view = camera.view(w, h);
-    c.stack = core::captureLayersCpu(c.mesh, c.view, {true, 2});
+    c.stack = core::captureDepthLayersCpu(c.mesh, c.view, {true, 2});
     c.geometry = core::makeSurfaceGeometry(c.mesh, c.topology, c.view);
     c.options.unitScale = core::unitScale(c.mesh);
     return c;
@@ -244,7 +244,7 @@ TEST(Segmentation, SameOutputForAnyThreadCount) {
         c.options.threads = 1;
         const core::Connectivity reference =
             core::computeConnectivity(c.stack, c.options, &c.geometry);
-        const core::Segmentation refSeg = core::segmentLayers(c.stack, reference, 1);
+        const core::Segmentation refSeg = core::segmentDepthLayers(c.stack, reference, 1);
         ASSERT_GT(refSeg.graph.regions.size(), 1u);
         // 64: bands of rows with equal fragment counts, some of them empty.
         for (unsigned threads : {2u, 7u, 64u}) {
@@ -252,7 +252,7 @@ TEST(Segmentation, SameOutputForAnyThreadCount) {
             const core::Connectivity conn =
                 core::computeConnectivity(c.stack, c.options, &c.geometry);
             EXPECT_EQ(conn.links, reference.links) << threads << " threads";
-            const core::Segmentation seg = core::segmentLayers(c.stack, conn, threads);
+            const core::Segmentation seg = core::segmentDepthLayers(c.stack, conn, threads);
             EXPECT_EQ(seg.region, refSeg.region) << threads << " threads";
             EXPECT_EQ(seg.graph.neighborOffsets, refSeg.graph.neighborOffsets);
             EXPECT_EQ(seg.graph.neighbors, refSeg.graph.neighbors);
@@ -269,7 +269,7 @@ TEST(Segmentation, SameOutputForAnyThreadCount) {
 TEST(Segmentation, RegionsAreSameLayerComponentsOrderedByLayerThenScan) {
     Captured c = capture(core::makeHexRing(24), 20.0f, 35.0f, 2.0f, 120, 90);
     const core::Connectivity conn = core::computeConnectivity(c.stack, c.options, &c.geometry);
-    const core::Segmentation seg = core::segmentLayers(c.stack, conn, 3);
+    const core::Segmentation seg = core::segmentDepthLayers(c.stack, conn, 3);
     const core::RegionGraph& g = seg.graph;
     const int w = c.stack.width;
     std::vector<std::uint32_t> firstSeen(g.regions.size(), core::kNone);
@@ -346,14 +346,14 @@ TEST(Segmentation, LayerPropertyHoldsByConstruction) {
 }
 
 TEST(Segmentation, MismatchedInputGivesAnEmptyResult) {
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2;
     stack.height = 1;
     stack.offsets = {0, 1, 2};
     stack.depth = {1.0f, 1.0f};
     stack.triangle = {0, 0};
     core::Connectivity conn; // wrong size
-    const core::Segmentation seg = core::segmentLayers(stack, conn);
+    const core::Segmentation seg = core::segmentDepthLayers(stack, conn);
     EXPECT_TRUE(seg.region.empty());
     EXPECT_TRUE(seg.graph.regions.empty());
     ASSERT_EQ(seg.graph.neighborOffsets.size(), 1u);
@@ -361,7 +361,7 @@ TEST(Segmentation, MismatchedInputGivesAnEmptyResult) {
 
 TEST(Segmentation, FragmentsBeyondLayer255AreUnlinkedSingletons) {
     // Two pixels with 300 coincident fragments each: layers 1..255 link straight across.
-    core::LayerStack stack;
+    core::DepthStack stack;
     stack.width = 2;
     stack.height = 1;
     const std::uint32_t n = 300;
@@ -379,7 +379,7 @@ TEST(Segmentation, FragmentsBeyondLayer255AreUnlinkedSingletons) {
     EXPECT_EQ(conn.link(254, core::kRight), 255);
     EXPECT_EQ(conn.link(255, core::kRight), 0);
     EXPECT_EQ(conn.link(n + 254, core::kLeft), 255);
-    const core::Segmentation seg = core::segmentLayers(stack, conn, 2);
+    const core::Segmentation seg = core::segmentDepthLayers(stack, conn, 2);
     // 255 two-pixel regions plus 2 × 45 singletons.
     EXPECT_EQ(seg.graph.regions.size(), 255u + 2u * 45u);
     EXPECT_EQ(seg.region[0], seg.region[n]);
