@@ -186,9 +186,10 @@ PaintLayerTimes timePaintLayers(core::Document& doc, const core::View& view, int
                 doc.endStroke();
             break;
         }
-    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget())) {
-        times.stackBytes = texture->paintLayerStack().layerBytes();
-        times.targetBytes = texture->bytes();
+    if (const core::PaintTarget* painted = doc.currentPaintTarget();
+        painted && painted->paintLayers()) {
+        times.stackBytes = painted->paintLayers()->paintLayerStack().layerBytes();
+        times.targetBytes = painted->bytes();
     }
     doc.brush() = brush;
     return times;

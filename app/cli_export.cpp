@@ -70,32 +70,33 @@ int runExport(const ExportArgs& args) {
         const core::Result<core::PaintTarget*> target = doc.ensurePaintTarget();
         if (!target)
             return fail(args.input + ": " + target.error());
-        const auto* texture = dynamic_cast<const core::TextureTarget*>(*target);
-        if (!texture)
+        const core::PaintTarget& painted = **target;
+        if (painted.pageCount() == 0)
             return fail(args.input + ": there is no paint texture to export (the model is "
                                      "painted with vertex colours)");
         std::vector<core::Image> pages, metallicRoughness;
-        for (std::size_t i = 0; i < texture->pageCount(); ++i) {
-            pages.push_back(texture->page(i));
-            metallicRoughness.push_back(texture->metallicRoughnessPage(i));
+        for (std::size_t i = 0; i < painted.pageCount(); ++i) {
+            pages.push_back(painted.page(i));
+            metallicRoughness.push_back(painted.metallicRoughnessPage(i));
         }
         files = core::exportChannelTextures(args.out, *format, pages, metallicRoughness);
     } else {
         // The painted mesh's texture i is page i: its roughness and metallic go beside it.
         core::MaterialChannels channels;
-        if (const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.paintTarget()))
-            for (std::size_t i = 0; i < texture->pageCount(); ++i)
-                channels.metallicRoughness.push_back(texture->metallicRoughnessPage(i));
+        if (const core::PaintTarget* painted = doc.paintTarget())
+            for (std::size_t i = 0; i < painted->pageCount(); ++i)
+                channels.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
         files = core::exportMaterial(args.out, *format, doc.paintedMesh(), channels);
     }
     if (!files)
         return fail(files.error());
     if (args.perLayer) {
-        const auto* texture = dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget());
-        if (!texture)
+        const core::PaintTarget* painted = doc.currentPaintTarget();
+        const core::PaintLayerTarget* paintLayers = painted ? painted->paintLayers() : nullptr;
+        if (!paintLayers)
             return fail(args.input + ": there are no paint layers to export (they need a paint "
                                      "texture)");
-        auto layers = core::exportPaintLayerImages(args.out, texture->paintLayerStack());
+        auto layers = core::exportPaintLayerImages(args.out, paintLayers->paintLayerStack());
         if (!layers)
             return fail(layers.error());
         files->insert(files->end(), layers->begin(), layers->end());

@@ -695,19 +695,7 @@ bool Document::walkHistory(bool undo, PaintChanges& changes) {
 }
 
 Mesh Document::paintedMesh() const {
-    if (!m_paintTarget)
-        return *m_mesh;
-    Mesh mesh = m_paintTarget->mesh();
-    mesh.materials = m_paintTarget->drawMaterials();
-    if (const auto* texture = dynamic_cast<const TextureTarget*>(m_paintTarget.get())) {
-        mesh.textures.clear();
-        for (std::size_t i = 0; i < texture->pageCount(); ++i)
-            mesh.textures.push_back(texture->page(i));
-        mesh.colors.clear(); // baked into the pages
-    } else if (const auto* colors = dynamic_cast<const VertexColorTarget*>(m_paintTarget.get())) {
-        mesh.colors = colors->colors();
-    }
-    return mesh;
+    return m_paintTarget ? m_paintTarget->paintedMesh() : *m_mesh;
 }
 
 } // namespace core

@@ -331,7 +331,7 @@ public:
     // for a vertex colour target, an unknown id or an operation that does not apply.
 
     /** The texture target (made on first use), or an Error for a vertex colour target. */
-    Result<TextureTarget*> paintLayerTarget();
+    Result<PaintLayerTarget*> paintLayerTarget();
     /**
      * Adds a layer right above the selected one (above the base: at the bottom) and selects it.
      * Returns its id.

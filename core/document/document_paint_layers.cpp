@@ -56,21 +56,21 @@ PaintLayerChange swapBack(PaintLayerStack& stack, std::size_t index,
 
 } // namespace
 
-Result<TextureTarget*> Document::paintLayerTarget() {
+Result<PaintLayerTarget*> Document::paintLayerTarget() {
     Result<PaintTarget*> target = ensurePaintTarget();
     if (!target)
         return target.takeError();
-    auto* texture = dynamic_cast<TextureTarget*>(*target);
-    if (!texture)
+    PaintLayerTarget* layers = (*target)->paintLayers();
+    if (!layers)
         return Error{"vertex colours have no paint layers (paint into a texture for them)",
                      ErrorKind::BadInput};
     if (m_tracker.inStroke())
         endStroke();
-    return texture;
+    return layers;
 }
 
 Result<std::size_t> Document::paintLayerIndex(std::uint64_t id) {
-    Result<TextureTarget*> target = paintLayerTarget();
+    Result<PaintLayerTarget*> target = paintLayerTarget();
     if (!target)
         return target.takeError();
     const std::optional<std::size_t> index = (*target)->paintLayerStack().indexOf(id);
@@ -80,7 +80,7 @@ Result<std::size_t> Document::paintLayerIndex(std::uint64_t id) {
 }
 
 void Document::applyPaintLayerChange(PaintLayerChange& change, PaintChanges& changes) {
-    auto* target = dynamic_cast<TextureTarget*>(m_paintTarget.get());
+    PaintLayerTarget* target = m_paintTarget ? m_paintTarget->paintLayers() : nullptr;
     if (!target)
         return;
     PaintLayerStack& stack = target->paintLayerStack();
@@ -159,10 +159,10 @@ void Document::pushPaintLayerChange(PaintLayerChange change, nlohmann::json op,
 
 Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, PaintChanges& changes) {
     changes.clear();
-    Result<TextureTarget*> ready = paintLayerTarget();
+    Result<PaintLayerTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
-    TextureTarget& target = **ready;
+    PaintLayerTarget& target = **ready;
     PaintLayerStack& stack = target.paintLayerStack();
     std::size_t index = stack.size();
     if (target.selection().layer == 0)
@@ -209,7 +209,7 @@ Status Document::deletePaintLayer(std::uint64_t id, PaintChanges& changes) {
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **paintLayerTarget();
+    PaintLayerTarget& target = **paintLayerTarget();
     PaintLayerChange change;
     change.kind = PaintLayerChange::Kind::Swap;
     change.index = *index;
@@ -227,7 +227,7 @@ Status Document::movePaintLayer(std::uint64_t id, std::size_t to, PaintChanges& 
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **paintLayerTarget();
+    PaintLayerTarget& target = **paintLayerTarget();
     to = std::min(to, target.paintLayerStack().size() - 1);
     if (to == *index)
         return {};
@@ -248,7 +248,7 @@ Status Document::setPaintLayerSettings(std::uint64_t id, PaintLayerSettings sett
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **paintLayerTarget();
+    PaintLayerTarget& target = **paintLayerTarget();
     if (!std::isfinite(settings.opacity))
         return Error{"the opacity is not a number", ErrorKind::BadInput};
     settings.opacity = std::clamp(settings.opacity, 0.0f, 1.0f);
@@ -285,7 +285,7 @@ Status Document::mergePaintLayerDown(std::uint64_t id, PaintChanges& changes) {
     if (*index == 0)
         return Error{"the lowest paint layer has no paint layer below to merge into",
                      ErrorKind::BadInput};
-    TextureTarget& target = **paintLayerTarget();
+    PaintLayerTarget& target = **paintLayerTarget();
     PaintLayerStack& stack = target.paintLayerStack();
     // Merged here, then put back as it was, so the change applies (and undoes) as a swap.
     std::vector<std::unique_ptr<PaintLayer>> removed;
@@ -297,7 +297,7 @@ Status Document::mergePaintLayerDown(std::uint64_t id, PaintChanges& changes) {
 
 Status Document::flattenPaintLayers(std::string name, PaintChanges& changes) {
     changes.clear();
-    Result<TextureTarget*> ready = paintLayerTarget();
+    Result<PaintLayerTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
     PaintLayerStack& stack = (*ready)->paintLayerStack();
@@ -334,7 +334,7 @@ Status Document::deletePaintLayerMask(std::uint64_t id, PaintChanges& changes) {
     Result<std::size_t> index = paintLayerIndex(id);
     if (!index)
         return index.takeError();
-    TextureTarget& target = **paintLayerTarget();
+    PaintLayerTarget& target = **paintLayerTarget();
     if (!target.paintLayerStack().layer(*index).mask)
         return Error{"the paint layer has no mask", ErrorKind::BadInput};
     PaintLayerChange change;
@@ -349,10 +349,10 @@ Status Document::deletePaintLayerMask(std::uint64_t id, PaintChanges& changes) {
 }
 
 Status Document::selectPaint(PaintSelection selection) {
-    Result<TextureTarget*> ready = paintLayerTarget();
+    Result<PaintLayerTarget*> ready = paintLayerTarget();
     if (!ready)
         return ready.takeError();
-    TextureTarget& target = **ready;
+    PaintLayerTarget& target = **ready;
     if (selection.layer == 0) {
         selection.mask = false;
     } else {

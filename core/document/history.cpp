@@ -78,14 +78,16 @@ bool History::push(HistoryStep step) {
         // Too big to keep. The older steps must go too: undoing them over this step's changes
         // would restore a mix of states.
         m_dropped += m_steps.size() + 1;
-        clear();
+        reset();
         m_savedId = kNoState; // the state changed: it is not the saved one any more
+        notify();
         return false;
     }
     m_steps.push_back({std::move(step), size, m_nextId++});
     m_bytes += size;
     m_next = m_steps.size();
     enforceBudget();
+    notify();
     return true;
 }
 
@@ -101,6 +103,7 @@ void History::undone() {
     if (canUndo()) {
         --m_next;
         ++m_revision;
+        notify();
     }
 }
 
@@ -108,6 +111,7 @@ void History::redone() {
     if (canRedo()) {
         ++m_next;
         ++m_revision;
+        notify();
     }
 }
 
@@ -126,9 +130,15 @@ std::optional<StepKind> History::redoKind() const {
 void History::setBudget(std::size_t budgetBytes) {
     m_budget = budgetBytes;
     enforceBudget();
+    notify();
 }
 
 void History::clear() {
+    reset();
+    notify();
+}
+
+void History::reset() {
     m_steps.clear();
     m_next = 0;
     m_bytes = 0;
@@ -164,8 +174,10 @@ void History::dropStaleOrders(std::uint64_t depthLayersSerial) {
         if (i < m_next)
             --m_next;
     }
-    if (changed)
+    if (changed) {
         ++m_revision;
+        notify();
+    }
 }
 
 bool History::squash(std::uint64_t mark, StepKind kind) {
@@ -200,11 +212,27 @@ bool History::squash(std::uint64_t mark, StepKind kind) {
     m_next = m_steps.size();
     ++m_revision;
     enforceBudget();
+    notify();
     return true;
 }
 
 void History::markSaved() {
     m_savedId = stateId();
+    notify();
+}
+
+std::uint64_t History::subscribe(std::function<void()> listener) {
+    m_listeners.emplace_back(m_nextListener, std::move(listener));
+    return m_nextListener++;
+}
+
+void History::unsubscribe(std::uint64_t id) {
+    std::erase_if(m_listeners, [id](const auto& entry) { return entry.first == id; });
+}
+
+void History::notify() const {
+    for (const auto& [id, listener] : m_listeners)
+        listener();
 }
 
 bool History::atSavedState() const {

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <variant>
@@ -159,6 +160,15 @@ public:
     /** Changes with every push, undo, redo and drop, so a view can tell it must refresh. */
     std::uint64_t revision() const { return m_revision; }
 
+    /**
+     * Calls listener after every change of the history: a step pushed, undone, redone, dropped
+     * or squashed, the budget, the saved mark, clear(). It runs on the thread that made the
+     * change, inside the Document operation that made it, and must not change the history.
+     * Returns an id for unsubscribe().
+     */
+    std::uint64_t subscribe(std::function<void()> listener);
+    void unsubscribe(std::uint64_t id);
+
 private:
     struct Entry {
         HistoryStep step;
@@ -167,6 +177,9 @@ private:
     };
     void enforceBudget();
     void dropFront();
+    /** clear() without telling the listeners (push() clears as part of its own change). */
+    void reset();
+    void notify() const;
     std::uint64_t stateId() const;
 
     std::deque<Entry> m_steps; // oldest first; [0, m_next) can be undone
@@ -174,6 +187,8 @@ private:
     std::size_t m_bytes = 0;
     std::size_t m_budget;
     std::size_t m_dropped = 0;
+    std::vector<std::pair<std::uint64_t, std::function<void()>>> m_listeners;
+    std::uint64_t m_nextListener = 1;
     std::uint64_t m_nextId = 1;
     std::uint64_t m_baseId = 0;  // the state before the oldest kept step
     std::uint64_t m_savedId = 0; // the saved state's id; none when it cannot be reached

@@ -152,7 +152,8 @@ Result<SavedPaintLayers> paintLayersFromJson(const Json& j, std::vector<std::str
 }
 
 std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) {
-    const auto* target = dynamic_cast<const TextureTarget*>(doc.currentPaintTarget());
+    const PaintTarget* current = doc.currentPaintTarget();
+    const PaintLayerTarget* target = current ? current->paintLayers() : nullptr;
     if (!target || target->paintLayerStack().size() == 0)
         return nullptr;
     const PaintLayerStack& stack = target->paintLayerStack();
@@ -183,12 +184,12 @@ std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) 
 }
 
 Status restorePaintLayers(Document& doc, const SavedPaintLayers& saved) {
-    if (!dynamic_cast<const TextureTarget*>(doc.currentPaintTarget()))
+    if (!doc.currentPaintTarget() || !doc.currentPaintTarget()->paintLayers())
         return Error{"the paint layers need a texture to paint into; they are left out"};
-    Result<TextureTarget*> ready = doc.paintLayerTarget();
+    Result<PaintLayerTarget*> ready = doc.paintLayerTarget();
     if (!ready)
         return ready.takeError();
-    TextureTarget& target = **ready;
+    PaintLayerTarget& target = **ready;
     PaintLayerStack& stack = target.paintLayerStack();
     const auto fits = [&](const std::shared_ptr<const TiledPlane>& plane, int texelBytes) {
         return !plane || (plane->pages() == stack.pages() && plane->texelBytes() == texelBytes);

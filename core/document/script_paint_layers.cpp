@@ -50,7 +50,7 @@ glm::vec3 srgbColor(const json& value, const char* what) {
  * The paint layer op names with "layer": an index (0 = the lowest), a name, or "base" (0); the
  * selected layer without one.
  */
-std::uint64_t layerId(const TextureTarget& target, const json& op, bool baseAllowed) {
+std::uint64_t layerId(const PaintLayerTarget& target, const json& op, bool baseAllowed) {
     const PaintLayerStack& stack = target.paintLayerStack();
     std::uint64_t id = target.selection().layer;
     if (op.contains("layer")) {
@@ -133,10 +133,10 @@ std::optional<Status> runPaintLayerOperation(Document& doc, const std::string& n
     if (name.rfind("layer-", 0) != 0 && name.rfind("mask-", 0) != 0)
         return std::nullopt;
     try {
-        Result<TextureTarget*> ready = doc.paintLayerTarget();
+        Result<PaintLayerTarget*> ready = doc.paintLayerTarget();
         if (!ready)
             throw PaintLayerOpError{ready.error()};
-        TextureTarget& target = **ready;
+        PaintLayerTarget& target = **ready;
         PaintChanges changes; // the caller refreshes its own copy of the target
         if (name == "layer-add") {
             PaintLayerSettings settings;

@@ -35,11 +35,19 @@ private:
 HistoryBridge::HistoryBridge(core::Document& document, QObject* parent)
     : QObject(parent), m_document(document), m_stack(new QUndoStack(this)) {
     m_revision = m_document.history().revision();
+    m_listener = m_document.history().subscribe([this] {
+        if (!m_suspended && !m_applying)
+            sync();
+    });
     // After the stack's own undo()/redo() (its index is up to date then): report the change.
     connect(m_stack, &QUndoStack::indexChanged, this, [this] {
         if (!m_suspended)
             sync();
     });
+}
+
+HistoryBridge::~HistoryBridge() {
+    m_document.history().unsubscribe(m_listener);
 }
 
 QString HistoryBridge::stepText(core::StepKind kind) {
@@ -67,12 +75,14 @@ QString HistoryBridge::stepText(core::StepKind kind) {
 }
 
 void HistoryBridge::undoStep() {
+    const QScopedValueRollback guard(m_applying, true);
     core::PaintChanges changes;
     if (m_document.undo(changes))
         emit applied(changes);
 }
 
 void HistoryBridge::redoStep() {
+    const QScopedValueRollback guard(m_applying, true);
     core::PaintChanges changes;
     if (m_document.redo(changes))
         emit applied(changes);
@@ -84,7 +94,6 @@ bool HistoryBridge::isClean() const {
 
 void HistoryBridge::markSaved() {
     m_document.history().markSaved();
-    sync();
 }
 
 void HistoryBridge::sync() {

@@ -20,17 +20,17 @@ namespace ui {
 /**
  * The GUI's view of the document's one history (core::History): a QUndoStack that mirrors it
  * step for step, for Edit ▸ Undo/Redo with the step's name and for the saved-state mark. The
- * history itself, and what undo does, are the core's: the stack holds no data.
+ * history itself, and what undo does, are the core's: the stack holds no data. It listens to the
+ * history, so the stack follows every change whoever made it. The document must outlive it.
  */
 class HistoryBridge : public QObject {
     Q_OBJECT
 
 public:
     explicit HistoryBridge(core::Document& document, QObject* parent = nullptr);
+    ~HistoryBridge() override;
 
     QUndoStack* stack() const { return m_stack; }
-    /** Brings the stack in line with the history; call after anything that may change it. */
-    void sync();
     /** The document as it is now is saved (after a save or a load). */
     void markSaved();
     /** Whether the document is at its saved state (undo/redo may come back to it). */
@@ -49,10 +49,14 @@ private:
     friend class HistoryCommand;
     void undoStep();
     void redoStep();
+    /** Brings the stack in line with the history (it told us it changed). */
+    void sync();
 
     core::Document& m_document;
     QUndoStack* m_stack;
     bool m_suspended = false; // rebuilding the stack: its commands touch nothing
+    bool m_applying = false;  // the stack's undo/redo runs: it syncs once its index moved
+    std::uint64_t m_listener = 0;
     std::uint64_t m_revision = 0;
     bool m_clean = true;
 };

@@ -362,10 +362,10 @@ QList<QAction*> PaintLayersPanel::operationActions() const {
             m_mergeDown, m_flatten, nullptr,     m_addMask, m_deleteMask};
 }
 
-const core::TextureTarget* PaintLayersPanel::target() const {
+const core::PaintLayerTarget* PaintLayersPanel::target() const {
     if (m_document.meshSerial() == 0 || !m_document.hasPaintTarget())
         return nullptr;
-    return dynamic_cast<const core::TextureTarget*>(m_document.paintTarget());
+    return m_document.currentPaintTarget()->paintLayers();
 }
 
 QString PaintLayersPanel::disabledReason() const {
@@ -378,8 +378,8 @@ QString PaintLayersPanel::disabledReason() const {
 }
 
 std::uint64_t PaintLayersPanel::selectedPaintLayer() const {
-    const core::TextureTarget* texture = target();
-    return texture ? texture->selection().layer : 0;
+    const core::PaintLayerTarget* painted = target();
+    return painted ? painted->selection().layer : 0;
 }
 
 QTreeWidgetItem* PaintLayersPanel::rowOf(std::uint64_t id) const {
@@ -399,11 +399,11 @@ void PaintLayersPanel::refresh() {
     m_list->setEnabled(reason.isEmpty());
     m_list->clear();
 
-    const core::TextureTarget* texture = target();
-    const core::PaintSelection selection = texture ? texture->selection() : core::PaintSelection{};
+    const core::PaintLayerTarget* painted = target();
+    const core::PaintSelection selection = painted ? painted->selection() : core::PaintSelection{};
     if (reason.isEmpty()) {
-        if (texture) {
-            const core::PaintLayerStack& stack = texture->paintLayerStack();
+        if (painted) {
+            const core::PaintLayerStack& stack = painted->paintLayerStack();
             for (std::size_t i = stack.size(); i-- > 0;) {
                 const core::PaintLayer& layer = stack.layer(i);
                 auto* item = new QTreeWidgetItem(m_list);
@@ -445,10 +445,10 @@ void PaintLayersPanel::refresh() {
         base->setText(NameColumn, tr("Base"));
         base->setToolTip(NameColumn, tr("The model's own surface (painting here changes it "
                                         "directly)"));
-        if (texture)
+        if (painted)
             base->setIcon(
                 ThumbnailColumn,
-                QIcon(QPixmap::fromImage(baseThumbnail(texture->paintLayerStack(), kThumbnail))));
+                QIcon(QPixmap::fromImage(baseThumbnail(painted->paintLayerStack(), kThumbnail))));
         if (QTreeWidgetItem* current = rowOf(selection.layer))
             m_list->setCurrentItem(current);
     }
@@ -457,14 +457,14 @@ void PaintLayersPanel::refresh() {
 
 void PaintLayersPanel::updateControls() {
     const QScopedValueRollback guard(m_updating, true);
-    const core::TextureTarget* texture = target();
+    const core::PaintLayerTarget* painted = target();
     const bool enabled = disabledReason().isEmpty();
     const core::PaintLayer* layer = nullptr;
     std::size_t index = 0, count = 0;
-    if (texture) {
-        const core::PaintLayerStack& stack = texture->paintLayerStack();
+    if (painted) {
+        const core::PaintLayerStack& stack = painted->paintLayerStack();
         count = stack.size();
-        if (const auto at = stack.indexOf(texture->selection().layer)) {
+        if (const auto at = stack.indexOf(painted->selection().layer)) {
             index = *at;
             layer = &stack.layer(*at);
         }
@@ -477,7 +477,7 @@ void PaintLayersPanel::updateControls() {
     m_lock->setChecked(settings.lockTransparency);
     // A fill layer's values, shown only for one.
     const bool fill = layer != nullptr && settings.kind == core::PaintLayerKind::Fill;
-    const bool material = fill && texture->paintLayerStack().hasMaterialChannels();
+    const bool material = fill && painted->paintLayerStack().hasMaterialChannels();
     m_form->setRowVisible(m_fillColorRow, fill);
     m_form->setRowVisible(m_fillRoughness, material);
     m_form->setRowVisible(m_fillMetallic, material);
@@ -553,11 +553,11 @@ void PaintLayersPanel::onItemClicked(QTreeWidgetItem* item, int column) {
     if (m_updating || !item)
         return;
     const std::uint64_t id = item->data(0, kIdRole).toULongLong();
-    const core::TextureTarget* texture = target();
+    const core::PaintLayerTarget* painted = target();
     const core::PaintLayer* layer = nullptr;
-    if (texture && id != 0)
-        if (const auto index = texture->paintLayerStack().indexOf(id))
-            layer = &texture->paintLayerStack().layer(*index);
+    if (painted && id != 0)
+        if (const auto index = painted->paintLayerStack().indexOf(id))
+            layer = &painted->paintLayerStack().layer(*index);
     if (layer && column == EyeColumn) {
         const bool visible = !layer->settings.visible;
         editSettings(id,
@@ -585,23 +585,23 @@ void PaintLayersPanel::onItemChanged(QTreeWidgetItem* item, int column) {
 }
 
 template <typename Edit> void PaintLayersPanel::editSettings(std::uint64_t id, Edit edit) {
-    const core::TextureTarget* texture = target();
-    if (!texture || id == 0)
+    const core::PaintLayerTarget* painted = target();
+    if (!painted || id == 0)
         return;
-    const auto index = texture->paintLayerStack().indexOf(id);
+    const auto index = painted->paintLayerStack().indexOf(id);
     if (!index)
         return;
-    core::PaintLayerSettings settings = texture->paintLayerStack().layer(*index).settings;
+    core::PaintLayerSettings settings = painted->paintLayerStack().layer(*index).settings;
     edit(settings);
     core::PaintChanges changes;
     finish(m_document.setPaintLayerSettings(id, std::move(settings), changes), changes);
 }
 
 void PaintLayersPanel::moveToRow(std::uint64_t id, int row) {
-    const core::TextureTarget* texture = target();
-    if (!texture)
+    const core::PaintLayerTarget* painted = target();
+    if (!painted)
         return;
-    const int count = int(texture->paintLayerStack().size());
+    const int count = int(painted->paintLayerStack().size());
     if (count == 0)
         return;
     row = std::clamp(row, 0, count - 1);

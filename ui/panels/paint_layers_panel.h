@@ -78,7 +78,7 @@ signals:
 private:
     void createActions();
     /** The target's stack, or nullptr (no model, vertex colours, or no target made yet). */
-    const core::TextureTarget* target() const;
+    const core::PaintLayerTarget* target() const;
     /** The selected layer's id (0: Base). */
     std::uint64_t selectedPaintLayer() const;
     /** Reports an operation's result: changed() when it worked, message() when not. */

@@ -37,7 +37,9 @@
 #include "ui/shell/elided_label.h"
 #include "ui/shell/field_focus.h"
 #include "ui/shell/model_loader.h"
+#include "ui/shell/notifier.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/source_names.h"
 #include "ui/tools/region_tools.h"
 #include "ui/view/depth_layers_builder.h"
 #include "ui/view/message_bar.h"
@@ -46,7 +48,6 @@
 namespace ui {
 
 namespace {
-const QString kBuiltinPrefix = QString::fromLatin1(core::kBuiltinPrefix);
 const QString kGeometryKey = QStringLiteral("mainWindow/geometry");
 const QString kStateKey = QStringLiteral("mainWindow/state");
 const QString kThresholdKey = QStringLiteral("segmentation/threshold");
@@ -71,6 +72,7 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("LayerPaint"));
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    m_notifier = new Notifier(*this);
 
     {
         // The last session's segmentation options.
@@ -113,7 +115,9 @@ MainWindow::MainWindow(QWidget* parent)
 
     createPanels();
     createPaintActions();
-    m_project = new ProjectController(*this);
+    m_project = new ProjectController(*m_document, *m_history, *m_notifier,
+                                      [this] { return projectState(); });
+    connect(m_project, &ProjectController::openRequested, this, &MainWindow::openFile);
     connect(m_project, &ProjectController::modifiedChanged, this, &MainWindow::updateWindowTitle);
     connect(m_project, &ProjectController::documentNameChanged, this,
             &MainWindow::updateWindowTitle);
@@ -196,6 +200,8 @@ MainWindow::MainWindow(QWidget* parent)
 
 MainWindow::~MainWindow() {
     // Children outlive the members: the ones that use the document go first.
+    delete m_history;
+    m_history = nullptr;
     delete m_builder;
     m_builder = nullptr;
     delete m_viewport;
@@ -206,7 +212,8 @@ void MainWindow::openFile(const QString& source) {
     finishStroke();
     if (!m_project->maybeSave())
         return;
-    const QString resolved = isBuiltin(source) ? source : QFileInfo(source).absoluteFilePath();
+    const QString resolved =
+        isBuiltinSource(source) ? source : QFileInfo(source).absoluteFilePath();
     startProgress(resolved);
     m_loader->load(resolved);
 }
@@ -215,37 +222,16 @@ void MainWindow::openFromCommandLine(const QStringList& files) {
     openFile(files.isEmpty() ? QString::fromLatin1(core::kDefaultModel) : files.first());
 }
 
+void MainWindow::setErrorDialogsEnabled(bool enabled) {
+    m_notifier->setDialogsEnabled(enabled);
+}
+
+bool MainWindow::errorDialogsEnabled() const {
+    return m_notifier->dialogsEnabled();
+}
+
 bool MainWindow::isLoading() const {
     return m_loader->isLoading();
-}
-
-QString MainWindow::builtinLabel(const QString& name) {
-    if (name == QLatin1String("trefoil"))
-        return tr("Trefoil knot");
-    if (name == QLatin1String("hexring"))
-        return tr("Hexagonal ring");
-    if (name == QLatin1String("row"))
-        return tr("Row of four");
-    if (name == QLatin1String("knot"))
-        return tr("Torus knot (1M triangles)");
-    if (name.startsWith(QLatin1String("knot?triangles=")))
-        return tr("Torus knot (%1 triangles)").arg(QLocale().toString(name.mid(15).toLongLong()));
-    // A model added to core before the GUI learnt its label: its English description.
-    for (const core::BuiltinModel& model : core::builtinModels()) {
-        if (QString::fromStdString(model.name) == name)
-            return QString::fromStdString(model.description);
-    }
-    return name;
-}
-
-bool MainWindow::isBuiltin(const QString& source) {
-    return source.startsWith(kBuiltinPrefix);
-}
-
-QString MainWindow::displayName(const QString& source) {
-    if (isBuiltin(source))
-        return builtinLabel(source.mid(kBuiltinPrefix.size()));
-    return QFileInfo(source).fileName();
 }
 
 QDockWidget* MainWindow::makeDock(const QString& title, const QString& name, QWidget* content,
@@ -434,7 +420,6 @@ void MainWindow::onDepthLayersBuilt() {
     if (m_document->depthLayers() != layers)
         return;
     m_regionTools->layersChanged();
-    m_history->sync(); // order steps of the old regions go
     updateDepthLayerInfo();
 }
 
@@ -449,7 +434,6 @@ void MainWindow::onSegmentationChanged() {
     if (m_document->depthLayers() != layers)
         return;
     m_regionTools->layersChanged();
-    m_history->sync();
     updateDepthLayerInfo();
 }
 
@@ -458,7 +442,6 @@ void MainWindow::onDepthLayersCleared() {
     m_depthLayersPanel->setDepthLayers(nullptr);
     m_graphPanel->setDepthLayers(nullptr);
     m_regionTools->layersChanged();
-    m_history->sync();
     updateDepthLayerInfo();
 }
 
@@ -495,7 +478,6 @@ void MainWindow::setPreferences(const Preferences& preferences) {
     preferences.save();
     m_preferences = preferences;
     m_document->history().setBudget(std::size_t(preferences.undoBudgetMiB) << 20);
-    m_history->sync(); // the budget may have dropped steps
     setPressureCurve(core::PressureCurve{preferences.pressureGamma});
     m_viewport->setCameraMapping(preferences.cameraMapping);
     // The texture size is the default for the next model; the open one keeps its painting.

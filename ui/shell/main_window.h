@@ -46,6 +46,7 @@ class DepthLayersBuilder;
 class DepthLayersPanel;
 class MessageBar;
 class ModelLoader;
+class Notifier;
 class PaintLayersPanel;
 class PaintTargetJob;
 class QuickGuideDialog;
@@ -175,15 +176,10 @@ public:
      * Tests turn the modal dialogs off: errors are only reported by signals (loadFailed(), ...)
      * and unsaved changes are discarded without asking.
      */
-    void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
-    bool errorDialogsEnabled() const { return m_errorDialogs; }
+    void setErrorDialogsEnabled(bool enabled);
+    bool errorDialogsEnabled() const;
     /** A warning box (window-modal, not blocking) unless dialogs are off. */
     void showError(const QString& title, const QString& text, const QString& details);
-
-    /** The translated name of a built-in model ("trefoil" → "Trefoil knot"). */
-    static QString builtinLabel(const QString& name);
-    /** The name shown for a source: a built-in's label or the file name. */
-    static QString displayName(const QString& source);
 
 signals:
     void modelLoaded(const QString& source);
@@ -203,8 +199,6 @@ private:
     static constexpr int kStatusMessageMs = 10000;
     static constexpr int kPaintMessageMs = 3000;
     static constexpr int kProgressSteps = 1000;
-    /** A "builtin:NAME" source rather than a file. */
-    static bool isBuiltin(const QString& source);
 
     void createPanels();
     /** A dock (on the right by default) named for saveState(). */
@@ -340,7 +334,7 @@ private:
     QAction* m_undoAction = nullptr;
     QAction* m_redoAction = nullptr;
     QUndoStack* m_undoStack = nullptr;
-    /** The undo stack is being rebuilt: its commands must not touch the document. */
+    /** The document's history as the undo stack shows it. */
     HistoryBridge* m_history = nullptr;
     ScriptActions* m_scriptActions = nullptr;
     std::uint64_t m_targetSerial = 0; // the document's paint target the view shows
@@ -359,7 +353,8 @@ private:
     QPointer<QProgressDialog> m_progress;
     QTimer m_progressTimer;
     QString m_source;
-    bool m_errorDialogs = true;
+    /** Status messages and warning boxes, for this window and its controllers. */
+    Notifier* m_notifier = nullptr;
 
     ProjectController* m_project = nullptr;
     /** The state last opened: keeps what no panel of this window shows yet (projectState()). */

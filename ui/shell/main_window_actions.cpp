@@ -31,8 +31,10 @@
 #include "ui/panels/hidden_regions_panel.h"
 #include "ui/panels/paint_layers_panel.h"
 #include "ui/panels/symmetry_box.h"
+#include "ui/shell/notifier.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/script_actions.h"
+#include "ui/shell/source_names.h"
 #include "ui/tools/region_tools.h"
 #include "ui/tools/tool_cursors.h"
 #include "ui/view/depth_layers_builder.h"
@@ -63,7 +65,6 @@ void MainWindow::createPaintActions() {
 
     m_regionTools = new RegionTools(
         *m_document, *m_viewport, [this] { return m_builder->buildNow(); }, this);
-    connect(m_regionTools, &RegionTools::edited, m_history, &HistoryBridge::sync);
     connect(m_regionTools, &RegionTools::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, kPaintMessageMs); });
     m_hiddenDock = makeDock(tr("Paint to Hide"), QStringLiteral("hiddenRegionsDock"),
@@ -312,14 +313,14 @@ void MainWindow::createPaintLayersPanel() {
     m_depthLayersDock->raise();
     connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
             [this](const core::PaintChanges& changes) {
-                // As after a stroke: the composite's texels to the view, then the undo stack.
+                // As after a stroke: the composite's texels to the view (the undo stack follows
+                // the history by itself).
                 if (m_document->paintTargetSerial() != m_targetSerial) {
                     m_targetSerial = m_document->paintTargetSerial();
                     m_viewport->paintTargetChanged();
                 } else {
                     m_viewport->applyPaintChanges(changes);
                 }
-                m_history->sync();
             });
     connect(m_paintLayersPanel, &PaintLayersPanel::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
@@ -498,7 +499,9 @@ void MainWindow::createProjectActions(QMenu* fileMenu) {
     saveAsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     saveAsAction->setStatusTip(tr("Save the project under another name"));
 
-    m_scriptActions = new ScriptActions(*this);
+    m_scriptActions = new ScriptActions(*m_document, *m_viewport, *m_builder, *m_notifier);
+    connect(m_scriptActions, &ScriptActions::documentStateChanged, this,
+            &MainWindow::showDocumentState);
     fileMenu->addAction(m_scriptActions->runAction());
 
     m_exportMenu = fileMenu->addMenu(tr("&Export"));

@@ -6,7 +6,6 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QLocale>
-#include <QMessageBox>
 #include <QProgressDialog>
 #include <QSignalBlocker>
 #include <QStatusBar>
@@ -20,7 +19,9 @@
 #include "ui/panels/segmentation_controls.h"
 #include "ui/shell/elided_label.h"
 #include "ui/shell/model_loader.h"
+#include "ui/shell/notifier.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/source_names.h"
 #include "ui/tools/region_tools.h"
 #include "ui/view/message_bar.h"
 #include "ui/view/viewport.h"
@@ -50,7 +51,7 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
         recoveredNote =
             tr("Recovered the unsaved work on “%1” that was autosaved at %2. Save it "
                "to keep it.")
-                .arg(displayName(m_source),
+                .arg(sourceDisplayName(m_source),
                      QLocale().toString(QFileInfo(source).lastModified(), QLocale::ShortFormat));
     }
     updateModelInfo(*mesh, recoveredNote, !state);
@@ -75,7 +76,6 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     m_viewport->meshChanged();
     if (m_document->hasPaintTarget())
         m_viewport->paintTargetChanged();
-    m_history->sync();
     updateBrushBar();
     if (!state && !m_document->mesh().hasUvs())
         offerUvLayout();
@@ -83,7 +83,7 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
                               state ? QString::fromStdString(state->recoveryFor) : QString(),
                               state ? QString::fromStdString(state->source) : QString());
     updateWindowTitle();
-    if (!isBuiltin(source) && !m_project->isRecoveryFile(source)) {
+    if (!isBuiltinSource(source) && !m_project->isRecoveryFile(source)) {
         m_recent.add(source);
         updateRecentMenu();
     }
@@ -139,23 +139,26 @@ void MainWindow::updateWindowTitle() {
 void MainWindow::onLoadFailed(const QString& source, const QString& message) {
     stopProgress();
     m_project->documentLoadFailed(source);
-    if (!isBuiltin(source) && !QFileInfo(source).exists())
+    if (!isBuiltinSource(source) && !QFileInfo(source).exists())
         m_recent.remove(source);
-    statusBar()->showMessage(tr("Could not open %1").arg(displayName(source)), kStatusMessageMs);
-    showError(tr("Open Failed"), tr("Could not open “%1”.").arg(displayName(source)), message);
+    statusBar()->showMessage(tr("Could not open %1").arg(sourceDisplayName(source)),
+                             kStatusMessageMs);
+    showError(tr("Open Failed"), tr("Could not open “%1”.").arg(sourceDisplayName(source)),
+              message);
     emit loadFailed(message);
 }
 
 void MainWindow::onLoadCancelled(const QString& source) {
     stopProgress();
-    statusBar()->showMessage(tr("Opening %1 cancelled").arg(displayName(source)), kStatusMessageMs);
+    statusBar()->showMessage(tr("Opening %1 cancelled").arg(sourceDisplayName(source)),
+                             kStatusMessageMs);
 }
 
 void MainWindow::startProgress(const QString& source) {
     stopProgress();
     // Not modal: the current model stays usable, and setValue() never spins a nested loop.
-    auto* dialog = new QProgressDialog(tr("Opening %1…").arg(displayName(source)), tr("Cancel"), 0,
-                                       kProgressSteps, this);
+    auto* dialog = new QProgressDialog(tr("Opening %1…").arg(sourceDisplayName(source)),
+                                       tr("Cancel"), 0, kProgressSteps, this);
     dialog->setWindowTitle(tr("Opening Model"));
     dialog->setAutoClose(false);
     dialog->setAutoReset(false);
@@ -164,7 +167,7 @@ void MainWindow::startProgress(const QString& source) {
     connect(dialog, &QProgressDialog::canceled, m_loader, &ModelLoader::cancel);
     m_progress = dialog;
     m_progressTimer.start();
-    statusBar()->showMessage(tr("Opening %1…").arg(displayName(source)));
+    statusBar()->showMessage(tr("Opening %1…").arg(sourceDisplayName(source)));
 }
 
 void MainWindow::stopProgress() {
@@ -178,7 +181,7 @@ void MainWindow::stopProgress() {
 void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note, bool plainModel) {
     const QLocale locale;
     m_modelInfo->setText(tr("%1 — %2 vertices, %3 triangles")
-                             .arg(displayName(m_source),
+                             .arg(sourceDisplayName(m_source),
                                   locale.toString(qulonglong(mesh.vertexCount())),
                                   locale.toString(qulonglong(mesh.triangleCount()))));
     QStringList warnings;
@@ -195,16 +198,17 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note, bo
         core::defaultTargetKind(mesh, core::Brush{}.radius) == core::PaintTargetKind::Texture)
         notes.append(tr("“%1” has no texture coordinates (UVs). Its vertices are far apart for "
                         "the brush, so it gets an automatic UV layout to paint into a texture.")
-                         .arg(displayName(m_source)));
+                         .arg(sourceDisplayName(m_source)));
     else if (!mesh.hasUvs())
         notes.append(tr("“%1” has no texture coordinates (UVs), so it is painted with vertex "
                         "colours: the paint's detail follows its vertices.")
-                         .arg(displayName(m_source)));
+                         .arg(sourceDisplayName(m_source)));
     // Whole, over the view, until dismissed: the status bar cuts long lines and moves on.
     if (warningCount > 0)
         m_messageBar->showMessage(
             MessageBar::Level::Warning,
-            tr("Opening “%1” gave these warnings:").arg(displayName(m_source)), warnings + notes);
+            tr("Opening “%1” gave these warnings:").arg(sourceDisplayName(m_source)),
+            warnings + notes);
     else if (!notes.isEmpty())
         m_messageBar->showMessage(MessageBar::Level::Information, notes.join(QLatin1Char('\n')));
     else
@@ -217,14 +221,7 @@ void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note, bo
 }
 
 void MainWindow::showError(const QString& title, const QString& text, const QString& details) {
-    if (!m_errorDialogs)
-        return;
-    // Window-modal and opened, not exec()'d: no nested event loop.
-    auto* box = new QMessageBox(QMessageBox::Warning, title, text, QMessageBox::Ok, this);
-    box->setInformativeText(details);
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->setWindowModality(Qt::WindowModal);
-    box->open();
+    m_notifier->showError(title, text, details);
 }
 
 } // namespace ui

@@ -30,6 +30,7 @@
 #include "ui/panels/symmetry_box.h"
 #include "ui/shell/elided_label.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/source_names.h"
 #include "ui/tools/region_tools.h"
 #include "ui/tools/tool_cursors.h"
 #include "ui/view/depth_layers_builder.h"
@@ -204,7 +205,6 @@ void MainWindow::paintLine(QPointF pixel, qreal pressure, bool eraser) {
                                         : tr("No stroke to go on from: a dot here; the next "
                                              "Shift+click draws a line from it"),
                              kPaintMessageMs);
-    m_history->sync();
 }
 
 QAction* MainWindow::createStabilizerAction() {
@@ -324,7 +324,6 @@ void MainWindow::fillAt(QPointF pixel) {
     } else {
         statusBar()->showMessage(tr("Nothing to fill there"), kPaintMessageMs);
     }
-    m_history->sync();
 }
 
 void MainWindow::onPaintMoved(QPointF pixel, qreal pressure) {
@@ -377,7 +376,6 @@ void MainWindow::finishStroke() {
     m_viewport->applyPaintChanges(changes);
     m_viewport->update(); // the stabilizer's string goes
     m_regionTools->endStroke();
-    m_history->sync();
 }
 
 void MainWindow::showDocumentState() {
@@ -393,7 +391,6 @@ void MainWindow::showDocumentState() {
     updateBrushBar();
     m_viewport->cameraMoved();
     m_regionTools->orderApplied();
-    m_history->sync();
     m_project->markModified();
 }
 
@@ -418,7 +415,7 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
     if (core::needsUvLayout(m_document->mesh(), options)) {
         // Seconds on a big model: made off the GUI thread, adopted in paintTargetMade().
         m_targetJob->start(m_document->sharedMesh(), m_document->sharedTopology(), options,
-                           m_document->meshSerial(), displayName(m_source));
+                           m_document->meshSerial(), sourceDisplayName(m_source));
         statusBar()->showMessage(tr("Making an automatic UV layout…"));
         return;
     }
@@ -436,7 +433,6 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
                                     "back)"),
                                  kStatusMessageMs);
     }
-    m_history->sync();
     updateBrushBar();
 }
 
@@ -468,7 +464,6 @@ void MainWindow::paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>&
                                                "layout"),
                                  kStatusMessageMs);
     }
-    m_history->sync();
     updateBrushBar();
 }
 

@@ -16,7 +16,6 @@
 #include <QPushButton>
 #include <QSettings>
 #include <QStandardPaths>
-#include <QStatusBar>
 
 #include <algorithm>
 #include <cmath>
@@ -32,7 +31,8 @@
 #include "core/paint/targets/paint_target.h"
 #include "ui/commands/history_bridge.h"
 #include "ui/shell/background_task.h"
-#include "ui/shell/main_window.h"
+#include "ui/shell/notifier.h"
+#include "ui/shell/source_names.h"
 
 namespace ui {
 
@@ -66,25 +66,27 @@ struct ProjectController::Snapshot {
     quint64 serial = 0;
 };
 
-ProjectController::ProjectController(MainWindow& window)
-    : QObject(&window), m_window(window), m_task(new BackgroundTask(this)),
+ProjectController::ProjectController(core::Document& document, HistoryBridge& history,
+                                     Notifier& notifier,
+                                     std::function<core::ProjectState()> projectState)
+    : QObject(&notifier), m_document(document), m_history(history), m_notifier(notifier),
+      m_projectState(std::move(projectState)), m_task(new BackgroundTask(this)),
       m_autosave(new BackgroundTask(this)) {
     m_sessionId = QStringLiteral("%1-%2")
                       .arg(QCoreApplication::applicationPid())
                       .arg(QDateTime::currentMSecsSinceEpoch(), 0, 36);
-    HistoryBridge* history = m_window.history();
-    connect(history, &HistoryBridge::changed, this, [this] {
+    connect(&m_history, &HistoryBridge::changed, this, [this] {
         ++m_changeSerial;
         updateModified();
     });
-    connect(history, &HistoryBridge::cleanChanged, this, &ProjectController::updateModified);
+    connect(&m_history, &HistoryBridge::cleanChanged, this, &ProjectController::updateModified);
     connect(m_autosave, &BackgroundTask::finished, this, [this](const QString& error, bool) {
         if (error.isEmpty()) {
-            m_window.statusBar()->showMessage(tr("Autosaved"), kStatusMs / 2);
+            m_notifier.showStatus(tr("Autosaved"), kStatusMs / 2);
             emit autosaved(autosavePath());
         } else {
             m_autosavedSerial = 0; // try again at the next tick
-            m_window.statusBar()->showMessage(tr("Autosave failed: %1").arg(error), kStatusMs);
+            m_notifier.showStatus(tr("Autosave failed: %1").arg(error), kStatusMs);
         }
     });
     m_progressTimer.setInterval(50);
@@ -106,7 +108,7 @@ QString ProjectController::documentName() const {
 }
 
 bool ProjectController::isModified() const {
-    return m_otherChanges || !m_window.history()->isClean();
+    return m_otherChanges || !m_history.isClean();
 }
 
 void ProjectController::markModified() {
@@ -126,16 +128,16 @@ void ProjectController::updateModified() {
 void ProjectController::documentLoaded(const QString& source, bool isProject,
                                        const QString& recoveryFor, const QString& modelSource) {
     const bool recovered = !m_recovering.isEmpty() && source == m_recovering;
-    m_window.history()->markSaved();
+    m_history.markSaved();
     m_otherChanges = recovered; // recovered work is not saved anywhere yet
     if (recovered) {
         m_filePath = recoveryFor;
-        m_modelName = MainWindow::displayName(modelSource.isEmpty() ? source : modelSource);
+        m_modelName = sourceDisplayName(modelSource.isEmpty() ? source : modelSource);
         m_recovering.clear();
         m_autosavedSerial = m_changeSerial; // the autosave file holds exactly this
     } else {
         m_filePath = isProject ? source : QString();
-        m_modelName = MainWindow::displayName(source);
+        m_modelName = sourceDisplayName(source);
         m_autosavedSerial = m_changeSerial;
     }
     emit documentNameChanged();
@@ -155,10 +157,14 @@ bool ProjectController::samePath(const QString& a, const QString& b) {
 }
 
 bool ProjectController::isOpenDocumentFile(const QString& path) const {
-    const QString source = m_window.currentSource();
+    const QString source = currentSource();
     return (!m_filePath.isEmpty() && samePath(path, m_filePath)) ||
            (!source.isEmpty() && !source.startsWith(QLatin1String(core::kBuiltinPrefix)) &&
             samePath(path, source));
+}
+
+QString ProjectController::currentSource() const {
+    return QString::fromStdString(m_document.name());
 }
 
 bool ProjectController::isRecoveryFile(const QString& source) const {
@@ -169,14 +175,14 @@ bool ProjectController::isRecoveryFile(const QString& source) const {
 // Saving
 
 std::shared_ptr<ProjectController::Snapshot> ProjectController::snapshot(QString& why) const {
-    const core::Document& doc = m_window.document();
+    const core::Document& doc = m_document;
     if (doc.meshSerial() == 0 || doc.mesh().triangleCount() == 0) {
         why = tr("There is no model to save.");
         return nullptr;
     }
     auto snap = std::make_shared<Snapshot>();
     snap->mesh = doc.paintedMesh();
-    snap->state = m_window.projectState();
+    snap->state = m_projectState();
     snap->serial = m_changeSerial;
     return snap;
 }
@@ -200,7 +206,7 @@ QString ProjectController::askSavePath() {
     QSettings settings;
     QString suggestion = m_filePath;
     if (suggestion.isEmpty()) {
-        const QString source = m_window.currentSource();
+        const QString source = currentSource();
         const bool builtin = source.startsWith(QLatin1String(core::kBuiltinPrefix));
         const QString stem = builtin ? source.mid(int(std::strlen(core::kBuiltinPrefix)))
                                      : QFileInfo(source).completeBaseName();
@@ -213,9 +219,9 @@ QString ProjectController::askSavePath() {
         if (QFileInfo(suggestion).absoluteFilePath() == QFileInfo(source).absoluteFilePath())
             suggestion = QDir(folder).filePath(stem + QStringLiteral("-painted.glb"));
     }
-    QString path = QFileDialog::getSaveFileName(&m_window, tr("Save Project"), suggestion,
-                                                tr("LayerPaint projects (*.glb)") +
-                                                    QStringLiteral(";;") + tr("All files (*)"));
+    QString path = QFileDialog::getSaveFileName(
+        m_notifier.dialogParent(), tr("Save Project"), suggestion,
+        tr("LayerPaint projects (*.glb)") + QStringLiteral(";;") + tr("All files (*)"));
     if (path.isEmpty())
         return {};
     if (QFileInfo(path).suffix().isEmpty())
@@ -231,7 +237,7 @@ bool ProjectController::saveAs() {
 
 bool ProjectController::saveTo(const QString& given) {
     if (m_task->isRunning()) {
-        m_window.statusBar()->showMessage(tr("Still busy with the last save or export"), kStatusMs);
+        m_notifier.showStatus(tr("Still busy with the last save or export"), kStatusMs);
         return false;
     }
     QString path = QFileInfo(given).absoluteFilePath();
@@ -240,7 +246,7 @@ bool ProjectController::saveTo(const QString& given) {
     QString why;
     const std::shared_ptr<Snapshot> snap = snapshot(why);
     if (!snap) {
-        m_window.showError(tr("Save Failed"), tr("Could not save."), why);
+        m_notifier.showError(tr("Save Failed"), tr("Could not save."), why);
         emit saveFailed(why);
         return false;
     }
@@ -264,15 +270,14 @@ void ProjectController::onSaveFinished(const std::shared_ptr<Snapshot>& snap, co
     stopProgress();
     if (!error.isEmpty()) {
         if (cancelled) {
-            m_window.statusBar()->showMessage(tr("Saving cancelled; the file was not changed"),
-                                              kStatusMs);
+            m_notifier.showStatus(tr("Saving cancelled; the file was not changed"), kStatusMs);
         } else {
-            m_window.statusBar()->showMessage(
-                tr("Could not save %1").arg(QFileInfo(path).fileName()), kStatusMs);
-            m_window.showError(tr("Save Failed"),
-                               tr("Could not save “%1”. The file on disk was not changed.")
-                                   .arg(QFileInfo(path).fileName()),
-                               error);
+            m_notifier.showStatus(tr("Could not save %1").arg(QFileInfo(path).fileName()),
+                                  kStatusMs);
+            m_notifier.showError(tr("Save Failed"),
+                                 tr("Could not save “%1”. The file on disk was not changed.")
+                                     .arg(QFileInfo(path).fileName()),
+                                 error);
         }
         emit saveFailed(error);
         return;
@@ -280,7 +285,7 @@ void ProjectController::onSaveFinished(const std::shared_ptr<Snapshot>& snap, co
     m_filePath = path;
     if (snap->serial == m_changeSerial) {
         // Nothing changed while it was written: what is shown is what is saved.
-        m_window.history()->markSaved();
+        m_history.markSaved();
         m_otherChanges = false;
         // Nothing left to recover.
         m_autosave->wait();
@@ -289,7 +294,7 @@ void ProjectController::onSaveFinished(const std::shared_ptr<Snapshot>& snap, co
     }
     emit documentNameChanged();
     updateModified();
-    m_window.statusBar()->showMessage(tr("Saved %1").arg(QFileInfo(path).fileName()), kStatusMs);
+    m_notifier.showStatus(tr("Saved %1").arg(QFileInfo(path).fileName()), kStatusMs);
     emit saved(path);
 }
 
@@ -320,11 +325,12 @@ bool ProjectController::saveAndWait(const QString& path) {
 bool ProjectController::maybeSave() {
     if (!isModified())
         return true;
-    if (!m_window.errorDialogsEnabled())
+    if (!m_notifier.dialogsEnabled())
         return true; // tests: no modal questions, the changes go
     QMessageBox box(QMessageBox::Warning, tr("Unsaved Changes"),
                     tr("“%1” has unsaved changes.").arg(documentName()),
-                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, &m_window);
+                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel,
+                    m_notifier.dialogParent());
     box.setInformativeText(tr("Do you want to save them?"));
     box.setDefaultButton(QMessageBox::Save);
     box.setObjectName(QStringLiteral("unsavedChangesBox"));
@@ -341,7 +347,7 @@ bool ProjectController::maybeSave() {
 // Export
 
 bool ProjectController::canExportTexture() const {
-    const core::Document& doc = m_window.document();
+    const core::Document& doc = m_document;
     return doc.meshSerial() != 0 && doc.mesh().hasUvs() &&
            doc.paintTargetKind() == core::PaintTargetKind::Texture;
 }
@@ -383,7 +389,7 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
     if (isOpenDocumentFile(suggestion))
         suggestion = QDir(folder).filePath(stem + QStringLiteral("-export") + suffix);
     // Qt's own dialog, which can hold the check box (a platform one cannot).
-    QFileDialog dialog(&m_window, tr("Export"), suggestion,
+    QFileDialog dialog(m_notifier.dialogParent(), tr("Export"), suggestion,
                        filter + QStringLiteral(";;") + tr("All files (*)"));
     dialog.setObjectName(QStringLiteral("exportDialog"));
     dialog.setOption(QFileDialog::DontUseNativeDialog);
@@ -417,79 +423,97 @@ void ProjectController::showExportDialog(core::ExportFormat format) {
 }
 
 bool ProjectController::hasPaintLayers() const {
-    const auto* texture =
-        dynamic_cast<const core::TextureTarget*>(m_window.document().currentPaintTarget());
-    return texture && texture->paintLayerStack().size() > 0;
+    const core::PaintTarget* painted = m_document.currentPaintTarget();
+    return painted && painted->paintLayers() &&
+           painted->paintLayers()->paintLayerStack().size() > 0;
 }
 
 bool ProjectController::exportTo(core::ExportFormat format, const QString& given,
                                  bool perPaintLayer) {
     if (m_task->isRunning()) {
-        m_window.statusBar()->showMessage(tr("Still busy with the last save or export"), kStatusMs);
+        m_notifier.showStatus(tr("Still busy with the last save or export"), kStatusMs);
         return false;
     }
     const QString path = QFileInfo(given).absoluteFilePath();
-    const core::Document& doc = m_window.document();
-    if (doc.meshSerial() == 0 || doc.mesh().triangleCount() == 0)
+    if (m_document.meshSerial() == 0 || m_document.mesh().triangleCount() == 0)
         return false;
     if (!m_filePath.isEmpty() && samePath(path, m_filePath)) {
-        // An export keeps no LayerPaint state: written over the project, it would lose it.
-        const QString name = QFileInfo(path).fileName();
-        const QString why =
-            tr("“%1” is the open project. Exporting there would replace it with a plain model "
-               "without its LayerPaint settings. Choose another name, or use File ▸ Save.")
-                .arg(name);
-        m_window.statusBar()->showMessage(tr("Not exported: “%1” is the open project").arg(name),
-                                          kStatusMs);
-        m_window.showError(tr("Export Refused"), tr("Could not export to “%1”.").arg(name), why);
-        emit exportFailed(why);
+        refuseExportOverProject(path);
         return false;
     }
     auto snap = std::make_shared<Snapshot>();
-    if (core::isTextureFormat(format)) {
-        std::string error;
-        const core::TextureTarget* texture = nullptr;
-        if (canExportTexture()) {
-            const core::Result<core::PaintTarget*> target = m_window.document().ensurePaintTarget();
-            if (target)
-                texture = dynamic_cast<const core::TextureTarget*>(*target);
-            else
-                error = target.error();
-        }
-        if (!texture) {
-            const QString why = error.empty()
-                                    ? tr("The model is painted with vertex colours, so there is no "
-                                         "paint texture: export it as glTF or PLY.")
-                                    : fromCore(error);
-            m_window.showError(tr("Export Failed"), tr("Could not export the paint texture."), why);
-            emit exportFailed(why);
-            return false;
-        }
-        for (std::size_t i = 0; i < texture->pageCount(); ++i) {
-            snap->pages.push_back(texture->page(i));
-            snap->metallicRoughness.push_back(texture->metallicRoughnessPage(i));
-        }
-    } else {
-        snap->mesh = doc.paintedMesh();
-        // The painted mesh's texture i is page i: its roughness and metallic go beside it.
-        if (const auto* texture =
-                dynamic_cast<const core::TextureTarget*>(doc.currentPaintTarget()))
-            for (std::size_t i = 0; i < texture->pageCount(); ++i)
-                snap->metallicRoughness.push_back(texture->metallicRoughnessPage(i));
-    }
-    if (perPaintLayer) {
-        const auto* texture =
-            dynamic_cast<const core::TextureTarget*>(m_window.document().currentPaintTarget());
-        if (!texture) {
-            const QString why = tr("There are no paint layers to export (they need a paint "
-                                   "texture).");
-            m_window.showError(tr("Export Failed"), tr("Could not export the paint layers."), why);
-            emit exportFailed(why);
-            return false;
-        }
-        snap->paintLayers = core::paintLayerExport(texture->paintLayerStack());
-    }
+    const bool ready =
+        core::isTextureFormat(format) ? snapshotPaintTexture(*snap) : snapshotPaintedModel(*snap);
+    if (!ready || (perPaintLayer && !snapshotPaintLayers(*snap)))
+        return false;
     startProgress(tr("Exporting %1…").arg(QFileInfo(path).fileName()));
+    startExport(format, path, snap);
+    return true;
+}
+
+void ProjectController::refuseExportOverProject(const QString& path) {
+    // An export keeps no LayerPaint state: written over the project, it would lose it.
+    const QString name = QFileInfo(path).fileName();
+    const QString why =
+        tr("“%1” is the open project. Exporting there would replace it with a plain model "
+           "without its LayerPaint settings. Choose another name, or use File ▸ Save.")
+            .arg(name);
+    m_notifier.showStatus(tr("Not exported: “%1” is the open project").arg(name), kStatusMs);
+    m_notifier.showError(tr("Export Refused"), tr("Could not export to “%1”.").arg(name), why);
+    emit exportFailed(why);
+}
+
+bool ProjectController::snapshotPaintTexture(Snapshot& snap) {
+    std::string error;
+    const core::PaintTarget* painted = nullptr;
+    if (canExportTexture()) {
+        const core::Result<core::PaintTarget*> target = m_document.ensurePaintTarget();
+        if (target)
+            painted = *target;
+        else
+            error = target.error();
+    }
+    if (!painted || painted->pageCount() == 0) {
+        const QString why = error.empty()
+                                ? tr("The model is painted with vertex colours, so there is no "
+                                     "paint texture: export it as glTF or PLY.")
+                                : fromCore(error);
+        m_notifier.showError(tr("Export Failed"), tr("Could not export the paint texture."), why);
+        emit exportFailed(why);
+        return false;
+    }
+    for (std::size_t i = 0; i < painted->pageCount(); ++i) {
+        snap.pages.push_back(painted->page(i));
+        snap.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
+    }
+    return true;
+}
+
+bool ProjectController::snapshotPaintedModel(Snapshot& snap) const {
+    snap.mesh = m_document.paintedMesh();
+    // The painted mesh's texture i is page i: its roughness and metallic go beside it.
+    if (const core::PaintTarget* painted = m_document.currentPaintTarget())
+        for (std::size_t i = 0; i < painted->pageCount(); ++i)
+            snap.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
+    return true;
+}
+
+bool ProjectController::snapshotPaintLayers(Snapshot& snap) {
+    const core::PaintTarget* painted = m_document.currentPaintTarget();
+    const core::PaintLayerTarget* layers = painted ? painted->paintLayers() : nullptr;
+    if (!layers) {
+        const QString why = tr("There are no paint layers to export (they need a paint "
+                               "texture).");
+        m_notifier.showError(tr("Export Failed"), tr("Could not export the paint layers."), why);
+        emit exportFailed(why);
+        return false;
+    }
+    snap.paintLayers = core::paintLayerExport(layers->paintLayerStack());
+    return true;
+}
+
+void ProjectController::startExport(core::ExportFormat format, const QString& path,
+                                    const std::shared_ptr<Snapshot>& snap) {
     auto files = std::make_shared<QStringList>();
     connect(
         m_task, &BackgroundTask::finished, this,
@@ -497,16 +521,16 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
             stopProgress();
             if (!error.isEmpty()) {
                 if (cancelled) {
-                    m_window.statusBar()->showMessage(tr("Export cancelled"), kStatusMs);
+                    m_notifier.showStatus(tr("Export cancelled"), kStatusMs);
                 } else {
-                    m_window.showError(tr("Export Failed"),
-                                       tr("Could not export “%1”.").arg(QFileInfo(path).fileName()),
-                                       error);
+                    m_notifier.showError(
+                        tr("Export Failed"),
+                        tr("Could not export “%1”.").arg(QFileInfo(path).fileName()), error);
                 }
                 emit exportFailed(error);
                 return;
             }
-            m_window.statusBar()->showMessage(
+            m_notifier.showStatus(
                 tr("Exported %n file(s) to %1", nullptr, int(files->size()))
                     .arg(QDir::toNativeSeparators(QFileInfo(path).absolutePath())),
                 kStatusMs);
@@ -542,7 +566,6 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
             files->append(QFile::decodeName(QByteArray::fromStdString(f)));
         return QString();
     });
-    return true;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -550,7 +573,8 @@ bool ProjectController::exportTo(core::ExportFormat format, const QString& given
 
 void ProjectController::startProgress(const QString& text) {
     stopProgress();
-    auto* dialog = new QProgressDialog(text, tr("Cancel"), 0, kProgressSteps, &m_window);
+    auto* dialog =
+        new QProgressDialog(text, tr("Cancel"), 0, kProgressSteps, m_notifier.dialogParent());
     dialog->setObjectName(QStringLiteral("projectProgress"));
     dialog->setWindowTitle(tr("LayerPaint"));
     dialog->setAutoClose(false);
@@ -560,7 +584,7 @@ void ProjectController::startProgress(const QString& text) {
     connect(dialog, &QProgressDialog::canceled, m_task, &BackgroundTask::cancel);
     m_progress = dialog;
     m_progressTimer.start();
-    m_window.statusBar()->showMessage(text);
+    m_notifier.showStatus(text);
 }
 
 void ProjectController::stopProgress() {
@@ -622,7 +646,7 @@ bool ProjectController::autosaveNow() {
         return false;
     snap->state.recoveryFor = encodePath(m_filePath);
     if (snap->state.source.empty())
-        snap->state.source = encodePath(m_window.currentSource());
+        snap->state.source = encodePath(currentSource());
     m_autosavedSerial = snap->serial;
     const std::string file = encodePath(autosavePath());
     m_autosave->start([snap, file](const core::ProgressFn&) {
@@ -643,7 +667,7 @@ void ProjectController::discardRecovery() {
 }
 
 bool ProjectController::offerRecovery() {
-    if (!m_window.errorDialogsEnabled())
+    if (!m_notifier.dialogsEnabled())
         return false;
     const QDir folder(recoveryFolder());
     QFileInfoList candidates =
@@ -668,16 +692,16 @@ bool ProjectController::offerRecovery() {
                 source =
                     QFile::decodeName(QByteArray::fromStdString(lp["source"].get<std::string>()));
         }
-        const QString name = belongsTo.isEmpty()
-                                 ? tr("an unsaved painting of %1")
-                                       .arg(MainWindow::displayName(
-                                           source.isEmpty() ? candidate.fileName() : source))
-                                 : QStringLiteral("“%1”").arg(QFileInfo(belongsTo).fileName());
+        const QString name =
+            belongsTo.isEmpty()
+                ? tr("an unsaved painting of %1")
+                      .arg(sourceDisplayName(source.isEmpty() ? candidate.fileName() : source))
+                : QStringLiteral("“%1”").arg(QFileInfo(belongsTo).fileName());
         QMessageBox box(
             QMessageBox::Question, tr("Recover Unsaved Work"),
             tr("LayerPaint was not closed properly. Work on %1 was autosaved at %2.")
                 .arg(name, QLocale().toString(candidate.lastModified(), QLocale::ShortFormat)),
-            QMessageBox::NoButton, &m_window);
+            QMessageBox::NoButton, m_notifier.dialogParent());
         box.setObjectName(QStringLiteral("recoveryBox"));
         box.setInformativeText(tr("Recover it? It opens as an unsaved document."));
         QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
@@ -703,7 +727,7 @@ bool ProjectController::offerRecovery() {
             return false;
         probe.unlock();
         m_recovering = QFileInfo(autosavePath()).absoluteFilePath();
-        m_window.openFile(m_recovering);
+        emit openRequested(m_recovering);
         return true;
     }
     return false;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include <QLockFile>
@@ -10,14 +11,20 @@
 #include <QStringList>
 #include <QTimer>
 
+#include "core/document/project_state.h"
 #include "core/io/export.h"
 
 class QProgressDialog;
 
+namespace core {
+class Document;
+}
+
 namespace ui {
 
 class BackgroundTask;
-class MainWindow;
+class HistoryBridge;
+class Notifier;
 
 /**
  * The project side of the main window (docs/architecture.md §3 step 7): which file the document is
@@ -39,7 +46,13 @@ class ProjectController : public QObject {
 public:
     static constexpr int kDefaultAutosaveMinutes = 5;
 
-    explicit ProjectController(MainWindow& window);
+    /**
+     * Saves document (its history tells whether it changed since the last save) with the state
+     * projectState returns (the document's and the window's panels'); tells the user through
+     * notifier.
+     */
+    ProjectController(core::Document& document, HistoryBridge& history, Notifier& notifier,
+                      std::function<core::ProjectState()> projectState);
     /** Waits for a save or export under way (an interrupted write would leave a temporary file). */
     ~ProjectController() override;
 
@@ -78,8 +91,8 @@ public:
 
     /**
      * Before the document is replaced or closed: if it has unsaved changes, asks Save / Discard /
-     * Cancel (without dialogs, see MainWindow::setErrorDialogsEnabled, the changes are
-     * discarded). True to go on.
+     * Cancel (without dialogs, see Notifier::setDialogsEnabled, the changes are discarded). True
+     * to go on.
      */
     bool maybeSave();
 
@@ -127,6 +140,8 @@ signals:
     void exported(const QStringList& files);
     void exportFailed(const QString& message);
     void autosaved(const QString& path);
+    /** A recovered autosave is to be opened as the document (offerRecovery()). */
+    void openRequested(const QString& path);
 
 private:
     struct Snapshot;
@@ -139,13 +154,28 @@ private:
     bool isOpenDocumentFile(const QString& path) const;
     void startProgress(const QString& text);
     void stopProgress();
+    /** Says why an export to the open project's own file is refused; exportFailed() follows. */
+    void refuseExportOverProject(const QString& path);
+    /** Export steps: what is exported, copied on the GUI thread; false (reported) if missing. */
+    bool snapshotPaintTexture(Snapshot& snap);
+    bool snapshotPaintedModel(Snapshot& snap) const;
+    bool snapshotPaintLayers(Snapshot& snap);
+    /** Writes snap's export to path on the worker; exported() or exportFailed() follow. */
+    void startExport(core::ExportFormat format, const QString& path,
+                     const std::shared_ptr<Snapshot>& snap);
     void onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,
                         const QString& error, bool cancelled);
     void updateModified();
     bool takeLock();
     void onAutosaveTimer();
 
-    MainWindow& m_window;
+    /** The open model's source (a path or "builtin:NAME"), as the document names it. */
+    QString currentSource() const;
+
+    core::Document& m_document;
+    HistoryBridge& m_history;
+    Notifier& m_notifier;
+    std::function<core::ProjectState()> m_projectState;
     BackgroundTask* m_task = nullptr;     // saves and exports, one at a time
     BackgroundTask* m_autosave = nullptr; // autosaves, silently
     QString m_filePath;

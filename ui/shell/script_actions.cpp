@@ -10,12 +10,11 @@
 #include <QMessageBox>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QStatusBar>
 
 #include "core/document/document.h"
 #include "core/io/project/project_file_tip.h"
 #include "ui/commands/history_bridge.h"
-#include "ui/shell/main_window.h"
+#include "ui/shell/notifier.h"
 #include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
@@ -26,10 +25,11 @@ namespace {
 /** Depth layers for a script: built in the viewport, which shows the document's camera. */
 class ViewportHost final : public core::ScriptHost {
 public:
-    explicit ViewportHost(MainWindow& window) : m_window(window) {}
+    ViewportHost(Viewport& viewport, DepthLayersBuilder& builder)
+        : m_viewport(viewport), m_builder(builder) {}
 
     core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
-        const core::View shown = m_window.viewport()->view();
+        const core::View shown = m_viewport.view();
         if (shown.width != view.width || shown.height != view.height || shown.view != view.view ||
             shown.proj != view.proj)
             return core::Error{QCoreApplication::translate(
@@ -42,19 +42,20 @@ public:
                                    .arg(shown.height)
                                    .toStdString()};
         (void)doc;
-        if (!m_window.depthLayersBuilder()->buildNow())
+        if (!m_builder.buildNow())
             return core::Error{QCoreApplication::translate(
                                    "ui::ScriptActions", "the layers of this view cannot be built")
                                    .toStdString()};
         return {};
     }
-    void viewChanged(const core::View&) override { m_window.viewport()->cameraMoved(); }
+    void viewChanged(const core::View&) override { m_viewport.cameraMoved(); }
     core::Result<std::shared_ptr<const core::TipImage>> loadTip(const std::string& path) override {
         return core::loadTipImageFile(path);
     }
 
 private:
-    MainWindow& m_window;
+    Viewport& m_viewport;
+    DepthLayersBuilder& m_builder;
 };
 
 } // namespace
@@ -68,7 +69,10 @@ struct ScriptActions::Job {
     std::unique_ptr<core::ScriptRunner> runner;
 };
 
-ScriptActions::ScriptActions(MainWindow& window) : QObject(&window), m_window(window) {
+ScriptActions::ScriptActions(core::Document& document, Viewport& viewport,
+                             DepthLayersBuilder& builder, Notifier& notifier)
+    : QObject(&notifier), m_document(document), m_viewport(viewport), m_builder(builder),
+      m_notifier(notifier) {
     m_run = new QAction(tr("Run &Script…"), this);
     m_run->setObjectName(QStringLiteral("actionRunScript"));
     m_run->setStatusTip(tr("Replay a script of painting operations on the open model"));
@@ -80,9 +84,9 @@ ScriptActions::ScriptActions(MainWindow& window) : QObject(&window), m_window(wi
                             "reproduces it (for bug reports and automation)"));
     connect(m_copy, &QAction::triggered, this, [this] {
         QApplication::clipboard()->setText(sessionText());
-        m_window.statusBar()->showMessage(tr("Copied %n operation(s) as a script", nullptr,
-                                             int(m_window.document().session().size())),
-                                          5000);
+        m_notifier.showStatus(
+            tr("Copied %n operation(s) as a script", nullptr, int(m_document.session().size())),
+            5000);
     });
 
     m_timer.setInterval(0);
@@ -92,21 +96,22 @@ ScriptActions::ScriptActions(MainWindow& window) : QObject(&window), m_window(wi
 ScriptActions::~ScriptActions() = default;
 
 QString ScriptActions::sessionText() const {
-    const core::Script script = m_window.document().session().script();
+    const core::Script script = m_document.session().script();
     return QString::fromStdString(core::scriptToJson(script).dump(1));
 }
 
 void ScriptActions::showRunDialog() {
-    if (isRunning() || m_window.document().meshSerial() == 0)
+    if (isRunning() || m_document.meshSerial() == 0)
         return;
-    const QString path = QFileDialog::getOpenFileName(&m_window, tr("Run Script"), QString(),
-                                                      tr("Scripts (*.json);;All files (*)"));
+    const QString path =
+        QFileDialog::getOpenFileName(m_notifier.dialogParent(), tr("Run Script"), QString(),
+                                     tr("Scripts (*.json);;All files (*)"));
     if (path.isEmpty())
         return;
     core::Result<core::Script> script = core::readScript(path.toStdString());
     if (!script) {
         QMessageBox::warning(
-            &m_window, tr("Run Script"),
+            m_notifier.dialogParent(), tr("Run Script"),
             tr("The script cannot be run: %1").arg(QString::fromStdString(script.error())));
         return;
     }
@@ -114,7 +119,7 @@ void ScriptActions::showRunDialog() {
         QMessageBox::Question, tr("Run Script"),
         tr("Run %n operation(s) of %1 on the open model?", nullptr, int(script->operations.size()))
             .arg(QFileInfo(path).fileName()),
-        QMessageBox::Cancel, &m_window);
+        QMessageBox::Cancel, m_notifier.dialogParent());
     QPushButton* one = ask.addButton(tr("As &One Undo Step"), QMessageBox::AcceptRole);
     QPushButton* steps = ask.addButton(tr("&Step by Step"), QMessageBox::AcceptRole);
     ask.setDefaultButton(one);
@@ -126,13 +131,12 @@ void ScriptActions::showRunDialog() {
 void ScriptActions::run(const core::Script& script, bool oneStep) {
     if (isRunning())
         return;
-    core::Document& doc = m_window.document();
+    core::Document& doc = m_document;
     m_job = std::make_unique<Job>();
     m_job->script = script;
     m_job->oneStep = oneStep;
-    m_job->host = std::make_unique<ViewportHost>(m_window);
-    m_job->runner =
-        std::make_unique<core::ScriptRunner>(doc, *m_job->host, m_window.viewport()->view());
+    m_job->host = std::make_unique<ViewportHost>(m_viewport, m_builder);
+    m_job->runner = std::make_unique<core::ScriptRunner>(doc, *m_job->host, m_viewport.view());
     m_job->mark = doc.history().mark();
     // The script's paint target, as the headless tool applies it (the view is the window's).
     if (script.target && (script.target->kind != doc.paintTargetOptions().kind ||
@@ -143,7 +147,7 @@ void ScriptActions::run(const core::Script& script, bool oneStep) {
         }
     }
     m_progress = new QProgressDialog(tr("Running the script…"), tr("Cancel"), 0,
-                                     int(script.operations.size()), &m_window);
+                                     int(script.operations.size()), m_notifier.dialogParent());
     m_progress->setWindowModality(Qt::WindowModal);
     m_progress->setMinimumDuration(500);
     connect(m_progress, &QProgressDialog::canceled, this,
@@ -173,21 +177,21 @@ void ScriptActions::finish(const QString& error) {
     if (!m_job)
         return;
     if (m_job->oneStep)
-        m_window.document().history().squash(m_job->mark, core::StepKind::Script);
+        m_document.history().squash(m_job->mark, core::StepKind::Script);
     m_job.reset();
     if (m_progress) {
         m_progress->disconnect(this);
         m_progress->close();
         m_progress->deleteLater();
         m_progress = nullptr;
-        m_window.activateWindow(); // painting goes on in the window
+        m_notifier.dialogParent()->activateWindow(); // painting goes on in the window
     }
     m_run->setEnabled(true);
-    m_window.showDocumentState();
+    emit documentStateChanged();
     if (error.isEmpty())
-        m_window.statusBar()->showMessage(tr("Script finished"), 5000);
+        m_notifier.showStatus(tr("Script finished"), 5000);
     else
-        m_window.statusBar()->showMessage(tr("Script stopped: %1").arg(error), 10000);
+        m_notifier.showStatus(tr("Script stopped: %1").arg(error), 10000);
     emit finished(error);
 }
 

@@ -9,12 +9,18 @@
 
 #include "core/document/script.h"
 
+namespace core {
+class Document;
+}
+
 class QAction;
 class QProgressDialog;
 
 namespace ui {
 
-class MainWindow;
+class DepthLayersBuilder;
+class Notifier;
+class Viewport;
 
 /**
  * File ▸ Run Script… (replays a script on the open document, as one undo step or step by step,
@@ -26,7 +32,9 @@ class ScriptActions : public QObject {
     Q_OBJECT
 
 public:
-    explicit ScriptActions(MainWindow& window);
+    /** Scripts run on document in viewport's view, their depth layers built by builder. */
+    ScriptActions(core::Document& document, Viewport& viewport, DepthLayersBuilder& builder,
+                  Notifier& notifier);
     ~ScriptActions() override;
 
     QAction* runAction() const { return m_run; }
@@ -40,6 +48,8 @@ public:
     QString sessionText() const;
 
 signals:
+    /** A script changed the document wholesale: every widget shows its state again. */
+    void documentStateChanged();
     /** The script ended: error is empty on success (and says so when it was cancelled). */
     void finished(const QString& error);
 
@@ -49,7 +59,10 @@ private:
     void step();
     void finish(const QString& error);
 
-    MainWindow& m_window;
+    core::Document& m_document;
+    Viewport& m_viewport;
+    DepthLayersBuilder& m_builder;
+    Notifier& m_notifier;
     QAction* m_run;
     QAction* m_copy;
     std::unique_ptr<Job> m_job;

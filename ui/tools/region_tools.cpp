@@ -180,7 +180,6 @@ void RegionTools::layersChanged() {
 
 void RegionTools::changed() {
     orderApplied();
-    emit edited();
 }
 
 void RegionTools::orderApplied() {

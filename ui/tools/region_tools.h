@@ -36,7 +36,7 @@ class RegionTools : public QObject {
 public:
     /**
      * ensureDepthLayers builds the current view's layers if they are missing (false if it could
-     * not). Every change is an undo step of the document; edited() follows it.
+     * not). Every change is an undo step of the document.
      */
     RegionTools(core::Document& document, Viewport& viewport,
                 std::function<bool()> ensureDepthLayers, QObject* parent = nullptr);
@@ -75,8 +75,6 @@ public:
 
 signals:
     void message(const QString& text);
-    /** A change of the region order was recorded in the document's history. */
-    void edited();
 
 private:
     /** After a recorded change: redraw and tell. */

@@ -238,37 +238,42 @@ void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
         return;
     }
     const core::PaintTarget* target = m_document.paintTarget();
-    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target)) {
-        for (std::size_t page = 0; page < pending.pages.size(); ++page) {
-            const core::TexelRect& r = pending.pages[page];
-            if (r.width <= 0 || page >= texture->pageCount())
-                continue;
-            if (compositor) {
-                m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                           texture->page(page));
-                m_compositor->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width,
-                                                      r.height,
-                                                      texture->metallicRoughnessPage(page));
-            } else {
-                m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                         texture->page(page));
-                m_renderer->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width,
-                                                    r.height, texture->metallicRoughnessPage(page));
-            }
-        }
-    } else if (const auto* colors = dynamic_cast<const core::VertexColorTarget*>(target)) {
-        const core::VertexRange range = pending.vertices;
-        const std::vector<glm::vec4>& all = colors->colors();
-        if (range.begin < range.end && range.end <= all.size()) {
-            const std::span<const glm::vec4> changed(all.data() + range.begin,
-                                                     range.end - range.begin);
-            if (compositor)
-                m_compositor->updateVertexColors(range.begin, changed);
-            else
-                m_renderer->updateVertexColors(range.begin, changed);
+    flushPages(*target, pending, compositor);
+    flushVertexColors(*target, pending, compositor);
+    pending.clear();
+}
+
+void Viewport::flushPages(const core::PaintTarget& target, const PendingPaint& pending,
+                          bool compositor) {
+    for (std::size_t page = 0; page < pending.pages.size(); ++page) {
+        const core::TexelRect& r = pending.pages[page];
+        if (r.width <= 0 || page >= target.pageCount())
+            continue;
+        if (compositor) {
+            m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                       target.page(page));
+            m_compositor->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                                  target.metallicRoughnessPage(page));
+        } else {
+            m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                     target.page(page));
+            m_renderer->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                                target.metallicRoughnessPage(page));
         }
     }
-    pending.clear();
+}
+
+void Viewport::flushVertexColors(const core::PaintTarget& target, const PendingPaint& pending,
+                                 bool compositor) {
+    const core::VertexRange range = pending.vertices;
+    const std::span<const glm::vec4> all = target.vertexColors();
+    if (range.begin >= range.end || range.end > all.size())
+        return;
+    const std::span<const glm::vec4> changed = all.subspan(range.begin, range.end - range.begin);
+    if (compositor)
+        m_compositor->updateVertexColors(range.begin, changed);
+    else
+        m_renderer->updateVertexColors(range.begin, changed);
 }
 
 void Viewport::brushMapsChanged() {
@@ -500,20 +505,17 @@ void Viewport::uploadMeshIfDirty() {
     m_shownTarget = target;
     m_renderer->setMesh(mesh);
     // Lit as the composite is, so the view keeps its colours while the camera moves.
-    if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target))
-        for (std::size_t page = 0; page < texture->pageCount(); ++page)
-            m_renderer->setMetallicRoughness(std::uint32_t(page),
-                                             texture->metallicRoughnessPage(page));
+    for (std::size_t page = 0; target && page < target->pageCount(); ++page)
+        m_renderer->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
     m_rendererPaint.clear();
     m_compositorPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor) {
         const core::Status status = m_compositor->setMesh(mesh);
         m_compositorHasMesh = status.ok();
-        if (const auto* texture = dynamic_cast<const core::TextureTarget*>(target))
-            for (std::size_t page = 0; status.ok() && page < texture->pageCount(); ++page)
-                m_compositor->setMetallicRoughness(std::uint32_t(page),
-                                                   texture->metallicRoughnessPage(page));
+        for (std::size_t page = 0; target && status.ok() && page < target->pageCount(); ++page)
+            m_compositor->setMetallicRoughness(std::uint32_t(page),
+                                               target->metallicRoughnessPage(page));
         if (!status)
             reportDepthLayerError(status);
     }

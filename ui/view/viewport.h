@@ -284,6 +284,10 @@ private:
         }
     };
     void flushPaint(PendingPaint& pending, bool compositor);
+    /** flushPaint()'s steps: the changed texels of the pages, the changed vertex colours. */
+    void flushPages(const core::PaintTarget& target, const PendingPaint& pending, bool compositor);
+    void flushVertexColors(const core::PaintTarget& target, const PendingPaint& pending,
+                           bool compositor);
 
     core::Document& m_document;
     // These live only while the context does.

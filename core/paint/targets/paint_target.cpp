@@ -30,6 +30,29 @@ PaintTarget::PaintTarget(std::shared_ptr<const Mesh> mesh,
 
 PaintTarget::~PaintTarget() = default;
 
+const Image& PaintTarget::page(std::size_t) const {
+    static const Image none;
+    return none; // no pages: pageCount() is 0
+}
+
+const Image& PaintTarget::metallicRoughnessPage(std::size_t i) const {
+    return PaintTarget::page(i);
+}
+
+Mesh PaintTarget::paintedMesh() const {
+    Mesh painted = mesh();
+    painted.materials = drawMaterials();
+    if (pageCount() > 0) {
+        painted.textures.clear();
+        for (std::size_t i = 0; i < pageCount(); ++i)
+            painted.textures.push_back(page(i));
+        painted.colors.clear(); // baked into the pages
+    }
+    if (const std::span<const glm::vec4> colors = vertexColors(); !colors.empty())
+        painted.colors.assign(colors.begin(), colors.end());
+    return painted;
+}
+
 const Mesh& PaintTarget::mesh() const {
     return *m_context->mesh;
 }

@@ -93,6 +93,32 @@ struct PaintTargetOptions {
 };
 
 /**
+ * A paint target that paints into paint layers over a read-only base (a texture target today):
+ * the stack, where the next stroke goes (the base, a paint layer or its mask), and the
+ * composite's refresh after the stack was changed directly. PaintTarget::paintLayers() gives it.
+ */
+class PaintLayerTarget {
+public:
+    /**
+     * The paint layers over the base. Change them through the Document (its history); after a
+     * change made directly, call refresh() with the tiles it affected.
+     */
+    virtual PaintLayerStack& paintLayerStack() = 0;
+    virtual const PaintLayerStack& paintLayerStack() const = 0;
+    /** Where the next stroke or fill paints. A selection of a missing layer paints nothing. */
+    virtual const PaintSelection& selection() const = 0;
+    virtual void setSelection(PaintSelection selection) = 0;
+    /**
+     * Recomputes the composite in tiles (plane ignored; duplicates allowed) and returns the
+     * texel rectangles that changed, for the GPU copy.
+     */
+    virtual PaintChanges refresh(std::vector<TileKey> tiles) = 0;
+
+protected:
+    ~PaintLayerTarget() = default;
+};
+
+/**
  * Where paint goes (docs/architecture.md §3 step 6): the paper's paint_object(object, Mp). A stroke
  * is beginStroke(), paint() per dab, endStroke(), which returns the stroke's undo record. Within a
  * stroke every texel or vertex keeps a coverage a (never above the dab's opacity) that rises by
@@ -157,6 +183,22 @@ public:
     /** Memory held by the painted data, originals and scratch, in bytes (approximate). */
     virtual std::size_t bytes() const = 0;
 
+    /** The paint layers this target paints into, or nullptr (vertex colours have none yet). */
+    virtual PaintLayerTarget* paintLayers() { return nullptr; }
+    virtual const PaintLayerTarget* paintLayers() const { return nullptr; }
+    /**
+     * The texture pages the target paints (none for vertex colours): page i as shown (sRGB RGBA8,
+     * the paint layers flattened over the base) and its glTF metallic-roughness texture (linear,
+     * G roughness, B metallic). i must be below pageCount().
+     */
+    virtual std::size_t pageCount() const { return 0; }
+    virtual const Image& page(std::size_t i) const;
+    virtual const Image& metallicRoughnessPage(std::size_t i) const;
+    /** The painted vertex colours (linear RGBA, one per vertex); empty for a texture target. */
+    virtual std::span<const glm::vec4> vertexColors() const { return {}; }
+    /** The mesh as painted: drawMaterials() with the pages as its textures, or its colours. */
+    Mesh paintedMesh() const;
+
 protected:
     struct Context; // the shared dab and stroke machinery, defined in paint_target.cpp
 
@@ -200,7 +242,7 @@ protected:
  * drawMaterials()[m].baseColorTexture is the index of material m's page, factors are 1, and
  * vertex colours are not to be applied (they are baked in).
  */
-class TextureTarget final : public PaintTarget {
+class TextureTarget final : public PaintTarget, public PaintLayerTarget {
 public:
     /**
      * A target for mesh (topology = buildMeshTopology(*mesh), or nullptr to compute it here).
@@ -218,34 +260,25 @@ public:
                                      const glm::vec3& weights) const override;
     std::size_t bytes() const override;
 
-    std::size_t pageCount() const { return m_pages.size(); }
-    /** The texture of page i as shown: the paint layers flattened over the base. */
-    const Image& page(std::size_t i) const;
-    /** The glTF metallic-roughness texture of page i as shown (G roughness, B metallic). */
-    const Image& metallicRoughnessPage(std::size_t i) const;
+    PaintLayerTarget* paintLayers() override { return this; }
+    const PaintLayerTarget* paintLayers() const override { return this; }
+    std::size_t pageCount() const override { return m_pages.size(); }
+    const Image& page(std::size_t i) const override;
+    const Image& metallicRoughnessPage(std::size_t i) const override;
     /** The base's texels of page i (RGBA8): painting with no paint layer selected goes here. */
     const std::vector<std::uint8_t>& basePixels(std::size_t i) const;
     /** Page i as created (what the eraser restores on the base). */
     const Image& originalPage(std::size_t i) const { return m_pages[i].original; }
 
-    /**
-     * The paint layers over the base. Change them through the Document (its history); after a
-     * change made directly, call refresh() with the tiles it affected.
-     */
-    PaintLayerStack& paintLayerStack() { return *m_stack; }
-    const PaintLayerStack& paintLayerStack() const { return *m_stack; }
-    /** Where the next stroke or fill paints. A selection of a missing layer paints nothing. */
-    const PaintSelection& selection() const { return m_selection; }
-    void setSelection(PaintSelection selection) { m_selection = selection; }
+    PaintLayerStack& paintLayerStack() override { return *m_stack; }
+    const PaintLayerStack& paintLayerStack() const override { return *m_stack; }
+    const PaintSelection& selection() const override { return m_selection; }
+    void setSelection(PaintSelection selection) override { m_selection = selection; }
     /** The TileKey::plane of a paint layer's channels (mask false) or of its mask. */
     static std::uint64_t planeKey(std::uint64_t layer, bool mask) {
         return layer == 0 ? 0 : layer * 2 + (mask ? 1 : 0);
     }
-    /**
-     * Recomputes the composite in tiles (plane ignored; duplicates allowed) and returns the
-     * texel rectangles that changed, for the GPU copy.
-     */
-    PaintChanges refresh(std::vector<TileKey> tiles);
+    PaintChanges refresh(std::vector<TileKey> tiles) override;
     /**
      * The colour of the current paint layer (its base colour over nothing, linear RGBA with
      * the layer's coverage as alpha; the base's colour when the base is selected), as colorAt().
@@ -339,6 +372,7 @@ public:
                                      const glm::vec3& weights) const override;
     std::size_t bytes() const override;
 
+    std::span<const glm::vec4> vertexColors() const override { return m_colors; }
     const std::vector<glm::vec4>& colors() const { return m_colors; }
     const std::vector<glm::vec4>& originalColors() const { return m_original; }
 
