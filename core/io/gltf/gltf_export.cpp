@@ -180,101 +180,124 @@ struct GlbParts {
     Bytes bin;  // BIN chunk data, 4-byte aligned
 };
 
-Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
-                             const ProgressFn& progress) {
-    Json extras = additions.extras;
-    if (const Status valid = mesh.validate(); !valid)
-        return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
-    if (!extras.is_null() && !extras.is_object())
-        return Error{"the extras to save are not a JSON object"};
-    if (!reportProgress(progress, 0.0))
-        return cancelledError();
-
-    const std::vector<Run> runs = materialRuns(mesh);
-    const RunGeometry g = gatherRuns(mesh, runs);
+/** A GLB under construction: the BIN chunk and the JSON arrays that index into it. */
+struct GlbDraft {
+    const Mesh& mesh;
+    const GlbAdditions& additions;
+    const ProgressFn& progress;
+    Json extras;
     BinBuilder bin;
-    const int posView = bin.addView(g.positions.data(), g.positions.size() * 4, kArrayBuffer, 12);
-    const int nrmView = bin.addView(g.normals.data(), g.normals.size() * 4, kArrayBuffer, 12);
-    const int uvView =
-        mesh.hasUvs() ? bin.addView(g.uvs.data(), g.uvs.size() * 4, kArrayBuffer, 8) : -1;
-    const int colView =
-        mesh.hasColors() ? bin.addView(g.colors.data(), g.colors.size() * 4, kArrayBuffer, 16) : -1;
-    const int idxView = bin.addView(g.indices.data(), g.indices.size() * 4, kElementArrayBuffer, 0);
-    if (!reportProgress(progress, 0.2))
-        return cancelledError();
+    Json accessors = Json::array(), primitives = Json::array();
+    Json images = Json::array(), textures = Json::array(), materials = Json::array();
+    std::vector<int> textureIndex; // glTF texture per mesh texture (-1: not written)
+    std::vector<int> mrTexture;    // glTF texture per metallic-roughness image (-1: not written)
+};
 
-    Json accessors = Json::array();
-    auto addAccessor = [&](int view, std::size_t element, std::size_t first, std::size_t count,
-                           int componentType, const char* type) {
-        accessors.push_back({{"bufferView", view},
-                             {"byteOffset", first * element},
-                             {"componentType", componentType},
-                             {"count", count},
-                             {"type", type}});
-        return static_cast<int>(accessors.size() - 1);
-    };
-    Json primitives = Json::array();
+/** The buffer views of the vertex attributes and indices (-1: the mesh has none). */
+struct GeometryViews {
+    int pos = -1, nrm = -1, uv = -1, col = -1, idx = -1;
+};
+
+int addAccessor(Json& accessors, int view, std::size_t element, std::size_t first,
+                std::size_t count, int componentType, const char* type) {
+    accessors.push_back({{"bufferView", view},
+                         {"byteOffset", first * element},
+                         {"componentType", componentType},
+                         {"count", count},
+                         {"type", type}});
+    return static_cast<int>(accessors.size() - 1);
+}
+
+/** One primitive per material run, its accessors into the views. */
+void addPrimitives(GlbDraft& d, const std::vector<Run>& runs, const RunGeometry& g,
+                   const GeometryViews& views) {
     for (std::size_t r = 0; r < runs.size(); ++r) {
         const RunGeometry::Range& range = g.ranges[r];
+        const std::size_t first = range.firstVertex, count = range.vertexCount;
         Json attributes;
-        const int pos =
-            addAccessor(posView, 12, range.firstVertex, range.vertexCount, kFloat, "VEC3");
-        accessors[static_cast<std::size_t>(pos)]["min"] = vec(range.min);
-        accessors[static_cast<std::size_t>(pos)]["max"] = vec(range.max);
+        const int pos = addAccessor(d.accessors, views.pos, 12, first, count, kFloat, "VEC3");
+        d.accessors[static_cast<std::size_t>(pos)]["min"] = vec(range.min);
+        d.accessors[static_cast<std::size_t>(pos)]["max"] = vec(range.max);
         attributes["POSITION"] = pos;
         attributes["NORMAL"] =
-            addAccessor(nrmView, 12, range.firstVertex, range.vertexCount, kFloat, "VEC3");
-        if (uvView >= 0)
+            addAccessor(d.accessors, views.nrm, 12, first, count, kFloat, "VEC3");
+        if (views.uv >= 0)
             attributes["TEXCOORD_0"] =
-                addAccessor(uvView, 8, range.firstVertex, range.vertexCount, kFloat, "VEC2");
-        if (colView >= 0)
+                addAccessor(d.accessors, views.uv, 8, first, count, kFloat, "VEC2");
+        if (views.col >= 0)
             attributes["COLOR_0"] =
-                addAccessor(colView, 16, range.firstVertex, range.vertexCount, kFloat, "VEC4");
-        const int idx =
-            addAccessor(idxView, 4, range.firstIndex, range.indexCount, kUnsignedInt, "SCALAR");
-        primitives.push_back({{"attributes", std::move(attributes)},
-                              {"indices", idx},
-                              {"material", runs[r].material},
-                              {"mode", 4}});
+                addAccessor(d.accessors, views.col, 16, first, count, kFloat, "VEC4");
+        const int idx = addAccessor(d.accessors, views.idx, 4, range.firstIndex, range.indexCount,
+                                    kUnsignedInt, "SCALAR");
+        d.primitives.push_back({{"attributes", std::move(attributes)},
+                                {"indices", idx},
+                                {"material", runs[r].material},
+                                {"mode", 4}});
     }
+}
 
-    // Textures the materials use, in order of first use (the order the loader gives them).
-    std::vector<int> textureIndex(mesh.textures.size(), -1);
+/** The vertices and indices, per material run, as the first views and the primitives. */
+Status writeGeometry(GlbDraft& d) {
+    const Mesh& mesh = d.mesh;
+    const std::vector<Run> runs = materialRuns(mesh);
+    const RunGeometry g = gatherRuns(mesh, runs);
+    BinBuilder& bin = d.bin;
+    GeometryViews views;
+    views.pos = bin.addView(g.positions.data(), g.positions.size() * 4, kArrayBuffer, 12);
+    views.nrm = bin.addView(g.normals.data(), g.normals.size() * 4, kArrayBuffer, 12);
+    views.uv = mesh.hasUvs() ? bin.addView(g.uvs.data(), g.uvs.size() * 4, kArrayBuffer, 8) : -1;
+    views.col =
+        mesh.hasColors() ? bin.addView(g.colors.data(), g.colors.size() * 4, kArrayBuffer, 16) : -1;
+    views.idx = bin.addView(g.indices.data(), g.indices.size() * 4, kElementArrayBuffer, 0);
+    if (!reportProgress(d.progress, 0.2))
+        return cancelledError();
+    addPrimitives(d, runs, g, views);
+    return {};
+}
+
+/** The base colour textures the materials use, in order of first use (the order the loader
+ *  gives them), as PNG images. */
+Status writeBaseColorTextures(GlbDraft& d) {
+    const Mesh& mesh = d.mesh;
+    d.textureIndex.assign(mesh.textures.size(), -1);
     std::vector<std::size_t> written; // mesh texture per glTF texture
     for (const Material& m : mesh.materials) {
         if (m.baseColorTexture < 0)
             continue;
         const auto t = static_cast<std::size_t>(m.baseColorTexture);
-        if (textureIndex[t] < 0 && !mesh.textures[t].empty()) {
-            textureIndex[t] = static_cast<int>(written.size());
+        if (d.textureIndex[t] < 0 && !mesh.textures[t].empty()) {
+            d.textureIndex[t] = static_cast<int>(written.size());
             written.push_back(t);
         }
     }
-    Json images = Json::array(), textures = Json::array();
     for (std::size_t k = 0; k < written.size(); ++k) {
         const Result<Bytes> png = encodeImage(mesh.textures[written[k]], ExportFormat::Png8);
         if (!png)
             return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG (" +
                              png.error() + ")",
                          png.errorKind()};
-        const int view = bin.addView(png->data(), png->size(), 0, 0);
-        images.push_back({{"bufferView", view},
-                          {"mimeType", "image/png"},
-                          {"name", "texture " + std::to_string(written[k])}});
-        textures.push_back({{"source", k}, {"sampler", 0}});
-        if (!reportProgress(progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
-                                                static_cast<double>(written.size())))
+        const int view = d.bin.addView(png->data(), png->size(), 0, 0);
+        d.images.push_back({{"bufferView", view},
+                            {"mimeType", "image/png"},
+                            {"name", "texture " + std::to_string(written[k])}});
+        d.textures.push_back({{"source", k}, {"sampler", 0}});
+        if (!reportProgress(d.progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
+                                                  static_cast<double>(written.size())))
             return cancelledError();
     }
+    return {};
+}
 
-    // Metallic-roughness images the materials use, after the base colour textures.
-    std::vector<int> mrTexture(additions.metallicRoughness.size(), -1);
-    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
+/** Metallic-roughness images the materials use, after the base colour textures. */
+Status writeMetallicRoughness(GlbDraft& d) {
+    const GlbAdditions& additions = d.additions;
+    d.mrTexture.assign(additions.metallicRoughness.size(), -1);
+    for (std::size_t mi = 0; mi < d.mesh.materials.size(); ++mi) {
         const int source = mi < additions.materialMetallicRoughness.size()
                                ? additions.materialMetallicRoughness[mi]
                                : -1;
-        if (source < 0 || std::size_t(source) >= mrTexture.size() ||
-            mrTexture[std::size_t(source)] >= 0 ||
+        if (source < 0 || std::size_t(source) >= d.mrTexture.size() ||
+            d.mrTexture[std::size_t(source)] >= 0 ||
             additions.metallicRoughness[std::size_t(source)].empty())
             continue;
         const Result<Bytes> png =
@@ -283,28 +306,35 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
             return Error{"metallic-roughness texture " + std::to_string(source) +
                              " cannot be encoded as PNG (" + png.error() + ")",
                          png.errorKind()};
-        const int view = bin.addView(png->data(), png->size(), 0, 0);
-        images.push_back({{"bufferView", view},
-                          {"mimeType", "image/png"},
-                          {"name", "metallic-roughness " + std::to_string(source)}});
-        mrTexture[std::size_t(source)] = static_cast<int>(textures.size());
-        textures.push_back({{"source", images.size() - 1}, {"sampler", 0}});
+        const int view = d.bin.addView(png->data(), png->size(), 0, 0);
+        d.images.push_back({{"bufferView", view},
+                            {"mimeType", "image/png"},
+                            {"name", "metallic-roughness " + std::to_string(source)}});
+        d.mrTexture[std::size_t(source)] = static_cast<int>(d.textures.size());
+        d.textures.push_back({{"source", d.images.size() - 1}, {"sampler", 0}});
     }
-    if (!additions.attachments.empty() && extras.is_object()) {
-        Json views = Json::array();
-        for (const Bytes& blob : additions.attachments)
-            views.push_back(bin.addView(blob.data(), blob.size(), 0, 0));
-        extras[additions.attachmentsAt] = std::move(views);
-    }
+    return {};
+}
 
-    Json materials = Json::array();
-    for (std::size_t mi = 0; mi < mesh.materials.size(); ++mi) {
-        const Material& m = mesh.materials[mi];
+/** The attachments as views, listed in the extras under additions.attachmentsAt. */
+void writeAttachments(GlbDraft& d) {
+    if (d.additions.attachments.empty() || !d.extras.is_object())
+        return;
+    Json views = Json::array();
+    for (const Bytes& blob : d.additions.attachments)
+        views.push_back(d.bin.addView(blob.data(), blob.size(), 0, 0));
+    d.extras[d.additions.attachmentsAt] = std::move(views);
+}
+
+void writeMaterials(GlbDraft& d) {
+    const GlbAdditions& additions = d.additions;
+    for (std::size_t mi = 0; mi < d.mesh.materials.size(); ++mi) {
+        const Material& m = d.mesh.materials[mi];
         const int mrSource = mi < additions.materialMetallicRoughness.size()
                                  ? additions.materialMetallicRoughness[mi]
                                  : -1;
-        const int mr = mrSource >= 0 && std::size_t(mrSource) < mrTexture.size()
-                           ? mrTexture[std::size_t(mrSource)]
+        const int mr = mrSource >= 0 && std::size_t(mrSource) < d.mrTexture.size()
+                           ? d.mrTexture[std::size_t(mrSource)]
                            : -1;
         Json pbr = {{"baseColorFactor",
                      Json::array({factor(m.baseColorFactor.r), factor(m.baseColorFactor.g),
@@ -314,40 +344,47 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
         if (mr >= 0)
             pbr["metallicRoughnessTexture"] = {{"index", mr}};
         if (m.baseColorTexture >= 0 &&
-            textureIndex[static_cast<std::size_t>(m.baseColorTexture)] >= 0)
+            d.textureIndex[static_cast<std::size_t>(m.baseColorTexture)] >= 0)
             pbr["baseColorTexture"] = {
-                {"index", textureIndex[static_cast<std::size_t>(m.baseColorTexture)]}};
+                {"index", d.textureIndex[static_cast<std::size_t>(m.baseColorTexture)]}};
         Json material = {{"pbrMetallicRoughness", std::move(pbr)}};
         if (!m.name.empty())
             material["name"] = m.name;
-        materials.push_back(std::move(material));
+        d.materials.push_back(std::move(material));
     }
+}
 
+/** The glTF JSON: one scene, one node, one mesh; the draft's arrays moved in. */
+Json assembleRoot(GlbDraft& d) {
     Json asset = {{"version", "2.0"}, {"generator", "LayerPaint"}};
-    if (extras.is_object())
-        asset["extras"] = extras;
+    if (d.extras.is_object())
+        asset["extras"] = d.extras;
     Json root = {
         {"asset", std::move(asset)},
         {"scene", 0},
         {"scenes", Json::array({{{"nodes", Json::array({0})}}})},
         {"nodes", Json::array({{{"mesh", 0}, {"name", "mesh"}}})},
-        {"meshes", Json::array({{{"primitives", std::move(primitives)}, {"name", "mesh"}}})},
-        {"materials", std::move(materials)},
-        {"accessors", std::move(accessors)},
-        {"bufferViews", std::move(bin.views())},
-        {"buffers", Json::array({{{"byteLength", bin.bytes().size()}}})}};
-    if (!textures.empty()) {
+        {"meshes", Json::array({{{"primitives", std::move(d.primitives)}, {"name", "mesh"}}})},
+        {"materials", std::move(d.materials)},
+        {"accessors", std::move(d.accessors)},
+        {"bufferViews", std::move(d.bin.views())},
+        {"buffers", Json::array({{{"byteLength", d.bin.bytes().size()}}})}};
+    if (!d.textures.empty()) {
         // Painting wraps UVs outside 0..1 (paint_target.h), so do viewers.
         root["samplers"] = Json::array(
             {{{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", 10497}, {"wrapT", 10497}}});
-        root["images"] = std::move(images);
-        root["textures"] = std::move(textures);
+        root["images"] = std::move(d.images);
+        root["textures"] = std::move(d.textures);
     }
+    return root;
+}
 
+/** The GLB header, the JSON chunk and the BIN chunk's header before bin. */
+Result<GlbParts> packGlb(const Json& root, Bytes&& bin) {
     // Invalid UTF-8 (material names from other formats, extras) is replaced, not thrown on.
     std::string json = root.dump(-1, ' ', false, Json::error_handler_t::replace);
     json.resize(padded4(json.size()), ' ');
-    const std::uint64_t total = 12 + 8 + json.size() + 8 + bin.bytes().size();
+    const std::uint64_t total = 12 + 8 + json.size() + 8 + bin.size();
     if (total > kMaxGlbBytes)
         return Error{"the mesh and its textures are too large for a binary glTF file (" +
                      std::to_string(total) + " bytes, at most 4 GiB)"};
@@ -360,10 +397,33 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
     putU32(parts.head, static_cast<std::uint32_t>(json.size()));
     putU32(parts.head, glb::kChunkJson);
     parts.head.insert(parts.head.end(), json.begin(), json.end());
-    putU32(parts.head, static_cast<std::uint32_t>(bin.bytes().size()));
+    putU32(parts.head, static_cast<std::uint32_t>(bin.size()));
     putU32(parts.head, glb::kChunkBin);
-    parts.bin = std::move(bin.bytes());
-    if (!reportProgress(progress, 0.95))
+    parts.bin = std::move(bin);
+    return parts;
+}
+
+Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
+                             const ProgressFn& progress) {
+    GlbDraft d{.mesh = mesh, .additions = additions, .progress = progress};
+    d.extras = additions.extras;
+    if (const Status valid = mesh.validate(); !valid)
+        return Error{"the mesh cannot be saved (" + valid.error() + ")", ErrorKind::BadInput};
+    if (!d.extras.is_null() && !d.extras.is_object())
+        return Error{"the extras to save are not a JSON object"};
+    if (!reportProgress(progress, 0.0))
+        return cancelledError();
+
+    if (Status s = writeGeometry(d); !s)
+        return s.takeError();
+    if (Status s = writeBaseColorTextures(d); !s)
+        return s.takeError();
+    if (Status s = writeMetallicRoughness(d); !s)
+        return s.takeError();
+    writeAttachments(d);
+    writeMaterials(d);
+    Result<GlbParts> parts = packGlb(assembleRoot(d), std::move(d.bin.bytes()));
+    if (parts && !reportProgress(progress, 0.95))
         return cancelledError();
     return parts;
 }
