@@ -111,21 +111,38 @@ bool finiteFactor(float v) {
     return std::isfinite(v);
 }
 
-Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh,
-                                          const MaterialChannels& channels,
-                                          const ProgressFn& progress) {
-    const std::string stem = token(path.stem().string());
-    const fs::path mtlPath = path.parent_path() / (stem + ".mtl");
+/** An OBJ export's materials: names unique as OBJ tokens, textures (baked with their factor) as
+ *  the PNG images written beside the OBJ. */
+struct ObjMaterials {
+    std::string stem; // the OBJ's file stem as a token, the start of every file name
+    const MaterialChannels* channels = nullptr;
+    std::vector<std::string> names; // per material
+    std::vector<int> materialImage; // per material: its image, or -1
+    std::vector<Image> images;      // the PNGs to write
+    std::vector<int> imageSource;   // the mesh texture of each image
 
-    // Materials: names unique as OBJ tokens, textures (baked with their factor) as PNG files.
-    std::vector<std::string> names(mesh.materials.size());
-    std::vector<int> materialImage(mesh.materials.size(), -1);
-    std::vector<Image> images;
-    std::vector<int> imageSource; // the mesh texture of each image
+    std::string imageName(int i) const { return stem + "_" + std::to_string(i + 1) + ".png"; }
+    std::string channelName(int i, const char* channel) const {
+        return stem + "_" + std::to_string(i + 1) + "_" + channel + ".png";
+    }
+    /** The roughness and metallic of image i's texture, where the material has them. */
+    const Image* channelsOf(int i) const {
+        const int t = imageSource[std::size_t(i)];
+        return std::size_t(t) < channels->metallicRoughness.size() &&
+                       !channels->metallicRoughness[std::size_t(t)].empty()
+                   ? &channels->metallicRoughness[std::size_t(t)]
+                   : nullptr;
+    }
+};
+
+/** The materials' names and images; materials sharing a texture and factor share its image. */
+void bakeObjMaterials(const Mesh& mesh, ObjMaterials& out) {
+    out.names.resize(mesh.materials.size());
+    out.materialImage.assign(mesh.materials.size(), -1);
     std::map<std::pair<int, std::array<float, 3>>, int> baked;
     for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
         const Material& mat = mesh.materials[m];
-        names[m] = "m" + std::to_string(m) + "_" + token(mat.name);
+        out.names[m] = "m" + std::to_string(m) + "_" + token(mat.name);
         const int t = mat.baseColorTexture;
         if (t < 0 || std::size_t(t) >= mesh.textures.size() ||
             mesh.textures[std::size_t(t)].empty())
@@ -136,57 +153,45 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
                 finiteFactor(mat.baseColorFactor[k]) ? mat.baseColorFactor[k] : 1.0f;
         const auto key = std::make_pair(t, rgb);
         if (const auto it = baked.find(key); it != baked.end()) {
-            materialImage[m] = it->second;
+            out.materialImage[m] = it->second;
             continue;
         }
         const Image& source = mesh.textures[std::size_t(t)];
-        images.push_back(rgb == std::array<float, 3>{1.0f, 1.0f, 1.0f}
-                             ? source
-                             : bakeFactor(source, glm::vec4(rgb[0], rgb[1], rgb[2], 1.0f)));
-        imageSource.push_back(t);
-        materialImage[m] = int(images.size() - 1);
-        baked.emplace(key, materialImage[m]);
+        out.images.push_back(rgb == std::array<float, 3>{1.0f, 1.0f, 1.0f}
+                                 ? source
+                                 : bakeFactor(source, glm::vec4(rgb[0], rgb[1], rgb[2], 1.0f)));
+        out.imageSource.push_back(t);
+        out.materialImage[m] = int(out.images.size() - 1);
+        baked.emplace(key, out.materialImage[m]);
     }
-    auto imageName = [&](int i) { return stem + "_" + std::to_string(i + 1) + ".png"; };
-    // The roughness and metallic of an image's texture, where the material has them.
-    auto channelsOf = [&](int i) -> const Image* {
-        const int t = imageSource[std::size_t(i)];
-        return std::size_t(t) < channels.metallicRoughness.size() &&
-                       !channels.metallicRoughness[std::size_t(t)].empty()
-                   ? &channels.metallicRoughness[std::size_t(t)]
-                   : nullptr;
-    };
-    auto channelName = [&](int i, const char* channel) {
-        return stem + "_" + std::to_string(i + 1) + "_" + channel + ".png";
-    };
+}
 
+std::string mtlText(const Mesh& mesh, const ObjMaterials& mats) {
     std::string mtl = "# LayerPaint export\n";
     for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
         const Material& mat = mesh.materials[m];
-        mtl += "\nnewmtl " + names[m] + "\nKd ";
+        const int image = mats.materialImage[m];
+        mtl += "\nnewmtl " + mats.names[m] + "\nKd ";
         for (int k = 0; k < 3; ++k) {
             const float f = finiteFactor(mat.baseColorFactor[k]) ? mat.baseColorFactor[k] : 1.0f;
-            appendFloat(mtl, materialImage[m] >= 0 ? 1.0f : f);
+            appendFloat(mtl, image >= 0 ? 1.0f : f);
             mtl += k < 2 ? " " : "\n";
         }
         mtl += "d ";
         appendFloat(mtl, finiteFactor(mat.baseColorFactor.a) ? mat.baseColorFactor.a : 1.0f);
         mtl += "\nillum 1\n";
-        if (materialImage[m] >= 0)
-            mtl += "map_Kd " + imageName(materialImage[m]) + "\n";
-        if (materialImage[m] >= 0 && channelsOf(materialImage[m]))
-            mtl += "map_Pr " + channelName(materialImage[m], "roughness") + "\nmap_Pm " +
-                   channelName(materialImage[m], "metallic") + "\n";
+        if (image >= 0)
+            mtl += "map_Kd " + mats.imageName(image) + "\n";
+        if (image >= 0 && mats.channelsOf(image))
+            mtl += "map_Pr " + mats.channelName(image, "roughness") + "\nmap_Pm " +
+                   mats.channelName(image, "metallic") + "\n";
     }
+    return mtl;
+}
 
-    std::string obj;
-    obj.reserve(mesh.vertexCount() * 96 + mesh.triangleCount() * 40);
-    obj += "# LayerPaint export: ";
-    appendInt(obj, mesh.vertexCount());
-    obj += " vertices, ";
-    appendInt(obj, mesh.triangleCount());
-    obj += " triangles\nmtllib " + mtlPath.filename().string() + "\n";
-    const double geometryShare = images.empty() ? 0.9 : 0.3;
+/** The v, vt and vn lines; progress to geometryShare / 2. */
+void appendObjVertices(std::string& obj, const Mesh& mesh, double geometryShare,
+                       const ProgressFn& progress) {
     const std::size_t n = mesh.vertexCount();
     for (std::size_t v = 0; v < n; ++v) {
         const glm::vec3& p = mesh.positions[v];
@@ -223,6 +228,11 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         appendFloat(obj, nv.z);
         obj += '\n';
     }
+}
+
+/** The f lines, a usemtl line where the material changes; progress to geometryShare. */
+void appendObjFaces(std::string& obj, const Mesh& mesh, const std::vector<std::string>& names,
+                    double geometryShare, const ProgressFn& progress) {
     const std::size_t triangles = mesh.triangleCount();
     std::uint32_t current = ~0u;
     for (std::size_t t = 0; t < triangles; ++t) {
@@ -245,10 +255,29 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         if ((t & 0xFFFF) == 0)
             step(progress, geometryShare * (0.5 + 0.5 * double(t) / double(triangles)));
     }
+}
 
-    std::vector<std::string> written;
+std::string objText(const Mesh& mesh, const ObjMaterials& mats, const fs::path& mtlPath,
+                    double geometryShare, const ProgressFn& progress) {
+    std::string obj;
+    obj.reserve(mesh.vertexCount() * 96 + mesh.triangleCount() * 40);
+    obj += "# LayerPaint export: ";
+    appendInt(obj, mesh.vertexCount());
+    obj += " vertices, ";
+    appendInt(obj, mesh.triangleCount());
+    obj += " triangles\nmtllib " + mtlPath.filename().string() + "\n";
+    appendObjVertices(obj, mesh, geometryShare, progress);
+    appendObjFaces(obj, mesh, mats.names, geometryShare, progress);
+    return obj;
+}
+
+/** The images beside path, each followed by its roughness and metallic where it has them;
+ *  progress from geometryShare to 0.95. */
+Status writeObjImages(const fs::path& path, const ObjMaterials& mats, double geometryShare,
+                      const ProgressFn& progress, std::vector<std::string>& written) {
+    const std::vector<Image>& images = mats.images;
     for (std::size_t i = 0; i < images.size(); ++i) {
-        const std::string file = (path.parent_path() / imageName(int(i))).string();
+        const std::string file = (path.parent_path() / mats.imageName(int(i))).string();
         const double from =
             geometryShare + (0.95 - geometryShare) * double(i) / double(images.size());
         const double to =
@@ -256,20 +285,38 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
         if (Status s =
                 writeImageFile(file, images[i], ExportFormat::Png8, part(progress, from, to));
             !s)
-            return s.takeError();
+            return s;
         written.push_back(file);
-        if (const Image* mr = channelsOf(int(i))) {
+        if (const Image* mr = mats.channelsOf(int(i))) {
             for (const auto& [channel, component] : {std::pair{"roughness", 1}, {"metallic", 2}}) {
                 const std::string name =
-                    (path.parent_path() / channelName(int(i), channel)).string();
+                    (path.parent_path() / mats.channelName(int(i), channel)).string();
                 if (Status s =
                         writeImageFile(name, channelImage(*mr, component), ExportFormat::Png8, {});
                     !s)
-                    return s.takeError();
+                    return s;
                 written.push_back(name);
             }
         }
     }
+    return {};
+}
+
+Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh,
+                                          const MaterialChannels& channels,
+                                          const ProgressFn& progress) {
+    ObjMaterials mats;
+    mats.stem = token(path.stem().string());
+    mats.channels = &channels;
+    const fs::path mtlPath = path.parent_path() / (mats.stem + ".mtl");
+    bakeObjMaterials(mesh, mats);
+    const std::string mtl = mtlText(mesh, mats);
+    const double geometryShare = mats.images.empty() ? 0.9 : 0.3;
+    const std::string obj = objText(mesh, mats, mtlPath, geometryShare, progress);
+
+    std::vector<std::string> written;
+    if (Status s = writeObjImages(path, mats, geometryShare, progress, written); !s)
+        return s.takeError();
     if (Status s = writeBytes(mtlPath.string(), mtl); !s)
         return s.takeError();
     written.push_back(mtlPath.string());
