@@ -177,94 +177,96 @@ Status checkOffFaces(const fs::path& file) {
     return {};
 }
 
-/**
- * OFF and PLY headers declare element counts that Assimp allocates and loops over before it
- * notices the data is missing: a 300-byte file can cost gigabytes and minutes. The counts must
- * fit the file: an ASCII value takes at least 2 bytes ("0 "), a binary one its size.
- */
-Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const LoadLimits& limits) {
-    const std::string head = readHead(file, 65536);
-    std::vector<std::string> tokens; // whitespace-separated, '#' comments dropped
-    {
-        std::string token;
-        bool comment = false;
-        for (char c : head) {
-            if (c == '\n' || c == '\r')
-                comment = false;
-            if (comment)
-                continue;
-            if (c == '#') {
-                comment = true;
-            } else if (std::isspace(static_cast<unsigned char>(c))) {
-                if (!token.empty())
-                    tokens.push_back(std::move(token));
-                token.clear();
-            } else {
-                token += c;
-            }
-            if (tokens.size() > 4096)
-                break;
+/** head's whitespace-separated tokens, '#' comments dropped; at most about 4096 of them. */
+std::vector<std::string> headerTokens(const std::string& head) {
+    std::vector<std::string> tokens;
+    std::string token;
+    bool comment = false;
+    for (char c : head) {
+        if (c == '\n' || c == '\r')
+            comment = false;
+        if (comment)
+            continue;
+        if (c == '#') {
+            comment = true;
+        } else if (std::isspace(static_cast<unsigned char>(c))) {
+            if (!token.empty())
+                tokens.push_back(std::move(token));
+            token.clear();
+        } else {
+            token += c;
         }
-        if (!token.empty())
-            tokens.push_back(token);
+        if (tokens.size() > 4096)
+            break;
     }
-    if (tokens.empty())
-        return {};
-    const std::uint64_t maxRaw = limits.maxVertices * 4;
+    if (!token.empty())
+        tokens.push_back(token);
+    return tokens;
+}
 
-    // OFF: [ST][C][N][4][n]OFF, then (for nOFF) a dimension, then vertex, face, edge counts.
+/** OFF: [ST][C][N][4][n]OFF, then (for nOFF) a dimension, then vertex, face, edge counts. */
+bool isOffMagic(const std::string& magic) {
+    return magic.size() >= 3 && magic.size() <= 9 && magic.compare(magic.size() - 3, 3, "OFF") == 0;
+}
+
+Status checkOffCounts(const std::vector<std::string>& tokens, std::uint64_t fileSize,
+                      std::uint64_t maxRaw) {
     const std::string& magic = tokens[0];
-    if (magic.size() >= 3 && magic.size() <= 9 && magic.compare(magic.size() - 3, 3, "OFF") == 0) {
-        std::size_t t = 1;
-        if (t < tokens.size() && tokens[t] == "BINARY")
-            return {}; // Assimp refuses binary OFF itself
-        if (magic.find('n') != std::string::npos)
-            ++t;
-        // Assimp reads both counts by their leading digits (a face count of "1000storage" is
-        // 1000, found by fuzzing: a 169-byte file made it allocate 25 GB), and allocates the
-        // vertices first.
-        std::uint64_t vertices = 0, faces = 0;
-        if (t >= tokens.size() || !parseLeadingCount(tokens[t], vertices))
-            return {};
-        if (vertices > maxRaw)
-            return Error{"too many vertices (the header declares " + std::to_string(vertices) + ")",
-                         ErrorKind::BadInput};
-        // "0 0 0\n" is the shortest vertex line, "0\n" the shortest face line.
-        if (vertices > fileSize / 6)
-            return Error{tooManyElements(vertices, "vertices", fileSize), ErrorKind::BadInput};
-        if (t + 1 >= tokens.size() || !parseLeadingCount(tokens[t + 1], faces))
-            return {};
-        if (faces > fileSize / 2)
-            return Error{tooManyElements(faces, "faces", fileSize), ErrorKind::BadInput};
+    std::size_t t = 1;
+    if (t < tokens.size() && tokens[t] == "BINARY")
+        return {}; // Assimp refuses binary OFF itself
+    if (magic.find('n') != std::string::npos)
+        ++t;
+    // Assimp reads both counts by their leading digits (a face count of "1000storage" is
+    // 1000, found by fuzzing: a 169-byte file made it allocate 25 GB), and allocates the
+    // vertices first.
+    std::uint64_t vertices = 0, faces = 0;
+    if (t >= tokens.size() || !parseLeadingCount(tokens[t], vertices))
         return {};
-    }
+    if (vertices > maxRaw)
+        return Error{"too many vertices (the header declares " + std::to_string(vertices) + ")",
+                     ErrorKind::BadInput};
+    // "0 0 0\n" is the shortest vertex line, "0\n" the shortest face line.
+    if (vertices > fileSize / 6)
+        return Error{tooManyElements(vertices, "vertices", fileSize), ErrorKind::BadInput};
+    if (t + 1 >= tokens.size() || !parseLeadingCount(tokens[t + 1], faces))
+        return {};
+    if (faces > fileSize / 2)
+        return Error{tooManyElements(faces, "faces", fileSize), ErrorKind::BadInput};
+    return {};
+}
 
-    // PLY: sum over elements of count * the smallest size one element can have. The header is
-    // read line by line and must be well formed: Assimp 5.2 hangs or reads wild on unknown
-    // keywords, counts like "0.0" and headers without end_header (found by fuzzing). Assimp
-    // takes any file that starts with the three letters for PLY ("ply," too).
-    if (magic.rfind("ply", 0) != 0)
-        return {};
-    bool ascii = true;
+/** Bytes of a PLY scalar type; 0 for a word that is not one. */
+std::uint64_t plyTypeSize(const std::string& t) {
+    if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
+        return 1;
+    if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
+        return 2;
+    if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
+        t == "float32")
+        return 4;
+    if (t == "double" || t == "float64")
+        return 8;
+    return 0; // not a PLY type
+}
+
+/** A PLY header's elements, each with the fewest bytes one of them can take. */
+struct PlyHeaderCounts {
     struct Element {
         std::string name;
         std::uint64_t count = 0;
         std::uint64_t minBytes = 0;
     };
     std::vector<Element> elements;
-    auto typeSize = [](const std::string& t) -> std::uint64_t {
-        if (t == "char" || t == "uchar" || t == "int8" || t == "uint8")
-            return 1;
-        if (t == "short" || t == "ushort" || t == "int16" || t == "uint16")
-            return 2;
-        if (t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" ||
-            t == "float32")
-            return 4;
-        if (t == "double" || t == "float64")
-            return 8;
-        return 0; // not a PLY type
-    };
-    std::uint64_t bodyStart = 0;
+    std::uint64_t bodyStart = 0; // the first byte after end_header
+};
+
+/**
+ * The PLY header in head, line by line; it must be well formed: Assimp 5.2 hangs or reads wild
+ * on unknown keywords, counts like "0.0" and headers without end_header (found by fuzzing).
+ */
+Status readPlyHeaderCounts(const std::string& head, PlyHeaderCounts& out) {
+    bool ascii = true;
     bool ended = false;
     std::size_t lineStart = 0;
     for (int lineNo = 1; lineStart < head.size() && !ended; ++lineNo) {
@@ -283,22 +285,22 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
         if (w[0] == "format" && w.size() == 3) {
             ascii = w[1] == "ascii";
         } else if (w[0] == "element" && w.size() == 3) {
-            Element e;
+            PlyHeaderCounts::Element e;
             e.name = w[1];
             if (!parseCount(w[2], e.count))
                 return Error{where + "the element \"" + e.name +
                                  "\" has a count that is not a whole number (\"" + w[2] + "\")",
                              ErrorKind::BadInput};
-            elements.push_back(e);
-        } else if (w[0] == "property" && !elements.empty() &&
-                   ((w.size() == 3 && typeSize(w[1]) > 0) ||
-                    (w.size() == 5 && w[1] == "list" && typeSize(w[2]) > 0 &&
-                     typeSize(w[3]) > 0))) {
+            out.elements.push_back(e);
+        } else if (w[0] == "property" && !out.elements.empty() &&
+                   ((w.size() == 3 && plyTypeSize(w[1]) > 0) ||
+                    (w.size() == 5 && w[1] == "list" && plyTypeSize(w[2]) > 0 &&
+                     plyTypeSize(w[3]) > 0))) {
             // A list costs at least its (zero) count; a scalar its size.
-            elements.back().minBytes += ascii ? 2 : typeSize(w.size() == 5 ? w[2] : w[1]);
+            out.elements.back().minBytes += ascii ? 2 : plyTypeSize(w.size() == 5 ? w[2] : w[1]);
         } else if (w[0] == "end_header" && w.size() == 1) {
             ended = true;
-            bodyStart = lineStart;
+            out.bodyStart = lineStart;
         } else if (w[0] == "format" || w[0] == "element" || w[0] == "property" ||
                    w[0] == "end_header") {
             return Error{where + "\"" + w[0] + "\" is not followed by what it needs",
@@ -310,14 +312,19 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
         return Error{"the PLY header does not end (no end_header line in its first " +
                          std::to_string(head.size()) + " bytes)",
                      ErrorKind::BadInput}; // Assimp would read on and hang
-    const std::uint64_t body = fileSize > bodyStart ? fileSize - bodyStart : 0;
-    for (const Element& e : elements)
+    return {};
+}
+
+/** PLY: the sum over elements of count * the smallest size one element can have fits the body. */
+Status checkPlyCounts(const PlyHeaderCounts& header, std::uint64_t fileSize, std::uint64_t maxRaw) {
+    const std::uint64_t body = fileSize > header.bodyStart ? fileSize - header.bodyStart : 0;
+    for (const PlyHeaderCounts::Element& e : header.elements)
         if (e.count > 0 && e.minBytes == 0) // Assimp would loop over them without moving on
             return Error{"the PLY header declares " + std::to_string(e.count) + " \"" + e.name +
                              "\" elements without properties",
                          ErrorKind::BadInput};
     std::uint64_t needed = 0;
-    for (const Element& e : elements) {
+    for (const PlyHeaderCounts::Element& e : header.elements) {
         if (e.name == "vertex" && e.count > maxRaw)
             return Error{"too many vertices (the header declares " + std::to_string(e.count) + ")",
                          ErrorKind::BadInput};
@@ -328,6 +335,28 @@ Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const L
                          ErrorKind::BadInput};
     }
     return {};
+}
+
+/**
+ * OFF and PLY headers declare element counts that Assimp allocates and loops over before it
+ * notices the data is missing: a 300-byte file can cost gigabytes and minutes. The counts must
+ * fit the file: an ASCII value takes at least 2 bytes ("0 "), a binary one its size.
+ */
+Status checkDeclaredCounts(const fs::path& file, std::uint64_t fileSize, const LoadLimits& limits) {
+    const std::string head = readHead(file, 65536);
+    const std::vector<std::string> tokens = headerTokens(head);
+    if (tokens.empty())
+        return {};
+    const std::uint64_t maxRaw = limits.maxVertices * 4;
+    if (isOffMagic(tokens[0]))
+        return checkOffCounts(tokens, fileSize, maxRaw);
+    // PLY: Assimp takes any file that starts with the three letters for PLY ("ply," too).
+    if (tokens[0].rfind("ply", 0) != 0)
+        return {};
+    PlyHeaderCounts header;
+    if (Status read = readPlyHeaderCounts(head, header); !read)
+        return read;
+    return checkPlyCounts(header, fileSize, maxRaw);
 }
 
 } // namespace core::detail::assimp
