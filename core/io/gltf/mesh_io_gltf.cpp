@@ -163,41 +163,48 @@ std::vector<std::uint8_t> replaceGlbJson(const std::vector<std::uint8_t>& bytes,
     return out;
 }
 
-Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLimits& limits) {
+/** A glTF file as it is read: its bytes, where its chunks are, and its JSON parsed. */
+struct GltfSource {
     std::vector<std::uint8_t> bytes;
-    {
-        std::error_code ec;
-        const std::uintmax_t size = fs::file_size(file, ec);
-        if (ec)
-            return Error{"cannot be read (" + ec.message() + ")"};
-        if (size == 0)
-            return Error{"is empty"};
-        if (size > limits.maxFileBytes || size > std::numeric_limits<std::uint32_t>::max())
-            return Error{"is too large (" + str(size) + " bytes)"};
-        std::ifstream in(file, std::ios::binary);
-        bytes.resize(static_cast<std::size_t>(size));
-        if (!in ||
-            !in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
-            return Error{"cannot be read"};
-    }
-    if (!reportProgress(progress, 0.05))
-        return cancelledError();
+    bool binary = false;
+    glb::Layout parts; // for a text file, the JSON is all of it
+    Json json;
+};
 
-    const bool binary = glb::hasMagic(bytes);
-    glb::Layout parts;
-    if (binary) {
-        Result<glb::Layout> layout = glb::readContainer(bytes);
+Status readGltfBytes(const fs::path& file, const LoadLimits& limits,
+                     std::vector<std::uint8_t>& bytes) {
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(file, ec);
+    if (ec)
+        return Error{"cannot be read (" + ec.message() + ")"};
+    if (size == 0)
+        return Error{"is empty"};
+    if (size > limits.maxFileBytes || size > std::numeric_limits<std::uint32_t>::max())
+        return Error{"is too large (" + str(size) + " bytes)"};
+    std::ifstream in(file, std::ios::binary);
+    bytes.resize(static_cast<std::size_t>(size));
+    if (!in || !in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
+        return Error{"cannot be read"};
+    return {};
+}
+
+/** The GLB container checked (a text file is all JSON), then its JSON text parsed. */
+Status parseGltfText(const fs::path& file, GltfSource& src) {
+    src.binary = glb::hasMagic(src.bytes);
+    if (src.binary) {
+        Result<glb::Layout> layout = glb::readContainer(src.bytes);
         if (!layout)
             return layout.takeError();
-        parts = *layout;
+        src.parts = *layout;
     } else {
-        parts.jsonLength = bytes.size();
-        parts.length = bytes.size();
+        src.parts.jsonLength = src.bytes.size();
+        src.parts.length = src.bytes.size();
     }
-    const std::string_view jsonText(reinterpret_cast<const char*>(bytes.data()) + parts.jsonOffset,
-                                    static_cast<std::size_t>(parts.jsonLength));
+    const std::string_view jsonText(reinterpret_cast<const char*>(src.bytes.data()) +
+                                        src.parts.jsonOffset,
+                                    static_cast<std::size_t>(src.parts.jsonLength));
     // Neither the binary header nor text that starts like glTF's: another kind of file.
-    if (!binary && !startsLikeJsonObject(jsonText))
+    if (!src.binary && !startsLikeJsonObject(jsonText))
         return Error{isGlbName(file)
                          ? "is not a glTF binary file (it does not start with the glTF header); "
                            "it may be damaged or another kind of file"
@@ -205,21 +212,86 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
                            "another kind of file"};
     if (jsonNestingTooDeep(jsonText))
         return Error{"the glTF text is nested too deeply"};
-    Json json;
     try {
-        json = Json::parse(jsonText.begin(), jsonText.end());
+        src.json = Json::parse(jsonText.begin(), jsonText.end());
     } catch (const Json::parse_error& e) {
         return Error{"is not a valid glTF file: " + describeParseError(e, jsonText)};
     } catch (const Json::exception&) {
         return Error{"is not a valid glTF file: its text cannot be read"};
     }
-    if (isGltf1(json))
-        return loadAssimp(file, progress, limits);
+    return {};
+}
+
+/** The glTF schema's types, the image buffer views, then the required extensions. */
+Result<gltf::Extensions> checkGltfJson(const Json& json) {
     if (Status valid = gltf::checkSchema(json); !valid)
         return valid.takeError();
     if (Status valid = gltf::checkImageViews(json); !valid)
         return valid.takeError();
-    Result<gltf::Extensions> extensions = gltf::checkExtensions(json);
+    return gltf::checkExtensions(json);
+}
+
+/**
+ * What tinygltf would refuse in compressed files is taken out of a copy of the JSON it parses
+ * instead (src.bytes rewritten); the flattener reads the file's own (src.json). Only files that
+ * declare a compression extension (as glTF requires them to) pay for the copy.
+ */
+void patchCompressedJson(GltfSource& src) {
+    bool compressed = false;
+    for (const Json& e : src.json.value("extensionsUsed", Json::array()))
+        compressed = compressed || e == "KHR_draco_mesh_compression" ||
+                     e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression";
+    if (!compressed)
+        return;
+    Json patched = src.json;
+    // Both edits run on every compressed file, whether or not the first changed anything.
+    const bool replaced = gltf::replaceFallbackBuffers(patched);
+    const bool dropped = gltf::dropDracoIndices(patched);
+    if (!replaced && !dropped)
+        return;
+    if (src.binary) {
+        src.bytes = replaceGlbJson(src.bytes, src.parts, patched.dump());
+        src.parts.length = src.bytes.size();
+    } else {
+        const std::string text = patched.dump();
+        src.bytes.assign(text.begin(), text.end());
+    }
+}
+
+/** tinygltf's model of src.bytes, every file it opens confined by access; its messages in err
+ *  and warn. */
+Status parseModel(const GltfSource& src, gltf::FileAccess& access, tinygltf::Model& model,
+                  std::string& err, std::string& warn) {
+    tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks(gltf::confinedFileCallbacks(access));
+    loader.SetImageLoader(&gltf::collectImage, &access);
+    bool ok = false;
+    if (src.binary)
+        ok =
+            loader.LoadBinaryFromMemory(&model, &err, &warn, src.bytes.data(),
+                                        static_cast<unsigned int>(src.parts.length), access.folder);
+    else
+        ok = loader.LoadASCIIFromString(&model, &err, &warn,
+                                        reinterpret_cast<const char*>(src.bytes.data()),
+                                        static_cast<unsigned int>(src.bytes.size()), access.folder);
+    if (!access.violation.empty())
+        return Error{access.violation};
+    if (!ok)
+        return Error{err.empty() ? std::string("is not a valid glTF file") : oneLine(err)};
+    return {};
+}
+
+Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLimits& limits) {
+    GltfSource src;
+    if (Status read = readGltfBytes(file, limits, src.bytes); !read)
+        return read.takeError();
+    if (!reportProgress(progress, 0.05))
+        return cancelledError();
+    if (Status parsed = parseGltfText(file, src); !parsed)
+        return parsed.takeError();
+    if (isGltf1(src.json))
+        return loadAssimp(file, progress, limits);
+    Result<gltf::Extensions> extensions = checkGltfJson(src.json);
     if (!extensions)
         return extensions.takeError();
     std::vector<std::string> warnings = std::move(extensions->warnings);
@@ -227,55 +299,20 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     gltf::FileAccess access;
     access.folder = file.parent_path().string();
     access.maxBytes = limits.maxFileBytes;
-    // What tinygltf would refuse in compressed files is taken out of a copy of the JSON it
-    // parses instead; the flattener reads the file's own. Only files that declare a compression
-    // extension (as glTF requires them to) pay for the copy.
-    bool compressed = false;
-    for (const Json& e : json.value("extensionsUsed", Json::array()))
-        compressed = compressed || e == "KHR_draco_mesh_compression" ||
-                     e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression";
-    if (compressed) {
-        Json patched = json;
-        // Both edits run on every compressed file, whether or not the first changed anything.
-        const bool replaced = gltf::replaceFallbackBuffers(patched);
-        const bool dropped = gltf::dropDracoIndices(patched);
-        if (replaced || dropped) {
-            if (binary) {
-                bytes = replaceGlbJson(bytes, parts, patched.dump());
-                parts.length = bytes.size();
-            } else {
-                const std::string text = patched.dump();
-                bytes.assign(text.begin(), text.end());
-            }
-        }
-    }
-
-    tinygltf::TinyGLTF loader;
-    loader.SetFsCallbacks(gltf::confinedFileCallbacks(access));
-    loader.SetImageLoader(&gltf::collectImage, &access);
+    patchCompressedJson(src);
     tinygltf::Model model;
     std::string err, warn;
-    bool ok = false;
-    if (binary)
-        ok = loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
-                                         static_cast<unsigned int>(parts.length), access.folder);
-    else
-        ok = loader.LoadASCIIFromString(&model, &err, &warn,
-                                        reinterpret_cast<const char*>(bytes.data()),
-                                        static_cast<unsigned int>(bytes.size()), access.folder);
-    if (!access.violation.empty())
-        return Error{access.violation};
-    if (!ok)
-        return Error{err.empty() ? std::string("is not a valid glTF file") : oneLine(err)};
-    bytes.clear();
-    bytes.shrink_to_fit();
-    if (Status decoded = gltf::decodeMeshoptViews(model, json, limits); !decoded)
+    if (Status parsed = parseModel(src, access, model, err, warn); !parsed)
+        return parsed.takeError();
+    src.bytes.clear();
+    src.bytes.shrink_to_fit();
+    if (Status decoded = gltf::decodeMeshoptViews(model, src.json, limits); !decoded)
         return decoded.takeError();
     if (!reportProgress(progress, 0.5))
         return cancelledError();
 
     Result<Mesh> flattened =
-        gltf::flattenGltf(model, json, access, extensions->quantized, progress, limits);
+        gltf::flattenGltf(model, src.json, access, extensions->quantized, progress, limits);
     if (!flattened)
         return flattened.takeError();
     Mesh mesh = std::move(flattened).value();
