@@ -262,69 +262,19 @@ private:
         return m_source.read(out.rgba.data(), out.rgba.size());
     }
 
+    /** One frame of length bytes after its header, handled by its kind; false stops reading. */
     bool frame(Tag tag, std::uint64_t length) {
         switch (tag) {
-        case Tag::Progress: {
-            double fraction = 0.0;
-            if (length != sizeof fraction)
-                return fail("it sent a malformed progress report");
-            if (!m_source.read(&fraction, sizeof fraction))
-                return false;
-            if (!std::isfinite(fraction))
-                return fail("it sent a malformed progress report");
-            if (!reportProgress(m_progress, std::clamp(fraction, 0.0, 1.0))) {
-                m_received.cancelled = true;
-                return false;
-            }
-            return true;
-        }
-        case Tag::Warning: {
-            std::string text;
-            if (!readText(length, text))
-                return false;
-            if (m_received.warnings.size() < kMaxWarnings)
-                m_received.warnings.push_back(cleanText(std::move(text)));
-            return true;
-        }
-        case Tag::Error: {
-            std::string text;
-            if (!readText(length, text))
-                return false;
-            m_received.error = cleanText(std::move(text));
-            m_done = true;
-            return true;
-        }
-        case Tag::Image: {
-            if (m_mesh)
-                return fail("it sent an image inside a mesh");
-            Image image;
-            if (!readImage(length, image))
-                return false;
-            m_received.image = std::move(image);
-            m_done = true;
-            return true;
-        }
-        case Tag::MeshBegin: {
-            MeshHeader h{};
-            if (m_mesh)
-                return fail("it started a second mesh");
-            if (length != sizeof h)
-                return fail("it sent a malformed mesh header");
-            if (!m_source.read(&h, sizeof h))
-                return false;
-            const bool perVertex = (h.normals == 0 || h.normals == h.vertices) &&
-                                   (h.uvs == 0 || h.uvs == h.vertices) &&
-                                   (h.colors == 0 || h.colors == h.vertices);
-            if (h.vertices > m_limits.maxVertices || h.indices % 3 != 0 ||
-                h.indices / 3 > m_limits.maxTriangles || !perVertex ||
-                (h.triangleMaterials != 0 && h.triangleMaterials != h.indices / 3) ||
-                h.materials > kMaxMaterials || h.textures > kMaxTextures)
-                return fail("it announced a mesh beyond the limits");
-            m_header = h;
-            m_mesh.emplace();
-            m_mesh->materials.reserve(static_cast<std::size_t>(h.materials));
-            return true;
-        }
+        case Tag::Progress:
+            return progressFrame(length);
+        case Tag::Warning:
+            return warningFrame(length);
+        case Tag::Error:
+            return errorFrame(length);
+        case Tag::Image:
+            return imageFrame(length);
+        case Tag::MeshBegin:
+            return meshBegin(length);
         case Tag::Positions:
         case Tag::Normals:
         case Tag::Uvs:
@@ -332,56 +282,133 @@ private:
         case Tag::Indices:
         case Tag::TriangleMaterials:
             return array(tag, length);
-        case Tag::Material: {
-            MaterialHeader h{};
-            if (!m_mesh || m_mesh->materials.size() >= m_header.materials)
-                return fail("it sent more materials than it announced");
-            if (length < sizeof h || length - sizeof h > kMaxTextBytes)
-                return fail("it sent a malformed material");
-            if (!m_source.read(&h, sizeof h))
-                return false;
-            if (h.nameLength != length - sizeof h)
-                return fail("it sent a malformed material");
-            Material m;
-            m.baseColorFactor = glm::vec4(h.baseColorFactor[0], h.baseColorFactor[1],
-                                          h.baseColorFactor[2], h.baseColorFactor[3]);
-            for (int k = 0; k < 4; ++k)
-                if (!std::isfinite(m.baseColorFactor[k]))
-                    return fail("it sent a material colour that is not a number");
-            m.baseColorTexture = h.baseColorTexture < 0 ? -1 : h.baseColorTexture;
-            m.name.resize(h.nameLength);
-            if (h.nameLength > 0 && !m_source.read(m.name.data(), m.name.size()))
-                return false;
-            m_mesh->materials.push_back(std::move(m));
-            return true;
-        }
-        case Tag::Texture: {
-            if (!m_mesh || m_mesh->textures.size() >= m_header.textures)
-                return fail("it sent more textures than it announced");
-            Image image;
-            if (!readImage(length, image))
-                return false;
-            m_mesh->textures.push_back(std::move(image));
-            return true;
-        }
-        case Tag::MeshEnd: {
-            if (!m_mesh || length != 0)
-                return fail("it ended a mesh it had not started");
-            const bool complete = m_seen[0] && (m_header.normals == 0 || m_seen[1]) &&
-                                  (m_header.uvs == 0 || m_seen[2]) &&
-                                  (m_header.colors == 0 || m_seen[3]) && m_seen[4] &&
-                                  (m_header.triangleMaterials == 0 || m_seen[5]) &&
-                                  m_mesh->materials.size() == m_header.materials &&
-                                  m_mesh->textures.size() == m_header.textures;
-            if (!complete)
-                return fail("it ended a mesh before sending all of it");
-            m_mesh->warnings = m_received.warnings;
-            m_received.mesh = std::move(m_mesh);
-            m_done = true;
-            return true;
-        }
+        case Tag::Material:
+            return materialFrame(length);
+        case Tag::Texture:
+            return textureFrame(length);
+        case Tag::MeshEnd:
+            return meshEnd(length);
         }
         return fail("it sent a frame of an unknown kind");
+    }
+
+    bool progressFrame(std::uint64_t length) {
+        double fraction = 0.0;
+        if (length != sizeof fraction)
+            return fail("it sent a malformed progress report");
+        if (!m_source.read(&fraction, sizeof fraction))
+            return false;
+        if (!std::isfinite(fraction))
+            return fail("it sent a malformed progress report");
+        if (!reportProgress(m_progress, std::clamp(fraction, 0.0, 1.0))) {
+            m_received.cancelled = true;
+            return false;
+        }
+        return true;
+    }
+
+    bool warningFrame(std::uint64_t length) {
+        std::string text;
+        if (!readText(length, text))
+            return false;
+        if (m_received.warnings.size() < kMaxWarnings)
+            m_received.warnings.push_back(cleanText(std::move(text)));
+        return true;
+    }
+
+    bool errorFrame(std::uint64_t length) {
+        std::string text;
+        if (!readText(length, text))
+            return false;
+        m_received.error = cleanText(std::move(text));
+        m_done = true;
+        return true;
+    }
+
+    bool imageFrame(std::uint64_t length) {
+        if (m_mesh)
+            return fail("it sent an image inside a mesh");
+        Image image;
+        if (!readImage(length, image))
+            return false;
+        m_received.image = std::move(image);
+        m_done = true;
+        return true;
+    }
+
+    /** The mesh header: its counts, checked against the limits, before any array. */
+    bool meshBegin(std::uint64_t length) {
+        MeshHeader h{};
+        if (m_mesh)
+            return fail("it started a second mesh");
+        if (length != sizeof h)
+            return fail("it sent a malformed mesh header");
+        if (!m_source.read(&h, sizeof h))
+            return false;
+        const bool perVertex = (h.normals == 0 || h.normals == h.vertices) &&
+                               (h.uvs == 0 || h.uvs == h.vertices) &&
+                               (h.colors == 0 || h.colors == h.vertices);
+        if (h.vertices > m_limits.maxVertices || h.indices % 3 != 0 ||
+            h.indices / 3 > m_limits.maxTriangles || !perVertex ||
+            (h.triangleMaterials != 0 && h.triangleMaterials != h.indices / 3) ||
+            h.materials > kMaxMaterials || h.textures > kMaxTextures)
+            return fail("it announced a mesh beyond the limits");
+        m_header = h;
+        m_mesh.emplace();
+        m_mesh->materials.reserve(static_cast<std::size_t>(h.materials));
+        return true;
+    }
+
+    bool materialFrame(std::uint64_t length) {
+        MaterialHeader h{};
+        if (!m_mesh || m_mesh->materials.size() >= m_header.materials)
+            return fail("it sent more materials than it announced");
+        if (length < sizeof h || length - sizeof h > kMaxTextBytes)
+            return fail("it sent a malformed material");
+        if (!m_source.read(&h, sizeof h))
+            return false;
+        if (h.nameLength != length - sizeof h)
+            return fail("it sent a malformed material");
+        Material m;
+        m.baseColorFactor = glm::vec4(h.baseColorFactor[0], h.baseColorFactor[1],
+                                      h.baseColorFactor[2], h.baseColorFactor[3]);
+        for (int k = 0; k < 4; ++k)
+            if (!std::isfinite(m.baseColorFactor[k]))
+                return fail("it sent a material colour that is not a number");
+        m.baseColorTexture = h.baseColorTexture < 0 ? -1 : h.baseColorTexture;
+        m.name.resize(h.nameLength);
+        if (h.nameLength > 0 && !m_source.read(m.name.data(), m.name.size()))
+            return false;
+        m_mesh->materials.push_back(std::move(m));
+        return true;
+    }
+
+    bool textureFrame(std::uint64_t length) {
+        if (!m_mesh || m_mesh->textures.size() >= m_header.textures)
+            return fail("it sent more textures than it announced");
+        Image image;
+        if (!readImage(length, image))
+            return false;
+        m_mesh->textures.push_back(std::move(image));
+        return true;
+    }
+
+    /** The end of the mesh: everything its header announced must have come. */
+    bool meshEnd(std::uint64_t length) {
+        if (!m_mesh || length != 0)
+            return fail("it ended a mesh it had not started");
+        const bool complete = m_seen[0] && (m_header.normals == 0 || m_seen[1]) &&
+                              (m_header.uvs == 0 || m_seen[2]) &&
+                              (m_header.colors == 0 || m_seen[3]) && m_seen[4] &&
+                              (m_header.triangleMaterials == 0 || m_seen[5]) &&
+                              m_mesh->materials.size() == m_header.materials &&
+                              m_mesh->textures.size() == m_header.textures;
+        if (!complete)
+            return fail("it ended a mesh before sending all of it");
+        m_mesh->warnings = m_received.warnings;
+        m_received.mesh = std::move(m_mesh);
+        m_done = true;
+        return true;
     }
 
     FrameSource& m_source;
