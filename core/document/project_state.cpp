@@ -251,6 +251,89 @@ std::string newerMessage(int version) {
            "): update LayerPaint to open it";
 }
 
+// The sections of extras.layerpaint, each read from its own object in the file's order.
+
+void readCameraSection(Reader& root, ProjectState& s) {
+    if (!root.object("camera"))
+        return;
+    Reader r = root.child("camera");
+    Camera c;
+    r.vec3("target", c.target);
+    r.number("yaw", c.yawDegrees, -1e6f, 1e6f);
+    r.number("pitch", c.pitchDegrees, -90.0f, 90.0f);
+    r.number("distance", c.distance, 1e-9f, 1e30f);
+    r.number("fov_y", c.fovYDegrees, 1.0f, 170.0f);
+    r.boolean("orthographic", c.orthographic);
+    s.camera = c;
+}
+
+void readBrushSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("brush");
+    Brush& b = s.brush;
+    r.color("color", b.color);
+    r.number("radius", b.radius, 0.5f, 2048.0f);
+    r.number("hardness", b.hardness, 0.0f, 1.0f);
+    r.number("opacity", b.opacity, 0.0f, 1.0f);
+    r.number("flow", b.flow, 0.0f, 1.0f);
+    r.number("spacing", b.spacing, 0.01f, 4.0f);
+    r.boolean("eraser", b.eraser);
+    r.boolean("pressure_radius", b.pressureRadius);
+    r.boolean("pressure_opacity", b.pressureOpacity);
+    r.number("track_radius", b.trackRadius, 0.0f, 1e5f);
+    readBrushTip(r, b);
+    s.foreground = b.color; // files without colours: the brush's is the foreground
+}
+
+void readColorsSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("colors");
+    r.color("foreground", s.foreground);
+    r.color("background", s.background);
+    r.palette("palette", s.palette);
+}
+
+void readSegmentationSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("segmentation");
+    r.number("threshold", s.layers.threshold, kMinThreshold, kMaxThreshold);
+    std::string test = testName(s.layers.test);
+    r.string("test", test);
+    if (test == "plain")
+        s.layers.test = ConnectionTest::Plain;
+    else if (test == "surface")
+        s.layers.test = ConnectionTest::Surface;
+    else
+        r.warn("test", "is neither \"plain\" nor \"surface\"");
+    bool twoSided = !s.layers.cullBackFaces;
+    r.boolean("two_sided", twoSided);
+    s.layers.cullBackFaces = !twoSided;
+}
+
+void readPaintTargetSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("paint_target");
+    std::string kind = "auto";
+    r.string("kind", kind);
+    if (kind == "texture")
+        s.target.kind = PaintTargetKind::Texture;
+    else if (kind == "vertex-colors")
+        s.target.kind = PaintTargetKind::VertexColors;
+    else if (kind != "auto")
+        r.warn("kind", "is not \"texture\", \"vertex-colors\" or \"auto\"");
+    r.integer("resolution", s.target.resolution, 512, 8192);
+}
+
+void readStabilizerSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("stabilizer");
+    r.boolean("on", s.brush.stabilizer);
+    r.number("length", s.brush.stabilizerLength, 0.0f, 1000.0f);
+    r.number("smoothing", s.brush.stabilizerSmoothing, 0.0f, 1.0f);
+    r.boolean("catch_up", s.brush.stabilizerCatchUp);
+}
+
+void readPopUpSection(Reader& root, ProjectState& s) {
+    Reader r = root.child("pop_up");
+    r.boolean("automatic", s.autoPopUp);
+    r.boolean("transparency", s.popUpTransparency);
+}
+
 } // namespace
 
 Json projectStateToJson(const ProjectState& s) {
@@ -342,83 +425,17 @@ Result<ProjectState> projectStateFromJson(const Json& layerpaint,
     Reader root(j, "extras.layerpaint", warnings);
     root.string("source", s.source);
     root.string("recovery_for", s.recoveryFor);
-
-    if (root.object("camera")) {
-        Reader r = root.child("camera");
-        Camera c;
-        r.vec3("target", c.target);
-        r.number("yaw", c.yawDegrees, -1e6f, 1e6f);
-        r.number("pitch", c.pitchDegrees, -90.0f, 90.0f);
-        r.number("distance", c.distance, 1e-9f, 1e30f);
-        r.number("fov_y", c.fovYDegrees, 1.0f, 170.0f);
-        r.boolean("orthographic", c.orthographic);
-        s.camera = c;
-    }
-    {
-        Reader r = root.child("brush");
-        Brush& b = s.brush;
-        r.color("color", b.color);
-        r.number("radius", b.radius, 0.5f, 2048.0f);
-        r.number("hardness", b.hardness, 0.0f, 1.0f);
-        r.number("opacity", b.opacity, 0.0f, 1.0f);
-        r.number("flow", b.flow, 0.0f, 1.0f);
-        r.number("spacing", b.spacing, 0.01f, 4.0f);
-        r.boolean("eraser", b.eraser);
-        r.boolean("pressure_radius", b.pressureRadius);
-        r.boolean("pressure_opacity", b.pressureOpacity);
-        r.number("track_radius", b.trackRadius, 0.0f, 1e5f);
-        readBrushTip(r, b);
-        s.foreground = b.color; // files without colours: the brush's is the foreground
-    }
-    {
-        Reader r = root.child("colors");
-        r.color("foreground", s.foreground);
-        r.color("background", s.background);
-        r.palette("palette", s.palette);
-    }
-    {
-        Reader r = root.child("segmentation");
-        r.number("threshold", s.layers.threshold, kMinThreshold, kMaxThreshold);
-        std::string test = testName(s.layers.test);
-        r.string("test", test);
-        if (test == "plain")
-            s.layers.test = ConnectionTest::Plain;
-        else if (test == "surface")
-            s.layers.test = ConnectionTest::Surface;
-        else
-            r.warn("test", "is neither \"plain\" nor \"surface\"");
-        bool twoSided = !s.layers.cullBackFaces;
-        r.boolean("two_sided", twoSided);
-        s.layers.cullBackFaces = !twoSided;
-    }
-    {
-        Reader r = root.child("paint_target");
-        std::string kind = "auto";
-        r.string("kind", kind);
-        if (kind == "texture")
-            s.target.kind = PaintTargetKind::Texture;
-        else if (kind == "vertex-colors")
-            s.target.kind = PaintTargetKind::VertexColors;
-        else if (kind != "auto")
-            r.warn("kind", "is not \"texture\", \"vertex-colors\" or \"auto\"");
-        r.integer("resolution", s.target.resolution, 512, 8192);
-    }
-    {
-        Reader r = root.child("stabilizer");
-        r.boolean("on", s.brush.stabilizer);
-        r.number("length", s.brush.stabilizerLength, 0.0f, 1000.0f);
-        r.number("smoothing", s.brush.stabilizerSmoothing, 0.0f, 1.0f);
-        r.boolean("catch_up", s.brush.stabilizerCatchUp);
-    }
+    readCameraSection(root, s);
+    readBrushSection(root, s);
+    readColorsSection(root, s);
+    readSegmentationSection(root, s);
+    readPaintTargetSection(root, s);
+    readStabilizerSection(root, s);
     if (const Json* symmetry = root.object("symmetry"))
         if (Status st = applyBrushSymmetry(s.brush, *symmetry); !st)
             root.warn("symmetry", st.error());
     root.boolean("layer_aware", s.layerAware);
-    {
-        Reader r = root.child("pop_up");
-        r.boolean("automatic", s.autoPopUp);
-        r.boolean("transparency", s.popUpTransparency);
-    }
+    readPopUpSection(root, s);
     if (const auto it = j.find("paint_layers"); it != j.end()) {
         Result<SavedPaintLayers> layers = paintLayersFromJson(*it, warnings);
         if (!layers)
