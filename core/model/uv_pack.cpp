@@ -374,6 +374,133 @@ private:
     int m_lastFailed = 0;
 };
 
+Error chartTooLargeError(int pageSize) {
+    return Error{"a chart is larger than a " + std::to_string(pageSize) + " texel page",
+                 ErrorKind::BadInput};
+}
+
+Error chartsDoNotFitError(std::uint32_t maxPages) {
+    return Error{"the charts do not fit on " + std::to_string(maxPages) + " page(s)",
+                 ErrorKind::BadInput};
+}
+
+/** Every chart's mask, made in parallel; stops when cancelled or at a chart that is larger than a
+ *  page both ways. */
+Status maskCharts(const std::vector<Chart>& charts, double density, const UvLayoutOptions& options,
+                  const Growth& growth, const std::atomic<bool>& cancel, std::vector<Mask>& masks) {
+    const int pageSize = options.resolution;
+    masks.resize(charts.size());
+    std::atomic<std::size_t> next{0};
+    std::atomic<bool> tooLarge{false};
+    const unsigned threads = resolveThreadCount(options.threads);
+    parallelRanges(int(threads), threads, [&](int, int, int) {
+        for (std::size_t i = next++; i < charts.size() && !cancel && !tooLarge; i = next++) {
+            glm::dvec2 lo(1e300), hi(-1e300);
+            for (const glm::dvec2& p : charts[i].uv) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            if (!charts[i].uv.empty() &&
+                std::min(hi.x - lo.x, hi.y - lo.y) * density > double(pageSize)) {
+                tooLarge = true;
+                break;
+            }
+            if (charts[i].area > 0.0) // charts without area are points that need no room
+                masks[i] = maskChart(charts[i], density, growth);
+        }
+    });
+    if (cancel)
+        return Error{"cancelled", ErrorKind::Cancelled};
+    if (tooLarge)
+        return chartTooLargeError(pageSize);
+    return {};
+}
+
+/** Each mask's texel count in texels; returns their sum. */
+double countMaskTexels(const std::vector<Mask>& masks, std::vector<std::size_t>& texels) {
+    texels.resize(masks.size());
+    double allTexels = 0.0;
+    for (std::size_t i = 0; i < masks.size(); ++i) {
+        texels[i] = std::size_t(std::count(masks[i].bits.begin(), masks[i].bits.end(), 1u));
+        allTexels += double(texels[i]);
+    }
+    return allTexels;
+}
+
+/**
+ * The order the charts are placed in: the most texels first. Small charts go last: before them,
+ * what is placed grows so that their smaller rings keep the full padding to it.
+ */
+std::vector<std::uint32_t> packingOrder(const std::vector<Mask>& masks,
+                                        const std::vector<std::size_t>& texels) {
+    std::vector<std::uint32_t> order(masks.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        if (masks[a].small != masks[b].small)
+            return masks[b].small;
+        return texels[a] != texels[b] ? texels[a] > texels[b] : a < b;
+    });
+    return order;
+}
+
+/** The pages being filled, and whether the small charts' turn has come. */
+struct PageFill {
+    int pageSize = 0;
+    std::uint32_t maxPages = 0;
+    int smallGrowth = 0; // how much placed charts grow when the small ones start
+    bool smallPhase = false;
+    std::vector<Page> pages;
+};
+
+/**
+ * Puts m on the first page with room for it (a new one when none has, at most maxPages), in the
+ * quarter turn that keeps its top lowest.
+ */
+Status placeMask(PageFill& fill, const Mask& m, Placement& pl) {
+    std::vector<Page>& pages = fill.pages;
+    if (std::min(m.width, m.height) > fill.pageSize)
+        return chartTooLargeError(fill.pageSize);
+    if (m.small && !fill.smallPhase) {
+        fill.smallPhase = true;
+        for (Page& page : pages)
+            page.grow(fill.smallGrowth);
+    }
+    Shape shapes[4];
+    for (int rot = 0; rot < 4; ++rot)
+        shapes[rot] = rotatedShape(m, rot);
+    for (std::size_t page = 0;; ++page) {
+        if (page == pages.size()) {
+            if (pages.size() >= fill.maxPages)
+                return chartsDoNotFitError(fill.maxPages);
+            pages.emplace_back(fill.pageSize);
+            if (fill.smallPhase)
+                pages.back().grow(fill.smallGrowth);
+        }
+        long long bestTop = LLONG_MAX;
+        int bestX = 0, bestY = 0, bestRotation = -1;
+        for (int rot = 0; rot < 4; ++rot) {
+            int x, y;
+            if (pages[page].firstFit(shapes[rot], bestTop, x, y)) {
+                bestTop = y + shapes[rot].height;
+                bestX = x;
+                bestY = y;
+                bestRotation = rot;
+            }
+        }
+        if (bestRotation < 0)
+            continue;
+        pages[page].place(shapes[bestRotation], bestX, bestY);
+        pl.page = std::uint32_t(page);
+        pl.rotation = bestRotation;
+        pl.x = bestX;
+        pl.y = bestY;
+        pl.origin = m.origin;
+        pl.width = m.width;
+        pl.height = m.height;
+        return {};
+    }
+}
+
 } // namespace
 
 glm::dvec2 placeUv(const Placement& placement, const glm::dvec2& uv, double density) {
@@ -409,115 +536,31 @@ Result<Packing> packCharts(const std::vector<Chart>& charts, double density,
     growth.r = (options.padding + 1) / 2;
     growth.rSmall = smallChartRadius(options.padding);
     growth.smallTexels = options.smallChartTexels;
-    std::vector<Mask> masks(charts.size());
-    std::atomic<std::size_t> next{0};
-    std::atomic<bool> tooLarge{false};
-    const unsigned threads = resolveThreadCount(options.threads);
-    parallelRanges(int(threads), threads, [&](int, int, int) {
-        for (std::size_t i = next++; i < charts.size() && !cancel && !tooLarge; i = next++) {
-            glm::dvec2 lo(1e300), hi(-1e300);
-            for (const glm::dvec2& p : charts[i].uv) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-            if (!charts[i].uv.empty() &&
-                std::min(hi.x - lo.x, hi.y - lo.y) * density > double(pageSize)) {
-                tooLarge = true;
-                break;
-            }
-            if (charts[i].area > 0.0) // charts without area are points that need no room
-                masks[i] = maskChart(charts[i], density, growth);
-        }
-    });
-    if (cancel)
-        return Error{"cancelled", ErrorKind::Cancelled};
-    const auto tooLargeError = [&] {
-        return Error{"a chart is larger than a " + std::to_string(pageSize) + " texel page",
-                     ErrorKind::BadInput};
-    };
-    if (tooLarge)
-        return tooLargeError();
+    std::vector<Mask> masks;
+    if (Status masked = maskCharts(charts, density, options, growth, cancel, masks); !masked)
+        return masked.takeError();
+    std::vector<std::size_t> texels;
+    if (countMaskTexels(masks, texels) > double(maxPages) * double(pageSize) * double(pageSize))
+        return chartsDoNotFitError(maxPages);
+    const std::vector<std::uint32_t> order = packingOrder(masks, texels);
 
-    std::vector<std::uint32_t> order(charts.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::vector<std::size_t> texels(charts.size());
-    double allTexels = 0.0;
-    for (std::size_t i = 0; i < charts.size(); ++i) {
-        texels[i] = std::size_t(std::count(masks[i].bits.begin(), masks[i].bits.end(), 1u));
-        allTexels += double(texels[i]);
-    }
-    const auto noRoom = [&] {
-        return Error{"the charts do not fit on " + std::to_string(maxPages) + " page(s)",
-                     ErrorKind::BadInput};
-    };
-    if (allTexels > double(maxPages) * double(pageSize) * double(pageSize))
-        return noRoom();
-    // Small charts go last: before them, what is placed grows so that their smaller rings keep
-    // the full padding to it.
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        if (masks[a].small != masks[b].small)
-            return masks[b].small;
-        return texels[a] != texels[b] ? texels[a] > texels[b] : a < b;
-    });
-    const int smallGrowth = growth.r - growth.rSmall;
-    bool smallPhase = false;
-
+    PageFill fill;
+    fill.pageSize = pageSize;
+    fill.maxPages = maxPages;
+    fill.smallGrowth = growth.r - growth.rSmall;
     Packing packing;
     packing.placements.resize(charts.size());
-    std::vector<Page> pages;
     for (std::size_t n = 0; n < order.size(); ++n) {
         if (n % 64 == 0 && cancel)
             return Error{"cancelled", ErrorKind::Cancelled};
         const std::uint32_t i = order[n];
-        const Mask& m = masks[i];
-        if (m.bits.empty())
+        if (masks[i].bits.empty())
             continue; // a point: at the first page's corner, where it covers nothing
-        if (std::min(m.width, m.height) > pageSize)
-            return tooLargeError();
-        if (m.small && !smallPhase) {
-            smallPhase = true;
-            for (Page& page : pages)
-                page.grow(smallGrowth);
-        }
-        Shape shapes[4];
-        for (int rot = 0; rot < 4; ++rot)
-            shapes[rot] = rotatedShape(m, rot);
-        bool placed = false;
-        for (std::size_t page = 0; !placed; ++page) {
-            if (page == pages.size()) {
-                if (pages.size() >= maxPages)
-                    return noRoom();
-                pages.emplace_back(pageSize);
-                if (smallPhase)
-                    pages.back().grow(smallGrowth);
-            }
-            long long bestTop = LLONG_MAX;
-            int bestX = 0, bestY = 0, bestRotation = -1;
-            for (int rot = 0; rot < 4; ++rot) {
-                int x, y;
-                if (pages[page].firstFit(shapes[rot], bestTop, x, y)) {
-                    bestTop = y + shapes[rot].height;
-                    bestX = x;
-                    bestY = y;
-                    bestRotation = rot;
-                }
-            }
-            if (bestRotation < 0)
-                continue;
-            pages[page].place(shapes[bestRotation], bestX, bestY);
-            Placement& pl = packing.placements[i];
-            pl.page = std::uint32_t(page);
-            pl.rotation = bestRotation;
-            pl.x = bestX;
-            pl.y = bestY;
-            pl.origin = m.origin;
-            pl.width = m.width;
-            pl.height = m.height;
-            placed = true;
-        }
+        if (Status placed = placeMask(fill, masks[i], packing.placements[i]); !placed)
+            return placed.takeError();
         masks[i] = {};
     }
-    packing.pageCount = std::uint32_t(std::max<std::size_t>(pages.size(), 1));
+    packing.pageCount = std::uint32_t(std::max<std::size_t>(fill.pages.size(), 1));
     return packing;
 }
 
