@@ -314,10 +314,17 @@ bool overlapsItself(const Chart& chart) {
     return false;
 }
 
-} // namespace
+/** The local index of welded vertex v in chart.vertices (sorted). */
+std::uint32_t localVertex(const Chart& chart, std::uint32_t v) {
+    return std::uint32_t(std::lower_bound(chart.vertices.begin(), chart.vertices.end(), v) -
+                         chart.vertices.begin());
+}
 
-FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
-                            double density) {
+/**
+ * The chart's vertices (its triangles' welded corners, ascending), each triangle's corners as
+ * local indices and its 3D area; returns the area-weighted normal sum.
+ */
+glm::dvec3 indexChartVertices(const Surface& surface, Chart& chart) {
     const MeshTopology& topo = *surface.topology;
     chart.vertices.clear();
     for (std::uint32_t t : chart.triangles)
@@ -326,29 +333,23 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     std::sort(chart.vertices.begin(), chart.vertices.end());
     chart.vertices.erase(std::unique(chart.vertices.begin(), chart.vertices.end()),
                          chart.vertices.end());
-    const auto localOf = [&](std::uint32_t v) {
-        return std::uint32_t(std::lower_bound(chart.vertices.begin(), chart.vertices.end(), v) -
-                             chart.vertices.begin());
-    };
     chart.local.resize(chart.triangles.size());
     chart.area = 0.0;
     glm::dvec3 normalSum(0.0);
     for (std::size_t k = 0; k < chart.triangles.size(); ++k) {
         const std::uint32_t t = chart.triangles[k];
         for (int c = 0; c < 3; ++c)
-            chart.local[k][std::size_t(c)] = localOf(topo.corners[t][std::size_t(c)]);
+            chart.local[k][std::size_t(c)] = localVertex(chart, topo.corners[t][std::size_t(c)]);
         if (!surface.degenerate(t)) {
             chart.area += surface.area[t];
             normalSum += surface.normal[t] * surface.area[t];
         }
     }
-    chart.uv.assign(chart.vertices.size(), glm::dvec2(0.0));
-    if (!(glm::length(normalSum) > 0.0))
-        return FlattenOutcome::Good; // no area: a point
+    return normalSum;
+}
 
-    // Projection onto the plane of the mean normal: the result for planar charts, the pins'
-    // places otherwise.
-    const glm::dvec3 mean = glm::normalize(normalSum);
+/** The chart's vertices projected onto the plane through its first one across mean. */
+void projectOntoPlane(const Surface& surface, const glm::dvec3& mean, Chart& chart) {
     const glm::dvec3 axisU = perpendicular(mean);
     const glm::dvec3 axisV = glm::cross(mean, axisU);
     const glm::dvec3 origin = surface.position[chart.vertices[0]];
@@ -356,34 +357,47 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         const glm::dvec3 d = surface.position[chart.vertices[i]] - origin;
         chart.uv[i] = {glm::dot(d, axisU), glm::dot(d, axisV)};
     }
-    const std::vector<OnSide> junctions = tJunctions(surface, chart, localOf);
+}
+
+bool isPlanarChart(const Surface& surface, const Chart& chart, const glm::dvec3& mean) {
     bool planar = true;
     for (std::uint32_t t : chart.triangles)
         if (!surface.degenerate(t) && glm::dot(surface.normal[t], mean) < 1.0 - 1e-9)
             planar = false;
-    if (!planar) {
-        glm::dvec2 lo(1e300), hi(-1e300);
-        std::uint32_t lowest[2] = {0, 0}, highest[2] = {0, 0};
-        for (std::uint32_t i = 0; i < std::uint32_t(chart.uv.size()); ++i)
-            for (int a = 0; a < 2; ++a) {
-                if (chart.uv[i][a] < lo[a]) {
-                    lo[a] = chart.uv[i][a];
-                    lowest[a] = i;
-                }
-                if (chart.uv[i][a] > hi[a]) {
-                    hi[a] = chart.uv[i][a];
-                    highest[a] = i;
-                }
-            }
-        const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
-        if (lowest[axis] != highest[axis]) {
-            const std::vector<glm::dvec2> projected = chart.uv;
-            if (!solveLscm(surface, chart, lowest[axis], highest[axis], junctions))
-                chart.uv = projected;
-        }
-    }
-    closeTJunctions(chart, junctions);
+    return planar;
+}
 
+/**
+ * The conformal map pinned at the projection's two extreme vertices along its longer side; the
+ * projection stays when they coincide or the solve fails.
+ */
+void mapConformally(const Surface& surface, Chart& chart, const std::vector<OnSide>& junctions) {
+    glm::dvec2 lo(1e300), hi(-1e300);
+    std::uint32_t lowest[2] = {0, 0}, highest[2] = {0, 0};
+    for (std::uint32_t i = 0; i < std::uint32_t(chart.uv.size()); ++i)
+        for (int a = 0; a < 2; ++a) {
+            if (chart.uv[i][a] < lo[a]) {
+                lo[a] = chart.uv[i][a];
+                lowest[a] = i;
+            }
+            if (chart.uv[i][a] > hi[a]) {
+                hi[a] = chart.uv[i][a];
+                highest[a] = i;
+            }
+        }
+    const int axis = hi.x - lo.x >= hi.y - lo.y ? 0 : 1;
+    if (lowest[axis] != highest[axis]) {
+        const std::vector<glm::dvec2> projected = chart.uv;
+        if (!solveLscm(surface, chart, lowest[axis], highest[axis], junctions))
+            chart.uv = projected;
+    }
+}
+
+/**
+ * The uv turned over if mirrored, scaled so its area is the chart's 3D area and moved to start
+ * at 0; false when it has no area (or none that is finite).
+ */
+bool scaleToChartArea(Chart& chart) {
     double uvArea = 0.0;
     for (const auto& c : chart.local)
         uvArea += signedArea(chart.uv[c[0]], chart.uv[c[1]], chart.uv[c[2]]);
@@ -393,7 +407,7 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
         uvArea = -uvArea;
     }
     if (!(uvArea > 0.0) || !std::isfinite(uvArea))
-        return FlattenOutcome::Flipped;
+        return false;
     const double scale = std::sqrt(chart.area / uvArea);
     glm::dvec2 lo(1e300);
     for (glm::dvec2& p : chart.uv) {
@@ -402,7 +416,12 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     }
     for (glm::dvec2& p : chart.uv)
         p -= lo;
+    return true;
+}
 
+/** Flipped if a triangle is turned over or crushed; Stretched if over 5% of the area is
+ *  stretched beyond maxStretch; else Good. */
+FlattenOutcome measureStretch(const Surface& surface, const Chart& chart, double maxStretch) {
     double stretchedArea = 0.0;
     for (std::size_t k = 0; k < chart.local.size(); ++k) {
         const std::uint32_t t = chart.triangles[k];
@@ -418,6 +437,33 @@ FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStre
     }
     if (chart.triangles.size() > 1 && stretchedArea > 0.05 * chart.area)
         return FlattenOutcome::Stretched;
+    return FlattenOutcome::Good;
+}
+
+} // namespace
+
+FlattenOutcome flattenChart(const Surface& surface, Chart& chart, double maxStretch,
+                            double density) {
+    const glm::dvec3 normalSum = indexChartVertices(surface, chart);
+    chart.uv.assign(chart.vertices.size(), glm::dvec2(0.0));
+    if (!(glm::length(normalSum) > 0.0))
+        return FlattenOutcome::Good; // no area: a point
+
+    // Projection onto the plane of the mean normal: the result for planar charts, the pins'
+    // places otherwise.
+    const glm::dvec3 mean = glm::normalize(normalSum);
+    projectOntoPlane(surface, mean, chart);
+    const std::vector<OnSide> junctions =
+        tJunctions(surface, chart, [&](std::uint32_t v) { return localVertex(chart, v); });
+    if (!isPlanarChart(surface, chart, mean))
+        mapConformally(surface, chart, junctions);
+    closeTJunctions(chart, junctions);
+
+    if (!scaleToChartArea(chart))
+        return FlattenOutcome::Flipped;
+    if (const FlattenOutcome stretch = measureStretch(surface, chart, maxStretch);
+        stretch != FlattenOutcome::Good)
+        return stretch;
     // Turned first, so the overlap test sees the chart as it will be packed.
     const double box = alignToSmallestBox(chart.uv);
     if (chart.triangles.size() > 1 && overlapsItself(chart))
