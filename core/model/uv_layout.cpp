@@ -186,10 +186,8 @@ Result<std::pair<double, uvl::Packing>> packOnePage(const std::vector<Chart>& ch
     return std::make_pair(bestDensity, std::move(*best));
 }
 
-} // namespace
-
-Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
-                              const ProgressFn& progress) {
+/** What makeUvLayout cannot lay out: bad options, an invalid or empty mesh. */
+Status checkLayoutInput(const Mesh& mesh, const UvLayoutOptions& options) {
     if (const std::string problem = checkOptions(options); !problem.empty())
         return Error{"cannot lay out UVs: " + problem, ErrorKind::BadInput};
     if (const Status valid = mesh.validate(); !valid)
@@ -198,33 +196,26 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
         return Error{"cannot lay out UVs of a mesh without triangles", ErrorKind::BadInput};
     if (mesh.triangleCount() >= std::size_t(kNone))
         return Error{"cannot lay out UVs of more than 4 billion triangles", ErrorKind::BadInput};
-    if (!reportProgress(progress, 0.0))
-        return cancelled();
+    return {};
+}
 
-    // Triangle order, materials and winding stay as they are; only vertices are copied.
-    const MeshTopology topology = buildMeshTopology(mesh);
-    const uvl::Surface surface = makeSurface(mesh, topology, options.threads);
-    std::vector<std::vector<std::uint32_t>> grown = uvl::growCharts(surface, options);
-    if (!reportProgress(progress, 0.1))
-        return cancelled();
-    // The density the charts will have, near enough to look for overlaps at texel size.
+/** The density the charts will have, near enough to look for overlaps at texel size. */
+double expectedDensity(const uvl::Surface& surface, const UvLayoutOptions& options) {
     double surfaceArea = 0.0;
     for (std::size_t t = 0; t < surface.area.size(); ++t)
         if (!surface.degenerate(std::uint32_t(t)))
             surfaceArea += surface.area[t];
-    const double expectedDensity =
-        options.texelsPerUnit > 0.0 ? options.texelsPerUnit
-        : surfaceArea > 0.0
-            ? std::sqrt(0.7 * double(options.resolution) * double(options.resolution) / surfaceArea)
-            : 1.0;
-    Result<std::vector<Chart>> flattened =
-        flattenAll(surface, std::move(grown), options, expectedDensity, progress, 0.1, 0.6);
-    if (!flattened)
-        return flattened.takeError();
-    const std::vector<Chart>& charts = flattened.value();
+    return options.texelsPerUnit > 0.0 ? options.texelsPerUnit
+           : surfaceArea > 0.0         ? std::sqrt(0.7 * double(options.resolution) *
+                                                   double(options.resolution) / surfaceArea)
+                                       : 1.0;
+}
 
-    double density = options.texelsPerUnit;
-    uvl::Packing packing;
+/** The charts packed at the options' density on as many pages as they need, or at the largest
+ *  that fits one page (density 0); density becomes the one used. */
+Status packAllCharts(const std::vector<Chart>& charts, const UvLayoutOptions& options,
+                     const ProgressFn& progress, double& density, uvl::Packing& packing) {
+    density = options.texelsPerUnit;
     if (density > 0.0) {
         std::atomic<bool> cancel{false};
         Result<uvl::Packing> packed = uvl::packCharts(charts, density, options, 4096, cancel);
@@ -233,27 +224,25 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
                              " texels per unit: " + packed.error(),
                          packed.errorKind()};
         packing = std::move(packed.value());
-    } else {
-        auto packed = packOnePage(charts, options, progress, 0.6, 0.95);
-        if (!packed)
-            return packed.takeError();
-        density = packed->first;
-        packing = std::move(packed->second);
+        return {};
     }
+    auto packed = packOnePage(charts, options, progress, 0.6, 0.95);
+    if (!packed)
+        return packed.takeError();
+    density = packed->first;
+    packing = std::move(packed->second);
+    return {};
+}
 
-    UvLayout layout;
-    layout.resolution = options.resolution;
-    layout.padding = options.padding;
-    layout.smallChartTexels = options.smallChartTexels;
-    layout.smallChartPadding =
-        std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
-    layout.texelsPerUnit = density;
+/** The layout's numbers and each triangle's chart and page; slot becomes each triangle's place
+ *  in its chart. */
+void assignCharts(const std::vector<Chart>& charts, const uvl::Packing& packing,
+                  std::size_t triangles, UvLayout& layout, std::vector<std::uint32_t>& slot) {
     layout.chartCount = std::uint32_t(charts.size());
     layout.pageCount = packing.pageCount;
     layout.chartPage.resize(charts.size());
-    const std::size_t triangles = mesh.triangleCount();
     layout.triangleChart.assign(triangles, kNone);
-    std::vector<std::uint32_t> slot(triangles, 0u); // a triangle's place in its chart
+    slot.assign(triangles, 0u);
     for (std::uint32_t c = 0; c < charts.size(); ++c) {
         layout.chartPage[c] = packing.placements[c].page;
         for (std::uint32_t k = 0; k < charts[c].triangles.size(); ++k) {
@@ -261,8 +250,12 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
             slot[charts[c].triangles[k]] = k;
         }
     }
+}
 
-    // One vertex per (input vertex, chart), numbered in order of first use.
+/** The laid-out mesh: one vertex per (input vertex, chart), numbered in order of first use. */
+void buildLayoutMesh(const Mesh& mesh, const std::vector<Chart>& charts,
+                     const uvl::Packing& packing, double density,
+                     const std::vector<std::uint32_t>& slot, UvLayout& layout) {
     Mesh& out = layout.mesh;
     out.materials = mesh.materials;
     out.textures = mesh.textures;
@@ -271,8 +264,8 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
     out.indices.resize(mesh.indices.size());
     std::unordered_map<std::uint64_t, std::uint32_t> copies;
     copies.reserve(mesh.vertexCount() * 5 / 4);
-    const double invResolution = 1.0 / double(options.resolution);
-    for (std::size_t t = 0; t < triangles; ++t) {
+    const double invResolution = 1.0 / double(layout.resolution);
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         const std::uint32_t c = layout.triangleChart[t];
         const Chart& chart = charts[c];
         for (int k = 0; k < 3; ++k) {
@@ -296,6 +289,43 @@ Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
         if (mesh.hasColors())
             out.colors.push_back(mesh.colors[v]);
     }
+}
+
+} // namespace
+
+Result<UvLayout> makeUvLayout(const Mesh& mesh, const UvLayoutOptions& options,
+                              const ProgressFn& progress) {
+    if (Status input = checkLayoutInput(mesh, options); !input)
+        return input.takeError();
+    if (!reportProgress(progress, 0.0))
+        return cancelled();
+
+    // Triangle order, materials and winding stay as they are; only vertices are copied.
+    const MeshTopology topology = buildMeshTopology(mesh);
+    const uvl::Surface surface = makeSurface(mesh, topology, options.threads);
+    std::vector<std::vector<std::uint32_t>> grown = uvl::growCharts(surface, options);
+    if (!reportProgress(progress, 0.1))
+        return cancelled();
+    Result<std::vector<Chart>> flattened = flattenAll(
+        surface, std::move(grown), options, expectedDensity(surface, options), progress, 0.1, 0.6);
+    if (!flattened)
+        return flattened.takeError();
+    const std::vector<Chart>& charts = flattened.value();
+    double density = 0.0;
+    uvl::Packing packing;
+    if (Status packed = packAllCharts(charts, options, progress, density, packing); !packed)
+        return packed.takeError();
+
+    UvLayout layout;
+    layout.resolution = options.resolution;
+    layout.padding = options.padding;
+    layout.smallChartTexels = options.smallChartTexels;
+    layout.smallChartPadding =
+        std::min(options.padding, 2 * uvl::smallChartRadius(options.padding));
+    layout.texelsPerUnit = density;
+    std::vector<std::uint32_t> slot; // a triangle's place in its chart
+    assignCharts(charts, packing, mesh.triangleCount(), layout, slot);
+    buildLayoutMesh(mesh, charts, packing, density, slot, layout);
     if (!reportProgress(progress, 1.0))
         return cancelled();
     return layout;

@@ -33,23 +33,16 @@ double weightedPercentile(std::vector<std::pair<double, double>> values, double 
     return values.back().first;
 }
 
-} // namespace
+/** Per triangle: its 3D area and its signed UV area in texels. */
+struct TriangleAreas {
+    std::vector<double> area3d, areaUv;
+};
 
-UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
-    UvLayoutMetrics m;
-    const Mesh& mesh = layout.mesh;
+TriangleAreas measureTriangleAreas(const Mesh& mesh, double res, unsigned threads) {
     const std::size_t n = mesh.triangleCount();
-    m.charts = layout.chartCount;
-    m.pages = layout.pageCount;
-    m.triangles = n;
-    m.vertices = mesh.vertexCount();
-    if (n == 0 || !mesh.hasUvs() || layout.resolution <= 0)
-        return m;
-    const double res = double(layout.resolution);
-    const double side = double(mesh.bounds().longestSide());
-    const double degenerate = 1e-12 * side * side;
-
-    std::vector<double> area3d(n), areaUv(n);
+    TriangleAreas a;
+    a.area3d.resize(n);
+    a.areaUv.resize(n);
     parallelRanges(int(n), threads, [&](int, int begin, int end) {
         for (int t = begin; t < end; ++t) {
             glm::dvec3 p[3];
@@ -59,11 +52,21 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
                 p[k] = glm::dvec3(mesh.positions[v]);
                 q[k] = glm::dvec2(mesh.uvs[v]) * res;
             }
-            area3d[std::size_t(t)] = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
-            areaUv[std::size_t(t)] = 0.5 * ((q[1].x - q[0].x) * (q[2].y - q[0].y) -
-                                            (q[1].y - q[0].y) * (q[2].x - q[0].x));
+            a.area3d[std::size_t(t)] = 0.5 * glm::length(glm::cross(p[1] - p[0], p[2] - p[0]));
+            a.areaUv[std::size_t(t)] = 0.5 * ((q[1].x - q[0].x) * (q[2].y - q[0].y) -
+                                              (q[1].y - q[0].y) * (q[2].x - q[0].x));
         }
     });
+    return a;
+}
+
+/**
+ * Stretch (UV area share over 3D area share, either way up) and texel density spread over the
+ * triangles that are not degenerate; flipped and collapsed ones counted.
+ */
+void measureStretchAndDensity(const TriangleAreas& a, double degenerate, UvLayoutMetrics& m) {
+    const std::vector<double>&area3d = a.area3d, &areaUv = a.areaUv;
+    const std::size_t n = area3d.size();
     double total3d = 0.0, totalUv = 0.0;
     for (std::size_t t = 0; t < n; ++t)
         if (area3d[t] > degenerate) {
@@ -96,8 +99,12 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
         m.stretchMax = std::max(m.stretchMax, v.first);
     const double lowDensity = weightedPercentile(density, 0.05);
     m.texelDensitySpread = lowDensity > 0.0 ? weightedPercentile(density, 0.95) / lowDensity : 0.0;
+}
 
-    // Coverage per page with the painting's own fill rule.
+/** Coverage per page with the painting's own fill rule: packing efficiency and overlaps. */
+void measureCoverage(const UvLayout& layout, UvLayoutMetrics& m) {
+    const Mesh& mesh = layout.mesh;
+    const std::size_t n = mesh.triangleCount();
     const std::uint32_t pages = std::max(layout.pageCount, 1u);
     const std::size_t pageTexels = std::size_t(layout.resolution) * std::size_t(layout.resolution);
     std::vector<std::uint8_t> count(pageTexels * pages, 0u);
@@ -128,8 +135,12 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
         m.overlappingTexels += c >= 2;
     }
     m.packingEfficiency = double(covered) / (double(pageTexels) * pages);
+}
 
-    // Seams: edges of the welded surface between triangles of different charts.
+/** Seams: edges of the welded surface between triangles of different charts. */
+void measureSeams(const UvLayout& layout, double side, UvLayoutMetrics& m) {
+    const Mesh& mesh = layout.mesh;
+    const std::size_t n = mesh.triangleCount();
     const MeshTopology topo = buildMeshTopology(mesh);
     for (std::size_t t = 0; t < n && t < layout.triangleChart.size(); ++t)
         for (int e = 0; e < 3; ++e) {
@@ -141,6 +152,26 @@ UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
             m.seamLength += double(glm::length(b - a));
         }
     m.seamLengthUnitCube = side > 0.0 ? m.seamLength / side : 0.0;
+}
+
+} // namespace
+
+UvLayoutMetrics measureUvLayout(const UvLayout& layout, unsigned threads) {
+    UvLayoutMetrics m;
+    const Mesh& mesh = layout.mesh;
+    const std::size_t n = mesh.triangleCount();
+    m.charts = layout.chartCount;
+    m.pages = layout.pageCount;
+    m.triangles = n;
+    m.vertices = mesh.vertexCount();
+    if (n == 0 || !mesh.hasUvs() || layout.resolution <= 0)
+        return m;
+    const double side = double(mesh.bounds().longestSide());
+    const double degenerate = 1e-12 * side * side;
+    measureStretchAndDensity(measureTriangleAreas(mesh, double(layout.resolution), threads),
+                             degenerate, m);
+    measureCoverage(layout, m);
+    measureSeams(layout, side, m);
     return m;
 }
 
