@@ -19,6 +19,48 @@ namespace core::detail::gltf {
 
 using Json = nlohmann::json;
 
+/** The accessor's sparse substitution over out (nc components per element). */
+template <typename T>
+bool GltfFlattener::applySparse(const tinygltf::Accessor& acc, const std::string& name,
+                                std::size_t nc, std::vector<T>& out) {
+    const std::uint64_t count = acc.count;
+    const std::uint64_t compSize = static_cast<std::uint64_t>(componentSize(acc.componentType));
+    const std::uint64_t elemSize = compSize * static_cast<std::uint64_t>(nc);
+    const auto& sp = acc.sparse;
+    const std::uint64_t n = static_cast<std::uint64_t>(std::max(sp.count, 0));
+    if (n == 0 || n > count)
+        return fail(name + " has an invalid sparse count " + str(n));
+    const int idxType = sp.indices.componentType;
+    if (idxType != kUByte && idxType != kUShort && idxType != kUInt)
+        return fail(name + " has sparse indices of an invalid component type");
+    const std::uint8_t *idxData = nullptr, *valData = nullptr;
+    std::uint64_t idxLen = 0, valLen = 0, end = 0;
+    const std::string sparseName = name + " (sparse)";
+    if (!viewBytes(sp.indices.bufferView, sparseName, idxData, idxLen) ||
+        !viewBytes(sp.values.bufferView, sparseName, valData, valLen))
+        return false;
+    const auto idxSize = static_cast<std::uint64_t>(componentSize(idxType));
+    const auto idxOffset = static_cast<std::uint64_t>(std::max(sp.indices.byteOffset, 0));
+    const auto valOffset = static_cast<std::uint64_t>(std::max(sp.values.byteOffset, 0));
+    if (addOverflows(idxOffset, n * idxSize, end) || end > idxLen)
+        return fail(name + " has sparse indices past the end of buffer view " +
+                    str(sp.indices.bufferView));
+    if (addOverflows(valOffset, n * elemSize, end) || end > valLen)
+        return fail(name + " has sparse values past the end of buffer view " +
+                    str(sp.values.bufferView));
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto target = static_cast<std::uint64_t>(
+            readComponent(idxData + idxOffset + i * idxSize, idxType, false));
+        if (target >= count)
+            return fail(name + " has a sparse index " + str(target) + " out of range");
+        const std::uint8_t* e = valData + valOffset + i * elemSize;
+        for (std::size_t c = 0; c < nc; ++c)
+            out[static_cast<std::size_t>(target) * nc + c] =
+                static_cast<T>(readComponent(e + c * compSize, acc.componentType, acc.normalized));
+    }
+    return true;
+}
+
 template <typename T>
 bool GltfFlattener::readAccessor(int accessorIndex, Semantic semantic, int& components,
                                  std::vector<T>& out) {
@@ -73,40 +115,8 @@ bool GltfFlattener::readAccessor(int accessorIndex, Semantic semantic, int& comp
         return fail(name + " (indices) has no buffer view");
     }
 
-    if (acc.sparse.isSparse) {
-        const auto& sp = acc.sparse;
-        const std::uint64_t n = static_cast<std::uint64_t>(std::max(sp.count, 0));
-        if (n == 0 || n > count)
-            return fail(name + " has an invalid sparse count " + str(n));
-        const int idxType = sp.indices.componentType;
-        if (idxType != kUByte && idxType != kUShort && idxType != kUInt)
-            return fail(name + " has sparse indices of an invalid component type");
-        const std::uint8_t *idxData = nullptr, *valData = nullptr;
-        std::uint64_t idxLen = 0, valLen = 0, end = 0;
-        const std::string sparseName = name + " (sparse)";
-        if (!viewBytes(sp.indices.bufferView, sparseName, idxData, idxLen) ||
-            !viewBytes(sp.values.bufferView, sparseName, valData, valLen))
-            return false;
-        const auto idxSize = static_cast<std::uint64_t>(componentSize(idxType));
-        const auto idxOffset = static_cast<std::uint64_t>(std::max(sp.indices.byteOffset, 0));
-        const auto valOffset = static_cast<std::uint64_t>(std::max(sp.values.byteOffset, 0));
-        if (addOverflows(idxOffset, n * idxSize, end) || end > idxLen)
-            return fail(name + " has sparse indices past the end of buffer view " +
-                        str(sp.indices.bufferView));
-        if (addOverflows(valOffset, n * elemSize, end) || end > valLen)
-            return fail(name + " has sparse values past the end of buffer view " +
-                        str(sp.values.bufferView));
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto target = static_cast<std::uint64_t>(
-                readComponent(idxData + idxOffset + i * idxSize, idxType, false));
-            if (target >= count)
-                return fail(name + " has a sparse index " + str(target) + " out of range");
-            const std::uint8_t* e = valData + valOffset + i * elemSize;
-            for (std::size_t c = 0; c < nc; ++c)
-                out[static_cast<std::size_t>(target) * nc + c] = static_cast<T>(
-                    readComponent(e + c * compSize, acc.componentType, acc.normalized));
-        }
-    }
+    if (acc.sparse.isSparse && !applySparse(acc, name, nc, out))
+        return false;
 
     if (semantic == Semantic::Position)
         for (T v : out)

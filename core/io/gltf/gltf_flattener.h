@@ -92,6 +92,9 @@ private:
     /** Float attributes or uint32 indices; normalized integers are converted (§3.11). */
     template <typename T>
     bool readAccessor(int accessorIndex, Semantic semantic, int& components, std::vector<T>& out);
+    template <typename T>
+    bool applySparse(const tinygltf::Accessor& acc, const std::string& name, std::size_t nc,
+                     std::vector<T>& out);
     bool addPrimitive(const GltfInstance& inst, std::size_t primIndex);
     /** What becomes of a primitive before anything of it is read. */
     enum class Screening { Read, Skip, Fail };
