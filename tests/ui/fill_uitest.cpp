@@ -8,7 +8,6 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
-#include <QElapsedTimer>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
@@ -17,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -92,13 +90,9 @@ protected:
         ASSERT_EQ(m_window->fillPanel()->mode(), mode);
     }
 
-    /** A left click at p; prints what it cost (the fill and the GPU upload on the GUI thread). */
+    /** A left click at p. */
     void click(QPoint p) {
-        QElapsedTimer clock;
-        clock.start();
         QTest::mouseClick(viewport(), Qt::LeftButton, Qt::NoModifier, p);
-        std::printf("[ fill    ] %s: %.1f ms\n", core::fillModeName(m_window->fillPanel()->mode()),
-                    double(clock.nsecsElapsed()) / 1e6);
         QEvent leave(QEvent::Leave); // the brush outline goes: pictures show the model only
         QApplication::sendEvent(viewport(), &leave);
         QApplication::processEvents();
