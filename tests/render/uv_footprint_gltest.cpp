@@ -169,8 +169,8 @@ TEST_F(UvFootprintGlTest, DabOnTheCylinderHeadPaintsTheTexelsUnderTheBrushDisc) 
     const glm::vec2 centre = glm::vec2(*at) + 0.5f;
     const double side = double(doc->mesh().bounds().longestSide());
 
-    // Vertex colours first, as the issue reported them: the same dab, then one on the nearest
-    // corner of the face's triangle, where the colour of that vertex is spread over every
+    // Vertex colours first, where a dab on a large face smears: the same dab, then one on the
+    // nearest corner of the face's triangle, where the colour of that vertex is spread over every
     // triangle around it.
     core::PaintTargetOptions options;
     options.kind = core::PaintTargetKind::VertexColors;

@@ -226,7 +226,7 @@ protected:
     QTemporaryDir m_dir;
 };
 
-// Item 4: a layer-aware stroke and the pop-ups it caused are one undo step, and undoing back to
+// A layer-aware stroke and the pop-ups it caused are one undo step, and undoing back to
 // the saved state clears the unsaved mark.
 TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
     openAndBuild(QStringLiteral("builtin:trefoil"));
@@ -298,7 +298,7 @@ TEST_F(FirstSessionTest, AStrokeAndItsPopUpsAreOneUndoStep) {
     EXPECT_FALSE(m_window->isWindowModified());
 }
 
-// Item 1: Export proposes another name and never replaces the open project.
+// Export proposes another name and never replaces the open project.
 TEST_F(FirstSessionTest, ExportNeverReplacesTheOpenProject) {
     openAndBuild(QStringLiteral("builtin:trefoil"));
     const QString project = path(QStringLiteral("p.glb"));
@@ -353,7 +353,7 @@ TEST_F(FirstSessionTest, ExportNeverReplacesTheOpenProject) {
     EXPECT_EQ(controller->filePath(), QFileInfo(project).absoluteFilePath());
 }
 
-// Item 2: Shift+[ and Shift+] as an X keyboard sends them (keys { and } with Shift).
+// Shift+[ and Shift+] as an X keyboard sends them (keys { and } with Shift).
 TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
     viewport()->setFocus();
     ASSERT_FLOAT_EQ(document().brush().hardness, 0.5f);
@@ -372,7 +372,7 @@ TEST_F(FirstSessionTest, ShiftBracketsFromAKeyboardChangeTheHardness) {
     EXPECT_FLOAT_EQ(document().brush().hardness, 0.4f);
 }
 
-// Item 3: after Enter or Escape in a tool bar or panel field, the tool keys work again.
+// After Enter or Escape in a tool bar or panel field, the tool keys work again.
 TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
     openAndBuild(QStringLiteral("builtin:trefoil"));
     auto* opacity = m_window->brushToolBar()->findChild<QSpinBox*>(QStringLiteral("brushOpacity"));
@@ -437,7 +437,7 @@ TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
     EXPECT_EQ(m_window->tool(), ui::Tool::Eyedropper);
 }
 
-// Item 5: a recovered document keeps its own name and says it was recovered.
+// A recovered document keeps its own name and says it was recovered.
 TEST_F(FirstSessionTest, RecoveredWorkKeepsItsNameAndSaysSo) {
     const QString folder = ui::ProjectController::recoveryFolder();
     ASSERT_TRUE(QDir().mkpath(folder));
@@ -492,7 +492,7 @@ TEST_F(FirstSessionTest, RecoveredWorkKeepsItsNameAndSaysSo) {
     EXPECT_FALSE(modelInfo().contains(QStringLiteral("autosave"))) << modelInfo().toStdString();
 }
 
-// Item 6: load warnings are shown whole, over the viewport, until dismissed.
+// Load warnings are shown whole, over the viewport, until dismissed.
 TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
     const QString file = path(QStringLiteral("warnings.obj"));
     ASSERT_TRUE(writeFile(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 1e39 0 0\nvn 0 0 1\n"
@@ -523,7 +523,7 @@ TEST_F(FirstSessionTest, LoadWarningsStayWholeUntilDismissed) {
     EXPECT_FALSE(messageBar()->isVisible());
 }
 
-// Item 7: errors name the file and say what is wrong in the user's words, no raw bytes.
+// Errors name the file and say what is wrong in the user's words, no raw bytes.
 TEST_F(FirstSessionTest, OpenErrorsAreInTheUsersWords) {
     std::mt19937 random(15);
     QByteArray noise(4096, '\0');
@@ -562,7 +562,7 @@ TEST_F(FirstSessionTest, OpenErrorsAreInTheUsersWords) {
     }
 }
 
-// Item 8: a model without UVs says so, and the Paint into box says why textures are off.
+// A model without UVs says so, and the Paint into box says why textures are off.
 TEST_F(FirstSessionTest, ModelWithoutUvsSaysItGetsAnAutomaticUvLayout) {
     const QString file = path(QStringLiteral("tetra.obj"));
     ASSERT_TRUE(writeFile(file, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
@@ -589,7 +589,7 @@ TEST_F(FirstSessionTest, ModelWithoutUvsSaysItGetsAnAutomaticUvLayout) {
     EXPECT_FALSE(messageBar()->isVisible());
 }
 
-// Item 11: View ▸ Panels names every panel and tool bar apart.
+// View ▸ Panels names every panel and tool bar apart.
 TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
     auto* panels = m_window->findChild<QMenu*>(QStringLiteral("panelsMenu"));
     ASSERT_NE(panels, nullptr);
@@ -606,7 +606,7 @@ TEST_F(FirstSessionTest, PanelsMenuNamesEveryEntryApart) {
               QStringLiteral("Brush"));
 }
 
-// Item 12: every tool shows its own cursor; the brush outline only where it means something.
+// Every tool shows its own cursor; the brush outline only where it means something.
 TEST_F(FirstSessionTest, EveryToolShowsItsOwnCursor) {
     openAndBuild(QStringLiteral("builtin:trefoil"));
     viewport()->setFocus();
@@ -652,8 +652,8 @@ TEST_F(FirstSessionTest, EveryToolShowsItsOwnCursor) {
     EXPECT_TRUE(choose('b').outline);
 }
 
-// Found while trying a first session on a small screen: the first window was 1280 × 800 on
-// any screen, so on a 1000 × 700 one its right column and status bar were off screen.
+// The first window fits the screen: a fixed 1280 × 800 would put the right column and the
+// status bar off a 1000 × 700 screen.
 TEST(FirstStart, TheWindowFitsTheScreen) {
     QSettings().clear(); // no saved geometry: a first start
     ui::MainWindow window;

@@ -20,7 +20,7 @@ namespace core {
 
 struct DepthLayers;
 
-/** What a flood fill covers (the three fill modes). */
+/** What a flood fill covers: a segmented region, a connected surface, or similar colour. */
 enum class FillMode : std::uint8_t {
     /** The segmented region under the cursor in this view, its hidden part included. */
     Region,
