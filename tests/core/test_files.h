@@ -13,7 +13,10 @@
 
 namespace core_test {
 
-/** A fresh folder under the system temp folder, removed with everything in it. */
+/**
+ * A fresh folder under the system temp folder, removed with everything in it (made writable
+ * first, for tests that take the write permission away).
+ */
 class TempDir {
 public:
     explicit TempDir(const std::string& prefix = "layerpaint-test") {
@@ -24,8 +27,11 @@ public:
     }
     ~TempDir() {
         std::error_code ec;
-        if (!m_path.empty())
-            std::filesystem::remove_all(m_path, ec);
+        if (m_path.empty())
+            return;
+        std::filesystem::permissions(m_path, std::filesystem::perms::owner_all,
+                                     std::filesystem::perm_options::add, ec);
+        std::filesystem::remove_all(m_path, ec);
     }
     TempDir(const TempDir&) = delete;
     TempDir& operator=(const TempDir&) = delete;
@@ -41,7 +47,10 @@ inline std::string readFile(const std::filesystem::path& path) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+/** Writes bytes to path, making its folder first if need be. */
 inline void writeFile(const std::filesystem::path& path, const std::string& bytes) {
+    std::error_code ec;
+    std::filesystem::create_directories(path.parent_path(), ec);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }

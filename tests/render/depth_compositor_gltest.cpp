@@ -35,21 +35,19 @@ using core::kNone;
 
 constexpr std::uint32_t kUnranked = 0xfffffffeu;
 
-class DepthCompositorGlTest : public render_test::GlTest {
+class DepthCompositorGlTest : public render_test::GlCaptureTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(s_context);
+        ASSERT_NO_FATAL_FAILURE(GlCaptureTest::SetUp());
         core::Status status = m_compositor.initialize();
-        ASSERT_TRUE(status) << status.error();
-        status = m_capturer.initialize();
         ASSERT_TRUE(status) << status.error();
         status = m_renderer.initialize();
         ASSERT_TRUE(status) << status.error();
     }
     void TearDown() override {
         m_compositor.release();
-        m_capturer.depthCapture().release();
         m_renderer.release();
+        GlCaptureTest::TearDown();
     }
 
     /** build_layers through the GL capture, then uploads mesh and layers to the compositor. */
@@ -70,11 +68,8 @@ protected:
 
     core::Image composite(const core::DepthLayers& layers,
                           const render::CompositeOptions& options) {
-        render::OffscreenTarget target;
-        EXPECT_TRUE(target.create(layers.stack.width, layers.stack.height));
-        target.bind();
-        m_compositor.draw(options);
-        return target.readColor();
+        return render_test::drawComposite(m_compositor, layers.stack.width, layers.stack.height,
+                                          options);
     }
 
     core::Image plain(const core::View& view, const glm::vec4& background) {
@@ -88,7 +83,6 @@ protected:
     }
 
     render::DepthCompositor m_compositor;
-    render::GlDepthCapturer m_capturer;
     render::MeshRenderer m_renderer;
 };
 

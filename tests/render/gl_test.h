@@ -7,7 +7,10 @@
 
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
+#include "render/depth_compositor.h"
 #include "render/gl_context.h"
+#include "render/gl_depth_capturer.h"
+#include "render/offscreen_target.h"
 
 namespace render_test {
 
@@ -23,6 +26,29 @@ protected:
 
     inline static std::unique_ptr<render::HeadlessContext> s_context;
 };
+
+/** A GlTest that captures depth layers on the GPU: m_capturer is ready in each test. */
+class GlCaptureTest : public GlTest {
+protected:
+    void SetUp() override {
+        ASSERT_TRUE(s_context);
+        const core::Status status = m_capturer.initialize();
+        ASSERT_TRUE(status) << status.error();
+    }
+    void TearDown() override { m_capturer.depthCapture().release(); }
+
+    render::GlDepthCapturer m_capturer;
+};
+
+/** What compositor draws with options into a fresh width × height target, read back. */
+inline core::Image drawComposite(render::DepthCompositor& compositor, int width, int height,
+                                 const render::CompositeOptions& options) {
+    render::OffscreenTarget target;
+    EXPECT_TRUE(target.create(width, height));
+    target.bind();
+    compositor.draw(options);
+    return target.readColor();
+}
 
 /** The mesh framed, orbited by yaw and pitch; zoom < 1 moves closer than framed. */
 inline core::View orbitView(const core::Mesh& mesh, float yaw, float pitch, int width, int height,

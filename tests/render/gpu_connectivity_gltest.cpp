@@ -23,10 +23,14 @@
 #include "render/gl_context.h"
 #include "render/gpu_connectivity.h"
 #include "render/software_gl.h"
+#include "tests/core/captured_scenes.h"
+#include "tests/core/test_scenes.h"
 
 namespace gpu_connectivity_gltest {
 
 using core::ConnectionTest;
+using core_test::addGrid;
+using core_test::frontView;
 
 class GpuConnectivityGlTest : public render_test::GlTest {
 protected:
@@ -40,23 +44,11 @@ protected:
     render::GpuConnectivity m_gpu;
 };
 
-struct Scene {
-    std::string name;
-    core::Mesh mesh;
-    core::MeshTopology topology;
-    core::View view;
-    core::DepthStack stack;
-    core::SurfaceGeometry geometry;
-};
+using Scene = core_test::CapturedScene;
 
 Scene makeScene(std::string name, core::Mesh mesh, const core::View& view, bool cull = true) {
-    Scene s;
+    Scene s = core_test::captureScene(std::move(mesh), view, cull);
     s.name = std::move(name);
-    s.mesh = std::move(mesh);
-    s.topology = core::buildMeshTopology(s.mesh);
-    s.view = view;
-    s.stack = core::captureDepthLayersCpu(s.mesh, view, {cull, 2});
-    s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, view);
     return s;
 }
 
@@ -149,34 +141,6 @@ void expectNontrivial(const Scene& s, std::uint32_t minLayers) {
     EXPECT_GT(std::size_t(linked), cpu.links.size() / 2) << s.name;
 }
 
-/** An n × n grid quad spanning corners o, o + u, o + v (counter-clockwise from u × v). */
-void addGrid(core::Mesh& mesh, glm::vec3 o, glm::vec3 u, glm::vec3 v, int n) {
-    const auto base = std::uint32_t(mesh.positions.size());
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-            mesh.positions.push_back(o + u * (float(i) / float(n)) + v * (float(j) / float(n)));
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1,
-                                d = a + std::uint32_t(n + 1), e = d + 1;
-            mesh.indices.insert(mesh.indices.end(), {a, b, e, a, e, d});
-        }
-}
-
-void finish(core::Mesh& mesh) {
-    mesh.materials = {core::Material{}};
-    mesh.triangleMaterial.assign(mesh.triangleCount(), 0);
-    mesh.computeNormals();
-}
-
-core::View frontView(int width, int height, bool orthographic) {
-    core::Camera camera;
-    camera.sceneRadius = 1.0f;
-    camera.distance = 2.0f;
-    camera.orthographic = orthographic;
-    return camera.view(width, height);
-}
-
 // ---------------------------------------------------------------------------------------------
 
 TEST_F(GpuConnectivityGlTest, BuiltinModelsMatchReferenceFromSeveralViews) {
@@ -265,7 +229,7 @@ TEST_F(GpuConnectivityGlTest, SyntheticScenesMatchReference) {
                 glm::rotate(glm::mat4(1.0f), glm::radians(degrees), glm::vec3(0, 1, 0));
             const glm::vec3 u = glm::vec3(turn * glm::vec4(1, 0, 0, 0)), v(0, 1, 0);
             addGrid(mesh, -0.5f * u - 0.5f * v, u, v, 8);
-            finish(mesh);
+            core_test::finishGrids(mesh);
             expectSameAsReference(
                 m_gpu,
                 makeScene("plane " + std::to_string(degrees) + (orthographic ? " ortho" : " persp"),
@@ -275,7 +239,7 @@ TEST_F(GpuConnectivityGlTest, SyntheticScenesMatchReference) {
         core::Mesh mesh;
         addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
         addGrid(mesh, {-0.2f, -0.5f, -0.0005f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
-        finish(mesh);
+        core_test::finishGrids(mesh);
         expectSameAsReference(
             m_gpu, makeScene("parallel parts", std::move(mesh), frontView(200, 200, false)));
     }
@@ -283,7 +247,7 @@ TEST_F(GpuConnectivityGlTest, SyntheticScenesMatchReference) {
         core::Mesh mesh;
         addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.5f, 0, 0}, {0, 1.0f, 0}, 3);
         addGrid(mesh, {0.0f, -0.4f, 0.0f}, {0.5f, 0, 0}, {0, 0.8f, 0}, 2);
-        finish(mesh);
+        core_test::finishGrids(mesh);
         expectSameAsReference(
             m_gpu, makeScene("touching parts", std::move(mesh), frontView(160, 160, true)));
     }

@@ -41,28 +41,22 @@ core::Mesh texturedSquare() {
     return mesh;
 }
 
-class MaterialChannelsGlTest : public render_test::GlTest {
+class MaterialChannelsGlTest : public render_test::GlCaptureTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(s_context);
-        core::Status status = m_capturer.initialize();
-        ASSERT_TRUE(status) << status.error();
-        status = m_compositor.initialize();
+        ASSERT_NO_FATAL_FAILURE(GlCaptureTest::SetUp());
+        const core::Status status = m_compositor.initialize();
         ASSERT_TRUE(status) << status.error();
     }
     void TearDown() override {
         m_compositor.release();
-        m_capturer.depthCapture().release();
+        GlCaptureTest::TearDown();
     }
 
     core::Image draw(render::MaterialChannel channel, const std::string& name) {
-        render::OffscreenTarget target;
-        EXPECT_TRUE(target.create(kWidth, kHeight));
-        target.bind();
         render::CompositeOptions options;
         options.channel = channel;
-        m_compositor.draw(options);
-        core::Image image = target.readColor();
+        core::Image image = render_test::drawComposite(m_compositor, kWidth, kHeight, options);
         if (const char* dir = std::getenv("LAYERPAINT_TEST_IMAGES"); dir && *dir) {
             EXPECT_TRUE(core::writeImage(std::string(dir) + "/" + name + ".png", image.width,
                                          image.height, 4, core::PixelType::UInt8,
@@ -81,7 +75,6 @@ protected:
         doc.endStroke();
     }
 
-    render::GlDepthCapturer m_capturer;
     render::DepthCompositor m_compositor;
 };
 

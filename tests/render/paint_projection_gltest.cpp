@@ -18,20 +18,16 @@
 #include "core/model/camera.h"
 #include "core/paint/targets/paint_target.h"
 #include "render/gl_depth_capturer.h"
+#include "tests/core/captured_scenes.h"
 
 namespace paint_projection_gltest {
 
-using core::kNone;
-
-class PaintProjectionGlTest : public render_test::GlTest {
+class PaintProjectionGlTest : public render_test::GlCaptureTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(s_context);
-        const core::Status status = m_capturer.initialize();
-        ASSERT_TRUE(status) << status.error();
+        ASSERT_NO_FATAL_FAILURE(GlCaptureTest::SetUp());
         s_trefoil = s_trefoil ? s_trefoil : std::make_shared<core::Mesh>(core::makeTrefoil());
     }
-    void TearDown() override { m_capturer.depthCapture().release(); }
 
     /** The trefoil, as the headless tool shows it by default, its layers built at size × scale. */
     std::unique_ptr<core::Document> open(int width, int height, int scale) {
@@ -61,7 +57,6 @@ protected:
         return red;
     }
 
-    render::GlDepthCapturer m_capturer;
     inline static std::shared_ptr<core::Mesh> s_trefoil;
 };
 
@@ -165,13 +160,7 @@ TEST_F(PaintProjectionGlTest, PaintingTheSecondLayerShownAloneLeavesTheFrontStra
         return std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
     };
     // Crossing pixels: a front strand on layer 1 well in front of a strand on layer 2.
-    const auto crossing = [&](int x, int y) {
-        if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-            return false;
-        const std::uint32_t front = stack.fragment(index(x, y), 1);
-        const std::uint32_t back = stack.fragment(index(x, y), 2);
-        return front != kNone && back != kNone && stack.depth[back] - stack.depth[front] > 0.3f;
-    };
+    const auto crossing = [&](int x, int y) { return core_test::isCrossing(stack, x, y); };
     // A stroke of 8 px down the middle of a crossing, wholly inside it.
     std::optional<glm::ivec2> start;
     for (int y = 0; y < stack.height && !start; ++y)

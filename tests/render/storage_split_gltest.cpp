@@ -59,21 +59,19 @@ std::vector<Scene> scenes() {
     return out;
 }
 
-class StorageSplitGlTest : public render_test::GlTest {
+class StorageSplitGlTest : public render_test::GlCaptureTest {
 protected:
     void SetUp() override {
-        ASSERT_TRUE(s_context);
+        ASSERT_NO_FATAL_FAILURE(GlCaptureTest::SetUp());
         for (render::DepthCompositor* compositor : {&m_whole, &m_split}) {
             const core::Status status = compositor->initialize();
             ASSERT_TRUE(status) << status.error();
         }
-        const core::Status status = m_capturer.initialize();
-        ASSERT_TRUE(status) << status.error();
     }
     void TearDown() override {
         m_whole.release();
         m_split.release();
-        m_capturer.depthCapture().release();
+        GlCaptureTest::TearDown();
     }
 
     core::DepthLayers build(const core::Mesh& mesh, const core::View& view) {
@@ -86,16 +84,12 @@ protected:
 
     static core::Image draw(render::DepthCompositor& compositor, const core::DepthLayers& layers,
                             const render::CompositeOptions& options) {
-        render::OffscreenTarget target;
-        EXPECT_TRUE(target.create(layers.stack.width, layers.stack.height));
-        target.bind();
-        compositor.draw(options);
-        return target.readColor();
+        return render_test::drawComposite(compositor, layers.stack.width, layers.stack.height,
+                                          options);
     }
 
     render::DepthCompositor m_whole;
     render::DepthCompositor m_split;
-    render::GlDepthCapturer m_capturer;
 };
 
 std::size_t differingBytes(const core::Image& a, const core::Image& b) {

@@ -18,30 +18,16 @@
 
 namespace stroke_line_gltest {
 
-using core_test::addQuad;
 using core_test::pixelView;
 
 constexpr int kWidth = 96, kHeight = 64;
 
-class StrokeLineGlTest : public render_test::GlTest {
+class StrokeLineGlTest : public render_test::GlCaptureTest {
 protected:
-    void SetUp() override {
-        ASSERT_TRUE(s_context);
-        const core::Status status = m_capturer.initialize();
-        ASSERT_TRUE(status) << status.error();
-    }
-    void TearDown() override { m_capturer.depthCapture().release(); }
-
-    /**
-     * A back quad (depth 8, u 0..0.5) whose middle a front quad (depth 4, u 0.5..1) covers:
-     * under x 36..92, y 16..48 the back quad is depth layer 2.
-     */
+    /** core_test::overlappingQuads() in a document, a 128² texture target, layers built. */
     std::unique_ptr<core::Document> open() {
-        core::Mesh mesh;
-        addQuad(mesh, {{4.0f, 8.0f}, {64.0f, 56.0f}, 8.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 4});
-        addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
         auto doc = std::make_unique<core::Document>();
-        doc->setMesh(std::move(mesh), "two quads");
+        doc->setMesh(core_test::overlappingQuads(), "two quads");
         core::PaintTargetOptions options;
         options.resolution = 128;
         EXPECT_TRUE(doc->setPaintTarget(options).ok());
@@ -57,19 +43,9 @@ protected:
 
     /** The texels of the front quad's half of the page (clear of the seam padding). */
     static std::vector<std::uint8_t> frontHalf(const core::Document& doc) {
-        const core::Image& page =
-            dynamic_cast<const core::TextureTarget&>(*doc.currentPaintTarget()).page(0);
-        std::vector<std::uint8_t> out;
-        for (int y = 0; y < page.height; ++y)
-            for (int x = page.width / 2 + 4; x < page.width; ++x)
-                for (int c = 0; c < 4; ++c)
-                    out.push_back(
-                        page.rgba[4 * (std::size_t(y) * std::size_t(page.width) + std::size_t(x)) +
-                                  std::size_t(c)]);
-        return out;
+        return core_test::frontHalfTexels(
+            dynamic_cast<const core::TextureTarget&>(*doc.currentPaintTarget()).page(0));
     }
-
-    render::GlDepthCapturer m_capturer;
 };
 
 std::size_t pixelOf(glm::vec2 p) {

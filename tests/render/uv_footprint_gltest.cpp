@@ -56,14 +56,13 @@ Plane trianglePlane(const core::Mesh& mesh, std::uint32_t t) {
     return p;
 }
 
-class UvFootprintGlTest : public render_test::GlTest {
+class UvFootprintGlTest : public render_test::GlCaptureTest {
 protected:
     void SetUp() override {
         ASSERT_TRUE(s_context);
         if (!fs::exists(enginePath()))
             GTEST_SKIP() << "assimp test models not installed: " << enginePath();
-        const core::Status status = m_capturer.initialize();
-        ASSERT_TRUE(status) << status.error();
+        ASSERT_NO_FATAL_FAILURE(GlCaptureTest::SetUp());
         if (!s_engine) {
             core::Result<core::Mesh> mesh = core::loadMesh(enginePath().string());
             ASSERT_TRUE(mesh.ok()) << mesh.error();
@@ -71,8 +70,6 @@ protected:
             s_engine = std::make_shared<core::Mesh>(std::move(mesh).value());
         }
     }
-    void TearDown() override { m_capturer.depthCapture().release(); }
-
     std::unique_ptr<core::Document> open(float yaw, float pitch) {
         auto doc = std::make_unique<core::Document>();
         doc->setMesh(*s_engine, "engine");
@@ -146,7 +143,6 @@ protected:
         doc.endStroke();
     }
 
-    render::GlDepthCapturer m_capturer;
     core::View m_view;
     inline static std::shared_ptr<core::Mesh> s_engine;
 };

@@ -20,57 +20,17 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 #include "core/regions/segmentation.h"
+#include "tests/core/captured_scenes.h"
+#include "tests/core/test_scenes.h"
 
 namespace connectivity_test {
 
 using core::ConnectionTest;
 
-/** Appends an n × n grid quad spanning corners o, o + u, o + v (counter-clockwise from u × v). */
-void addGrid(core::Mesh& mesh, glm::vec3 o, glm::vec3 u, glm::vec3 v, int n) {
-    const auto base = std::uint32_t(mesh.positions.size());
-    for (int j = 0; j <= n; ++j)
-        for (int i = 0; i <= n; ++i)
-            mesh.positions.push_back(o + u * (float(i) / float(n)) + v * (float(j) / float(n)));
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const std::uint32_t a = base + std::uint32_t(j * (n + 1) + i), b = a + 1,
-                                d = a + std::uint32_t(n + 1), e = d + 1;
-            mesh.indices.insert(mesh.indices.end(), {a, b, e, a, e, d});
-        }
-}
-
-void finish(core::Mesh& mesh) {
-    mesh.materials = {core::Material{}};
-    mesh.triangleMaterial.assign(mesh.triangleCount(), 0);
-    mesh.computeNormals();
-}
-
-struct Scene {
-    core::Mesh mesh;
-    core::MeshTopology topology;
-    core::View view;
-    core::DepthStack stack;
-    core::SurfaceGeometry geometry;
-};
-
-Scene captureScene(core::Mesh mesh, const core::View& view, bool cull = true) {
-    Scene s;
-    s.mesh = std::move(mesh);
-    s.topology = core::buildMeshTopology(s.mesh);
-    s.view = view;
-    s.stack = core::captureDepthLayersCpu(s.mesh, view, {cull, 2});
-    s.geometry = core::makeSurfaceGeometry(s.mesh, s.topology, view);
-    return s;
-}
-
-/** A view from +Z at distance 2 looking at the origin, 45° vertical field of view. */
-core::View frontView(int w, int h, bool ortho = false) {
-    core::Camera camera;
-    camera.sceneRadius = 1.0f;
-    camera.distance = 2.0f;
-    camera.orthographic = ortho;
-    return camera.view(w, h);
-}
+using core_test::addGrid;
+using core_test::captureScene;
+using core_test::frontView;
+using Scene = core_test::CapturedScene;
 
 struct Result {
     core::Connectivity conn;
@@ -98,7 +58,7 @@ core::Mesh tiltedPlane(float degrees) {
     const glm::vec3 u = glm::vec3(turn * glm::vec4(1, 0, 0, 0));
     const glm::vec3 v(0, 1, 0);
     addGrid(mesh, -0.5f * u - 0.5f * v, u, v, 8);
-    finish(mesh);
+    core_test::finishGrids(mesh);
     return mesh;
 }
 
@@ -136,7 +96,7 @@ TEST(Connectivity, ParallelPartsCloserThanTheThresholdStayApart) {
     core::Mesh mesh;
     addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
     addGrid(mesh, {-0.2f, -0.5f, -0.0005f}, {0.7f, 0, 0}, {0, 1.0f, 0}, 4);
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const Scene s = captureScene(std::move(mesh), frontView(200, 200));
     ASSERT_EQ(s.topology.componentCount, 2u);
     ASSERT_EQ(s.stack.maxLayers(), 2u);
@@ -154,7 +114,7 @@ TEST(Connectivity, TouchingPartsInOnePlaneJoin) {
     core::Mesh mesh;
     addGrid(mesh, {-0.5f, -0.5f, 0.0f}, {0.5f, 0, 0}, {0, 1.0f, 0}, 3);
     addGrid(mesh, {0.0f, -0.4f, 0.0f}, {0.5f, 0, 0}, {0, 0.8f, 0}, 2);
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const Scene s = captureScene(std::move(mesh), frontView(160, 160));
     ASSERT_EQ(s.topology.componentCount, 2u);
     const Result surface = run(s, ConnectionTest::Surface);
@@ -466,7 +426,7 @@ TEST(MeshTopology, WeldsSeamDuplicatesAndFindsComponents) {
     mesh.positions.push_back({4.0000001f, 0, 0});
     mesh.positions.push_back({4, 1, 0});
     mesh.indices.insert(mesh.indices.end(), {6, 7, 8, 9, 10, 8});
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const core::MeshTopology topo = core::buildMeshTopology(mesh);
     EXPECT_EQ(topo.weldedVertexCount, 8u);
     EXPECT_EQ(topo.weldedVertex[3], topo.weldedVertex[0]);
@@ -484,7 +444,7 @@ TEST(MeshTopology, DistinctPointsStayApart) {
     core::Mesh mesh;
     addGrid(mesh, {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2);
     addGrid(mesh, {0, 0, 0.0005f}, {1, 0, 0}, {0, 1, 0}, 2);
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const core::MeshTopology topo = core::buildMeshTopology(mesh);
     EXPECT_EQ(topo.weldedVertexCount, 18u);
     EXPECT_EQ(topo.componentCount, 2u);
@@ -504,7 +464,7 @@ TEST(MeshTopology, TrefoilIsOneClosedComponent) {
 TEST(CpuCapture, CoversEachPixelOfASplitQuadOnce) {
     core::Mesh mesh;
     addGrid(mesh, {-0.6f, -0.45f, 0.0f}, {1.2f, 0, 0}, {0, 0.9f, 0}, 5);
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const core::View view = frontView(97, 61, true);
     const core::DepthStack stack = core::captureDepthLayersCpu(mesh, view, {true, 3});
     ASSERT_EQ(stack.offsets.size(), stack.pixelCount() + 1);
@@ -527,7 +487,7 @@ TEST(CpuCapture, CoversEachPixelOfASplitQuadOnce) {
 TEST(CpuCapture, CullsBackFacesUnlessTwoSided) {
     core::Mesh mesh;
     addGrid(mesh, {0.5f, -0.5f, 0.0f}, {-1.0f, 0, 0}, {0, 1.0f, 0}, 1); // faces -Z
-    finish(mesh);
+    core_test::finishGrids(mesh);
     const core::View view = frontView(40, 40);
     EXPECT_EQ(core::captureDepthLayersCpu(mesh, view, {true, 1}).fragmentCount(), 0u);
     EXPECT_GT(core::captureDepthLayersCpu(mesh, view, {false, 1}).fragmentCount(), 0u);

@@ -13,9 +13,7 @@
 namespace document_order_test {
 
 using core::kNone;
-using core_test::addQuad;
 using core_test::pixelView;
-using core_test::Quad;
 
 constexpr int kWidth = 96, kHeight = 64;
 
@@ -31,10 +29,7 @@ struct Scene {
     core::View view = pixelView(kWidth, kHeight);
 
     Scene() {
-        core::Mesh mesh;
-        addQuad(mesh, {{4.0f, 8.0f}, {64.0f, 56.0f}, 8.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 4});
-        addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
-        doc.setMesh(std::move(mesh), "two quads");
+        doc.setMesh(core_test::overlappingQuads(), "two quads");
         capturer.setMesh(doc.mesh());
         core::DepthLayerOptions options;
         doc.setDepthLayerOptions(options);

@@ -12,6 +12,7 @@
 #include "core/document/script.h"
 #include "core/model/builtin_models.h"
 #include "core/paint/targets/layout_target.h"
+#include "tests/core/script_host.h"
 #include "tests/core/test_scenes.h"
 
 namespace layout_target_test {
@@ -144,20 +145,11 @@ TEST(LayoutTarget, SameLayoutEveryTimeAndAdoptedOnlyForItsMesh) {
     EXPECT_TRUE(doc.paintedMesh().hasUvs());
 }
 
-class Host final : public core::ScriptHost {
-public:
-    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
-        capturer.setMesh(doc.mesh());
-        return doc.buildDepthLayers(capturer, view);
-    }
-    core::CpuDepthCapturer capturer;
-};
-
 TEST(LayoutTarget, ScriptOperationSetTargetTextureMakesTheLayout) {
     core::Document doc;
     doc.setMesh(coarseBox(), "box");
     ASSERT_NE(doc.paintTarget(), nullptr); // vertex colours, the target the script replaces
-    Host host;
+    core_test::CpuScriptHost host;
     core::ScriptRunner runner(doc, host, pixelView(80, 60));
     const core::Status status =
         runner.run(nlohmann::json{{"op", "set-target"}, {"kind", "texture"}, {"resolution", 512}});

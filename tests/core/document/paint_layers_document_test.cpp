@@ -13,6 +13,7 @@
 #include "core/document/document.h"
 #include "core/paint/paint_layers/paint_layers.h"
 #include "core/paint/targets/paint_target.h"
+#include "tests/core/paint_layers_snapshot.h"
 #include "tests/core/test_scenes.h"
 
 namespace paint_layers_document_test {
@@ -29,63 +30,29 @@ core::Mesh quad() {
     return mesh;
 }
 
-/** Everything a layer operation or stroke can change: the stack, selection and composite. */
-struct Snapshot {
-    std::vector<std::uint64_t> ids;
-    std::vector<core::PaintLayerSettings> settings;
-    std::vector<std::vector<std::uint8_t>> planes; // every tile of every plane, in order
-    core::PaintSelection selection;
-    std::vector<std::uint8_t> base, color, mr;
-
-    friend bool operator==(const Snapshot&, const Snapshot&) = default;
-};
-
-std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
-    std::vector<std::uint8_t> out;
-    if (!plane)
-        return out;
-    for (const core::TileKey key : plane->writtenTiles()) {
-        out.push_back(std::uint8_t(key.tile));
-        const std::uint8_t* t = plane->tile(key.page, key.tile);
-        out.insert(out.end(), t, t + plane->tileBytes(key));
-    }
-    return out;
-}
-
-Snapshot snapshot(const core::TextureTarget& target) {
-    Snapshot s;
-    const core::PaintLayerStack& stack = target.paintLayerStack();
-    for (std::size_t i = 0; i < stack.size(); ++i) {
-        const core::PaintLayer& layer = stack.layer(i);
-        s.ids.push_back(layer.id);
-        s.settings.push_back(layer.settings);
-        for (const auto& plane : layer.channels)
-            s.planes.push_back(planeBytes(plane.get()));
-        s.planes.push_back(layer.mask ? planeBytes(layer.mask.get())
-                                      : std::vector<std::uint8_t>{42});
-    }
-    s.selection = target.selection();
-    s.base = target.basePixels(0);
-    s.color = target.page(0).rgba;
-    s.mr = target.metallicRoughnessPage(0).rgba;
-    return s;
-}
+using core_test::paintLayersSnapshot;
+using Snapshot = core_test::PaintLayersSnapshot;
 
 class PaintLayersDocumentTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        m_doc.setMesh(quad(), "quad");
-        core::PaintTargetOptions options;
-        options.resolution = 512;
-        ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-        core::CpuDepthCapturer capturer;
-        capturer.setMesh(m_doc.mesh());
-        ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight)).ok());
+        ASSERT_NO_FATAL_FAILURE(openQuad(512));
         m_doc.history().clear();
         core::Brush& brush = m_doc.brush();
         brush.radius = 6.0f;
         brush.hardness = 1.0f;
         brush.color = {0.9f, 0.2f, 0.1f, 1.0f};
+    }
+
+    /** The quad in the document, a texture target of resolution², its depth layers built. */
+    void openQuad(int resolution) {
+        m_doc.setMesh(quad(), "quad");
+        core::PaintTargetOptions options;
+        options.resolution = resolution;
+        ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
+        core::CpuDepthCapturer capturer;
+        capturer.setMesh(m_doc.mesh());
+        ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight)).ok());
     }
 
     core::TextureTarget& target() {
@@ -101,13 +68,13 @@ protected:
 
     /** Undoes and redoes the newest step, checking both states byte for byte. */
     void expectUndoRedo(const Snapshot& before, const char* what) {
-        const Snapshot after = snapshot(target());
+        const Snapshot after = paintLayersSnapshot(target());
         EXPECT_NE(before, after) << what << " changed nothing";
         core::PaintChanges changes;
         ASSERT_TRUE(m_doc.undo(changes)) << what;
-        EXPECT_TRUE(snapshot(target()) == before) << what << ": undo";
+        EXPECT_TRUE(paintLayersSnapshot(target()) == before) << what << ": undo";
         ASSERT_TRUE(m_doc.redo(changes)) << what;
-        EXPECT_TRUE(snapshot(target()) == after) << what << ": redo";
+        EXPECT_TRUE(paintLayersSnapshot(target()) == after) << what << ": redo";
     }
 
     std::uint64_t addLayer(const std::string& name,
@@ -166,12 +133,12 @@ TEST_F(PaintLayersDocumentTest, AStrokeOnALayerLeavesTheBaseAndShowsInTheComposi
     EXPECT_GT(full, 1000u);
     EXPECT_EQ(same, full);
     // The stroke is one step: undone, the composite is the base again.
-    const Snapshot painted = snapshot(target());
+    const Snapshot painted = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.undo(changes));
     EXPECT_EQ(target().page(0).rgba, base);
     EXPECT_FALSE(changes.texels.empty());
     ASSERT_TRUE(m_doc.redo(changes));
-    EXPECT_TRUE(snapshot(target()) == painted);
+    EXPECT_TRUE(paintLayersSnapshot(target()) == painted);
 
     // The eraser takes the layer's paint away (to transparent): the base shows again.
     m_doc.brush().eraser = true;
@@ -218,26 +185,26 @@ TEST_F(PaintLayersDocumentTest, AMaskHidesWhereItIsPaintedBlack) {
 
 TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
     core::PaintChanges changes;
-    Snapshot before = snapshot(target());
+    Snapshot before = paintLayersSnapshot(target());
     const std::uint64_t a = addLayer("A");
     expectUndoRedo(before, "add");
     stroke({20, 20}, {40, 40});
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     const std::uint64_t fill = addLayer("Fill", core::PaintLayerKind::Fill);
     expectUndoRedo(before, "add fill");
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     auto copy = m_doc.duplicatePaintLayer(a, changes);
     ASSERT_TRUE(copy.ok());
     expectUndoRedo(before, "duplicate");
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     m_doc.brush().color = {0.1f, 0.8f, 0.2f, 1.0f};
     stroke({40, 20}, {20, 40});
     expectUndoRedo(before, "stroke on the copy");
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     core::PaintLayerSettings s = target().paintLayerStack().layer(1).settings;
     s.name = "Renamed";
     ASSERT_TRUE(m_doc.setPaintLayerSettings(*copy, s, changes).ok());
@@ -248,21 +215,21 @@ TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
              [](core::PaintLayerSettings& x) { x.blend = core::BlendMode::Multiply; },
              [](core::PaintLayerSettings& x) { x.visible = false; },
              [](core::PaintLayerSettings& x) { x.lockTransparency = true; }}) {
-        before = snapshot(target());
+        before = paintLayersSnapshot(target());
         s = target().paintLayerStack().layer(*target().paintLayerStack().indexOf(*copy)).settings;
         change(s);
         ASSERT_TRUE(m_doc.setPaintLayerSettings(*copy, s, changes).ok());
         expectUndoRedo(before, "set");
     }
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.movePaintLayer(fill, 0, changes).ok());
     expectUndoRedo(before, "move");
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.addPaintLayerMask(a, changes).ok());
     expectUndoRedo(before, "add mask");
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     m_doc.brush().color = {0.0f, 0.0f, 0.0f, 1.0f};
     stroke({25, 25}, {30, 30});
     expectUndoRedo(before, "stroke on the mask");
@@ -275,17 +242,17 @@ TEST_F(PaintLayersDocumentTest, EveryOperationUndoesAndRedoesToTheByte) {
     EXPECT_EQ(target().selection(), (core::PaintSelection{a, true}));
     EXPECT_EQ(m_doc.history().undoCount(), steps) << "selecting made an undo step";
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.mergePaintLayerDown(a, changes).ok());
     EXPECT_NE(target().selection(), (core::PaintSelection{a, true}));
     expectUndoRedo(before, "merge down");
     EXPECT_EQ(m_doc.history().undoCount(), steps + 1);
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.deletePaintLayer(*copy, changes).ok());
     expectUndoRedo(before, "delete");
 
-    before = snapshot(target());
+    before = paintLayersSnapshot(target());
     ASSERT_TRUE(m_doc.flattenPaintLayers("Flat", changes).ok());
     expectUndoRedo(before, "flatten");
     EXPECT_EQ(target().paintLayerStack().size(), 1u);
@@ -311,14 +278,7 @@ TEST_F(PaintLayersDocumentTest, OperationsThatDoNotApplyAreErrorsAndChangeNothin
 
 TEST_F(PaintLayersDocumentTest, EightLayersWithAFewStrokesCostLessThanOneFullLayer) {
     // Eight 4096² layers with a few strokes each against one full 4096² RGBA8 layer.
-    core::Mesh mesh = quad();
-    m_doc.setMesh(std::move(mesh), "quad");
-    core::PaintTargetOptions options;
-    options.resolution = 4096;
-    ASSERT_TRUE(m_doc.setPaintTarget(options).ok());
-    core::CpuDepthCapturer capturer;
-    capturer.setMesh(m_doc.mesh());
-    ASSERT_TRUE(m_doc.buildDepthLayers(capturer, pixelView(kWidth, kHeight)).ok());
+    ASSERT_NO_FATAL_FAILURE(openQuad(4096));
     m_doc.brush().radius = 1.5f;
     m_doc.brush().paintRoughness = true;
     for (int l = 0; l < 8; ++l) {

@@ -6,7 +6,6 @@
 #include <cstdint>
 #include <optional>
 
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/base/color.h"
@@ -14,33 +13,12 @@
 #include "core/document/document.h"
 #include "core/paint/brush/dab.h"
 #include "core/paint/targets/paint_target.h"
+#include "tests/core/test_scenes.h"
 
 namespace pick_color_test {
 
-/** An orthographic view whose world x, y are window pixels (y down), looking down -Z. */
-core::View pixelView(int width, int height) {
-    core::View view;
-    view.width = width;
-    view.height = height;
-    view.view = glm::mat4(1.0f);
-    view.proj = glm::ortho(0.0f, float(width), float(height), 0.0f, 0.1f, 100.0f);
-    return view;
-}
-
-/** A camera-facing quad (two triangles) from window p0 to p1 at a depth, uv0 at p0, uv1 at p1. */
-void addQuad(core::Mesh& mesh, glm::vec2 p0, glm::vec2 p1, float depth, glm::vec2 uv0,
-             glm::vec2 uv1, std::uint32_t material) {
-    const auto base = std::uint32_t(mesh.positions.size());
-    for (const glm::vec2 f : {glm::vec2(0, 0), glm::vec2(1, 0), glm::vec2(0, 1), glm::vec2(1, 1)}) {
-        const glm::vec2 p = p0 + f * (p1 - p0);
-        mesh.positions.push_back({p.x, p.y, -depth});
-        mesh.normals.push_back({0.0f, 0.0f, 1.0f});
-        mesh.uvs.push_back(uv0 + f * (uv1 - uv0));
-    }
-    // Clockwise in window coordinates (y down) is counter-clockwise in NDC: front-facing.
-    mesh.indices.insert(mesh.indices.end(), {base, base + 2, base + 3, base, base + 3, base + 1});
-    mesh.triangleMaterial.insert(mesh.triangleMaterial.end(), {material, material});
-}
+using core_test::addQuad;
+using core_test::pixelView;
 
 constexpr int kWidth = 80, kHeight = 60;
 const glm::vec4 kFront(0.6f, 0.1f, 0.05f, 1.0f);
@@ -50,8 +28,8 @@ const glm::vec4 kBack(0.05f, 0.2f, 0.7f, 1.0f);
 core::Mesh twoQuads() {
     core::Mesh mesh;
     mesh.materials = {{"front", kFront, -1}, {"back", kBack, -1}};
-    addQuad(mesh, {30.25f, 5.25f}, {49.75f, 54.75f}, 4.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 0);
-    addQuad(mesh, {5, 10}, {75, 50}, 8.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 1);
+    addQuad(mesh, {{30.25f, 5.25f}, {49.75f, 54.75f}, 4.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 1, 0});
+    addQuad(mesh, {{5, 10}, {75, 50}, 8.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 1, 1});
     return mesh;
 }
 
@@ -163,7 +141,7 @@ TEST_F(PickColorTest, FollowsTheUvsIntoTheTexture) {
     image.rgba = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 0, 255};
     mesh.textures.push_back(image);
     mesh.materials = {{"textured", glm::vec4(1.0f), 0}};
-    addQuad(mesh, {10, 10}, {70, 50}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 0);
+    addQuad(mesh, {{10, 10}, {70, 50}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 1, 0});
     build(std::move(mesh));
     expectColor(m_doc.pickColor(pixelAt(20, 20)), {1, 0, 0, 1}, 1e-6f, "top left");
     expectColor(m_doc.pickColor(pixelAt(60, 20)), {0, 1, 0, 1}, 1e-6f, "top right");

@@ -8,46 +8,18 @@
 
 #include "core/document/document.h"
 #include "core/document/script.h"
+#include "tests/core/script_host.h"
 #include "tests/core/test_scenes.h"
 
 namespace script_test {
 
-using core_test::addQuad;
 using core_test::pixelView;
 using nlohmann::json;
 
 constexpr int kWidth = 96, kHeight = 64;
 
-/** A back quad (depth 8) partly covered by a front quad (depth 4), as in the order tests. */
-core::Mesh twoQuads() {
-    core::Mesh mesh;
-    addQuad(mesh, {{4.0f, 8.0f}, {64.0f, 56.0f}, 8.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 4});
-    addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
-    return mesh;
-}
-
-class Host final : public core::ScriptHost {
-public:
-    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
-        capturer.setMesh(doc.mesh());
-        ++builds;
-        return doc.buildDepthLayers(capturer, view);
-    }
-    core::CpuDepthCapturer capturer;
-    int builds = 0;
-};
-
-struct Session {
-    core::Document doc;
-    Host host;
-    core::ScriptRunner runner{doc, host, pixelView(kWidth, kHeight)};
-
-    Session() {
-        doc.setMesh(twoQuads(), "two quads");
-        core::PaintTargetOptions options;
-        options.resolution = 256;
-        EXPECT_TRUE(doc.setPaintTarget(options).ok());
-    }
+struct Session : core_test::QuadsScriptSession {
+    Session() : QuadsScriptSession(256) {}
     core::Status run(const json& operations) {
         for (const json& op : operations)
             if (core::Status s = runner.run(op); !s)

@@ -11,47 +11,20 @@
 #include "core/document/document.h"
 #include "core/document/project_state.h"
 #include "core/document/script.h"
+#include "tests/core/script_host.h"
 #include "tests/core/test_scenes.h"
 
 namespace stroke_tools_test {
 
-using core_test::addQuad;
 using core_test::pixelView;
 using nlohmann::json;
 
 constexpr int kWidth = 96, kHeight = 64;
 
-/**
- * A back quad (depth 8, u 0..0.5 of the texture) partly covered by a front quad (depth 4, u
- * 0.5..1): the covered part of the back quad is depth layer 2 at x 36..64, y 16..48.
- */
-core::Mesh twoQuads() {
-    core::Mesh mesh;
-    addQuad(mesh, {{4.0f, 8.0f}, {64.0f, 56.0f}, 8.0f, {0.0f, 0.0f}, {0.5f, 1.0f}, 4});
-    addQuad(mesh, {{36.0f, 16.0f}, {92.0f, 48.0f}, 4.0f, {0.5f, 0.0f}, {1.0f, 1.0f}, 4});
-    return mesh;
-}
-
-class Host final : public core::ScriptHost {
-public:
-    core::Status buildDepthLayers(core::Document& doc, const core::View& view) override {
-        capturer.setMesh(doc.mesh());
-        return doc.buildDepthLayers(capturer, view);
-    }
-    core::CpuDepthCapturer capturer;
-};
-
-struct Session {
-    core::Document doc;
-    Host host;
-    core::ScriptRunner runner{doc, host, pixelView(kWidth, kHeight)};
+struct Session : core_test::QuadsScriptSession {
     core::PaintChanges changes;
 
-    Session() {
-        doc.setMesh(twoQuads(), "two quads");
-        core::PaintTargetOptions options;
-        options.resolution = 128;
-        EXPECT_TRUE(doc.setPaintTarget(options).ok());
+    Session() : QuadsScriptSession(128) {
         EXPECT_TRUE(host.buildDepthLayers(doc, pixelView(kWidth, kHeight)).ok());
         doc.brush().radius = 3.0f;
         doc.brush().hardness = 1.0f;
@@ -61,17 +34,7 @@ struct Session {
     }
     std::vector<std::uint8_t> pixels() const { return page().rgba; }
     /** The texels of the front quad's half (u above 0.5, clear of the seam padding). */
-    std::vector<std::uint8_t> frontHalf() const {
-        const core::Image& p = page();
-        std::vector<std::uint8_t> out;
-        for (int y = 0; y < p.height; ++y)
-            for (int x = p.width / 2 + 4; x < p.width; ++x)
-                for (int c = 0; c < 4; ++c)
-                    out.push_back(
-                        p.rgba[4 * (std::size_t(y) * std::size_t(p.width) + std::size_t(x)) +
-                               std::size_t(c)]);
-        return out;
-    }
+    std::vector<std::uint8_t> frontHalf() const { return core_test::frontHalfTexels(page()); }
     void stroke(std::initializer_list<glm::vec2> points) {
         auto it = points.begin();
         ASSERT_TRUE(doc.beginStroke({*it, 1.0f}, changes).ok());

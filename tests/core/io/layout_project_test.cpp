@@ -51,6 +51,16 @@ void paintAStroke(core::Document& doc) {
     doc.endStroke();
 }
 
+/** The trefoil without UVs in doc, a 512² texture over its automatic layout, one stroke on it. */
+void paintOverAGeneratedLayout(core::Document& doc) {
+    doc.setMesh(trefoilWithoutUvs(), "trefoil.obj");
+    core::PaintTargetOptions options;
+    options.kind = core::PaintTargetKind::Texture;
+    options.resolution = 512;
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
+    paintAStroke(doc);
+}
+
 const core::TextureTarget* textureOf(core::Document& doc) {
     return dynamic_cast<const core::TextureTarget*>(doc.paintTarget());
 }
@@ -58,12 +68,7 @@ const core::TextureTarget* textureOf(core::Document& doc) {
 TEST(LayoutProject, ReopeningKeepsTheGeneratedUvsAndThePaint) {
     TempDir dir;
     core::Document doc;
-    doc.setMesh(trefoilWithoutUvs(), "trefoil.obj");
-    core::PaintTargetOptions options;
-    options.kind = core::PaintTargetKind::Texture;
-    options.resolution = 512;
-    ASSERT_TRUE(doc.setPaintTarget(options).ok());
-    paintAStroke(doc);
+    ASSERT_NO_FATAL_FAILURE(paintOverAGeneratedLayout(doc));
     const core::TextureTarget* texture = textureOf(doc);
     ASSERT_NE(texture, nullptr);
     const core::Mesh laidOut = texture->mesh();
@@ -95,12 +100,7 @@ TEST(LayoutProject, ReopeningKeepsTheGeneratedUvsAndThePaint) {
 TEST(LayoutProject, ExportsWriteTheGeneratedUvs) {
     TempDir dir;
     core::Document doc;
-    doc.setMesh(trefoilWithoutUvs(), "trefoil.obj");
-    core::PaintTargetOptions options;
-    options.kind = core::PaintTargetKind::Texture;
-    options.resolution = 512;
-    ASSERT_TRUE(doc.setPaintTarget(options).ok());
-    paintAStroke(doc);
+    ASSERT_NO_FATAL_FAILURE(paintOverAGeneratedLayout(doc));
     const core::Mesh painted = doc.paintedMesh();
     ASSERT_TRUE(painted.hasUvs());
 

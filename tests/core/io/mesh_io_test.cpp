@@ -32,38 +32,13 @@ namespace fs = std::filesystem;
 namespace mesh_io_test {
 
 using core_test::readFile;
+using core_test::TempDir;
+using core_test::writeFile;
 
 const fs::path kModels = LAYERPAINT_ASSIMP_MODELS;
 
 std::string corpus(const std::string& rel) {
     return (kModels / rel).string();
-}
-
-/** A fresh folder under the system temp folder, removed with everything in it. */
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "layerpaint-meshio-XXXXXX").string();
-        if (mkdtemp(pattern.data()) != nullptr)
-            m_path = pattern;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        if (!m_path.empty())
-            fs::remove_all(m_path, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return m_path; }
-
-private:
-    fs::path m_path;
-};
-
-void writeFile(const fs::path& path, const std::string& bytes) {
-    fs::create_directories(path.parent_path());
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
 std::string base64(const std::string& bytes) {

@@ -21,6 +21,7 @@
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/project/project_file.h"
 #include "core/model/builtin_models.h"
+#include "tests/core/paint_layers_snapshot.h"
 #include "tests/core/test_files.h"
 
 namespace paint_layers_project_test {
@@ -28,48 +29,8 @@ namespace paint_layers_project_test {
 using core_test::TempDir;
 using Json = nlohmann::json;
 
-/** Every layer's id, settings and written tiles (with their bytes), the selection, the pages. */
-struct Snapshot {
-    std::vector<std::uint64_t> ids;
-    std::vector<core::PaintLayerSettings> settings;
-    std::vector<std::vector<std::uint8_t>> planes;
-    core::PaintSelection selection;
-    std::vector<std::uint8_t> base, color, mr;
-};
-
-std::vector<std::uint8_t> planeBytes(const core::TiledPlane* plane) {
-    std::vector<std::uint8_t> out;
-    if (!plane)
-        return {42};
-    out.push_back(std::uint8_t(plane->texelBytes()));
-    out.insert(out.end(), plane->fill().begin(), plane->fill().end());
-    for (const core::TileKey key : plane->writtenTiles()) {
-        for (int k = 0; k < 4; ++k)
-            out.push_back(std::uint8_t(key.tile >> (8 * k)));
-        const std::uint8_t* t = plane->tile(key.page, key.tile);
-        out.insert(out.end(), t, t + plane->tileBytes(key));
-    }
-    return out;
-}
-
-Snapshot snapshot(const core::Document& doc) {
-    const auto& target = dynamic_cast<const core::TextureTarget&>(*doc.currentPaintTarget());
-    Snapshot s;
-    const core::PaintLayerStack& stack = target.paintLayerStack();
-    for (std::size_t i = 0; i < stack.size(); ++i) {
-        const core::PaintLayer& layer = stack.layer(i);
-        s.ids.push_back(layer.id);
-        s.settings.push_back(layer.settings);
-        for (const auto& plane : layer.channels)
-            s.planes.push_back(planeBytes(plane.get()));
-        s.planes.push_back(planeBytes(layer.mask.get()));
-    }
-    s.selection = target.selection();
-    s.base = target.basePixels(0);
-    s.color = target.page(0).rgba;
-    s.mr = target.metallicRoughnessPage(0).rgba;
-    return s;
-}
+using core_test::paintLayersSnapshot;
+using Snapshot = core_test::PaintLayersSnapshot;
 
 class PaintLayersProjectTest : public ::testing::Test {
 protected:
@@ -169,7 +130,7 @@ protected:
 
 TEST_F(PaintLayersProjectTest, SaveAndReopenRestoresEveryLayerByteForByte) {
     buildStack();
-    const Snapshot before = snapshot(m_doc);
+    const Snapshot before = paintLayersSnapshot(m_doc);
     ASSERT_EQ(before.ids.size(), 5u);
     EXPECT_NE(before.base, before.color) << "the layers change the look";
 
@@ -187,7 +148,7 @@ TEST_F(PaintLayersProjectTest, SaveAndReopenRestoresEveryLayerByteForByte) {
     reopened.setMesh(std::move(project->mesh), path);
     const core::Status applied = core::applyProjectState(reopened, *project->state);
     ASSERT_TRUE(applied.ok()) << applied.error();
-    const Snapshot after = snapshot(reopened);
+    const Snapshot after = paintLayersSnapshot(reopened);
     EXPECT_EQ(after.ids, before.ids);
     EXPECT_TRUE(after.settings == before.settings);
     EXPECT_EQ(after.selection, before.selection);

@@ -32,30 +32,9 @@ namespace fs = std::filesystem;
 namespace save_crash_test {
 
 using core_test::readFile;
+using core_test::TempDir;
 
 const char* const kHelper = LAYERPAINT_SAVE_CRASH_HELPER;
-
-class TempDir {
-public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "layerpaint-crash-XXXXXX").string();
-        if (mkdtemp(pattern.data()) != nullptr)
-            m_path = pattern;
-    }
-    ~TempDir() {
-        std::error_code ec;
-        if (!m_path.empty()) {
-            fs::permissions(m_path, fs::perms::owner_all, fs::perm_options::add, ec);
-            fs::remove_all(m_path, ec);
-        }
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const fs::path& path() const { return m_path; }
-
-private:
-    fs::path m_path;
-};
 
 /** A child process with its stdout on a pipe. */
 struct Child {

@@ -18,6 +18,7 @@
 #include "core/paint/brush/brush_tips.h"
 #include "core/paint/targets/paint_target.h"
 #include "core/paint/tracking/stroke_tracker.h"
+#include "tests/core/captured_scenes.h"
 #include "tests/core/test_scenes.h"
 
 namespace brush_tips_test {
@@ -26,26 +27,13 @@ using core_test::addQuad;
 using core_test::pixelView;
 using core_test::Quad;
 
-struct Scene {
-    std::shared_ptr<core::Mesh> mesh;
-    std::shared_ptr<core::MeshTopology> topology;
-    core::DepthLayers layers;
-};
+using Scene = core_test::PaintScene;
 
 /** A 200 × 200 view filled by one textured quad. */
 Scene quadScene() {
-    Scene scene;
     core::Mesh mesh;
     addQuad(mesh, Quad{{0.0f, 0.0f}, {200.0f, 200.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 4});
-    scene.mesh = std::make_shared<core::Mesh>(std::move(mesh));
-    scene.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*scene.mesh));
-    core::CpuDepthCapturer capturer;
-    capturer.setMesh(*scene.mesh);
-    auto layers =
-        core::buildDepthLayers(capturer, *scene.mesh, *scene.topology, pixelView(200, 200), {});
-    EXPECT_TRUE(layers.ok()) << layers.error();
-    scene.layers = std::move(layers).value();
-    return scene;
+    return core_test::paintScene(std::move(mesh), pixelView(200, 200));
 }
 
 std::vector<core::Dab> strokeDabs(const Scene& scene, const core::Brush& brush) {

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
-#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "core/base/color.h"
@@ -19,65 +18,26 @@
 #include "core/model/mesh_topology.h"
 #include "core/paint/targets/flood_fill.h"
 #include "core/paint/targets/paint_target.h"
+#include "tests/core/test_scenes.h"
 
 namespace flood_fill_test {
 
 using core::FillMode;
 using core::kNone;
 
-/** An orthographic view whose world x, y are window pixels (y down), looking down -Z. */
-core::View pixelView(int width, int height) {
-    core::View view;
-    view.width = width;
-    view.height = height;
-    view.proj = glm::ortho(0.0f, float(width), float(height), 0.0f, 0.1f, 100.0f);
-    return view;
-}
+using core_test::pixelView;
+using core_test::Quad;
 
 using ColorFn = std::function<glm::vec4(glm::vec2 pixel)>;
 
-/** A camera-facing quad grid from window p0 to p1 at a view depth, uv0 at p0 to uv1 at p1. */
-struct Quad {
-    glm::vec2 p0, p1;
-    float depth = 5.0f;
-    glm::vec2 uv0{0.0f}, uv1{1.0f};
-    int cells = 1;
-
-    glm::vec2 pixelOfUv(glm::vec2 uv) const { return p0 + (uv - uv0) / (uv1 - uv0) * (p1 - p0); }
-    bool hasUv(glm::vec2 uv) const {
-        return uv.x >= std::min(uv0.x, uv1.x) && uv.x <= std::max(uv0.x, uv1.x) &&
-               uv.y >= std::min(uv0.y, uv1.y) && uv.y <= std::max(uv0.y, uv1.y);
-    }
-    bool hasPixel(glm::vec2 p) const {
-        return p.x >= p0.x && p.x <= p1.x && p.y >= p0.y && p.y <= p1.y;
-    }
-};
-
-/** Adds q with its own vertices (neighbouring quads weld along shared edges). */
-void addQuad(core::Mesh& mesh, const Quad& q, const ColorFn& color = {}) {
-    const auto base = std::uint32_t(mesh.positions.size());
-    const int n = q.cells;
-    for (int r = 0; r <= n; ++r) {
-        for (int c = 0; c <= n; ++c) {
-            const glm::vec2 f(float(c) / float(n), float(r) / float(n));
-            const glm::vec2 p = q.p0 + f * (q.p1 - q.p0);
-            mesh.positions.push_back({p.x, p.y, -q.depth});
-            mesh.normals.push_back({0.0f, 0.0f, 1.0f});
-            mesh.uvs.push_back(q.uv0 + f * (q.uv1 - q.uv0));
-            mesh.colors.push_back(color ? color(p) : glm::vec4(1.0f));
-        }
-    }
-    for (int r = 0; r < n; ++r) {
-        for (int c = 0; c < n; ++c) {
-            const std::uint32_t a = base + std::uint32_t(r * (n + 1) + c), b = a + 1;
-            const std::uint32_t d = a + std::uint32_t(n + 1), e = d + 1;
-            // Clockwise in window coordinates (y down) is counter-clockwise in NDC: front.
-            mesh.indices.insert(mesh.indices.end(), {a, d, e, a, e, b});
-            mesh.triangleMaterial.insert(mesh.triangleMaterial.end(), {0u, 0u});
-        }
-    }
+/** Adds q (core_test::addQuad, a white material) with vertex colours: color's, or white. */
+void addColoredQuad(core::Mesh& mesh, const Quad& q, const ColorFn& color = {}) {
     if (mesh.materials.empty())
         mesh.materials.push_back({"paint", glm::vec4(1.0f), -1});
+    const std::size_t first = mesh.positions.size();
+    core_test::addQuad(mesh, q);
+    for (std::size_t v = first; v < mesh.positions.size(); ++v)
+        mesh.colors.push_back(color ? color(glm::vec2(mesh.positions[v])) : glm::vec4(1.0f));
 }
 
 /**
@@ -94,8 +54,8 @@ struct TwoQuads {
 
     explicit TwoQuads(core::PaintTargetKind kind, const ColorFn& backColor = {}) {
         core::Mesh mesh;
-        addQuad(mesh, back, backColor);
-        addQuad(mesh, front);
+        addColoredQuad(mesh, back, backColor);
+        addColoredQuad(mesh, front);
         doc.setMesh(std::move(mesh), "two quads");
         core::PaintTargetOptions options;
         options.kind = kind;
@@ -201,7 +161,7 @@ TEST(FloodFill, ModeNamesRoundTrip) {
 
 TEST(FloodFill, SurfacePointIsTheClickedPointOfTheTriangle) {
     core::Mesh mesh;
-    addQuad(mesh, {{10.0f, 10.0f}, {50.0f, 50.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 1});
+    addColoredQuad(mesh, {{10.0f, 10.0f}, {50.0f, 50.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 1});
     const core::View view = pixelView(64, 64);
     // Triangle 0 is (10,10), (10,50), (50,50): the point (20, 40) is 1/4, 1/2, 1/4 of them.
     const auto b = core::surfacePointAt(mesh, view, 0, {20.0f, 40.0f});
@@ -215,7 +175,7 @@ TEST(FloodFill, SurfacePointIsTheClickedPointOfTheTriangle) {
 TEST(FloodFill, NeedsLayersAndFillsNothingOnBackground) {
     core::Document doc;
     core::Mesh mesh;
-    addQuad(mesh, {{10.0f, 10.0f}, {50.0f, 50.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 1});
+    addColoredQuad(mesh, {{10.0f, 10.0f}, {50.0f, 50.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 1});
     doc.setMesh(std::move(mesh), "quad");
     core::PaintChanges changes;
     EXPECT_FALSE(doc.fill({30.0f, 30.0f}, FillMode::Surface, 0.0f, changes).ok());
@@ -381,9 +341,9 @@ struct SeamStrip {
     std::shared_ptr<core::MeshTopology> topology;
 
     SeamStrip(const glm::vec4& middle, core::PaintTargetKind kind) {
-        addQuad(*mesh, q1);
-        addQuad(*mesh, q2, [&](glm::vec2) { return middle; });
-        addQuad(*mesh, q3);
+        addColoredQuad(*mesh, q1);
+        addColoredQuad(*mesh, q2, [&](glm::vec2) { return middle; });
+        addColoredQuad(*mesh, q3);
         topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*mesh));
         core::PaintTargetOptions options;
         options.kind = kind;

@@ -18,33 +18,17 @@
 #include "core/model/mesh_topology.h"
 #include "core/paint/paint_layers/undo_tiles.h"
 #include "core/paint/targets/paint_target.h"
+#include "tests/core/captured_scenes.h"
 #include "tests/core/test_scenes.h"
 
 namespace paint_target_test {
 
 using core::kNone;
 using core_test::addQuad;
+using core_test::paintScene;
 using core_test::pixelView;
 using core_test::Quad;
-
-struct Scene {
-    std::shared_ptr<core::Mesh> mesh;
-    std::shared_ptr<core::MeshTopology> topology;
-    core::DepthLayers layers;
-};
-
-Scene makeScene(core::Mesh mesh, const core::View& view) {
-    Scene scene;
-    scene.mesh = std::make_shared<core::Mesh>(std::move(mesh));
-    EXPECT_TRUE(scene.mesh->validate().ok());
-    scene.topology = std::make_shared<core::MeshTopology>(core::buildMeshTopology(*scene.mesh));
-    core::CpuDepthCapturer capturer;
-    capturer.setMesh(*scene.mesh);
-    auto layers = core::buildDepthLayers(capturer, *scene.mesh, *scene.topology, view, {});
-    EXPECT_TRUE(layers.ok()) << layers.error();
-    scene.layers = std::move(layers).value();
-    return scene;
-}
+using Scene = core_test::PaintScene;
 
 /** All pixels whose centre is within radius of center and that have a fragment on layer. */
 core::Dab makeDab(const core::DepthStack& stack, glm::vec2 center, float radius,
@@ -179,7 +163,7 @@ TEST(TextureTarget, PaintsExactlyTheTexelsInsideTheDab) {
     core::Mesh mesh;
     const Quad quad{{20.0f, 20.0f}, {180.0f, 180.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 3};
     addQuad(mesh, quad);
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     core::PaintTargetOptions options;
     options.resolution = 512;
     auto target = textureTarget(scene, options);
@@ -216,7 +200,7 @@ TEST(TextureTarget, NewTextureKeepsTheLook) {
     addQuad(mesh, {{8.0f, 8.0f}, {56.0f, 56.0f}, 5.0f, {0.1f, 0.1f}, {0.9f, 0.9f}, 2});
     mesh.materials[0].baseColorFactor = {0.25f, 0.5f, 1.0f, 1.0f};
     mesh.colors.assign(mesh.positions.size(), glm::vec4(0.5f, 1.0f, 1.0f, 1.0f));
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     auto target = textureTarget(scene);
     const core::Image& page = target->page(0);
     const std::uint8_t* px = texel(page, page.width / 2, page.height / 2);
@@ -254,7 +238,7 @@ TEST_P(TextureDensity, NoHoleInsideTheDab) {
     mesh.textures.push_back(image);
     mesh.materials[0].baseColorFactor = glm::vec4(1.0f);
     mesh.materials[0].baseColorTexture = 0;
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     auto target = textureTarget(scene);
     ASSERT_EQ(target->pageSource(0), 0);
     EXPECT_EQ(target->page(0).rgba, scene.mesh->textures[0].rgba); // painted in place
@@ -296,7 +280,7 @@ struct TwoQuads {
         core::Mesh mesh;
         addQuad(mesh, back);
         addQuad(mesh, front);
-        scene = makeScene(std::move(mesh), view);
+        scene = paintScene(std::move(mesh), view);
     }
 };
 
@@ -344,7 +328,7 @@ TEST(TextureTarget, OverlappingDabsNeverExceedTheStrokeOpacity) {
     const Quad quad{{10.0f, 10.0f}, {90.0f, 90.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 2};
     addQuad(mesh, quad);
     mesh.materials[0].baseColorFactor = {0.8f, 0.3f, 0.1f, 1.0f};
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     core::PaintTargetOptions options;
     options.resolution = 512;
 
@@ -398,7 +382,7 @@ TEST(TextureTarget, EraserRestoresTheOriginalBytes) {
     mesh.textures.push_back(image);
     mesh.materials[0].baseColorFactor = glm::vec4(1.0f);
     mesh.materials[0].baseColorTexture = 0;
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     auto target = textureTarget(scene);
     ASSERT_EQ(target->page(0).rgba, image.rgba);
 
@@ -431,7 +415,7 @@ TEST(TextureTarget, SeamPaddingFillsTexelsOutsideTheChart) {
     // uv 0.25..0.75 of 512 texels: the chart covers texels 128..383.
     const Quad quad{{20.0f, 20.0f}, {180.0f, 180.0f}, 5.0f, {0.25f, 0.25f}, {0.75f, 0.75f}, 2};
     addQuad(mesh, quad);
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     core::PaintTargetOptions options;
     options.resolution = 512;
     options.padding = 4;
@@ -468,7 +452,7 @@ TEST(TextureTarget, UndoAndRedoAreByteExact) {
     const core::View view = pixelView(160, 160);
     core::Mesh mesh;
     addQuad(mesh, {{10.0f, 10.0f}, {150.0f, 150.0f}, 5.0f, {0.0f, 0.0f}, {1.0f, 1.0f}, 6});
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     core::PaintTargetOptions options;
     options.resolution = 1024;
     auto target = textureTarget(scene, options);
@@ -520,7 +504,7 @@ TEST(TextureTarget, MaterialsWithTexturesAndFactorsGetTheirOwnPages) {
                       {"tinted", glm::vec4(0.5f, 1.0f, 1.0f, 1.0f), 0},
                       {"untextured", glm::vec4(0.2f, 0.4f, 0.6f, 1.0f), -1}};
     mesh.triangleMaterial = {0, 0, 1, 1, 2, 2};
-    const Scene scene = makeScene(std::move(mesh), view);
+    const Scene scene = paintScene(std::move(mesh), view);
     auto target = textureTarget(scene);
     ASSERT_EQ(target->pageCount(), 3u);
     EXPECT_EQ(target->page(0).rgba, image.rgba); // kept byte for byte
@@ -549,7 +533,7 @@ TEST(VertexColorTarget, PaintsTheVerticesInsideTheDabOnItsLayer) {
     TwoQuads s;
     core::Mesh mesh = *s.scene.mesh;
     mesh.uvs.clear();
-    const Scene scene = makeScene(std::move(mesh), s.view);
+    const Scene scene = paintScene(std::move(mesh), s.view);
     auto made = core::makePaintTarget(scene.mesh, scene.topology);
     ASSERT_TRUE(made.ok()) << made.error();
     core::PaintTarget& target = **made;
@@ -593,7 +577,7 @@ TEST(VertexColorTarget, PaintsTheVerticesInsideTheDabOnItsLayer) {
 class TrefoilPaint : public ::testing::Test {
 protected:
     static void SetUpTestSuite() {
-        s_scene = new Scene(makeScene(core::makeTrefoil(), trefoilView()));
+        s_scene = new Scene(paintScene(core::makeTrefoil(), trefoilView()));
     }
     static void TearDownTestSuite() {
         delete s_scene;

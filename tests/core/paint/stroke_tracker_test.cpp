@@ -10,7 +10,6 @@
 #include <fstream>
 #include <numbers>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -23,6 +22,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 #include "core/paint/tracking/stroke_tracker.h"
+#include "tests/core/golden_cases.h"
 
 namespace stroke_tracker_test {
 
@@ -33,13 +33,7 @@ using core::StrokePoint;
 using core::StrokeTracker;
 using nlohmann::json;
 
-std::vector<std::string> tokens(const std::string& row) {
-    std::istringstream in(row);
-    std::vector<std::string> out;
-    for (std::string t; in >> t;)
-        out.push_back(t);
-    return out;
-}
+using core_test::tokens;
 
 /**
  * One golden case, read from tests/data/<case>/stroke.json. layers[k].links are rows of per-pixel
@@ -145,15 +139,6 @@ StrokeCase loadCase(const fs::path& file) {
     return c;
 }
 
-std::vector<fs::path> goldenFiles() {
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(LAYERPAINT_TEST_DATA))
-        if (entry.is_directory() && fs::exists(entry.path() / "stroke.json"))
-            files.push_back(entry.path() / "stroke.json");
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 /** A map as rows of layer digits, for readable failures. */
 std::string drawMap(const std::vector<std::uint32_t>& map, int w) {
     std::string s;
@@ -238,15 +223,12 @@ TEST_P(StrokeGolden, DabsAndMapsMatch) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, StrokeGolden, testing::ValuesIn(goldenFiles()),
-                         [](const testing::TestParamInfo<fs::path>& param) {
-                             return param.param.parent_path().filename().string();
-                         });
+INSTANTIATE_TEST_SUITE_P(Cases, StrokeGolden,
+                         testing::ValuesIn(core_test::goldenFiles("stroke.json")),
+                         core_test::goldenTestName);
 
 TEST(StrokeGoldenData, AllExpectedCasesArePresent) {
-    std::vector<std::string> names;
-    for (const auto& f : goldenFiles())
-        names.push_back(f.parent_path().filename().string());
+    const std::vector<std::string> names = core_test::goldenCaseNames("stroke.json");
     for (const char* want :
          {"stroke_flat_disc", "stroke_under_occluder", "stroke_background_start",
           "stroke_popup_start", "stroke_conventional_occluder", "stroke_contour_end_bleeding",

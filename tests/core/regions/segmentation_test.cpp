@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,20 +18,14 @@
 #include "core/model/camera.h"
 #include "core/model/mesh_topology.h"
 #include "core/regions/segmentation.h"
+#include "tests/core/golden_cases.h"
 
 namespace segmentation_test {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-/** Whitespace-separated tokens of one grid row. */
-std::vector<std::string> tokens(const std::string& row) {
-    std::istringstream in(row);
-    std::vector<std::string> out;
-    for (std::string t; in >> t;)
-        out.push_back(t);
-    return out;
-}
+using core_test::tokens;
 
 /**
  * One golden case, read from tests/data/<case>/segmentation.json. The view is orthographic with
@@ -140,15 +133,6 @@ GoldenCase loadCase(const fs::path& file) {
     return c;
 }
 
-std::vector<fs::path> goldenFiles() {
-    std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(LAYERPAINT_TEST_DATA))
-        if (entry.is_directory() && fs::exists(entry.path() / "segmentation.json"))
-            files.push_back(entry.path() / "segmentation.json");
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 std::string linkString(const core::Connectivity& conn, std::size_t f) {
     std::string s;
     for (int d = 0; d < 4; ++d)
@@ -196,15 +180,12 @@ TEST_P(Golden, LinksRegionsAndGraphMatch) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, Golden, testing::ValuesIn(goldenFiles()),
-                         [](const testing::TestParamInfo<fs::path>& param) {
-                             return param.param.parent_path().filename().string();
-                         });
+INSTANTIATE_TEST_SUITE_P(Cases, Golden,
+                         testing::ValuesIn(core_test::goldenFiles("segmentation.json")),
+                         core_test::goldenTestName);
 
 TEST(GoldenData, AllExpectedCasesArePresent) {
-    std::vector<std::string> names;
-    for (const auto& f : goldenFiles())
-        names.push_back(f.parent_path().filename().string());
+    const std::vector<std::string> names = core_test::goldenCaseNames("segmentation.json");
     for (const char* want :
          {"seg_flat_single_layer", "seg_two_overlapping_surfaces", "seg_figure3_behind",
           "seg_fold_plain", "seg_fold_surface", "seg_steep_slope_plain", "seg_steep_slope_surface",
