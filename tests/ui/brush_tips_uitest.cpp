@@ -34,24 +34,9 @@ class BrushTipsTest : public WindowTest {
 protected:
     BrushTipsTest() : WindowTest({1260, 720}) {}
 
-    std::vector<std::uint8_t> pageBytes() const {
-        const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
-        return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
-    }
-
     /** Whether the 11 × 11 pixels around p all show the model. */
     bool solid(int px, int py) const {
-        const core::DepthStack& stack = document().depthLayers()->stack;
-        for (int dy = -5; dy <= 5; ++dy)
-            for (int dx = -5; dx <= 5; ++dx) {
-                const int x = px + dx, y = py + dy;
-                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-                    return false;
-                const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
-                if (stack.offsets[i + 1] == stack.offsets[i])
-                    return false;
-            }
-        return true;
+        return showsModelAround(document().depthLayers()->stack, {px, py}, 5);
     }
 
     /** Horizontal runs across the model at least 70 px long, rows 50 px apart or more. */
@@ -76,17 +61,6 @@ protected:
             }
         }
         return out;
-    }
-
-    void drag(QPoint a, QPoint b) {
-        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, a);
-        const int steps = std::max(1, (b - a).manhattanLength() / 4);
-        for (int i = 1; i <= steps; ++i) {
-            QTest::mouseMove(viewport(), a + (b - a) * i / steps);
-            QApplication::processEvents();
-        }
-        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, b);
-        QApplication::processEvents();
     }
 
     /** Clicks the tip named name (its data) in the Brush panel's chooser. */

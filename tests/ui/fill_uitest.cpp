@@ -58,17 +58,7 @@ protected:
 
     /** Whether pixel (x, y) and its 9 × 9 neighbourhood all show the model. */
     bool solid(int px, int py) const {
-        const core::DepthStack& stack = document().depthLayers()->stack;
-        for (int dy = -4; dy <= 4; ++dy)
-            for (int dx = -4; dx <= 4; ++dx) {
-                const int x = px + dx, y = py + dy;
-                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-                    return false;
-                const std::size_t i = std::size_t(y) * stack.width + x;
-                if (stack.offsets[i + 1] == stack.offsets[i])
-                    return false;
-            }
-        return true;
+        return showsModelAround(document().depthLayers()->stack, {px, py}, 4);
     }
 
     /** A solid pixel near from (rings of growing size around it), or a null point. */

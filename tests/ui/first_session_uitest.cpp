@@ -66,10 +66,6 @@ constexpr quint32 kScanBracketLeft = 34;
 constexpr quint32 kScanBracketRight = 35;
 constexpr quint32 kShiftMask = 1;
 
-[[maybe_unused]] std::string local(const QString& path) {
-    return QFile::encodeName(path).toStdString();
-}
-
 [[maybe_unused]] QByteArray readAll(const QString& path) {
     QFile file(path);
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
@@ -109,22 +105,10 @@ void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {
     return true;
 }
 
-class FirstSessionTest : public WindowTest {
+class FirstSessionTest : public ProjectFilesTest {
 protected:
-    FirstSessionTest() : WindowTest({1260, 900}) {}
+    FirstSessionTest() : ProjectFilesTest({1260, 900}) {}
 
-    void SetUp() override {
-        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
-        ASSERT_TRUE(m_dir.isValid());
-        WindowTest::SetUp();
-    }
-
-    void TearDown() override {
-        WindowTest::TearDown();
-        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
-    }
-
-    QString path(const QString& name) const { return m_dir.filePath(name); }
     QAction* action(const char* name) const {
         return m_window->findChild<QAction*>(QString::fromLatin1(name));
     }
@@ -164,20 +148,10 @@ protected:
     /** A pixel of the view in the middle of the model's surface (logical = device here). */
     QPoint onModel() const {
         const core::DepthStack& stack = document().depthLayers()->stack;
-        const auto covered = [&](int x, int y) {
-            for (int dy = -3; dy <= 3; ++dy)
-                for (int dx = -3; dx <= 3; ++dx) {
-                    const int px = x + dx, py = y + dy;
-                    if (px < 0 || py < 0 || px >= stack.width || py >= stack.height ||
-                        stack.layerCount(std::size_t(py) * stack.width + px) == 0)
-                        return false;
-                }
-            return true;
-        };
         for (int r = 0; r < stack.width / 2; r += 2)
             for (const QPoint p : {QPoint(r, 0), QPoint(-r, 0), QPoint(0, r), QPoint(0, -r)}) {
                 const QPoint at = QPoint(stack.width / 2, stack.height / 2) + p;
-                if (covered(at.x(), at.y()))
+                if (showsModelAround(stack, at, 3))
                     return at;
             }
         return {};
@@ -222,8 +196,6 @@ protected:
         }
     }
     void selectAllText() { key(Qt::Key_A, Qt::ControlModifier, QStringLiteral("\x01")); }
-
-    QTemporaryDir m_dir;
 };
 
 // A layer-aware stroke and the pop-ups it caused are one undo step, and undoing back to
@@ -439,14 +411,8 @@ TEST_F(FirstSessionTest, ToolKeysWorkAfterEnterOrEscapeInAField) {
 
 // A recovered document keeps its own name and says it was recovered.
 TEST_F(FirstSessionTest, RecoveredWorkKeepsItsNameAndSaysSo) {
-    const QString folder = ui::ProjectController::recoveryFolder();
-    ASSERT_TRUE(QDir().mkpath(folder));
-    const QString orphan = QDir(folder).filePath(QStringLiteral("autosave-999999-crashed.glb"));
-    core::Result<core::Mesh> mesh = core::loadMesh("builtin:row");
-    ASSERT_TRUE(mesh.ok());
-    core::ProjectState state;
-    state.source = "builtin:row";
-    ASSERT_TRUE(core::saveProject(local(orphan), *mesh, state, {}, false).ok());
+    QString orphan;
+    ASSERT_NO_FATAL_FAILURE(writeCrashedAutosave({}, orphan));
     QSettings().setValue(QStringLiteral("project/directory"), m_dir.path());
 
     m_window->setErrorDialogsEnabled(true);

@@ -41,11 +41,6 @@ class ImporterTest : public WindowTest {
 protected:
     ImporterTest() : WindowTest({1100, 720}) {}
 
-    std::vector<std::uint8_t> pageBytes() const {
-        const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
-        return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
-    }
-
     /** A horizontal run of pixels that all show the model, near the middle of the view. */
     std::pair<QPoint, QPoint> pathAcrossTheModel() const {
         const core::DepthStack& stack = document().depthLayers()->stack;

@@ -45,25 +45,9 @@ protected:
     const core::TextureTarget* texture() {
         return dynamic_cast<const core::TextureTarget*>(document().paintTarget());
     }
-    std::vector<std::uint8_t> pageBytes() {
-        const core::TextureTarget* target = texture();
-        return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
-    }
 
     /** Whether pixel (device = logical here) and its 9 × 9 neighbourhood all show the model. */
-    bool solid(QPoint p) const {
-        const core::DepthStack& stack = document().depthLayers()->stack;
-        for (int dy = -4; dy <= 4; ++dy)
-            for (int dx = -4; dx <= 4; ++dx) {
-                const int x = p.x() + dx, y = p.y() + dy;
-                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-                    return false;
-                const std::size_t i = std::size_t(y) * stack.width + x;
-                if (stack.offsets[i + 1] == stack.offsets[i])
-                    return false;
-            }
-        return true;
-    }
+    bool solid(QPoint p) const { return showsModelAround(document().depthLayers()->stack, p, 4); }
 
     /** A horizontal run across the model near the middle of the view, at least minLength long. */
     std::pair<QPoint, QPoint> pathAcrossTheKnot(int minLength = 80) const {

@@ -40,10 +40,6 @@ protected:
                 return int(i);
         return -1;
     }
-    std::vector<std::uint8_t> pageBytes() const {
-        const auto* target = dynamic_cast<const core::TextureTarget*>(document().paintTarget());
-        return target ? target->page(0).rgba : std::vector<std::uint8_t>{};
-    }
     /** Clicks the preset at row in the panel, as a user does. */
     void clickPreset(int row) {
         auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("brushPresetsDock"));
@@ -59,16 +55,6 @@ protected:
         const QRect r = list->visualItemRect(item);
         ASSERT_TRUE(list->viewport()->rect().contains(r.center()));
         QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, r.center());
-    }
-    void drag(QPoint a, QPoint b) {
-        QTest::mousePress(viewport(), Qt::LeftButton, Qt::NoModifier, a);
-        const int steps = std::max(1, (b - a).manhattanLength() / 4);
-        for (int i = 1; i <= steps; ++i) {
-            QTest::mouseMove(viewport(), a + (b - a) * i / steps);
-            QApplication::processEvents();
-        }
-        QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, b);
-        QApplication::processEvents();
     }
     /** The brush as a preset sets it: the preset's, in the colour the artist had. */
     static core::Brush withColor(core::Brush brush, const glm::vec4& color) {

@@ -37,6 +37,7 @@
 #include "core/io/project/project_file.h"
 #include "core/paint/targets/paint_target.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
 #include "ui/view/depth_layers_builder.h"
@@ -47,10 +48,6 @@ namespace project_uitest {
 using namespace ui_test;
 
 constexpr int kSaveTimeoutMs = 60000;
-
-std::string local(const QString& path) {
-    return QFile::encodeName(path).toStdString();
-}
 
 std::vector<std::vector<std::uint8_t>> pagesOf(core::Document& doc) {
     std::vector<std::vector<std::uint8_t>> pages;
@@ -87,31 +84,11 @@ std::function<QAbstractButton*(QMessageBox*)> named(const QString& objectName) {
     return [objectName](QMessageBox* box) { return box->findChild<QAbstractButton*>(objectName); };
 }
 
-class ProjectTest : public ::testing::Test {
+constexpr QSize kWindowSize(1100, 720);
+
+class ProjectTest : public ProjectFilesTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
-        ASSERT_TRUE(m_dir.isValid());
-        m_window = makeWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QDir(ui::ProjectController::recoveryFolder()).removeRecursively();
-        QSettings().clear();
-    }
-
-    static std::unique_ptr<ui::MainWindow> makeWindow() {
-        auto window = std::make_unique<ui::MainWindow>();
-        window->setErrorDialogsEnabled(false);
-        window->resize(1100, 720);
-        window->show();
-        return window;
-    }
+    ProjectTest() : ProjectFilesTest(kWindowSize) {}
 
     static void openAndBuild(ui::MainWindow& window, const QString& source) {
         QSignalSpy loaded(&window, &ui::MainWindow::modelLoaded);
@@ -125,22 +102,12 @@ protected:
     /** A horizontal run across the model near the middle of the view. */
     static std::pair<QPoint, QPoint> pathAcross(ui::MainWindow& window, int skipRows = 0) {
         const core::DepthStack& stack = window.document().depthLayers()->stack;
-        auto solid = [&](int x, int y) {
-            for (int dy = -4; dy <= 4; ++dy)
-                for (int dx = -4; dx <= 4; ++dx) {
-                    const int px = x + dx, py = y + dy;
-                    if (px < 0 || py < 0 || px >= stack.width || py >= stack.height ||
-                        stack.layerCount(std::size_t(py) * stack.width + px) == 0)
-                        return false;
-                }
-            return true;
-        };
         int found = 0;
         for (int k = 0; k < stack.height / 2; k += 7)
             for (int y : {stack.height / 2 - k, stack.height / 2 + k}) {
                 int start = -1;
                 for (int x = 0; x <= stack.width; ++x) {
-                    const bool inside = x < stack.width && solid(x, y);
+                    const bool inside = x < stack.width && showsModelAround(stack, {x, y}, 4);
                     if (inside && start < 0)
                         start = x;
                     if (!inside && start >= 0) {
@@ -176,11 +143,6 @@ protected:
             ADD_FAILURE() << failed.first().first().toString().toStdString();
         return !saved.isEmpty();
     }
-
-    QString path(const QString& name) const { return m_dir.filePath(name); }
-
-    QTemporaryDir m_dir;
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(ProjectTest, SaveAndReopenInANewWindowGivesTheSamePaintAndSettings) {
@@ -232,7 +194,7 @@ TEST_F(ProjectTest, SaveAndReopenInANewWindowGivesTheSamePaintAndSettings) {
     QApplication::processEvents();
     const QImage picture = m_window->viewport()->grabFramebuffer();
 
-    auto second = makeWindow();
+    auto second = makeWindow(kWindowSize);
     ASSERT_TRUE(QTest::qWaitForWindowExposed(second.get()));
     openAndBuild(*second, file);
     EXPECT_EQ(pagesOf(second->document()), painted) << "the paint target differs";
@@ -330,7 +292,7 @@ TEST_F(ProjectTest, AutosaveIsRecoveredAfterACrash) {
     m_window->projectController()->reloadAutosaveInterval();
 
     // A second session while the first runs: its autosave is not offered (the lock is live).
-    auto other = makeWindow();
+    auto other = makeWindow(kWindowSize);
     other->setErrorDialogsEnabled(true);
     EXPECT_FALSE(other->projectController()->offerRecovery());
     other.reset();
@@ -339,7 +301,7 @@ TEST_F(ProjectTest, AutosaveIsRecoveredAfterACrash) {
     m_window.reset();
     ASSERT_TRUE(QFileInfo::exists(autosave));
 
-    m_window = makeWindow();
+    m_window = makeWindow(kWindowSize);
     ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
     m_window->setErrorDialogsEnabled(true);
     QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
@@ -366,15 +328,10 @@ TEST_F(ProjectTest, AutosaveIsRecoveredAfterACrash) {
 
 TEST_F(ProjectTest, RecoveryFileLeftByACrashCanBeKeptOrDiscarded) {
     // A crashed session's autosave, as written by core: no lock beside it.
-    const QString folder = ui::ProjectController::recoveryFolder();
-    ASSERT_TRUE(QDir().mkpath(folder));
-    const QString orphan = QDir(folder).filePath(QStringLiteral("autosave-999999-crashed.glb"));
-    core::Result<core::Mesh> mesh = core::loadMesh("builtin:row");
-    ASSERT_TRUE(mesh.ok());
     core::ProjectState state;
-    state.source = "builtin:row";
     state.brush.radius = 42.0f;
-    ASSERT_TRUE(core::saveProject(local(orphan), *mesh, state, {}, false).ok());
+    QString orphan;
+    ASSERT_NO_FATAL_FAILURE(writeCrashedAutosave(state, orphan));
 
     m_window->setErrorDialogsEnabled(true);
     answerNextBox(QStringLiteral("recoveryBox"), named(QStringLiteral("notNowButton")));
@@ -391,8 +348,8 @@ TEST_F(ProjectTest, RecoveryFileLeftByACrashCanBeKeptOrDiscarded) {
     EXPECT_TRUE(m_window->isWindowModified());
 
     // Discard removes one.
-    ASSERT_TRUE(core::saveProject(local(orphan), *mesh, state, {}, false).ok());
-    auto second = makeWindow();
+    ASSERT_NO_FATAL_FAILURE(writeCrashedAutosave(state, orphan));
+    auto second = makeWindow(kWindowSize);
     second->setErrorDialogsEnabled(true);
     answerNextBox(QStringLiteral("recoveryBox"), named(QStringLiteral("discardButton")));
     EXPECT_FALSE(second->projectController()->offerRecovery());

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/document/document.h"
+#include "tests/core/captured_scenes.h"
 #include "tests/ui/ui_test_util.h"
 #include "ui/panels/depth_layers_panel.h"
 #include "ui/shell/main_window.h"
@@ -23,7 +24,6 @@
 
 namespace single_layer_uitest {
 
-using core::kNone;
 using namespace ui_test;
 
 TEST(SingleLayerTest, AStrokeInTheLayerTwoViewPaintsLayerTwoNotTheFrontStrand) {
@@ -64,13 +64,7 @@ TEST(SingleLayerTest, AStrokeInTheLayerTwoViewPaintsLayerTwoNotTheFrontStrand) {
     const auto index = [&](int x, int y) {
         return std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
     };
-    const auto crossing = [&](int x, int y) {
-        if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-            return false;
-        const std::uint32_t front = stack.fragment(index(x, y), 1);
-        const std::uint32_t back = stack.fragment(index(x, y), 2);
-        return front != kNone && back != kNone && stack.depth[back] - stack.depth[front] > 0.3f;
-    };
+    const auto crossing = [&](int x, int y) { return core_test::isCrossing(stack, x, y); };
     constexpr int kRadius = 6;
     std::optional<QPoint> start;
     for (int y = 0; y < stack.height && !start; y += 2)

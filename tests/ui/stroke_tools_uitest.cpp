@@ -55,17 +55,7 @@ protected:
 
     /** Whether pixel p and its (2 margin + 1)² neighbourhood all show the model. */
     bool solid(QPoint p, int margin) const {
-        const core::DepthStack& stack = document().depthLayers()->stack;
-        for (int dy = -margin; dy <= margin; ++dy)
-            for (int dx = -margin; dx <= margin; ++dx) {
-                const int x = p.x() + dx, y = p.y() + dy;
-                if (x < 0 || y < 0 || x >= stack.width || y >= stack.height)
-                    return false;
-                const std::size_t i = std::size_t(y) * std::size_t(stack.width) + std::size_t(x);
-                if (stack.offsets[i + 1] == stack.offsets[i])
-                    return false;
-            }
-        return true;
+        return showsModelAround(document().depthLayers()->stack, p, margin);
     }
     /** A horizontal run over the model, at least minLength long, clear by margin on all sides. */
     std::pair<QPoint, QPoint> runAcrossTheKnot(int minLength, int margin) const {

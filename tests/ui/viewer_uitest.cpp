@@ -31,6 +31,7 @@
 
 #include "core/model/builtin_models.h"
 #include "tests/ui/ui_test_util.h"
+#include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/model_loader.h"
 #include "ui/shell/recent_files.h"
@@ -56,29 +57,11 @@ double foregroundFraction(const QImage& image) {
     return double(count) / double(qint64(rgb.width()) * rgb.height());
 }
 
-class ViewerTest : public ::testing::Test {
+constexpr QSize kWindowSize(800, 600);
+
+class ViewerTest : public WindowTest {
 protected:
-    void SetUp() override {
-        QSettings().clear();
-        m_window = makeWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowExposed(m_window.get()));
-        // Window shortcuts only fire in the active window.
-        m_window->activateWindow();
-        ASSERT_TRUE(QTest::qWaitForWindowActive(m_window.get()));
-    }
-
-    void TearDown() override {
-        m_window.reset();
-        QSettings().clear();
-    }
-
-    static std::unique_ptr<ui::MainWindow> makeWindow() {
-        auto window = std::make_unique<ui::MainWindow>();
-        window->setErrorDialogsEnabled(false);
-        window->resize(800, 600);
-        window->show();
-        return window;
-    }
+    ViewerTest() : WindowTest(kWindowSize) {}
 
     /** Opens as the command line does and waits; true if modelLoaded() came. */
     static bool openAndWait(ui::MainWindow& window, const QStringList& arguments) {
@@ -89,10 +72,6 @@ protected:
             QTest::qWaitFor([&] { return !loaded.isEmpty() || !failed.isEmpty(); }, kLoadTimeoutMs);
         return done && loaded.size() == 1 && failed.isEmpty();
     }
-
-    ui::Viewport* viewport() const { return m_window->viewport(); }
-
-    QImage grab() const { return viewport()->grabFramebuffer(); }
 
     QPoint center() const { return viewport()->rect().center(); }
 
@@ -105,8 +84,6 @@ protected:
             QTest::mouseMove(viewport(), start + delta * i / kSteps);
         QTest::mouseRelease(viewport(), button, modifiers, start + delta);
     }
-
-    std::unique_ptr<ui::MainWindow> m_window;
 };
 
 TEST_F(ViewerTest, OpensFileFromCommandLineAndDrawsIt) {
@@ -446,7 +423,7 @@ TEST_F(ViewerTest, RecentFilesPersistAndForgetDeletedFiles) {
 
     // A new window (as after a restart) reads the list back from QSettings.
     m_window.reset();
-    auto window = makeWindow();
+    auto window = makeWindow(kWindowSize);
     EXPECT_EQ(window->recentFiles().value(0), canonical);
     auto* menu = window->findChild<QMenu*>(QStringLiteral("recentMenu"));
     ASSERT_NE(menu, nullptr);
