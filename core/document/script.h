@@ -73,7 +73,8 @@ public:
 /**
  * Replays operations on a document. Depth layers are built (through the host) whenever an operation
  * needs them and the document has none. Errors name the operation's number (1-based) and the
- * problem; the operations before it stay done.
+ * problem; the operations before it stay done. Each operation's handler is looked up by its name
+ * in the table of core/document/script_ops.h.
  */
 class ScriptRunner {
 public:
@@ -90,9 +91,6 @@ public:
     std::size_t count() const { return m_count; }
 
 private:
-    Status ensureDepthLayers();
-    void setView(const View& view);
-
     Document& m_doc;
     ScriptHost& m_host;
     View m_view;

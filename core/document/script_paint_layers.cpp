@@ -6,6 +6,7 @@
 
 #include "core/base/color.h"
 #include "core/document/document.h"
+#include "core/document/script_ops.h"
 #include "core/paint/paint_layers/blend_modes.h"
 
 namespace core {
@@ -14,13 +15,9 @@ namespace {
 
 using json = nlohmann::json;
 
-struct PaintLayerOpError {
-    std::string message;
-};
-
 float unitValue(const json& value, const char* what) {
     if (!value.is_number() || !(value.get<double>() >= 0.0) || !(value.get<double>() <= 1.0))
-        throw PaintLayerOpError{std::string("\"") + what + "\" must be a number from 0 to 1"};
+        throw ScriptOpError{std::string("\"") + what + "\" must be a number from 0 to 1"};
     return value.get<float>();
 }
 
@@ -28,7 +25,7 @@ bool flag(const json& op, const char* key, bool fallback) {
     if (!op.contains(key))
         return fallback;
     if (!op[key].is_boolean())
-        throw PaintLayerOpError{std::string("\"") + key + "\" must be true or false"};
+        throw ScriptOpError{std::string("\"") + key + "\" must be true or false"};
     return op[key].get<bool>();
 }
 
@@ -38,12 +35,12 @@ glm::vec3 srgbColor(const json& value, const char* what) {
         const std::string s = value.get<std::string>();
         unsigned r = 0, g = 0, b = 0;
         if (s.size() != 7 || std::sscanf(s.c_str(), "#%2x%2x%2x", &r, &g, &b) != 3)
-            throw PaintLayerOpError{std::string("\"") + what + "\" must be #rrggbb"};
+            throw ScriptOpError{std::string("\"") + what + "\" must be #rrggbb"};
         return glm::vec3(float(r), float(g), float(b)) / 255.0f;
     }
     if (value.is_array() && value.size() == 3)
         return {unitValue(value[0], what), unitValue(value[1], what), unitValue(value[2], what)};
-    throw PaintLayerOpError{std::string("\"") + what + "\" must be #rrggbb or [r, g, b] (0 to 1)"};
+    throw ScriptOpError{std::string("\"") + what + "\" must be #rrggbb or [r, g, b] (0 to 1)"};
 }
 
 /**
@@ -57,8 +54,8 @@ std::uint64_t layerId(const PaintLayerTarget& target, const json& op, bool baseA
         const json& ref = op["layer"];
         if (ref.is_number_unsigned()) {
             if (ref.get<std::uint64_t>() >= stack.size())
-                throw PaintLayerOpError{"there is no paint layer " + ref.dump() + " (there are " +
-                                        std::to_string(stack.size()) + ")"};
+                throw ScriptOpError{"there is no paint layer " + ref.dump() + " (there are " +
+                                    std::to_string(stack.size()) + ")"};
             id = stack.layer(ref.get<std::size_t>()).id;
         } else if (ref == "base") {
             id = 0;
@@ -70,32 +67,200 @@ std::uint64_t layerId(const PaintLayerTarget& target, const json& op, bool baseA
                     break;
                 }
             if (id == 0)
-                throw PaintLayerOpError{"there is no paint layer named " + ref.dump()};
+                throw ScriptOpError{"there is no paint layer named " + ref.dump()};
         } else {
-            throw PaintLayerOpError{
-                "\"layer\" must be a paint layer's index, its name or \"base\""};
+            throw ScriptOpError{"\"layer\" must be a paint layer's index, its name or \"base\""};
         }
     }
     if (id == 0 && !baseAllowed)
-        throw PaintLayerOpError{"the operation needs a paint layer, not the base"};
+        throw ScriptOpError{"the operation needs a paint layer, not the base"};
     return id;
 }
 
-void check(const Status& status) {
-    if (!status)
-        throw PaintLayerOpError{status.error()};
+/**
+ * The document's texture target (made if need be, any stroke ended): every paint-layer operation
+ * asks for it first, so its error comes before any other.
+ */
+TextureTarget& readyPaintLayerTarget(ScriptOp& s) {
+    Result<PaintLayerTarget*> ready = s.doc.paintLayerTarget();
+    if (!ready)
+        throw ScriptOpError{ready.error()};
+    return **ready;
 }
 
+/** layer-add's "kind": paint (the default) or fill. */
+PaintLayerKind layerKindOf(const json& op) {
+    const std::string kind = op.value("kind", json("paint")).is_string()
+                                 ? op.value("kind", std::string("paint"))
+                                 : std::string();
+    if (kind == "fill")
+        return PaintLayerKind::Fill;
+    if (kind != "paint")
+        throw ScriptOpError{"\"kind\" must be \"paint\" or \"fill\""};
+    return PaintLayerKind::Paint;
+}
+
+void runLayerAdd(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    const json& op = s.op;
+    PaintLayerSettings settings;
+    settings.name = op.contains("name") && op["name"].is_string()
+                        ? op["name"].get<std::string>()
+                        : "Paint Layer " + std::to_string(target.paintLayerStack().size() + 1);
+    settings.kind = layerKindOf(op);
+    if (op.contains("values")) {
+        const json& v = op["values"];
+        if (!v.is_object())
+            throw ScriptOpError{"\"values\" must be an object"};
+        if (v.contains("base_color"))
+            settings.fill.baseColor = srgbColor(v["base_color"], "base_color");
+        if (v.contains("roughness"))
+            settings.fill.roughness = unitValue(v["roughness"], "roughness");
+        if (v.contains("metallic"))
+            settings.fill.metallic = unitValue(v["metallic"], "metallic");
+    }
+    if (op.contains("opacity"))
+        settings.opacity = unitValue(op["opacity"], "opacity");
+    Result<std::uint64_t> id = s.doc.addPaintLayer(std::move(settings), s.changes);
+    if (!id)
+        throw ScriptOpError{id.error()};
+}
+
+void runLayerSelect(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.selectPaint({layerId(target, s.op, true), false}));
+}
+
+void runMaskSelect(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.selectPaint({layerId(target, s.op, false), true}));
+}
+
+/** layer-set's "blend": a blend mode's name. */
+BlendMode blendModeOf(const json& value) {
+    const auto mode =
+        value.is_string() ? blendModeFromName(value.get<std::string>()) : std::nullopt;
+    if (!mode)
+        throw ScriptOpError{"\"blend\" must be a blend mode's name (normal, multiply, screen, "
+                            "overlay, soft-light, ...)"};
+    return *mode;
+}
+
+/** layer-set's "values" on a fill layer's settings: the channels named change, null leaves one
+ * alone. */
+void setFillValues(const json& v, PaintLayerSettings& settings) {
+    if (!v.is_object())
+        throw ScriptOpError{"\"values\" must be an object"};
+    if (settings.kind != PaintLayerKind::Fill)
+        throw ScriptOpError{"\"values\" are a fill layer's; this is a paint layer"};
+    ChannelValues& fill = settings.fill;
+    if (v.contains("base_color"))
+        fill.baseColor = v["base_color"].is_null()
+                             ? std::nullopt
+                             : std::optional(srgbColor(v["base_color"], "base_color"));
+    if (v.contains("roughness"))
+        fill.roughness = v["roughness"].is_null()
+                             ? std::nullopt
+                             : std::optional(unitValue(v["roughness"], "roughness"));
+    if (v.contains("metallic"))
+        fill.metallic = v["metallic"].is_null()
+                            ? std::nullopt
+                            : std::optional(unitValue(v["metallic"], "metallic"));
+}
+
+void runLayerSet(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    const json& op = s.op;
+    const std::uint64_t id = layerId(target, op, false);
+    PaintLayerSettings settings =
+        target.paintLayerStack().layer(*target.paintLayerStack().indexOf(id)).settings;
+    if (op.contains("name")) {
+        if (!op["name"].is_string())
+            throw ScriptOpError{"\"name\" must be a string"};
+        settings.name = op["name"].get<std::string>();
+    }
+    if (op.contains("opacity"))
+        settings.opacity = unitValue(op["opacity"], "opacity");
+    if (op.contains("blend"))
+        settings.blend = blendModeOf(op["blend"]);
+    settings.visible = flag(op, "visible", settings.visible);
+    settings.lockTransparency = flag(op, "lock", settings.lockTransparency);
+    if (op.contains("values"))
+        setFillValues(op["values"], settings);
+    throwIfError(s.doc.setPaintLayerSettings(id, std::move(settings), s.changes));
+}
+
+void runLayerMove(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    const std::uint64_t id = layerId(target, s.op, false);
+    if (!s.op.contains("index") || !s.op["index"].is_number_unsigned())
+        throw ScriptOpError{"\"index\" must be the layer's new index (0 = the lowest)"};
+    throwIfError(s.doc.movePaintLayer(id, s.op["index"].get<std::size_t>(), s.changes));
+}
+
+void runLayerDelete(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.deletePaintLayer(layerId(target, s.op, false), s.changes));
+}
+
+void runLayerDuplicate(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    Result<std::uint64_t> id = s.doc.duplicatePaintLayer(layerId(target, s.op, false), s.changes);
+    if (!id)
+        throw ScriptOpError{id.error()};
+}
+
+void runLayerMergeDown(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.mergePaintLayerDown(layerId(target, s.op, false), s.changes));
+}
+
+void runLayerFlatten(ScriptOp& s) {
+    readyPaintLayerTarget(s); // its error first, as for every paint-layer operation
+    const std::string flat = s.op.contains("name") && s.op["name"].is_string()
+                                 ? s.op["name"].get<std::string>()
+                                 : std::string("Flattened");
+    throwIfError(s.doc.flattenPaintLayers(flat, s.changes));
+}
+
+void runMaskAdd(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.addPaintLayerMask(layerId(target, s.op, false), s.changes));
+}
+
+void runMaskDelete(ScriptOp& s) {
+    const PaintLayerTarget& target = readyPaintLayerTarget(s);
+    throwIfError(s.doc.deletePaintLayerMask(layerId(target, s.op, false), s.changes));
+}
+
+constexpr ScriptOpEntry kPaintLayerOperations[] = {
+    {"layer-add", runLayerAdd},
+    {"layer-select", runLayerSelect},
+    {"mask-select", runMaskSelect},
+    {"layer-set", runLayerSet},
+    {"layer-move", runLayerMove},
+    {"layer-delete", runLayerDelete},
+    {"layer-duplicate", runLayerDuplicate},
+    {"layer-merge-down", runLayerMergeDown},
+    {"layer-flatten", runLayerFlatten},
+    {"mask-add", runMaskAdd},
+    {"mask-delete", runMaskDelete},
+};
+
 } // namespace
+
+std::span<const ScriptOpEntry> paintLayerOperations() {
+    return kPaintLayerOperations;
+}
 
 Status applyBrushChannels(Brush& brush, const json& channels) {
     try {
         if (!channels.is_object())
-            throw PaintLayerOpError{"\"channels\" must be an object with \"base_color\", "
-                                    "\"roughness\" and \"metallic\" (any of them)"};
+            throw ScriptOpError{"\"channels\" must be an object with \"base_color\", "
+                                "\"roughness\" and \"metallic\" (any of them)"};
         for (const auto& [key, value] : channels.items())
             if (key != "base_color" && key != "roughness" && key != "metallic")
-                throw PaintLayerOpError{"unknown channel \"" + key + "\""};
+                throw ScriptOpError{"unknown channel \"" + key + "\""};
         Brush b = brush;
         b.paintBaseColor = channels.contains("base_color");
         if (b.paintBaseColor && !channels["base_color"].is_boolean()) {
@@ -111,7 +276,7 @@ Status applyBrushChannels(Brush& brush, const json& channels) {
         if (b.paintMetallic)
             b.metallic = unitValue(channels["metallic"], "metallic");
         brush = b;
-    } catch (const PaintLayerOpError& e) {
+    } catch (const ScriptOpError& e) {
         return Error{e.message, ErrorKind::BadInput};
     }
     return {};
@@ -126,124 +291,6 @@ json brushChannelsJson(const Brush& brush) {
     if (brush.paintMetallic)
         channels["metallic"] = brush.metallic;
     return channels;
-}
-
-std::optional<Status> runPaintLayerOperation(Document& doc, const std::string& name,
-                                             const json& op) {
-    if (name.rfind("layer-", 0) != 0 && name.rfind("mask-", 0) != 0)
-        return std::nullopt;
-    try {
-        Result<PaintLayerTarget*> ready = doc.paintLayerTarget();
-        if (!ready)
-            throw PaintLayerOpError{ready.error()};
-        PaintLayerTarget& target = **ready;
-        PaintChanges changes; // the caller refreshes its own copy of the target
-        if (name == "layer-add") {
-            PaintLayerSettings settings;
-            settings.name =
-                op.contains("name") && op["name"].is_string()
-                    ? op["name"].get<std::string>()
-                    : "Paint Layer " + std::to_string(target.paintLayerStack().size() + 1);
-            const std::string kind = op.value("kind", json("paint")).is_string()
-                                         ? op.value("kind", std::string("paint"))
-                                         : std::string();
-            if (kind == "fill")
-                settings.kind = PaintLayerKind::Fill;
-            else if (kind != "paint")
-                throw PaintLayerOpError{"\"kind\" must be \"paint\" or \"fill\""};
-            if (op.contains("values")) {
-                const json& v = op["values"];
-                if (!v.is_object())
-                    throw PaintLayerOpError{"\"values\" must be an object"};
-                if (v.contains("base_color"))
-                    settings.fill.baseColor = srgbColor(v["base_color"], "base_color");
-                if (v.contains("roughness"))
-                    settings.fill.roughness = unitValue(v["roughness"], "roughness");
-                if (v.contains("metallic"))
-                    settings.fill.metallic = unitValue(v["metallic"], "metallic");
-            }
-            if (op.contains("opacity"))
-                settings.opacity = unitValue(op["opacity"], "opacity");
-            Result<std::uint64_t> id = doc.addPaintLayer(std::move(settings), changes);
-            if (!id)
-                throw PaintLayerOpError{id.error()};
-        } else if (name == "layer-select") {
-            check(doc.selectPaint({layerId(target, op, true), false}));
-        } else if (name == "mask-select") {
-            check(doc.selectPaint({layerId(target, op, false), true}));
-        } else if (name == "layer-set") {
-            const std::uint64_t id = layerId(target, op, false);
-            PaintLayerSettings s =
-                target.paintLayerStack().layer(*target.paintLayerStack().indexOf(id)).settings;
-            if (op.contains("name")) {
-                if (!op["name"].is_string())
-                    throw PaintLayerOpError{"\"name\" must be a string"};
-                s.name = op["name"].get<std::string>();
-            }
-            if (op.contains("opacity"))
-                s.opacity = unitValue(op["opacity"], "opacity");
-            if (op.contains("blend")) {
-                const auto mode = op["blend"].is_string()
-                                      ? blendModeFromName(op["blend"].get<std::string>())
-                                      : std::nullopt;
-                if (!mode)
-                    throw PaintLayerOpError{"\"blend\" must be a blend mode's name (normal, "
-                                            "multiply, screen, overlay, soft-light, ...)"};
-                s.blend = *mode;
-            }
-            s.visible = flag(op, "visible", s.visible);
-            s.lockTransparency = flag(op, "lock", s.lockTransparency);
-            if (op.contains("values")) {
-                // A fill layer's values: the channels named change, null leaves one alone.
-                const json& v = op["values"];
-                if (!v.is_object())
-                    throw PaintLayerOpError{"\"values\" must be an object"};
-                if (s.kind != PaintLayerKind::Fill)
-                    throw PaintLayerOpError{"\"values\" are a fill layer's; this is a paint layer"};
-                if (v.contains("base_color"))
-                    s.fill.baseColor =
-                        v["base_color"].is_null()
-                            ? std::nullopt
-                            : std::optional(srgbColor(v["base_color"], "base_color"));
-                if (v.contains("roughness"))
-                    s.fill.roughness = v["roughness"].is_null()
-                                           ? std::nullopt
-                                           : std::optional(unitValue(v["roughness"], "roughness"));
-                if (v.contains("metallic"))
-                    s.fill.metallic = v["metallic"].is_null()
-                                          ? std::nullopt
-                                          : std::optional(unitValue(v["metallic"], "metallic"));
-            }
-            check(doc.setPaintLayerSettings(id, std::move(s), changes));
-        } else if (name == "layer-move") {
-            const std::uint64_t id = layerId(target, op, false);
-            if (!op.contains("index") || !op["index"].is_number_unsigned())
-                throw PaintLayerOpError{"\"index\" must be the layer's new index (0 = the lowest)"};
-            check(doc.movePaintLayer(id, op["index"].get<std::size_t>(), changes));
-        } else if (name == "layer-delete") {
-            check(doc.deletePaintLayer(layerId(target, op, false), changes));
-        } else if (name == "layer-duplicate") {
-            Result<std::uint64_t> id = doc.duplicatePaintLayer(layerId(target, op, false), changes);
-            if (!id)
-                throw PaintLayerOpError{id.error()};
-        } else if (name == "layer-merge-down") {
-            check(doc.mergePaintLayerDown(layerId(target, op, false), changes));
-        } else if (name == "layer-flatten") {
-            const std::string flat = op.contains("name") && op["name"].is_string()
-                                         ? op["name"].get<std::string>()
-                                         : std::string("Flattened");
-            check(doc.flattenPaintLayers(flat, changes));
-        } else if (name == "mask-add") {
-            check(doc.addPaintLayerMask(layerId(target, op, false), changes));
-        } else if (name == "mask-delete") {
-            check(doc.deletePaintLayerMask(layerId(target, op, false), changes));
-        } else {
-            throw PaintLayerOpError{"unknown operation \"" + name + "\""};
-        }
-    } catch (const PaintLayerOpError& e) {
-        return Status(Error{e.message, ErrorKind::BadInput});
-    }
-    return Status{};
 }
 
 } // namespace core

@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The script operations on paint layers (layer-add, layer-select, layer-set, ...), for
-// ScriptRunner (core/document/script.cpp).
+// The script operations on paint layers (layer-add, layer-select, layer-set, ...), whose handlers
+// script_paint_layers.cpp lists for ScriptRunner (paintLayerOperations() in script_ops.h), and
+// set-brush's "channels" object.
 #pragma once
-
-#include <optional>
-#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -12,15 +10,6 @@
 #include "core/paint/brush/dab.h"
 
 namespace core {
-
-class Document;
-
-/**
- * Runs op if name is a paint-layer operation: its Status (an Error saying what is wrong with
- * op). Nothing for any other name.
- */
-std::optional<Status> runPaintLayerOperation(Document& doc, const std::string& name,
-                                             const nlohmann::json& op);
 
 /**
  * Applies a set-brush operation's "channels" object to brush: the channels it names are painted

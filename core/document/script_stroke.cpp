@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/document/document.h"
+#include "core/document/script_ops.h"
 
 namespace core {
 
@@ -11,59 +12,57 @@ using nlohmann::json;
 
 namespace {
 
-struct StrokeOpError {
-    std::string message;
-};
-
 /** [x, y] or [x, y, pressure] (pixels from the top-left, pressure 0..1). */
 StrokePoint pointAt(const json& op, const char* key) {
     const std::string what = std::string("\"") + key + "\"";
     if (!op.contains(key))
-        throw StrokeOpError{what + " is missing"};
+        throw ScriptOpError{what + " is missing"};
     const json& p = op[key];
     if (!p.is_array() || p.size() < 2 || p.size() > 3 || !p[0].is_number() || !p[1].is_number() ||
         (p.size() == 3 && !p[2].is_number()))
-        throw StrokeOpError{what + " must be [x, y] or [x, y, pressure]"};
+        throw ScriptOpError{what + " must be [x, y] or [x, y, pressure]"};
     StrokePoint point;
     point.position = {p[0].get<float>(), p[1].get<float>()};
     point.pressure = p.size() == 3 ? p[2].get<float>() : 1.0f;
     if (!std::isfinite(point.position.x) || !std::isfinite(point.position.y) ||
         !(point.pressure >= 0.0f && point.pressure <= 1.0f))
-        throw StrokeOpError{what + " is not finite or its pressure is outside 0..1"};
+        throw ScriptOpError{what + " is not finite or its pressure is outside 0..1"};
     return point;
 }
 
 float unitRange(const json& value, const char* key, float lo, float hi) {
     if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < lo ||
         value.get<double>() > hi)
-        throw StrokeOpError{std::string("\"stabilizer\" \"") + key + "\" must be a number from " +
+        throw ScriptOpError{std::string("\"stabilizer\" \"") + key + "\" must be a number from " +
                             std::to_string(int(lo)) + " to " + std::to_string(int(hi))};
     return value.get<float>();
 }
 
 bool flag(const json& value, const char* key) {
     if (!value.is_boolean())
-        throw StrokeOpError{std::string("\"stabilizer\" \"") + key + "\" must be true or false"};
+        throw ScriptOpError{std::string("\"stabilizer\" \"") + key + "\" must be true or false"};
     return value.get<bool>();
 }
 
-} // namespace
-
-bool isLineOperation(const std::string& name) {
-    return name == "line" || name == "line-to";
+void runLine(ScriptOp& s) {
+    s.needDepthLayers();
+    throwIfError(s.doc.line(pointAt(s.op, "from"), pointAt(s.op, "to"), s.changes));
 }
 
-std::optional<Status> runLineOperation(Document& doc, const std::string& name, const json& op) {
-    if (!isLineOperation(name))
-        return std::nullopt;
-    try {
-        PaintChanges changes; // the caller refreshes its own copy of the target
-        if (name == "line")
-            return doc.line(pointAt(op, "from"), pointAt(op, "to"), changes);
-        return doc.lineTo(pointAt(op, "to"), changes);
-    } catch (const StrokeOpError& e) {
-        return Error{e.message, ErrorKind::BadInput};
-    }
+void runLineTo(ScriptOp& s) {
+    s.needDepthLayers();
+    throwIfError(s.doc.lineTo(pointAt(s.op, "to"), s.changes));
+}
+
+constexpr ScriptOpEntry kLineOperations[] = {
+    {"line", runLine},
+    {"line-to", runLineTo},
+};
+
+} // namespace
+
+std::span<const ScriptOpEntry> lineOperations() {
+    return kLineOperations;
 }
 
 Status applyBrushStabilizer(Brush& brush, const json& stabilizer) {
@@ -82,14 +81,14 @@ Status applyBrushStabilizer(Brush& brush, const json& stabilizer) {
                 else if (key == "catch_up")
                     b.stabilizerCatchUp = flag(value, "catch_up");
                 else
-                    throw StrokeOpError{"unknown \"stabilizer\" setting \"" + key + "\""};
+                    throw ScriptOpError{"unknown \"stabilizer\" setting \"" + key + "\""};
             }
         } else {
-            throw StrokeOpError{"\"stabilizer\" must be true, false or an object with \"on\", "
+            throw ScriptOpError{"\"stabilizer\" must be true, false or an object with \"on\", "
                                 "\"length\", \"smoothing\" and \"catch_up\""};
         }
         brush = b;
-    } catch (const StrokeOpError& e) {
+    } catch (const ScriptOpError& e) {
         return Error{e.message, ErrorKind::BadInput};
     }
     return {};

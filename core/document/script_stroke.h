@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The script's stroke tools: set-brush's "stabilizer" object and the straight-line operations
-// (line, line-to), for ScriptRunner (core/document/script.cpp).
+// The script's stroke tools: set-brush's "stabilizer" object, and the straight-line operations
+// (line with "from" and "to", line-to with "to"; points [x, y] or [x, y, pressure]), whose
+// handlers script_stroke.cpp lists for ScriptRunner (lineOperations() in script_ops.h).
 #pragma once
-
-#include <optional>
-#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -12,18 +10,6 @@
 #include "core/paint/brush/dab.h"
 
 namespace core {
-
-class Document;
-
-/**
- * Runs op if name is a straight-line operation ("line" with "from" and "to", "line-to" with
- * "to"; points [x, y] or [x, y, pressure]): its Status. Nothing for any other name. The caller
- * builds the layers first (needsLayers).
- */
-std::optional<Status> runLineOperation(Document& doc, const std::string& name,
-                                       const nlohmann::json& op);
-/** Whether name is an operation runLineOperation() runs. */
-bool isLineOperation(const std::string& name);
 
 /**
  * Applies a set-brush operation's "stabilizer" to brush: false / true, or an object with any of
