@@ -2,6 +2,8 @@
 #include "core/document/script_stroke.h"
 
 #include <cmath>
+#include <string>
+#include <string_view>
 
 #include "core/document/document.h"
 #include "core/document/script_ops.h"
@@ -44,6 +46,28 @@ bool flag(const json& value, const char* key) {
     return value.get<bool>();
 }
 
+/** One setting of set-brush's "stabilizer" object, applied to a brush. */
+struct StabilizerSetting {
+    std::string_view key;
+    void (*apply)(const json& value, Brush& b);
+};
+
+constexpr StabilizerSetting kStabilizerSettings[] = {
+    {"on", [](const json& v, Brush& b) { b.stabilizer = flag(v, "on"); }},
+    {"length",
+     [](const json& v, Brush& b) { b.stabilizerLength = unitRange(v, "length", 0.0f, 1000.0f); }},
+    {"smoothing", [](const json& v,
+                     Brush& b) { b.stabilizerSmoothing = unitRange(v, "smoothing", 0.0f, 1.0f); }},
+    {"catch_up", [](const json& v, Brush& b) { b.stabilizerCatchUp = flag(v, "catch_up"); }},
+};
+
+const StabilizerSetting& stabilizerSetting(const std::string& key) {
+    for (const StabilizerSetting& setting : kStabilizerSettings)
+        if (setting.key == key)
+            return setting;
+    throw ScriptOpError{"unknown \"stabilizer\" setting \"" + key + "\""};
+}
+
 void runLine(ScriptOp& s) {
     s.needDepthLayers();
     throwIfError(s.doc.line(pointAt(s.op, "from"), pointAt(s.op, "to"), s.changes));
@@ -71,18 +95,8 @@ Status applyBrushStabilizer(Brush& brush, const json& stabilizer) {
         if (stabilizer.is_boolean()) {
             b.stabilizer = stabilizer.get<bool>();
         } else if (stabilizer.is_object()) {
-            for (const auto& [key, value] : stabilizer.items()) {
-                if (key == "on")
-                    b.stabilizer = flag(value, "on");
-                else if (key == "length")
-                    b.stabilizerLength = unitRange(value, "length", 0.0f, 1000.0f);
-                else if (key == "smoothing")
-                    b.stabilizerSmoothing = unitRange(value, "smoothing", 0.0f, 1.0f);
-                else if (key == "catch_up")
-                    b.stabilizerCatchUp = flag(value, "catch_up");
-                else
-                    throw ScriptOpError{"unknown \"stabilizer\" setting \"" + key + "\""};
-            }
+            for (const auto& [key, value] : stabilizer.items())
+                stabilizerSetting(key).apply(value, b);
         } else {
             throw ScriptOpError{"\"stabilizer\" must be true, false or an object with \"on\", "
                                 "\"length\", \"smoothing\" and \"catch_up\""};

@@ -2,10 +2,57 @@
 #include "core/document/script_symmetry.h"
 
 #include <string>
+#include <string_view>
 
 namespace core {
 
 using nlohmann::json;
+
+namespace {
+
+/** One setting of a "symmetry" object: read into s (false if value is not one), and what it must
+ * be. */
+struct SymmetrySetting {
+    std::string_view key;
+    bool (*read)(const json& value, BrushSymmetry& s);
+    std::string (*want)();
+};
+
+constexpr SymmetrySetting kSymmetrySettings[] = {
+    {"mirror",
+     [](const json& value, BrushSymmetry& s) {
+         return value.is_string() && symmetryMirrorFromName(value.get<std::string>(), s);
+     },
+     [] { return std::string("a string of the letters x, y and z, each at most once"); }},
+    {"center",
+     [](const json& value, BrushSymmetry& s) {
+         return value.is_string() && symmetryCenterFromName(value.get<std::string>(), s.center);
+     },
+     [] { return std::string("\"bbox\" or \"origin\""); }},
+    {"radial",
+     [](const json& value, BrushSymmetry& s) {
+         const bool ok = value.is_number_integer() && value.get<long long>() >= 1 &&
+                         value.get<long long>() <= BrushSymmetry::kMaxRadial;
+         if (ok)
+             s.radial = int(value.get<long long>());
+         return ok;
+     },
+     [] { return "a whole number from 1 to " + std::to_string(BrushSymmetry::kMaxRadial); }},
+    {"axis",
+     [](const json& value, BrushSymmetry& s) {
+         return value.is_string() && symmetryAxisFromName(value.get<std::string>(), s.axis);
+     },
+     [] { return std::string("\"x\", \"y\" or \"z\""); }},
+};
+
+const SymmetrySetting* symmetrySetting(const std::string& key) {
+    for (const SymmetrySetting& setting : kSymmetrySettings)
+        if (setting.key == key)
+            return &setting;
+    return nullptr;
+}
+
+} // namespace
 
 Status applyBrushSymmetry(Brush& brush, const json& symmetry) {
     BrushSymmetry s = brush.symmetry;
@@ -18,28 +65,12 @@ Status applyBrushSymmetry(Brush& brush, const json& symmetry) {
                      "\"radial\" and \"axis\"",
                      ErrorKind::BadInput};
     for (const auto& [key, value] : symmetry.items()) {
-        bool ok = false;
-        std::string want;
-        if (key == "mirror") {
-            ok = value.is_string() && symmetryMirrorFromName(value.get<std::string>(), s);
-            want = "a string of the letters x, y and z, each at most once";
-        } else if (key == "center") {
-            ok = value.is_string() && symmetryCenterFromName(value.get<std::string>(), s.center);
-            want = "\"bbox\" or \"origin\"";
-        } else if (key == "radial") {
-            ok = value.is_number_integer() && value.get<long long>() >= 1 &&
-                 value.get<long long>() <= BrushSymmetry::kMaxRadial;
-            if (ok)
-                s.radial = int(value.get<long long>());
-            want = "a whole number from 1 to " + std::to_string(BrushSymmetry::kMaxRadial);
-        } else if (key == "axis") {
-            ok = value.is_string() && symmetryAxisFromName(value.get<std::string>(), s.axis);
-            want = "\"x\", \"y\" or \"z\"";
-        } else {
+        const SymmetrySetting* setting = symmetrySetting(key);
+        if (!setting)
             return Error{"unknown \"symmetry\" setting \"" + key + "\"", ErrorKind::BadInput};
-        }
-        if (!ok)
-            return Error{"\"symmetry\" \"" + key + "\" must be " + want, ErrorKind::BadInput};
+        if (!setting->read(value, s))
+            return Error{"\"symmetry\" \"" + key + "\" must be " + setting->want(),
+                         ErrorKind::BadInput};
     }
     brush.symmetry = s;
     return {};
