@@ -1,5 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // layerpaint-cli: the headless tool (docs/architecture.md §4). Needs no Qt and no display.
+#include <functional>
+#include <string>
+#include <vector>
+
 #include <CLI/CLI.hpp>
 
 #include "app/cli_commands.h"
@@ -17,21 +21,26 @@ void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
         ->check(CLI::ExistingFile);
     command->add_option("--size", camera.size, "Image size WIDTHxHEIGHT")->capture_default_str();
 }
-} // namespace
 
-int main(int argc, char** argv) {
-    CLI::App app{"LayerPaint headless tool: inspect models, capture depth layers, replay painting "
-                 "scripts and benchmark.\nMODEL is a file (.gltf .glb .obj .ply .stl .off ...) or "
-                 "builtin:trefoil, builtin:hexring, builtin:row, builtin:knot?triangles=N (1000 to "
-                 "50000000)."};
-    app.set_version_flag("--version", std::string("layerpaint-cli ") + LAYERPAINT_VERSION);
-    app.require_subcommand(1);
-
+/** Every subcommand's arguments, filled in by the parse. */
+struct CommandLine {
     std::string infoModel;
-    CLI::App* info = app.add_subcommand("info", "Print a model's summary as JSON");
-    info->add_option("MODEL", infoModel, "Model file or builtin:NAME")->required();
-
     cli::DepthLayersArgs layers;
+    cli::PaintArgs paint;
+    cli::ExportArgs exportArgs;
+    cli::BenchArgs bench;
+    std::vector<std::string> loadModels;
+    int loadRuns = 9;
+    cli::UvLayoutArgs uvLayout;
+};
+
+CLI::App* addInfoCommand(CLI::App& app, std::string& model) {
+    CLI::App* info = app.add_subcommand("info", "Print a model's summary as JSON");
+    info->add_option("MODEL", model, "Model file or builtin:NAME")->required();
+    return info;
+}
+
+CLI::App* addDepthLayersCommand(CLI::App& app, cli::DepthLayersArgs& layers) {
     CLI::App* layersCommand = app.add_subcommand(
         "layers", "Capture a view's depth layers, connectivity and regions into files");
     layersCommand->add_option("MODEL", layers.model, "Model file or builtin:NAME")->required();
@@ -52,8 +61,10 @@ int main(int argc, char** argv) {
     layersCommand->add_option("--script", layers.script,
                               "Paint script whose operations (pop-up, hide, ...) run before "
                               "visible.tif is written");
+    return layersCommand;
+}
 
-    cli::PaintArgs paint;
+CLI::App* addPaintCommand(CLI::App& app, cli::PaintArgs& paint) {
     CLI::App* paintCommand = app.add_subcommand(
         "paint", "Replay a JSON script of painting operations and save the result as a project");
     paintCommand->add_option("MODEL", paint.model, "Model file, project or builtin:NAME")
@@ -73,8 +84,10 @@ int main(int argc, char** argv) {
     paintCommand
         ->add_option("--resolution", paint.resolution, "Size of a new paint texture (512 to 8192)")
         ->check(CLI::Range(512, 8192));
+    return paintCommand;
+}
 
-    cli::ExportArgs exportArgs;
+CLI::App* addExportCommand(CLI::App& app, cli::ExportArgs& exportArgs) {
     CLI::App* exportCommand = app.add_subcommand(
         "export", "Export a project or model as glb, obj (+ mtl + png), ply, or its paint "
                   "texture as png, png16, tiff, exr");
@@ -97,8 +110,10 @@ int main(int argc, char** argv) {
     exportCommand->add_flag("--per-layer", exportArgs.perLayer,
                             "Also write each paint layer's channels and mask as PNG images "
                             "beside the export");
+    return exportCommand;
+}
 
-    cli::BenchArgs bench;
+CLI::App* addBenchCommand(CLI::App& app, cli::BenchArgs& bench) {
     CLI::App* benchCommand = app.add_subcommand(
         "bench", "Time build_layers and draw_layers against a plain z-buffer pass (medians)");
     benchCommand->add_option("MODELS", bench.models, "Models (default builtin:trefoil)");
@@ -123,18 +138,21 @@ int main(int argc, char** argv) {
                      "document's choice, 2048 on a mesh with UVs, else vertex colours)")
         ->check(CLI::Range(512, 8192));
     benchCommand->add_option("--json", bench.jsonOut, "Also write the results to this file");
+    return benchCommand;
+}
 
-    std::vector<std::string> loadModels;
-    int loadRuns = 9;
+CLI::App* addBenchLoadCommand(CLI::App& app, std::vector<std::string>& models, int& runs) {
     CLI::App* benchLoadCommand = app.add_subcommand(
         "bench-load", "Time loading models in this process and through the importer process "
                       "(medians)");
-    benchLoadCommand->add_option("MODELS", loadModels, "Model files")->required();
-    benchLoadCommand->add_option("--runs", loadRuns, "Measured runs per case")
+    benchLoadCommand->add_option("MODELS", models, "Model files")->required();
+    benchLoadCommand->add_option("--runs", runs, "Measured runs per case")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000));
+    return benchLoadCommand;
+}
 
-    cli::UvLayoutArgs uvLayout;
+CLI::App* addUvLayoutCommand(CLI::App& app, cli::UvLayoutArgs& uvLayout) {
     CLI::App* uvLayoutCommand = app.add_subcommand(
         "uv-layout", "Make an automatic UV layout for a model without texture coordinates and "
                      "print its quality figures as JSON");
@@ -166,25 +184,50 @@ int main(int argc, char** argv) {
     uvLayoutCommand->add_option("--out", uvLayout.out, "Save the laid-out mesh (.glb)");
     uvLayoutCommand->add_option("--image", uvLayout.image,
                                 "Draw the pages' charts side by side into this image (.png)");
+    return uvLayoutCommand;
+}
 
+/** A subcommand, and what runs it once it is the one parsed. */
+struct Command {
+    CLI::App* options;
+    std::function<int()> run;
+};
+
+/** Every subcommand, in the order the help lists them, reading its arguments from args. */
+std::vector<Command> addCommands(CLI::App& app, CommandLine& args) {
+    return {
+        {addInfoCommand(app, args.infoModel), [&args] { return cli::runInfo(args.infoModel); }},
+        {addDepthLayersCommand(app, args.layers),
+         [&args] { return cli::runDepthLayers(args.layers); }},
+        {addPaintCommand(app, args.paint), [&args] { return cli::runPaint(args.paint); }},
+        {addExportCommand(app, args.exportArgs),
+         [&args] { return cli::runExport(args.exportArgs); }},
+        {addBenchCommand(app, args.bench), [&args] { return cli::runBench(args.bench); }},
+        {addBenchLoadCommand(app, args.loadModels, args.loadRuns),
+         [&args] { return cli::runBenchLoad(args.loadModels, args.loadRuns); }},
+        {addUvLayoutCommand(app, args.uvLayout),
+         [&args] { return cli::runUvLayout(args.uvLayout); }},
+    };
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"LayerPaint headless tool: inspect models, capture depth layers, replay painting "
+                 "scripts and benchmark.\nMODEL is a file (.gltf .glb .obj .ply .stl .off ...) or "
+                 "builtin:trefoil, builtin:hexring, builtin:row, builtin:knot?triangles=N (1000 to "
+                 "50000000)."};
+    app.set_version_flag("--version", std::string("layerpaint-cli ") + LAYERPAINT_VERSION);
+    app.require_subcommand(1);
+    CommandLine args;
+    const std::vector<Command> commands = addCommands(app, args);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         return app.exit(e);
     }
-    if (info->parsed())
-        return cli::runInfo(infoModel);
-    if (layersCommand->parsed())
-        return cli::runDepthLayers(layers);
-    if (paintCommand->parsed())
-        return cli::runPaint(paint);
-    if (exportCommand->parsed())
-        return cli::runExport(exportArgs);
-    if (benchCommand->parsed())
-        return cli::runBench(bench);
-    if (uvLayoutCommand->parsed())
-        return cli::runUvLayout(uvLayout);
-    if (benchLoadCommand->parsed())
-        return cli::runBenchLoad(loadModels, loadRuns);
+    for (const Command& command : commands)
+        if (command.options->parsed())
+            return command.run();
     return 1;
 }
