@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -195,6 +196,326 @@ PaintLayerTimes timePaintLayers(core::Document& doc, const core::View& view, int
     return times;
 }
 
+/**
+ * One model's bench: the mesh uploaded to the plain renderer, the capturer and the compositor,
+ * and the controller as the GUI drives it (build_layers and strokes go through it).
+ */
+struct ModelBench {
+    std::string model;
+    core::Mesh mesh;
+    render::MeshRenderer renderer;
+    render::GlDepthCapturer capturer;
+    render::DepthCompositor compositor;
+    core::Document doc;
+    std::optional<render::GlConnectivityEngine> engine;
+    render::GpuConnectivity gpuConnectivity;
+    PeakMemory memory; // loading and the uploads, once per model
+    core::PaintTargetOptions strokeTargetOptions;
+};
+
+/** One size of a model's bench: its view and target, and the samples of its measured runs. */
+struct SizeBench {
+    std::string size;
+    core::View view;
+    render::OffscreenTarget target;
+    json targetJson; // the strokes' target
+    Samples samples;
+    PeakMemory memory;
+    std::vector<double> tipMoves;       // move_stroke with a textured tip turning along the path
+    std::vector<double> symmetricMoves; // and with 4-way symmetry
+    std::size_t fragments = 0, regions = 0, layerCount = 0;
+};
+
+/** What one run measures (the warm-up run's figures are dropped). */
+struct Run {
+    double plain = 0.0, build = 0.0, firstDraw = 0.0, draw = 0.0, popUp = 0.0, seeThroughDraw = 0.0,
+           cpuConnectivity = 0.0, gpuConnectivity = 0.0;
+    StrokeTimes stroke, tipStroke, symmetricStroke;
+};
+
+/** Loads model and uploads it everywhere; an Error with the message the command fails with. */
+core::Status setUpModel(ModelBench& bench, const std::string& model, const BenchArgs& args) {
+    bench.model = model;
+    PeakMemory::reset();
+    auto mesh = core::loadMesh(model);
+    bench.memory.mark("load");
+    if (!mesh)
+        return mesh.takeError();
+    bench.mesh = std::move(mesh).value();
+    for (const core::Status& s :
+         {bench.renderer.initialize(), bench.capturer.initialize(), bench.compositor.initialize()})
+        if (!s)
+            return s;
+    bench.renderer.setMesh(bench.mesh);
+    bench.capturer.setMesh(bench.mesh);
+    if (const core::Status s = bench.compositor.setMesh(bench.mesh); !s)
+        return core::Error{model + ": " + s.error()};
+    bench.doc.setMesh(bench.mesh, model);
+    bench.engine.emplace(render::parseConnectivityBackend(args.connectivity)
+                             .value_or(render::ConnectivityBackend::Auto));
+    bench.doc.setConnectivityEngine(&*bench.engine);
+    if (const core::Status s = bench.gpuConnectivity.initialize(); !s)
+        return s;
+    bench.memory.mark("mesh_upload");
+    bench.strokeTargetOptions = bench.doc.paintTargetOptions();
+    return {};
+}
+
+/**
+ * The view and offscreen target of one size, and the strokes' target, new for each size
+ * (timePaintLayers() replaces it); the history does not keep the one it replaces.
+ */
+core::Status setUpSize(ModelBench& bench, SizeBench& sized, const BenchArgs& args) {
+    CameraArgs cameraArgs = args.camera;
+    cameraArgs.size = sized.size;
+    auto view = makeView(cameraArgs, bench.mesh);
+    if (!view)
+        return view.takeError();
+    sized.view = *view;
+    if (const core::Status s = sized.target.create(sized.view.width, sized.view.height); !s)
+        return s;
+    core::PaintTargetOptions targetOptions = bench.strokeTargetOptions;
+    if (args.targetSize > 0) {
+        targetOptions.kind = core::PaintTargetKind::Texture;
+        targetOptions.resolution = args.targetSize;
+    }
+    if (const core::Status s = bench.doc.setPaintTarget(targetOptions); !s)
+        return core::Error{bench.model + ": " + s.error()};
+    bench.doc.history().clear();
+    const core::PaintTarget* strokeTarget = bench.doc.currentPaintTarget();
+    const bool strokeTexture =
+        strokeTarget && strokeTarget->kind() == core::PaintTargetKind::Texture;
+    sized.targetJson = {
+        {"kind", strokeTexture ? "texture" : "vertex-colors"},
+        {"resolution", strokeTexture ? bench.doc.paintTargetOptions().resolution : 0}};
+    sized.memory = bench.memory;
+    return {};
+}
+
+/** The plain z-buffer pass, then build_layers through the document, handed to the compositor. */
+core::Status timePlainAndBuild(ModelBench& bench, SizeBench& sized, Run& run) {
+    render::DrawOptions plainOptions;
+    plainOptions.cullBackFaces = true;
+    PeakMemory::reset();
+    run.plain = render::timePlainPass(bench.renderer, sized.target, sized.view, plainOptions);
+    sized.memory.mark("plain_pass");
+    const auto start = Clock::now();
+    if (const core::Status s = bench.doc.buildDepthLayers(bench.capturer, sized.view); !s)
+        return core::Error{bench.model + ": " + s.error()};
+    run.build = msSince(start);
+    sized.memory.mark("build_layers");
+    if (const core::Status s = bench.compositor.setDepthLayers(*bench.doc.depthLayers()); !s)
+        return core::Error{bench.model + ": " + s.error()};
+    return {};
+}
+
+/**
+ * The draws of the built layers: the first after the build, a later one, a click-to-pop-up and a
+ * draw with see-through pop-ups. Leaves the region order as the build made it.
+ */
+void timeDraws(ModelBench& bench, SizeBench& sized, Run& run) {
+    render::DepthCompositor& compositor = bench.compositor;
+    core::Document& doc = bench.doc;
+    sized.target.bind();
+    // The first draw after a build also shades every fragment once; later draws (paint,
+    // pop-up, hover) only pick and compose. Both are reported.
+    const auto timedDraw = [&](const render::CompositeOptions& options) {
+        glFinish();
+        const auto drawStart = Clock::now();
+        compositor.draw(options);
+        glFinish();
+        return msSince(drawStart);
+    };
+    run.firstDraw = timedDraw({});
+    run.draw = timedDraw({});
+    // A click-to-pop-up at the centre until the picture shows it: the order, the ranks and a
+    // draw that picks again. Then a draw with see-through pop-ups.
+    glFinish();
+    const auto popStart = Clock::now();
+    doc.popUpAt({float(sized.view.width) / 2.0f, float(sized.view.height) / 2.0f});
+    compositor.setRegionRanks(doc.regionOrder().prunedRanks(false));
+    compositor.draw({});
+    glFinish();
+    run.popUp = msSince(popStart);
+    render::CompositeOptions seeThrough;
+    seeThrough.popUpOpacity = 0.55f;
+    compositor.setRegionRanks(doc.regionOrder().prunedRanks(true));
+    timedDraw(seeThrough); // picks again, keeping the fragments under see-through ones
+    run.seeThroughDraw = timedDraw(seeThrough);
+    sized.memory.mark("draw_layers");
+    core::RegionOrder initial = doc.regionOrder();
+    initial.reset();
+    doc.setRegionOrder(std::move(initial)); // strokes start as they always did
+}
+
+/** Both connectivity engines on the same stack, so the choice can be checked. */
+void timeConnectivityEngines(ModelBench& bench, SizeBench& sized, Run& run) {
+    const core::DepthLayers* layers = bench.doc.depthLayers();
+    core::ConnectivityOptions connectivityOptions;
+    connectivityOptions.unitScale = core::unitScale(bench.mesh);
+    const auto cpuStart = Clock::now();
+    core::computeConnectivity(layers->stack, connectivityOptions, &layers->geometry);
+    run.cpuConnectivity = msSince(cpuStart);
+    run.gpuConnectivity = 0.0;
+    if (!bench.gpuConnectivity.compute(layers->stack, connectivityOptions, &layers->geometry,
+                                       &run.gpuConnectivity))
+        run.gpuConnectivity = -1.0;
+    sized.memory.mark("connectivity_cpu_gpu");
+}
+
+/** The bench stroke with the round brush, a textured tip, and the tip with 4-way symmetry. */
+void timeStrokes(ModelBench& bench, SizeBench& sized, Run& run) {
+    core::Document& doc = bench.doc;
+    run.stroke = timeStroke(doc, sized.view);
+    const core::Brush roundBrush = doc.brush();
+    doc.brush().tip = "chalk";
+    doc.brush().angleMode = core::TipAngleMode::Stroke;
+    doc.brush().jitter.angle = 20.0f;
+    run.tipStroke = timeStroke(doc, sized.view);
+    // The same textured tip with 4-way symmetry (mirror X and Z: three copies).
+    doc.brush().symmetry.mirrorX = true;
+    doc.brush().symmetry.mirrorZ = true;
+    run.symmetricStroke = timeStroke(doc, sized.view);
+    doc.brush() = roundBrush;
+    sized.memory.mark("strokes");
+}
+
+void append(std::vector<double>& to, const std::vector<double>& values) {
+    to.insert(to.end(), values.begin(), values.end());
+}
+
+/** A measured run's figures added to the size's samples. */
+void record(const ModelBench& bench, SizeBench& sized, const Run& run) {
+    Samples& samples = sized.samples;
+    append(sized.tipMoves, run.tipStroke.moves);
+    append(sized.symmetricMoves, run.symmetricStroke.moves);
+    append(samples.startStroke, run.stroke.starts);
+    append(samples.moveStroke, run.stroke.moves);
+    append(samples.dab, run.stroke.dabs);
+    const core::DepthLayers* layers = bench.doc.depthLayers();
+    const core::DepthLayerTimings& t = layers->timings;
+    samples.plain.push_back(run.plain);
+    samples.captureGpu.push_back(t.capture.gpuMs);
+    samples.captureResolve.push_back(t.capture.resolveMs);
+    samples.connectivity.push_back(t.connectivityMs);
+    samples.surface.push_back(t.surfaceMs);
+    samples.segmentation.push_back(t.segmentationMs - t.graphMs);
+    samples.graph.push_back(t.graphMs);
+    samples.buildDepthLayers.push_back(run.build);
+    samples.drawLayers.push_back(run.draw);
+    samples.firstDraw.push_back(run.firstDraw);
+    samples.popUp.push_back(run.popUp);
+    samples.seeThroughDraw.push_back(run.seeThroughDraw);
+    samples.connectivityCpu.push_back(run.cpuConnectivity);
+    samples.connectivityGpu.push_back(run.gpuConnectivity);
+    sized.fragments = layers->stack.fragmentCount();
+    sized.regions = layers->segmentation.graph.regions.size();
+    sized.layerCount = layers->stack.maxLayers();
+}
+
+/**
+ * One warm-up run (shader compilation, buffer growth), then the measured runs, alternating the
+ * baseline with the measured work so load affects both alike.
+ */
+core::Status runSize(ModelBench& bench, SizeBench& sized, int runs) {
+    for (int r = -1; r < runs; ++r) {
+        Run run;
+        if (const core::Status s = timePlainAndBuild(bench, sized, run); !s)
+            return s;
+        timeDraws(bench, sized, run);
+        timeConnectivityEngines(bench, sized, run);
+        timeStrokes(bench, sized, run);
+        if (r >= 0)
+            record(bench, sized, run);
+    }
+    return {};
+}
+
+/** The result row of one model at one size. */
+json resultRow(const ModelBench& bench, const SizeBench& sized, const PaintLayerTimes& paintLayers,
+               int runs) {
+    const Samples& samples = sized.samples;
+    const double plain = median(samples.plain), build = median(samples.buildDepthLayers);
+    return {
+        {"model", bench.model},
+        {"vertices", bench.mesh.vertexCount()},
+        {"triangles", bench.mesh.triangleCount()},
+        {"size", sized.size},
+        {"runs", runs},
+        {"layers", sized.layerCount},
+        {"fragments", sized.fragments},
+        {"regions", sized.regions},
+        {"plain_pass_ms", plain},
+        {"build_layers_ms", build},
+        {"build_layers_over_plain", plain > 0 ? build / plain : 0.0},
+        {"capture_gpu_ms", median(samples.captureGpu)},
+        {"capture_resolve_ms", median(samples.captureResolve)},
+        {"connectivity_ms", median(samples.connectivity)},
+        {"connectivity_engine", render::connectivityBackendName(bench.engine->backend())},
+        {"connectivity_cpu_ms", median(samples.connectivityCpu)},
+        {"connectivity_gpu_ms", median(samples.connectivityGpu)},
+        {"surface_planes_ms", median(samples.surface)},
+        {"segmentation_ms", median(samples.segmentation)},
+        {"graph_ms", median(samples.graph)},
+        {"draw_layers_ms", median(samples.drawLayers)},
+        {"first_draw_after_build_ms", median(samples.firstDraw)},
+        {"pop_up_ms", median(samples.popUp)},
+        {"draw_layers_see_through_ms", median(samples.seeThroughDraw)},
+        {"start_stroke_ms", median(samples.startStroke)},
+        {"move_stroke_ms", median(samples.moveStroke)},
+        {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
+        {"dab_on_target_ms", median(samples.dab)},
+        {"stroke_target", sized.targetJson},
+        {"move_stroke_textured_tip_ms", median(sized.tipMoves)},
+        {"move_stroke_symmetric_4_ms", median(sized.symmetricMoves)},
+        {"peak_rss_mib", sized.memory.toJson()},
+        {"paint_layers",
+         {{"texture", kPaintLayerTexture},
+          {"layers", kPaintLayers},
+          {"move_stroke_no_layers_ms", median(paintLayers.moveNone)},
+          {"dab_no_layers_ms", median(paintLayers.dabNone)},
+          {"move_stroke_ms", median(paintLayers.moveLayers)},
+          {"dab_on_top_layer_ms", median(paintLayers.dabLayers)},
+          {"stack_bytes", paintLayers.stackBytes},
+          {"target_bytes", paintLayers.targetBytes},
+          {"error", paintLayers.error}}},
+    };
+}
+
+/** The line on stderr that sums up one model at one size. */
+void printSummary(const ModelBench& bench, const SizeBench& sized) {
+    const Samples& samples = sized.samples;
+    const double plain = median(samples.plain), build = median(samples.buildDepthLayers);
+    std::cerr << bench.model << ' ' << sized.size << ": build_layers " << build
+              << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain
+              << " ms), draw_layers " << median(samples.drawLayers) << " ms, start_stroke "
+              << median(samples.startStroke) << " ms, move_stroke " << median(samples.moveStroke)
+              << " ms, peak RSS " << sized.memory.toJson()["all"].get<double>() << " MiB\n";
+}
+
+/** Every size of one model, each a row of results; an Error with the command's message. */
+core::Status benchModel(const std::string& model, const BenchArgs& args, int runs, json& results) {
+    ModelBench bench;
+    if (const core::Status s = setUpModel(bench, model, args); !s)
+        return s;
+    for (const std::string& size : args.sizes) {
+        SizeBench sized;
+        sized.size = size;
+        if (const core::Status s = setUpSize(bench, sized, args); !s)
+            return s;
+        if (const core::Status s = runSize(bench, sized, runs); !s)
+            return s;
+        const PaintLayerTimes paintLayers = timePaintLayers(bench.doc, sized.view, runs);
+        sized.memory.mark("paint_layers");
+        json row = resultRow(bench, sized, paintLayers, runs);
+        printSummary(bench, sized);
+        results.push_back(std::move(row));
+    }
+    bench.compositor.release();
+    bench.renderer.release();
+    return {};
+}
+
 } // namespace
 
 int runBench(const BenchArgs& args) {
@@ -206,224 +527,9 @@ int runBench(const BenchArgs& args) {
     std::vector<std::string> models = args.models;
     if (models.empty())
         models = {"builtin:trefoil"};
-
-    for (const std::string& model : models) {
-        PeakMemory modelMemory; // loading and the uploads, once per model
-        PeakMemory::reset();
-        auto mesh = core::loadMesh(model);
-        modelMemory.mark("load");
-        if (!mesh)
-            return fail(mesh.error());
-        render::MeshRenderer renderer;
-        render::GlDepthCapturer capturer;
-        render::DepthCompositor compositor;
-        for (const core::Status& s :
-             {renderer.initialize(), capturer.initialize(), compositor.initialize()})
-            if (!s)
-                return fail(s.error());
-        renderer.setMesh(*mesh);
-        capturer.setMesh(*mesh);
-        if (const core::Status s = compositor.setMesh(*mesh); !s)
-            return fail(model + ": " + s.error());
-        // The controller, as the GUI drives it: build_layers and strokes go through it.
-        core::Document doc;
-        doc.setMesh(*mesh, model);
-        render::GlConnectivityEngine engine(render::parseConnectivityBackend(args.connectivity)
-                                                .value_or(render::ConnectivityBackend::Auto));
-        doc.setConnectivityEngine(&engine);
-        render::GpuConnectivity gpuConnectivity;
-        if (const core::Status s = gpuConnectivity.initialize(); !s)
+    for (const std::string& model : models)
+        if (const core::Status s = benchModel(model, args, runs, results); !s)
             return fail(s.error());
-        modelMemory.mark("mesh_upload");
-
-        const core::PaintTargetOptions strokeTargetOptions = doc.paintTargetOptions();
-        for (const std::string& size : args.sizes) {
-            CameraArgs cameraArgs = args.camera;
-            cameraArgs.size = size;
-            auto view = makeView(cameraArgs, *mesh);
-            if (!view)
-                return fail(view.error());
-            render::OffscreenTarget target;
-            if (const core::Status s = target.create(view->width, view->height); !s)
-                return fail(s.error());
-
-            // The strokes' target, new for each size (timePaintLayers() below replaces it); the
-            // history does not keep the one it replaces.
-            core::PaintTargetOptions targetOptions = strokeTargetOptions;
-            if (args.targetSize > 0) {
-                targetOptions.kind = core::PaintTargetKind::Texture;
-                targetOptions.resolution = args.targetSize;
-            }
-            if (const core::Status s = doc.setPaintTarget(targetOptions); !s)
-                return fail(model + ": " + s.error());
-            doc.history().clear();
-            const core::PaintTarget* strokeTarget = doc.currentPaintTarget();
-            const bool strokeTexture =
-                strokeTarget && strokeTarget->kind() == core::PaintTargetKind::Texture;
-            const json targetJson = {
-                {"kind", strokeTexture ? "texture" : "vertex-colors"},
-                {"resolution", strokeTexture ? doc.paintTargetOptions().resolution : 0}};
-            Samples samples;
-            PeakMemory memory = modelMemory;
-            std::vector<double> tipMoves; // move_stroke with a textured tip turning along the path
-            std::vector<double> symmetricMoves; // and with 4-way symmetry
-            std::size_t fragments = 0, regions = 0, layerCount = 0;
-            // One warm-up round (shader compilation, buffer growth), then the measured runs,
-            // alternating the baseline with the measured work so load affects both alike.
-            for (int run = -1; run < runs; ++run) {
-                render::DrawOptions plainOptions;
-                plainOptions.cullBackFaces = true;
-                PeakMemory::reset();
-                const double plain = render::timePlainPass(renderer, target, *view, plainOptions);
-                memory.mark("plain_pass");
-                const auto start = Clock::now();
-                if (const core::Status s = doc.buildDepthLayers(capturer, *view); !s)
-                    return fail(model + ": " + s.error());
-                const double build = msSince(start);
-                memory.mark("build_layers");
-                const core::DepthLayers* layers = doc.depthLayers();
-                if (const core::Status s = compositor.setDepthLayers(*layers); !s)
-                    return fail(model + ": " + s.error());
-                target.bind();
-                // The first draw after a build also shades every fragment once; later draws
-                // (paint, pop-up, hover) only pick and compose. Both are reported.
-                const auto timedDraw = [&](const render::CompositeOptions& options) {
-                    glFinish();
-                    const auto drawStart = Clock::now();
-                    compositor.draw(options);
-                    glFinish();
-                    return msSince(drawStart);
-                };
-                const double firstDraw = timedDraw({});
-                const double draw = timedDraw({});
-                // A click-to-pop-up at the centre until the picture shows it: the order, the
-                // ranks and a draw that picks again. Then a draw with see-through pop-ups.
-                glFinish();
-                const auto popStart = Clock::now();
-                doc.popUpAt({float(view->width) / 2.0f, float(view->height) / 2.0f});
-                compositor.setRegionRanks(doc.regionOrder().prunedRanks(false));
-                compositor.draw({});
-                glFinish();
-                const double popUp = msSince(popStart);
-                render::CompositeOptions seeThrough;
-                seeThrough.popUpOpacity = 0.55f;
-                compositor.setRegionRanks(doc.regionOrder().prunedRanks(true));
-                timedDraw(seeThrough); // picks again, keeping the fragments under see-through ones
-                const double seeThroughDraw = timedDraw(seeThrough);
-                memory.mark("draw_layers");
-                core::RegionOrder initial = doc.regionOrder();
-                initial.reset();
-                doc.setRegionOrder(std::move(initial)); // strokes start as they always did
-                // Both connectivity engines on the same stack, so the choice can be checked.
-                core::ConnectivityOptions connectivityOptions;
-                connectivityOptions.unitScale = core::unitScale(*mesh);
-                const auto cpuStart = Clock::now();
-                core::computeConnectivity(layers->stack, connectivityOptions, &layers->geometry);
-                const double cpuConnectivity = msSince(cpuStart);
-                double gpuConnectivityMs = 0.0;
-                if (!gpuConnectivity.compute(layers->stack, connectivityOptions, &layers->geometry,
-                                             &gpuConnectivityMs))
-                    gpuConnectivityMs = -1.0;
-                memory.mark("connectivity_cpu_gpu");
-                const StrokeTimes stroke = timeStroke(doc, *view);
-                const core::Brush roundBrush = doc.brush();
-                doc.brush().tip = "chalk";
-                doc.brush().angleMode = core::TipAngleMode::Stroke;
-                doc.brush().jitter.angle = 20.0f;
-                const StrokeTimes tipStroke = timeStroke(doc, *view);
-                // The same textured tip with 4-way symmetry (mirror X and Z: three copies).
-                doc.brush().symmetry.mirrorX = true;
-                doc.brush().symmetry.mirrorZ = true;
-                const StrokeTimes symmetricStroke = timeStroke(doc, *view);
-                doc.brush() = roundBrush;
-                memory.mark("strokes");
-                if (run < 0)
-                    continue;
-                tipMoves.insert(tipMoves.end(), tipStroke.moves.begin(), tipStroke.moves.end());
-                symmetricMoves.insert(symmetricMoves.end(), symmetricStroke.moves.begin(),
-                                      symmetricStroke.moves.end());
-                samples.startStroke.insert(samples.startStroke.end(), stroke.starts.begin(),
-                                           stroke.starts.end());
-                samples.moveStroke.insert(samples.moveStroke.end(), stroke.moves.begin(),
-                                          stroke.moves.end());
-                samples.dab.insert(samples.dab.end(), stroke.dabs.begin(), stroke.dabs.end());
-                const core::DepthLayerTimings& t = layers->timings;
-                samples.plain.push_back(plain);
-                samples.captureGpu.push_back(t.capture.gpuMs);
-                samples.captureResolve.push_back(t.capture.resolveMs);
-                samples.connectivity.push_back(t.connectivityMs);
-                samples.surface.push_back(t.surfaceMs);
-                samples.segmentation.push_back(t.segmentationMs - t.graphMs);
-                samples.graph.push_back(t.graphMs);
-                samples.buildDepthLayers.push_back(build);
-                samples.drawLayers.push_back(draw);
-                samples.firstDraw.push_back(firstDraw);
-                samples.popUp.push_back(popUp);
-                samples.seeThroughDraw.push_back(seeThroughDraw);
-                samples.connectivityCpu.push_back(cpuConnectivity);
-                samples.connectivityGpu.push_back(gpuConnectivityMs);
-                fragments = layers->stack.fragmentCount();
-                regions = layers->segmentation.graph.regions.size();
-                layerCount = layers->stack.maxLayers();
-            }
-            const PaintLayerTimes paintLayers = timePaintLayers(doc, *view, runs);
-            memory.mark("paint_layers");
-            const double plain = median(samples.plain), build = median(samples.buildDepthLayers);
-            json row = {
-                {"model", model},
-                {"vertices", mesh->vertexCount()},
-                {"triangles", mesh->triangleCount()},
-                {"size", size},
-                {"runs", runs},
-                {"layers", layerCount},
-                {"fragments", fragments},
-                {"regions", regions},
-                {"plain_pass_ms", plain},
-                {"build_layers_ms", build},
-                {"build_layers_over_plain", plain > 0 ? build / plain : 0.0},
-                {"capture_gpu_ms", median(samples.captureGpu)},
-                {"capture_resolve_ms", median(samples.captureResolve)},
-                {"connectivity_ms", median(samples.connectivity)},
-                {"connectivity_engine", render::connectivityBackendName(engine.backend())},
-                {"connectivity_cpu_ms", median(samples.connectivityCpu)},
-                {"connectivity_gpu_ms", median(samples.connectivityGpu)},
-                {"surface_planes_ms", median(samples.surface)},
-                {"segmentation_ms", median(samples.segmentation)},
-                {"graph_ms", median(samples.graph)},
-                {"draw_layers_ms", median(samples.drawLayers)},
-                {"first_draw_after_build_ms", median(samples.firstDraw)},
-                {"pop_up_ms", median(samples.popUp)},
-                {"draw_layers_see_through_ms", median(samples.seeThroughDraw)},
-                {"start_stroke_ms", median(samples.startStroke)},
-                {"move_stroke_ms", median(samples.moveStroke)},
-                {"move_stroke_p95_ms", percentile(samples.moveStroke, 0.95)},
-                {"dab_on_target_ms", median(samples.dab)},
-                {"stroke_target", targetJson},
-                {"move_stroke_textured_tip_ms", median(tipMoves)},
-                {"move_stroke_symmetric_4_ms", median(symmetricMoves)},
-                {"peak_rss_mib", memory.toJson()},
-                {"paint_layers",
-                 {{"texture", kPaintLayerTexture},
-                  {"layers", kPaintLayers},
-                  {"move_stroke_no_layers_ms", median(paintLayers.moveNone)},
-                  {"dab_no_layers_ms", median(paintLayers.dabNone)},
-                  {"move_stroke_ms", median(paintLayers.moveLayers)},
-                  {"dab_on_top_layer_ms", median(paintLayers.dabLayers)},
-                  {"stack_bytes", paintLayers.stackBytes},
-                  {"target_bytes", paintLayers.targetBytes},
-                  {"error", paintLayers.error}}},
-            };
-            std::cerr << model << ' ' << size << ": build_layers " << build
-                      << " ms = " << (plain > 0 ? build / plain : 0.0) << " × plain pass (" << plain
-                      << " ms), draw_layers " << median(samples.drawLayers) << " ms, start_stroke "
-                      << median(samples.startStroke) << " ms, move_stroke "
-                      << median(samples.moveStroke) << " ms, peak RSS "
-                      << memory.toJson()["all"].get<double>() << " MiB\n";
-            results.push_back(std::move(row));
-        }
-        compositor.release();
-        renderer.release();
-    }
     const json out = {{"renderer", render::HeadlessContext::rendererName()},
                       {"threads", std::thread::hardware_concurrency()},
                       {"results", results}};
