@@ -263,72 +263,99 @@ core::Status writeVisible(const std::filesystem::path& dir, const DepthLayersArg
                             core::PixelType::UInt32, visible.data());
 }
 
-int runDepthLayers(const DepthLayersArgs& args) {
+namespace {
+
+/** What `layers` works with: the model, its view, the capturer and the depth layers built. */
+struct DepthLayersRun {
+    const DepthLayersArgs& args;
+    core::Mesh mesh;
+    core::View view;
+    std::unique_ptr<render::HeadlessContext> context; // outlives the capturer
+    std::unique_ptr<render::GlConnectivityEngine> engine;
+    std::unique_ptr<core::DepthCapturer> capturer;
+    core::DepthLayerOptions options;
+    core::DepthLayers layers;
+};
+
+/** The script checked, the model and its view, the output folder; an Error to fail with. */
+core::Status loadModelAndView(DepthLayersRun& run) {
+    const DepthLayersArgs& args = run.args;
     if (!args.script.empty())
         if (auto script = core::readScript(args.script); !script)
-            return fail(script.error()); // before any work
+            return script.takeError(); // before any work
     auto mesh = core::loadMesh(args.model);
     if (!mesh)
-        return fail(mesh.error());
-    auto view = makeView(args.camera, *mesh);
+        return mesh.takeError();
+    run.mesh = std::move(mesh).value();
+    auto view = makeView(args.camera, run.mesh);
     if (!view)
-        return fail(view.error());
+        return view.takeError();
+    run.view = *view;
     std::error_code ec;
     std::filesystem::create_directories(args.outDir, ec);
     if (ec)
-        return fail(args.outDir + ": " + ec.message());
+        return core::Error{args.outDir + ": " + ec.message()};
+    return {};
+}
 
-    std::unique_ptr<render::HeadlessContext> context;
-    std::unique_ptr<render::GlConnectivityEngine> engine;
+/** The capturer (GL or CPU) and, with OpenGL, the connectivity engine; an Error to fail with. */
+core::Status makeCapturerAndEngine(DepthLayersRun& run) {
+    const DepthLayersArgs& args = run.args;
     const auto backend = render::parseConnectivityBackend(args.connectivity);
     if (args.cpuCapture && backend == render::ConnectivityBackend::Gpu)
-        return fail("--connectivity gpu needs OpenGL: drop --cpu");
-    auto made = makeCapturer(args.cpuCapture, context);
+        return core::Error{"--connectivity gpu needs OpenGL: drop --cpu"};
+    auto made = makeCapturer(args.cpuCapture, run.context);
     if (!made)
-        return fail(made.error());
-    std::unique_ptr<core::DepthCapturer> capturer = std::move(made).value();
+        return made.takeError();
+    run.capturer = std::move(made).value();
     if (!args.cpuCapture)
-        engine = std::make_unique<render::GlConnectivityEngine>(
+        run.engine = std::make_unique<render::GlConnectivityEngine>(
             backend.value_or(render::ConnectivityBackend::Auto));
-    capturer->setMesh(*mesh);
+    run.capturer->setMesh(run.mesh);
+    return {};
+}
 
-    core::DepthLayerOptions options;
+/** The segmentation options of the command line; an Error for a bad --threshold. */
+core::Status readDepthLayerOptions(DepthLayersRun& run) {
+    const DepthLayersArgs& args = run.args;
     if (args.threshold) {
         if (!(*args.threshold > 0.0f) || !std::isfinite(*args.threshold))
-            return fail("--threshold must be a positive number");
-        options.threshold = *args.threshold;
+            return core::Error{"--threshold must be a positive number"};
+        run.options.threshold = *args.threshold;
     }
-    options.test = args.plainTest ? core::ConnectionTest::Plain : core::ConnectionTest::Surface;
-    options.cullBackFaces = !args.twoSided;
-    const core::MeshTopology topology = core::buildMeshTopology(*mesh);
-    auto layers = core::buildDepthLayers(*capturer, *mesh, topology, *view, options, engine.get());
-    if (!layers)
-        return fail(args.model + ": " + layers.error());
+    run.options.test = args.plainTest ? core::ConnectionTest::Plain : core::ConnectionTest::Surface;
+    run.options.cullBackFaces = !args.twoSided;
+    return {};
+}
 
-    const std::filesystem::path dir(args.outDir);
-    const std::vector<std::uint32_t> perLayer = layers->stack.fragmentsPerLayer();
+/** Each depth layer's images, regions.json and mesh.ply. */
+core::Status writeLayerFiles(const DepthLayersRun& run, const std::filesystem::path& dir) {
+    const std::vector<std::uint32_t> perLayer = run.layers.stack.fragmentsPerLayer();
     for (std::uint32_t layer = 1; layer <= perLayer.size(); ++layer)
-        if (const core::Status s = writeLayerImages(dir, *layers, layer); !s)
-            return fail(s.error());
+        if (const core::Status s = writeLayerImages(dir, run.layers, layer); !s)
+            return s;
     if (const core::Status s =
-            writeJson((dir / "regions.json").string(), regionsJson(layers->segmentation.graph));
+            writeJson((dir / "regions.json").string(), regionsJson(run.layers.segmentation.graph));
         !s)
-        return fail(s.error());
-    if (const core::Status s = writePly((dir / "mesh.ply").string(), *mesh); !s)
-        return fail(s.error());
+        return s;
+    return writePly((dir / "mesh.ply").string(), run.mesh);
+}
 
-    // How well each connection test follows the mesh (docs/architecture.md §3 step 2's two
-    // properties).
+/**
+ * How well each connection test follows the mesh (docs/architecture.md §3 step 2's two
+ * properties).
+ */
+json connectivityQuality(const DepthLayersRun& run, const core::MeshTopology& topology) {
     json quality;
     for (const core::ConnectionTest test :
          {core::ConnectionTest::Plain, core::ConnectionTest::Surface}) {
         core::ConnectivityOptions connectivity;
         connectivity.test = test;
-        connectivity.threshold = options.threshold;
-        connectivity.unitScale = core::unitScale(*mesh);
+        connectivity.threshold = run.options.threshold;
+        connectivity.unitScale = core::unitScale(run.mesh);
+        const core::DepthStack& stack = run.layers.stack;
         const core::ConnectivityQuality q = core::measureConnectivity(
-            layers->stack,
-            core::computeConnectivity(layers->stack, connectivity, &layers->geometry), topology);
+            stack, core::computeConnectivity(stack, connectivity, &run.layers.geometry), topology);
         quality[test == core::ConnectionTest::Plain ? "plain" : "surface"] = {
             {"same_triangle_pairs", q.sameTrianglePairs},
             {"same_triangle_disconnected_share", q.sameTriangleDisconnectedShare()},
@@ -337,27 +364,35 @@ int runDepthLayers(const DepthLayersArgs& args) {
             {"connected_pairs", q.connectedPairs},
             {"cross_component_share", q.crossComponentShare()}};
     }
+    return quality;
+}
 
-    const core::DepthLayerTimings& t = layers->timings;
-    const json summary = {
+/** summary.json: the view, the options, the counts, quality and the timings. */
+json depthLayersSummary(const DepthLayersRun& run, const json& quality) {
+    const DepthLayersArgs& args = run.args;
+    const core::DepthLayers& layers = run.layers;
+    const core::View& view = run.view;
+    const std::vector<std::uint32_t> perLayer = layers.stack.fragmentsPerLayer();
+    const core::DepthLayerTimings& t = layers.timings;
+    return {
         {"model", args.model},
-        {"width", view->width},
-        {"height", view->height},
-        {"triangles", mesh->triangleCount()},
+        {"width", view.width},
+        {"height", view.height},
+        {"triangles", run.mesh.triangleCount()},
         {"test", args.plainTest ? "plain" : "surface"},
-        {"threshold", options.threshold},
+        {"threshold", run.options.threshold},
         {"two_sided", args.twoSided},
         {"capture", args.cpuCapture ? "cpu" : "gl"},
         {"connectivity_engine",
-         engine ? render::connectivityBackendName(engine->backend()) : "cpu"},
+         run.engine ? render::connectivityBackendName(run.engine->backend()) : "cpu"},
         {"layers", perLayer.size()},
-        {"fragments", layers->stack.fragmentCount()},
+        {"fragments", layers.stack.fragmentCount()},
         {"fragments_per_layer", perLayer},
-        {"regions", layers->segmentation.graph.regions.size()},
-        {"links_truncated", layers->connectivity.truncated},
+        {"regions", layers.segmentation.graph.regions.size()},
+        {"links_truncated", layers.connectivity.truncated},
         {"connectivity_quality", quality},
-        {"view", std::vector<float>(glm::value_ptr(view->view), glm::value_ptr(view->view) + 16)},
-        {"proj", std::vector<float>(glm::value_ptr(view->proj), glm::value_ptr(view->proj) + 16)},
+        {"view", std::vector<float>(glm::value_ptr(view.view), glm::value_ptr(view.view) + 16)},
+        {"proj", std::vector<float>(glm::value_ptr(view.proj), glm::value_ptr(view.proj) + 16)},
         {"timings_ms",
          {{"capture_gpu", t.capture.gpuMs},
           {"capture_resolve", t.capture.resolveMs},
@@ -367,8 +402,31 @@ int runDepthLayers(const DepthLayersArgs& args) {
           {"graph", t.graphMs},
           {"build_layers", t.totalMs()}}},
     };
-    if (const core::Status s = writeVisible(dir, args, *mesh, *capturer, engine.get(), options,
-                                            std::move(layers).value(), *view);
+}
+
+} // namespace
+
+int runDepthLayers(const DepthLayersArgs& args) {
+    DepthLayersRun run{args};
+    if (const core::Status s = loadModelAndView(run); !s)
+        return fail(s.error());
+    if (const core::Status s = makeCapturerAndEngine(run); !s)
+        return fail(s.error());
+    if (const core::Status s = readDepthLayerOptions(run); !s)
+        return fail(s.error());
+    const core::MeshTopology topology = core::buildMeshTopology(run.mesh);
+    auto layers = core::buildDepthLayers(*run.capturer, run.mesh, topology, run.view, run.options,
+                                         run.engine.get());
+    if (!layers)
+        return fail(args.model + ": " + layers.error());
+    run.layers = std::move(layers).value();
+
+    const std::filesystem::path dir(args.outDir);
+    if (const core::Status s = writeLayerFiles(run, dir); !s)
+        return fail(s.error());
+    const json summary = depthLayersSummary(run, connectivityQuality(run, topology));
+    if (const core::Status s = writeVisible(dir, args, run.mesh, *run.capturer, run.engine.get(),
+                                            run.options, std::move(run.layers), run.view);
         !s)
         return fail(s.error());
     if (const core::Status s = writeJson((dir / "summary.json").string(), summary); !s)
