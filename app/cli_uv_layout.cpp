@@ -55,21 +55,7 @@ core::Status writeChartImage(const std::string& path, const core::UvLayout& layo
     return core::writeImage(path, int(width), size, 3, core::PixelType::UInt8, rgb.data());
 }
 
-} // namespace
-
-int runUvLayout(const UvLayoutArgs& args) {
-    const auto loadStart = Clock::now();
-    core::Result<core::Mesh> mesh = core::loadMesh(args.model);
-    if (!mesh)
-        return fail(mesh.error());
-    const double loadSeconds = msSince(loadStart) / 1000.0;
-    const bool hadUvs = mesh->hasUvs();
-    if (hadUvs && !args.keepUvs)
-        return fail(args.model + ": the model has texture coordinates already (--replace-uvs "
-                                 "lays it out anyway)");
-    if (hadUvs)
-        mesh->uvs.clear();
-
+core::UvLayoutOptions layoutOptions(const UvLayoutArgs& args) {
     core::UvLayoutOptions options;
     options.resolution = args.resolution;
     options.padding = args.padding;
@@ -79,28 +65,34 @@ int runUvLayout(const UvLayoutArgs& args) {
         options.maxNormalDeviationDegrees = args.maxDeviation;
     if (args.sharpEdge > 0.0f)
         options.sharpEdgeDegrees = args.sharpEdge;
-    const auto start = Clock::now();
-    core::Result<core::UvLayout> layout = core::makeUvLayout(*mesh, options);
-    const double seconds = msSince(start) / 1000.0;
-    if (!layout)
-        return fail(args.model + ": " + layout.error());
-    const core::UvLayoutMetrics m = core::measureUvLayout(*layout, args.threads);
+    return options;
+}
 
-    const nlohmann::json out = {
+/** What a layout run measured, beside the layout's own figures. */
+struct LayoutRun {
+    bool hadUvs = false;
+    double loadSeconds = 0.0, layoutSeconds = 0.0;
+};
+
+nlohmann::json figuresJson(const UvLayoutArgs& args, const core::Mesh& mesh,
+                           const core::UvLayoutOptions& options, const core::UvLayout& layout,
+                           const LayoutRun& run) {
+    const core::UvLayoutMetrics m = core::measureUvLayout(layout, args.threads);
+    return {
         {"file", args.model},
         {"triangles", m.triangles},
-        {"vertices_in", mesh->vertexCount()},
+        {"vertices_in", mesh.vertexCount()},
         {"vertices_out", m.vertices},
-        {"had_uvs", hadUvs},
-        {"vertex_spacing_px", core::vertexSpacingPixels(*mesh)},
+        {"had_uvs", run.hadUvs},
+        {"vertex_spacing_px", core::vertexSpacingPixels(mesh)},
         {"default_target",
-         core::defaultTargetKind(*mesh, core::Brush{}.radius) == core::PaintTargetKind::Texture
+         core::defaultTargetKind(mesh, core::Brush{}.radius) == core::PaintTargetKind::Texture
              ? "texture"
              : "vertex-colors"},
-        {"resolution", layout->resolution},
-        {"padding", layout->padding},
+        {"resolution", layout.resolution},
+        {"padding", layout.padding},
         {"threads", core::resolveThreadCount(args.threads)},
-        {"texels_per_unit", layout->texelsPerUnit},
+        {"texels_per_unit", layout.texelsPerUnit},
         {"max_normal_deviation_degrees", options.maxNormalDeviationDegrees},
         {"sharp_edge_degrees", options.sharpEdgeDegrees},
         {"charts", m.charts},
@@ -115,26 +107,55 @@ int runUvLayout(const UvLayoutArgs& args) {
         {"collapsed_triangles", m.collapsedTriangles},
         {"seam_length", m.seamLength},
         {"seam_length_unit_cube", m.seamLengthUnitCube},
-        {"load_seconds", loadSeconds},
-        {"layout_seconds", seconds},
+        {"load_seconds", run.loadSeconds},
+        {"layout_seconds", run.layoutSeconds},
     };
-    std::cout << jsonText(out, 2) << '\n';
+}
+
+/** The --json file, the --image of the charts and the --out mesh, each if asked for. */
+core::Status writeOutputs(const UvLayoutArgs& args, const nlohmann::json& figures,
+                          const core::UvLayout& layout) {
     if (!args.jsonOut.empty()) {
         std::ofstream file(args.jsonOut, std::ios::trunc);
-        file << jsonText(out, 2) << '\n';
+        file << jsonText(figures, 2) << '\n';
         if (!file.flush())
-            return fail(args.jsonOut + ": cannot write the file");
+            return core::Error{args.jsonOut + ": cannot write the file"};
     }
-    if (!args.image.empty()) {
-        const core::Status written = writeChartImage(args.image, *layout);
-        if (!written)
-            return fail(written.error());
-    }
-    if (!args.out.empty()) {
-        const core::Status saved = core::saveGlb(args.out, layout->mesh, {}, {}, false);
-        if (!saved)
-            return fail(saved.error());
-    }
+    if (!args.image.empty())
+        if (const core::Status written = writeChartImage(args.image, layout); !written)
+            return written;
+    if (!args.out.empty())
+        if (const core::Status saved = core::saveGlb(args.out, layout.mesh, {}, {}, false); !saved)
+            return saved;
+    return {};
+}
+
+} // namespace
+
+int runUvLayout(const UvLayoutArgs& args) {
+    LayoutRun run;
+    const auto loadStart = Clock::now();
+    core::Result<core::Mesh> mesh = core::loadMesh(args.model);
+    if (!mesh)
+        return fail(mesh.error());
+    run.loadSeconds = msSince(loadStart) / 1000.0;
+    run.hadUvs = mesh->hasUvs();
+    if (run.hadUvs && !args.keepUvs)
+        return fail(args.model + ": the model has texture coordinates already (--replace-uvs "
+                                 "lays it out anyway)");
+    if (run.hadUvs)
+        mesh->uvs.clear();
+
+    const core::UvLayoutOptions options = layoutOptions(args);
+    const auto start = Clock::now();
+    core::Result<core::UvLayout> layout = core::makeUvLayout(*mesh, options);
+    run.layoutSeconds = msSince(start) / 1000.0;
+    if (!layout)
+        return fail(args.model + ": " + layout.error());
+    const nlohmann::json out = figuresJson(args, *mesh, options, *layout, run);
+    std::cout << jsonText(out, 2) << '\n';
+    if (const core::Status s = writeOutputs(args, out, *layout); !s)
+        return fail(s.error());
     return 0;
 }
 
