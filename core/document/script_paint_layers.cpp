@@ -81,7 +81,7 @@ std::uint64_t layerId(const PaintLayerTarget& target, const json& op, bool baseA
  * The document's texture target (made if need be, any stroke ended): every paint-layer operation
  * asks for it first, so its error comes before any other.
  */
-TextureTarget& readyPaintLayerTarget(ScriptOp& s) {
+PaintLayerTarget& readyPaintLayerTarget(ScriptOp& s) {
     Result<PaintLayerTarget*> ready = s.doc.paintLayerTarget();
     if (!ready)
         throw ScriptOpError{ready.error()};
