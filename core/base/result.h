@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/base/: what every part of the core uses: Result/Status errors, progress callbacks,
+// the thread helpers, sRGB conversion, text helpers.
 #pragma once
 
 #include <cassert>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/depth/: the depth layers of one view (build_layers): the capture of every fragment
+// into a DepthStack, pixel connectivity, and this header, which runs them and the segmentation.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/document/: the controller both programs drive: the Document, its History, scripts
+// and the session log, the project state, brush presets.
 #pragma once
 
 #include <cstdint>

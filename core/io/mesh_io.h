@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/: every file read or written: gltf/, assimp/ (model loading), image/ (codecs),
+// project/ (project files), importer/ (the sandboxed importer process), and here the entry
+// points, exports and atomic writes.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/model/: the mesh and what is made from it alone: topology, camera and view, the
+// built-in models, the automatic UV layout, the stand-in drawn while the camera moves.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/regions/: regions and their order: the segmentation of the depth layers, the region
+// graph and its layout, the region order (pop-up, hiding).
+//
 // The region graph: the regions of one view's segmentation and their cross-layer links (the
 // paper's region-level connectivity). Made by segmentDepthLayers() (segmentation.h), laid out for
 // the Region Graph panel by region_graph_layout.h, reordered by region_order.h.

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// ui/commands/: the Qt side of the document's history (Edit ▸ Undo/Redo).
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// ui/tools/: the left button's tools, their cursors and hints, and the region operations.
 #pragma once
 
 #include <Qt>

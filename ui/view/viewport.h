@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// ui/view/: the 3D view: the viewport widget, its input and stand-in, the background
+// depth-layer builder, the message bar over it.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/assimp/: the other model formats, through Assimp: prechecks, file access and
+// flattening.
+//
 // From Assimp's scene to one Mesh. Assimp reads with no post-processing first; checkRawScene()
 // then checks every face index, bone weight and morph mesh that the post-processing steps read
 // (instead of aiProcess_ValidateDataStructure, which rejects whole files for harmless defects).

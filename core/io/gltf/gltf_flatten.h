@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/gltf/: glTF read (accessors, Draco, meshopt, texture transforms, flattening) and
+// written (GLB container, export).
+//
 // Flattening a parsed glTF scene into one Mesh: the default scene (else scene 0; without any, the
 // root nodes or the meshes in order, with a warning) depth-first in document order, each node
 // reached once (a cycle or a node with two parents is an error: sharing would let a small file

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/image/: images decoded, encoded and written (OpenImageIO, in a module).
+//
 // The image codecs (decoding, encoding, writing through OpenImageIO) are a module of their own,
 // layerpaint-image-codecs.so, that a program loads on its first use of an image: OpenImageIO
 // brings some 260 shared libraries, and linking them took about half a second of every start of

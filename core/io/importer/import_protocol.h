@@ -1,4 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/importer/: the sandboxed importer process that parses model files, and the
+// protocol its output follows.
+//
 // What the importer process (layerpaint-import) writes on its standard output and loadMesh()
 // reads back: frames of a 16-byte header (magic, tag, payload length) and a payload of plain
 // native-endian arrays, so nothing is parsed twice. The reader trusts nothing: every length is

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/io/project/: LayerPaint projects: a binary glTF with the painted model, every
+// paint layer's images and the state, read and written.
 #pragma once
 
 #include <optional>

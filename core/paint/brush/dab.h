@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/paint/brush/: what a brush is: its settings and dabs, tips, previews, symmetry.
 #pragma once
 
 #include <cstdint>

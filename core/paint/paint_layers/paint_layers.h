@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/paint/paint_layers/: the paint layers over a target's base: their tiled planes,
+// blend modes, the composite, and the undo tiles that restore them.
 #pragma once
 
 #include <algorithm>

@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/paint/targets/: where a dab's paint lands: texture and vertex-colour targets, the
+// projection context they share, the flood fill, the target over an automatic UV layout.
 #pragma once
 
 #include <array>

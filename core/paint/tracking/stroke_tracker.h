@@ -1,4 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// core/paint/tracking/: from pointer input to dabs: the paintable and trackable maps (Mp,
+// Mt) a stroke follows across depth layers, and the stroke stabilizer.
 #pragma once
 
 #include <cstddef>
