@@ -89,121 +89,182 @@ bool prepare(core::Document& doc, core::CpuDepthCapturer& capturer, const core::
     return bool(doc.setPaintTarget(options));
 }
 
+/** What every picture is made from: the row, its first view, the capturer, the pointer's colour. */
+struct GuideScene {
+    core::Document doc;
+    core::CpuDepthCapturer capturer;
+    QSize size;
+    float w = 0.0f, h = 0.0f;
+    core::View view;
+    float distance = 0.0f; // the camera's in the first view
+    QColor pointer{20, 90, 200};
+};
+
+/** The camera's first view of the row. */
+void setCameraStart(core::Camera& camera) {
+    camera.yawDegrees = 35.0f;
+    camera.pitchDegrees = 12.0f;
+}
+
+/** The built-in row in scene.doc, its camera a little from the side; false without the model. */
+bool loadRow(GuideScene& scene) {
+    core::Result<core::Mesh> mesh = core::makeBuiltinModel("row");
+    if (!mesh)
+        return false;
+    core::Document& doc = scene.doc;
+    doc.setMesh(std::move(mesh).value(), "row");
+    doc.setViewAspect(float(scene.size.width()) / float(scene.size.height()));
+    doc.resetCamera();
+    setCameraStart(doc.camera());
+    doc.camera().distance *= 0.5f; // the row, not the room around it
+    scene.distance = doc.camera().distance;
+    scene.view = doc.camera().view(scene.size.width(), scene.size.height());
+    scene.w = float(scene.size.width());
+    scene.h = float(scene.size.height());
+    return true;
+}
+
+/** The first view again, its depth layers built anew, nothing popped up; false if they fail. */
+bool resetScene(GuideScene& scene) {
+    core::Document& doc = scene.doc;
+    setCameraStart(doc.camera());
+    doc.camera().distance = scene.distance;
+    doc.clearDepthLayers();
+    if (!prepare(doc, scene.capturer, scene.view))
+        return false;
+    doc.resetRegionOrder();
+    return true;
+}
+
+/**
+ * A stroke from the second body on to the right, behind the first: layer-aware, it stays on the
+ * surface it started on.
+ */
+QImage drawLayerAwareStroke(GuideScene& scene) {
+    core::Document& doc = scene.doc;
+    const float w = scene.w, h = scene.h;
+    doc.setLayerAware(true);
+    doc.setAutoPopUp(false);
+    doc.brush().radius = 0.03f * h;
+    doc.brush().hardness = 0.8f;
+    doc.brush().color = {0.85f, 0.12f, 0.08f, 1.0f};
+    std::vector<QPointF> points;
+    for (int i = 0; i <= 40; ++i) {
+        const float t = float(i) / 40.0f;
+        points.emplace_back(0.3f * w + t * 0.4f * w, 0.5f * h + 0.08f * h * std::sin(6.0f * t));
+    }
+    core::PaintChanges changes;
+    if (doc.beginStroke({{float(points[0].x()), float(points[0].y())}, 1.0f}, changes)) {
+        for (const QPointF& p : points)
+            doc.moveStroke({{float(p.x()), float(p.y())}, 1.0f}, changes);
+        doc.endStroke(changes);
+    }
+    QImage image = shade(doc, scene.view);
+    drawPath(image, points, scene.pointer);
+    return image;
+}
+
+/** A click in the middle pops the region below the visible one up. */
+QImage drawPopUp(GuideScene& scene) {
+    const glm::vec2 at(0.5f * scene.w, 0.5f * scene.h);
+    scene.doc.popUpAt(at);
+    QImage image = shade(scene.doc, scene.view);
+    drawClick(image, QPointF(at.x, at.y), scene.pointer);
+    return image;
+}
+
+/** A short drag hides the regions it touches. */
+QImage drawPaintToHide(GuideScene& scene) {
+    core::Document& doc = scene.doc;
+    const float w = scene.w, h = scene.h;
+    std::vector<QPointF> points;
+    doc.beginHide();
+    for (int i = 0; i <= 10; ++i) {
+        const float t = float(i) / 10.0f;
+        points.emplace_back(0.42f * w + 0.08f * w * t, 0.5f * h);
+        if (i > 0)
+            doc.hideAlong({float(points[i - 1].x()), float(points[i - 1].y())},
+                          {float(points[i].x()), float(points[i].y())}, 0.02f * h);
+    }
+    doc.endHide();
+    QImage image = shade(doc, scene.view);
+    drawPath(image, points, scene.pointer);
+    return image;
+}
+
+/**
+ * Turned about a point on the second body: that point stays where it was. None if the turned
+ * view's layers cannot be built.
+ */
+std::optional<QImage> drawOrbitAboutPoint(GuideScene& scene) {
+    core::Document& doc = scene.doc;
+    const float w = scene.w, h = scene.h;
+    const QSize size = scene.size;
+    const glm::vec2 at(0.6f * w, 0.5f * h);
+    const std::optional<glm::vec3> pivot = doc.surfacePoint(at);
+    QImage image;
+    if (pivot) {
+        doc.camera().orbitAbout(*pivot, -40.0f, 10.0f);
+        const core::View turned = doc.camera().view(size.width(), size.height());
+        doc.clearDepthLayers();
+        scene.capturer.setMesh(doc.mesh());
+        if (!doc.buildDepthLayers(scene.capturer, turned))
+            return std::nullopt;
+        image = shade(doc, turned);
+    } else {
+        image = shade(doc, scene.view);
+    }
+    // The pivot where the turned view shows it, and the turn around it.
+    QPointF shown(at.x, at.y);
+    if (pivot) {
+        const core::View turned = doc.camera().view(size.width(), size.height());
+        const glm::vec4 clip = turned.proj * turned.view * glm::vec4(*pivot, 1.0f);
+        if (clip.w > 0.0f)
+            shown = QPointF((clip.x / clip.w * 0.5 + 0.5) * w, (0.5 - clip.y / clip.w * 0.5) * h);
+    }
+    drawClick(image, shown, QColor(230, 120, 0));
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setPen(QPen(QColor(230, 120, 0), 1.5));
+    painter.drawArc(QRectF(shown.x() - 18.0, shown.y() - 10.0, 36.0, 20.0), 20 * 16, 300 * 16);
+    return image;
+}
+
+/** One picture of the guide, drawn on a freshly reset scene; none if its layers failed. */
+std::optional<QImage> drawPicture(GuideScene& scene, GuidePicture picture) {
+    switch (picture) {
+    case GuidePicture::LayerAwareStroke:
+        return drawLayerAwareStroke(scene);
+    case GuidePicture::PopUp:
+        return drawPopUp(scene);
+    case GuidePicture::PaintToHide:
+        return drawPaintToHide(scene);
+    case GuidePicture::OrbitAboutPoint:
+        return drawOrbitAboutPoint(scene);
+    case GuidePicture::Count:
+        break;
+    }
+    return QImage();
+}
+
 } // namespace
 
 std::vector<QImage> makeQuickGuidePictures(QSize size, const core::ProgressFn& progress) {
     const int count = int(GuidePicture::Count);
     std::vector<QImage> pictures;
-    core::Result<core::Mesh> mesh = core::makeBuiltinModel("row");
-    if (!mesh)
+    GuideScene scene;
+    scene.size = size;
+    if (!loadRow(scene))
         return pictures;
-    core::Document doc;
-    doc.setMesh(std::move(mesh).value(), "row");
-    doc.setViewAspect(float(size.width()) / float(size.height()));
-    doc.resetCamera();
-    doc.camera().yawDegrees = 35.0f;
-    doc.camera().pitchDegrees = 12.0f;
-    doc.camera().distance *= 0.5f; // the row, not the room around it
-    const float distance = doc.camera().distance;
-    const core::View view = doc.camera().view(size.width(), size.height());
-    core::CpuDepthCapturer capturer;
-    const float w = float(size.width()), h = float(size.height());
-    const QColor pointer(20, 90, 200);
-
     for (int k = 0; k < count; ++k) {
         if (!core::reportProgress(progress, double(k) / double(count)))
             return {};
-        doc.camera().yawDegrees = 35.0f;
-        doc.camera().pitchDegrees = 12.0f;
-        doc.camera().distance = distance;
-        doc.clearDepthLayers();
-        if (!prepare(doc, capturer, view))
+        if (!resetScene(scene))
             return {};
-        doc.resetRegionOrder();
-        QImage image;
-        switch (GuidePicture(k)) {
-        case GuidePicture::LayerAwareStroke: {
-            // A stroke from the second body on to the right, behind the first: layer-aware, it
-            // stays on the surface it started on.
-            doc.setLayerAware(true);
-            doc.setAutoPopUp(false);
-            doc.brush().radius = 0.03f * h;
-            doc.brush().hardness = 0.8f;
-            doc.brush().color = {0.85f, 0.12f, 0.08f, 1.0f};
-            std::vector<QPointF> points;
-            for (int i = 0; i <= 40; ++i) {
-                const float t = float(i) / 40.0f;
-                points.emplace_back(0.3f * w + t * 0.4f * w,
-                                    0.5f * h + 0.08f * h * std::sin(6.0f * t));
-            }
-            core::PaintChanges changes;
-            if (doc.beginStroke({{float(points[0].x()), float(points[0].y())}, 1.0f}, changes)) {
-                for (const QPointF& p : points)
-                    doc.moveStroke({{float(p.x()), float(p.y())}, 1.0f}, changes);
-                doc.endStroke(changes);
-            }
-            image = shade(doc, view);
-            drawPath(image, points, pointer);
-            break;
-        }
-        case GuidePicture::PopUp: {
-            const glm::vec2 at(0.5f * w, 0.5f * h);
-            doc.popUpAt(at);
-            image = shade(doc, view);
-            drawClick(image, QPointF(at.x, at.y), pointer);
-            break;
-        }
-        case GuidePicture::PaintToHide: {
-            std::vector<QPointF> points;
-            doc.beginHide();
-            for (int i = 0; i <= 10; ++i) {
-                const float t = float(i) / 10.0f;
-                points.emplace_back(0.42f * w + 0.08f * w * t, 0.5f * h);
-                if (i > 0)
-                    doc.hideAlong({float(points[i - 1].x()), float(points[i - 1].y())},
-                                  {float(points[i].x()), float(points[i].y())}, 0.02f * h);
-            }
-            doc.endHide();
-            image = shade(doc, view);
-            drawPath(image, points, pointer);
-            break;
-        }
-        case GuidePicture::OrbitAboutPoint: {
-            // Turned about a point on the second body: that point stays where it was.
-            const glm::vec2 at(0.6f * w, 0.5f * h);
-            const std::optional<glm::vec3> pivot = doc.surfacePoint(at);
-            if (pivot) {
-                doc.camera().orbitAbout(*pivot, -40.0f, 10.0f);
-                const core::View turned = doc.camera().view(size.width(), size.height());
-                doc.clearDepthLayers();
-                capturer.setMesh(doc.mesh());
-                if (!doc.buildDepthLayers(capturer, turned))
-                    return {};
-                image = shade(doc, turned);
-            } else {
-                image = shade(doc, view);
-            }
-            // The pivot where the turned view shows it, and the turn around it.
-            QPointF shown(at.x, at.y);
-            if (pivot) {
-                const core::View turned = doc.camera().view(size.width(), size.height());
-                const glm::vec4 clip = turned.proj * turned.view * glm::vec4(*pivot, 1.0f);
-                if (clip.w > 0.0f)
-                    shown = QPointF((clip.x / clip.w * 0.5 + 0.5) * w,
-                                    (0.5 - clip.y / clip.w * 0.5) * h);
-            }
-            drawClick(image, shown, QColor(230, 120, 0));
-            QPainter painter(&image);
-            painter.setRenderHint(QPainter::Antialiasing);
-            painter.setPen(QPen(QColor(230, 120, 0), 1.5));
-            painter.drawArc(QRectF(shown.x() - 18.0, shown.y() - 10.0, 36.0, 20.0), 20 * 16,
-                            300 * 16);
-            break;
-        }
-        case GuidePicture::Count:
-            break;
-        }
-        pictures.push_back(std::move(image));
+        std::optional<QImage> image = drawPicture(scene, GuidePicture(k));
+        if (!image)
+            return {};
+        pictures.push_back(std::move(*image));
     }
     core::reportProgress(progress, 1.0);
     return pictures;
