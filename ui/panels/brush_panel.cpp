@@ -78,7 +78,20 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     m_form = new QFormLayout;
     layout->addLayout(m_form);
+    addSizeRows();
+    addPressureRows();
+    addChannelRows();
+    addPressureCurveRow();
+    addTipBox(layout);
+    addStabilizerBox(layout);
+    addSymmetryBox(layout);
+    layout->addStretch(1);
 
+    setBrush(m_brush);
+    setPressureCurve(m_curve);
+}
+
+void BrushPanel::addSizeRows() {
     m_radius = addRow(tr("&Radius"), QStringLiteral("brushPanelRadius"), 1, 500, tr(" px"),
                       tr("Brush radius on screen ([ and ] change it)"));
     m_hardness =
@@ -96,8 +109,9 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
            "the next; 0 chooses it from the radius"));
     m_form->addRow(tr("&Tracking (R_max)"), m_trackRadius);
     connect(m_trackRadius, &QSpinBox::valueChanged, this, &BrushPanel::readBrush);
+}
 
-    // Pressure: what it changes, and its curve.
+void BrushPanel::addPressureRows() {
     m_pressureRadius = new QCheckBox(tr("Si&ze"), this);
     m_pressureRadius->setObjectName(QStringLiteral("brushPanelPressureRadius"));
     m_pressureRadius->setToolTip(tr("Pen pressure scales the radius"));
@@ -111,7 +125,9 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     m_form->addRow(tr("Pressure changes"), pressureRow);
     for (QCheckBox* box : {m_pressureRadius, m_pressureOpacity})
         connect(box, &QCheckBox::toggled, this, &BrushPanel::readBrush);
+}
 
+void BrushPanel::addChannelRows() {
     // The material channels a stroke paints, each with its own value (base colour: the Colour
     // panel's).
     m_paintBaseColor = new QCheckBox(tr("Base co&lour"), this);
@@ -145,7 +161,9 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
     m_channelNote->setWordWrap(true);
     m_channelNote->hide();
     m_form->addRow(m_channelNote);
+}
 
+void BrushPanel::addPressureCurveRow() {
     m_gamma = new QSlider(Qt::Horizontal, this);
     m_gamma->setObjectName(QStringLiteral("brushPanelPressureCurve"));
     m_gamma->setRange(-kGammaSteps, kGammaSteps);
@@ -169,13 +187,6 @@ BrushPanel::BrushPanel(QWidget* parent) : QWidget(parent) {
         m_curveView->setCurve(m_curve);
         emit pressureCurveChanged(m_curve);
     });
-    addTipBox(layout);
-    addStabilizerBox(layout);
-    addSymmetryBox(layout);
-    layout->addStretch(1);
-
-    setBrush(m_brush);
-    setPressureCurve(m_curve);
 }
 
 void BrushPanel::addTipBox(QVBoxLayout* layout) {

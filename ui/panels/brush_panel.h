@@ -69,6 +69,14 @@ signals:
 private:
     QSpinBox* addRow(const QString& label, const QString& name, int minimum, int maximum,
                      const QString& suffix, const QString& tip);
+    /** Radius, hardness, opacity, flow, spacing and the tracking radius R_max. */
+    void addSizeRows();
+    /** What pen pressure changes: size, opacity. */
+    void addPressureRows();
+    /** The material channels a stroke paints, each on or off with its value. */
+    void addChannelRows();
+    /** The pressure curve's slider, its gamma and a plot of it. */
+    void addPressureCurveRow();
     void readBrush();
     void updateAutoTrackText();
     /** The stroke stabilizer's group box, below the other settings. */
