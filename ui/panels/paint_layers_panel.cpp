@@ -109,13 +109,21 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     : QWidget(parent), m_document(document) {
     createActions();
     auto* layout = new QVBoxLayout(this);
-
     m_reason = new QLabel(this);
     m_reason->setObjectName(QStringLiteral("paintLayersReason"));
     m_reason->setWordWrap(true);
     m_reason->hide();
     layout->addWidget(m_reason);
 
+    createList();
+    layout->addWidget(m_list, 1);
+    createSettingsControls();
+    layout->addWidget(m_controls);
+    layout->addLayout(createOperationButtons());
+    refresh();
+}
+
+void PaintLayersPanel::createList() {
     auto* list = new PaintLayerList(this);
     m_list = list;
     m_list->setObjectName(QStringLiteral("paintLayersList"));
@@ -146,12 +154,23 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
                     m_list->editItem(item, NameColumn);
             });
     connect(m_list, &QWidget::customContextMenuRequested, this, &PaintLayersPanel::showContextMenu);
-    layout->addWidget(m_list, 1);
+}
 
+void PaintLayersPanel::createSettingsControls() {
     // The current layer's settings.
     m_controls = new QWidget(this);
-    auto* form = new QFormLayout(m_controls);
-    form->setContentsMargins(0, 0, 0, 0);
+    m_form = new QFormLayout(m_controls);
+    m_form->setContentsMargins(0, 0, 0, 0);
+    addOpacityRow();
+    addBlendRow();
+    addLockRow();
+    // A fill layer's values: its colour and, for a texture, roughness and metallic; "Off" leaves
+    // a channel alone (as the script's and the tool's "fill values" do with null).
+    addFillColorRow();
+    addFillChannelRows();
+}
+
+void PaintLayersPanel::addOpacityRow() {
     m_opacity = new QSlider(Qt::Horizontal, m_controls);
     m_opacity->setObjectName(QStringLiteral("paintLayerOpacity"));
     m_opacity->setRange(0, 100);
@@ -162,8 +181,8 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     auto* opacityRow = new QHBoxLayout;
     opacityRow->addWidget(m_opacity, 1);
     opacityRow->addWidget(m_opacityText);
-    form->addRow(tr("&Opacity"), opacityRow);
-    if (auto* text = qobject_cast<QLabel*>(form->labelForField(opacityRow)))
+    m_form->addRow(tr("&Opacity"), opacityRow);
+    if (auto* text = qobject_cast<QLabel*>(m_form->labelForField(opacityRow)))
         text->setBuddy(m_opacity);
     connect(m_opacity, &QSlider::sliderMoved, this,
             [this](int value) { m_opacityText->setText(tr("%1 %").arg(value)); });
@@ -174,12 +193,15 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
                 settings.opacity = float(value) / 100.0f;
             });
     });
+}
+
+void PaintLayersPanel::addBlendRow() {
     m_blend = new QComboBox(m_controls);
     m_blend->setObjectName(QStringLiteral("paintLayerBlend"));
     m_blend->setToolTip(tr("How the current paint layer combines with what lies under it"));
     for (const core::BlendMode mode : core::kBlendModes)
         m_blend->addItem(blendModeText(mode), int(mode));
-    form->addRow(tr("&Blend mode"), m_blend);
+    m_form->addRow(tr("&Blend mode"), m_blend);
     connect(m_blend, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (m_updating || index < 0)
             return;
@@ -187,21 +209,23 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         editSettings(selectedPaintLayer(),
                      [mode](core::PaintLayerSettings& settings) { settings.blend = mode; });
     });
+}
+
+void PaintLayersPanel::addLockRow() {
     m_lock = new QCheckBox(tr("Lock &transparency"), m_controls);
     m_lock->setObjectName(QStringLiteral("paintLayerLock"));
     m_lock->setToolTip(tr("Painting changes the colour of what is on the layer, never where it "
                           "is or how much"));
-    form->addRow(m_lock);
+    m_form->addRow(m_lock);
     connect(m_lock, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_updating)
             editSettings(selectedPaintLayer(), [on](core::PaintLayerSettings& settings) {
                 settings.lockTransparency = on;
             });
     });
+}
 
-    // A fill layer's values: its colour and, for a texture, roughness and metallic; "Off" leaves
-    // a channel alone (as the script's and the tool's "fill values" do with null).
-    m_form = form;
+void PaintLayersPanel::addFillColorRow() {
     m_fillColorOn = new QCheckBox(m_controls);
     m_fillColorOn->setObjectName(QStringLiteral("paintLayerFillColorOn"));
     m_fillColorOn->setToolTip(tr("Whether the fill layer sets the base colour"));
@@ -213,8 +237,8 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     m_fillColorRow->addWidget(m_fillColorOn);
     m_fillColorRow->addWidget(m_fillColor);
     m_fillColorRow->addStretch(1);
-    form->addRow(tr("&Fill colour"), m_fillColorRow);
-    if (auto* text = qobject_cast<QLabel*>(form->labelForField(m_fillColorRow)))
+    m_form->addRow(tr("&Fill colour"), m_fillColorRow);
+    if (auto* text = qobject_cast<QLabel*>(m_form->labelForField(m_fillColorRow)))
         text->setBuddy(m_fillColorOn);
     connect(m_fillColorOn, &QCheckBox::toggled, this, [this](bool on) {
         if (m_updating)
@@ -241,12 +265,15 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         });
         dialog->open();
     });
-    const auto channelSpin = [&](const char* name, const QString& label, const QString& tip,
-                                 auto set) {
+}
+
+void PaintLayersPanel::addFillChannelRows() {
+    const auto channelSpin = [this](const char* name, const QString& label, const QString& tip,
+                                    auto set) {
         QSpinBox* spin =
             makeValueSpinBox(m_controls, QString::fromLatin1(name), -1, 100, tr(" %"), tip);
         spin->setSpecialValueText(tr("Off"));
-        form->addRow(label, spin);
+        m_form->addRow(label, spin);
         connect(spin, &QSpinBox::valueChanged, this, [this, set](int value) {
             if (m_updating)
                 return;
@@ -265,8 +292,9 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         channelSpin("paintLayerFillMetallic", tr("&Metallic"),
                     tr("How metallic the fill layer makes the surface; Off leaves metallic alone"),
                     [](core::ChannelValues& fill, std::optional<float> v) { fill.metallic = v; });
-    layout->addWidget(m_controls);
+}
 
+QGridLayout* PaintLayersPanel::createOperationButtons() {
     // A button for every operation.
     auto* buttons = new QGridLayout;
     buttons->setSpacing(2);
@@ -281,9 +309,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
         buttons->addWidget(button, slot / 4, slot % 4);
         ++slot;
     }
-    layout->addLayout(buttons);
-
-    refresh();
+    return buttons;
 }
 
 void PaintLayersPanel::createActions() {

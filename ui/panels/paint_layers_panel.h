@@ -12,6 +12,7 @@ class QAction;
 class QCheckBox;
 class QComboBox;
 class QFormLayout;
+class QGridLayout;
 class QHBoxLayout;
 class QLabel;
 class QSlider;
@@ -77,6 +78,19 @@ signals:
 
 private:
     void createActions();
+    /** The rows: eye, thumbnail, name and mask of every paint layer, Base last. */
+    void createList();
+    /** The current layer's settings below the list (m_controls, laid out by m_form). */
+    void createSettingsControls();
+    void addOpacityRow();
+    void addBlendRow();
+    void addLockRow();
+    /** A fill layer's base colour: on or off, and a swatch that opens a colour dialog. */
+    void addFillColorRow();
+    /** A fill layer's roughness and metallic, each of which can be off. */
+    void addFillChannelRows();
+    /** A button for every operation, four to a row. */
+    QGridLayout* createOperationButtons();
     /** The target's stack, or nullptr (no model, vertex colours, or no target made yet). */
     const core::PaintLayerTarget* target() const;
     /** The selected layer's id (0: Base). */
