@@ -73,26 +73,48 @@ MainWindow::MainWindow(QWidget* parent)
     setAcceptDrops(true);
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
     m_notifier = new Notifier(*this);
+    restoreDepthLayerOptions();
+    applyStartPreferences();
+    createView();
+    createStatusBarLabels();
+    createPanels();
+    createPaintActions();
+    createProjectController();
+    createToolActions();
+    createMenus();
+    // Enter and Escape in a tool bar or panel field give the keys back to the view.
+    qApp->installEventFilter(new FieldFocus(*this, *m_viewport, this));
+    connectLoader();
+    connectViewport();
+    connectDepthLayersBuilder();
+    createSymmetryProgress();
+    updateDepthLayerInfo();
+    createLoadProgress();
+    restoreWindowLayout();
+}
 
-    {
-        // The last session's segmentation options.
-        const QSettings settings;
-        core::DepthLayerOptions options;
-        const float threshold = settings.value(kThresholdKey, options.threshold).toFloat();
-        if (threshold >= SegmentationControls::kMinThreshold &&
-            threshold <= SegmentationControls::kMaxThreshold)
-            options.threshold = threshold;
-        if (settings.value(kTestKey).toString() == QLatin1String("plain"))
-            options.test = core::ConnectionTest::Plain;
-        options.cullBackFaces = !settings.value(kTwoSidedKey, false).toBool();
-        m_document->setDepthLayerOptions(options);
-    }
+void MainWindow::restoreDepthLayerOptions() {
+    // The last session's segmentation options.
+    const QSettings settings;
+    core::DepthLayerOptions options;
+    const float threshold = settings.value(kThresholdKey, options.threshold).toFloat();
+    if (threshold >= SegmentationControls::kMinThreshold &&
+        threshold <= SegmentationControls::kMaxThreshold)
+        options.threshold = threshold;
+    if (settings.value(kTestKey).toString() == QLatin1String("plain"))
+        options.test = core::ConnectionTest::Plain;
+    options.cullBackFaces = !settings.value(kTwoSidedKey, false).toBool();
+    m_document->setDepthLayerOptions(options);
+}
 
+void MainWindow::applyStartPreferences() {
     m_preferences = Preferences::load();
     m_document->setPressureCurve(core::PressureCurve{m_preferences.pressureGamma});
     m_paintOptions.resolution = m_preferences.textureSize;
     m_document->setPaintOptions(m_paintOptions);
+}
 
+void MainWindow::createView() {
     m_viewport = new Viewport(*m_document, this);
     m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
@@ -101,7 +123,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_loader = new ModelLoader(this);
     m_targetJob = new PaintTargetJob(*this);
     connect(m_targetJob, &PaintTargetJob::finished, this, &MainWindow::paintTargetMade);
+}
 
+void MainWindow::createStatusBarLabels() {
     m_modelInfo = new ElidedLabel(this);
     statusBar()->addPermanentWidget(m_modelInfo);
     // Added after the model label (tests find that one first), but shown to its left.
@@ -112,9 +136,9 @@ MainWindow::MainWindow(QWidget* parent)
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
     m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
     statusBar()->insertPermanentWidget(1, m_brushInfo);
+}
 
-    createPanels();
-    createPaintActions();
+void MainWindow::createProjectController() {
     m_project = new ProjectController(*m_document, *m_history, *m_notifier,
                                       [this] { return projectState(); });
     connect(m_project, &ProjectController::openRequested, this, &MainWindow::openFile);
@@ -128,14 +152,15 @@ MainWindow::MainWindow(QWidget* parent)
     // Project settings that live in other widgets.
     for (QAction* action : {m_regionTools->autoPopUpAction(), m_regionTools->transparencyAction()})
         connect(action, &QAction::toggled, m_project, &ProjectController::markModified);
-    createToolActions();
-    createMenus();
-    // Enter and Escape in a tool bar or panel field give the keys back to the view.
-    qApp->installEventFilter(new FieldFocus(*this, *m_viewport, this));
+}
 
+void MainWindow::connectLoader() {
     connect(m_loader, &ModelLoader::loaded, this, &MainWindow::onLoaded);
     connect(m_loader, &ModelLoader::failed, this, &MainWindow::onLoadFailed);
     connect(m_loader, &ModelLoader::cancelled, this, &MainWindow::onLoadCancelled);
+}
+
+void MainWindow::connectViewport() {
     connect(m_viewport, &Viewport::glInitializationFailed, this, [this](const QString& message) {
         showError(tr("OpenGL Error"), tr("The 3D view cannot be shown."), message);
     });
@@ -143,6 +168,9 @@ MainWindow::MainWindow(QWidget* parent)
         statusBar()->showMessage(message, kStatusMessageMs);
     });
     connect(m_viewport, &Viewport::viewChanged, this, &MainWindow::updateDepthLayerInfo);
+}
+
+void MainWindow::connectDepthLayersBuilder() {
     connect(m_builder, &DepthLayersBuilder::depthLayersBuilt, this,
             &MainWindow::onDepthLayersBuilt);
     connect(m_builder, &DepthLayersBuilder::segmentationChanged, this,
@@ -154,6 +182,9 @@ MainWindow::MainWindow(QWidget* parent)
                                  kStatusMessageMs);
         updateDepthLayerInfo();
     });
+}
+
+void MainWindow::createSymmetryProgress() {
     // The symmetric views build in the background after the layers; the status bar says how far.
     auto* symmetryTimer = new QTimer(this);
     symmetryTimer->setInterval(200);
@@ -177,15 +208,18 @@ MainWindow::MainWindow(QWidget* parent)
         statusBar()->showMessage(tr("Waiting for the symmetric views before painting…"));
         statusBar()->repaint();
     });
-    updateDepthLayerInfo();
+}
 
+void MainWindow::createLoadProgress() {
     // The worker only publishes a number; polling it keeps the event queue free of updates.
     m_progressTimer.setInterval(50);
     connect(&m_progressTimer, &QTimer::timeout, this, [this] {
         if (m_progress)
             m_progress->setValue(int(m_loader->progress() * kProgressSteps));
     });
+}
 
+void MainWindow::restoreWindowLayout() {
     const QSettings settings;
     if (!restoreGeometry(settings.value(kGeometryKey).toByteArray())) {
         // The first start: 1280 × 800, or nine tenths of a smaller screen, so it fits there.

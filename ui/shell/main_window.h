@@ -200,15 +200,68 @@ private:
     static constexpr int kPaintMessageMs = 3000;
     static constexpr int kProgressSteps = 1000;
 
+    // The constructor's steps, in order (main_window.cpp).
+    /** The last session's segmentation options, from the settings, to the document. */
+    void restoreDepthLayerOptions();
+    /** The preferences as they were saved: pressure curve and texture size for the document. */
+    void applyStartPreferences();
+    /** The viewport (the central widget), its message bar, the builder and the loaders. */
+    void createView();
+    /** The status bar's model, depth-layer and brush labels. */
+    void createStatusBarLabels();
+    /** Save, export, autosave and recovery, and what they change in the window. */
+    void createProjectController();
+    void connectLoader();
+    /** What the viewport reports: GL errors, failed layer rendering, a changed view. */
+    void connectViewport();
+    /** A build of the depth layers (or of their segmentation) is shown, cleared or failed. */
+    void connectDepthLayersBuilder();
+    /** The status bar's progress of the symmetric views, polled while they build. */
+    void createSymmetryProgress();
+    /** The load progress dialog's value, polled from the loader. */
+    void createLoadProgress();
+    /** The window's size and dock layout of the last session (or the first start's size). */
+    void restoreWindowLayout();
+
     void createPanels();
     /** A dock (on the right by default) named for saveState(). */
     QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
                           Qt::DockWidgetArea area = Qt::RightDockWidgetArea);
+    /** The menu bar: File, Edit, View, Paint, Paint Layers and Help, in that order. */
     void createMenus();
+    void createFileMenu();
+    void createEditMenu();
+    void createViewMenu();
+    void createPaintMenu();
+    /** The Paint Layers panel's operations. */
+    void createPaintLayersMenu();
+    void createHelpMenu();
     void createDisplayActions(QMenu* viewMenu);
     /** View ▸ Channel: the material or one of its channels, remembered in the settings. */
     void createChannelActions(QMenu* viewMenu);
+    /**
+     * What painting needs: the history, the region tools, the brush bar, the Brush, Colour,
+     * Brush Presets and Paint Layers panels, and the painting actions with their keys
+     * (main_window_actions.cpp, in this order).
+     */
     void createPaintActions();
+    /** The document's history and the undo stack that mirrors it. */
+    void createHistory();
+    /** Paint to Hide and pop-up (RegionTools), with the Paint to Hide and Fill docks. */
+    void createRegionTools();
+    void createBrushBar();
+    /** The Brush and Colour panels, docked on the left. */
+    void createBrushAndColorPanels();
+    /** The brush takes the Colour panel's colour (rounded to what it shows). */
+    void matchBrushToColorPanel();
+    /** Paint ▸ Layer-Aware Painting (L), and its check box on the brush bar. */
+    void createLayerAwareAction();
+    /** [ ] Shift+[ Shift+] for the brush's radius and hardness, and X to swap the colours. */
+    void createBrushKeyActions();
+    /** View ▸ Show Brush Maps. */
+    void createBrushMapsAction();
+    /** Edit ▸ Undo and Redo, named after the step they undo or redo. */
+    void createUndoActions();
     void createToolActions();
     void onPaintPressed(QPointF pixel, qreal pressure, Qt::KeyboardModifiers modifiers);
     /**

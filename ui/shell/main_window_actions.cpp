@@ -58,11 +58,32 @@ void fixScrollMinimum(QScrollArea& scroll) {
 } // namespace
 
 void MainWindow::createPaintActions() {
+    createHistory();
+    createRegionTools();
+    createBrushBar();
+    createBrushAndColorPanels();
+    createHelpAndPresets();
+    createPaintLayersPanel();
+    matchBrushToColorPanel();
+    createLayerAwareAction();
+    createBrushKeyActions();
+    createBrushMapsAction();
+    createUndoActions();
+    // The view's left button (or pen) paints.
+    connect(m_viewport, &Viewport::paintPressed, this, &MainWindow::onPaintPressed);
+    connect(m_viewport, &Viewport::paintMoved, this, &MainWindow::onPaintMoved);
+    connect(m_viewport, &Viewport::paintReleased, this, &MainWindow::onPaintReleased);
+    updateBrushBar();
+}
+
+void MainWindow::createHistory() {
     m_history = new HistoryBridge(*m_document, this);
     m_undoStack = m_history->stack();
     m_document->history().setBudget(std::size_t(m_preferences.undoBudgetMiB) << 20);
     connect(m_history, &HistoryBridge::applied, this, &MainWindow::onHistoryApplied);
+}
 
+void MainWindow::createRegionTools() {
     m_regionTools = new RegionTools(
         *m_document, *m_viewport, [this] { return m_builder->buildNow(); }, this);
     connect(m_regionTools, &RegionTools::message, this,
@@ -82,12 +103,16 @@ void MainWindow::createPaintActions() {
             m_fillDock->raise();
         }
     });
+}
 
+void MainWindow::createBrushBar() {
     m_brushBar = new BrushToolBar(this);
     addToolBar(Qt::TopToolBarArea, m_brushBar);
     connect(m_brushBar, &BrushToolBar::brushChanged, this, &MainWindow::setBrush);
     connect(m_brushBar, &BrushToolBar::targetRequested, this, &MainWindow::setPaintTarget);
+}
 
+void MainWindow::createBrushAndColorPanels() {
     // The panels: the full brush settings and the colours, on the left of the view.
     m_brushPanel = new BrushPanel(this);
     m_brushPanel->setPressureCurve(m_document->pressureCurve());
@@ -111,16 +136,17 @@ void MainWindow::createPaintActions() {
         brush.color = BrushToolBar::toLinear(color);
         setBrush(brush);
     });
-    createHelpAndPresets();
-    createPaintLayersPanel();
+}
+
+void MainWindow::matchBrushToColorPanel() {
     // The colour panel's own colour, rounded to what it shows, is the brush's from the start.
     m_colorPanel->setForeground(BrushToolBar::toQColor(m_document->brush().color));
-    {
-        core::Brush brush = m_document->brush();
-        brush.color = BrushToolBar::toLinear(m_colorPanel->foreground());
-        setBrush(brush);
-    }
+    core::Brush brush = m_document->brush();
+    brush.color = BrushToolBar::toLinear(m_colorPanel->foreground());
+    setBrush(brush);
+}
 
+void MainWindow::createLayerAwareAction() {
     // The paper's study checkbox: layer-aware or conventional painting, switchable any time.
     m_layerAwareAction = new QAction(tr("&Layer-Aware Painting"), this);
     m_layerAwareAction->setObjectName(QStringLiteral("actionLayerAware"));
@@ -149,7 +175,9 @@ void MainWindow::createPaintActions() {
     QAction* first = m_brushBar->actions().value(0);
     m_brushBar->insertWidget(first, m_layerAwareCheck);
     m_brushBar->insertSeparator(first);
+}
 
+void MainWindow::createBrushKeyActions() {
     // Painters' keys for the brush. One key each: a keyboard's Shift+[ matches both Shift+[ and
     // { (the platform offers the shifted and the unshifted key), and an action bound to both
     // would be an ambiguous shortcut that does nothing.
@@ -211,7 +239,9 @@ void MainWindow::createPaintActions() {
     m_swapColorsAction->setStatusTip(tr("Swap the foreground and background colours"));
     connect(m_swapColorsAction, &QAction::triggered, m_colorPanel, &ColorPanel::swapColors);
     addAction(m_swapColorsAction);
+}
 
+void MainWindow::createBrushMapsAction() {
     m_brushMapsAction = new QAction(tr("Show &Brush Maps"), this);
     m_brushMapsAction->setObjectName(QStringLiteral("actionShowBrushMaps"));
     m_brushMapsAction->setCheckable(true);
@@ -219,7 +249,9 @@ void MainWindow::createPaintActions() {
     m_brushMapsAction->setStatusTip(tr("While painting, show the paintable (red) and trackable "
                                        "(blue) pixels around the brush"));
     connect(m_brushMapsAction, &QAction::toggled, m_viewport, &Viewport::setBrushMapsVisible);
+}
 
+void MainWindow::createUndoActions() {
     m_undoAction = new QAction(tr("&Undo"), this);
     m_undoAction->setObjectName(QStringLiteral("actionUndo"));
     m_undoAction->setShortcut(QKeySequence::Undo);
@@ -245,11 +277,6 @@ void MainWindow::createPaintActions() {
     connect(m_undoStack, &QUndoStack::redoTextChanged, this, [this](const QString& text) {
         m_redoAction->setText(text.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(text));
     });
-
-    connect(m_viewport, &Viewport::paintPressed, this, &MainWindow::onPaintPressed);
-    connect(m_viewport, &Viewport::paintMoved, this, &MainWindow::onPaintMoved);
-    connect(m_viewport, &Viewport::paintReleased, this, &MainWindow::onPaintReleased);
-    updateBrushBar();
 }
 
 void MainWindow::createToolActions() {
@@ -329,6 +356,15 @@ void MainWindow::createPaintLayersPanel() {
 }
 
 void MainWindow::createMenus() {
+    createFileMenu();
+    createEditMenu();
+    createViewMenu();
+    createPaintMenu();
+    createPaintLayersMenu();
+    createHelpMenu();
+}
+
+void MainWindow::createFileMenu() {
     QMenu* fileMenu = menuBar()->addMenu(tr("&File"));
 
     QAction* openAction = fileMenu->addAction(tr("&Open…"), this, &MainWindow::showOpenDialog);
@@ -358,7 +394,9 @@ void MainWindow::createMenus() {
     quitAction->setObjectName(QStringLiteral("actionQuit"));
     quitAction->setShortcut(QKeySequence::Quit);
     quitAction->setMenuRole(QAction::QuitRole);
+}
 
+void MainWindow::createEditMenu() {
     QMenu* editMenu = menuBar()->addMenu(tr("&Edit"));
     editMenu->addAction(m_undoAction);
     editMenu->addAction(m_redoAction);
@@ -370,7 +408,9 @@ void MainWindow::createMenus() {
     m_preferencesAction->setObjectName(QStringLiteral("actionPreferences"));
     m_preferencesAction->setShortcut(QKeySequence::Preferences);
     m_preferencesAction->setMenuRole(QAction::PreferencesRole);
+}
 
+void MainWindow::createViewMenu() {
     QMenu* viewMenu = menuBar()->addMenu(tr("&View"));
     QAction* frameAction = viewMenu->addAction(tr("&Frame All"), m_viewport, &Viewport::frameAll);
     frameAction->setObjectName(QStringLiteral("actionFrameAll"));
@@ -400,7 +440,9 @@ void MainWindow::createMenus() {
     viewMenu->addSeparator();
     viewMenu->addAction(m_regionTools->transparencyAction());
     viewMenu->addAction(m_regionTools->orbitAboutSurfaceAction());
+}
 
+void MainWindow::createPaintMenu() {
     QMenu* paintMenu = menuBar()->addMenu(tr("&Paint"));
     paintMenu->addAction(m_layerAwareAction);
     paintMenu->addSeparator();
@@ -414,7 +456,9 @@ void MainWindow::createMenus() {
     paintMenu->addAction(m_swapColorsAction);
     paintMenu->addAction(createStabilizerAction());
     paintMenu->addMenu(createSymmetryMenu());
+}
 
+void MainWindow::createPaintLayersMenu() {
     QMenu* paintLayersMenu = menuBar()->addMenu(tr("Paint &Layers"));
     paintLayersMenu->setObjectName(QStringLiteral("paintLayersMenu"));
     for (QAction* action : m_paintLayersPanel->operationActions()) {
@@ -423,7 +467,9 @@ void MainWindow::createMenus() {
         else
             paintLayersMenu->addSeparator();
     }
+}
 
+void MainWindow::createHelpMenu() {
     QMenu* helpMenu = menuBar()->addMenu(tr("&Help"));
     helpMenu->addAction(m_quickGuideAction);
     helpMenu->addSeparator();
