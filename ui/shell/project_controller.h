@@ -3,6 +3,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 
 #include <QLockFile>
 #include <QObject>
@@ -14,6 +15,9 @@
 #include "core/document/project_state.h"
 #include "core/io/export.h"
 
+class QCheckBox;
+class QFileDialog;
+class QFileInfo;
 class QProgressDialog;
 
 namespace core {
@@ -144,6 +148,13 @@ signals:
     void openRequested(const QString& path);
 
 private:
+    // Shared by the files the controller's code is split into.
+    static constexpr int kStatusMs = 6000;
+    /** A path as core's file functions take it (the file system's encoding). */
+    static std::string encodePath(const QString& path);
+    static QString fromCore(const std::string& message);
+
+    /** Defined in project_snapshot.h. */
     struct Snapshot;
     /** The painted mesh and state now (GUI thread); null with why set if there is no model. */
     std::shared_ptr<Snapshot> snapshot(QString& why) const;
@@ -154,6 +165,12 @@ private:
     bool isOpenDocumentFile(const QString& path) const;
     void startProgress(const QString& text);
     void stopProgress();
+    /** The Export dialog's file filter for format. */
+    static QString exportFilter(core::ExportFormat format);
+    /** The file the Export dialog proposes in folder: named after the document, never itself. */
+    QString suggestExportPath(core::ExportFormat format, const QString& folder) const;
+    /** The Export dialog's "each paint layer as images" check box, below its other controls. */
+    QCheckBox* addPerPaintLayerBox(QFileDialog& dialog, bool hasLayers, bool checked);
     /** Says why an export to the open project's own file is refused; exportFailed() follows. */
     void refuseExportOverProject(const QString& path);
     /** Export steps: what is exported, copied on the GUI thread; false (reported) if missing. */
@@ -168,6 +185,16 @@ private:
     void updateModified();
     bool takeLock();
     void onAutosaveTimer();
+    enum class RecoveryAnswer { Recover, Discard, NotNow };
+    /** Asks whether to recover the autosave candidate a crashed session left. */
+    RecoveryAnswer askRecovery(const QFileInfo& candidate);
+    /** What the recovery question calls candidate's work: its project, or the model painted. */
+    static QString recoveredWorkName(const QFileInfo& candidate);
+    /**
+     * Makes candidate this session's autosave (probe holds its old session's lock) and asks to
+     * open it; false if it cannot be taken over.
+     */
+    bool adoptRecovery(const QFileInfo& candidate, QLockFile& probe);
 
     /** The open model's source (a path or "builtin:NAME"), as the document names it. */
     QString currentSource() const;
