@@ -256,6 +256,8 @@ struct PaintTarget::Context {
     std::vector<std::vector<float>> partLeast;
     std::vector<std::vector<std::pair<std::uint64_t, std::uint32_t>>> partTouched;
     PaintChanges changes;
+    /** A texture dab's passes over this context (TextureTarget::paint()). */
+    struct TextureDab;
 
     void updateView(const View& v);
     const ProjectedVertex& vertex(std::uint32_t v);
