@@ -145,8 +145,26 @@ bool PaintTarget::Context::overlapsMap(const ViewTriangle& t) const {
            sums[ay * stride + bx] + sums[by * stride + ax];
 }
 
+namespace {
+
+/** Whether map pixel m lies in stack and its fragment's triangle in a mesh of triangles. */
+bool validMapPixel(const DepthStack& stack, const MapPixel& m, std::size_t triangles) {
+    return m.pixel < stack.pixelCount() && m.fragment < stack.fragmentCount() &&
+           stack.triangle[m.fragment] < triangles;
+}
+
+} // namespace
+
 bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
-    const DepthStack& st = layers.stack;
+    if (!setUpDab(layers, d) || !placeWindow(layers.stack, d))
+        return false;
+    mapFragmentTriangles(layers.stack, d);
+    sumWindow();
+    addNeighbourTriangles();
+    return !setups.empty();
+}
+
+bool PaintTarget::Context::setUpDab(const DepthLayers& layers, const Dab& d) {
     cullBackFaces = layers.options.cullBackFaces;
     updateView(layers.view);
     nextDab();
@@ -159,19 +177,14 @@ bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
     toleranceOffset = options.pixelTolerance * current.footprintOffset;
     touched.clear();
     setups.clear();
-    if (!(radius > 0.0f) || !(dabOpacity > 0.0f) || !(flowOpacity > 0.0f))
-        return false;
+    return radius > 0.0f && dabOpacity > 0.0f && flowOpacity > 0.0f;
+}
 
-    // The map's bounding box, then the map itself as a small screen window.
-    const std::size_t pixels = st.pixelCount();
-    const std::size_t fragments = st.fragmentCount();
+bool PaintTarget::Context::placeWindow(const DepthStack& st, const Dab& d) {
     const std::size_t triangles = mesh->triangleCount();
     int minX = std::numeric_limits<int>::max(), minY = minX, maxX = -1, maxY = -1;
-    const auto valid = [&](const MapPixel& m) {
-        return m.pixel < pixels && m.fragment < fragments && st.triangle[m.fragment] < triangles;
-    };
     for (const MapPixel& m : d.paintable) {
-        if (!valid(m))
+        if (!validMapPixel(st, m, triangles))
             continue;
         const int x = int(m.pixel % std::uint32_t(st.width)),
                   y = int(m.pixel / std::uint32_t(st.width));
@@ -190,10 +203,13 @@ bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
     if (window.size() < area)
         window.resize(area);
     std::fill(window.begin(), window.begin() + std::ptrdiff_t(area), kNone);
+    return true;
+}
 
-    // The triangles of the map's fragments, each once.
+void PaintTarget::Context::mapFragmentTriangles(const DepthStack& st, const Dab& d) {
+    const std::size_t triangles = mesh->triangleCount();
     for (const MapPixel& m : d.paintable) {
-        if (!valid(m))
+        if (!validMapPixel(st, m, triangles))
             continue;
         const int x = int(m.pixel % std::uint32_t(st.width)),
                   y = int(m.pixel / std::uint32_t(st.width));
@@ -212,8 +228,9 @@ bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
         window[std::size_t(y - windowY) * std::size_t(windowW) + std::size_t(x - windowX)] =
             mark.local;
     }
+}
 
-    // The window's prefix sums of map pixels, for overlapsMap().
+void PaintTarget::Context::sumWindow() {
     const std::size_t stride = std::size_t(windowW) + 1;
     windowSums.assign(stride * (std::size_t(windowH) + 1), 0u);
     for (std::size_t y = 0; y < std::size_t(windowH); ++y) {
@@ -226,27 +243,26 @@ bool PaintTarget::Context::beginDab(const DepthLayers& layers, const Dab& d) {
             sums[x + 1] = above[x + 1] + inRow;
         }
     }
+}
 
-    // Their neighbours across edges whose projection reaches a map pixel, and theirs in turn:
-    // triangles too small to cover a pixel centre have no fragment, yet their surface points
-    // (their texels) project into the map.
-    if (topology && topology->edgeNeighbors.size() == triangles) {
-        for (std::size_t i = 0; i < setups.size(); ++i) {
-            const std::array<std::uint32_t, 3> next = topology->edgeNeighbors[setups[i].triangle];
-            for (const std::uint32_t n : next) {
-                if (n >= triangles || marks[n].dab == dab)
-                    continue;
-                marks[n].dab = dab;
-                marks[n].local = kNone;
-                const ViewTriangle& v = viewTriangle(n);
-                if (!v.usable || (cullBackFaces && !v.front) || !overlapsMap(v))
-                    continue;
-                marks[n].local = std::uint32_t(setups.size());
-                setups.push_back(v.setup);
-            }
+void PaintTarget::Context::addNeighbourTriangles() {
+    const std::size_t triangles = mesh->triangleCount();
+    if (!topology || topology->edgeNeighbors.size() != triangles)
+        return;
+    for (std::size_t i = 0; i < setups.size(); ++i) {
+        const std::array<std::uint32_t, 3> next = topology->edgeNeighbors[setups[i].triangle];
+        for (const std::uint32_t n : next) {
+            if (n >= triangles || marks[n].dab == dab)
+                continue;
+            marks[n].dab = dab;
+            marks[n].local = kNone;
+            const ViewTriangle& v = viewTriangle(n);
+            if (!v.usable || (cullBackFaces && !v.front) || !overlapsMap(v))
+                continue;
+            marks[n].local = std::uint32_t(setups.size());
+            setups.push_back(v.setup);
         }
     }
-    return !setups.empty();
 }
 
 bool PaintTarget::Context::windowPreimage(const TriangleSetup& s, const glm::dvec2 texel[3],

@@ -274,7 +274,25 @@ struct PaintTarget::Context {
             dab = 1;
         }
     }
+    /**
+     * Starts dab d in layers' view: its constants, the window onto its map and the triangles
+     * that may reach the map (setups). False when it paints nothing.
+     */
     bool beginDab(const DepthLayers& layers, const Dab& d);
+    /** beginDab()'s first step: the dab's constants; false when it paints nothing. */
+    bool setUpDab(const DepthLayers& layers, const Dab& d);
+    /** The map's bounding box as the window, all kNone; false when the map has no pixel. */
+    bool placeWindow(const DepthStack& st, const Dab& d);
+    /** The triangles of the map's fragments, each set up once, and the window's pixels. */
+    void mapFragmentTriangles(const DepthStack& st, const Dab& d);
+    /** The window's prefix sums of map pixels, for overlapsMap(). */
+    void sumWindow();
+    /**
+     * The neighbours across edges of the triangles set up whose projection reaches a map pixel,
+     * and theirs in turn: triangles too small to cover a pixel centre have no fragment, yet
+     * their surface points (their texels) project into the map.
+     */
+    void addNeighbourTriangles();
     /**
      * Starts a paintElements() call: a new dab number, nothing touched yet. Returns the coverage
      * the elements get, the stroke's opacity (0 when there is nothing to paint).
