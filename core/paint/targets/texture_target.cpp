@@ -92,44 +92,56 @@ bool isWhite(const glm::vec4& v) {
     return v == glm::vec4(1.0f);
 }
 
-} // namespace
-
-TextureTarget::TextureTarget(std::shared_ptr<const Mesh> mesh,
-                             std::shared_ptr<const MeshTopology> topology,
-                             const PaintTargetOptions& options)
-    : PaintTarget(std::move(mesh), std::move(topology), options) {}
-
-TextureTarget::~TextureTarget() = default;
-
-Result<std::unique_ptr<TextureTarget>>
-TextureTarget::create(std::shared_ptr<const Mesh> mesh,
-                      std::shared_ptr<const MeshTopology> topology,
-                      const PaintTargetOptions& options) {
-    if (const Status paintable = checkMesh(mesh, topology); !paintable)
-        return paintable.takeError();
-    if (!mesh->hasUvs())
-        return Error{"the mesh has no texture coordinates to paint a texture with",
-                     ErrorKind::BadInput};
-    std::unique_ptr<TextureTarget> target(new TextureTarget(mesh, topology, options));
-    target->m_padding = std::clamp(options.padding, 0, kTextureTile);
+/**
+ * A new page for a material of base colour factor: a copy of texture with the factor baked in
+ * (texture not nullptr), or resolution² texels of the factor.
+ */
+TextureTarget::Page makePage(const glm::vec4& factor, const Image* texture, int textureIndex,
+                             int resolution) {
     const SrgbTables& srgb = SrgbTables::get();
+    TextureTarget::Page page;
+    page.factor = factor;
+    if (texture != nullptr) {
+        page.source = textureIndex;
+        page.image = *texture;
+        if (!isWhite(page.factor)) {
+            for (std::size_t i = 0; i < page.image.rgba.size(); i += 4) {
+                std::uint8_t* px = &page.image.rgba[i];
+                for (int k = 0; k < 3; ++k)
+                    px[k] = srgb.encode(srgb.decode[px[k]] * page.factor[k]);
+                px[3] = encodeUnorm(float(px[3]) / 255.0f * page.factor[3]);
+            }
+        }
+    } else {
+        page.image.width = page.image.height = resolution;
+        page.image.rgba.resize(std::size_t(resolution) * std::size_t(resolution) * 4);
+        const std::uint8_t fill[4] = {srgb.encode(page.factor.r), srgb.encode(page.factor.g),
+                                      srgb.encode(page.factor.b), encodeUnorm(page.factor.a)};
+        for (std::size_t i = 0; i < page.image.rgba.size(); i += 4)
+            std::memcpy(&page.image.rgba[i], fill, 4);
+    }
+    page.tilesX = (page.image.width + kTextureTile - 1) / kTextureTile;
+    page.tilesY = (page.image.height + kTextureTile - 1) / kTextureTile;
+    page.coverage.assign(std::size_t(page.image.width) * std::size_t(page.image.height), 0u);
+    return page;
+}
 
-    // Vertex colours other than white have to be baked in; white ones change nothing.
-    const bool bakeColors =
-        mesh->hasColors() && std::any_of(mesh->colors.begin(), mesh->colors.end(),
-                                         [](const glm::vec4& c) { return !isWhite(c); });
-
-    // Pages: one per (texture, factor) of textured materials, one shared new page for the rest.
-    std::vector<Page>& pages = target->m_pages;
-    target->m_materialPage.assign(mesh->materials.size(), 0u);
+/**
+ * The pages: one per (texture, factor) of textured materials, one shared new page for the rest;
+ * materialPage and drawMaterials' textures say each material's.
+ */
+void makePages(const Mesh& mesh, const PaintTargetOptions& options,
+               std::vector<TextureTarget::Page>& pages, std::vector<std::uint32_t>& materialPage,
+               std::vector<Material>& drawMaterials) {
+    materialPage.assign(mesh.materials.size(), 0u);
     std::uint32_t newPage = kNone;
     const int resolution = std::clamp(options.resolution, 512, 8192);
-    for (std::size_t m = 0; m < mesh->materials.size(); ++m) {
-        const Material& material = mesh->materials[m];
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const Material& material = mesh.materials[m];
         const int texture = material.baseColorTexture;
         // Texel indices are 32-bit and a dab keeps texel coordinates in 16 bits: a texture
         // beyond 16384² or 65535 texels on a side is baked into a new page instead.
-        const Image* image = texture >= 0 ? &mesh->textures[std::size_t(texture)] : nullptr;
+        const Image* image = texture >= 0 ? &mesh.textures[std::size_t(texture)] : nullptr;
         const bool textured =
             options.reuseTextures && image != nullptr && !image->empty() &&
             std::int64_t(image->width) * image->height <= std::int64_t(16384) * 16384 &&
@@ -144,51 +156,33 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
         }
         if (index == kNone) {
             index = std::uint32_t(pages.size());
-            Page page;
-            page.factor = material.baseColorFactor;
-            if (textured) {
-                page.source = texture;
-                page.image = mesh->textures[std::size_t(texture)];
-                if (!isWhite(page.factor)) {
-                    for (std::size_t i = 0; i < page.image.rgba.size(); i += 4) {
-                        std::uint8_t* px = &page.image.rgba[i];
-                        for (int k = 0; k < 3; ++k)
-                            px[k] = srgb.encode(srgb.decode[px[k]] * page.factor[k]);
-                        px[3] = encodeUnorm(float(px[3]) / 255.0f * page.factor[3]);
-                    }
-                }
-            } else {
+            if (!textured)
                 newPage = index;
-                page.image.width = page.image.height = resolution;
-                page.image.rgba.resize(std::size_t(resolution) * std::size_t(resolution) * 4);
-                const std::uint8_t fill[4] = {
-                    srgb.encode(page.factor.r), srgb.encode(page.factor.g),
-                    srgb.encode(page.factor.b), encodeUnorm(page.factor.a)};
-                for (std::size_t i = 0; i < page.image.rgba.size(); i += 4)
-                    std::memcpy(&page.image.rgba[i], fill, 4);
-            }
-            page.tilesX = (page.image.width + kTextureTile - 1) / kTextureTile;
-            page.tilesY = (page.image.height + kTextureTile - 1) / kTextureTile;
-            page.coverage.assign(std::size_t(page.image.width) * std::size_t(page.image.height),
-                                 0u);
-            pages.push_back(std::move(page));
+            pages.push_back(makePage(material.baseColorFactor, textured ? image : nullptr, texture,
+                                     resolution));
         }
-        target->m_materialPage[m] = index;
-        target->m_drawMaterials[m].baseColorTexture = int(index);
+        materialPage[m] = index;
+        drawMaterials[m].baseColorTexture = int(index);
     }
+}
 
-    // Coverage of every page, baking factor × vertex colours (× texture) into the texels of new
-    // and baked pages; a page that is its texture byte for byte only records coverage.
-    for (std::size_t t = 0; t < mesh->triangleCount(); ++t) {
-        const Material& material = mesh->materials[mesh->triangleMaterial[t]];
-        Page& page = pages[target->m_materialPage[mesh->triangleMaterial[t]]];
+/**
+ * The coverage of every page, baking factor × vertex colours (× texture) into the texels of new
+ * and baked pages; a page that is its texture byte for byte only records coverage.
+ */
+void coverPages(const Mesh& mesh, const std::vector<std::uint32_t>& materialPage, bool bakeColors,
+                std::vector<TextureTarget::Page>& pages) {
+    const SrgbTables& srgb = SrgbTables::get();
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const Material& material = mesh.materials[mesh.triangleMaterial[t]];
+        TextureTarget::Page& page = pages[materialPage[mesh.triangleMaterial[t]]];
         const int width = page.image.width, height = page.image.height;
         glm::vec2 uv[3];
         glm::vec4 colors[3];
         for (int c = 0; c < 3; ++c) {
-            const std::uint32_t v = mesh->indices[3 * t + std::size_t(c)];
-            uv[c] = mesh->uvs[v];
-            colors[c] = bakeColors ? mesh->colors[v] : glm::vec4(1.0f);
+            const std::uint32_t v = mesh.indices[3 * t + std::size_t(c)];
+            uv[c] = mesh.uvs[v];
+            colors[c] = bakeColors ? mesh.colors[v] : glm::vec4(1.0f);
         }
         UvTriangle r;
         if (!setUpUv(uv, width, height, r))
@@ -201,7 +195,7 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
         // overlapping charts visit twice is not multiplied twice.
         const bool bake = bakeColors || page.source < 0;
         const std::uint8_t* source =
-            page.source >= 0 ? mesh->textures[std::size_t(page.source)].rgba.data() : nullptr;
+            page.source >= 0 ? mesh.textures[std::size_t(page.source)].rgba.data() : nullptr;
         const glm::vec4 factor = page.source < 0 ? material.baseColorFactor : page.factor;
         const double invArea = 1.0 / double(r.area);
         scanUv(r, r.minX, r.maxX, r.minY, r.maxY,
@@ -230,23 +224,32 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
                    }
                });
     }
-    for (Page& page : pages) {
-        buildPadding(page, target->m_padding);
+}
+
+/** The seam padding of every page; each page as it is now becomes its original. */
+void padPages(int padding, bool bakeColors, std::vector<TextureTarget::Page>& pages) {
+    for (TextureTarget::Page& page : pages) {
+        buildPadding(page, padding);
         // A page made here gets its padding texels from the charts, so filtering at chart
         // borders shows the surface's colour; a texture kept byte for byte stays as it was.
         const bool baked = page.source < 0 || bakeColors; // baked texel by texel
         if (baked)
-            for (const PadPair& p : page.padPairs)
+            for (const TextureTarget::PadPair& p : page.padPairs)
                 std::memcpy(&page.image.rgba[std::size_t(p.padded) * 4],
                             &page.image.rgba[std::size_t(p.source) * 4], 4);
         page.original = page.image;
     }
+}
 
-    // The pages become the base of the paint layers: no roughness or metal painted yet (rough,
-    // not metallic, as a surface without a metallic-roughness texture usually is meant).
+/**
+ * The paint layer stack whose base is the pages' texels (which move there): no roughness or
+ * metal painted yet (rough, not metallic, as a surface without a metallic-roughness texture
+ * usually is meant).
+ */
+std::unique_ptr<PaintLayerStack> baseOfPages(std::vector<TextureTarget::Page>& pages) {
     std::vector<PageSize> sizes;
     std::vector<std::vector<std::uint8_t>> baseColor, baseMr;
-    for (Page& page : pages) {
+    for (TextureTarget::Page& page : pages) {
         sizes.push_back({page.image.width, page.image.height});
         baseMr.emplace_back(page.image.rgba.size());
         for (std::size_t i = 0; i < baseMr.back().size(); i += 4) {
@@ -259,8 +262,40 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
         baseColor.push_back(std::move(page.image.rgba));
         page.image.rgba.clear();
     }
-    target->m_stack = std::make_unique<PaintLayerStack>(std::move(sizes), std::move(baseColor),
-                                                        std::move(baseMr));
+    return std::make_unique<PaintLayerStack>(std::move(sizes), std::move(baseColor),
+                                             std::move(baseMr));
+}
+
+} // namespace
+
+TextureTarget::TextureTarget(std::shared_ptr<const Mesh> mesh,
+                             std::shared_ptr<const MeshTopology> topology,
+                             const PaintTargetOptions& options)
+    : PaintTarget(std::move(mesh), std::move(topology), options) {}
+
+TextureTarget::~TextureTarget() = default;
+
+Result<std::unique_ptr<TextureTarget>>
+TextureTarget::create(std::shared_ptr<const Mesh> mesh,
+                      std::shared_ptr<const MeshTopology> topology,
+                      const PaintTargetOptions& options) {
+    if (const Status paintable = checkMesh(mesh, topology); !paintable)
+        return paintable.takeError();
+    if (!mesh->hasUvs())
+        return Error{"the mesh has no texture coordinates to paint a texture with",
+                     ErrorKind::BadInput};
+    std::unique_ptr<TextureTarget> target(new TextureTarget(mesh, topology, options));
+    target->m_padding = std::clamp(options.padding, 0, kTextureTile);
+
+    // Vertex colours other than white have to be baked in; white ones change nothing.
+    const bool bakeColors =
+        mesh->hasColors() && std::any_of(mesh->colors.begin(), mesh->colors.end(),
+                                         [](const glm::vec4& c) { return !isWhite(c); });
+    std::vector<Page>& pages = target->m_pages;
+    makePages(*mesh, options, pages, target->m_materialPage, target->m_drawMaterials);
+    coverPages(*mesh, target->m_materialPage, bakeColors, pages);
+    padPages(target->m_padding, bakeColors, pages);
+    target->m_stack = baseOfPages(pages);
 
     std::vector<std::uint32_t> tilesPerPage;
     for (const Page& page : pages)
