@@ -87,29 +87,66 @@ bool similar(const glm::vec4& a, const glm::vec4& b, float tolerance) {
 
 constexpr double kMaxTexel = double(1 << 20); // as uv::setUpUv: texel indices fit an int
 
-std::vector<PaintElement> textureColorFill(const TextureTarget& target,
-                                           const MeshTopology& topology, std::uint32_t seed,
-                                           glm::vec3 barycentric, float tolerance) {
-    const Mesh& mesh = target.mesh();
-    const bool haveTopology = topology.triangleCount() == mesh.triangleCount();
-    const std::vector<std::uint32_t> triangles = componentTriangles(topology, seed);
-    // Texels are joined where their triangles meet on the surface: the same triangle, or two
-    // sharing a corner (a chart's texels). Other charts can touch in UV space and stay apart.
-    const auto adjacent = [&](std::uint32_t a, std::uint32_t b) {
-        return a == b || (haveTopology && topology.sharedCorners(a, b) > 0);
-    };
-
-    // Which component triangle covers each texel of the pages they use (the last one where
-    // charts overlap).
-    struct PageState {
+/**
+ * A colour fill on a texture target (textureColorFill()): the component's triangles, which of
+ * them covers each texel of their pages, and the links between texels across UV seams.
+ */
+struct TextureColorFill {
+    /** A page the component's triangles use: which covers each texel, and the fill's visits. */
+    struct Page {
         int width = 0, height = 0;
         std::vector<std::uint32_t> owner;
         std::vector<std::uint8_t> visited;
     };
-    std::vector<PageState> pages(target.pageCount());
+
+    const TextureTarget& target;
+    const Mesh& mesh;
+    const MeshTopology& topology;
+    const bool haveTopology;
+    const std::vector<std::uint32_t> triangles;
+    std::vector<Page> pages;
+    // Texel to texel across UV seams, both ways, sorted: (node(page, texel), node(...)).
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> links;
+
+    TextureColorFill(const TextureTarget& fillTarget, const MeshTopology& meshTopology,
+                     std::uint32_t seed)
+        : target(fillTarget), mesh(fillTarget.mesh()), topology(meshTopology),
+          haveTopology(meshTopology.triangleCount() == mesh.triangleCount()),
+          triangles(componentTriangles(meshTopology, seed)), pages(fillTarget.pageCount()) {}
+
+    static std::uint64_t node(std::uint32_t page, std::uint32_t texel) {
+        return (std::uint64_t(page) << 32) | texel;
+    }
+    /**
+     * Texels are joined where their triangles meet on the surface: the same triangle, or two
+     * sharing a corner (a chart's texels). Other charts can touch in UV space and stay apart.
+     */
+    bool adjacent(std::uint32_t a, std::uint32_t b) const {
+        return a == b || (haveTopology && topology.sharedCorners(a, b) > 0);
+    }
+    /** Corner of triangle t in texel coordinates of its page. */
+    glm::dvec2 texelPosition(std::uint32_t t, int corner) const {
+        const Page& page = pages[target.trianglePage(t)];
+        const glm::vec2 uv = mesh.uvs[vertexOf(mesh, t, corner)];
+        return glm::dvec2(double(uv.x) * page.width, double(uv.y) * page.height);
+    }
+
+    void markOwners();
+    std::uint32_t texelNear(std::uint32_t t, std::uint32_t p, glm::dvec2 q) const;
+    void linkSeams();
+    void linkEdge(std::uint32_t t, int e);
+    std::vector<PaintElement> spread(std::uint32_t seedPage, std::uint32_t seedTexel,
+                                     float tolerance);
+};
+
+/**
+ * Which component triangle covers each texel of the pages they use (the last one where charts
+ * overlap).
+ */
+void TextureColorFill::markOwners() {
     for (const std::uint32_t t : triangles) {
         const std::uint32_t p = target.trianglePage(t);
-        PageState& page = pages[p];
+        Page& page = pages[p];
         if (page.owner.empty()) {
             page.width = target.page(p).width;
             page.height = target.page(p).height;
@@ -121,109 +158,109 @@ std::vector<PaintElement> textureColorFill(const TextureTarget& target,
         if (pageTriangle(mesh, t, page.width, page.height, r))
             forEachTexel(r, page.width, page.height, [&](std::uint32_t i) { page.owner[i] = t; });
     }
+}
 
-    // The texel of triangle t (on page p) nearest texel position q: its own or a neighbour's
-    // within two texels (a point at a chart's rim has its centre outside), or kNone.
-    const auto texelNear = [&](std::uint32_t t, std::uint32_t p, glm::dvec2 q) {
-        const PageState& page = pages[p];
-        if (!(std::fabs(q.x) < kMaxTexel && std::fabs(q.y) < kMaxTexel))
-            return kNone;
-        const int cx = int(std::floor(q.x)), cy = int(std::floor(q.y));
-        std::uint32_t best = kNone;
-        double bestDistance = std::numeric_limits<double>::infinity();
-        for (int radius = 0; radius <= 2 && best == kNone; ++radius) {
-            for (int dy = -radius; dy <= radius; ++dy) {
-                for (int dx = -radius; dx <= radius; ++dx) {
-                    if (std::max(std::abs(dx), std::abs(dy)) != radius)
-                        continue;
-                    const std::uint32_t i = std::uint32_t(uv::wrapIndex(cy + dy, page.height)) *
-                                                std::uint32_t(page.width) +
-                                            std::uint32_t(uv::wrapIndex(cx + dx, page.width));
-                    const std::uint32_t owner = page.owner[i];
-                    if (owner == kNone || !adjacent(owner, t))
-                        continue;
-                    const glm::dvec2 centre(double(cx + dx) + 0.5, double(cy + dy) + 0.5);
-                    const double d = glm::length(centre - q);
-                    if (d < bestDistance) {
-                        bestDistance = d;
-                        best = i;
-                    }
+/**
+ * The texel of triangle t (on page p) nearest texel position q: its own or a neighbour's within
+ * two texels (a point at a chart's rim has its centre outside), or kNone.
+ */
+std::uint32_t TextureColorFill::texelNear(std::uint32_t t, std::uint32_t p, glm::dvec2 q) const {
+    const Page& page = pages[p];
+    if (!(std::fabs(q.x) < kMaxTexel && std::fabs(q.y) < kMaxTexel))
+        return kNone;
+    const int cx = int(std::floor(q.x)), cy = int(std::floor(q.y));
+    std::uint32_t best = kNone;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    for (int radius = 0; radius <= 2 && best == kNone; ++radius) {
+        for (int dy = -radius; dy <= radius; ++dy) {
+            for (int dx = -radius; dx <= radius; ++dx) {
+                if (std::max(std::abs(dx), std::abs(dy)) != radius)
+                    continue;
+                const std::uint32_t i =
+                    std::uint32_t(uv::wrapIndex(cy + dy, page.height)) * std::uint32_t(page.width) +
+                    std::uint32_t(uv::wrapIndex(cx + dx, page.width));
+                const std::uint32_t owner = page.owner[i];
+                if (owner == kNone || !adjacent(owner, t))
+                    continue;
+                const glm::dvec2 centre(double(cx + dx) + 0.5, double(cy + dy) + 0.5);
+                const double d = glm::length(centre - q);
+                if (d < bestDistance) {
+                    bestDistance = d;
+                    best = i;
                 }
             }
         }
-        return best;
-    };
-    const auto texelPosition = [&](std::uint32_t t, int corner) {
-        const PageState& page = pages[target.trianglePage(t)];
-        const glm::vec2 uv = mesh.uvs[vertexOf(mesh, t, corner)];
-        return glm::dvec2(double(uv.x) * page.width, double(uv.y) * page.height);
-    };
-
-    const std::uint32_t seedPage = target.trianglePage(seed);
-    glm::dvec2 seedPosition(0.0);
-    for (int c = 0; c < 3; ++c)
-        seedPosition += double(barycentric[c]) * texelPosition(seed, c);
-    const std::uint32_t seedTexel = texelNear(seed, seedPage, seedPosition);
-    if (seedTexel == kNone)
-        return {};
-
-    // Across UV seams: texels along a shared mesh edge, one side's to the other's, sampled at
-    // half a texel along the edge and half a texel inside each triangle.
-    const auto node = [](std::uint32_t page, std::uint32_t texel) {
-        return (std::uint64_t(page) << 32) | texel;
-    };
-    std::vector<std::pair<std::uint64_t, std::uint64_t>> links;
-    if (haveTopology) {
-        for (const std::uint32_t t : triangles) {
-            for (int e = 0; e < 3; ++e) {
-                const std::uint32_t n = topology.edgeNeighbors[t][std::size_t(e)];
-                if (n == kNone || n <= t || n >= mesh.triangleCount())
-                    continue;
-                const std::uint32_t wa = topology.corners[t][std::size_t(e)];
-                const std::uint32_t wb = topology.corners[t][std::size_t((e + 1) % 3)];
-                int ka = -1, kb = -1;
-                for (int k = 0; k < 3; ++k) {
-                    if (topology.corners[n][std::size_t(k)] == wa && ka < 0)
-                        ka = k;
-                    else if (topology.corners[n][std::size_t(k)] == wb && kb < 0)
-                        kb = k;
-                }
-                if (ka < 0 || kb < 0)
-                    continue;
-                const std::uint32_t pt = target.trianglePage(t), pn = target.trianglePage(n);
-                const glm::dvec2 at = texelPosition(t, e), bt = texelPosition(t, (e + 1) % 3),
-                                 ct = texelPosition(t, (e + 2) % 3);
-                const glm::dvec2 an = texelPosition(n, ka), bn = texelPosition(n, kb),
-                                 cn = texelPosition(n, 3 - ka - kb);
-                if (pt == pn && glm::length(at - an) < 1e-3 && glm::length(bt - bn) < 1e-3)
-                    continue; // one chart: its texels are neighbours already
-                const double length = std::max(glm::length(bt - at), glm::length(bn - an));
-                if (!std::isfinite(length) || length > kMaxTexel)
-                    continue;
-                const int samples = std::clamp(int(std::ceil(2.0 * length)) + 1, 1, 8192);
-                const auto inside = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double s) {
-                    glm::dvec2 q = a + s * (b - a);
-                    const glm::dvec2 toCentre = (a + b + c) / 3.0 - q;
-                    const double d = glm::length(toCentre);
-                    if (d > 0.0)
-                        q += toCentre * std::min(0.5 / d, 1.0);
-                    return q;
-                };
-                for (int k = 0; k < samples; ++k) {
-                    const double s = (double(k) + 0.5) / double(samples);
-                    const std::uint32_t from = texelNear(t, pt, inside(at, bt, ct, s));
-                    const std::uint32_t to = texelNear(n, pn, inside(an, bn, cn, s));
-                    if (from == kNone || to == kNone)
-                        continue;
-                    links.emplace_back(node(pt, from), node(pn, to));
-                    links.emplace_back(node(pn, to), node(pt, from));
-                }
-            }
-        }
-        std::sort(links.begin(), links.end());
-        links.erase(std::unique(links.begin(), links.end()), links.end());
     }
+    return best;
+}
 
+/** Across UV seams: the links of every edge the component's triangles share (sorted). */
+void TextureColorFill::linkSeams() {
+    if (!haveTopology)
+        return;
+    for (const std::uint32_t t : triangles)
+        for (int e = 0; e < 3; ++e)
+            linkEdge(t, e);
+    std::sort(links.begin(), links.end());
+    links.erase(std::unique(links.begin(), links.end()), links.end());
+}
+
+/**
+ * Edge e of triangle t, when its neighbour there lies on another chart: texels along the edge,
+ * one side's to the other's, sampled at half a texel along the edge and half a texel inside each
+ * triangle.
+ */
+void TextureColorFill::linkEdge(std::uint32_t t, int e) {
+    const std::uint32_t n = topology.edgeNeighbors[t][std::size_t(e)];
+    if (n == kNone || n <= t || n >= mesh.triangleCount())
+        return;
+    const std::uint32_t wa = topology.corners[t][std::size_t(e)];
+    const std::uint32_t wb = topology.corners[t][std::size_t((e + 1) % 3)];
+    int ka = -1, kb = -1;
+    for (int k = 0; k < 3; ++k) {
+        if (topology.corners[n][std::size_t(k)] == wa && ka < 0)
+            ka = k;
+        else if (topology.corners[n][std::size_t(k)] == wb && kb < 0)
+            kb = k;
+    }
+    if (ka < 0 || kb < 0)
+        return;
+    const std::uint32_t pt = target.trianglePage(t), pn = target.trianglePage(n);
+    const glm::dvec2 at = texelPosition(t, e), bt = texelPosition(t, (e + 1) % 3),
+                     ct = texelPosition(t, (e + 2) % 3);
+    const glm::dvec2 an = texelPosition(n, ka), bn = texelPosition(n, kb),
+                     cn = texelPosition(n, 3 - ka - kb);
+    if (pt == pn && glm::length(at - an) < 1e-3 && glm::length(bt - bn) < 1e-3)
+        return; // one chart: its texels are neighbours already
+    const double length = std::max(glm::length(bt - at), glm::length(bn - an));
+    if (!std::isfinite(length) || length > kMaxTexel)
+        return;
+    const int samples = std::clamp(int(std::ceil(2.0 * length)) + 1, 1, 8192);
+    const auto inside = [](glm::dvec2 a, glm::dvec2 b, glm::dvec2 c, double s) {
+        glm::dvec2 q = a + s * (b - a);
+        const glm::dvec2 toCentre = (a + b + c) / 3.0 - q;
+        const double d = glm::length(toCentre);
+        if (d > 0.0)
+            q += toCentre * std::min(0.5 / d, 1.0);
+        return q;
+    };
+    for (int k = 0; k < samples; ++k) {
+        const double s = (double(k) + 0.5) / double(samples);
+        const std::uint32_t from = texelNear(t, pt, inside(at, bt, ct, s));
+        const std::uint32_t to = texelNear(n, pn, inside(an, bn, cn, s));
+        if (from == kNone || to == kNone)
+            continue;
+        links.emplace_back(node(pt, from), node(pn, to));
+        links.emplace_back(node(pn, to), node(pt, from));
+    }
+}
+
+/**
+ * The texels of similar colour connected to the seed texel: breadth first over the 4 neighbours
+ * of a page between adjacent triangles' texels and over the seams' links.
+ */
+std::vector<PaintElement> TextureColorFill::spread(std::uint32_t seedPage, std::uint32_t seedTexel,
+                                                   float tolerance) {
     // Bytes are sRGB-encoded already: compare them as integers (|difference| / 255 within
     // the tolerance, as similar() would).
     const int limit = int(std::floor(tolerance * 255.0f + 255.0f * 1e-6f));
@@ -244,7 +281,7 @@ std::vector<PaintElement> textureColorFill(const TextureTarget& target,
         if (!similarTexel(p, texel))
             continue;
         result.push_back({p, texel});
-        PageState& page = pages[p];
+        Page& page = pages[p];
         const std::uint32_t owner = page.owner[texel];
         const int x = int(texel % std::uint32_t(page.width));
         const int y = int(texel / std::uint32_t(page.width));
@@ -270,6 +307,22 @@ std::vector<PaintElement> textureColorFill(const TextureTarget& target,
         }
     }
     return result;
+}
+
+std::vector<PaintElement> textureColorFill(const TextureTarget& target,
+                                           const MeshTopology& topology, std::uint32_t seed,
+                                           glm::vec3 barycentric, float tolerance) {
+    TextureColorFill fill(target, topology, seed);
+    fill.markOwners();
+    const std::uint32_t seedPage = target.trianglePage(seed);
+    glm::dvec2 seedPosition(0.0);
+    for (int c = 0; c < 3; ++c)
+        seedPosition += double(barycentric[c]) * fill.texelPosition(seed, c);
+    const std::uint32_t seedTexel = fill.texelNear(seed, seedPage, seedPosition);
+    if (seedTexel == kNone)
+        return {};
+    fill.linkSeams();
+    return fill.spread(seedPage, seedTexel, tolerance);
 }
 
 std::vector<PaintElement> vertexColorFill(const VertexColorTarget& target,
