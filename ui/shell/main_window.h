@@ -287,10 +287,6 @@ private:
     void onPaintReleased(QPointF pixel);
     /** Ends a stroke in progress and puts it on the undo stack. */
     void finishStroke();
-    /**
-     * Makes the undo stack offer exactly the document's paint steps and the order steps of the
-     * current layers (those of earlier layers go).
-     */
     /** Undo/redo changed the document: show its paint, target and order. */
     void onHistoryApplied(const core::PaintChanges& changes);
     void setPaintTarget(const core::PaintTargetOptions& options);
@@ -330,8 +326,10 @@ private:
     void onLoadCancelled(const QString& source);
     void startProgress(const QString& source);
     void stopProgress();
-    /** The status bar's model line and the notes over the view (warnings, note, no UVs). */
-    /** plainModel: a model file, not a project (which keeps its own paint target). */
+    /**
+     * The status bar's model line and the notes over the view (warnings, note, no UVs).
+     * plainModel: a model file, not a project (which keeps its own paint target).
+     */
     void updateModelInfo(const core::Mesh& mesh, const QString& note = {}, bool plainModel = true);
 
     // ~MainWindow deletes the widgets that refer to it before it goes.
@@ -394,7 +392,6 @@ private:
     bool m_painting = false;
     bool m_picking = false;      // the eyedropper is held down
     float m_lastPressure = 1.0f; // of the stroke's last sample, for its end
-    /** undoCount() + droppedCount() of the history at the press: the stroke added a step. */
     StrokeStats m_strokeStats;
     core::PaintTargetOptions m_paintOptions;
     Preferences m_preferences;
