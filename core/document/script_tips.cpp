@@ -65,10 +65,12 @@ constexpr JitterKey kJitterKeys[] = {
 Status applyJitter(BrushJitter& jitter, const json& j) {
     if (!j.is_object())
         return Error{"\"jitter\" must be an object {size, opacity, angle, scatter}"};
-    for (const auto& [key, value] : j.items())
+    for (const auto& item : j.items()) {
+        const std::string& key = item.key();
         if (std::none_of(std::begin(kJitterKeys), std::end(kJitterKeys),
                          [&key](const JitterKey& k) { return key == k.key; }))
             return Error{"\"jitter\" has an unknown key \"" + key + "\""};
+    }
     for (const JitterKey& k : kJitterKeys)
         if (Status s = readNumber(j, k.key, k.lo, k.hi, jitter.*k.field); !s)
             return s;
