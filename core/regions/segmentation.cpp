@@ -5,6 +5,7 @@
 #include <bit>
 #include <chrono>
 #include <climits>
+#include <cstdint>
 #include <memory>
 #include <numeric>
 
@@ -123,218 +124,265 @@ void stitchRows(const DepthStack& stack, const Connectivity& conn, std::uint32_t
     }
 }
 
-} // namespace
+/** The recent pairs a band counts in place: 2^kRecentPairBits slots. */
+constexpr unsigned kRecentPairBits = 12;
 
-Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& conn, unsigned threads,
-                                SegmentationTimings* timings) {
-    const auto start = std::chrono::steady_clock::now();
-    Segmentation out;
-    const std::size_t fragments = stack.fragmentCount();
-    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1 ||
-        conn.width != stack.width || conn.height != stack.height ||
-        conn.links.size() != 4 * fragments || stack.offsets.back() != fragments) {
-        out.graph.neighborOffsets.assign(1, 0);
-        return out;
-    }
-    const int w = stack.width, h = stack.height;
-    const int parts = partCount(h, threads);
-    auto rowFragment = [&](int y) { return stack.offsets[std::size_t(y) * std::size_t(w)]; };
-    // Bands of rows with about as many fragments each (a model seldom fills the view evenly):
-    // band i is rows [bandRow[i], bandRow[i + 1]), perhaps empty.
-    std::vector<int> bandRow(std::size_t(parts) + 1, h);
-    for (int index = 0; index < parts; ++index) {
-        const std::uint64_t wanted =
-            std::uint64_t(fragments) * std::uint64_t(index) / std::uint64_t(parts);
-        int lo = 0, hi = h; // the first row starting at or after the wanted fragment
-        while (lo < hi) {
-            const int mid = lo + (hi - lo) / 2;
-            if (rowFragment(mid) < wanted)
-                lo = mid + 1;
-            else
-                hi = mid;
+/**
+ * A band's share of the work, kept until the bands are merged: its union-find roots, then its
+ * partial region nodes and cross-layer links.
+ */
+struct SegmentBand {
+    std::vector<std::uint32_t> roots;      // local roots in scan order
+    std::vector<std::uint32_t> rootLayers; // their 1-based layers
+    std::vector<Region> regions;           // partial nodes, by region id
+    // Cross-layer links as (smaller, larger) ids with their count; neighbouring pixels
+    // mostly repeat a pair, which a small direct-mapped table of recent pairs counts in
+    // place, so far fewer entries are sorted.
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
+    std::vector<std::uint32_t> recent; // an index into pairs, or kNone
+    void addPair(std::uint64_t key) {
+        const std::size_t slot =
+            std::size_t((key * 0x9e3779b97f4a7c15ull) >> (64 - kRecentPairBits));
+        std::uint32_t& index = recent[slot];
+        if (index != kNone && pairs[index].first == key) {
+            ++pairs[index].second;
+            return;
         }
-        bandRow[std::size_t(index)] = index == 0 ? 0 : lo;
+        index = std::uint32_t(pairs.size());
+        pairs.emplace_back(key, 1u);
     }
-    // Calls fn(band, y0, y1) for every band, each on its own thread.
-    const auto forBands = [&](auto&& fn) {
+};
+
+/** The scratch of one segmentDepthLayers() call, which its passes fill in turn. */
+struct Segmenter {
+    const DepthStack& stack;
+    const Connectivity& conn;
+    int width = 0, height = 0;
+    int parts = 0;
+    // Band i is rows [bandRow[i], bandRow[i + 1]), perhaps empty.
+    std::vector<int> bandRow;
+    std::vector<SegmentBand> bands;
+    // Union-find parents, one per fragment: every entry is set (per band) before it is read.
+    std::unique_ptr<std::uint32_t[]> parent;
+    std::uint32_t deepestLayer = 0; // of any root
+    // [band * deepestLayer + k - 1]: the band's roots on layer k, then the next id it gives
+    // one; after numbering, the last band's counter of a layer is the layer's end.
+    std::vector<std::uint32_t> base;
+    std::uint32_t regionCount = 0;
+
+    std::uint32_t rowFragment(int y) const {
+        return stack.offsets[std::size_t(y) * std::size_t(width)];
+    }
+    /** Calls fn(band, y0, y1) for every band, each on its own thread. */
+    template <typename Fn> void forBands(Fn&& fn) const {
         parallelRanges(parts, unsigned(parts), [&](int, int begin, int end) {
             for (int index = begin; index < end; ++index)
                 fn(index, bandRow[std::size_t(index)], bandRow[std::size_t(index) + 1]);
         });
-    };
-    struct Part {
-        std::vector<std::uint32_t> roots;      // local roots in scan order
-        std::vector<std::uint32_t> rootLayers; // their 1-based layers
-        std::vector<Region> regions;           // partial nodes, by region id
-        // Cross-layer links as (smaller, larger) ids with their count; neighbouring pixels
-        // mostly repeat a pair, which a small direct-mapped table of recent pairs counts in
-        // place, so far fewer entries are sorted.
-        std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
-        std::vector<std::uint32_t> recent; // kRecentPairs slots: an index into pairs, or kNone
-        void addPair(std::uint64_t key) {
-            const std::size_t slot = std::size_t((key * 0x9e3779b97f4a7c15ull) >> 52);
-            std::uint32_t& index = recent[slot];
-            if (index != kNone && pairs[index].first == key) {
-                ++pairs[index].second;
-                return;
-            }
-            index = std::uint32_t(pairs.size());
-            pairs.emplace_back(key, 1u);
-        }
-    };
-    std::vector<Part> part(static_cast<std::size_t>(parts));
+    }
+};
 
-    // 1. Label each band of rows on its own, flatten it (parent[i] <= i, so one ascending pass)
-    //    and note its roots.
-    // Every entry is set (per band) before it is read.
-    const auto parentStore = std::make_unique_for_overwrite<std::uint32_t[]>(fragments);
-    std::uint32_t* parent = parentStore.get();
-    forBands([&](int index, int y0, int y1) {
-        Part& own = part[std::size_t(index)];
-        const std::uint32_t f0 = rowFragment(y0), f1 = rowFragment(y1);
-        std::iota(parent + f0, parent + f1, f0);
-        labelRows(stack, conn, parent, y0, y1);
-        for (int y = y0; y < y1; ++y)
-            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
-                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1];
-                     ++f, ++k) {
-                    parent[f] = parent[parent[f]];
-                    if (parent[f] == f) {
-                        own.roots.push_back(f);
-                        own.rootLayers.push_back(k);
-                    }
+/**
+ * Bands of rows with about as many fragments each (a model seldom fills the view evenly), one
+ * per thread.
+ */
+void planBands(Segmenter& s, unsigned threads) {
+    const std::size_t fragments = s.stack.fragmentCount();
+    const int h = s.height;
+    s.parts = partCount(h, threads);
+    s.bandRow.assign(std::size_t(s.parts) + 1, h);
+    for (int index = 0; index < s.parts; ++index) {
+        const std::uint64_t wanted =
+            std::uint64_t(fragments) * std::uint64_t(index) / std::uint64_t(s.parts);
+        int lo = 0, hi = h; // the first row starting at or after the wanted fragment
+        while (lo < hi) {
+            const int mid = lo + (hi - lo) / 2;
+            if (s.rowFragment(mid) < wanted)
+                lo = mid + 1;
+            else
+                hi = mid;
+        }
+        s.bandRow[std::size_t(index)] = index == 0 ? 0 : lo;
+    }
+    s.bands.resize(std::size_t(s.parts));
+}
+
+/**
+ * Labels rows [y0, y1) on their own, flattens them (parent[i] <= i, so one ascending pass) and
+ * notes their roots.
+ */
+void labelBand(const Segmenter& s, SegmentBand& own, int y0, int y1) {
+    const DepthStack& stack = s.stack;
+    const int w = s.width;
+    std::uint32_t* parent = s.parent.get();
+    const std::uint32_t f0 = s.rowFragment(y0), f1 = s.rowFragment(y1);
+    std::iota(parent + f0, parent + f1, f0);
+    labelRows(stack, s.conn, parent, y0, y1);
+    for (int y = y0; y < y1; ++y)
+        for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            for (std::uint32_t f = stack.offsets[p], k = 1; f < stack.offsets[p + 1]; ++f, ++k) {
+                parent[f] = parent[parent[f]];
+                if (parent[f] == f) {
+                    own.roots.push_back(f);
+                    own.rootLayers.push_back(k);
                 }
             }
-    });
-    // 2. Stitch the bands in order; this only touches roots and short paths.
-    for (int index = 1; index < parts; ++index)
-        if (const int y = bandRow[std::size_t(index)]; y > 0 && y < h)
-            stitchRows(stack, conn, parent, y);
+        }
+}
 
-    // 3. Number the surviving roots by layer, then scan order (bands are in scan order).
-    std::uint32_t layers = 0;
-    for (const Part& own : part)
+/** Joins the bands' sets across their seams, in order; this only touches roots and short paths. */
+void stitchBands(Segmenter& s) {
+    for (int index = 1; index < s.parts; ++index)
+        if (const int y = s.bandRow[std::size_t(index)]; y > 0 && y < s.height)
+            stitchRows(s.stack, s.conn, s.parent.get(), y);
+}
+
+/**
+ * Counts the surviving roots per band and layer and turns the counts into each band's first id
+ * on each layer: ids run by layer, then scan order (bands are in scan order).
+ */
+void planRegionIds(Segmenter& s) {
+    const std::uint32_t* parent = s.parent.get();
+    s.deepestLayer = 0;
+    for (const SegmentBand& own : s.bands)
         for (std::uint32_t k : own.rootLayers)
-            layers = std::max(layers, k);
-    std::vector<std::uint32_t> base(std::size_t(parts) * layers, 0);
-    for (int index = 0; index < parts; ++index) {
-        const Part& own = part[std::size_t(index)];
+            s.deepestLayer = std::max(s.deepestLayer, k);
+    const std::uint32_t layerSpan = s.deepestLayer;
+    s.base.assign(std::size_t(s.parts) * layerSpan, 0);
+    for (int index = 0; index < s.parts; ++index) {
+        const SegmentBand& own = s.bands[std::size_t(index)];
         for (std::size_t i = 0; i < own.roots.size(); ++i)
             if (parent[own.roots[i]] == own.roots[i])
-                ++base[std::size_t(index) * layers + own.rootLayers[i] - 1];
+                ++s.base[std::size_t(index) * layerSpan + own.rootLayers[i] - 1];
     }
-    std::uint32_t regionCount = 0;
-    for (std::uint32_t k = 0; k < layers; ++k)
-        for (int index = 0; index < parts; ++index) {
-            std::uint32_t& slot = base[std::size_t(index) * layers + k];
+    s.regionCount = 0;
+    for (std::uint32_t k = 0; k < layerSpan; ++k)
+        for (int index = 0; index < s.parts; ++index) {
+            std::uint32_t& slot = s.base[std::size_t(index) * layerSpan + k];
             const std::uint32_t count = slot;
-            slot = regionCount;
-            regionCount += count;
+            slot = s.regionCount;
+            s.regionCount += count;
         }
-    out.region.resize(fragments);
-    std::uint32_t* region = out.region.data();
-    for (int index = 0; index < parts; ++index) {
-        const Part& own = part[std::size_t(index)];
-        std::uint32_t* nextId = base.data() + std::size_t(index) * layers;
+}
+
+/**
+ * Numbers the surviving roots. The band roots the stitching joined to others take their final
+ * root's id and become roots again (a root reached on the way already has its final id).
+ */
+void numberBandRoots(Segmenter& s, std::uint32_t* region) {
+    std::uint32_t* parent = s.parent.get();
+    for (int index = 0; index < s.parts; ++index) {
+        const SegmentBand& own = s.bands[std::size_t(index)];
+        std::uint32_t* nextId = s.base.data() + std::size_t(index) * s.deepestLayer;
         for (std::size_t i = 0; i < own.roots.size(); ++i)
             if (parent[own.roots[i]] == own.roots[i])
                 region[own.roots[i]] = nextId[own.rootLayers[i] - 1]++;
     }
-    // The band roots the stitching joined to others take their final root's id and become
-    // roots again (a root reached on the way already has its final id).
-    for (const Part& own : part)
+    for (const SegmentBand& own : s.bands)
         for (const std::uint32_t root : own.roots)
             if (parent[root] != root) {
                 region[root] = region[findRootReadOnly(parent, root)];
                 parent[root] = root;
             }
+}
 
-    // 4. Every other fragment's id: its parent is a band root (flattened per band, and the
-    //    stitching's path halving links only to band roots), whose id is final; only the ids
-    //    of band roots are read across bands.
-    forBands([&](int, int y0, int y1) {
-        for (std::uint32_t f = rowFragment(y0), f1 = rowFragment(y1); f < f1; ++f)
+/**
+ * Every other fragment's id: its parent is a band root (flattened per band, and the stitching's
+ * path halving links only to band roots), whose id is final; only the ids of band roots are
+ * read across bands.
+ */
+void spreadRegionIds(const Segmenter& s, std::uint32_t* region) {
+    const std::uint32_t* parent = s.parent.get();
+    s.forBands([&](int, int y0, int y1) {
+        for (std::uint32_t f = s.rowFragment(y0), f1 = s.rowFragment(y1); f < f1; ++f)
             if (parent[f] != f)
                 region[f] = region[parent[f]];
     });
-    // 5. The partial region nodes and the cross-layer links, per band.
-    forBands([&](int index, int y0, int y1) {
-        Part& own = part[std::size_t(index)];
-        own.regions.assign(regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
-        own.recent.assign(std::size_t(1) << 12, kNone);
-        // Per layer, the run of the row's fragments in one region so far (layer k's at k - 1):
-        // a region's node takes a run at once, not each of its fragments.
-        struct Run {
-            std::uint32_t region = kNone;
-            std::uint32_t pixels = 0;
-            int minX = 0, maxX = 0;
-        };
-        std::vector<Run> runs;
-        const auto close = [&](Run& run, int y) {
-            if (run.region == kNone)
-                return;
-            Region& node = own.regions[run.region];
-            node.pixels += run.pixels;
-            node.minX = std::min(node.minX, run.minX);
-            node.maxX = std::max(node.maxX, run.maxX);
-            node.minY = std::min(node.minY, y);
-            node.maxY = std::max(node.maxY, y);
-            run.region = kNone;
-        };
-        for (int y = y0; y < y1; ++y) {
-            for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
-                const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
-                const std::uint32_t n = stack.layerCount(p);
-                if (runs.size() < n)
-                    runs.resize(n);
-                for (std::uint32_t k = 1; k <= n; ++k) {
-                    const std::uint32_t f = stack.offsets[p] + k - 1;
-                    const std::uint32_t r = region[f];
-                    if (Run& run = runs[k - 1]; run.region == r) {
-                        ++run.pixels;
-                        run.maxX = x;
-                    } else {
-                        close(run, y);
-                        run = {r, 1, x, x};
-                    }
-                    if (k > kMaxLinkedLayers)
+}
+
+/** The pixel a fragment at p = (x, y) links to in direction d, or SIZE_MAX outside the view. */
+inline std::size_t linkedPixel(int d, std::size_t p, int x, int y, int w, int h) {
+    const bool inside = d == kRight ? x + 1 < w : d == kLeft ? x > 0 : d == kUp ? y > 0 : y + 1 < h;
+    if (!inside)
+        return SIZE_MAX;
+    return d == kRight  ? p + 1
+           : d == kLeft ? p - 1
+           : d == kUp   ? p - std::size_t(w)
+                        : p + std::size_t(w);
+}
+
+/** Rows [y0, y1)'s partial region nodes and their cross-layer links, sorted. */
+void collectBand(const Segmenter& s, const std::uint32_t* region, SegmentBand& own, int y0,
+                 int y1) {
+    const DepthStack& stack = s.stack;
+    const int w = s.width, h = s.height;
+    own.regions.assign(s.regionCount, Region{0, 0, 0, INT_MAX, INT_MAX, INT_MIN, INT_MIN});
+    own.recent.assign(std::size_t(1) << kRecentPairBits, kNone);
+    // Per layer, the run of the row's fragments in one region so far (layer k's at k - 1):
+    // a region's node takes a run at once, not each of its fragments.
+    struct Run {
+        std::uint32_t region = kNone;
+        std::uint32_t pixels = 0;
+        int minX = 0, maxX = 0;
+    };
+    std::vector<Run> runs;
+    const auto close = [&](Run& run, int y) {
+        if (run.region == kNone)
+            return;
+        Region& node = own.regions[run.region];
+        node.pixels += run.pixels;
+        node.minX = std::min(node.minX, run.minX);
+        node.maxX = std::max(node.maxX, run.maxX);
+        node.minY = std::min(node.minY, y);
+        node.maxY = std::max(node.maxY, y);
+        run.region = kNone;
+    };
+    for (int y = y0; y < y1; ++y) {
+        for (auto [x, end] = stack.rowSpan(y); x < end; ++x) {
+            const std::size_t p = std::size_t(y) * std::size_t(w) + std::size_t(x);
+            const std::uint32_t n = stack.layerCount(p);
+            if (runs.size() < n)
+                runs.resize(n);
+            for (std::uint32_t k = 1; k <= n; ++k) {
+                const std::uint32_t f = stack.offsets[p] + k - 1;
+                const std::uint32_t r = region[f];
+                if (Run& run = runs[k - 1]; run.region == r) {
+                    ++run.pixels;
+                    run.maxX = x;
+                } else {
+                    close(run, y);
+                    run = {r, 1, x, x};
+                }
+                if (k > kMaxLinkedLayers)
+                    continue;
+                const std::uint8_t* l = s.conn.links.data() + 4 * std::size_t(f);
+                for (unsigned cross = crossLayerLinks(l, k); cross != 0; cross &= cross - 1) {
+                    const int d = std::countr_zero(cross) / 8;
+                    const std::size_t q = linkedPixel(d, p, x, y, w, h);
+                    if (q == SIZE_MAX)
                         continue;
-                    const std::uint8_t* l = conn.links.data() + 4 * std::size_t(f);
-                    for (unsigned cross = crossLayerLinks(l, k); cross != 0; cross &= cross - 1) {
-                        const int d = std::countr_zero(cross) / 8;
-                        const bool inside = d == kRight  ? x + 1 < w
-                                            : d == kLeft ? x > 0
-                                            : d == kUp   ? y > 0
-                                                         : y + 1 < h;
-                        if (!inside)
-                            continue;
-                        const std::size_t q = d == kRight  ? p + 1
-                                              : d == kLeft ? p - 1
-                                              : d == kUp   ? p - std::size_t(w)
-                                                           : p + std::size_t(w);
-                        const std::uint32_t g = target(stack, q, l[d]);
-                        if (g == kNone)
-                            continue;
-                        const std::uint64_t a = r, b = region[g];
-                        own.addPair(a < b ? (a << 32) | b : (b << 32) | a);
-                    }
+                    const std::uint32_t g = target(stack, q, l[d]);
+                    if (g == kNone)
+                        continue;
+                    const std::uint64_t a = r, b = region[g];
+                    own.addPair(a < b ? (a << 32) | b : (b << 32) | a);
                 }
             }
-            for (Run& run : runs)
-                close(run, y);
         }
-        std::sort(own.pairs.begin(), own.pairs.end());
-    });
+        for (Run& run : runs)
+            close(run, y);
+    }
+    std::sort(own.pairs.begin(), own.pairs.end());
+}
 
-    const auto graphStart = std::chrono::steady_clock::now();
-    // 6. Region nodes: merge the bands' partial nodes.
-    RegionGraph& graph = out.graph;
-    graph.regions = std::move(part[0].regions);
-    for (int index = 1; index < parts; ++index)
-        for (std::uint32_t r = 0; r < regionCount; ++r) {
+/** The graph's region nodes: the bands' partial nodes merged, with their ids and layers. */
+void mergeRegionNodes(Segmenter& s, RegionGraph& graph) {
+    graph.regions = std::move(s.bands[0].regions);
+    for (int index = 1; index < s.parts; ++index)
+        for (std::uint32_t r = 0; r < s.regionCount; ++r) {
             Region& node = graph.regions[r];
-            const Region& more = part[std::size_t(index)].regions[r];
+            const Region& more = s.bands[std::size_t(index)].regions[r];
             node.pixels += more.pixels;
             node.minX = std::min(node.minX, more.minX);
             node.maxX = std::max(node.maxX, more.maxX);
@@ -343,16 +391,22 @@ Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& con
         }
     // Ids run layer by layer; after numbering, the last band's counter of a layer is the
     // layer's end.
-    for (std::uint32_t k = 0, id = 0; k < layers; ++k)
-        for (const std::uint32_t end = base[std::size_t(parts - 1) * layers + k]; id < end; ++id) {
+    const std::uint32_t layerSpan = s.deepestLayer;
+    for (std::uint32_t k = 0, id = 0; k < layerSpan; ++k)
+        for (const std::uint32_t end = s.base[std::size_t(s.parts - 1) * layerSpan + k]; id < end;
+             ++id) {
             graph.regions[id].id = id;
             graph.regions[id].layer = k + 1;
         }
+}
 
-    // 7. Region edges: count the unordered region pairs of the cross-layer links.
-    //    Each band sorted its own; merged here.
+/**
+ * The unordered region pairs of the cross-layer links with their link counts, by pair: each
+ * band sorted its own; merged here.
+ */
+std::vector<std::pair<std::uint64_t, std::uint32_t>> countRegionPairs(const Segmenter& s) {
     std::vector<std::pair<std::uint64_t, std::uint32_t>> pairs;
-    for (const Part& own : part) {
+    for (const SegmentBand& own : s.bands) {
         const std::ptrdiff_t sorted = std::ptrdiff_t(pairs.size());
         pairs.insert(pairs.end(), own.pairs.begin(), own.pairs.end());
         std::inplace_merge(pairs.begin(), pairs.begin() + sorted, pairs.end());
@@ -366,6 +420,12 @@ Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& con
         edges.emplace_back(pairs[i].first, count);
         i = j;
     }
+    return edges;
+}
+
+/** The graph's region edges: each region's neighbour list, from the counted pairs. */
+void fillNeighborLists(const std::vector<std::pair<std::uint64_t, std::uint32_t>>& edges,
+                       std::uint32_t regionCount, RegionGraph& graph) {
     graph.neighborOffsets.assign(std::size_t(regionCount) + 1, 0);
     for (const auto& [key, count] : edges) {
         ++graph.neighborOffsets[(key >> 32) + 1];
@@ -382,6 +442,43 @@ Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& con
         graph.neighbors[fill[r]++] = {s, count};
         graph.neighbors[fill[s]++] = {r, count};
     }
+}
+
+} // namespace
+
+Segmentation segmentDepthLayers(const DepthStack& stack, const Connectivity& conn, unsigned threads,
+                                SegmentationTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    Segmentation out;
+    const std::size_t fragments = stack.fragmentCount();
+    if (stack.width <= 0 || stack.height <= 0 || stack.offsets.size() != stack.pixelCount() + 1 ||
+        conn.width != stack.width || conn.height != stack.height ||
+        conn.links.size() != 4 * fragments || stack.offsets.back() != fragments) {
+        out.graph.neighborOffsets.assign(1, 0);
+        return out;
+    }
+    Segmenter s{stack, conn, stack.width, stack.height};
+    planBands(s, threads);
+    // 1. Label each band of rows on its own; 2. stitch the bands in order.
+    s.parent = std::make_unique_for_overwrite<std::uint32_t[]>(fragments);
+    s.forBands(
+        [&](int index, int y0, int y1) { labelBand(s, s.bands[std::size_t(index)], y0, y1); });
+    stitchBands(s);
+    // 3. Number the surviving roots by layer, then scan order; 4. every other fragment's id.
+    planRegionIds(s);
+    out.region.resize(fragments);
+    std::uint32_t* region = out.region.data();
+    numberBandRoots(s, region);
+    spreadRegionIds(s, region);
+    // 5. The partial region nodes and the cross-layer links, per band.
+    s.forBands([&](int index, int y0, int y1) {
+        collectBand(s, region, s.bands[std::size_t(index)], y0, y1);
+    });
+
+    const auto graphStart = std::chrono::steady_clock::now();
+    // 6. Region nodes: merge the bands' partial nodes; 7. region edges from the link pairs.
+    mergeRegionNodes(s, out.graph);
+    fillNeighborLists(countRegionPairs(s), s.regionCount, out.graph);
     if (timings) {
         const auto ms = [](auto a, auto b) {
             return std::chrono::duration<double, std::milli>(b - a).count();
