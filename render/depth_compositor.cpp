@@ -90,6 +90,21 @@ std::uint32_t hash32(std::uint32_t x) {
     x ^= x >> 16;
     return x;
 }
+
+/** The composing variant's material channel: what the picture shows of the material. */
+unsigned channelVariant(MaterialChannel channel) {
+    switch (channel) {
+    case MaterialChannel::Material:
+        break;
+    case MaterialChannel::BaseColor:
+        return kChannelBase;
+    case MaterialChannel::Roughness:
+        return kChannelRough;
+    case MaterialChannel::Metallic:
+        return kChannelMetal;
+    }
+    return 0;
+}
 } // namespace
 
 core::Result<const Program*> DepthCompositor::Impl::program(unsigned variant) {
@@ -134,126 +149,148 @@ bool DepthCompositor::hasDepthLayers() const {
     return m_impl->hasDepthLayers;
 }
 
-void DepthCompositor::draw(const CompositeOptions& options) {
-    Impl& d = *m_impl;
-    const glm::vec4& background = options.background;
-    glClearColor(background.r, background.g, background.b, background.a);
-    if (!d.hasDepthLayers) {
-        glClear(GL_COLOR_BUFFER_BIT);
-        return;
-    }
-    // Pixels outside the drawn tiles are background: clear the view's rectangle only, leaving
-    // the caller's scissor state as it was.
-    GLint scissorBox[4] = {0, 0, 0, 0};
-    const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
-    glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(0, 0, d.width, d.height);
-    glClear(GL_COLOR_BUFFER_BIT);
-    glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
-    if (!scissor)
-        glDisable(GL_SCISSOR_TEST);
-    if (d.tiles.empty())
-        return;
-
-    const bool segmentation = options.display == DepthLayerDisplay::Segmentation;
-    const bool textured = d.hasMesh && !d.passTextures.empty();
-    unsigned shadeVariant = kShade;
-    if (textured)
-        shadeVariant |= kTextured | (d.hasUvs ? kWithUvs : 0u);
-    if (d.hasMesh && d.hasColors)
-        shadeVariant |= kWithColors;
-    // What Visible must hold: which fragment is picked and whether boundaries are marked.
-    unsigned resolveVariant = 0;
-    if (options.display == DepthLayerDisplay::SingleLayer)
-        resolveVariant |= kSingleLayer;
-    if (options.boundaries)
-        resolveVariant |= kBoundaries;
-    unsigned composeVariant = 0;
-    if (segmentation)
-        composeVariant |= kSegmentation | (options.shadeSegmentation ? kShadeSegmentation : 0u);
-    else if (textured)
-        composeVariant |= kTextured;
-    if (!segmentation) {
-        switch (options.channel) {
-        case MaterialChannel::Material:
-            break;
-        case MaterialChannel::BaseColor:
-            composeVariant |= kChannelBase;
-            break;
-        case MaterialChannel::Roughness:
-            composeVariant |= kChannelRough;
-            break;
-        case MaterialChannel::Metallic:
-            composeVariant |= kChannelMetal;
-            break;
-        }
-    }
-    if (options.boundaries)
-        composeVariant |= kBoundaries;
-    if (options.highlightRegion != core::kNone)
-        composeVariant |= kHighlight;
-    const std::uint32_t layer =
-        options.display == DepthLayerDisplay::SingleLayer ? options.layer : 0;
-    const bool transparent =
-        options.popUpOpacity < 1.0f && options.display != DepthLayerDisplay::SingleLayer;
-    if (transparent) {
-        resolveVariant |= kTransparency;
-        composeVariant |= kTransparency;
-    }
-    const bool shade = d.shadedVersion != d.geometryVersion;
-    const bool resolve = d.resolvedVersion != d.version || d.resolvedVariant != resolveVariant ||
-                         d.resolvedLayer != layer;
-    // One pass per texture (the first also draws background and untextured pixels); with
-    // transparency the fragments under see-through ones first, then the visible ones blended
-    // over them. The first pass picks again when needed; the others read what it picked.
+/** One draw(): its program variants, its composing passes and the GL work of each step. */
+struct DepthCompositor::Impl::DrawPass {
+    /** A composing pass: its program variant, its texture pass and whether it blends. */
     struct Step {
         unsigned variant;
         std::size_t pass;
         bool blend;
     };
+
+    Impl& d;
+    const CompositeOptions& options;
+    unsigned shadeVariant = kShade;
+    unsigned resolveVariant = 0; // what Visible must hold: the fragment picked, boundaries marked
+    unsigned composeVariant = 0;
+    std::uint32_t layer = 0;
+    bool transparent = false;
+    bool shade = false;   // Shading is out of date
+    bool resolve = false; // Visible is out of date
     std::vector<Step> steps;
-    const std::size_t passes = composeVariant & kTextured ? d.passTextures.size() : 1;
-    if (transparent)
-        for (std::size_t pass = 0; pass < passes; ++pass)
-            steps.push_back({(composeVariant & ~(kHighlight | kBoundaries)) | kUnder, pass, false});
-    // A pass with a metallic-roughness texture samples it (only then: llvmpipe pays for code).
-    const auto passVariant = [&](unsigned variant, std::size_t pass) {
+    const Program* shadeProgram = nullptr;
+
+    /**
+     * Clears to the background: the view's rectangle only (pixels outside the drawn tiles are
+     * background), or everything without depth layers. False when there is nothing to compose.
+     */
+    bool clearView() {
+        const glm::vec4& background = options.background;
+        glClearColor(background.r, background.g, background.b, background.a);
+        if (!d.hasDepthLayers) {
+            glClear(GL_COLOR_BUFFER_BIT);
+            return false;
+        }
+        // Leaves the caller's scissor state as it was.
+        GLint scissorBox[4] = {0, 0, 0, 0};
+        const GLboolean scissor = glIsEnabled(GL_SCISSOR_TEST);
+        glGetIntegerv(GL_SCISSOR_BOX, scissorBox);
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(0, 0, d.width, d.height);
+        glClear(GL_COLOR_BUFFER_BIT);
+        glScissor(scissorBox[0], scissorBox[1], scissorBox[2], scissorBox[3]);
+        if (!scissor)
+            glDisable(GL_SCISSOR_TEST);
+        return !d.tiles.empty();
+    }
+
+    /** The shading, picking and composing variants the options ask for, and what is stale. */
+    void chooseVariants() {
+        const bool segmentation = options.display == DepthLayerDisplay::Segmentation;
+        const bool textured = d.hasMesh && !d.passTextures.empty();
+        if (textured)
+            shadeVariant |= kTextured | (d.hasUvs ? kWithUvs : 0u);
+        if (d.hasMesh && d.hasColors)
+            shadeVariant |= kWithColors;
+        if (options.display == DepthLayerDisplay::SingleLayer)
+            resolveVariant |= kSingleLayer;
+        if (options.boundaries)
+            resolveVariant |= kBoundaries;
+        if (segmentation)
+            composeVariant |= kSegmentation | (options.shadeSegmentation ? kShadeSegmentation : 0u);
+        else if (textured)
+            composeVariant |= kTextured;
+        if (!segmentation)
+            composeVariant |= channelVariant(options.channel);
+        if (options.boundaries)
+            composeVariant |= kBoundaries;
+        if (options.highlightRegion != core::kNone)
+            composeVariant |= kHighlight;
+        layer = options.display == DepthLayerDisplay::SingleLayer ? options.layer : 0;
+        transparent =
+            options.popUpOpacity < 1.0f && options.display != DepthLayerDisplay::SingleLayer;
+        if (transparent) {
+            resolveVariant |= kTransparency;
+            composeVariant |= kTransparency;
+        }
+        shade = d.shadedVersion != d.geometryVersion;
+        resolve = d.resolvedVersion != d.version || d.resolvedVariant != resolveVariant ||
+                  d.resolvedLayer != layer;
+    }
+
+    /** A pass with a metallic-roughness texture samples it (only then: llvmpipe pays for code). */
+    unsigned passVariant(unsigned variant, std::size_t pass) const {
         return (variant & kTextured) && pass < d.passMetallicRoughness.size() &&
                        d.passMetallicRoughness[pass].id() != 0
                    ? variant | kMaterial
                    : variant;
-    };
-    if (transparent)
-        for (Step& step : steps)
-            step.variant = passVariant(step.variant, step.pass);
-    for (std::size_t pass = 0; pass < passes; ++pass)
-        steps.push_back({passVariant(composeVariant, pass), pass, transparent});
-    if (resolve)
-        steps.front().variant |= resolveVariant | kResolve;
-    auto shader = d.program(shadeVariant);
-    for (const Step& step : steps)
-        if (!shader || !d.program(step.variant))
-            return; // every variant compiles when the defaults do; left as the background
-
-    // With one binding unbound, llvmpipe lost the blocks after it: any buffer a failed upload
-    // left empty gets a little storage.
-    for (GLuint binding = 0; binding < kStorageBindings; ++binding) {
-        if (!d.buffers[binding].id)
-            d.buffers[binding].upload(nullptr, 0, d.maxBlockBytes);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, d.buffers[binding].id);
     }
-    // The mesh arrays: a part's at a time (the bindings above are stand-ins without a mesh).
-    const auto bindPart = [&](const MeshPart& part) {
+
+    /**
+     * One pass per texture (the first also draws background and untextured pixels); with
+     * transparency the fragments under see-through ones first, then the visible ones blended
+     * over them. The first pass picks again when needed; the others read what it picked.
+     */
+    void planSteps() {
+        const std::size_t passes = composeVariant & kTextured ? d.passTextures.size() : 1;
+        if (transparent)
+            for (std::size_t pass = 0; pass < passes; ++pass)
+                steps.push_back(
+                    {(composeVariant & ~(kHighlight | kBoundaries)) | kUnder, pass, false});
+        if (transparent)
+            for (Step& step : steps)
+                step.variant = passVariant(step.variant, step.pass);
+        for (std::size_t pass = 0; pass < passes; ++pass)
+            steps.push_back({passVariant(composeVariant, pass), pass, transparent});
+        if (resolve)
+            steps.front().variant |= resolveVariant | kResolve;
+    }
+
+    /** Every program the steps use, built on first use; false if one does not compile. */
+    bool buildPrograms() {
+        const auto shader = d.program(shadeVariant);
+        if (!shader)
+            return false;
+        for (const Step& step : steps)
+            if (!d.program(step.variant))
+                return false;
+        shadeProgram = *shader;
+        return true;
+    }
+
+    /**
+     * Every storage buffer at its binding. With one binding unbound, llvmpipe lost the blocks
+     * after it: any buffer a failed upload left empty gets a little storage.
+     */
+    void bindStorage() {
+        for (GLuint binding = 0; binding < kStorageBindings; ++binding) {
+            if (!d.buffers[binding].id)
+                d.buffers[binding].upload(nullptr, 0, d.maxBlockBytes);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, d.buffers[binding].id);
+        }
+    }
+
+    /** The mesh arrays: a part's at a time (the bindings above are stand-ins without a mesh). */
+    void bindMeshPart(const MeshPart& part) {
         for (std::size_t i = 0; i < kMeshArrays; ++i)
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kTriangles + i),
                              part.buffers[i].id ? part.buffers[i].id
                                                 : d.buffers[kTriangles + i].id);
-    };
+    }
 
-    if (shade && d.fragments > 0) {
-        // Once per capture or mesh: every fragment's shading, 64 fragments a group.
-        const Program& p = **shader;
+    /** Once per capture or mesh: every fragment's shading, 64 fragments a group. */
+    void shadeFragments() {
+        const Program& p = *shadeProgram;
         p.shader.use();
         glUniform1ui(p.fragmentCount, std::uint32_t(d.fragments));
         glUniform1ui(p.width, std::uint32_t(d.width));
@@ -273,7 +310,7 @@ void DepthCompositor::draw(const CompositeOptions& options) {
         for (std::size_t i = 0; i < std::max<std::size_t>(parts, 1); ++i) {
             const bool real = i < parts;
             if (real)
-                bindPart(d.meshParts[i]);
+                bindMeshPart(d.meshParts[i]);
             glUniform1ui(p.triangleFirst, real ? d.meshParts[i].firstTriangle : 0u);
             glUniform1ui(p.triangleCount, real ? d.meshParts[i].triangleCount : 0u);
             glUniform1ui(p.firstPart, i == 0 ? 1u : 0u);
@@ -281,19 +318,29 @@ void DepthCompositor::draw(const CompositeOptions& options) {
         }
         d.shadedVersion = d.geometryVersion;
     }
-    // This draw's or an earlier one's writes must be visible to the reads below.
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-    glViewport(0, 0, d.width, d.height);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_STENCIL_TEST);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glVertexArrayVertexBuffer(d.vao, 0, d.buffers[kTiles].id, 0, sizeof(std::uint32_t));
-    glBindVertexArray(d.vao);
+    /** The fixed-function state and the tile instances every composing pass draws with. */
+    void setComposeState() {
+        glViewport(0, 0, d.width, d.height);
+        glDisable(GL_DEPTH_TEST);
+        glDisable(GL_BLEND);
+        glDisable(GL_CULL_FACE);
+        glDisable(GL_STENCIL_TEST);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        glVertexArrayVertexBuffer(d.vao, 0, d.buffers[kTiles].id, 0, sizeof(std::uint32_t));
+        glBindVertexArray(d.vao);
+    }
 
-    for (std::size_t i = 0; i < steps.size(); ++i) {
+    /** The textures a step samples: its pass's base colour and metallic-roughness. */
+    void bindMaterialTextures(const Step& step) {
+        if (composeVariant & kTextured)
+            glBindTextureUnit(0, d.passTextures[step.pass].id());
+        if (step.variant & kMaterial)
+            glBindTextureUnit(1, d.passMetallicRoughness[step.pass].id());
+    }
+
+    /** Composing pass i over the tiles; the first marks what Visible now holds. */
+    void drawStep(std::size_t i) {
         const Step& step = steps[i];
         const Program& p = **d.program(step.variant);
         p.shader.use();
@@ -305,7 +352,7 @@ void DepthCompositor::draw(const CompositeOptions& options) {
         glUniform1ui(p.layer, layer);
         glUniform1ui(p.regionCount, std::uint32_t(d.regionLayer.size()));
         glUniform1ui(p.maxLayers, d.maxLayers);
-        glUniform4fv(p.background, 1, glm::value_ptr(background));
+        glUniform4fv(p.background, 1, glm::value_ptr(options.background));
         glUniform1ui(p.highlight, options.highlightRegion);
         const glm::ivec4 box = options.highlightRegion < d.regionBox.size()
                                    ? d.regionBox[options.highlightRegion]
@@ -315,10 +362,7 @@ void DepthCompositor::draw(const CompositeOptions& options) {
         glUniform1i(p.metallicRoughness, 1);
         glUniform1i(p.pass, int(step.pass));
         glUniform1f(p.opacity, std::clamp(options.popUpOpacity, 0.0f, 1.0f));
-        if (composeVariant & kTextured)
-            glBindTextureUnit(0, d.passTextures[step.pass].id());
-        if (step.variant & kMaterial)
-            glBindTextureUnit(1, d.passMetallicRoughness[step.pass].id());
+        bindMaterialTextures(step);
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(d.tiles.size()));
         if (i == 0 && resolve) {
             d.resolvedVersion = d.version;
@@ -328,13 +372,35 @@ void DepthCompositor::draw(const CompositeOptions& options) {
                 glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
         }
     }
-    glDisable(GL_BLEND);
-    glBindTextureUnit(1, 0);
 
-    glBindVertexArray(0);
-    for (GLuint binding = 0; binding < kStorageBindings; ++binding)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
-    glUseProgram(0);
+    /** Puts back what the passes bound and enabled. */
+    static void unbindAll() {
+        glDisable(GL_BLEND);
+        glBindTextureUnit(1, 0);
+        glBindVertexArray(0);
+        for (GLuint binding = 0; binding < kStorageBindings; ++binding)
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+        glUseProgram(0);
+    }
+};
+
+void DepthCompositor::draw(const CompositeOptions& options) {
+    Impl::DrawPass pass{*m_impl, options};
+    if (!pass.clearView())
+        return;
+    pass.chooseVariants();
+    pass.planSteps();
+    if (!pass.buildPrograms())
+        return; // every variant compiles when the defaults do; left as the background
+    pass.bindStorage();
+    if (pass.shade && m_impl->fragments > 0)
+        pass.shadeFragments();
+    // This draw's or an earlier one's writes must be visible to the reads below.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    pass.setComposeState();
+    for (std::size_t i = 0; i < pass.steps.size(); ++i)
+        pass.drawStep(i);
+    Impl::DrawPass::unbindAll();
 }
 
 std::vector<std::uint32_t> DepthCompositor::readVisible() const {

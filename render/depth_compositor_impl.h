@@ -203,6 +203,9 @@ struct DepthCompositor::Impl {
     bool uploadRanks(const std::vector<std::uint32_t>& rank);
     /** Links and regions of layers, and the initial region order. */
     core::Status uploadSegmentation(const core::DepthLayers& layers);
+
+    /** One draw()'s variants, passes and GL steps (depth_compositor.cpp). */
+    struct DrawPass;
 };
 
 } // namespace render
