@@ -61,6 +61,18 @@ struct Buffer : GlBuffer {
     }
 };
 
+/** One compute() call: its input, the sizes of its buffers and its dispatch. */
+struct ConnectivityJob {
+    const core::DepthStack& stack;
+    const core::ConnectivityOptions& options;
+    const core::SurfaceGeometry* geometry = nullptr;
+    bool surface = false; // the Surface test, with the geometry it reads
+    std::size_t fragments = 0, triangles = 0, pixels = 0;
+    // One invocation per fragment, in rows of at most maxGroups[0] groups.
+    std::size_t groups = 0, groupsX = 0, groupsY = 0;
+    std::array<std::size_t, kBindingCount> bytes{}; // per binding
+};
+
 } // namespace
 
 const char* connectivityBackendName(ConnectivityBackend backend) {
@@ -104,7 +116,166 @@ struct GpuConnectivity::Impl {
         for (Buffer& buffer : buffers)
             buffer.free();
     }
+
+    core::Status planBuffers(ConnectivityJob& job) const;
+    core::Status reserveBuffers(const ConnectivityJob& job);
+    core::Status writeFragmentPixels(const ConnectivityJob& job, core::Connectivity& out);
+    void uploadInputs(const ConnectivityJob& job);
+    void setUniforms(const ConnectivityJob& job);
+    core::Status dispatch(const ConnectivityJob& job);
+    void readLinks(const ConnectivityJob& job, core::Connectivity& out);
 };
+
+/** The dispatch's groups and every buffer's size; an Error where the GL's limits are too small. */
+core::Status GpuConnectivity::Impl::planBuffers(ConnectivityJob& job) const {
+    const std::size_t fragments = job.fragments, triangles = job.triangles;
+    job.groups = (fragments + kGroupSize - 1) / kGroupSize;
+    job.groupsX = std::min(job.groups, std::size_t(maxGroups[0]));
+    job.groupsY = job.groupsX ? (job.groups + job.groupsX - 1) / job.groupsX : 0;
+    if (job.groupsY > std::size_t(maxGroups[1]))
+        return core::Error{"gpu connectivity: " + std::to_string(fragments) +
+                           " fragments need too many compute groups"};
+    job.bytes = {(job.pixels + 1) * sizeof(std::uint32_t),
+                 fragments * sizeof(float),
+                 fragments * sizeof(std::uint32_t),
+                 std::max<std::size_t>(triangles, 1) * sizeof(core::SurfaceTriangle),
+                 fragments * sizeof(std::uint32_t),
+                 fragments * sizeof(std::uint32_t)};
+    for (std::size_t b = 0; b < job.bytes.size(); ++b)
+        if (job.bytes[b] > maxBufferBytes)
+            return core::Error{
+                "gpu connectivity: the view's " +
+                std::to_string(b == kTriangles ? triangles : fragments) +
+                (b == kTriangles ? " triangles" : " fragments") +
+                " exceed this OpenGL's storage block size; " +
+                (b == kTriangles ? "use a model with fewer triangles" : "make the view smaller")};
+    return {};
+}
+
+/** Every buffer at its size: the pixels mapped for writing, the links for reading. */
+core::Status GpuConnectivity::Impl::reserveBuffers(const ConnectivityJob& job) {
+    for (std::size_t b = 0; b < job.bytes.size(); ++b) {
+        const GLbitfield mapping = b == kFragmentPixels ? GL_MAP_WRITE_BIT
+                                   : b == kLinks        ? GL_MAP_READ_BIT
+                                                        : 0;
+        if (!buffers[b].reserve(job.bytes[b], mapping)) {
+            freeBuffers();
+            return core::Error{"gpu connectivity: out of GPU memory"};
+        }
+    }
+    return {};
+}
+
+/**
+ * The GPU is idle (glFinish before), so the mapping can be written in place. One pass checks that
+ * the offsets ascend within the fragments (so every fragment belongs to one pixel and gets its
+ * link word written), finds the deepest pixel and gives each fragment its pixel.
+ */
+core::Status GpuConnectivity::Impl::writeFragmentPixels(const ConnectivityJob& job,
+                                                        core::Connectivity& out) {
+    const core::DepthStack& stack = job.stack;
+    auto* pixelOf = static_cast<std::uint32_t*>(buffers[kFragmentPixels].data);
+    std::uint32_t deepest = 0;
+    for (std::size_t p = 0; p < job.pixels; ++p) {
+        const std::uint32_t begin = stack.offsets[p], end = stack.offsets[p + 1];
+        if (end < begin || end > job.fragments)
+            return core::Error{"gpu connectivity: the layer stack's offsets do not ascend"};
+        deepest = std::max(deepest, end - begin);
+        std::fill(pixelOf + begin, pixelOf + end, std::uint32_t(p));
+    }
+    out.truncated = deepest > core::kMaxLinkedLayers;
+    return {};
+}
+
+/** The offsets, depths, fragments' triangles and the triangles' planes. */
+void GpuConnectivity::Impl::uploadInputs(const ConnectivityJob& job) {
+    const core::DepthStack& stack = job.stack;
+    const core::SurfaceGeometry* geometry = job.geometry;
+    const auto upload = [&](Binding b, const void* data, std::size_t byteCount) {
+        glNamedBufferSubData(buffers[b].id, 0, GLsizeiptr(byteCount), data);
+    };
+    upload(kOffsets, stack.offsets.data(), job.bytes[kOffsets]);
+    upload(kDepths, stack.depth.data(), job.bytes[kDepths]);
+    if (job.surface && geometry->hasEntries()) {
+        // Only the triangles in view are kept (SurfaceGeometry's entries): each fragment names its
+        // triangle's entry, which the same-triangle test compares as it would the ids.
+        if (geometry->fragmentEntry.size() == job.fragments) {
+            upload(kFragmentTriangles, geometry->fragmentEntry.data(),
+                   job.bytes[kFragmentTriangles]);
+        } else {
+            std::vector<std::uint32_t> entries(job.fragments);
+            for (std::size_t f = 0; f < job.fragments; ++f)
+                entries[f] = geometry->entryOf(stack.triangle[f]);
+            upload(kFragmentTriangles, entries.data(), job.bytes[kFragmentTriangles]);
+        }
+    } else {
+        upload(kFragmentTriangles, stack.triangle.data(), job.bytes[kFragmentTriangles]);
+    }
+    if (job.triangles)
+        upload(kTriangles, geometry->triangles.data(),
+               job.triangles * sizeof(core::SurfaceTriangle));
+}
+
+/** The sizes, the Linker's limits (with the reference's own float arithmetic) and the rays. */
+void GpuConnectivity::Impl::setUniforms(const ConnectivityJob& job) {
+    const core::ConnectivityOptions& options = job.options;
+    const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
+    const float limitValue = options.threshold / scale;
+    const float contactLimitValue = limitValue * std::max(options.contactFactor, 0.0f);
+    const float creaseCosValue =
+        std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
+    const float smoothCosValue =
+        std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
+    const GLuint id = program.id();
+    glProgramUniform2i(id, size, job.stack.width, job.stack.height);
+    glProgramUniform1ui(id, fragmentCount, GLuint(job.fragments));
+    glProgramUniform1ui(id, rowInvocations, GLuint(job.groupsX * kGroupSize));
+    glProgramUniform1ui(id, triangleCount, GLuint(job.triangles));
+    glProgramUniform1f(id, limit, limitValue);
+    glProgramUniform1f(id, contactLimit, contactLimitValue);
+    glProgramUniform1f(id, creaseCos, creaseCosValue);
+    glProgramUniform1f(id, smoothCos, smoothCosValue);
+    glProgramUniform1f(id, minRayCosine2, kMinRayCosine * kMinRayCosine);
+    glProgramUniform1f(id, fail, std::numeric_limits<float>::infinity());
+    const core::PixelRays pixelRays = job.surface ? job.geometry->rays : core::PixelRays{};
+    const glm::vec3* rayVectors[6] = {&pixelRays.origin0,     &pixelRays.originDx,
+                                      &pixelRays.originDy,    &pixelRays.direction0,
+                                      &pixelRays.directionDx, &pixelRays.directionDy};
+    for (std::size_t i = 0; i < rays.size(); ++i)
+        glProgramUniform3fv(id, rays[i], 1, &rayVectors[i]->x);
+}
+
+/** The compute pass, with the caller's program put back; an Error if GL reports one. */
+core::Status GpuConnectivity::Impl::dispatch(const ConnectivityJob& job) {
+    GLint previousProgram = 0;
+    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    program.use();
+    for (GLuint b = 0; b < kBindingCount; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, buffers[b].id);
+    glDispatchCompute(GLuint(job.groupsX), GLuint(job.groupsY), 1);
+    for (GLuint b = 0; b < kBindingCount; ++b)
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
+    glUseProgram(GLuint(previousProgram));
+    if (const GLenum error = glGetError(); error != GL_NO_ERROR)
+        return core::Error{"gpu connectivity: the compute pass failed (GL error " +
+                           std::to_string(error) + ")"};
+    return {};
+}
+
+/** Waits for the pass and copies the links out of their mapping. */
+void GpuConnectivity::Impl::readLinks(const ConnectivityJob& job, core::Connectivity& out) {
+    // Shader writes reach the persistent mapping once the fence has signalled.
+    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
+    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    while (glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
+           GL_TIMEOUT_EXPIRED) {
+    }
+    glDeleteSync(fence);
+    const auto* links = static_cast<const std::uint8_t*>(buffers[kLinks].data);
+    out.links.assign(links, links + job.bytes[kLinks]);
+}
 
 GpuConnectivity::GpuConnectivity() : m_impl(std::make_unique<Impl>()) {}
 
@@ -177,129 +348,25 @@ core::Result<core::Connectivity> GpuConnectivity::compute(const core::DepthStack
     if (fragments == 0)
         return out;
 
-    const bool surface = options.test == core::ConnectionTest::Surface && geometry;
-    const std::size_t triangles = surface ? geometry->triangles.size() : 0;
-    const std::size_t pixels = stack.pixelCount();
-    // One invocation per fragment, in rows of at most maxGroups[0] groups.
-    const std::size_t groups = (fragments + kGroupSize - 1) / kGroupSize;
-    const std::size_t groupsX = std::min(groups, std::size_t(d.maxGroups[0]));
-    const std::size_t groupsY = groupsX ? (groups + groupsX - 1) / groupsX : 0;
-    if (groupsY > std::size_t(d.maxGroups[1]))
-        return core::Error{"gpu connectivity: " + std::to_string(fragments) +
-                           " fragments need too many compute groups"};
-    const std::array<std::size_t, kBindingCount> bytes = {(pixels + 1) * sizeof(std::uint32_t),
-                                                          fragments * sizeof(float),
-                                                          fragments * sizeof(std::uint32_t),
-                                                          std::max<std::size_t>(triangles, 1) *
-                                                              sizeof(core::SurfaceTriangle),
-                                                          fragments * sizeof(std::uint32_t),
-                                                          fragments * sizeof(std::uint32_t)};
-    for (std::size_t b = 0; b < bytes.size(); ++b)
-        if (bytes[b] > d.maxBufferBytes)
-            return core::Error{
-                "gpu connectivity: the view's " +
-                std::to_string(b == kTriangles ? triangles : fragments) +
-                (b == kTriangles ? " triangles" : " fragments") +
-                " exceed this OpenGL's storage block size; " +
-                (b == kTriangles ? "use a model with fewer triangles" : "make the view smaller")};
+    ConnectivityJob job{stack, options, geometry};
+    job.surface = options.test == core::ConnectionTest::Surface && geometry;
+    job.fragments = fragments;
+    job.triangles = job.surface ? geometry->triangles.size() : 0;
+    job.pixels = stack.pixelCount();
+    if (const core::Status planned = d.planBuffers(job); !planned)
+        return planned.takeError();
 
     glFinish();
     const Clock::time_point start = Clock::now();
-    for (std::size_t b = 0; b < bytes.size(); ++b) {
-        const GLbitfield mapping = b == kFragmentPixels ? GL_MAP_WRITE_BIT
-                                   : b == kLinks        ? GL_MAP_READ_BIT
-                                                        : 0;
-        if (!d.buffers[b].reserve(bytes[b], mapping)) {
-            d.freeBuffers();
-            return core::Error{"gpu connectivity: out of GPU memory"};
-        }
-    }
-    // The GPU is idle (glFinish above), so the mapping can be written in place. One pass
-    // checks that the offsets ascend within the fragments (so every fragment belongs to one
-    // pixel and gets its link word written), finds the deepest pixel and gives each fragment
-    // its pixel.
-    auto* pixelOf = static_cast<std::uint32_t*>(d.buffers[kFragmentPixels].data);
-    std::uint32_t deepest = 0;
-    for (std::size_t p = 0; p < pixels; ++p) {
-        const std::uint32_t begin = stack.offsets[p], end = stack.offsets[p + 1];
-        if (end < begin || end > fragments)
-            return core::Error{"gpu connectivity: the layer stack's offsets do not ascend"};
-        deepest = std::max(deepest, end - begin);
-        std::fill(pixelOf + begin, pixelOf + end, std::uint32_t(p));
-    }
-    out.truncated = deepest > core::kMaxLinkedLayers;
-    const auto upload = [&](Binding b, const void* data, std::size_t size) {
-        glNamedBufferSubData(d.buffers[b].id, 0, GLsizeiptr(size), data);
-    };
-    upload(kOffsets, stack.offsets.data(), bytes[kOffsets]);
-    upload(kDepths, stack.depth.data(), bytes[kDepths]);
-    if (surface && geometry->hasEntries()) {
-        // Only the triangles in view are kept (SurfaceGeometry's entries): each fragment names its
-        // triangle's entry, which the same-triangle test compares as it would the ids.
-        if (geometry->fragmentEntry.size() == fragments) {
-            upload(kFragmentTriangles, geometry->fragmentEntry.data(), bytes[kFragmentTriangles]);
-        } else {
-            std::vector<std::uint32_t> entries(fragments);
-            for (std::size_t f = 0; f < fragments; ++f)
-                entries[f] = geometry->entryOf(stack.triangle[f]);
-            upload(kFragmentTriangles, entries.data(), bytes[kFragmentTriangles]);
-        }
-    } else {
-        upload(kFragmentTriangles, stack.triangle.data(), bytes[kFragmentTriangles]);
-    }
-    if (triangles)
-        upload(kTriangles, geometry->triangles.data(), triangles * sizeof(core::SurfaceTriangle));
-
-    // The Linker's limits, with the reference's own float arithmetic.
-    const float scale = options.unitScale > 0.0f ? options.unitScale : 1.0f;
-    const float limit = options.threshold / scale;
-    const float contactLimit = limit * std::max(options.contactFactor, 0.0f);
-    const float creaseCos =
-        std::cos(glm::radians(std::clamp(options.creaseAngleDegrees, 0.0f, 180.0f)));
-    const float smoothCos =
-        std::cos(glm::radians(std::clamp(options.smoothAngleDegrees, 0.0f, 90.0f)));
-    const GLuint id = d.program.id();
-    glProgramUniform2i(id, d.size, stack.width, stack.height);
-    glProgramUniform1ui(id, d.fragmentCount, GLuint(fragments));
-    glProgramUniform1ui(id, d.rowInvocations, GLuint(groupsX * kGroupSize));
-    glProgramUniform1ui(id, d.triangleCount, GLuint(triangles));
-    glProgramUniform1f(id, d.limit, limit);
-    glProgramUniform1f(id, d.contactLimit, contactLimit);
-    glProgramUniform1f(id, d.creaseCos, creaseCos);
-    glProgramUniform1f(id, d.smoothCos, smoothCos);
-    glProgramUniform1f(id, d.minRayCosine2, kMinRayCosine * kMinRayCosine);
-    glProgramUniform1f(id, d.fail, std::numeric_limits<float>::infinity());
-    const core::PixelRays rays = surface ? geometry->rays : core::PixelRays{};
-    const glm::vec3* rayVectors[6] = {&rays.origin0,    &rays.originDx,    &rays.originDy,
-                                      &rays.direction0, &rays.directionDx, &rays.directionDy};
-    for (std::size_t i = 0; i < d.rays.size(); ++i)
-        glProgramUniform3fv(id, d.rays[i], 1, &rayVectors[i]->x);
-
-    GLint previousProgram = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &previousProgram);
-    while (glGetError() != GL_NO_ERROR) {
-    }
-    d.program.use();
-    for (GLuint b = 0; b < kBindingCount; ++b)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, d.buffers[b].id);
-    glDispatchCompute(GLuint(groupsX), GLuint(groupsY), 1);
-    for (GLuint b = 0; b < kBindingCount; ++b)
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, 0);
-    glUseProgram(GLuint(previousProgram));
-    if (const GLenum error = glGetError(); error != GL_NO_ERROR)
-        return core::Error{"gpu connectivity: the compute pass failed (GL error " +
-                           std::to_string(error) + ")"};
-
-    // Shader writes reach the persistent mapping once the fence has signalled.
-    glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    GLsync fence = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    while (glClientWaitSync(fence, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
-           GL_TIMEOUT_EXPIRED) {
-    }
-    glDeleteSync(fence);
-
-    const auto* links = static_cast<const std::uint8_t*>(d.buffers[kLinks].data);
-    out.links.assign(links, links + bytes[kLinks]);
+    if (const core::Status reserved = d.reserveBuffers(job); !reserved)
+        return reserved.takeError();
+    if (const core::Status written = d.writeFragmentPixels(job, out); !written)
+        return written.takeError();
+    d.uploadInputs(job);
+    d.setUniforms(job);
+    if (const core::Status ran = d.dispatch(job); !ran)
+        return ran.takeError();
+    d.readLinks(job, out);
     if (ms)
         *ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
     return out;
