@@ -70,8 +70,10 @@ Status Mesh::validate() const {
         if (m >= materials.size())
             return Error{"a material index is out of range", ErrorKind::BadInput};
     for (const Material& m : materials)
-        if (m.baseColorTexture >= static_cast<int>(textures.size()))
-            return Error{"a texture index is out of range", ErrorKind::BadInput};
+        for (int t : {m.baseColorTexture, m.metallicRoughness.texture, m.normal.texture,
+                      m.occlusion.texture, m.emissive.texture})
+            if (t >= static_cast<int>(textures.size()))
+                return Error{"a texture index is out of range", ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
             return Error{"a vertex position is not a finite number", ErrorKind::BadInput};

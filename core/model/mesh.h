@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -24,10 +25,43 @@ struct Image {
     bool empty() const { return width <= 0 || height <= 0; }
 };
 
+/** How a material's alpha is used, as glTF's alphaMode. */
+enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
+
+/**
+ * Where a material's map other than the base colour lies: its texture and its placement
+ * relative to the mesh's uvs (which carry the base colour texture's placement). A map that the
+ * file places on another texture coordinate set than the base colour uses the mesh's uvs and
+ * the load warns about it.
+ */
+struct MaterialMap {
+    int texture = -1;            // index into Mesh::textures, -1 for none
+    glm::mat3 uvTransform{1.0f}; // uv' = (uvTransform * (u, v, 1)).xy of the mesh's uvs
+};
+
+/**
+ * A glTF 2.0 metallic-roughness material. Factors are linear; textures index Mesh::textures
+ * (base colour and emissive hold sRGB-encoded values, the others linear values: metallic in
+ * blue, roughness in green, occlusion in red, normals in tangent space).
+ */
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f}; // linear RGBA
     int baseColorTexture = -1;       // index into Mesh::textures, -1 for none
+
+    float metallicFactor = 1.0f;
+    float roughnessFactor = 1.0f;
+    MaterialMap metallicRoughness;
+    float normalScale = 1.0f;
+    MaterialMap normal;
+    float occlusionStrength = 1.0f;
+    MaterialMap occlusion;
+    glm::vec3 emissiveFactor{0.0f};
+    float emissiveStrength = 1.0f; // KHR_materials_emissive_strength
+    MaterialMap emissive;
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
 };
 
 struct Bounds {
