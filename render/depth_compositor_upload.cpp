@@ -192,6 +192,165 @@ std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
 }
 } // namespace
 
+namespace {
+
+/** Triangles as (a, b, c, material); one with a bad index or material is drawn grey. */
+std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh) {
+    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+    std::vector<glm::uvec4> packed(triangles);
+    for (std::size_t t = 0; t < triangles; ++t) {
+        const std::uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
+                            c = mesh.indices[3 * t + 2];
+        const std::uint32_t material =
+            t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
+        const bool valid =
+            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
+        packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
+    }
+    return packed;
+}
+
+/** The materials as the shader reads them, and the texture each draw pass samples. */
+struct TexturePasses {
+    std::vector<GpuMaterial> materials;
+    std::vector<int> passOf; // per mesh texture, its pass or -1
+    std::vector<int> images; // per pass, its mesh texture
+};
+
+/** One pass per distinct texture; textures beyond the resolved byte's range stay unsampled. */
+TexturePasses planTexturePasses(const core::Mesh& mesh) {
+    TexturePasses passes;
+    passes.passOf.assign(mesh.textures.size(), -1);
+    passes.materials.resize(mesh.materials.size());
+    for (std::size_t m = 0; m < passes.materials.size(); ++m) {
+        const core::Material& material = mesh.materials[m];
+        const int texture = material.baseColorTexture;
+        passes.materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
+        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
+            mesh.textures[std::size_t(texture)].empty())
+            continue;
+        int& pass = passes.passOf[std::size_t(texture)];
+        if (pass < 0 && passes.images.size() < kMaxTexturePasses) {
+            pass = int(passes.images.size());
+            passes.images.push_back(texture);
+        }
+        const core::Image& image = mesh.textures[std::size_t(texture)];
+        passes.materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
+    }
+    return passes;
+}
+
+std::vector<std::uint32_t> octNormals(const core::Mesh& mesh) {
+    std::vector<std::uint32_t> normals(mesh.vertexCount(), octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
+    if (mesh.normals.size() == mesh.vertexCount())
+        std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
+    return normals;
+}
+
+/** What every part's upload reads: the mesh and its packed triangles and normals. */
+struct MeshUpload {
+    const core::Mesh& mesh;
+    const std::vector<glm::uvec4>& packed;
+    const std::vector<std::uint32_t>& normals;
+    bool hasUvs = false;
+    bool hasColors = false;
+    std::size_t limit = 0; // bytes of one storage block
+};
+
+bool uploadTo(MeshPart& part, std::size_t binding, const auto& values, bool present,
+              std::size_t limit) {
+    Buffer& buffer = part.buffers[binding - kTriangles];
+    return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
+}
+
+/** The whole mesh as one part, its arrays as they are. */
+bool uploadWhole(const MeshUpload& u, MeshPart& part) {
+    return uploadTo(part, kTriangles, u.packed, true, u.limit) &&
+           uploadTo(part, kPositions, u.mesh.positions, true, u.limit) &&
+           uploadTo(part, kNormals, u.normals, true, u.limit) &&
+           uploadTo(part, kUvs, u.mesh.uvs, u.hasUvs, u.limit) &&
+           uploadTo(part, kColors, u.mesh.colors, u.hasColors, u.limit);
+}
+
+/** The part's vertices in ascending order, and its triangles renumbered to them. */
+std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, MeshPart& part) {
+    const auto begin = packed.begin() + part.firstTriangle;
+    std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
+    for (const glm::uvec4& triangle : local)
+        if (triangle.w != core::kNone)
+            part.vertices.insert(part.vertices.end(), {triangle.x, triangle.y, triangle.z});
+    std::sort(part.vertices.begin(), part.vertices.end());
+    part.vertices.erase(std::unique(part.vertices.begin(), part.vertices.end()),
+                        part.vertices.end());
+    const auto localOf = [&](std::uint32_t v) {
+        return std::uint32_t(std::lower_bound(part.vertices.begin(), part.vertices.end(), v) -
+                             part.vertices.begin());
+    };
+    for (glm::uvec4& triangle : local)
+        if (triangle.w != core::kNone)
+            triangle = {localOf(triangle.x), localOf(triangle.y), localOf(triangle.z), triangle.w};
+    return local;
+}
+
+/** A run of triangles with its own renumbered copy of the vertices it uses. */
+bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
+    const std::vector<glm::uvec4> local = renumberPart(u.packed, part);
+    const std::vector<std::uint32_t>& v = part.vertices;
+    const core::Mesh& mesh = u.mesh;
+    return uploadTo(part, kTriangles, local, true, u.limit) &&
+           uploadTo(part, kPositions,
+                    gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }), true,
+                    u.limit) &&
+           uploadTo(part, kNormals,
+                    gather<std::uint32_t>(v, [&](std::uint32_t g) { return u.normals[g]; }), true,
+                    u.limit) &&
+           uploadTo(part, kUvs,
+                    u.hasUvs ? gather<glm::vec2>(v, [&](std::uint32_t g) { return mesh.uvs[g]; })
+                             : std::vector<glm::vec2>(),
+                    u.hasUvs, u.limit) &&
+           uploadTo(part, kColors,
+                    u.hasColors
+                        ? gather<glm::vec4>(v, [&](std::uint32_t g) { return mesh.colors[g]; })
+                        : std::vector<glm::vec4>(),
+                    u.hasColors, u.limit);
+}
+
+/** The parts: the whole mesh as it is when it fits one storage block, else renumbered runs. */
+struct MeshPlan {
+    std::vector<PartPlan> parts; // empty if not even one triangle fits
+    bool whole = false;
+};
+
+MeshPlan planMeshParts(const std::vector<glm::uvec4>& packed, std::size_t vertices, bool colors,
+                       std::size_t blockBytes) {
+    // The largest vertex element: a colour (vec4) or a position (3 floats).
+    const std::size_t vertexBytes = colors ? sizeof(glm::vec4) : sizeof(glm::vec3);
+    if (packed.size() <= blockBytes / sizeof(glm::uvec4) && vertices <= blockBytes / vertexBytes)
+        return {{{0, std::uint32_t(packed.size())}}, true};
+    return {planParts(packed, vertices, blockBytes, vertexBytes), false};
+}
+
+/** Uploads every part of plan (parts beyond it are freed; the others keep their buffers). */
+bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<MeshPart>& parts) {
+    const std::vector<PartPlan>& plan = meshPlan.parts;
+    for (std::size_t i = plan.size(); i < parts.size(); ++i)
+        for (Buffer& buffer : parts[i].buffers)
+            buffer.free();
+    parts.resize(plan.size());
+    for (std::size_t i = 0; i < plan.size(); ++i) {
+        MeshPart& part = parts[i];
+        part.firstTriangle = plan[i].firstTriangle;
+        part.triangleCount = plan[i].triangleCount;
+        part.vertices.clear();
+        part.renumbered = !meshPlan.whole;
+        if (!(meshPlan.whole ? uploadWhole(u, part) : uploadRenumbered(u, part)))
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 core::Status DepthCompositor::setMesh(const core::Mesh& mesh) {
     Impl& d = *m_impl;
     d.hasMesh = false;
@@ -204,125 +363,26 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh) {
     if (triangles > core::kNone - 1)
         return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
 
-    // Triangles with a bad index or material are drawn grey rather than read out of bounds.
-    std::vector<glm::uvec4> packed(triangles);
-    for (std::size_t t = 0; t < triangles; ++t) {
-        const std::uint32_t a = mesh.indices[3 * t], b = mesh.indices[3 * t + 1],
-                            c = mesh.indices[3 * t + 2];
-        const std::uint32_t material =
-            t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
-        const bool valid =
-            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
-        packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
-    }
-
-    // One pass per distinct texture; textures beyond the resolved byte's range stay unsampled.
-    std::vector<int> passOf(mesh.textures.size(), -1);
-    std::vector<int> passImages;
-    std::vector<GpuMaterial> materials(mesh.materials.size());
-    for (std::size_t m = 0; m < materials.size(); ++m) {
-        const core::Material& material = mesh.materials[m];
-        const int texture = material.baseColorTexture;
-        materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
-        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
-            mesh.textures[std::size_t(texture)].empty())
-            continue;
-        int& pass = passOf[std::size_t(texture)];
-        if (pass < 0 && passImages.size() < kMaxTexturePasses) {
-            pass = int(passImages.size());
-            passImages.push_back(texture);
-        }
-        const core::Image& image = mesh.textures[std::size_t(texture)];
-        materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
-    }
-
+    const std::vector<glm::uvec4> packed = packTriangles(mesh);
+    TexturePasses passes = planTexturePasses(mesh);
+    const std::vector<std::uint32_t> normals = octNormals(mesh);
     d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
     d.hasColors = mesh.colors.size() == vertices && vertices > 0;
-    std::vector<std::uint32_t> normals(vertices, octNormal(glm::vec3(0.0f, 0.0f, 1.0f)));
-    if (mesh.normals.size() == vertices)
-        std::transform(mesh.normals.begin(), mesh.normals.end(), normals.begin(), octNormal);
-
-    // The largest vertex element: a colour (vec4) or a position (3 floats).
-    const std::size_t vertexBytes = d.hasColors ? sizeof(glm::vec4) : sizeof(glm::vec3);
-    const std::size_t block = d.planBytes();
-    std::vector<PartPlan> plan;
-    const bool onePart = triangles <= block / sizeof(glm::uvec4) && vertices <= block / vertexBytes;
-    if (onePart)
-        plan.push_back({0, std::uint32_t(triangles)});
-    else
-        plan = planParts(packed, vertices, block, vertexBytes);
-    if (plan.empty())
+    const MeshPlan plan = planMeshParts(packed, vertices, d.hasColors, d.planBytes());
+    if (plan.parts.empty())
         return tooLarge("one triangle's vertices");
-
-    const std::size_t limit = d.maxBlockBytes;
-    bool ok = d.buffers[kMaterials].upload(materials, limit);
-    // Parts beyond the plan are freed; the others keep their buffers while the data fits.
-    for (std::size_t i = plan.size(); i < d.meshParts.size(); ++i)
-        for (Buffer& buffer : d.meshParts[i].buffers)
-            buffer.free();
-    d.meshParts.resize(plan.size());
-    for (std::size_t i = 0; i < plan.size() && ok; ++i) {
-        MeshPart& part = d.meshParts[i];
-        part.firstTriangle = plan[i].firstTriangle;
-        part.triangleCount = plan[i].triangleCount;
-        part.vertices.clear();
-        part.renumbered = !onePart;
-        auto& buffers = part.buffers;
-        const auto upload = [&](std::size_t binding, const auto& values, bool present) {
-            Buffer& buffer = buffers[binding - kTriangles];
-            return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
-        };
-        if (onePart) {
-            ok = upload(kTriangles, packed, true) && upload(kPositions, mesh.positions, true) &&
-                 upload(kNormals, normals, true) && upload(kUvs, mesh.uvs, d.hasUvs) &&
-                 upload(kColors, mesh.colors, d.hasColors);
-            continue;
-        }
-        // The part's vertices in ascending order, and its triangles renumbered to them.
-        const auto begin = packed.begin() + part.firstTriangle;
-        std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
-        for (const glm::uvec4& triangle : local)
-            if (triangle.w != core::kNone)
-                part.vertices.insert(part.vertices.end(), {triangle.x, triangle.y, triangle.z});
-        std::sort(part.vertices.begin(), part.vertices.end());
-        part.vertices.erase(std::unique(part.vertices.begin(), part.vertices.end()),
-                            part.vertices.end());
-        const auto localOf = [&](std::uint32_t v) {
-            return std::uint32_t(std::lower_bound(part.vertices.begin(), part.vertices.end(), v) -
-                                 part.vertices.begin());
-        };
-        for (glm::uvec4& triangle : local)
-            if (triangle.w != core::kNone)
-                triangle = {localOf(triangle.x), localOf(triangle.y), localOf(triangle.z),
-                            triangle.w};
-        const std::vector<std::uint32_t>& v = part.vertices;
-        ok = upload(kTriangles, local, true) &&
-             upload(kPositions,
-                    gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }),
-                    true) &&
-             upload(kNormals, gather<std::uint32_t>(v, [&](std::uint32_t g) { return normals[g]; }),
-                    true) &&
-             upload(kUvs,
-                    d.hasUvs ? gather<glm::vec2>(v, [&](std::uint32_t g) { return mesh.uvs[g]; })
-                             : std::vector<glm::vec2>(),
-                    d.hasUvs) &&
-             upload(kColors,
-                    d.hasColors
-                        ? gather<glm::vec4>(v, [&](std::uint32_t g) { return mesh.colors[g]; })
-                        : std::vector<glm::vec4>(),
-                    d.hasColors);
-    }
-    if (!ok) {
+    const MeshUpload upload{mesh, packed, normals, d.hasUvs, d.hasColors, d.maxBlockBytes};
+    if (!d.buffers[kMaterials].upload(passes.materials, d.maxBlockBytes) ||
+        !uploadMeshParts(upload, plan, d.meshParts)) {
         d.meshParts.clear();
         return outOfMemory("the mesh (open a model with fewer triangles)");
     }
-
     // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
-    for (int texture : passImages) {
+    for (int texture : passes.images) {
         d.passTextures.emplace_back();
         d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
     }
-    d.passOfTexture = std::move(passOf);
+    d.passOfTexture = std::move(passes.passOf);
     d.vertexCount = vertices;
     d.triangleCount = std::uint32_t(triangles);
     d.hasMesh = true;
