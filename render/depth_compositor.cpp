@@ -197,7 +197,7 @@ struct DepthCompositor::Impl::DrawPass {
     /** The shading, picking and composing variants the options ask for, and what is stale. */
     void chooseVariants() {
         const bool segmentation = options.display == DepthLayerDisplay::Segmentation;
-        const bool textured = d.hasMesh && !d.passTextures.empty();
+        const bool textured = d.hasMesh && !d.passTexture.empty();
         if (textured)
             shadeVariant |= kTextured | (d.hasUvs ? kWithUvs : 0u);
         if (d.hasMesh && d.hasColors)
@@ -230,10 +230,8 @@ struct DepthCompositor::Impl::DrawPass {
 
     /** A pass with a metallic-roughness texture samples it (only then: llvmpipe pays for code). */
     unsigned passVariant(unsigned variant, std::size_t pass) const {
-        return (variant & kTextured) && pass < d.passMetallicRoughness.size() &&
-                       d.passMetallicRoughness[pass].id() != 0
-                   ? variant | kMaterial
-                   : variant;
+        return (variant & kTextured) && d.passMetallicRoughness(pass) ? variant | kMaterial
+                                                                      : variant;
     }
 
     /**
@@ -242,7 +240,7 @@ struct DepthCompositor::Impl::DrawPass {
      * over them. The first pass picks again when needed; the others read what it picked.
      */
     void planSteps() {
-        const std::size_t passes = composeVariant & kTextured ? d.passTextures.size() : 1;
+        const std::size_t passes = composeVariant & kTextured ? d.passTexture.size() : 1;
         if (transparent)
             for (std::size_t pass = 0; pass < passes; ++pass)
                 steps.push_back(
@@ -333,10 +331,11 @@ struct DepthCompositor::Impl::DrawPass {
 
     /** The textures a step samples: its pass's base colour and metallic-roughness. */
     void bindMaterialTextures(const Step& step) {
+        const auto id = [](const PaintTexture* texture) { return texture ? texture->id() : 0u; };
         if (composeVariant & kTextured)
-            glBindTextureUnit(0, d.passTextures[step.pass].id());
+            glBindTextureUnit(0, id(d.passBaseColor(step.pass)));
         if (step.variant & kMaterial)
-            glBindTextureUnit(1, d.passMetallicRoughness[step.pass].id());
+            glBindTextureUnit(1, id(d.passMetallicRoughness(step.pass)));
     }
 
     /** Composing pass i over the tiles; the first marks what Visible now holds. */

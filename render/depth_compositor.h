@@ -14,6 +14,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "render/material_channel.h"
+#include "render/material_textures.h"
 
 namespace render {
 
@@ -84,23 +85,15 @@ public:
      * within a block. Returns an Error (and keeps no mesh) if GL memory runs out. Buffers are
      * reused while the data fits.
      */
-    core::Status setMesh(const core::Mesh& mesh);
+    core::Status setMesh(const core::Mesh& mesh,
+                         std::shared_ptr<MaterialTextures> textures = nullptr);
     /**
-     * Painting: replaces texels [x, x + width) × [y, y + height) of mesh texture `texture` with
-     * those of image (its painted copy, same size), mip levels included. Textures are sampled
-     * when composing, so nothing else runs again. Ignored for a texture no material samples.
+     * The textures the materials sample (with a mesh renderer of the same context, the store
+     * both read). Textures are sampled when composing, so painting them (MaterialTextures::
+     * updateTexels()) runs nothing else again; a base colour texture with a metallic-roughness
+     * texture is lit as metallic-roughness.
      */
-    void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
-                      const core::Image& image);
-    /**
-     * The glTF metallic-roughness texture (linear RGBA8: G roughness, B metallic) that goes with
-     * mesh texture `texture`: uploaded with its mip levels, sampled like the base colour where
-     * that texture is. Ignored for a texture no material samples; setMesh() drops them all.
-     */
-    void setMetallicRoughness(std::uint32_t texture, const core::Image& image);
-    /** Painting: as updateTexels() for the metallic-roughness texture of `texture`. */
-    void updateMetallicRoughness(std::uint32_t texture, int x, int y, int width, int height,
-                                 const core::Image& image);
+    MaterialTextures& textures();
     /**
      * Painting: replaces the colours of vertices [first, first + colors.size()) (clamped to the
      * mesh; ignored if setMesh() had no vertex colours). Fragments are shaded with them, so the

@@ -158,10 +158,10 @@ struct DepthCompositor::Impl {
     bool hasColors = false;
     std::uint32_t triangleCount = 0;
     std::size_t vertexCount = 0;
-    std::vector<compositor::MeshPart> meshParts;     // empty without a mesh
-    std::vector<PaintTexture> passTextures;          // the textures materials sample: one pass each
-    std::vector<int> passOfTexture;                  // per mesh texture: its pass, -1 for none
-    std::vector<PaintTexture> passMetallicRoughness; // per pass; id 0 where it has none
+    std::vector<compositor::MeshPart> meshParts; // empty without a mesh
+    std::shared_ptr<MaterialTextures> textures = std::make_shared<MaterialTextures>();
+    bool ownTextures = true;      // made from the mesh here, not shared
+    std::vector<int> passTexture; // per pass, the mesh texture it samples
 
     // Depth layers
     bool hasDepthLayers = false;
@@ -185,9 +185,20 @@ struct DepthCompositor::Impl {
     std::uint32_t resolvedLayer = 0;
 
     void releaseTextures() {
-        passTextures.clear();
-        passOfTexture.clear();
-        passMetallicRoughness.clear();
+        passTexture.clear();
+        if (ownTextures)
+            textures->release();
+    }
+
+    /** Pass `pass`'s base colour and metallic-roughness textures, nullptr for none. */
+    const PaintTexture* passBaseColor(std::size_t pass) const {
+        return pass < passTexture.size() ? textures->baseColor(std::size_t(passTexture[pass]))
+                                         : nullptr;
+    }
+    const PaintTexture* passMetallicRoughness(std::size_t pass) const {
+        return pass < passTexture.size()
+                   ? textures->metallicRoughness(std::size_t(passTexture[pass]))
+                   : nullptr;
     }
 
     /** Whether count elements fit one storage block (of planBytes()). */

@@ -213,14 +213,13 @@ std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh) {
 /** The materials as the shader reads them, and the texture each draw pass samples. */
 struct TexturePasses {
     std::vector<GpuMaterial> materials;
-    std::vector<int> passOf; // per mesh texture, its pass or -1
     std::vector<int> images; // per pass, its mesh texture
 };
 
 /** One pass per distinct texture; textures beyond the resolved byte's range stay unsampled. */
 TexturePasses planTexturePasses(const core::Mesh& mesh) {
     TexturePasses passes;
-    passes.passOf.assign(mesh.textures.size(), -1);
+    std::vector<int> passOf(mesh.textures.size(), -1);
     passes.materials.resize(mesh.materials.size());
     for (std::size_t m = 0; m < passes.materials.size(); ++m) {
         const core::Material& material = mesh.materials[m];
@@ -229,7 +228,7 @@ TexturePasses planTexturePasses(const core::Mesh& mesh) {
         if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
             mesh.textures[std::size_t(texture)].empty())
             continue;
-        int& pass = passes.passOf[std::size_t(texture)];
+        int& pass = passOf[std::size_t(texture)];
         if (pass < 0 && passes.images.size() < kMaxTexturePasses) {
             pass = int(passes.images.size());
             passes.images.push_back(texture);
@@ -351,12 +350,15 @@ bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<
 
 } // namespace
 
-core::Status DepthCompositor::setMesh(const core::Mesh& mesh) {
+core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
+                                      std::shared_ptr<MaterialTextures> textures) {
     Impl& d = *m_impl;
     d.hasMesh = false;
     ++d.version;
     ++d.geometryVersion;
     d.releaseTextures();
+    d.ownTextures = textures == nullptr;
+    d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
     const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
     if (!d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
         return tooLarge("the mesh's materials");
@@ -377,12 +379,9 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh) {
         d.meshParts.clear();
         return outOfMemory("the mesh (open a model with fewer triangles)");
     }
-    // Base color textures as MeshRenderer makes them: sRGB, mipmapped, repeating.
-    for (int texture : passes.images) {
-        d.passTextures.emplace_back();
-        d.passTextures.back().create(mesh.textures[std::size_t(texture)]);
-    }
-    d.passOfTexture = std::move(passes.passOf);
+    if (d.ownTextures)
+        d.textures->create(mesh.textures);
+    d.passTexture = std::move(passes.images);
     d.vertexCount = vertices;
     d.triangleCount = std::uint32_t(triangles);
     d.hasMesh = true;
@@ -471,31 +470,8 @@ core::Status DepthCompositor::updateSegmentation(const core::DepthLayers& layers
     return status;
 }
 
-void DepthCompositor::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
-                                   const core::Image& image) {
-    Impl& d = *m_impl;
-    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
-        return;
-    d.passTextures[std::size_t(d.passOfTexture[texture])].update(image, x, y, width, height);
-}
-
-void DepthCompositor::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
-    Impl& d = *m_impl;
-    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0 ||
-        image.empty())
-        return;
-    d.passMetallicRoughness.resize(d.passTextures.size());
-    d.passMetallicRoughness[std::size_t(d.passOfTexture[texture])].create(image, true);
-}
-
-void DepthCompositor::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
-                                              int height, const core::Image& image) {
-    Impl& d = *m_impl;
-    if (!d.hasMesh || texture >= d.passOfTexture.size() || d.passOfTexture[texture] < 0)
-        return;
-    const auto pass = std::size_t(d.passOfTexture[texture]);
-    if (pass < d.passMetallicRoughness.size())
-        d.passMetallicRoughness[pass].update(image, x, y, width, height);
+MaterialTextures& DepthCompositor::textures() {
+    return *m_impl->textures;
 }
 
 void DepthCompositor::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {

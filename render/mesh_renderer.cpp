@@ -61,11 +61,11 @@ struct MeshRenderer::Impl {
     // only where a run needs them); [0], the plain one, by initialize().
     std::array<ShaderProgram, 8> programs;
     std::array<bool, 8> failed{};
-    std::vector<PaintTexture> metallicRoughness; // per mesh texture; id 0: none
     GLuint vao = 0, vbo = 0, ibo = 0;
     GLuint colorBuffer = 0; // its own buffer, so painting updates it in place
     std::size_t vertexCount = 0;
-    std::vector<PaintTexture> textures;
+    std::shared_ptr<MaterialTextures> textures = std::make_shared<MaterialTextures>();
+    bool ownTextures = true; // made from the mesh here, not shared
     std::vector<core::Material> materials;
     std::vector<MaterialRun> runs;
     bool hasMesh = false;
@@ -141,8 +141,8 @@ struct MeshRenderer::Impl {
             glDeleteBuffers(1, &colorBuffer);
         vao = vbo = ibo = colorBuffer = 0;
         vertexCount = 0;
-        textures.clear();
-        metallicRoughness.clear();
+        if (ownTextures)
+            textures->release();
         runs.clear();
         hasMesh = false;
     }
@@ -163,7 +163,7 @@ core::Status MeshRenderer::initialize() {
     return {};
 }
 
-void MeshRenderer::setMesh(const core::Mesh& mesh) {
+void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures) {
     Impl& d = *m_impl;
     d.releaseMesh();
 
@@ -186,10 +186,10 @@ void MeshRenderer::setMesh(const core::Mesh& mesh) {
 
     d.vao = d.makeVao(d.ibo);
 
-    for (const core::Image& image : mesh.textures) {
-        d.textures.emplace_back();
-        d.textures.back().create(image);
-    }
+    d.ownTextures = textures == nullptr;
+    d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
+    if (d.ownTextures)
+        d.textures->create(mesh.textures);
     d.materials = mesh.materials;
     d.runs = Impl::makeRuns(mesh.triangleMaterial);
     d.hasMesh = true;
@@ -230,28 +230,8 @@ std::size_t MeshRenderer::lastDrawnTriangles() const {
     return m_impl->lastTriangles;
 }
 
-void MeshRenderer::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
-                                const core::Image& image) {
-    Impl& d = *m_impl;
-    if (texture < d.textures.size())
-        d.textures[texture].update(image, x, y, width, height);
-}
-
-void MeshRenderer::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
-    Impl& d = *m_impl;
-    if (texture >= d.textures.size() || image.empty())
-        return;
-    if (d.metallicRoughness.size() < d.textures.size())
-        d.metallicRoughness.resize(d.textures.size());
-    d.metallicRoughness[texture] = PaintTexture();
-    d.metallicRoughness[texture].create(image, true);
-}
-
-void MeshRenderer::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
-                                           int height, const core::Image& image) {
-    Impl& d = *m_impl;
-    if (texture < d.metallicRoughness.size() && d.metallicRoughness[texture].id() != 0)
-        d.metallicRoughness[texture].update(image, x, y, width, height);
+MaterialTextures& MeshRenderer::textures() {
+    return *m_impl->textures;
 }
 
 void MeshRenderer::updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors) {
@@ -293,8 +273,10 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         const core::Material& material = d.materials[run.material];
         const bool textured = material.baseColorTexture >= 0;
         const std::size_t texture = textured ? std::size_t(material.baseColorTexture) : 0;
-        const bool lit = textured && texture < d.metallicRoughness.size() &&
-                         d.metallicRoughness[texture].id() != 0;
+        const PaintTexture* baseColor = textured ? d.textures->baseColor(texture) : nullptr;
+        const PaintTexture* metallicRoughness =
+            textured ? d.textures->metallicRoughness(texture) : nullptr;
+        const bool lit = metallicRoughness != nullptr;
         const ShaderProgram* program = d.program(options.channel, lit);
         if (program != current) {
             current = program;
@@ -308,9 +290,9 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
                      glm::value_ptr(material.baseColorFactor));
         glUniform1i(program->uniform("uHasTexture"), textured);
         if (textured)
-            glBindTextureUnit(0, d.textures[texture].id());
+            glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
         if (lit && program != &d.programs[0])
-            glBindTextureUnit(1, d.metallicRoughness[texture].id());
+            glBindTextureUnit(1, metallicRoughness->id());
         drawInPieces(run.firstTriangle, run.triangleCount, pieces,
                      [](std::size_t first, std::size_t count) {
                          glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,

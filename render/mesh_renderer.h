@@ -11,6 +11,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "render/material_channel.h"
+#include "render/material_textures.h"
 
 namespace render {
 
@@ -26,9 +27,9 @@ struct DrawOptions {
 /**
  * Draws a core::Mesh shaded as the compositor shades the depth layers: base color factor × base
  * color texture (sRGB) × vertex colors with a headlight, lit as a metallic-roughness material
- * where a texture has one (setMetallicRoughness()), or one channel alone (DrawOptions::channel).
- * The stand-in is drawn the same way. Needs a current GL context for every call, the one it was
- * initialized in.
+ * where its texture has one (MaterialTextures::setMetallicRoughness()), or one channel alone
+ * (DrawOptions::channel). The stand-in is drawn the same way. Needs a current GL context for every
+ * call, the one it was initialized in.
  */
 class MeshRenderer {
 public:
@@ -39,8 +40,12 @@ public:
 
     /** Compiles the shaders; returns an Error if they fail to build. */
     core::Status initialize();
-    /** Uploads the mesh (replacing any previous one). */
-    void setMesh(const core::Mesh& mesh);
+    /**
+     * Uploads the mesh (replacing any previous one). With textures, the materials sample that
+     * store, which whoever shares it has filled from the mesh's textures (a DepthCompositor of
+     * the same context may read it too); without, the renderer makes its own.
+     */
+    void setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures = nullptr);
     bool hasMesh() const;
     /**
      * Sets the simplified triangles drawn with DrawOptions::standIn: indices into the mesh's
@@ -55,20 +60,11 @@ public:
     /** Triangles of the last draw() (0 when it drew nothing). */
     std::size_t lastDrawnTriangles() const;
     /**
-     * Replaces texels [x, x + width) × [y, y + height) of mesh texture `texture` with those of
-     * image (its painted copy, same size), mip levels included; ignored for an unknown texture.
+     * The textures the materials sample (MaterialTextures: painting updates them there); a
+     * material whose base colour texture has a metallic-roughness texture is lit as
+     * metallic-roughness. Empty before the first mesh.
      */
-    void updateTexels(std::uint32_t texture, int x, int y, int width, int height,
-                      const core::Image& image);
-    /**
-     * Sets the metallic-roughness image of mesh texture `texture` (RGBA8, G roughness, B
-     * metallic, linear; same size), as DepthCompositor::setMetallicRoughness(); a material with
-     * that base colour texture is then lit as metallic-roughness. A new mesh clears them.
-     */
-    void setMetallicRoughness(std::uint32_t texture, const core::Image& image);
-    /** Painting: as updateTexels() for the metallic-roughness image of `texture`. */
-    void updateMetallicRoughness(std::uint32_t texture, int x, int y, int width, int height,
-                                 const core::Image& image);
+    MaterialTextures& textures();
     /** Replaces the colours of vertices [first, first + colors.size()) (clamped to the mesh). */
     void updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors);
     /** Draws into the currently bound framebuffer, with view.width × view.height as viewport. */

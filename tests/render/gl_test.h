@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "core/depth/depth_layers.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
+#include "core/model/mesh_topology.h"
 #include "render/depth_compositor.h"
 #include "render/gl_context.h"
 #include "render/gl_depth_capturer.h"
@@ -36,6 +38,15 @@ protected:
         ASSERT_TRUE(status) << status.error();
     }
     void TearDown() override { m_capturer.depthCapture().release(); }
+
+    /** build_layers of mesh in view through the GL capture; empty (and a failure) on error. */
+    core::DepthLayers captureDepthLayers(const core::Mesh& mesh, const core::View& view) {
+        m_capturer.setMesh(mesh);
+        auto layers =
+            core::buildDepthLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
+        EXPECT_TRUE(layers) << layers.error();
+        return layers ? std::move(layers).value() : core::DepthLayers{};
+    }
 
     render::GlDepthCapturer m_capturer;
 };

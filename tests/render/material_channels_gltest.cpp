@@ -100,7 +100,7 @@ TEST_F(MaterialChannelsGlTest, PaintedRoughnessAndMetallicShowInTheirChannelsAnd
 
     // Shown before painting, as the viewport does; painting then updates touched texels only.
     ASSERT_TRUE(m_compositor.setMesh(doc.paintedMesh()));
-    m_compositor.setMetallicRoughness(0, target->metallicRoughnessPage(0));
+    m_compositor.textures().setMetallicRoughness(0, target->metallicRoughnessPage(0));
     ASSERT_TRUE(m_compositor.setDepthLayers(*doc.depthLayers()));
     const core::Image before = draw(render::MaterialChannel::Material, "material_before");
 
@@ -119,9 +119,10 @@ TEST_F(MaterialChannelsGlTest, PaintedRoughnessAndMetallicShowInTheirChannelsAnd
     ASSERT_FALSE(changes.texels.empty());
     for (const core::TexelRect& r : changes.texels) {
         EXPECT_LT(std::size_t(r.width) * std::size_t(r.height), std::size_t(256 * 256));
-        m_compositor.updateTexels(r.page, r.x, r.y, r.width, r.height, target->page(r.page));
-        m_compositor.updateMetallicRoughness(r.page, r.x, r.y, r.width, r.height,
-                                             target->metallicRoughnessPage(r.page));
+        m_compositor.textures().updateTexels(r.page, r.x, r.y, r.width, r.height,
+                                             target->page(r.page));
+        m_compositor.textures().updateMetallicRoughness(r.page, r.x, r.y, r.width, r.height,
+                                                        target->metallicRoughnessPage(r.page));
     }
 
     const core::Image roughness = draw(render::MaterialChannel::Roughness, "channel_roughness");

@@ -189,7 +189,7 @@ TEST_F(GlTest, TexelUpdatesLookLikeAFreshUpload) {
     paintedMesh.textures = {painted};
     const core::Image fresh = drawMesh(paintedMesh, view, [](render::MeshRenderer&) {});
     const core::Image updated = drawMesh(mesh, view, [&](render::MeshRenderer& renderer) {
-        renderer.updateTexels(0, 33, 40, 184, 110, painted);
+        renderer.textures().updateTexels(0, 33, 40, 184, 110, painted);
     });
     const core::Image unchanged = drawMesh(mesh, view, [](render::MeshRenderer&) {});
     // The update shows, and like an upload of the whole painted texture (the GL's mipmap

@@ -74,14 +74,6 @@ protected:
         GlCaptureTest::TearDown();
     }
 
-    core::DepthLayers build(const core::Mesh& mesh, const core::View& view) {
-        m_capturer.setMesh(mesh);
-        auto layers =
-            core::buildDepthLayers(m_capturer, mesh, core::buildMeshTopology(mesh), view, {});
-        EXPECT_TRUE(layers) << layers.error();
-        return layers ? std::move(layers).value() : core::DepthLayers{};
-    }
-
     static core::Image draw(render::DepthCompositor& compositor, const core::DepthLayers& layers,
                             const render::CompositeOptions& options) {
         return render_test::drawComposite(compositor, layers.stack.width, layers.stack.height,
@@ -103,7 +95,7 @@ std::size_t differingBytes(const core::Image& a, const core::Image& b) {
 TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
     for (const Scene& scene : scenes()) {
         SCOPED_TRACE(scene.name);
-        const core::DepthLayers layers = build(scene.mesh, scene.view);
+        const core::DepthLayers layers = captureDepthLayers(scene.mesh, scene.view);
         ASSERT_GT(layers.stack.fragmentCount(), 0u);
         // The cap plans the mesh parts; the fragment arrays keep the whole block (a tiny one
         // would refuse them, see CompositorShadesAsManyFragmentsAsItsFragmentArraysHold).
@@ -157,7 +149,7 @@ TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHol
     const core::Mesh trefoil = core::makeTrefoil();
     // Close up: the knot fills the view, two to four sheets deep.
     const core::DepthLayers layers =
-        build(trefoil, orbitView(trefoil, 45.0f, 60.0f, 320, 240, 0.35f));
+        captureDepthLayers(trefoil, orbitView(trefoil, 45.0f, 60.0f, 320, 240, 0.35f));
     const std::size_t fragments = layers.stack.fragmentCount();
     const std::size_t pixels = layers.stack.pixelCount();
     // The largest other array: the visible and under fragment of each pixel.

@@ -189,10 +189,22 @@ void Viewport::setToolCursor(const QCursor& cursor, bool brushOutline) {
 
 void Viewport::paintTargetChanged() {
     m_paintedMeshDirty = true; // uploaded where the context is current
-    m_compositorPaint.clear();
-    m_rendererPaint.clear();
+    m_pendingPaint.clear();
     update();
 }
+
+namespace {
+
+/** The smallest range holding both (an empty one holds nothing). */
+core::VertexRange unite(core::VertexRange a, core::VertexRange b) {
+    if (a.begin >= a.end)
+        return b;
+    if (b.begin >= b.end)
+        return a;
+    return {std::min(a.begin, b.begin), std::max(a.end, b.end)};
+}
+
+} // namespace
 
 void Viewport::PendingPaint::add(const core::PaintChanges& changes) {
     for (const core::TexelRect& rect : changes.texels) {
@@ -213,67 +225,54 @@ void Viewport::PendingPaint::add(const core::PaintChanges& changes) {
         box.height = y1 - box.y;
     }
     for (const core::VertexRange& range : changes.vertices) {
-        if (range.begin >= range.end)
-            continue;
-        if (vertices.begin >= vertices.end) {
-            vertices = range;
-        } else {
-            vertices.begin = std::min(vertices.begin, range.begin);
-            vertices.end = std::max(vertices.end, range.end);
-        }
+        compositorVertices = unite(compositorVertices, range);
+        rendererVertices = unite(rendererVertices, range);
     }
 }
 
 void Viewport::applyPaintChanges(const core::PaintChanges& changes) {
     if (changes.empty())
         return;
-    m_compositorPaint.add(changes);
-    m_rendererPaint.add(changes);
+    m_pendingPaint.add(changes);
     update();
 }
 
-void Viewport::flushPaint(PendingPaint& pending, bool compositor) {
+void Viewport::flushPaint(bool compositor) {
     if (!m_document.hasPaintTarget() || m_document.paintTarget() != m_shownTarget) {
-        pending.clear();
+        m_pendingPaint.clear();
         return;
     }
     const core::PaintTarget* target = m_document.paintTarget();
-    flushPages(*target, pending, compositor);
-    flushVertexColors(*target, pending, compositor);
-    pending.clear();
+    flushPages(*target);
+    flushVertexColors(*target, compositor);
 }
 
-void Viewport::flushPages(const core::PaintTarget& target, const PendingPaint& pending,
-                          bool compositor) {
-    for (std::size_t page = 0; page < pending.pages.size(); ++page) {
-        const core::TexelRect& r = pending.pages[page];
+void Viewport::flushPages(const core::PaintTarget& target) {
+    for (std::size_t page = 0; page < m_pendingPaint.pages.size(); ++page) {
+        const core::TexelRect& r = m_pendingPaint.pages[page];
         if (r.width <= 0 || page >= target.pageCount())
             continue;
-        if (compositor) {
-            m_compositor->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                       target.page(page));
-            m_compositor->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                                  target.metallicRoughnessPage(page));
-        } else {
-            m_renderer->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                     target.page(page));
-            m_renderer->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                                target.metallicRoughnessPage(page));
-        }
+        m_textures->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                 target.page(page));
+        m_textures->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                            target.metallicRoughnessPage(page));
     }
+    m_pendingPaint.pages.clear();
 }
 
-void Viewport::flushVertexColors(const core::PaintTarget& target, const PendingPaint& pending,
-                                 bool compositor) {
-    const core::VertexRange range = pending.vertices;
+void Viewport::flushVertexColors(const core::PaintTarget& target, bool compositor) {
+    core::VertexRange& range =
+        compositor ? m_pendingPaint.compositorVertices : m_pendingPaint.rendererVertices;
     const std::span<const glm::vec4> all = target.vertexColors();
-    if (range.begin >= range.end || range.end > all.size())
-        return;
-    const std::span<const glm::vec4> changed = all.subspan(range.begin, range.end - range.begin);
-    if (compositor)
-        m_compositor->updateVertexColors(range.begin, changed);
-    else
-        m_renderer->updateVertexColors(range.begin, changed);
+    if (range.begin < range.end && range.end <= all.size()) {
+        const std::span<const glm::vec4> changed =
+            all.subspan(range.begin, range.end - range.begin);
+        if (compositor)
+            m_compositor->updateVertexColors(range.begin, changed);
+        else
+            m_renderer->updateVertexColors(range.begin, changed);
+    }
+    range = {};
 }
 
 void Viewport::brushMapsChanged() {
@@ -429,11 +428,13 @@ void Viewport::initializeGL() {
     } else {
         auto renderer = std::make_unique<render::MeshRenderer>();
         const core::Status status = renderer->initialize();
-        if (status)
+        if (status) {
             m_renderer = std::move(renderer);
-        else
+            m_textures = std::make_shared<render::MaterialTextures>();
+        } else {
             m_glError =
                 tr("The renderer could not start: %1").arg(QString::fromStdString(status.error()));
+        }
     }
     QString layerError;
     if (m_renderer) {
@@ -469,8 +470,7 @@ void Viewport::initializeGL() {
             Qt::QueuedConnection);
     }
     m_meshDirty = true;
-    m_compositorPaint.clear();
-    m_rendererPaint.clear();
+    m_pendingPaint.clear();
     m_mapsUpload = {};
     invalidateView(); // the GL objects are new: so are the layers they will hold
 }
@@ -503,19 +503,17 @@ void Viewport::uploadMeshIfDirty() {
         painted = m_document.paintedMesh();
     const core::Mesh& mesh = target ? painted : m_document.mesh();
     m_shownTarget = target;
-    m_renderer->setMesh(mesh);
-    // Lit as the composite is, so the view keeps its colours while the camera moves.
+    // Both renderers light with the metallic-roughness pages, so the view keeps its colours
+    // while the camera moves.
+    m_textures->create(mesh.textures);
     for (std::size_t page = 0; target && page < target->pageCount(); ++page)
-        m_renderer->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
-    m_rendererPaint.clear();
-    m_compositorPaint.clear();
+        m_textures->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
+    m_renderer->setMesh(mesh, m_textures);
+    m_pendingPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor) {
-        const core::Status status = m_compositor->setMesh(mesh);
+        const core::Status status = m_compositor->setMesh(mesh, m_textures);
         m_compositorHasMesh = status.ok();
-        for (std::size_t page = 0; target && status.ok() && page < target->pageCount(); ++page)
-            m_compositor->setMetallicRoughness(std::uint32_t(page),
-                                               target->metallicRoughnessPage(page));
         if (!status)
             reportDepthLayerError(status);
     }
@@ -547,10 +545,10 @@ void Viewport::paintGL() {
     const core::View current = view();
     m_lastFrameTriangles = 0;
     if (isShowingDepthLayers()) {
-        flushPaint(m_compositorPaint, true);
+        flushPaint(true);
         m_compositor->draw(m_composite);
     } else {
-        flushPaint(m_rendererPaint, false);
+        flushPaint(false);
         options.standIn = isCameraMoving();
         options.channel = m_composite.channel;
         m_renderer->draw(current, options);
@@ -653,6 +651,9 @@ void Viewport::releaseGl() {
     m_capturer.reset();
     m_connectivity.reset();
     m_renderer.reset();
+    if (m_textures)
+        m_textures->release();
+    m_textures.reset();
     doneCurrent();
     m_depthLayersShown = false;
 }

@@ -275,25 +275,31 @@ private:
     void wheelMoved();
     void reportDepthLayerError(const core::Status& status);
     void releaseGl();
-    /** What paint changed since a renderer last got it: a bounding rectangle per page. */
+    /**
+     * What paint changed since it was last uploaded: a bounding rectangle per page (to the
+     * textures both renderers share, once) and the vertex colours (each renderer has its own).
+     */
     struct PendingPaint {
-        std::vector<core::TexelRect> pages; // width 0: clean
-        core::VertexRange vertices;         // begin == end: clean
+        std::vector<core::TexelRect> pages;   // width 0: clean
+        core::VertexRange compositorVertices; // begin == end: clean
+        core::VertexRange rendererVertices;
         void add(const core::PaintChanges& changes);
         void clear() {
             pages.clear();
-            vertices = {};
+            compositorVertices = rendererVertices = {};
         }
     };
-    void flushPaint(PendingPaint& pending, bool compositor);
+    /** Uploads the pending paint the compositor's or the mesh renderer's next draw shows. */
+    void flushPaint(bool compositor);
     /** flushPaint()'s steps: the changed texels of the pages, the changed vertex colours. */
-    void flushPages(const core::PaintTarget& target, const PendingPaint& pending, bool compositor);
-    void flushVertexColors(const core::PaintTarget& target, const PendingPaint& pending,
-                           bool compositor);
+    void flushPages(const core::PaintTarget& target);
+    void flushVertexColors(const core::PaintTarget& target, bool compositor);
 
     core::Document& m_document;
     // These live only while the context does.
     std::unique_ptr<render::MeshRenderer> m_renderer;
+    /** The textures the renderer and the compositor both draw with. */
+    std::shared_ptr<render::MaterialTextures> m_textures;
     std::unique_ptr<render::GlDepthCapturer> m_capturer;
     class ContextConnectivity;
     render::ConnectivityBackend m_connectivityRequest = render::ConnectivityBackend::Auto;
@@ -312,10 +318,9 @@ private:
     render::CompositeOptions m_composite;
     QString m_glError;
 
-    // Painting: each renderer catches up when it draws next (the mesh renderer only after the
-    // view moves), so a stroke costs the compositor's compose pass per frame.
-    PendingPaint m_compositorPaint;
-    PendingPaint m_rendererPaint;
+    // Painting: uploaded when a renderer draws next (the mesh renderer's vertex colours only
+    // after the view moves), so a stroke costs the compositor's compose pass per frame.
+    PendingPaint m_pendingPaint;
     bool m_brushMapsVisible = false;
     std::vector<std::uint8_t> m_brushMaps; // view-sized RGBA, as Document::fillBrushMaps fills it
     render::PixelRect m_mapsRect;          // what the maps cover now
