@@ -614,10 +614,10 @@
         <translation>&amp;Alle einblenden</translation>
     </message>
     <message numerus="yes">
-        <source>Region %1 · layer %2 · %n pixel(s)</source>
+        <source>Region %1 · depth layer %2 · %n pixel(s)</source>
         <translation>
-            <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
-            <numerusform>Region %1 · Ebene %2 · %n Pixel</numerusform>
+            <numerusform>Region %1 · Tiefenebene %2 · %n Pixel</numerusform>
+            <numerusform>Region %1 · Tiefenebene %2 · %n Pixel</numerusform>
         </translation>
     </message>
 </context>
@@ -685,30 +685,30 @@
         <translation>Die ganze Ansicht, von vorn nach hinten</translation>
     </message>
     <message>
-        <source>Layer %1
+        <source>Depth layer %1
 Fragments: %2
 Regions: %3</source>
-        <translation>Ebene %1
+        <translation>Tiefenebene %1
 Fragmente: %2
 Regionen: %3</translation>
     </message>
     <message>
-        <source>Show layer %1 alone</source>
-        <translation>Ebene %1 allein zeigen</translation>
+        <source>Show depth layer %1 alone</source>
+        <translation>Tiefenebene %1 allein zeigen</translation>
     </message>
     <message>
         <source>Depth layers appear when the view stays still.</source>
         <translation>Die Tiefenebenen erscheinen, sobald die Ansicht stillsteht.</translation>
     </message>
     <message>
-        <source>Click a depth layer to see it alone; “All layers” shows the whole view.</source>
-        <translation>Klicken Sie auf eine Tiefenebene, um sie allein zu sehen; „Alle Ebenen“ zeigt die ganze Ansicht.</translation>
+        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
+        <translation>Klicken Sie auf eine Tiefenebene, um sie allein zu sehen; „Alle Tiefenebenen“ zeigt die ganze Ansicht.</translation>
     </message>
     <message>
-        <source>All layers
+        <source>All depth layers
 Depth layers: %1
 Regions: %2</source>
-        <translation>Alle Ebenen
+        <translation>Alle Tiefenebenen
 Tiefenebenen: %1
 Regionen: %2</translation>
     </message>
@@ -768,24 +768,24 @@ Regionen: %2</translation>
         <translation>Das Modell schattiert zeigen, alle Tiefenebenen</translation>
     </message>
     <message>
-        <source>Single &amp;Layer</source>
-        <translation>Einzelne &amp;Ebene</translation>
+        <source>Single Depth &amp;Layer</source>
+        <translation>Einzelne Tiefen&amp;ebene</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
         <translation>Se&amp;gmentierungskarte</translation>
     </message>
     <message>
-        <source>Colour every region of the visible layer differently</source>
-        <translation>Jede Region der sichtbaren Ebene anders einfärben</translation>
+        <source>Colour every region of the visible depth layer differently</source>
+        <translation>Jede Region der sichtbaren Tiefenebene anders einfärben</translation>
     </message>
     <message>
         <source>Region &amp;Boundaries</source>
         <translation>&amp;Regionsgrenzen</translation>
     </message>
     <message>
-        <source>Outline where a surface is not connected to its neighbours on the same layer</source>
-        <translation>Umrissen zeigen, wo eine Fläche nicht mit ihren Nachbarn auf derselben Ebene verbunden ist</translation>
+        <source>Outline where a surface is not connected to its neighbours on the same depth layer</source>
+        <translation>Umrissen zeigen, wo eine Fläche nicht mit ihren Nachbarn auf derselben Tiefenebene verbunden ist</translation>
     </message>
     <message>
         <source>Building depth layers…</source>
@@ -1511,8 +1511,8 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>&amp;Transparenz sperren</translation>
     </message>
     <message>
-        <source>Painting changes the colour of what is on the layer, never where it is or how much</source>
-        <translation>Malen ändert die Farbe dessen, was auf der Schicht ist, nie wo es ist oder wie viel</translation>
+        <source>Painting changes the colour of what is on the paint layer, never where it is or how much</source>
+        <translation>Malen ändert die Farbe dessen, was auf der Malschicht ist, nie wo es ist oder wie viel</translation>
     </message>
     <message>
         <source>&amp;New Paint Layer</source>
@@ -1535,8 +1535,8 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Füllen</translation>
     </message>
     <message>
-        <source>Add a layer of uniform channel values (the brush&apos;s) above the current one</source>
-        <translation>Eine Schicht mit einheitlichen Kanalwerten (denen des Pinsels) über der aktuellen hinzufügen</translation>
+        <source>Add a paint layer of uniform channel values (the brush&apos;s) above the current one</source>
+        <translation>Eine Malschicht mit einheitlichen Kanalwerten (denen des Pinsels) über der aktuellen hinzufügen</translation>
     </message>
     <message>
         <source>&amp;Duplicate Paint Layer</source>
@@ -2088,13 +2088,13 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Zu grauen Knoten zusammengefasste kleine Regionen: %1</translation>
     </message>
     <message>
-        <source>Layer %1</source>
-        <translation>Ebene %1</translation>
+        <source>Depth layer %1</source>
+        <translation>Tiefenebene %1</translation>
     </message>
     <message>
-        <source>%1 small regions of layer %2
+        <source>%1 small regions of depth layer %2
 %3 pixels together</source>
-        <translation>%1 kleine Regionen der Ebene %2
+        <translation>%1 kleine Regionen der Tiefenebene %2
 zusammen %3 Pixel</translation>
     </message>
     <message>
@@ -2102,10 +2102,10 @@ zusammen %3 Pixel</translation>
         <translation>+%1</translation>
     </message>
     <message>
-        <source>Region %1 on layer %2
+        <source>Region %1 on depth layer %2
 %3 pixels
 Connected regions: %4</source>
-        <translation>Region %1 auf Ebene %2
+        <translation>Region %1 auf Tiefenebene %2
 %3 Pixel
 Verbundene Regionen: %4</translation>
     </message>
@@ -2177,16 +2177,16 @@ Verbundene Regionen: %4</translation>
         <translation>Um Oberflächen&amp;punkt drehen</translation>
     </message>
     <message>
-        <source>Start an orbit on the model to turn about that point, on whatever layer is shown there</source>
-        <translation>Eine auf dem Modell begonnene Drehung kreist um diesen Punkt, auf welcher Ebene er auch gezeigt wird</translation>
+        <source>Start an orbit on the model to turn about that point, on whatever depth layer is shown there</source>
+        <translation>Eine auf dem Modell begonnene Drehung kreist um diesen Punkt, auf welcher Tiefenebene er auch gezeigt wird</translation>
     </message>
     <message>
         <source>&amp;Reset Region Order</source>
         <translation>Regionsreihenfolge &amp;zurücksetzen</translation>
     </message>
     <message>
-        <source>Show the regions in their original order (layer 1 in front)</source>
-        <translation>Die Regionen in ihrer ursprünglichen Reihenfolge zeigen (Ebene 1 vorn)</translation>
+        <source>Show the regions in their original order (depth layer 1 in front)</source>
+        <translation>Die Regionen in ihrer ursprünglichen Reihenfolge zeigen (Tiefenebene 1 vorn)</translation>
     </message>
     <message>
         <source>Reset the region order (R)</source>
@@ -2205,8 +2205,8 @@ Verbundene Regionen: %4</translation>
         <translation>Hier gibt es nichts hervorzuholen</translation>
     </message>
     <message>
-        <source>Region %1 (layer %2) in front; click again to go deeper</source>
-        <translation>Region %1 (Ebene %2) vorn; erneut klicken, um tiefer zu gehen</translation>
+        <source>Region %1 (depth layer %2) in front; click again to go deeper</source>
+        <translation>Region %1 (Tiefenebene %2) vorn; erneut klicken, um tiefer zu gehen</translation>
     </message>
     <message numerus="yes">
         <source>%n region(s) hidden</source>
@@ -2223,7 +2223,7 @@ Verbundene Regionen: %4</translation>
         <translation>die Ansicht des Skripts (%1×%2) ist nicht die des Fensters (%3×%4); spielen Sie es mit layerpaint-cli ab</translation>
     </message>
     <message>
-        <source>the layers of this view cannot be built</source>
+        <source>the depth layers of this view cannot be built</source>
         <translation>die Tiefenebenen dieser Ansicht können nicht erstellt werden</translation>
     </message>
     <message>
@@ -2345,8 +2345,8 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <translation>Rückseiten erfassen (zweiseitig)</translation>
     </message>
     <message>
-        <source>Also split the inside of open or single-sided surfaces into layers. Changing it captures the view again.</source>
-        <translation>Auch die Innenseite offener oder einseitiger Flächen in Ebenen zerlegen. Eine Änderung erfasst die Ansicht neu.</translation>
+        <source>Also split the inside of open or single-sided surfaces into depth layers. Changing it captures the view again.</source>
+        <translation>Auch die Innenseite offener oder einseitiger Flächen in Tiefenebenen zerlegen. Eine Änderung erfasst die Ansicht neu.</translation>
     </message>
     <message>
         <source>Threshold:</source>
@@ -2494,8 +2494,8 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
 <context>
     <name>ui::Viewport</name>
     <message>
-        <source>The layer capture is not available.</source>
-        <translation>Die Ebenenerfassung ist nicht verfügbar.</translation>
+        <source>The depth-layer capture is not available.</source>
+        <translation>Die Tiefenebenenerfassung ist nicht verfügbar.</translation>
     </message>
     <message>
         <source>LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.</source>
@@ -2506,12 +2506,12 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <translation>Der Renderer konnte nicht starten: %1</translation>
     </message>
     <message>
-        <source>The layer views could not start: %1</source>
-        <translation>Die Ebenenansichten konnten nicht starten: %1</translation>
+        <source>The depth-layer views could not start: %1</source>
+        <translation>Die Tiefenebenenansichten konnten nicht starten: %1</translation>
     </message>
     <message>
-        <source>The layers cannot be shown: %1</source>
-        <translation>Die Ebenen können nicht angezeigt werden: %1</translation>
+        <source>The depth layers cannot be shown: %1</source>
+        <translation>Die Tiefenebenen können nicht angezeigt werden: %1</translation>
     </message>
 </context>
 </TS>

@@ -614,9 +614,9 @@
         <translation>全部取消隐藏(&amp;A)</translation>
     </message>
     <message numerus="yes">
-        <source>Region %1 · layer %2 · %n pixel(s)</source>
+        <source>Region %1 · depth layer %2 · %n pixel(s)</source>
         <translation>
-            <numerusform>区域 %1 · 图层 %2 · %n 个像素</numerusform>
+            <numerusform>区域 %1 · 深度层 %2 · %n 个像素</numerusform>
         </translation>
     </message>
 </context>
@@ -684,30 +684,30 @@
         <translation>整个视图，由前到后</translation>
     </message>
     <message>
-        <source>Layer %1
+        <source>Depth layer %1
 Fragments: %2
 Regions: %3</source>
-        <translation>图层 %1
+        <translation>深度层 %1
 片元：%2
 区域：%3</translation>
     </message>
     <message>
-        <source>Show layer %1 alone</source>
-        <translation>单独显示图层 %1</translation>
+        <source>Show depth layer %1 alone</source>
+        <translation>单独显示深度层 %1</translation>
     </message>
     <message>
         <source>Depth layers appear when the view stays still.</source>
         <translation>视图静止后将显示深度层。</translation>
     </message>
     <message>
-        <source>Click a depth layer to see it alone; “All layers” shows the whole view.</source>
-        <translation>单击一个深度层可单独查看；“所有图层”显示整个视图。</translation>
+        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
+        <translation>单击一个深度层可单独查看；“所有深度层”显示整个视图。</translation>
     </message>
     <message>
-        <source>All layers
+        <source>All depth layers
 Depth layers: %1
 Regions: %2</source>
-        <translation>所有图层
+        <translation>所有深度层
 深度层：%1
 区域：%2</translation>
     </message>
@@ -767,24 +767,24 @@ Regions: %2</source>
         <translation>以着色方式显示模型的所有深度层</translation>
     </message>
     <message>
-        <source>Single &amp;Layer</source>
-        <translation>单个图层(&amp;L)</translation>
+        <source>Single Depth &amp;Layer</source>
+        <translation>单个深度层(&amp;L)</translation>
     </message>
     <message>
         <source>Se&amp;gmentation Map</source>
         <translation>分割图(&amp;G)</translation>
     </message>
     <message>
-        <source>Colour every region of the visible layer differently</source>
-        <translation>用不同颜色显示可见图层的每个区域</translation>
+        <source>Colour every region of the visible depth layer differently</source>
+        <translation>用不同颜色显示可见深度层的每个区域</translation>
     </message>
     <message>
         <source>Region &amp;Boundaries</source>
         <translation>区域边界(&amp;B)</translation>
     </message>
     <message>
-        <source>Outline where a surface is not connected to its neighbours on the same layer</source>
-        <translation>勾勒出表面与同一图层上相邻部分不相连的地方</translation>
+        <source>Outline where a surface is not connected to its neighbours on the same depth layer</source>
+        <translation>勾勒出表面与同一深度层上相邻部分不相连的地方</translation>
     </message>
     <message>
         <source>Building depth layers…</source>
@@ -1509,8 +1509,8 @@ connectivity %3 ms, regions %4 ms
         <translation>锁定透明度(&amp;T)</translation>
     </message>
     <message>
-        <source>Painting changes the colour of what is on the layer, never where it is or how much</source>
-        <translation>绘画只改变图层上已有内容的颜色，不改变其位置或多少</translation>
+        <source>Painting changes the colour of what is on the paint layer, never where it is or how much</source>
+        <translation>绘画只改变绘画层上已有内容的颜色，不改变其位置或多少</translation>
     </message>
     <message>
         <source>&amp;New Paint Layer</source>
@@ -1533,8 +1533,8 @@ connectivity %3 ms, regions %4 ms
         <translation>填充</translation>
     </message>
     <message>
-        <source>Add a layer of uniform channel values (the brush&apos;s) above the current one</source>
-        <translation>在当前层之上添加一个统一通道值（画笔的值）的图层</translation>
+        <source>Add a paint layer of uniform channel values (the brush&apos;s) above the current one</source>
+        <translation>在当前绘画层之上添加一个统一通道值（画笔的值）的绘画层</translation>
     </message>
     <message>
         <source>&amp;Duplicate Paint Layer</source>
@@ -2085,13 +2085,13 @@ connectivity %3 ms, regions %4 ms
         <translation>合并为灰色节点的小区域：%1</translation>
     </message>
     <message>
-        <source>Layer %1</source>
-        <translation>图层 %1</translation>
+        <source>Depth layer %1</source>
+        <translation>深度层 %1</translation>
     </message>
     <message>
-        <source>%1 small regions of layer %2
+        <source>%1 small regions of depth layer %2
 %3 pixels together</source>
-        <translation>图层 %2 上的 %1 个小区域
+        <translation>深度层 %2 上的 %1 个小区域
 共 %3 个像素</translation>
     </message>
     <message>
@@ -2099,10 +2099,10 @@ connectivity %3 ms, regions %4 ms
         <translation>+%1</translation>
     </message>
     <message>
-        <source>Region %1 on layer %2
+        <source>Region %1 on depth layer %2
 %3 pixels
 Connected regions: %4</source>
-        <translation>区域 %1，位于图层 %2
+        <translation>区域 %1，位于深度层 %2
 %3 个像素
 相连区域：%4</translation>
     </message>
@@ -2174,16 +2174,16 @@ Connected regions: %4</source>
         <translation>绕表面点旋转(&amp;R)</translation>
     </message>
     <message>
-        <source>Start an orbit on the model to turn about that point, on whatever layer is shown there</source>
-        <translation>在模型上开始旋转时将绕该点旋转，无论该处显示的是哪个图层</translation>
+        <source>Start an orbit on the model to turn about that point, on whatever depth layer is shown there</source>
+        <translation>在模型上开始旋转时将绕该点旋转，无论该处显示的是哪个深度层</translation>
     </message>
     <message>
         <source>&amp;Reset Region Order</source>
         <translation>重置区域顺序(&amp;R)</translation>
     </message>
     <message>
-        <source>Show the regions in their original order (layer 1 in front)</source>
-        <translation>按原始顺序显示区域（图层 1 在最前）</translation>
+        <source>Show the regions in their original order (depth layer 1 in front)</source>
+        <translation>按原始顺序显示区域（深度层 1 在最前）</translation>
     </message>
     <message>
         <source>Reset the region order (R)</source>
@@ -2202,8 +2202,8 @@ Connected regions: %4</source>
         <translation>这里没有可弹出的区域</translation>
     </message>
     <message>
-        <source>Region %1 (layer %2) in front; click again to go deeper</source>
-        <translation>区域 %1（图层 %2）已在最前；再次点击可继续深入</translation>
+        <source>Region %1 (depth layer %2) in front; click again to go deeper</source>
+        <translation>区域 %1（深度层 %2）已在最前；再次点击可继续深入</translation>
     </message>
     <message numerus="yes">
         <source>%n region(s) hidden</source>
@@ -2219,7 +2219,7 @@ Connected regions: %4</source>
         <translation>脚本的视图（%1×%2）与窗口的视图（%3×%4）不同；请用 layerpaint-cli 回放</translation>
     </message>
     <message>
-        <source>the layers of this view cannot be built</source>
+        <source>the depth layers of this view cannot be built</source>
         <translation>无法构建此视图的深度层</translation>
     </message>
     <message>
@@ -2338,8 +2338,8 @@ Smaller splits the view into more regions.</source>
         <translation>捕获背面（双面）</translation>
     </message>
     <message>
-        <source>Also split the inside of open or single-sided surfaces into layers. Changing it captures the view again.</source>
-        <translation>也将开放或单面表面的内侧分成图层。更改后会重新捕获视图。</translation>
+        <source>Also split the inside of open or single-sided surfaces into depth layers. Changing it captures the view again.</source>
+        <translation>也将开放或单面表面的内侧分成深度层。更改后会重新捕获视图。</translation>
     </message>
     <message>
         <source>Threshold:</source>
@@ -2487,8 +2487,8 @@ Smaller splits the view into more regions.</source>
 <context>
     <name>ui::Viewport</name>
     <message>
-        <source>The layer capture is not available.</source>
-        <translation>图层捕获不可用。</translation>
+        <source>The depth-layer capture is not available.</source>
+        <translation>深度层捕获不可用。</translation>
     </message>
     <message>
         <source>LayerPaint needs OpenGL 4.5, but this system provides OpenGL %1.%2.</source>
@@ -2499,12 +2499,12 @@ Smaller splits the view into more regions.</source>
         <translation>渲染器无法启动：%1</translation>
     </message>
     <message>
-        <source>The layer views could not start: %1</source>
-        <translation>图层视图无法启动：%1</translation>
+        <source>The depth-layer views could not start: %1</source>
+        <translation>深度层视图无法启动：%1</translation>
     </message>
     <message>
-        <source>The layers cannot be shown: %1</source>
-        <translation>无法显示图层：%1</translation>
+        <source>The depth layers cannot be shown: %1</source>
+        <translation>无法显示深度层：%1</translation>
     </message>
 </context>
 </TS>

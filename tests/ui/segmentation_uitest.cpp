@@ -258,7 +258,7 @@ TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
     auto* list = m_window->depthLayersPanel()->findChild<QListWidget*>(QStringLiteral("layerList"));
     ASSERT_NE(list, nullptr);
     const core::DepthLayers& layers = *document().depthLayers();
-    ASSERT_EQ(list->count(), int(layers.stack.maxLayers()) + 1); // "All layers" first
+    ASSERT_EQ(list->count(), int(layers.stack.maxLayers()) + 1); // "All depth layers" first
     EXPECT_EQ(m_window->depthLayersPanel()->layerCount(), int(layers.stack.maxLayers()));
     const QImage all = grab();
 
@@ -295,7 +295,7 @@ TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
     EXPECT_GE(double(withoutBackground), 0.999 * double(without));
     EXPECT_GE(double(withForeground), 0.95 * double(with));
 
-    // "All layers" goes back.
+    // "All depth layers" goes back.
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
                       list->visualItemRect(list->item(0)).center());
     EXPECT_EQ(viewport()->display(), render::DepthLayerDisplay::Composite);

@@ -49,7 +49,7 @@ DepthLayersPanel::DepthLayersPanel(QWidget* parent) : QWidget(parent) {
     m_list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_list->setSpacing(1);
     m_list->setToolTip(
-        tr("Click a depth layer to see it alone; “All layers” shows the whole view."));
+        tr("Click a depth layer to see it alone; “All depth layers” shows the whole view."));
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -136,7 +136,7 @@ void DepthLayersPanel::rebuild(const core::DepthLayers& layers) {
     m_updating = true;
     m_list->clear();
     auto* all = new QListWidgetItem(
-        icon(1), tr("All layers\nDepth layers: %1\nRegions: %2")
+        icon(1), tr("All depth layers\nDepth layers: %1\nRegions: %2")
                      .arg(locale.toString(qulonglong(fragments.size())),
                           locale.toString(qulonglong(layers.segmentation.graph.regions.size()))));
     all->setData(kLayerRole, 0u);
@@ -146,10 +146,10 @@ void DepthLayersPanel::rebuild(const core::DepthLayers& layers) {
         const auto layer = std::uint32_t(i + 1);
         const QString count = locale.toString(qulonglong(fragments[i]));
         auto* item = new QListWidgetItem(
-            icon(layer), tr("Layer %1\nFragments: %2\nRegions: %3")
+            icon(layer), tr("Depth layer %1\nFragments: %2\nRegions: %3")
                              .arg(locale.toString(layer), count, locale.toString(regions[i])));
         item->setData(kLayerRole, layer);
-        item->setToolTip(tr("Show layer %1 alone").arg(layer));
+        item->setToolTip(tr("Show depth layer %1 alone").arg(layer));
         m_list->addItem(item);
     }
     m_updating = false;

@@ -17,8 +17,8 @@ struct DepthLayers;
 namespace ui {
 
 /**
- * The Depth Layers panel: an "All layers" row, then one row per depth layer with a thumbnail and
- * its fragment and region counts. Choosing a row asks for that layer alone (layerActivated()).
+ * The Depth Layers panel: an "All depth layers" row, then one row per depth layer with a thumbnail
+ * and its fragment and region counts. Choosing a row asks for that layer alone (layerActivated()).
  */
 class DepthLayersPanel : public QWidget {
     Q_OBJECT
@@ -41,7 +41,7 @@ public:
     void setCurrentLayer(std::uint32_t layer);
     /** The selected row's layer; 0 = all layers. */
     std::uint32_t currentLayer() const;
-    /** Rows of depth layers (without the "All layers" row). */
+    /** Rows of depth layers (without the "All depth layers" row). */
     int layerCount() const;
 
     /**

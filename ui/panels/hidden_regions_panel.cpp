@@ -70,7 +70,7 @@ void HiddenRegionsPanel::setRegions(const core::DepthLayers* layers,
                 continue;
             auto* item = new QListWidgetItem(
                 swatch(id),
-                tr("Region %1 · layer %2 · %n pixel(s)", nullptr, int(regions[id].pixels))
+                tr("Region %1 · depth layer %2 · %n pixel(s)", nullptr, int(regions[id].pixels))
                     .arg(id)
                     .arg(regions[id].layer),
                 m_list);

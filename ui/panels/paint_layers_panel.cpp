@@ -214,8 +214,9 @@ void PaintLayersPanel::addBlendRow() {
 void PaintLayersPanel::addLockRow() {
     m_lock = new QCheckBox(tr("Lock &transparency"), m_controls);
     m_lock->setObjectName(QStringLiteral("paintLayerLock"));
-    m_lock->setToolTip(tr("Painting changes the colour of what is on the layer, never where it "
-                          "is or how much"));
+    m_lock->setToolTip(
+        tr("Painting changes the colour of what is on the paint layer, never where it "
+           "is or how much"));
     m_form->addRow(m_lock);
     connect(m_lock, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_updating)
@@ -330,9 +331,10 @@ void PaintLayersPanel::createActions() {
                       tr("Add a paint layer above the current one"),
                       QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_N));
     connect(m_newLayer, &QAction::triggered, this, [this] { addLayer(false); });
-    m_newFill = make(tr("New F&ill Layer"), tr("Fill"), QStringLiteral("actionNewFillLayer"),
-                     tr("Add a layer of uniform channel values (the brush's) above the current "
-                        "one"));
+    m_newFill =
+        make(tr("New F&ill Layer"), tr("Fill"), QStringLiteral("actionNewFillLayer"),
+             tr("Add a paint layer of uniform channel values (the brush's) above the current "
+                "one"));
     connect(m_newFill, &QAction::triggered, this, [this] { addLayer(true); });
     m_duplicate = make(tr("&Duplicate Paint Layer"), tr("Duplicate"),
                        QStringLiteral("actionDuplicatePaintLayer"),

@@ -340,7 +340,7 @@ void RegionGraphPanel::buildScene() {
         const double x = columnX(layer);
         m_scene->addLine(x, top - 6.0, x, bottom + 6.0, cosmeticPen(QColor(255, 255, 255, 22), 1.0))
             ->setZValue(0.0);
-        QGraphicsItem* header = addLabel(m_scene, nullptr, tr("Layer %1").arg(layer), small,
+        QGraphicsItem* header = addLabel(m_scene, nullptr, tr("Depth layer %1").arg(layer), small,
                                          QPointF(x, top - 6.0), LabelSide::Above);
         header->setZValue(4.0);
         header->childItems().front()->setData(1, uint(layer));
@@ -355,7 +355,7 @@ void RegionGraphPanel::buildScene() {
         item->setPos(columnX(node.layer), node.y);
         if (node.merged()) {
             item->setBrush(kMerged);
-            item->setToolTip(tr("%1 small regions of layer %2\n%3 pixels together")
+            item->setToolTip(tr("%1 small regions of depth layer %2\n%3 pixels together")
                                  .arg(locale.toString(node.members))
                                  .arg(node.layer)
                                  .arg(locale.toString(qulonglong(node.pixels))));
@@ -364,7 +364,7 @@ void RegionGraphPanel::buildScene() {
                          small, QPointF(0.0, node.radius), LabelSide::Below));
         } else {
             item->setBrush(toColor(render::regionColor(node.region)));
-            item->setToolTip(tr("Region %1 on layer %2\n%3 pixels\nConnected regions: %4")
+            item->setToolTip(tr("Region %1 on depth layer %2\n%3 pixels\nConnected regions: %4")
                                  .arg(node.region)
                                  .arg(node.layer)
                                  .arg(locale.toString(qulonglong(node.pixels)))
@@ -451,7 +451,7 @@ void RegionGraphPanel::zoomBy(double factor, QPointF anchor) {
     const double room = m_spacing * scale - 6.0;
     for (QGraphicsSimpleTextItem* header : m_headers) {
         const uint layer = header->data(1).toUInt();
-        const QString full = tr("Layer %1").arg(layer);
+        const QString full = tr("Depth layer %1").arg(layer);
         const QFontMetricsF metrics(header->font());
         const QString text = metrics.horizontalAdvance(full) <= room || m_headers.size() == 1
                                  ? full

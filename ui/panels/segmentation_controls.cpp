@@ -76,7 +76,7 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
     m_twoSided = new QCheckBox(tr("Capture back faces (two-sided)"), this);
     m_twoSided->setObjectName(QStringLiteral("twoSidedCapture"));
     m_twoSided->setToolTip(tr("Also split the inside of open or single-sided surfaces into "
-                              "layers. Changing it captures the view again."));
+                              "depth layers. Changing it captures the view again."));
 
     auto* form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

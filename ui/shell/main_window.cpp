@@ -343,12 +343,12 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
                                 tr("Show the model shaded, all depth layers"),
                                 render::DepthLayerDisplay::Composite);
     m_singleLayerAction =
-        addDisplay(tr("Single &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
+        addDisplay(tr("Single Depth &Layer"), QStringLiteral("actionDisplaySingleLayer"), 2,
                    tr("Show one depth layer alone (choose it in the Depth Layers panel)"),
                    render::DepthLayerDisplay::SingleLayer);
     m_segmentationAction =
         addDisplay(tr("Se&gmentation Map"), QStringLiteral("actionDisplaySegmentation"), 3,
-                   tr("Colour every region of the visible layer differently"),
+                   tr("Colour every region of the visible depth layer differently"),
                    render::DepthLayerDisplay::Segmentation);
     m_shadedAction->setChecked(true);
 
@@ -357,7 +357,7 @@ void MainWindow::createDisplayActions(QMenu* viewMenu) {
     m_boundariesAction->setCheckable(true);
     m_boundariesAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_4));
     m_boundariesAction->setStatusTip(tr("Outline where a surface is not connected to its "
-                                        "neighbours on the same layer"));
+                                        "neighbours on the same depth layer"));
     connect(m_boundariesAction, &QAction::toggled, m_viewport, &Viewport::setBoundariesVisible);
     viewMenu->addAction(m_brushMapsAction);
     createChannelActions(viewMenu);

@@ -363,7 +363,7 @@ private:
     QAction* m_singleLayerAction = nullptr;
     QAction* m_segmentationAction = nullptr;
     QAction* m_boundariesAction = nullptr;
-    /** What "All layers" returns to: Composite or Segmentation. */
+    /** What "All depth layers" returns to: Composite or Segmentation. */
     render::DepthLayerDisplay m_allLayersDisplay = render::DepthLayerDisplay::Composite;
     QLabel* m_depthLayerInfo = nullptr;
     QLabel* m_brushInfo = nullptr;

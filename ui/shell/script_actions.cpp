@@ -43,9 +43,10 @@ public:
                                    .toStdString()};
         (void)doc;
         if (!m_builder.buildNow())
-            return core::Error{QCoreApplication::translate(
-                                   "ui::ScriptActions", "the layers of this view cannot be built")
-                                   .toStdString()};
+            return core::Error{
+                QCoreApplication::translate("ui::ScriptActions",
+                                            "the depth layers of this view cannot be built")
+                    .toStdString()};
         return {};
     }
     void viewChanged(const core::View&) override { m_viewport.cameraMoved(); }

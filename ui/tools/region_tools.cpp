@@ -54,18 +54,19 @@ RegionTools::RegionTools(core::Document& document, Viewport& viewport,
     m_viewport.setPopUpTransparency(m_transparency->isChecked());
     connect(m_transparency, &QAction::toggled, &m_viewport, &Viewport::setPopUpTransparency);
 
-    m_orbitAboutSurface =
-        makeToggle(tr("Orbit About &Surface Point"), QStringLiteral("actionOrbitAboutSurface"),
-                   tr("Start an orbit on the model to turn about that point, on whatever layer "
-                      "is shown there"),
-                   kOrbitKey, true, this);
+    m_orbitAboutSurface = makeToggle(
+        tr("Orbit About &Surface Point"), QStringLiteral("actionOrbitAboutSurface"),
+        tr("Start an orbit on the model to turn about that point, on whatever depth layer "
+           "is shown there"),
+        kOrbitKey, true, this);
     m_viewport.setOrbitAboutSurface(m_orbitAboutSurface->isChecked());
     connect(m_orbitAboutSurface, &QAction::toggled, &m_viewport, &Viewport::setOrbitAboutSurface);
 
     m_resetOrder = new QAction(tr("&Reset Region Order"), this);
     m_resetOrder->setObjectName(QStringLiteral("actionResetOrder"));
     m_resetOrder->setShortcut(QKeySequence(Qt::Key_R));
-    m_resetOrder->setStatusTip(tr("Show the regions in their original order (layer 1 in front)"));
+    m_resetOrder->setStatusTip(
+        tr("Show the regions in their original order (depth layer 1 in front)"));
     m_resetOrder->setToolTip(tr("Reset the region order (R)"));
     connect(m_resetOrder, &QAction::triggered, this, [this] {
         if (m_document.resetRegionOrder())
@@ -104,7 +105,7 @@ void RegionTools::popUpAt(QPointF pixel) {
         return;
     }
     changed();
-    emit message(tr("Region %1 (layer %2) in front; click again to go deeper")
+    emit message(tr("Region %1 (depth layer %2) in front; click again to go deeper")
                      .arg(region)
                      .arg(m_document.regionOrder().layerOf(region)));
 }

@@ -314,7 +314,7 @@ bool Viewport::canCapture() const {
 core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
                                                        core::CaptureStats* stats) {
     if (!canCapture())
-        return core::Error{tr("The layer capture is not available.").toStdString()};
+        return core::Error{tr("The depth-layer capture is not available.").toStdString()};
     makeCurrent();
     uploadMeshIfDirty();
     auto stack = m_capturer->capture(view, cullBackFaces, stats);
@@ -447,7 +447,7 @@ void Viewport::initializeGL() {
             m_capturer = std::move(capturer);
             m_compositor = std::move(compositor);
         } else {
-            layerError = tr("The layer views could not start: %1")
+            layerError = tr("The depth-layer views could not start: %1")
                              .arg(QString::fromStdString(captureStatus ? compositeStatus.error()
                                                                        : captureStatus.error()));
             capturer->depthCapture().release();
@@ -526,7 +526,7 @@ void Viewport::uploadMeshIfDirty() {
 void Viewport::reportDepthLayerError(const core::Status& status) {
     // Queued: this may run inside paintGL or with the context current.
     const QString message =
-        tr("The layers cannot be shown: %1").arg(QString::fromStdString(status.error()));
+        tr("The depth layers cannot be shown: %1").arg(QString::fromStdString(status.error()));
     QMetaObject::invokeMethod(
         this, [this, message] { emit depthLayerRenderingFailed(message); }, Qt::QueuedConnection);
 }
