@@ -271,7 +271,9 @@ int main(int argc, char** argv) {
     // The image codecs module is loaded on the first image (its libraries are readable anyway).
     if (const core::Result<std::string> codecs = core::findImageCodecs())
         sandbox.readable.push_back(*codecs);
-    sandbox.maxSeconds = core::detail::importSeconds(o.file, o.limits);
+    sandbox.maxSeconds = core::detail::importSeconds(o.file, o.limits,
+                                                     o.image ? core::detail::ImportKind::Image
+                                                             : core::detail::ImportKind::Model);
     const importer::SandboxReport report = importer::applySandbox(sandbox);
     if (o.probe) {
         // Ends like a load does: without exit-time work (a sanitizer's leak check at exit needs

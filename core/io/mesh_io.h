@@ -26,9 +26,11 @@ struct LoadLimits {
      */
     bool requireTextures = false;
     /**
-     * Wall-clock seconds a file may take in the importer process (its processor time is capped
-     * the same); longer is an error. 0: 30 s plus 1 s per MiB of the file. What the importer may
-     * send back is capped from the sizes above.
+     * Processor seconds a file may take in the importer process, and its wall-clock deadline;
+     * longer is an error. 0: processor time estimated from what the load reads (the file and
+     * the companion files it names: 2 s, plus 0.5 s per MiB and 5 s per image), with a deadline
+     * of three times that plus 10 s (detail::importSeconds()). What the importer may send back
+     * is capped from the sizes above.
      */
     double maxSeconds = 0.0;
 };

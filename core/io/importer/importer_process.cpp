@@ -31,6 +31,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/io/importer/import_budget.h"
 #include "core/io/importer/import_protocol.h"
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/importer/program_files.h"
@@ -408,14 +409,21 @@ Result<importer::Received> runImporter(const std::string& path,
     Result<std::string> program = findImporter();
     if (!program)
         return detail::fileError(path, program.error(), ErrorKind::Failed);
+    // The importer gets the processor time; the deadline here is later unless it was given, so
+    // that a parser that spins is told apart from one that waits.
     LoadLimits resolved = limits;
-    resolved.maxSeconds = detail::importSeconds(path, limits);
+    const bool image = std::find(mode.begin(), mode.end(), "--image") != mode.end();
+    resolved.maxSeconds = detail::importSeconds(
+        path, limits, image ? detail::ImportKind::Image : detail::ImportKind::Model);
+    const double deadline = limits.maxSeconds > 0.0
+                                ? limits.maxSeconds
+                                : detail::importWallSeconds(resolved.maxSeconds);
     std::vector<std::string> args = limitArgs(resolved);
     args.insert(args.end(), mode.begin(), mode.end());
     args.emplace_back("--");
     args.push_back(path);
 
-    ImporterRun run(progress, resolved.maxSeconds);
+    ImporterRun run(progress, deadline);
     if (std::string problem = run.start(*program, args); !problem.empty())
         return detail::fileError(path, problem, ErrorKind::Failed);
     importer::Received received =
@@ -428,8 +436,8 @@ Result<importer::Received> runImporter(const std::string& path,
     if (received.cancelled || run.stop() == ImporterRun::Stop::Cancelled)
         return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
     if (run.stop() == ImporterRun::Stop::TimedOut)
-        return detail::fileError(path, stopped + "it did not finish within " +
-                                           secondsText(resolved.maxSeconds));
+        return detail::fileError(path,
+                                 stopped + "it did not finish within " + secondsText(deadline));
     if (!received.malformed.empty())
         return detail::fileError(path, stopped + received.malformed);
     if (run.extraOutput())
@@ -443,14 +451,12 @@ Result<importer::Received> runImporter(const std::string& path,
 
 namespace detail {
 
-double importSeconds(const std::string& path, const LoadLimits& limits) {
+double importSeconds(const std::string& path, const LoadLimits& limits, ImportKind kind) {
     if (limits.maxSeconds > 0.0)
         return limits.maxSeconds;
-    // A parser that hangs on a few hundred bytes is found in half a minute; a large file gets
-    // time to load.
-    std::error_code ec;
-    const std::uintmax_t bytes = fs::file_size(path, ec);
-    return 30.0 + (ec ? 0.0 : double(bytes) / double(1 << 20));
+    // A parser that hangs on a few hundred bytes is stopped in seconds; a large file, or one
+    // with large companions, gets time to load.
+    return importProcessorSeconds(estimateImportInput(path, kind));
 }
 
 } // namespace detail

@@ -15,6 +15,7 @@
 
 #include "core/base/progress.h"
 #include "core/base/result.h"
+#include "core/io/importer/import_budget.h"
 #include "core/io/mesh_io.h"
 #include "core/io/project/project_file.h"
 #include "core/model/mesh.h"
@@ -48,8 +49,12 @@ Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& 
                                      const LoadLimits& limits = {});
 
 namespace detail {
-/** The importer's deadline for path: limits.maxSeconds, or 30 s plus 1 s per MiB of the file. */
-double importSeconds(const std::string& path, const LoadLimits& limits);
+/**
+ * The importer's processor time for path: limits.maxSeconds, or an estimate from what the load
+ * reads (importProcessorSeconds(estimateImportInput(path, kind)), import_budget.h).
+ */
+double importSeconds(const std::string& path, const LoadLimits& limits,
+                     ImportKind kind = ImportKind::Model);
 
 /**
  * "<path>: <problem>" on one line (line breaks become spaces, no final full stop), of the given
