@@ -17,6 +17,7 @@
 #include "core/base/text.h"
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/model/builtin_models.h"
+#include "core/model/uv_coverage.h"
 
 namespace core {
 
@@ -34,6 +35,31 @@ namespace {
 
 bool finite(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/**
+ * UVs that cover no area are dropped (a texture is then painted over an automatic layout); UVs
+ * that mostly overlap are kept (mirrored islands are often meant), with a warning. Both name the
+ * file: a project's warnings list several.
+ */
+void checkUvCoverage(Mesh& mesh, const std::string& path) {
+    if (!mesh.hasUvs())
+        return;
+    const UvCoverage coverage = measureUvCoverage(mesh);
+    const std::string name = std::filesystem::path(path).filename().string();
+    if (coversNoArea(coverage)) {
+        mesh.uvs.clear();
+        mesh.warnings.push_back("the texture coordinates (UVs) of " + name +
+                                " cover no area (every triangle is a point or a line in UV "
+                                "space), so they were dropped: a texture is painted over an "
+                                "automatic UV layout");
+    } else if (mostlyOverlaps(coverage)) {
+        const long percent = std::lround(100.0 * coverage.overlap);
+        mesh.warnings.push_back(std::to_string(percent) + "% of the UV area of " + name +
+                                " is covered by two or more triangles: a stroke paints every "
+                                "overlapping place at once (a texture with automatic UVs "
+                                "paints them apart)");
+    }
 }
 
 } // namespace
@@ -109,7 +135,7 @@ glm::vec3 unitNormal(const glm::dvec3& n) {
     return std::isfinite(len) && len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f);
 }
 
-Status finishMesh(Mesh& mesh, const LoadLimits& limits) {
+Status finishMesh(Mesh& mesh, const LoadLimits& limits, const std::string& path) {
     if (mesh.positions.size() > limits.maxVertices)
         return Error{"too many vertices (" + std::to_string(mesh.positions.size()) + ")",
                      ErrorKind::BadInput};
@@ -182,6 +208,7 @@ Status finishMesh(Mesh& mesh, const LoadLimits& limits) {
     if (badUvs > 0)
         mesh.warnings.push_back(std::to_string(badUvs) +
                                 " texture coordinates were not finite numbers and were set to 0");
+    checkUvCoverage(mesh, path);
     for (glm::vec4& c : mesh.colors)
         for (int k = 0; k < 4; ++k)
             c[k] = std::isfinite(c[k]) ? std::clamp(c[k], 0.0f, 1.0f) : 1.0f;
@@ -249,7 +276,7 @@ Result<Mesh> load(const std::string& path, const ProgressFn& progress, const Loa
         return fileError(path, result.takeError());
     Mesh mesh = std::move(result).value();
     if (finish)
-        if (const Status finished = detail::finishMesh(mesh, limits); !finished)
+        if (const Status finished = detail::finishMesh(mesh, limits, path); !finished)
             return fileError(path, finished.takeError());
     if (!reportProgress(progress, 1.0))
         return fileError(path, "cancelled", ErrorKind::Cancelled);

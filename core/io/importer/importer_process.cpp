@@ -481,7 +481,7 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
         Mesh mesh = std::move(*received->mesh);
         // The importer sends the format loader's mesh unchecked: the checks and repairs of a
         // load in process are made here, once, on what it sent, as if it were the file itself.
-        if (Status finished = detail::finishMesh(mesh, limits); !finished)
+        if (Status finished = detail::finishMesh(mesh, limits, path); !finished)
             return detail::fileError(path, finished.takeError());
         if (!reportProgress(progress, 1.0))
             return detail::fileError(path, "cancelled", ErrorKind::Cancelled);

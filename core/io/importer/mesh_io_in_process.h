@@ -147,9 +147,10 @@ Result<std::filesystem::path> checkModelFile(const std::string& path, const Load
 
 /**
  * The checks and repairs every loaded mesh goes through (counts against the limits, finite
- * values, normals, materials, Mesh::validate()); the first problem as an Error (no path).
+ * values, normals, materials, UVs that cover no area dropped, Mesh::validate()) of the file
+ * path (named in warnings); the first problem as an Error (no path).
  */
-Status finishMesh(Mesh& mesh, const LoadLimits& limits);
+Status finishMesh(Mesh& mesh, const LoadLimits& limits, const std::string& path);
 } // namespace detail
 
 } // namespace core

@@ -139,7 +139,9 @@ core::Mesh roundTrip(const core::Mesh& mesh, const TempDir& dir, const std::stri
     EXPECT_TRUE(loaded.ok()) << loaded.error();
     if (!loaded)
         return {};
-    EXPECT_TRUE(loaded->warnings.empty()) << loaded->warnings.front();
+    // Only UVs that overlap (the box's faces share its logo) are named at load.
+    for (const std::string& warning : loaded->warnings)
+        EXPECT_NE(warning.find("covered by two or more triangles"), std::string::npos) << warning;
     return std::move(loaded).value();
 }
 
