@@ -17,6 +17,7 @@
 #include "core/io/mesh_io.h"
 #include "core/io/ply_write.h"
 #include "core/model/camera.h"
+#include "core/paint/targets/layout_target.h"
 #include "render/gl_context.h"
 #include "render/gl_depth_capturer.h"
 #include "render/gpu_connectivity.h"
@@ -201,8 +202,12 @@ int runInfo(const std::string& model) {
     if (!mesh)
         return fail(mesh.error());
     const core::Bounds bounds = mesh->bounds();
+    // What a texture target paints each material into (the default 2048² only where it has no
+    // base colour texture of its own).
+    const std::vector<core::PageSize> pageSizes = core::texturePageSizes(*mesh, {});
     json materials = json::array();
-    for (const core::Material& m : mesh->materials) {
+    for (std::size_t i = 0; i < mesh->materials.size(); ++i) {
+        const core::Material& m = mesh->materials[i];
         json entry = {
             {"name", m.name},
             {"base_color",
@@ -212,6 +217,7 @@ int runInfo(const std::string& model) {
             const core::Image& image = mesh->textures[std::size_t(m.baseColorTexture)];
             entry["base_color_texture"] = {{"width", image.width}, {"height", image.height}};
         }
+        entry["paint_texture"] = {{"width", pageSizes[i].width}, {"height", pageSizes[i].height}};
         materials.push_back(std::move(entry));
     }
     const json out = {

@@ -400,6 +400,8 @@ void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
             {"op", "set-target"},
             {"kind", target->kind() == PaintTargetKind::VertexColors ? "vertex-colors" : "texture"},
             {"resolution", options.resolution}};
+        if (options.automaticUvs)
+            op["automatic_uvs"] = true;
         m_session.add(std::move(op));
         HistoryStep step{StepKind::PaintTarget, {}};
         step.parts.emplace_back(TargetSwap{std::move(m_paintTarget), m_paintOptions});

@@ -459,6 +459,8 @@ ProjectState captureProjectState(const Document& doc, ProjectState base) {
     // The target in use is what the file holds: an automatic choice is saved as what it chose.
     if (doc.hasPaintTarget())
         s.target.kind = doc.paintTargetKind();
+    // A layout's UVs are the painted mesh's, which the project holds: none is made on opening.
+    s.target.automaticUvs = false;
     s.layerAware = doc.layerAware();
     s.autoPopUp = doc.autoPopUp();
     s.paintLayers = capturePaintLayers(doc);

@@ -39,6 +39,11 @@ Result<PaintTargetOptions> targetOptionsFromJson(const json& t) {
             return Error{"\"resolution\" must be a whole number from 1 to 16384"};
         options.resolution = t["resolution"].get<int>();
     }
+    if (t.contains("automatic_uvs")) {
+        if (!t["automatic_uvs"].is_boolean())
+            return Error{"\"automatic_uvs\" must be true or false"};
+        options.automaticUvs = t["automatic_uvs"].get<bool>();
+    }
     return options;
 }
 
@@ -97,6 +102,8 @@ json scriptToJson(const Script& script) {
                                 : *t.kind == PaintTargetKind::VertexColors ? "vertex-colors"
                                                                            : "texture"},
                        {"resolution", t.resolution}};
+        if (t.automaticUvs)
+            j["target"]["automatic_uvs"] = true;
     }
     j["operations"] = script.operations;
     return j;

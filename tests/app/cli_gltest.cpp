@@ -84,6 +84,19 @@ TEST(Cli, InfoOfATexturedGltf) {
     EXPECT_EQ(info["vertices"], 24);
     EXPECT_EQ(info["triangles"], 12);
     EXPECT_EQ(info["materials"][0]["base_color_texture"]["width"], 211); // CesiumLogoFlat.png
+    // Strokes go into that texture at its size, not into a 2048² one.
+    EXPECT_EQ(info["materials"][0]["paint_texture"], json({{"width", 211}, {"height", 211}}));
+    // Its six faces share the logo: the UVs stay, with a warning.
+    ASSERT_EQ(info["warnings"].size(), 1u);
+    EXPECT_NE(info["warnings"][0].get<std::string>().find("covered by two or more triangles"),
+              std::string::npos);
+}
+
+TEST(Cli, InfoOfAMaterialWithoutATextureNamesTheNewTexturesSize) {
+    const CliRun run = runCli({"info", "builtin:knot?triangles=2000"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const json info = json::parse(run.out);
+    EXPECT_EQ(info["materials"][0]["paint_texture"], json({{"width", 2048}, {"height", 2048}}));
 }
 
 TEST(Cli, BadInputIsOneLineOnStderrAndAFailureCode) {

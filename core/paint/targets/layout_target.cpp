@@ -44,7 +44,16 @@ makeLayoutTarget(const Mesh& mesh, const PaintTargetOptions& options, const Prog
 }
 
 bool needsUvLayout(const Mesh& mesh, const PaintTargetOptions& options) {
-    return options.kind == PaintTargetKind::Texture && !mesh.hasUvs();
+    return options.kind == PaintTargetKind::Texture && (!mesh.hasUvs() || options.automaticUvs);
+}
+
+std::vector<PageSize> texturePageSizes(const Mesh& mesh, const PaintTargetOptions& options) {
+    PaintTargetOptions texture = options;
+    texture.kind = PaintTargetKind::Texture;
+    if (!needsUvLayout(mesh, texture))
+        return TextureTarget::materialPageSizes(mesh, options);
+    const int resolution = std::clamp(options.resolution, 512, 8192);
+    return std::vector<PageSize>(mesh.materials.size(), PageSize{resolution, resolution});
 }
 
 Result<std::unique_ptr<PaintTarget>>

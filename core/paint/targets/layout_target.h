@@ -23,16 +23,26 @@ Result<std::unique_ptr<TextureTarget>> makeLayoutTarget(const Mesh& mesh,
                                                         const ProgressFn& progress = {});
 
 /**
- * makePaintTarget(), except that a texture asked for (options.kind) on a mesh without UVs gets an
- * automatic layout (makeLayoutTarget()) instead of an Error.
+ * makePaintTarget(), except that a texture asked for (options.kind) on a mesh without UVs, or
+ * with options.automaticUvs, gets an automatic layout (makeLayoutTarget()).
  */
 Result<std::unique_ptr<PaintTarget>>
 makePaintTargetWithLayout(std::shared_ptr<const Mesh> mesh,
                           std::shared_ptr<const MeshTopology> topology,
                           const PaintTargetOptions& options, const ProgressFn& progress = {});
 
-/** Whether a paint target made with options for mesh needs an automatic UV layout. */
+/**
+ * Whether a paint target made with options for mesh needs an automatic UV layout: a texture on a
+ * mesh without UVs, or with options.automaticUvs.
+ */
 bool needsUvLayout(const Mesh& mesh, const PaintTargetOptions& options);
+
+/**
+ * Per material of mesh, the size of the texture it is painted into by a texture target made with
+ * options (options.kind aside): TextureTarget::materialPageSizes(), or with an automatic layout
+ * (needsUvLayout()) one new page of options.resolution² (clamped to 512..8192) for all.
+ */
+std::vector<PageSize> texturePageSizes(const Mesh& mesh, const PaintTargetOptions& options);
 
 /**
  * How finely vertex colours resolve on mesh, in pixels: the length of triangle edges in the

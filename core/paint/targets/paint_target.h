@@ -86,6 +86,11 @@ struct PaintTargetOptions {
     /** Paint the mesh's own base color textures (false: always bake into a new texture). */
     bool reuseTextures = true;
     /**
+     * A texture over an automatic UV layout (makePaintTargetWithLayout()) even when the mesh has
+     * UVs: for UVs that overlap where the artist wants to paint the places apart.
+     */
+    bool automaticUvs = false;
+    /**
      * A surface point matches a pixel's fragment when its distance to the fragment's triangle
      * plane is at most relativeTolerance × depth + pixelTolerance × (size of a pixel at that
      * depth). Surfaces hidden behind another are further apart than that.
@@ -254,6 +259,12 @@ public:
     create(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const MeshTopology> topology,
            const PaintTargetOptions& options = {});
     ~TextureTarget() override;
+    /**
+     * Per material of mesh, the size of the page create() paints it into: its base colour
+     * texture's (options.reuseTextures), else options.resolution² (clamped to 512..8192).
+     */
+    static std::vector<PageSize> materialPageSizes(const Mesh& mesh,
+                                                   const PaintTargetOptions& options);
 
     PaintTargetKind kind() const override { return PaintTargetKind::Texture; }
     const PaintChanges& paint(const DepthLayers& layers, const Dab& dab) override;

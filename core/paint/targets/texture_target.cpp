@@ -127,6 +127,23 @@ TextureTarget::Page makePage(const glm::vec4& factor, const Image* texture, int 
 }
 
 /**
+ * The base colour texture of material m that a target made with options paints into, or nullptr
+ * (a new page). Texel indices are 32-bit and a dab keeps texel coordinates in 16 bits: a texture
+ * beyond 16384² or 65535 texels on a side is baked into a new page instead.
+ */
+const Image* paintableTexture(const Mesh& mesh, std::size_t m, const PaintTargetOptions& options) {
+    const int texture = mesh.materials[m].baseColorTexture;
+    const Image* image = texture >= 0 && std::size_t(texture) < mesh.textures.size()
+                             ? &mesh.textures[std::size_t(texture)]
+                             : nullptr;
+    const bool paintable =
+        options.reuseTextures && image != nullptr && !image->empty() &&
+        std::int64_t(image->width) * image->height <= std::int64_t(16384) * 16384 &&
+        image->width <= 65535 && image->height <= 65535;
+    return paintable ? image : nullptr;
+}
+
+/**
  * The pages: one per (texture, factor) of textured materials, one shared new page for the rest;
  * materialPage and drawMaterials' textures say each material's.
  */
@@ -139,13 +156,8 @@ void makePages(const Mesh& mesh, const PaintTargetOptions& options,
     for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
         const Material& material = mesh.materials[m];
         const int texture = material.baseColorTexture;
-        // Texel indices are 32-bit and a dab keeps texel coordinates in 16 bits: a texture
-        // beyond 16384² or 65535 texels on a side is baked into a new page instead.
-        const Image* image = texture >= 0 ? &mesh.textures[std::size_t(texture)] : nullptr;
-        const bool textured =
-            options.reuseTextures && image != nullptr && !image->empty() &&
-            std::int64_t(image->width) * image->height <= std::int64_t(16384) * 16384 &&
-            image->width <= 65535 && image->height <= 65535;
+        const Image* image = paintableTexture(mesh, m, options);
+        const bool textured = image != nullptr;
         std::uint32_t index = kNone;
         if (textured) {
             for (std::size_t p = 0; p < pages.size(); ++p)
@@ -274,6 +286,18 @@ TextureTarget::TextureTarget(std::shared_ptr<const Mesh> mesh,
     : PaintTarget(std::move(mesh), std::move(topology), options) {}
 
 TextureTarget::~TextureTarget() = default;
+
+std::vector<PageSize> TextureTarget::materialPageSizes(const Mesh& mesh,
+                                                       const PaintTargetOptions& options) {
+    const int resolution = std::clamp(options.resolution, 512, 8192);
+    std::vector<PageSize> sizes;
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m) {
+        const Image* image = paintableTexture(mesh, m, options);
+        sizes.push_back(image ? PageSize{image->width, image->height}
+                              : PageSize{resolution, resolution});
+    }
+    return sizes;
+}
 
 Result<std::unique_ptr<TextureTarget>>
 TextureTarget::create(std::shared_ptr<const Mesh> mesh,

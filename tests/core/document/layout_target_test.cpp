@@ -2,6 +2,7 @@
 // A texture target on a mesh without UVs: the document makes the automatic UV layout (progress,
 // cancel, deterministic), paints over it, undoes and redoes the choice, replays it as a script
 // operation; and the rule that picks the default target for such a mesh.
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -181,6 +182,103 @@ TEST(LayoutTarget, DefaultIsATextureWhereVertexColoursWouldBeCoarse) {
     core::Document doc;
     doc.setMesh(std::move(dense), "trefoil");
     EXPECT_EQ(doc.suggestedPaintTargetKind(), core::PaintTargetKind::VertexColors);
+}
+
+/** coarseBox() with UVs that put all six faces on the same square (every face painted at once). */
+core::Mesh stackedBox() {
+    core::Mesh mesh = coarseBox();
+    // Unshared corners, so that every face gets the whole square.
+    core::Mesh split;
+    split.materials = mesh.materials;
+    const glm::vec2 corners[6] = {{0, 0}, {1, 1}, {1, 0}, {0, 0}, {0, 1}, {1, 1}};
+    for (std::size_t i = 0; i < mesh.indices.size(); ++i) {
+        split.positions.push_back(mesh.positions[mesh.indices[i]]);
+        split.uvs.push_back(corners[i % 6]);
+        split.indices.push_back(std::uint32_t(i));
+    }
+    split.triangleMaterial = mesh.triangleMaterial;
+    split.computeNormals();
+    return split;
+}
+
+TEST(LayoutTarget, AutomaticUvsOnAMeshWithUvsLayOutAnywayAndOnlyWhenAsked) {
+    core::Document doc;
+    doc.setMesh(stackedBox(), "stacked box");
+    ASSERT_TRUE(doc.mesh().hasUvs());
+    // Today's default stays: a mesh with UVs paints its own UVs.
+    EXPECT_FALSE(core::needsUvLayout(doc.mesh(), textureOptions()));
+    ASSERT_TRUE(doc.setPaintTarget(textureOptions()).ok());
+    EXPECT_EQ(doc.paintedMesh().uvs, doc.mesh().uvs);
+
+    core::PaintTargetOptions automatic = textureOptions();
+    automatic.automaticUvs = true;
+    EXPECT_TRUE(core::needsUvLayout(doc.mesh(), automatic));
+    const core::Status status = doc.setPaintTarget(automatic);
+    ASSERT_TRUE(status.ok()) << status.error();
+    EXPECT_TRUE(doc.paintTargetOptions().automaticUvs);
+    const core::Mesh painted = doc.paintedMesh();
+    ASSERT_TRUE(painted.hasUvs());
+    EXPECT_NE(painted.uvs, doc.mesh().uvs); // the layout's, faces apart
+    EXPECT_EQ(painted.triangleCount(), doc.mesh().triangleCount());
+    core::PaintChanges changes;
+    ASSERT_TRUE(doc.undo(changes));
+    EXPECT_EQ(doc.paintedMesh().uvs, doc.mesh().uvs);
+}
+
+TEST(LayoutTarget, ScriptTargetsNameAutomaticUvs) {
+    core::Document doc;
+    doc.setMesh(stackedBox(), "stacked box");
+    core_test::CpuScriptHost host;
+    core::ScriptRunner runner(doc, host, pixelView(80, 60));
+    const core::Status status = runner.run(nlohmann::json{
+        {"op", "set-target"}, {"kind", "texture"}, {"resolution", 512}, {"automatic_uvs", true}});
+    ASSERT_TRUE(status.ok()) << status.error();
+    EXPECT_NE(doc.paintedMesh().uvs, doc.mesh().uvs);
+    EXPECT_FALSE(runner
+                     .run(nlohmann::json{
+                         {"op", "set-target"}, {"kind", "texture"}, {"automatic_uvs", "yes"}})
+                     .ok());
+    core::Script script;
+    script.target = core::PaintTargetOptions{};
+    script.target->automaticUvs = true;
+    const core::Result<core::Script> back = core::parseScript(core::scriptToJson(script));
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_TRUE(back->target->automaticUvs);
+}
+
+TEST(LayoutTarget, TexturePageSizesAreTheTexturesOwnWhereAMaterialHasOne) {
+    core::Mesh mesh = stackedBox();
+    core::Image small;
+    small.width = 256;
+    small.height = 128;
+    small.rgba.assign(std::size_t(256) * 128 * 4, 255);
+    mesh.textures.push_back(small);
+    mesh.materials.push_back(core::Material{"textured", glm::vec4(1.0f), 0});
+    core::PaintTargetOptions options = textureOptions();
+    options.resolution = 1024;
+    const std::vector<core::PageSize> sizes = core::texturePageSizes(mesh, options);
+    ASSERT_EQ(sizes.size(), 2u);
+    EXPECT_EQ(sizes[0], (core::PageSize{1024, 1024})); // no texture: the resolution
+    EXPECT_EQ(sizes[1], (core::PageSize{256, 128}));   // its own texture's size
+    // The target made paints at those sizes.
+    mesh.triangleMaterial[0] = 1;
+    auto target =
+        core::makePaintTargetWithLayout(std::make_shared<const core::Mesh>(mesh), nullptr, options);
+    ASSERT_TRUE(target.ok()) << target.error();
+    ASSERT_EQ(target.value()->pageCount(), 2u);
+    std::vector<core::PageSize> made;
+    for (std::size_t p = 0; p < 2; ++p)
+        made.push_back({target.value()->page(p).width, target.value()->page(p).height});
+    EXPECT_NE(std::find(made.begin(), made.end(), sizes[0]), made.end());
+    EXPECT_NE(std::find(made.begin(), made.end(), sizes[1]), made.end());
+    // An automatic layout paints one new page for all.
+    options.automaticUvs = true;
+    EXPECT_EQ(core::texturePageSizes(mesh, options),
+              std::vector<core::PageSize>(2, core::PageSize{1024, 1024}));
+    mesh.uvs.clear();
+    options.automaticUvs = false;
+    EXPECT_EQ(core::texturePageSizes(mesh, options),
+              std::vector<core::PageSize>(2, core::PageSize{1024, 1024}));
 }
 
 } // namespace layout_target_test
