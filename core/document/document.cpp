@@ -391,18 +391,20 @@ PaintTargetKind Document::suggestedPaintTargetKind() const {
 }
 
 void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
-                                  const PaintTargetOptions& options) {
+                                  const PaintTargetOptions& options, nlohmann::json operation) {
     if (m_tracker.inStroke())
         endStroke();
     if (m_paintTarget) {
         m_session.noteState(*this);
-        nlohmann::json op = {
-            {"op", "set-target"},
-            {"kind", target->kind() == PaintTargetKind::VertexColors ? "vertex-colors" : "texture"},
-            {"resolution", options.resolution}};
-        if (options.automaticUvs)
-            op["automatic_uvs"] = true;
-        m_session.add(std::move(op));
+        if (operation.is_null()) {
+            const bool colours = target->kind() == PaintTargetKind::VertexColors;
+            operation = {{"op", "set-target"},
+                         {"kind", colours ? "vertex-colors" : "texture"},
+                         {"resolution", options.resolution}};
+            if (options.automaticUvs)
+                operation["automatic_uvs"] = true;
+        }
+        m_session.add(std::move(operation));
         HistoryStep step{StepKind::PaintTarget, {}};
         step.parts.emplace_back(TargetSwap{std::move(m_paintTarget), m_paintOptions});
         m_history.push(std::move(step));

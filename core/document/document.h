@@ -198,6 +198,15 @@ public:
     Status adoptPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options,
                             std::uint64_t meshSerial);
     /**
+     * Raises the size of the texture material is painted into to width (its height in
+     * proportion), the page resampled with what is painted on it: an undo step that swaps the
+     * paint target, as setPaintTarget() does. Every material on that page gets the new size.
+     * An Error, and nothing changes, when the target is not a texture, the material does not
+     * exist, width is not larger than the page (or beyond 8192), or paint layers exist (their
+     * planes are not resampled: merge or delete them first).
+     */
+    Status raiseTextureSize(std::uint32_t material, int width);
+    /**
      * The target a mesh without UVs gets unless the user chooses: defaultTargetKind() for the
      * default brush (a texture with an automatic layout where vertex colours would be coarse).
      */
@@ -393,8 +402,12 @@ private:
      * use); a stroke in progress is ended.
      */
     Result<PaintTarget*> readyToPaint();
-    /** Makes target current (with options); an undo step when it replaces one. */
-    void installPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options);
+    /**
+     * Makes target current (with options); an undo step when it replaces one, logged as
+     * operation (a set-target of options when empty).
+     */
+    void installPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options,
+                            nlohmann::json operation = {});
     /** undo() or redo(): ends a stroke or hide in progress, applies the next step, logs it. */
     bool walkHistory(bool undo, PaintChanges& changes);
     /** Records the order change since before as a step of kind (nothing if unchanged). */

@@ -209,6 +209,20 @@ void runSetTarget(ScriptOp& s) {
     throwIfError(s.doc.setPaintTarget(*options));
 }
 
+void runRaiseTextureSize(ScriptOp& s) {
+    const json& op = s.op;
+    if (!op.contains("material") || !op["material"].is_number_integer() ||
+        op["material"].get<long long>() < 0 || op["material"].get<long long>() > 0xFFFFFFFFll)
+        throw ScriptOpError{"\"material\" must be a material's number (from 0)"};
+    if (!op.contains("width") || !op["width"].is_number_integer() ||
+        op["width"].get<long long>() < 1 || op["width"].get<long long>() > 16384)
+        throw ScriptOpError{"\"width\" must be a whole number from 1 to 16384"};
+    if (s.doc.paintTarget() == nullptr)
+        throw ScriptOpError{"there is no paint target"};
+    throwIfError(
+        s.doc.raiseTextureSize(op["material"].get<std::uint32_t>(), op["width"].get<int>()));
+}
+
 void runShowLayer(ScriptOp& s) {
     // The Single Layer view: strokes, fills, picks and pop-ups use that depth layer's
     // fragments; 0 shows every layer.
@@ -400,6 +414,7 @@ constexpr ScriptOpEntry kDocumentOperations[] = {
     {"set-mode", runSetMode},
     {"set-brush", runSetBrush},
     {"set-target", runSetTarget},
+    {"raise-texture-size", runRaiseTextureSize},
     {"show-layer", runShowLayer},
     {"set-segmentation", runSetSegmentation},
     {"stroke", runStroke},

@@ -303,6 +303,8 @@ public:
     const std::vector<std::uint8_t>& coverage(std::size_t i) const { return m_pages[i].coverage; }
     /** The page triangle t is painted on. */
     std::uint32_t trianglePage(std::size_t t) const;
+    /** The page material m is painted on (m below the mesh's material count). */
+    std::uint32_t materialPage(std::size_t m) const { return m_materialPage[m]; }
     int padding() const { return m_padding; }
 
     std::size_t tileBytes(TileKey key) const override;
