@@ -477,10 +477,6 @@
         <translation>Wohin die Farbe geht: in eine Textur (Netze mit UVs) oder in Vertexfarben. Ein Wechsel beginnt das Bemalen von vorn.</translation>
     </message>
     <message>
-        <source>Texture %1 × %1</source>
-        <translation>Textur %1 × %1</translation>
-    </message>
-    <message>
         <source>Vertex colours</source>
         <translation>Vertexfarben</translation>
     </message>
@@ -507,6 +503,49 @@
     <message>
         <source>Texture %1 × %1, automatic UVs</source>
         <translation>Textur %1 × %1, automatische UVs</translation>
+    </message>
+    <message>
+        <source>Texture %1</source>
+        <translation>Textur %1</translation>
+    </message>
+    <message>
+        <source>Texture %1, automatic UVs</source>
+        <translation>Textur %1, automatische UVs</translation>
+    </message>
+    <message>
+        <source>A new texture of %1 × %1 texels over an automatic UV layout: places that share UVs are painted apart.</source>
+        <translation>Eine neue Textur mit %1 × %1 Texeln über einem automatischen UV-Layout: Stellen, die sich UVs teilen, werden getrennt bemalt.</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 (its base colour texture)</source>
+        <translation>%1: %2 (seine Grundfarbtextur)</translation>
+    </message>
+    <message>
+        <source>%1: %2 (a new texture)</source>
+        <translation>%1: %2 (eine neue Textur)</translation>
+    </message>
+    <message>
+        <source>Painted into:</source>
+        <translation>Bemalt wird:</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more material(s)</source>
+        <translation>
+            <numerusform>… und %n weiteres Material</numerusform>
+            <numerusform>… und %n weitere Materialien</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1424,6 +1463,50 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Symmetry: %1</source>
         <translation>Symmetrie: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Raise Texture Size…</source>
+        <translation>Texturgröße &amp;erhöhen…</translation>
+    </message>
+    <message>
+        <source>A texture&apos;s size can be raised while painting into a texture (Paint into, on the brush bar)</source>
+        <translation>Die Größe einer Textur lässt sich erhöhen, während in eine Textur gemalt wird („Malen in“ in der Pinselleiste)</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>Material %1</translation>
+    </message>
+    <message>
+        <source>%1. %2 (%3 × %4)</source>
+        <translation>%1. %2 (%3 × %4)</translation>
+    </message>
+    <message>
+        <source>Raise Texture Size</source>
+        <translation>Texturgröße erhöhen</translation>
+    </message>
+    <message>
+        <source>The material whose texture gets larger:</source>
+        <translation>Das Material, dessen Textur größer wird:</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>That texture is as large as a texture can be (8192 texels on a side)</source>
+        <translation>Diese Textur ist schon so groß, wie eine Textur sein kann (8192 Texel je Seite)</translation>
+    </message>
+    <message>
+        <source>New size (now %1 × %2; what is painted is resampled):</source>
+        <translation>Neue Größe (jetzt %1 × %2; Bemaltes wird neu abgetastet):</translation>
+    </message>
+    <message>
+        <source>Cannot raise the texture size: %1</source>
+        <translation>Die Texturgröße lässt sich nicht erhöhen: %1</translation>
+    </message>
+    <message>
+        <source>The texture is %1 now (Undo brings the previous size back)</source>
+        <translation>Die Textur ist jetzt %1 (Rückgängig stellt die vorige Größe wieder her)</translation>
     </message>
 </context>
 <context>

@@ -477,10 +477,6 @@
         <translation>颜料绘制的位置：纹理（带 UV 的网格）或顶点颜色。更改后将重新开始绘画。</translation>
     </message>
     <message>
-        <source>Texture %1 × %1</source>
-        <translation>纹理 %1 × %1</translation>
-    </message>
-    <message>
         <source>Vertex colours</source>
         <translation>顶点颜色</translation>
     </message>
@@ -507,6 +503,48 @@
     <message>
         <source>Texture %1 × %1, automatic UVs</source>
         <translation>纹理 %1 × %1，自动 UV</translation>
+    </message>
+    <message>
+        <source>Texture %1</source>
+        <translation>纹理 %1</translation>
+    </message>
+    <message>
+        <source>Texture %1, automatic UVs</source>
+        <translation>纹理 %1，自动 UV</translation>
+    </message>
+    <message>
+        <source>A new texture of %1 × %1 texels over an automatic UV layout: places that share UVs are painted apart.</source>
+        <translation>一张 %1 × %1 纹素的新纹理，使用自动 UV 布局：共用 UV 的位置会被分开绘制。</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>材质 %1</translation>
+    </message>
+    <message>
+        <source>%1: %2 (its base colour texture)</source>
+        <translation>%1：%2（其基础颜色纹理）</translation>
+    </message>
+    <message>
+        <source>%1: %2 (a new texture)</source>
+        <translation>%1：%2（新纹理）</translation>
+    </message>
+    <message>
+        <source>Painted into:</source>
+        <translation>绘制到：</translation>
+    </message>
+    <message numerus="yes">
+        <source>… and %n more material(s)</source>
+        <translation>
+            <numerusform>……以及另外 %n 个材质</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1423,6 +1461,50 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Symmetry: %1</source>
         <translation>对称：%1</translation>
+    </message>
+    <message>
+        <source>&amp;Raise Texture Size…</source>
+        <translation>增大纹理尺寸(&amp;R)…</translation>
+    </message>
+    <message>
+        <source>A texture&apos;s size can be raised while painting into a texture (Paint into, on the brush bar)</source>
+        <translation>绘制到纹理时才能增大纹理尺寸（画笔栏上的“绘制到”）</translation>
+    </message>
+    <message>
+        <source>material %1</source>
+        <translation>材质 %1</translation>
+    </message>
+    <message>
+        <source>%1. %2 (%3 × %4)</source>
+        <translation>%1. %2（%3 × %4）</translation>
+    </message>
+    <message>
+        <source>Raise Texture Size</source>
+        <translation>增大纹理尺寸</translation>
+    </message>
+    <message>
+        <source>The material whose texture gets larger:</source>
+        <translation>要增大其纹理的材质：</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>That texture is as large as a texture can be (8192 texels on a side)</source>
+        <translation>该纹理已是最大尺寸（每边 8192 纹素）</translation>
+    </message>
+    <message>
+        <source>New size (now %1 × %2; what is painted is resampled):</source>
+        <translation>新尺寸（当前 %1 × %2；已绘制的内容会被重新采样）：</translation>
+    </message>
+    <message>
+        <source>Cannot raise the texture size: %1</source>
+        <translation>无法增大纹理尺寸：%1</translation>
+    </message>
+    <message>
+        <source>The texture is %1 now (Undo brings the previous size back)</source>
+        <translation>纹理现在为 %1（撤销可恢复之前的尺寸）</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,7 @@
 #include "ui/panels/brush_toolbar.h"
 
 #include "core/base/color.h"
+#include "core/paint/targets/layout_target.h"
 #include "ui/panels/value_spin_box.h"
 
 #include <QColorDialog>
@@ -11,16 +12,42 @@
 #include <QPixmap>
 #include <QScopedValueRollback>
 #include <QSpinBox>
+#include <QStringList>
 #include <QToolButton>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace ui {
 
 namespace {
 constexpr int kResolutions[] = {512, 1024, 2048, 4096, 8192};
-constexpr int kVertexColorsItem = -1; // the combo's data for vertex colours
+constexpr int kVertexColorsItem = -1;            // the combo's data for vertex colours
+constexpr int kAutomaticRole = Qt::UserRole + 1; // true: a texture over an automatic layout
+constexpr int kMaxTipMaterials = 12;
+
+/** sizes with the materials no triangle uses left out (their size 0 × 0). */
+std::vector<core::PageSize> usedOnly(std::vector<core::PageSize> sizes, const core::Mesh& mesh) {
+    std::vector<char> used(sizes.size(), 0);
+    for (std::uint32_t m : mesh.triangleMaterial)
+        if (m < used.size())
+            used[m] = 1;
+    for (std::size_t m = 0; m < sizes.size(); ++m)
+        if (!used[m])
+            sizes[m] = core::PageSize{};
+    return sizes;
+}
+
 } // namespace
+
+/** One texture entry of the target box. */
+struct BrushToolBar::TargetItem {
+    QString text;
+    QString tip;
+    int resolution = 0;
+    bool automatic = false;
+};
 
 BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
     // Named apart from the Brush panel (View ▸ Panels lists both).
@@ -71,9 +98,6 @@ BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
     m_targetTip = tr("Where paint goes: a texture (meshes with UVs) or vertex colours. "
                      "Changing it starts the painting afresh.");
     m_target->setToolTip(m_targetTip);
-    for (int resolution : kResolutions)
-        m_target->addItem(tr("Texture %1 × %1").arg(resolution), resolution);
-    m_target->addItem(tr("Vertex colours"), kVertexColorsItem);
     targetLabel->setBuddy(m_target);
     addWidget(m_target);
     connect(m_target, &QComboBox::activated, this, [this](int index) {
@@ -86,11 +110,13 @@ BrushToolBar::BrushToolBar(QWidget* parent) : QToolBar(parent) {
         } else {
             options.kind = core::PaintTargetKind::Texture;
             options.resolution = choice;
+            options.automaticUvs = m_target->itemData(index, kAutomaticRole).toBool();
         }
         emit targetRequested(options);
     });
 
     setBrush(m_brush);
+    setTarget(core::PaintTargetOptions{}, nullptr);
 }
 
 void BrushToolBar::setBrush(const core::Brush& brush) {
@@ -102,23 +128,127 @@ void BrushToolBar::setBrush(const core::Brush& brush) {
     updateColorIcon();
 }
 
-void BrushToolBar::setTarget(const core::PaintTargetOptions& options, bool meshHasUvs) {
+void BrushToolBar::setTarget(const core::PaintTargetOptions& options, const core::Mesh* mesh,
+                             const std::vector<core::PageSize>& current) {
     const QScopedValueRollback guard(m_updating, true);
-    // Without UVs a texture is painted over an automatic UV layout, made when it is chosen.
-    const bool texture =
-        options.kind ? *options.kind == core::PaintTargetKind::Texture : meshHasUvs;
+    const bool hasUvs = mesh == nullptr || mesh->hasUvs();
+    const bool texture = options.kind ? *options.kind == core::PaintTargetKind::Texture : hasUvs;
+    const bool automatic = !hasUvs || options.automaticUvs;
+    std::vector<TargetItem> items = targetItems(options, mesh);
+    if (texture && mesh != nullptr && current.size() == mesh->materials.size())
+        showCurrentSizes(items, options, *mesh, usedOnly(current, *mesh));
+    m_target->clear();
+    int shown = -1;
+    for (const TargetItem& item : items) {
+        m_target->addItem(item.text, item.resolution);
+        const int i = m_target->count() - 1;
+        m_target->setItemData(i, item.automatic, kAutomaticRole);
+        m_target->setItemData(i, item.tip, Qt::ToolTipRole);
+        if (texture && item.automatic == automatic &&
+            (shown < 0 || item.resolution == options.resolution))
+            shown = i;
+    }
+    m_target->addItem(tr("Vertex colours"), kVertexColorsItem);
+    m_target->setCurrentIndex(shown < 0 ? m_target->count() - 1 : shown);
+
     const QString why = tr("This model has no texture coordinates (UVs): a texture gets an "
                            "automatic UV layout; vertex colours follow its vertices.");
-    m_target->setToolTip(meshHasUvs ? m_targetTip : m_targetTip + QStringLiteral("\n\n") + why);
-    int current = m_target->count() - 1;
-    for (int i = 0; i + 1 < m_target->count(); ++i) {
-        const int resolution = m_target->itemData(i).toInt();
-        m_target->setItemText(i, meshHasUvs ? tr("Texture %1 × %1").arg(resolution)
-                                            : tr("Texture %1 × %1, automatic UVs").arg(resolution));
-        if (texture && resolution == options.resolution)
-            current = i;
+    QString tip = hasUvs ? m_targetTip : m_targetTip + QStringLiteral("\n\n") + why;
+    if (shown >= 0 && !items[std::size_t(shown)].tip.isEmpty())
+        tip += QStringLiteral("\n\n") + items[std::size_t(shown)].tip;
+    m_target->setToolTip(tip);
+}
+
+void BrushToolBar::showCurrentSizes(std::vector<TargetItem>& items,
+                                    const core::PaintTargetOptions& options, const core::Mesh& mesh,
+                                    const std::vector<core::PageSize>& current) const {
+    // The entry of the target in use names its sizes as they are now (a raised texture).
+    const bool automatic = !mesh.hasUvs() || options.automaticUvs;
+    for (TargetItem& item : items)
+        if (item.automatic == automatic && item.resolution == options.resolution) {
+            item.text = automatic ? tr("Texture %1, automatic UVs").arg(sizesText(current))
+                                  : tr("Texture %1").arg(sizesText(current));
+            if (!automatic)
+                item.tip = sizesTip(current, mesh, false);
+            return;
+        }
+}
+
+std::vector<BrushToolBar::TargetItem>
+BrushToolBar::targetItems(const core::PaintTargetOptions& options, const core::Mesh* mesh) const {
+    const bool hasUvs = mesh == nullptr || mesh->hasUvs();
+    std::vector<TargetItem> items;
+    // The mesh's own UVs: one entry per distinct set of sizes (the resolution only sizes the
+    // materials without a base colour texture; with none such, one entry says it all).
+    for (int resolution : kResolutions) {
+        if (!hasUvs)
+            break;
+        core::PaintTargetOptions texture = options;
+        texture.resolution = resolution;
+        texture.automaticUvs = false;
+        const std::vector<core::PageSize> sizes =
+            mesh ? usedOnly(core::texturePageSizes(*mesh, texture), *mesh)
+                 : std::vector<core::PageSize>{{resolution, resolution}};
+        TargetItem item{tr("Texture %1").arg(sizesText(sizes)),
+                        mesh ? sizesTip(sizes, *mesh, false) : QString(), resolution, false};
+        if (!items.empty() && items.back().text == item.text) {
+            if (resolution == options.resolution)
+                items.back().resolution = resolution;
+            continue;
+        }
+        items.push_back(std::move(item));
     }
-    m_target->setCurrentIndex(current);
+    // An automatic layout: one new page for all materials, offered for any mesh.
+    for (int resolution : kResolutions)
+        items.push_back({tr("Texture %1 × %1, automatic UVs").arg(resolution),
+                         tr("A new texture of %1 × %1 texels over an automatic UV layout: "
+                            "places that share UVs are painted apart.")
+                             .arg(resolution),
+                         resolution, true});
+    return items;
+}
+
+QString BrushToolBar::sizesText(const std::vector<core::PageSize>& all) const {
+    std::vector<core::PageSize> sizes;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(sizes),
+                 [](const core::PageSize& s) { return s.width > 0; });
+    if (sizes.empty())
+        return QString();
+    const auto area = [](const core::PageSize& s) { return qint64(s.width) * s.height; };
+    const auto [smallest, largest] =
+        std::minmax_element(sizes.begin(), sizes.end(), [&area](const auto& a, const auto& b) {
+            return area(a) < area(b) || (area(a) == area(b) && a.width < b.width);
+        });
+    const QString low = tr("%1 × %2").arg(smallest->width).arg(smallest->height);
+    if (*smallest == *largest)
+        return low;
+    return tr("%1 – %2").arg(low, tr("%1 × %2").arg(largest->width).arg(largest->height));
+}
+
+QString BrushToolBar::sizesTip(const std::vector<core::PageSize>& sizes, const core::Mesh& mesh,
+                               bool automatic) const {
+    QStringList lines;
+    const auto used = std::count_if(sizes.begin(), sizes.end(),
+                                    [](const core::PageSize& s) { return s.width > 0; });
+    for (std::size_t m = 0; m < sizes.size() && m < mesh.materials.size(); ++m) {
+        if (sizes[m].width <= 0)
+            continue;
+        if (lines.size() == kMaxTipMaterials) {
+            lines.append(tr("… and %n more material(s)", nullptr, int(used) - kMaxTipMaterials));
+            break;
+        }
+        const core::Material& material = mesh.materials[m];
+        const QString name = material.name.empty() ? tr("material %1").arg(m + 1)
+                                                   : QString::fromStdString(material.name);
+        const QString size = tr("%1 × %2").arg(sizes[m].width).arg(sizes[m].height);
+        const bool own = !automatic && material.baseColorTexture >= 0 &&
+                         std::size_t(material.baseColorTexture) < mesh.textures.size();
+        lines.append(own ? tr("%1: %2 (its base colour texture)").arg(name, size)
+                         : tr("%1: %2 (a new texture)").arg(name, size));
+    }
+    return lines.isEmpty()
+               ? QString()
+               : tr("Painted into:") + QLatin1Char('\n') + lines.join(QLatin1Char('\n'));
 }
 
 QColor BrushToolBar::toQColor(const glm::vec4& linear) {

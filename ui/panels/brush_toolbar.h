@@ -3,6 +3,8 @@
 
 #include <QToolBar>
 
+#include <vector>
+
 #include "core/paint/brush/dab.h"
 #include "core/paint/targets/paint_target.h"
 
@@ -14,8 +16,9 @@ namespace ui {
 
 /**
  * A minimal brush bar: colour (a QColorDialog), radius, hardness and opacity, and the paint
- * target (a texture of 512–8192 texels for meshes with UVs, or vertex colours). Every change
- * emits at once; setBrush() and setTarget() show values without emitting.
+ * target: a texture (named by the sizes its materials paint at: a base colour texture's own, or
+ * 512–8192 texels for the others), a texture over an automatic UV layout, or vertex colours.
+ * Every change emits at once; setBrush() and setTarget() show values without emitting.
  */
 class BrushToolBar : public QToolBar {
     Q_OBJECT
@@ -26,10 +29,13 @@ public:
     void setBrush(const core::Brush& brush);
     const core::Brush& brush() const { return m_brush; }
     /**
-     * Shows the target options; texture entries are offered only when the mesh has UVs (the
-     * tooltips say why they are not).
+     * Shows the target options for mesh (nullptr: no model yet): its textures with their real
+     * sizes, per material in the tooltips; textures over an automatic UV layout (the only ones
+     * for a mesh without UVs, which the tooltip says); vertex colours. current: per material,
+     * the size of the texture target in use (raised since it was made), or empty.
      */
-    void setTarget(const core::PaintTargetOptions& options, bool meshHasUvs);
+    void setTarget(const core::PaintTargetOptions& options, const core::Mesh* mesh,
+                   const std::vector<core::PageSize>& current = {});
 
     /** sRGB QColor ↔ the brush's linear colour. */
     static QColor toQColor(const glm::vec4& linear);
@@ -41,6 +47,17 @@ signals:
     void targetRequested(const core::PaintTargetOptions& options);
 
 private:
+    struct TargetItem;
+    std::vector<TargetItem> targetItems(const core::PaintTargetOptions& options,
+                                        const core::Mesh* mesh) const;
+    /** The entry of the texture in use named with current, the sizes it has now. */
+    void showCurrentSizes(std::vector<TargetItem>& items, const core::PaintTargetOptions& options,
+                          const core::Mesh& mesh, const std::vector<core::PageSize>& current) const;
+    /** "256 × 256", or the smallest and the largest: "256 × 256 – 2048 × 2048". */
+    QString sizesText(const std::vector<core::PageSize>& sizes) const;
+    /** Per material: its name and the size it paints at (its own texture or a new one). */
+    QString sizesTip(const std::vector<core::PageSize>& sizes, const core::Mesh& mesh,
+                     bool automatic) const;
     void chooseColor();
     void updateColorIcon();
 

@@ -290,6 +290,11 @@ private:
     /** Undo/redo changed the document: show its paint, target and order. */
     void onHistoryApplied(const core::PaintChanges& changes);
     void setPaintTarget(const core::PaintTargetOptions& options);
+    /**
+     * Paint ▸ Raise Texture Size…: asks for a material and a larger size, then raises the size
+     * of the texture it is painted into (Document::raiseTextureSize(), one undoable step).
+     */
+    void raiseTextureSize();
     /** The target made off the GUI thread (an automatic UV layout) is ready, or failed. */
     void paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>& outcome);
     /**

@@ -456,6 +456,10 @@ void MainWindow::createPaintMenu() {
     paintMenu->addAction(m_swapColorsAction);
     paintMenu->addAction(createStabilizerAction());
     paintMenu->addMenu(createSymmetryMenu());
+    paintMenu->addSeparator();
+    QAction* raise =
+        paintMenu->addAction(tr("&Raise Texture Size…"), this, &MainWindow::raiseTextureSize);
+    raise->setObjectName(QStringLiteral("raiseTextureSizeAction"));
 }
 
 void MainWindow::createPaintLayersMenu() {

@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QInputDialog>
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
@@ -19,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "ui/commands/history_bridge.h"
 #include "ui/panels/brush_panel.h"
@@ -436,6 +438,98 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
     updateBrushBar();
 }
 
+namespace {
+
+/** Per material, the size of the page it is painted into now (empty for vertex colours). */
+std::vector<core::PageSize> currentPageSizes(const core::Document& document) {
+    std::vector<core::PageSize> sizes;
+    const auto* target = dynamic_cast<const core::TextureTarget*>(document.currentPaintTarget());
+    if (target == nullptr)
+        return sizes;
+    for (std::size_t m = 0; m < target->mesh().materials.size(); ++m) {
+        const core::Image& page = target->page(target->materialPage(m));
+        sizes.push_back({page.width, page.height});
+    }
+    return sizes;
+}
+
+} // namespace
+
+void MainWindow::raiseTextureSize() {
+    finishStroke();
+    const bool texture = m_document->meshSerial() != 0 &&
+                         m_document->paintTargetKind() == core::PaintTargetKind::Texture;
+    const auto* target =
+        texture ? dynamic_cast<const core::TextureTarget*>(m_document->paintTarget()) : nullptr;
+    if (target == nullptr) {
+        statusBar()->showMessage(tr("A texture's size can be raised while painting into a "
+                                    "texture (Paint into, on the brush bar)"),
+                                 kStatusMessageMs);
+        return;
+    }
+    // The materials the triangles use (a loader may add one no triangle uses).
+    const std::vector<core::PageSize> sizes = currentPageSizes(*m_document);
+    const core::Mesh& mesh = target->mesh();
+    std::vector<std::uint32_t> used;
+    for (std::uint32_t m : mesh.triangleMaterial)
+        if (m < sizes.size() && std::find(used.begin(), used.end(), m) == used.end())
+            used.push_back(m);
+    std::sort(used.begin(), used.end());
+    QStringList materials;
+    for (std::uint32_t m : used) {
+        const QString name = mesh.materials[m].name.empty()
+                                 ? tr("material %1").arg(m + 1)
+                                 : QString::fromStdString(mesh.materials[m].name);
+        materials.append(
+            tr("%1. %2 (%3 × %4)").arg(m + 1).arg(name).arg(sizes[m].width).arg(sizes[m].height));
+    }
+    bool ok = !used.empty();
+    qsizetype chosen = 0;
+    if (materials.size() > 1)
+        chosen = materials.indexOf(QInputDialog::getItem(
+            this, tr("Raise Texture Size"), tr("The material whose texture gets larger:"),
+            materials, 0, false, &ok));
+    if (!ok || chosen < 0)
+        return;
+    const std::uint32_t material = used[std::size_t(chosen)];
+    const core::PageSize now = sizes[material];
+    QStringList choices;
+    std::vector<int> widths;
+    for (int width = now.width * 2; width <= 8192; width *= 2) {
+        const qint64 height = (qint64(now.height) * width + now.width / 2) / now.width;
+        if (height > 8192)
+            break;
+        choices.append(tr("%1 × %2").arg(width).arg(height));
+        widths.push_back(width);
+    }
+    if (choices.isEmpty()) {
+        statusBar()->showMessage(tr("That texture is as large as a texture can be (8192 texels "
+                                    "on a side)"),
+                                 kStatusMessageMs);
+        return;
+    }
+    const QString size = QInputDialog::getItem(
+        this, tr("Raise Texture Size"),
+        tr("New size (now %1 × %2; what is painted is resampled):").arg(now.width).arg(now.height),
+        choices, 0, false, &ok);
+    if (!ok || !choices.contains(size))
+        return;
+    const core::Status status =
+        m_document->raiseTextureSize(material, widths[std::size_t(choices.indexOf(size))]);
+    if (!status) {
+        statusBar()->showMessage(
+            tr("Cannot raise the texture size: %1").arg(QString::fromStdString(status.error())),
+            kStatusMessageMs);
+    } else {
+        m_targetSerial = m_document->paintTargetSerial();
+        m_viewport->paintTargetChanged();
+        statusBar()->showMessage(
+            tr("The texture is %1 now (Undo brings the previous size back)").arg(size),
+            kStatusMessageMs);
+    }
+    updateBrushBar();
+}
+
 void MainWindow::paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>& outcome) {
     if (outcome->cancelled) {
         statusBar()->showMessage(tr("The automatic UV layout was cancelled; the paint target "
@@ -483,8 +577,9 @@ void MainWindow::offerUvLayout() {
 }
 
 void MainWindow::updateBrushBar() {
-    const bool hasUvs = m_document->meshSerial() == 0 || m_document->mesh().hasUvs();
-    m_brushBar->setTarget(m_paintOptions, hasUvs);
+    m_brushBar->setTarget(m_paintOptions,
+                          m_document->meshSerial() == 0 ? nullptr : &m_document->mesh(),
+                          currentPageSizes(*m_document));
     const bool texture = m_document->meshSerial() == 0 ||
                          m_document->paintTargetKind() == core::PaintTargetKind::Texture;
     m_brushPanel->setMaterialChannels(
