@@ -13,9 +13,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <future>
+#include <iterator>
 #include <mutex>
 #include <new>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -52,6 +55,31 @@ constexpr const char* kImporterVariable = "LAYERPAINT_IMPORTER";
 constexpr const char* kImporterStderrVariable = "LAYERPAINT_IMPORTER_STDERR";
 /** How often cancel and the deadline are checked while waiting for the importer. */
 constexpr auto kCheckInterval = std::chrono::milliseconds(100);
+/**
+ * Past the deadline, how long an importer is watched for processor time used: one still at work
+ * is left to its processor-time limit (a busy machine slows it, not its parse), up to
+ * kMaxDeadlines deadlines in all.
+ */
+constexpr auto kWorkWindow = std::chrono::seconds(1);
+constexpr int kMaxDeadlines = 10;
+
+/** The processor time process pid has used (user and system), in clock ticks; -1 if unknown. */
+long long processorTicks(pid_t pid) {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+    const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // The name (field 2) is in parentheses and may hold anything; utime and stime are fields
+    // 14 and 15, the 12th and 13th after the name.
+    const std::size_t name = stat.rfind(')');
+    if (name == std::string::npos)
+        return -1;
+    std::istringstream fields(stat.substr(name + 1));
+    std::string field;
+    for (int i = 0; i < 11 && fields >> field; ++i) {
+    }
+    long long user = -1, system = -1;
+    fields >> user >> system;
+    return fields && user >= 0 && system >= 0 ? user + system : -1;
+}
 
 /** The importer program, or the problem (where it was looked for). */
 Result<std::string> findImporter() {
@@ -257,8 +285,10 @@ public:
             m_process = std::move(*started);
         }
         const Clock::time_point now = Clock::now();
-        m_deadline = now + std::chrono::duration_cast<Clock::duration>(
-                               std::chrono::duration<double>(m_maxSeconds));
+        const auto limit = std::chrono::duration_cast<Clock::duration>(
+            std::chrono::duration<double>(m_maxSeconds));
+        m_deadline = now + limit;
+        m_lastDeadline = now + limit * kMaxDeadlines;
         m_nextCheck = now + kCheckInterval;
         // The arguments, each ended by a NUL, then an empty one. An importer that has ended
         // already cannot take them; its exit status says why once its output is read.
@@ -367,15 +397,34 @@ private:
             return true;
         m_nextCheck = now + kCheckInterval;
         if (now >= m_deadline) {
+            if (stillAtWork(now))
+                return report(m_fraction);
             m_stop = Stop::TimedOut;
             return false;
         }
         return report(m_fraction);
     }
 
+    /**
+     * At the deadline: whether the importer has used processor time in the last kWorkWindow
+     * (then the deadline moves a window on, up to m_lastDeadline).
+     */
+    bool stillAtWork(Clock::time_point now) {
+        const long long ticks = processorTicks(m_process.pid);
+        const bool working = ticks >= 0 && m_ticks >= 0 && ticks > m_ticks;
+        const bool first = m_ticks < 0;
+        m_ticks = ticks;
+        if ((!first && !working) || ticks < 0 || now >= m_lastDeadline)
+            return false;
+        m_deadline = now + kWorkWindow;
+        return true;
+    }
+
     const ProgressFn& m_progress;
     double m_maxSeconds;
     Clock::time_point m_deadline;
+    Clock::time_point m_lastDeadline;
+    long long m_ticks = -1; // the importer's processor time at the last look past the deadline
     Clock::time_point m_nextCheck;
     double m_fraction = 0.0;
     Process m_process;
