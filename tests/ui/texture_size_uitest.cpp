@@ -122,6 +122,10 @@ TEST_F(TextureSizeUiTest, OverlappingUvsAreNamedAndCanBePaintedApart) {
         kLoadTimeoutMs));
     EXPECT_EQ(document().paintTarget()->page(0).width, 1024);
     EXPECT_EQ(box->currentText(), QStringLiteral("Texture 1024 × 1024, automatic UVs"));
+    // The next model paints its own UVs again.
+    ASSERT_TRUE(open(QStringLiteral("quad.obj")));
+    EXPECT_FALSE(document().paintTargetOptions().automaticUvs);
+    EXPECT_EQ(box->currentText(), QStringLiteral("Texture 256 × 128"));
 }
 
 } // namespace texture_size_uitest

@@ -56,8 +56,9 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     }
     updateModelInfo(*mesh, recoveredNote, !state);
     finishStroke();
-    // A new model starts with the preferred size for a new texture.
+    // A new model starts with the preferred size for a new texture, on its own UVs.
     m_paintOptions.resolution = m_preferences.textureSize;
+    m_paintOptions.automaticUvs = false;
     m_document->setPaintOptions(m_paintOptions);
     m_targetJob->cancel(); // a layout for the previous model
     // This window is the loader's only listener: the mesh moves into the document.
