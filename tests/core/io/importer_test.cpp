@@ -463,6 +463,24 @@ TEST(Importer, FilesLoadAsInProcess) {
     }
 }
 
+TEST(Importer, TheWholeMaterialCrossesThePipe) {
+    // Every factor, map, placement and kept file (tests/data/material, made by
+    // scripts/make-material-test-data.py), and a real file with a JPEG normal map.
+    for (const std::string& path :
+         {std::string(LAYERPAINT_TEST_DATA) + "/material/materials.glb",
+          (kModels / "glTF2/ClearCoat-glTF/ClearCoatTest.gltf").string()}) {
+        if (!fs::exists(path))
+            continue;
+        SCOPED_TRACE(path);
+        const core::Result<core::Mesh> outside = core::loadMesh(path);
+        const core::Result<core::Mesh> inside = core::loadMeshInProcess(path);
+        ASSERT_TRUE(outside.ok()) << outside.error();
+        ASSERT_TRUE(inside.ok()) << inside.error();
+        EXPECT_FALSE(outside->textureSources.empty());
+        expectSameMesh(*outside, *inside);
+    }
+}
+
 TEST(Importer, ErrorsAreTheSameAsInProcess) {
     TempDir dir;
     const std::string broken = dir.file("broken.off");
