@@ -412,14 +412,21 @@ void writeSurface(GlbDraft& d, const Material& m, Json& material) {
     }
     if (Json info = textureInfo(d, m.emissive); !info.is_null())
         material["emissiveTexture"] = std::move(info);
-    if (m.emissiveFactor != glm::vec3(0.0f))
-        material["emissiveFactor"] =
-            Json::array({std::clamp(factor(m.emissiveFactor.r), 0.0, 1.0),
-                         std::clamp(factor(m.emissiveFactor.g), 0.0, 1.0),
-                         std::clamp(factor(m.emissiveFactor.b), 0.0, 1.0)});
-    if (m.emissiveStrength != 1.0f && std::isfinite(m.emissiveStrength)) {
+    // glTF's emissive factor stops at 1: beyond, the strength carries the rest.
+    glm::dvec3 emissive(std::max(0.0, factor(m.emissiveFactor.r)),
+                        std::max(0.0, factor(m.emissiveFactor.g)),
+                        std::max(0.0, factor(m.emissiveFactor.b)));
+    double strength =
+        std::isfinite(m.emissiveStrength) ? std::max(0.0, double(m.emissiveStrength)) : 1.0;
+    if (const double top = std::max({emissive.r, emissive.g, emissive.b}); top > 1.0) {
+        emissive /= top;
+        strength *= top;
+    }
+    if (emissive != glm::dvec3(0.0))
+        material["emissiveFactor"] = Json::array({emissive.r, emissive.g, emissive.b});
+    if (strength != 1.0) {
         material["extensions"]["KHR_materials_emissive_strength"] = {
-            {"emissiveStrength", std::max(0.0, double(m.emissiveStrength))}};
+            {"emissiveStrength", strength}};
         d.extensionsUsed.insert("KHR_materials_emissive_strength");
     }
     if (m.alphaMode != AlphaMode::Opaque)

@@ -394,6 +394,23 @@ TEST(Material, ObjExportKeepsTheMapsAssimpReadsBack) {
     }
 }
 
+TEST(Material, EmissionBeyondGltfsFactorGoesIntoTheStrength) {
+    // OBJ's Ke and Assimp's emissive colour know no limit of 1; glTF's factor does.
+    core::Result<core::Mesh> loaded = core::loadMesh(kMaterials);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    core::Mesh mesh = std::move(loaded).value();
+    mesh.materials[1].emissiveFactor = glm::vec3(2.0f, 1.0f, 0.0f);
+    TempDir dir;
+    const std::string path = dir.file("bright.glb");
+    ASSERT_TRUE(core::exportMesh(path, core::ExportFormat::Glb, mesh).ok());
+    core::Result<core::Mesh> back = core::loadMesh(path);
+    ASSERT_TRUE(back.ok()) << back.error();
+    const core::Material& m = back->materials[1];
+    EXPECT_EQ(m.emissiveFactor, glm::vec3(1.0f, 0.5f, 0.0f));
+    EXPECT_FLOAT_EQ(m.emissiveStrength, 2.0f);
+    expectValidGltf(path);
+}
+
 TEST(Material, RealFileKeepsItsNormalAndEmissiveMaps) {
     if (!std::filesystem::exists(kClearCoat))
         GTEST_SKIP() << kClearCoat << " is missing (apt-get install assimp-testmodels)";
