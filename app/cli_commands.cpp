@@ -195,6 +195,62 @@ json regionsJson(const core::RegionGraph& graph) {
     }
     return regions;
 }
+
+json textureJson(const core::Mesh& mesh, int texture) {
+    if (texture < 0)
+        return nullptr;
+    const core::Image& image = mesh.textures[std::size_t(texture)];
+    return {{"width", image.width}, {"height", image.height}};
+}
+
+json mapJson(const core::Mesh& mesh, const core::MaterialMap& map) {
+    if (map.texture < 0)
+        return nullptr;
+    json out = textureJson(mesh, map.texture);
+    if (map.uvTransform != glm::mat3(1.0f)) {
+        json columns = json::array();
+        for (int c = 0; c < 3; ++c)
+            columns.push_back(
+                {map.uvTransform[c][0], map.uvTransform[c][1], map.uvTransform[c][2]});
+        out["uv_transform"] = std::move(columns);
+    }
+    return out;
+}
+
+const char* alphaModeName(core::AlphaMode mode) {
+    switch (mode) {
+    case core::AlphaMode::Mask:
+        return "mask";
+    case core::AlphaMode::Blend:
+        return "blend";
+    case core::AlphaMode::Opaque:
+        break;
+    }
+    return "opaque";
+}
+
+json materialJson(const core::Mesh& mesh, const core::Material& m) {
+    json entry = {
+        {"name", m.name},
+        {"base_color",
+         {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.baseColorFactor.a}},
+        {"base_color_texture", textureJson(mesh, m.baseColorTexture)},
+        {"metallic", m.metallicFactor},
+        {"roughness", m.roughnessFactor},
+        {"metallic_roughness_texture", mapJson(mesh, m.metallicRoughness)},
+        {"normal_scale", m.normalScale},
+        {"normal_texture", mapJson(mesh, m.normal)},
+        {"occlusion_strength", m.occlusionStrength},
+        {"occlusion_texture", mapJson(mesh, m.occlusion)},
+        {"emissive", vec(m.emissiveFactor)},
+        {"emissive_strength", m.emissiveStrength},
+        {"emissive_texture", mapJson(mesh, m.emissive)},
+        {"alpha_mode", alphaModeName(m.alphaMode)},
+        {"double_sided", m.doubleSided}};
+    if (m.alphaMode == core::AlphaMode::Mask)
+        entry["alpha_cutoff"] = m.alphaCutoff;
+    return entry;
+}
 } // namespace
 
 int runInfo(const std::string& model) {
@@ -207,16 +263,7 @@ int runInfo(const std::string& model) {
     const std::vector<core::PageSize> pageSizes = core::texturePageSizes(*mesh, {});
     json materials = json::array();
     for (std::size_t i = 0; i < mesh->materials.size(); ++i) {
-        const core::Material& m = mesh->materials[i];
-        json entry = {
-            {"name", m.name},
-            {"base_color",
-             {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.baseColorFactor.a}},
-            {"base_color_texture", nullptr}};
-        if (m.baseColorTexture >= 0) {
-            const core::Image& image = mesh->textures[std::size_t(m.baseColorTexture)];
-            entry["base_color_texture"] = {{"width", image.width}, {"height", image.height}};
-        }
+        json entry = materialJson(*mesh, mesh->materials[i]);
         entry["paint_texture"] = {{"width", pageSizes[i].width}, {"height", pageSizes[i].height}};
         materials.push_back(std::move(entry));
     }

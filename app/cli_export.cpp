@@ -81,12 +81,8 @@ int runExport(const ExportArgs& args) {
         }
         files = core::exportChannelTextures(args.out, *format, pages, metallicRoughness);
     } else {
-        // The painted mesh's texture i is page i: its roughness and metallic go beside it.
-        core::MaterialChannels channels;
-        if (const core::PaintTarget* painted = doc.paintTarget())
-            for (std::size_t i = 0; i < painted->pageCount(); ++i)
-                channels.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
-        files = core::exportMaterial(args.out, *format, doc.paintedMesh(), channels);
+        // The painted mesh carries its materials' maps, painted roughness and metallic included.
+        files = core::exportMesh(args.out, *format, doc.paintedMesh());
     }
     if (!files)
         return fail(files.error());

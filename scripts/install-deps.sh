@@ -20,7 +20,18 @@ if [[ "${1:-}" == "--test" ]]; then
         qt6-base-private-dev clang libclang-rt-14-dev)
     # dpkg-dev (dpkg-shlibdeps) and lintian for the Debian package test (tests/app/deb_test.cmake).
     packages+=(dpkg-dev lintian)
+    # npm for the Khronos glTF validator the material tests run on written files.
+    packages+=(npm)
 fi
+
+# The glTF validator (tests/tools/validate-gltf.cjs), from the npm registry, with --test.
+install_validator() {
+    [[ "${1:-}" == "--test" ]] || return 0
+    if ! NODE_PATH="$(npm root -g)" node -e "require('gltf-validator')" 2>/dev/null; then
+        echo "Installing: gltf-validator (npm)"
+        npm install -g --no-fund --no-audit gltf-validator
+    fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -28,6 +39,7 @@ for p in "${packages[@]}"; do
     [[ "$status" == "installed" ]] || missing+=("$p")
 done
 if ((${#missing[@]} == 0)); then
+    install_validator "${1:-}"
     exit 0
 fi
 
@@ -44,3 +56,4 @@ trap '"${sudo[@]}" rm -rf "$archives"' EXIT
 mkdir -p "$archives/partial" && chmod 755 "$archives"
 DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends \
     -o Dir::Cache::Archives="$archives" "${missing[@]}"
+install_validator "${1:-}"

@@ -57,9 +57,12 @@ struct SavedPaintLayers {
      */
     std::vector<Image> base;
     /**
-     * Per page, the composite metallic-roughness image (empty without material channels); saved
-     * as the materials' metallicRoughnessTexture.
+     * Per page, the base's roughness and metallic (linear RGBA8, G roughness, B metallic) where
+     * they differ from the composite, else empty: a page's painted composite is saved as its
+     * materials' metallicRoughnessTexture, where the base would otherwise start again.
      */
+    std::vector<Image> baseMetallicRoughness;
+    /** Per page, the composite metallic-roughness image (empty without material channels). */
     std::vector<Image> metallicRoughness;
 };
 

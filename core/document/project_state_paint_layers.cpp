@@ -177,8 +177,14 @@ std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) 
         if (stack.baseColor(p) != composite.rgba)
             base = Image{composite.width, composite.height, stack.baseColor(p)};
         saved->base.push_back(std::move(base));
-        if (stack.hasMaterialChannels())
-            saved->metallicRoughness.push_back(stack.compositeMetallicRoughnessImage(p));
+        if (stack.hasMaterialChannels()) {
+            const Image& mr = stack.compositeMetallicRoughnessImage(p);
+            Image baseMr;
+            if (stack.baseMetallicRoughness(p) != mr.rgba)
+                baseMr = Image{mr.width, mr.height, stack.baseMetallicRoughness(p)};
+            saved->baseMetallicRoughness.push_back(std::move(baseMr));
+            saved->metallicRoughness.push_back(mr);
+        }
     }
     return saved;
 }
@@ -210,6 +216,14 @@ Status restorePaintLayers(Document& doc, const SavedPaintLayers& saved) {
         const Image& base = saved.base[p];
         if (!base.empty() && base.rgba.size() == stack.baseColor(std::uint32_t(p)).size())
             stack.baseColor(std::uint32_t(p)) = base.rgba;
+    }
+    for (std::size_t p = 0; stack.hasMaterialChannels() && p < saved.baseMetallicRoughness.size() &&
+                            p < stack.pages().size();
+         ++p) {
+        const Image& base = saved.baseMetallicRoughness[p];
+        if (!base.empty() &&
+            base.rgba.size() == stack.baseMetallicRoughness(std::uint32_t(p)).size())
+            stack.baseMetallicRoughness(std::uint32_t(p)) = base.rgba;
     }
     while (stack.size() > 0)
         stack.take(stack.size() - 1);

@@ -120,6 +120,10 @@ struct ObjMaterials {
     std::vector<int> materialImage; // per material: its image, or -1
     std::vector<Image> images;      // the PNGs to write
     std::vector<int> imageSource;   // the mesh texture of each image
+    /** The mesh textures of the other maps, written as they are: the texture and its file. */
+    std::map<int, std::string> mapFiles;
+    /** Metallic-roughness maps, written as a roughness and a metallic image: texture → stem. */
+    std::map<int, std::string> channelFiles;
 
     std::string imageName(int i) const { return stem + "_" + std::to_string(i + 1) + ".png"; }
     std::string channelName(int i, const char* channel) const {
@@ -164,6 +168,54 @@ void bakeObjMaterials(const Mesh& mesh, ObjMaterials& out) {
         out.materialImage[m] = int(out.images.size() - 1);
         baked.emplace(key, out.materialImage[m]);
     }
+    // The other maps, each texture once (its placement is not kept: OBJ has no rotation).
+    for (const Material& mat : mesh.materials) {
+        for (const MaterialMap* map : {&mat.normal, &mat.occlusion, &mat.emissive}) {
+            const int t = map->texture;
+            if (t < 0 || mesh.textures[std::size_t(t)].empty() || out.mapFiles.count(t))
+                continue;
+            const EncodedImage* kept = mesh.textureSource(t);
+            const char* extension = kept && kept->mimeType == "image/jpeg" ? ".jpg" : ".png";
+            out.mapFiles[t] = out.stem + "_map" + std::to_string(t + 1) + extension;
+        }
+        const int t = mat.metallicRoughness.texture;
+        if (t >= 0 && !mesh.textures[std::size_t(t)].empty() && !out.channelFiles.count(t))
+            out.channelFiles[t] = out.stem + "_map" + std::to_string(t + 1);
+    }
+}
+
+/** The MTL lines of mat's maps other than the base colour, and its PBR factors. */
+void appendMapLines(std::string& mtl, const Material& mat, const ObjMaterials& mats, int image) {
+    const auto factorLine = [&](const char* key, float v) {
+        mtl += key;
+        mtl += ' ';
+        appendFloat(mtl, finiteFactor(v) ? v : 1.0f);
+        mtl += '\n';
+    };
+    factorLine("Pr", mat.roughnessFactor);
+    factorLine("Pm", mat.metallicFactor);
+    if (const auto it = mats.channelFiles.find(mat.metallicRoughness.texture);
+        it != mats.channelFiles.end())
+        mtl += "map_Pr " + it->second + "_roughness.png\nmap_Pm " + it->second + "_metallic.png\n";
+    else if (image >= 0 && mats.channelsOf(image))
+        mtl += "map_Pr " + mats.channelName(image, "roughness") + "\nmap_Pm " +
+               mats.channelName(image, "metallic") + "\n";
+    const glm::vec3 emissive =
+        mat.emissiveFactor * (finiteFactor(mat.emissiveStrength) ? mat.emissiveStrength : 1.0f);
+    if (emissive != glm::vec3(0.0f)) {
+        mtl += "Ke ";
+        for (int k = 0; k < 3; ++k) {
+            appendFloat(mtl, emissive[k]);
+            mtl += k < 2 ? " " : "\n";
+        }
+    }
+    const auto mapLine = [&](const char* key, const MaterialMap& map) {
+        if (const auto it = mats.mapFiles.find(map.texture); it != mats.mapFiles.end())
+            mtl += std::string(key) + " " + it->second + "\n";
+    };
+    mapLine("norm", mat.normal);
+    mapLine("map_Ka", mat.occlusion); // Assimp reads it back as the ambient (occlusion) map
+    mapLine("map_Ke", mat.emissive);
 }
 
 std::string mtlText(const Mesh& mesh, const ObjMaterials& mats) {
@@ -182,9 +234,7 @@ std::string mtlText(const Mesh& mesh, const ObjMaterials& mats) {
         mtl += "\nillum 1\n";
         if (image >= 0)
             mtl += "map_Kd " + mats.imageName(image) + "\n";
-        if (image >= 0 && mats.channelsOf(image))
-            mtl += "map_Pr " + mats.channelName(image, "roughness") + "\nmap_Pm " +
-                   mats.channelName(image, "metallic") + "\n";
+        appendMapLines(mtl, mat, mats, image);
     }
     return mtl;
 }
@@ -302,6 +352,34 @@ Status writeObjImages(const fs::path& path, const ObjMaterials& mats, double geo
     return {};
 }
 
+/** The other maps beside path: kept files as they are, the rest as PNG; metallic-roughness
+ *  maps as a roughness and a metallic image. */
+Status writeObjMaps(const fs::path& path, const Mesh& mesh, const ObjMaterials& mats,
+                    std::vector<std::string>& written) {
+    for (const auto& [t, name] : mats.mapFiles) {
+        const std::string file = (path.parent_path() / name).string();
+        const EncodedImage* kept = mesh.textureSource(t);
+        const Status s =
+            kept ? writeFileAtomically(file, kept->bytes.data(), kept->bytes.size(), false)
+                 : writeImageFile(file, mesh.textures[std::size_t(t)], ExportFormat::Png8, {});
+        if (!s)
+            return s;
+        written.push_back(file);
+    }
+    for (const auto& [t, stem] : mats.channelFiles) {
+        for (const auto& [channel, component] : {std::pair{"_roughness", 1}, {"_metallic", 2}}) {
+            const std::string file = (path.parent_path() / (stem + channel + ".png")).string();
+            if (Status s =
+                    writeImageFile(file, channelImage(mesh.textures[std::size_t(t)], component),
+                                   ExportFormat::Png8, {});
+                !s)
+                return s;
+            written.push_back(file);
+        }
+    }
+    return {};
+}
+
 Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh,
                                           const MaterialChannels& channels,
                                           const ProgressFn& progress) {
@@ -316,6 +394,8 @@ Result<std::vector<std::string>> writeObj(const fs::path& path, const Mesh& mesh
 
     std::vector<std::string> written;
     if (Status s = writeObjImages(path, mats, geometryShare, progress, written); !s)
+        return s.takeError();
+    if (Status s = writeObjMaps(path, mesh, mats, written); !s)
         return s.takeError();
     if (Status s = writeBytes(mtlPath.string(), mtl); !s)
         return s.takeError();

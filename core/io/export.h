@@ -35,7 +35,13 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
  * - Glb: encodeGlb() without extras;
  * - Obj: path, the materials in STEM.mtl beside it and each texture a material uses as
  *   STEM_N.png (N from 1; a base colour factor other than white is baked into its copy, since
- *   OBJ viewers show map_Kd untinted). UVs are flipped to OBJ's convention (v up); vertex colours,
+ *   OBJ viewers show map_Kd untinted); the other maps as the MTL's PBR entries, each texture
+ *   once as STEM_mapT (T its texture from 1; a kept PNG or JPEG file as it is, else PNG):
+ *   Pr and Pm (roughness and metallic factors), map_Pr and map_Pm (STEM_mapT_roughness.png and
+ *   STEM_mapT_metallic.png, grey, from the metallic-roughness map), norm (normal map), map_Ka
+ *   (occlusion, read back by Assimp as the ambient map), Ke (emissive factor × strength) and
+ *   map_Ke; a map's placement other than the UVs is not kept. UVs are flipped to OBJ's
+ *   convention (v up); vertex colours,
  *   if any, follow the positions as sRGB ("v x y z r g b"). Faces keep the triangle order;
  * - Ply: binary little-endian; positions, normals, UVs (s, t; t up) if any and RGBA8 sRGB vertex
  *   colours: base colour
@@ -58,7 +64,8 @@ struct MaterialChannels {
 };
 
 /**
- * exportMesh() with the material's roughness and metallic: Glb gets each as the materials'
+ * exportMesh() with the material's roughness and metallic, for materials without a
+ * metallic-roughness map of their own: Glb gets each as the materials'
  * metallicRoughnessTexture (metallic and roughness factors 1); Obj writes STEM_N_roughness.png
  * and STEM_N_metallic.png (grey, linear) beside STEM_N.png and names them in the MTL with
  * map_Pr and map_Pm; Ply has no such channels.

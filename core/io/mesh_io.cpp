@@ -121,6 +121,14 @@ void Flattener::finish(Mesh& out) {
     out = std::move(mesh);
 }
 
+int Flattener::addTexture(Image image, const std::uint8_t* file, std::size_t fileSize) {
+    Mesh& mesh = m_mesh;
+    mesh.textureSources.resize(mesh.textures.size());
+    mesh.textures.push_back(std::move(image));
+    mesh.textureSources.push_back(file ? encodedImageOf(file, fileSize) : EncodedImage{});
+    return static_cast<int>(mesh.textures.size() - 1);
+}
+
 bool toFloat(const glm::dvec3& p, glm::vec3& out) {
     constexpr double kMax = std::numeric_limits<float>::max();
     for (int k = 0; k < 3; ++k)

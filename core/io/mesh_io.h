@@ -81,4 +81,10 @@ Result<std::vector<Image>> loadGlbImages(const std::string& path, const std::vec
 Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std::string& name,
                           const LoadLimits& limits = {});
 
+/**
+ * An image file's bytes to keep beside its decoded texture: PNG and JPEG files (by their
+ * signature), which glTF holds as they are; empty for other formats.
+ */
+EncodedImage encodedImageOf(const std::uint8_t* data, std::size_t size);
+
 } // namespace core

@@ -74,6 +74,9 @@ Status Mesh::validate() const {
                       m.occlusion.texture, m.emissive.texture})
             if (t >= static_cast<int>(textures.size()))
                 return Error{"a texture index is out of range", ErrorKind::BadInput};
+    if (!textureSources.empty() && textureSources.size() != textures.size())
+        return Error{"the kept texture files differ in count from the textures",
+                     ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
             return Error{"a vertex position is not a finite number", ErrorKind::BadInput};

@@ -25,6 +25,17 @@ struct Image {
     bool empty() const { return width <= 0 || height <= 0; }
 };
 
+/**
+ * A texture's file as the model held it (PNG or JPEG), kept so that a map nobody painted is
+ * written back byte for byte instead of re-encoded.
+ */
+struct EncodedImage {
+    std::string mimeType; // "image/png" or "image/jpeg"
+    std::vector<std::uint8_t> bytes;
+
+    bool empty() const { return bytes.empty(); }
+};
+
 /** How a material's alpha is used, as glTF's alphaMode. */
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
@@ -42,14 +53,16 @@ struct MaterialMap {
 /**
  * A glTF 2.0 metallic-roughness material. Factors are linear; textures index Mesh::textures
  * (base colour and emissive hold sRGB-encoded values, the others linear values: metallic in
- * blue, roughness in green, occlusion in red, normals in tangent space).
+ * blue, roughness in green, occlusion in red, normals in tangent space). A material made in code
+ * is rough plastic (metallicFactor 0); the glTF loader sets glTF's own default (1) where a file
+ * says nothing.
  */
 struct Material {
     std::string name;
     glm::vec4 baseColorFactor{1.0f}; // linear RGBA
     int baseColorTexture = -1;       // index into Mesh::textures, -1 for none
 
-    float metallicFactor = 1.0f;
+    float metallicFactor = 0.0f;
     float roughnessFactor = 1.0f;
     MaterialMap metallicRoughness;
     float normalScale = 1.0f;
@@ -88,12 +101,21 @@ struct Mesh {
     std::vector<std::uint32_t> triangleMaterial; // one per triangle, index into materials
     std::vector<Material> materials;             // at least one
     std::vector<Image> textures;
+    /** Empty, or one per texture: its file's bytes where they are kept (else empty). */
+    std::vector<EncodedImage> textureSources;
     std::vector<std::string> warnings; // non-fatal problems met while loading
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }
     bool hasUvs() const { return !uvs.empty(); }
     bool hasColors() const { return !colors.empty(); }
+    /** The kept file of texture t, or nullptr. */
+    const EncodedImage* textureSource(int t) const {
+        return t >= 0 && std::size_t(t) < textureSources.size() &&
+                       !textureSources[std::size_t(t)].empty()
+                   ? &textureSources[std::size_t(t)]
+                   : nullptr;
+    }
 
     Bounds bounds() const;
     /** Area-weighted vertex normals from the triangles (for files without normals). */

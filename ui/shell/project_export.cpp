@@ -182,11 +182,8 @@ bool ProjectController::snapshotPaintTexture(Snapshot& snap) {
 }
 
 bool ProjectController::snapshotPaintedModel(Snapshot& snap) const {
+    // The painted mesh carries its materials' maps, painted roughness and metallic included.
     snap.mesh = m_document.paintedMesh();
-    // The painted mesh's texture i is page i: its roughness and metallic go beside it.
-    if (const core::PaintTarget* painted = m_document.currentPaintTarget())
-        for (std::size_t i = 0; i < painted->pageCount(); ++i)
-            snap.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
     return true;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <set>
@@ -115,7 +116,25 @@ private:
 
     bool addMesh(unsigned meshIndex, const glm::dmat4& transform);
     void addMaterials();
+    /** The factors, alpha and base colour of am. */
+    Material readMaterial(const aiMaterial& am, unsigned index);
+    /** The maps of am besides the base colour, loaded after every base colour texture. */
+    void readMaterialMaps(const aiMaterial& am, Material& mat);
+    /**
+     * Whether am has a texture of one of types, and the first one's path. map names the map in
+     * the warning for a texture on another coordinate set, which is kept on set 0 (nullptr: the
+     * base colour, which is then left out).
+     */
+    bool firstTexture(const aiMaterial& am, std::initializer_list<aiTextureType> types,
+                      const Material& mat, const char* map, std::string& path);
     int loadTexture(const std::string& path);
+    /** Separate metalness and roughness images as one glTF metallic-roughness texture. */
+    int combinedMetallicRoughness(int metal, int rough);
+    /**
+     * Keeps only the textures the materials use (not the separate metalness and roughness
+     * images), base colour textures first.
+     */
+    void dropUnusedTextures();
 };
 
 bool AssimpFlattener::addMesh(unsigned meshIndex, const glm::dmat4& transform) {
@@ -226,8 +245,7 @@ int AssimpFlattener::loadTexture(const std::string& path) {
             } else {
                 Result<Image> img = decodeImage(data, embedded->mWidth, label, m_limits);
                 if (img) {
-                    result = static_cast<int>(m_mesh.textures.size());
-                    m_mesh.textures.push_back(std::move(img).value());
+                    result = addTexture(std::move(img).value(), data, embedded->mWidth);
                 } else {
                     m_mesh.warnings.push_back(img.error() + "; the material has no texture");
                 }
@@ -250,8 +268,7 @@ int AssimpFlattener::loadTexture(const std::string& path) {
                     img.rgba[i * 4 + 2] = t.b;
                     img.rgba[i * 4 + 3] = t.a;
                 }
-                result = static_cast<int>(m_mesh.textures.size());
-                m_mesh.textures.push_back(std::move(img));
+                result = addTexture(std::move(img));
             }
         }
     } else if (!path.empty() && path[0] == '*') {
@@ -278,8 +295,7 @@ int AssimpFlattener::loadTexture(const std::string& path) {
         } else {
             Result<Image> img = decodeImage(bytes.data(), bytes.size(), label, m_limits);
             if (img) {
-                result = static_cast<int>(m_mesh.textures.size());
-                m_mesh.textures.push_back(std::move(img).value());
+                result = addTexture(std::move(img).value(), bytes.data(), bytes.size());
             } else {
                 m_mesh.warnings.push_back(img.error() + "; the material has no texture");
             }
@@ -289,53 +305,199 @@ int AssimpFlattener::loadTexture(const std::string& path) {
     return result;
 }
 
+Material AssimpFlattener::readMaterial(const aiMaterial& am, unsigned index) {
+    Material mat; // rough plastic, not metal, unless the file says otherwise
+    aiString name;
+    mat.name = am.Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0
+                   ? std::string(name.C_Str())
+                   : "material " + std::to_string(index);
+    aiColor4D color(1.0f, 1.0f, 1.0f, 1.0f);
+    const bool pbrColor = am.Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS;
+    bool diffuseColor = false;
+    if (!pbrColor)
+        diffuseColor = am.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS;
+    float opacity = 1.0f;
+    if (am.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity)) {
+        color.a = std::clamp(opacity, 0.0f, 1.0f) * (pbrColor ? color.a : 1.0f);
+        if (opacity < 1.0f)
+            mat.alphaMode = AlphaMode::Blend;
+    }
+    // Assimp invents "DefaultMaterial" (grey) for files without one: use glTF's white.
+    if (mat.name == AI_DEFAULT_MATERIAL_NAME)
+        color = aiColor4D(1.0f, 1.0f, 1.0f, 1.0f);
+    mat.baseColorFactor = glm::vec4(color.r, color.g, color.b, color.a);
+
+    const auto factor = [&](const char* key, unsigned type, unsigned idx, float& out, float lo,
+                            float hi) {
+        float v = 0.0f;
+        if (am.Get(key, type, idx, v) == AI_SUCCESS && std::isfinite(v))
+            out = std::clamp(v, lo, hi);
+    };
+    factor(AI_MATKEY_METALLIC_FACTOR, mat.metallicFactor, 0.0f, 1.0f);
+    factor(AI_MATKEY_ROUGHNESS_FACTOR, mat.roughnessFactor, 0.0f, 1.0f);
+    factor(AI_MATKEY_EMISSIVE_INTENSITY, mat.emissiveStrength, 0.0f, 1e6f);
+    aiColor3D emissive(0.0f, 0.0f, 0.0f);
+    if (am.Get(AI_MATKEY_COLOR_EMISSIVE, emissive) == AI_SUCCESS)
+        mat.emissiveFactor = glm::vec3(emissive.r, emissive.g, emissive.b);
+    int twoSided = 0;
+    if (am.Get(AI_MATKEY_TWOSIDED, twoSided) == AI_SUCCESS)
+        mat.doubleSided = twoSided != 0;
+
+    std::string path;
+    if (firstTexture(am, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, mat, nullptr, path)) {
+        mat.baseColorTexture = loadTexture(path);
+        if (mat.baseColorTexture >= 0 && diffuseColor)
+            mat.baseColorFactor = glm::vec4(1.0f, 1.0f, 1.0f, mat.baseColorFactor.a);
+    }
+    for (int k = 0; k < 4; ++k)
+        if (!std::isfinite(mat.baseColorFactor[k]))
+            mat.baseColorFactor[k] = 1.0f;
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(mat.emissiveFactor[k]) || mat.emissiveFactor[k] < 0.0f)
+            mat.emissiveFactor[k] = 0.0f;
+    return mat;
+}
+
+bool AssimpFlattener::firstTexture(const aiMaterial& am, std::initializer_list<aiTextureType> types,
+                                   const Material& mat, const char* map, std::string& path) {
+    for (aiTextureType type : types) {
+        if (am.GetTextureCount(type) == 0)
+            continue;
+        aiString texPath;
+        unsigned uvIndex = 0;
+        if (am.GetTexture(type, 0, &texPath, nullptr, &uvIndex) != AI_SUCCESS)
+            continue;
+        if (uvIndex != 0) {
+            if (map == nullptr) {
+                warnOnce("textures on texture coordinate sets other than 0 are ignored");
+                return false;
+            }
+            // As a glTF map on another set: kept, on the mesh's UVs.
+            m_mesh.warnings.push_back(
+                "material \"" + mat.name + "\": its " + map + " map uses texture coordinate set " +
+                std::to_string(uvIndex) + ", which is not loaded; it is placed on set 0 instead");
+        }
+        path = texPath.C_Str();
+        return true;
+    }
+    return false;
+}
+
+namespace {
+
+/** Texel (x, y) of image's channel, the image stretched over width × height (nearest). */
+std::uint8_t stretched(const Image& image, int channel, int x, int y, int width, int height) {
+    const int sx = int((std::int64_t(x) * image.width) / width);
+    const int sy = int((std::int64_t(y) * image.height) / height);
+    return image.rgba[(std::size_t(sy) * std::size_t(image.width) + std::size_t(sx)) * 4 +
+                      std::size_t(channel)];
+}
+
+} // namespace
+
+int AssimpFlattener::combinedMetallicRoughness(int metal, int rough) {
+    const Image* m = metal >= 0 ? &m_mesh.textures[std::size_t(metal)] : nullptr;
+    const Image* r = rough >= 0 ? &m_mesh.textures[std::size_t(rough)] : nullptr;
+    // The larger size; the other image is stretched over it. A missing one is 1 (its factor
+    // alone then says the value).
+    Image out;
+    out.width = std::max(m ? m->width : 0, r ? r->width : 0);
+    out.height = std::max(m ? m->height : 0, r ? r->height : 0);
+    out.rgba.resize(std::size_t(out.width) * std::size_t(out.height) * 4);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            std::uint8_t* px =
+                &out.rgba[(std::size_t(y) * std::size_t(out.width) + std::size_t(x)) * 4];
+            px[0] = 255;
+            px[1] = r ? stretched(*r, 0, x, y, out.width, out.height) : 255;
+            px[2] = m ? stretched(*m, 0, x, y, out.width, out.height) : 255;
+            px[3] = 255;
+        }
+    return addTexture(std::move(out));
+}
+
+void AssimpFlattener::readMaterialMaps(const aiMaterial& am, Material& mat) {
+    std::string path, diffusePath;
+    firstTexture(am, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}, mat, nullptr, diffusePath);
+    if (firstTexture(am, {aiTextureType_NORMALS, aiTextureType_NORMAL_CAMERA}, mat, "normal",
+                     path)) {
+        mat.normal.texture = loadTexture(path);
+    } else if (am.GetTextureCount(aiTextureType_HEIGHT) > 0) {
+        m_mesh.warnings.push_back("material \"" + mat.name +
+                                  "\": its height (bump) map is not a normal map and is not used");
+    }
+    if (firstTexture(am, {aiTextureType_EMISSION_COLOR, aiTextureType_EMISSIVE}, mat, "emissive",
+                     path)) {
+        mat.emissive.texture = loadTexture(path);
+        // A texture without a colour to scale it shows as it is.
+        if (mat.emissive.texture >= 0 && mat.emissiveFactor == glm::vec3(0.0f))
+            mat.emissiveFactor = glm::vec3(1.0f);
+    }
+    // Ambient occlusion; an ambient map that is the diffuse map again is no occlusion.
+    if (firstTexture(am, {aiTextureType_AMBIENT_OCCLUSION, aiTextureType_LIGHTMAP}, mat,
+                     "occlusion", path) ||
+        (firstTexture(am, {aiTextureType_AMBIENT}, mat, "occlusion", path) && path != diffusePath))
+        mat.occlusion.texture = loadTexture(path);
+
+    std::string metalPath, roughPath;
+    const bool hasMetal = firstTexture(am, {aiTextureType_METALNESS}, mat, "metallic", metalPath);
+    const bool hasRough =
+        firstTexture(am, {aiTextureType_DIFFUSE_ROUGHNESS}, mat, "roughness", roughPath);
+    if (hasMetal && hasRough && metalPath == roughPath) {
+        mat.metallicRoughness.texture = loadTexture(metalPath); // one glTF-style image
+    } else if (hasMetal || hasRough) {
+        const int metal = hasMetal ? loadTexture(metalPath) : -1;
+        const int rough = hasRough ? loadTexture(roughPath) : -1;
+        if (metal >= 0 || rough >= 0)
+            mat.metallicRoughness.texture = combinedMetallicRoughness(metal, rough);
+    }
+    // A metalness map means metal where it says so.
+    if (mat.metallicRoughness.texture >= 0 && hasMetal &&
+        am.Get(AI_MATKEY_METALLIC_FACTOR, mat.metallicFactor) != AI_SUCCESS)
+        mat.metallicFactor = 1.0f;
+}
+
 void AssimpFlattener::addMaterials() {
+    // Every base colour texture first, then the other maps (as the glTF loader orders them).
     for (unsigned i = 0; i < m_scene.mNumMaterials; ++i) {
         const aiMaterial* am = m_scene.mMaterials ? m_scene.mMaterials[i] : nullptr;
-        Material mat;
         if (am == nullptr) {
+            Material mat;
             mat.name = "material " + std::to_string(i);
             m_mesh.materials.push_back(mat);
             continue;
         }
-        aiString name;
-        mat.name = am->Get(AI_MATKEY_NAME, name) == AI_SUCCESS && name.length > 0
-                       ? std::string(name.C_Str())
-                       : "material " + std::to_string(i);
-        aiColor4D color(1.0f, 1.0f, 1.0f, 1.0f);
-        const bool pbrColor = am->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS;
-        bool diffuseColor = false;
-        if (!pbrColor)
-            diffuseColor = am->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS;
-        float opacity = 1.0f;
-        if (am->Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && std::isfinite(opacity))
-            color.a = std::clamp(opacity, 0.0f, 1.0f) * (pbrColor ? color.a : 1.0f);
-        // Assimp invents "DefaultMaterial" (grey) for files without one: use glTF's white.
-        if (mat.name == AI_DEFAULT_MATERIAL_NAME)
-            color = aiColor4D(1.0f, 1.0f, 1.0f, 1.0f);
-        mat.baseColorFactor = glm::vec4(color.r, color.g, color.b, color.a);
-
-        for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {
-            if (am->GetTextureCount(type) == 0)
-                continue;
-            aiString texPath;
-            unsigned uvIndex = 0;
-            if (am->GetTexture(type, 0, &texPath, nullptr, &uvIndex) != AI_SUCCESS)
-                continue;
-            if (uvIndex != 0) {
-                warnOnce("textures on texture coordinate sets other than 0 are ignored");
-                break;
-            }
-            mat.baseColorTexture = loadTexture(texPath.C_Str());
-            if (mat.baseColorTexture >= 0 && diffuseColor)
-                mat.baseColorFactor = glm::vec4(1.0f, 1.0f, 1.0f, mat.baseColorFactor.a);
-            break;
-        }
-        for (int k = 0; k < 4; ++k)
-            if (!std::isfinite(mat.baseColorFactor[k]))
-                mat.baseColorFactor[k] = 1.0f;
-        m_mesh.materials.push_back(std::move(mat));
+        m_mesh.materials.push_back(readMaterial(*am, i));
     }
+    for (unsigned i = 0; i < m_scene.mNumMaterials; ++i)
+        if (const aiMaterial* am = m_scene.mMaterials ? m_scene.mMaterials[i] : nullptr)
+            readMaterialMaps(*am, m_mesh.materials[i]);
+    dropUnusedTextures();
+}
+
+void AssimpFlattener::dropUnusedTextures() {
+    Mesh& mesh = m_mesh;
+    mesh.textureSources.resize(mesh.textures.size());
+    std::vector<int> remap(mesh.textures.size(), -1);
+    std::vector<Image> textures;
+    std::vector<EncodedImage> sources;
+    const auto use = [&](int& t) {
+        if (t < 0)
+            return;
+        if (remap[std::size_t(t)] < 0) {
+            remap[std::size_t(t)] = int(textures.size());
+            textures.push_back(std::move(mesh.textures[std::size_t(t)]));
+            sources.push_back(std::move(mesh.textureSources[std::size_t(t)]));
+        }
+        t = remap[std::size_t(t)];
+    };
+    for (Material& m : mesh.materials)
+        use(m.baseColorTexture);
+    for (Material& m : mesh.materials)
+        for (MaterialMap* map : {&m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive})
+            use(map->texture);
+    mesh.textures = std::move(textures);
+    mesh.textureSources = std::move(sources);
 }
 
 bool AssimpFlattener::run(Mesh& out) {

@@ -6,6 +6,7 @@
 #include "core/io/gltf/gltf_export.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,7 @@
 #include <limits>
 #include <new>
 #include <optional>
+#include <set>
 #include <span>
 #include <string>
 #include <string_view>
@@ -191,6 +193,7 @@ struct GlbDraft {
     Json images = Json::array(), textures = Json::array(), materials = Json::array();
     std::vector<int> textureIndex; // glTF texture per mesh texture (-1: not written)
     std::vector<int> mrTexture;    // glTF texture per metallic-roughness image (-1: not written)
+    std::set<std::string> extensionsUsed;
 };
 
 /** The buffer views of the vertex attributes and indices (-1: the mesh has none). */
@@ -255,32 +258,59 @@ Status writeGeometry(GlbDraft& d) {
     return {};
 }
 
-/** The base colour textures the materials use, in order of first use (the order the loader
- *  gives them), as PNG images. */
-Status writeBaseColorTextures(GlbDraft& d) {
+/** A material's textures: the base colour, then its other maps in Material's order. */
+std::array<int, 5> texturesOf(const Material& m) {
+    return {m.baseColorTexture, m.metallicRoughness.texture, m.normal.texture, m.occlusion.texture,
+            m.emissive.texture};
+}
+
+/** Texture t as a glTF image: its kept file as it was, else encoded as PNG. */
+Status writeImage(GlbDraft& d, std::size_t t) {
+    const Mesh& mesh = d.mesh;
+    std::string mimeType = "image/png";
+    Bytes encoded;
+    const Bytes* bytes = &encoded;
+    if (const EncodedImage* kept = mesh.textureSource(int(t))) {
+        bytes = &kept->bytes;
+        mimeType = kept->mimeType;
+    } else {
+        Result<Bytes> png = encodeImage(mesh.textures[t], ExportFormat::Png8);
+        if (!png)
+            return Error{"texture " + std::to_string(t) + " cannot be encoded as PNG (" +
+                             png.error() + ")",
+                         png.errorKind()};
+        encoded = std::move(png).value();
+    }
+    const int view = d.bin.addView(bytes->data(), bytes->size(), 0, 0);
+    d.images.push_back(
+        {{"bufferView", view}, {"mimeType", mimeType}, {"name", "texture " + std::to_string(t)}});
+    d.textures.push_back({{"source", d.images.size() - 1}, {"sampler", 0}});
+    return {};
+}
+
+/**
+ * The textures the materials use: the base colour textures first, in order of first use (the
+ * order the loader gives them back, so a project's pages stay first), then the other maps'.
+ */
+Status writeTextures(GlbDraft& d) {
     const Mesh& mesh = d.mesh;
     d.textureIndex.assign(mesh.textures.size(), -1);
     std::vector<std::size_t> written; // mesh texture per glTF texture
-    for (const Material& m : mesh.materials) {
-        if (m.baseColorTexture < 0)
-            continue;
-        const auto t = static_cast<std::size_t>(m.baseColorTexture);
-        if (d.textureIndex[t] < 0 && !mesh.textures[t].empty()) {
-            d.textureIndex[t] = static_cast<int>(written.size());
-            written.push_back(t);
+    const auto use = [&](int t) {
+        if (t >= 0 && d.textureIndex[std::size_t(t)] < 0 &&
+            !mesh.textures[std::size_t(t)].empty()) {
+            d.textureIndex[std::size_t(t)] = static_cast<int>(written.size());
+            written.push_back(std::size_t(t));
         }
-    }
+    };
+    for (const Material& m : mesh.materials)
+        use(m.baseColorTexture);
+    for (const Material& m : mesh.materials)
+        for (std::size_t k = 1; k < 5; ++k)
+            use(texturesOf(m)[k]);
     for (std::size_t k = 0; k < written.size(); ++k) {
-        const Result<Bytes> png = encodeImage(mesh.textures[written[k]], ExportFormat::Png8);
-        if (!png)
-            return Error{"texture " + std::to_string(written[k]) + " cannot be encoded as PNG (" +
-                             png.error() + ")",
-                         png.errorKind()};
-        const int view = d.bin.addView(png->data(), png->size(), 0, 0);
-        d.images.push_back({{"bufferView", view},
-                            {"mimeType", "image/png"},
-                            {"name", "texture " + std::to_string(written[k])}});
-        d.textures.push_back({{"source", k}, {"sampler", 0}});
+        if (Status s = writeImage(d, written[k]); !s)
+            return s;
         if (!reportProgress(d.progress, 0.2 + 0.7 * static_cast<double>(k + 1) /
                                                   static_cast<double>(written.size())))
             return cancelledError();
@@ -288,7 +318,7 @@ Status writeBaseColorTextures(GlbDraft& d) {
     return {};
 }
 
-/** Metallic-roughness images the materials use, after the base colour textures. */
+/** Metallic-roughness images the materials without a map of their own take from additions. */
 Status writeMetallicRoughness(GlbDraft& d) {
     const GlbAdditions& additions = d.additions;
     d.mrTexture.assign(additions.metallicRoughness.size(), -1);
@@ -298,7 +328,8 @@ Status writeMetallicRoughness(GlbDraft& d) {
                                : -1;
         if (source < 0 || std::size_t(source) >= d.mrTexture.size() ||
             d.mrTexture[std::size_t(source)] >= 0 ||
-            additions.metallicRoughness[std::size_t(source)].empty())
+            additions.metallicRoughness[std::size_t(source)].empty() ||
+            d.mesh.materials[mi].metallicRoughness.texture >= 0)
             continue;
         const Result<Bytes> png =
             encodeImage(additions.metallicRoughness[std::size_t(source)], ExportFormat::Png8);
@@ -326,6 +357,86 @@ void writeAttachments(GlbDraft& d) {
     d.extras[d.additions.attachmentsAt] = std::move(views);
 }
 
+/**
+ * map's placement as KHR_texture_transform (offset, rotation, scale), or nothing for none. A
+ * placement with shear has no such form: its nearest one is written.
+ */
+Json textureTransform(const glm::mat3& m) {
+    if (m == glm::mat3(1.0f))
+        return nullptr;
+    // m = T · R · S with R's columns (c, −s), (s, c) (gltf_texture_transform.cpp).
+    const double sx = std::hypot(double(m[0][0]), double(m[0][1]));
+    const double rotation = std::atan2(-double(m[0][1]), double(m[0][0]));
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const double sy = s * double(m[1][0]) + c * double(m[1][1]);
+    return {{"offset", Json::array({factor(m[2][0]), factor(m[2][1])})},
+            {"rotation", std::isfinite(rotation) ? rotation + 0.0 : 0.0}, // no -0
+            {"scale", Json::array({std::isfinite(sx) ? sx : 1.0, std::isfinite(sy) ? sy : 1.0})}};
+}
+
+/** The textureInfo of map (its glTF texture and placement), or null when it was not written. */
+Json textureInfo(GlbDraft& d, const MaterialMap& map) {
+    if (map.texture < 0 || d.textureIndex[std::size_t(map.texture)] < 0)
+        return nullptr;
+    Json info = {{"index", d.textureIndex[std::size_t(map.texture)]}};
+    if (Json transform = textureTransform(map.uvTransform); !transform.is_null()) {
+        info["extensions"] = {{"KHR_texture_transform", std::move(transform)}};
+        d.extensionsUsed.insert("KHR_texture_transform");
+    }
+    return info;
+}
+
+const char* alphaModeName(AlphaMode mode) {
+    switch (mode) {
+    case AlphaMode::Mask:
+        return "MASK";
+    case AlphaMode::Blend:
+        return "BLEND";
+    case AlphaMode::Opaque:
+        break;
+    }
+    return "OPAQUE";
+}
+
+/** The maps besides the base colour and metallic-roughness, the alpha and the sides. */
+void writeSurface(GlbDraft& d, const Material& m, Json& material) {
+    if (Json info = textureInfo(d, m.normal); !info.is_null()) {
+        if (m.normalScale != 1.0f)
+            info["scale"] = factor(m.normalScale);
+        material["normalTexture"] = std::move(info);
+    }
+    if (Json info = textureInfo(d, m.occlusion); !info.is_null()) {
+        if (m.occlusionStrength != 1.0f)
+            info["strength"] = std::clamp(factor(m.occlusionStrength), 0.0, 1.0);
+        material["occlusionTexture"] = std::move(info);
+    }
+    if (Json info = textureInfo(d, m.emissive); !info.is_null())
+        material["emissiveTexture"] = std::move(info);
+    // glTF's emissive factor stops at 1: beyond, the strength carries the rest.
+    glm::dvec3 emissive(std::max(0.0, factor(m.emissiveFactor.r)),
+                        std::max(0.0, factor(m.emissiveFactor.g)),
+                        std::max(0.0, factor(m.emissiveFactor.b)));
+    double strength =
+        std::isfinite(m.emissiveStrength) ? std::max(0.0, double(m.emissiveStrength)) : 1.0;
+    if (const double top = std::max({emissive.r, emissive.g, emissive.b}); top > 1.0) {
+        emissive /= top;
+        strength *= top;
+    }
+    if (emissive != glm::dvec3(0.0))
+        material["emissiveFactor"] = Json::array({emissive.r, emissive.g, emissive.b});
+    if (strength != 1.0) {
+        material["extensions"]["KHR_materials_emissive_strength"] = {
+            {"emissiveStrength", strength}};
+        d.extensionsUsed.insert("KHR_materials_emissive_strength");
+    }
+    if (m.alphaMode != AlphaMode::Opaque)
+        material["alphaMode"] = alphaModeName(m.alphaMode);
+    if (m.alphaMode == AlphaMode::Mask && m.alphaCutoff != 0.5f)
+        material["alphaCutoff"] = std::max(0.0, factor(m.alphaCutoff));
+    if (m.doubleSided)
+        material["doubleSided"] = true;
+}
+
 void writeMaterials(GlbDraft& d) {
     const GlbAdditions& additions = d.additions;
     for (std::size_t mi = 0; mi < d.mesh.materials.size(); ++mi) {
@@ -336,18 +447,22 @@ void writeMaterials(GlbDraft& d) {
         const int mr = mrSource >= 0 && std::size_t(mrSource) < d.mrTexture.size()
                            ? d.mrTexture[std::size_t(mrSource)]
                            : -1;
-        Json pbr = {{"baseColorFactor",
-                     Json::array({factor(m.baseColorFactor.r), factor(m.baseColorFactor.g),
-                                  factor(m.baseColorFactor.b), factor(m.baseColorFactor.a)})},
-                    {"metallicFactor", mr >= 0 ? 1.0 : 0.0},
-                    {"roughnessFactor", 1.0}};
-        if (mr >= 0)
+        Json pbr = {
+            {"baseColorFactor",
+             Json::array({factor(m.baseColorFactor.r), factor(m.baseColorFactor.g),
+                          factor(m.baseColorFactor.b), factor(m.baseColorFactor.a)})},
+            {"metallicFactor", mr >= 0 ? 1.0 : std::clamp(factor(m.metallicFactor), 0.0, 1.0)},
+            {"roughnessFactor", mr >= 0 ? 1.0 : std::clamp(factor(m.roughnessFactor), 0.0, 1.0)}};
+        if (Json info = textureInfo(d, m.metallicRoughness); !info.is_null())
+            pbr["metallicRoughnessTexture"] = std::move(info);
+        else if (mr >= 0)
             pbr["metallicRoughnessTexture"] = {{"index", mr}};
         if (m.baseColorTexture >= 0 &&
             d.textureIndex[static_cast<std::size_t>(m.baseColorTexture)] >= 0)
             pbr["baseColorTexture"] = {
                 {"index", d.textureIndex[static_cast<std::size_t>(m.baseColorTexture)]}};
         Json material = {{"pbrMetallicRoughness", std::move(pbr)}};
+        writeSurface(d, m, material);
         if (!m.name.empty())
             material["name"] = m.name;
         d.materials.push_back(std::move(material));
@@ -369,6 +484,8 @@ Json assembleRoot(GlbDraft& d) {
         {"accessors", std::move(d.accessors)},
         {"bufferViews", std::move(d.bin.views())},
         {"buffers", Json::array({{{"byteLength", d.bin.bytes().size()}}})}};
+    if (!d.extensionsUsed.empty())
+        root["extensionsUsed"] = d.extensionsUsed;
     if (!d.textures.empty()) {
         // Painting wraps UVs outside 0..1 (paint_target.h), so do viewers.
         root["samplers"] = Json::array(
@@ -416,7 +533,7 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
 
     if (Status s = writeGeometry(d); !s)
         return s.takeError();
-    if (Status s = writeBaseColorTextures(d); !s)
+    if (Status s = writeTextures(d); !s)
         return s.takeError();
     if (Status s = writeMetallicRoughness(d); !s)
         return s.takeError();

@@ -23,9 +23,12 @@ namespace core {
  * vertex ranges (every mesh loadMesh() returns) comes back with identical vertices and indices;
  * otherwise vertices shared between runs are duplicated and unused ones dropped.
  * Attributes: POSITION (with min/max), NORMAL, TEXCOORD_0 and COLOR_0 (float RGBA, linear) when
- * present; uint32 indices. Materials are metallic-roughness with metallic 0, roughness 1; base
- * colour textures (sRGB) are stored as PNG in the binary chunk, only those a material uses, in
- * the order of first use (empty images are left out). extras (a JSON object, or null for none) goes
+ * present; uint32 indices. Materials are glTF metallic-roughness materials with every field of
+ * Material (maps placed otherwise than the UVs with KHR_texture_transform, an emissive strength
+ * other than 1 with KHR_materials_emissive_strength). Only the textures a material uses are
+ * stored, in the binary chunk: the base colour textures first in the order of first use, then the
+ * other maps'; a texture with a kept file (Mesh::textureSources) as those bytes, the others as
+ * PNG (empty images are left out). extras (a JSON object, or null for none) goes
  * under asset.extras.
  *
  * Returns the file's bytes, or an Error (an invalid mesh, extras that are not an object, an image
@@ -40,8 +43,8 @@ struct GlbAdditions {
     nlohmann::json extras;
     /**
      * glTF metallic-roughness images (linear; G roughness, B metallic), and per material an
-     * index into them or -1. A material with one gets it as metallicRoughnessTexture with
-     * metallic and roughness factors 1.
+     * index into them or -1. A material with one and without a metallic-roughness map of its own
+     * gets it as metallicRoughnessTexture with metallic and roughness factors 1.
      */
     std::vector<Image> metallicRoughness;
     std::vector<int> materialMetallicRoughness;

@@ -144,7 +144,7 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
              ", which does not exist");
         return -1;
     }
-    (void)texCoord; // the primitives read the set the material's texture uses
+    (void)texCoord; // the primitives read the set the material's textures use
     const int source = m_model.textures[static_cast<std::size_t>(textureIndex)].source;
     if (source < 0) {
         warnOnce("textures without a source image (or only an extension's image) are ignored");
@@ -179,11 +179,12 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
         }
         m_mesh.warnings.push_back(label + " could not be read; the material has no texture");
     } else {
+        // The decoder hands over the stored values as they are (no gamma or colour profile is
+        // applied): base colour and emissive stay sRGB-encoded, the other maps linear.
         Result<Image> decoded =
             decodeImage(data, static_cast<std::size_t>(length), label, m_limits);
         if (decoded) {
-            result = static_cast<int>(m_mesh.textures.size());
-            m_mesh.textures.push_back(std::move(decoded).value());
+            result = addTexture(std::move(decoded).value(), data, static_cast<std::size_t>(length));
         } else if (m_limits.requireTextures) {
             fail(decoded.error());
             return -1;
@@ -195,55 +196,119 @@ int GltfFlattener::textureFor(int textureIndex, int texCoord, const std::string&
     return result;
 }
 
-bool GltfFlattener::addMaterials() {
-    const Json* jsonMaterials = nullptr;
-    if (const auto it = m_json.find("materials"); it != m_json.end())
-        jsonMaterials = &*it;
-    for (std::size_t i = 0; i < m_model.materials.size(); ++i) {
-        const tinygltf::Material& gm = m_model.materials[i];
-        Material mat;
-        mat.name = gm.name.empty() ? "material " + str(i) : gm.name;
-        const auto& pbr = gm.pbrMetallicRoughness;
-        if (pbr.baseColorFactor.size() == 4)
-            for (int k = 0; k < 4; ++k)
-                mat.baseColorFactor[k] =
-                    static_cast<float>(pbr.baseColorFactor[static_cast<std::size_t>(k)]);
-        int texIndex = pbr.baseColorTexture.index;
-        int texCoord = pbr.baseColorTexture.texCoord;
+namespace {
+
+/** A finite number, else fallback. */
+float finiteOr(double v, float fallback) {
+    return std::isfinite(v) ? static_cast<float>(v) : fallback;
+}
+
+AlphaMode alphaModeOf(const std::string& mode) {
+    if (mode == "MASK")
+        return AlphaMode::Mask;
+    if (mode == "BLEND")
+        return AlphaMode::Blend;
+    return AlphaMode::Opaque;
+}
+
+} // namespace
+
+bool GltfFlattener::readMaterial(std::size_t i, Material& mat) {
+    const tinygltf::Material& gm = m_model.materials[i];
+    mat.name = gm.name.empty() ? "material " + str(i) : gm.name;
+    const auto& pbr = gm.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() == 4)
+        for (int k = 0; k < 4; ++k)
+            mat.baseColorFactor[k] =
+                static_cast<float>(pbr.baseColorFactor[static_cast<std::size_t>(k)]);
+    mat.metallicFactor = finiteOr(pbr.metallicFactor, 1.0f);
+    mat.roughnessFactor = finiteOr(pbr.roughnessFactor, 1.0f);
+    mat.normalScale = finiteOr(gm.normalTexture.scale, 1.0f);
+    mat.occlusionStrength = finiteOr(gm.occlusionTexture.strength, 1.0f);
+    if (gm.emissiveFactor.size() == 3)
+        for (int k = 0; k < 3; ++k)
+            mat.emissiveFactor[k] = finiteOr(gm.emissiveFactor[static_cast<std::size_t>(k)], 0.0f);
+    mat.alphaMode = alphaModeOf(gm.alphaMode);
+    mat.alphaCutoff = finiteOr(gm.alphaCutoff, 0.5f);
+    mat.doubleSided = gm.doubleSided;
+    int texIndex = pbr.baseColorTexture.index;
+    int texCoord = pbr.baseColorTexture.texCoord;
+    if (m_json.contains("materials") && i < m_json["materials"].size()) {
+        const Json& jm = m_json["materials"][i];
+        const Json exts = jm.value("extensions", Json::object());
+        const Json strength = exts.value("KHR_materials_emissive_strength", Json::object())
+                                  .value("emissiveStrength", Json(1.0));
+        if (strength.is_number())
+            mat.emissiveStrength = finiteOr(strength.get<double>(), 1.0f);
         // KHR_materials_pbrSpecularGlossiness: its diffuse is the base color when the
         // metallic-roughness one is absent.
-        if (jsonMaterials && i < jsonMaterials->size()) {
-            const Json& jm = (*jsonMaterials)[i];
-            const Json sg = jm.value("extensions", Json::object())
-                                .value("KHR_materials_pbrSpecularGlossiness", Json::object());
-            if (!jm.contains("pbrMetallicRoughness") && sg.is_object() && !sg.empty()) {
-                const Json factor = sg.value("diffuseFactor", Json());
-                if (factor.is_array() && factor.size() == 4)
-                    for (int k = 0; k < 4; ++k)
-                        if (factor[static_cast<std::size_t>(k)].is_number())
-                            mat.baseColorFactor[k] =
-                                factor[static_cast<std::size_t>(k)].get<float>();
-                const Json tex = sg.value("diffuseTexture", Json());
-                if (tex.is_object() && tex.contains("index") && tex["index"].is_number_unsigned() &&
-                    tex["index"].get<std::uint64_t>() <= kMaxIndex) {
-                    texIndex = tex["index"].get<int>();
-                    const Json coord = tex.value("texCoord", Json(0));
-                    texCoord = coord.is_number_unsigned() && coord.get<std::uint64_t>() <= kMaxIndex
-                                   ? coord.get<int>()
-                                   : -1;
-                }
+        const Json sg = exts.value("KHR_materials_pbrSpecularGlossiness", Json::object());
+        if (!jm.contains("pbrMetallicRoughness") && sg.is_object() && !sg.empty()) {
+            // Specular-glossiness has no metal; its glossiness is the roughness turned round.
+            mat.metallicFactor = 0.0f;
+            const Json gloss = sg.value("glossinessFactor", Json(1.0));
+            if (gloss.is_number())
+                mat.roughnessFactor =
+                    std::clamp(1.0f - finiteOr(gloss.get<double>(), 1.0f), 0.0f, 1.0f);
+            const Json factor = sg.value("diffuseFactor", Json());
+            if (factor.is_array() && factor.size() == 4)
+                for (int k = 0; k < 4; ++k)
+                    if (factor[static_cast<std::size_t>(k)].is_number())
+                        mat.baseColorFactor[k] = factor[static_cast<std::size_t>(k)].get<float>();
+            const Json tex = sg.value("diffuseTexture", Json());
+            if (tex.is_object() && tex.contains("index") && tex["index"].is_number_unsigned() &&
+                tex["index"].get<std::uint64_t>() <= kMaxIndex) {
+                texIndex = tex["index"].get<int>();
+                const Json coord = tex.value("texCoord", Json(0));
+                texCoord = coord.is_number_unsigned() && coord.get<std::uint64_t>() <= kMaxIndex
+                               ? coord.get<int>()
+                               : -1;
             }
         }
-        for (int k = 0; k < 4; ++k)
-            if (!std::isfinite(mat.baseColorFactor[k]))
-                mat.baseColorFactor[k] = 1.0f;
-        mat.baseColorTexture = textureFor(texIndex, texCoord, mat.name);
+    }
+    for (int k = 0; k < 4; ++k)
+        if (!std::isfinite(mat.baseColorFactor[k]))
+            mat.baseColorFactor[k] = 1.0f;
+    mat.baseColorTexture = textureFor(texIndex, texCoord, mat.name);
+    return m_error.message.empty();
+}
+
+bool GltfFlattener::readMaterialMaps(std::size_t i, Material& mat) {
+    const tinygltf::Material& gm = m_model.materials[i];
+    const auto& mr = gm.pbrMetallicRoughness.metallicRoughnessTexture;
+    const std::pair<int, int> textures[kMapSlots] = {
+        {mr.index, mr.texCoord},
+        {gm.normalTexture.index, gm.normalTexture.texCoord},
+        {gm.occlusionTexture.index, gm.occlusionTexture.texCoord},
+        {gm.emissiveTexture.index, gm.emissiveTexture.texCoord}};
+    MaterialMap* maps[kMapSlots] = {&mat.metallicRoughness, &mat.normal, &mat.occlusion,
+                                    &mat.emissive};
+    for (std::size_t m = 0; m < kMapSlots; ++m) {
+        maps[m]->texture = textureFor(textures[m].first, textures[m].second, mat.name);
         if (!m_error.message.empty())
+            return false;
+        if (maps[m]->texture >= 0 && i < m_mapTransforms.size())
+            maps[m]->uvTransform = m_mapTransforms[i][m];
+    }
+    return true;
+}
+
+bool GltfFlattener::addMaterials() {
+    // Every base colour texture first, in the order of first use, then the other maps: a saved
+    // project's base colour textures are its paint target's pages, in that order.
+    for (std::size_t i = 0; i < m_model.materials.size(); ++i) {
+        Material mat;
+        if (!readMaterial(i, mat))
             return false;
         m_mesh.materials.push_back(std::move(mat));
     }
+    for (std::size_t i = 0; i < m_model.materials.size(); ++i)
+        if (!readMaterialMaps(i, m_mesh.materials[i]))
+            return false;
     // The default material, for primitives without one.
-    m_mesh.materials.push_back(Material{"default", glm::vec4(1.0f), -1});
+    Material fallback{"default", glm::vec4(1.0f), -1};
+    fallback.metallicFactor = 1.0f; // glTF's default material
+    m_mesh.materials.push_back(std::move(fallback));
     return true;
 }
 
@@ -285,6 +350,7 @@ bool GltfFlattener::run(Mesh& out) {
     if (!transforms)
         return fail(transforms.error());
     m_uvTransforms = std::move(transforms->transforms);
+    m_mapTransforms = std::move(transforms->maps);
     for (const std::string& w : transforms->warnings)
         warnOnce(w);
     std::size_t primTotal = 0, primDone = 0;

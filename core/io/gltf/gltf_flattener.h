@@ -4,6 +4,7 @@
 // appends its vertices and triangles. Internal to flattenGltf() (gltf_flatten.h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -74,9 +75,11 @@ private:
     bool m_quantized;
     std::size_t m_skippedPrimitives = 0;
     std::map<int, int> m_imageToTexture; // glTF image -> Mesh::textures index (-1: failed)
-    // Per glTF material: the base colour texture's KHR_texture_transform and coordinate set,
-    // applied to the UVs of the primitives using it.
+    // Per glTF material: the placement of the mesh's UVs (its base colour texture's
+    // KHR_texture_transform and coordinate set), applied to the UVs of the primitives using it,
+    // and its other maps' placements relative to them.
     std::vector<TextureTransform> m_uvTransforms;
+    std::vector<std::array<glm::mat3, kMapSlots>> m_mapTransforms;
 
     // The scene (gltf_flatten.cpp).
     bool collectInstances(std::vector<GltfInstance>& instances);
@@ -86,6 +89,10 @@ private:
     /** Room in the mesh for every primitive of instances, at most the limits. */
     void reserveForInstances(const std::vector<GltfInstance>& instances);
     bool addMaterials();
+    /** Material i's factors, alpha and base colour (its texture through textureFor). */
+    bool readMaterial(std::size_t i, Material& mat);
+    /** Material i's maps other than the base colour, after every base colour texture. */
+    bool readMaterialMaps(std::size_t i, Material& mat);
     int textureFor(int textureIndex, int texCoord, const std::string& materialName);
 
     // One primitive (gltf_flatten_primitive.cpp).

@@ -2,8 +2,12 @@
 // KHR_texture_transform (see gltf_texture_transform.h).
 #include "core/io/gltf/gltf_texture_transform.h"
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+
+#include <glm/matrix.hpp>
 
 #include "core/io/gltf/gltf_accessors.h"
 
@@ -76,34 +80,98 @@ Result<TextureTransform> readTextureTransform(const Json& textureInfo, const std
     return out;
 }
 
+namespace {
+
+struct MapInfo {
+    const char* key;  // the textureInfo's key
+    bool inPbr;       // under pbrMetallicRoughness, else on the material
+    const char* name; // for messages
+};
+constexpr std::array<MapInfo, kMapSlots> kMaps = {{
+    {"metallicRoughnessTexture", true, "metallic-roughness"},
+    {"normalTexture", false, "normal"},
+    {"occlusionTexture", false, "occlusion"},
+    {"emissiveTexture", false, "emissive"},
+}};
+
+/** One material's textures: the transform of each that is there (else nothing). */
+struct MaterialTextures {
+    std::optional<TextureTransform> base;
+    std::array<std::optional<TextureTransform>, kMapSlots> maps;
+};
+
+Result<MaterialTextures> readTextures(const Json& material, std::size_t index) {
+    MaterialTextures out;
+    const std::string where = "materials[" + str(index) + "]";
+    const auto read = [&](const Json& owner, const char* key, const std::string& at,
+                          std::optional<TextureTransform>& into) -> Status {
+        const auto info = owner.find(key);
+        if (info == owner.end())
+            return {};
+        Result<TextureTransform> r = readTextureTransform(*info, at + "." + key);
+        if (!r)
+            return r.takeError();
+        into = *r;
+        return {};
+    };
+    const Json pbr = material.value("pbrMetallicRoughness", Json::object());
+    const std::string pbrAt = where + ".pbrMetallicRoughness";
+    if (Status s = read(pbr, "baseColorTexture", pbrAt, out.base); !s)
+        return s.takeError();
+    for (std::size_t m = 0; m < kMapSlots; ++m)
+        if (Status s = read(kMaps[m].inPbr ? pbr : material, kMaps[m].key,
+                            kMaps[m].inPbr ? pbrAt : where, out.maps[m]);
+            !s)
+            return s.takeError();
+    return out;
+}
+
+glm::mat3 relativeTo(const glm::dmat3& map, const glm::dmat3& uvs) {
+    // A placement that collapses the texture has no inverse: the map keeps its own.
+    if (std::abs(glm::determinant(uvs)) < 1e-12)
+        return glm::mat3(map);
+    return glm::mat3(map * glm::inverse(uvs));
+}
+
+} // namespace
+
 Result<MaterialTransforms> readMaterialTransforms(const Json& root) {
     MaterialTransforms out;
     const auto materials = root.find("materials");
     if (materials == root.end())
         return out;
     for (std::size_t i = 0; i < materials->size(); ++i) {
-        const Json pbr = (*materials)[i].value("pbrMetallicRoughness", Json::object());
-        const std::string where = "materials[" + str(i) + "].pbrMetallicRoughness";
-        TextureTransform base;
-        const auto baseInfo = pbr.find("baseColorTexture");
-        if (baseInfo != pbr.end()) {
-            Result<TextureTransform> r =
-                readTextureTransform(*baseInfo, where + ".baseColorTexture");
-            if (!r)
-                return r.takeError();
-            base = *r;
+        const Json& material = (*materials)[i];
+        Result<MaterialTextures> textures = readTextures(material, i);
+        if (!textures)
+            return textures.takeError();
+        // The mesh's UVs carry the base colour's placement, else the first map's.
+        TextureTransform uvs = textures->base.value_or(TextureTransform{});
+        if (!textures->base)
+            for (const std::optional<TextureTransform>& map : textures->maps)
+                if (map) {
+                    uvs = *map;
+                    break;
+                }
+        const Json name = material.value("name", Json());
+        const std::string label = name.is_string() && !name.get<std::string>().empty()
+                                      ? name.get<std::string>()
+                                      : "material " + str(i);
+        std::array<glm::mat3, kMapSlots> maps;
+        maps.fill(glm::mat3(1.0f));
+        for (std::size_t m = 0; m < kMapSlots; ++m) {
+            const std::optional<TextureTransform>& map = textures->maps[m];
+            if (!map)
+                continue;
+            maps[m] = relativeTo(map->matrix, uvs.matrix);
+            if (map->texCoord != uvs.texCoord)
+                out.warnings.push_back("material \"" + label + "\": its " + kMaps[m].name +
+                                       " map uses TEXCOORD_" + str(map->texCoord) +
+                                       ", which is not loaded; it is placed on TEXCOORD_" +
+                                       str(uvs.texCoord) + " instead");
         }
-        if (const auto t = pbr.find("metallicRoughnessTexture"); t != pbr.end()) {
-            Result<TextureTransform> r =
-                readTextureTransform(*t, where + ".metallicRoughnessTexture");
-            if (!r)
-                return r.takeError();
-            if (baseInfo != pbr.end() && !(*r == base) && out.warnings.empty())
-                out.warnings.push_back(
-                    "a material's metallic-roughness texture is placed differently from its base "
-                    "color texture; the base color texture's placement is used");
-        }
-        out.transforms.push_back(base);
+        out.transforms.push_back(uvs);
+        out.maps.push_back(maps);
     }
     return out;
 }

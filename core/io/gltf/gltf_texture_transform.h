@@ -3,6 +3,7 @@
 // for (offset, rotation, scale) and the texture coordinate set it may select instead.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -34,15 +35,26 @@ struct TextureTransform {
 Result<TextureTransform> readTextureTransform(const nlohmann::json& textureInfo,
                                               const std::string& where);
 
-/** Per material of a glTF file, the placement of its base color texture. */
+/** The maps of a material besides the base colour, in the order of Material's fields. */
+enum class MapSlot { MetallicRoughness, Normal, Occlusion, Emissive };
+inline constexpr std::size_t kMapSlots = 4;
+
+/** Per material of a glTF file, where its textures lie. */
 struct MaterialTransforms {
-    std::vector<TextureTransform> transforms; // one per entry of the file's materials
+    /**
+     * Per entry of the file's materials: the placement the mesh's UVs take (the base colour
+     * texture's, or for a material without one its first map's) and its texture coordinate set.
+     */
+    std::vector<TextureTransform> transforms;
+    /** Per material and MapSlot: the map's placement relative to the mesh's UVs. */
+    std::vector<std::array<glm::mat3, kMapSlots>> maps;
     std::vector<std::string> warnings;
 };
 
 /**
- * The base color textures' transforms of root's materials; a metallic-roughness texture placed
- * otherwise is a warning (its UVs cannot differ: the base color's placement is used).
+ * The placements of root's materials' textures. A map's transform is T_map · T_uvs⁻¹; a map on
+ * another texture coordinate set than the one the mesh's UVs come from keeps that relation on
+ * the mesh's UVs, with a warning naming the material and the map.
  */
 Result<MaterialTransforms> readMaterialTransforms(const nlohmann::json& root);
 

@@ -139,6 +139,15 @@ Result<Image> decodeImage(const std::uint8_t* data, std::size_t size, const std:
     return (*codecs)->decode(data, size, label, format, limits);
 }
 
+EncodedImage encodedImageOf(const std::uint8_t* data, std::size_t size) {
+    if (data == nullptr || size == 0)
+        return {};
+    const std::string format = formatName(data, size, {});
+    if (format != "png" && format != "jpeg")
+        return {};
+    return EncodedImage{"image/" + format, std::vector<std::uint8_t>(data, data + size)};
+}
+
 Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& limits) {
     namespace fs = std::filesystem;
     if (path.empty())

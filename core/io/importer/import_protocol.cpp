@@ -16,7 +16,8 @@
 namespace core::importer {
 
 static_assert(sizeof(FrameHeader) == 16 && sizeof(MeshHeader) == 64 &&
-              sizeof(MaterialHeader) == 24 && sizeof(ImageHeader) == 8);
+              sizeof(MaterialHeader) == 224 && sizeof(ImageHeader) == 8 &&
+              sizeof(TextureSourceHeader) == 8);
 static_assert(sizeof(glm::vec2) == 8 && sizeof(glm::vec3) == 12 && sizeof(glm::vec4) == 16,
               "the arrays travel as their bytes");
 
@@ -27,6 +28,39 @@ constexpr std::size_t kMaxWarnings = 1000;
 constexpr std::uint64_t kMaxMaterials = 1u << 20;
 constexpr std::uint64_t kMaxTextures = 1u << 16;
 constexpr std::size_t kMaxLine = 2000;
+constexpr std::uint32_t kMaxMimeType = 64;
+
+MaterialMap* mapsOf(Material& m, std::size_t k) {
+    MaterialMap* maps[] = {&m.metallicRoughness, &m.normal, &m.occlusion, &m.emissive};
+    return maps[k];
+}
+
+MaterialHeader materialHeader(const Material& m) {
+    MaterialHeader h{};
+    for (int k = 0; k < 4; ++k)
+        h.baseColorFactor[k] = m.baseColorFactor[k];
+    h.baseColorTexture = m.baseColorTexture;
+    h.metallicFactor = m.metallicFactor;
+    h.roughnessFactor = m.roughnessFactor;
+    h.normalScale = m.normalScale;
+    h.occlusionStrength = m.occlusionStrength;
+    for (int k = 0; k < 3; ++k)
+        h.emissiveFactor[k] = m.emissiveFactor[k];
+    h.emissiveStrength = m.emissiveStrength;
+    h.alphaCutoff = m.alphaCutoff;
+    Material copy = m;
+    for (std::size_t k = 0; k < 4; ++k) {
+        const MaterialMap& map = *mapsOf(copy, k);
+        h.maps[k].texture = map.texture;
+        for (int c = 0; c < 3; ++c)
+            for (int r = 0; r < 3; ++r)
+                h.maps[k].uvTransform[c * 3 + r] = map.uvTransform[c][r];
+    }
+    h.alphaMode = static_cast<std::uint8_t>(m.alphaMode);
+    h.doubleSided = m.doubleSided ? 1 : 0;
+    h.nameLength = static_cast<std::uint32_t>(m.name.size());
+    return h;
+}
 
 template <typename T> std::size_t bytesOf(const std::vector<T>& v) {
     return v.size() * sizeof(T);
@@ -67,10 +101,10 @@ std::string cleanText(std::string text) {
 
 std::uint64_t maxOutputBytes(const LoadLimits& limits) {
     // Positions, normals, colours and UVs per vertex; indices and a material per triangle;
-    // textures worth eight of the largest images; text and materials.
+    // textures worth eight of the largest images, and their kept files; text and materials.
     std::uint64_t bytes = mul(limits.maxVertices, 12 + 12 + 16 + 8);
     bytes = add(bytes, mul(limits.maxTriangles, 12 + 4));
-    bytes = add(bytes, mul(limits.maxImagePixels, 4 * 8));
+    bytes = add(bytes, mul(limits.maxImagePixels, 4 * 8 + 4 * 2));
     return add(bytes, 64u << 20);
 }
 
@@ -149,16 +183,25 @@ bool FrameWriter::mesh(const Mesh& mesh) {
     if (!mesh.triangleMaterial.empty())
         frame(Tag::TriangleMaterials, mesh.triangleMaterial.data(), bytesOf(mesh.triangleMaterial));
     for (const Material& m : mesh.materials) {
-        const MaterialHeader mh{
-            {m.baseColorFactor.r, m.baseColorFactor.g, m.baseColorFactor.b, m.baseColorFactor.a},
-            m.baseColorTexture,
-            static_cast<std::uint32_t>(m.name.size())};
+        const MaterialHeader mh = materialHeader(m);
         frame(Tag::Material, &mh, sizeof mh, m.name.data(), m.name.size());
     }
     for (const Image& image : mesh.textures) {
         const ImageHeader ih{static_cast<std::uint32_t>(image.width),
                              static_cast<std::uint32_t>(image.height)};
         frame(Tag::Texture, &ih, sizeof ih, image.rgba.data(), image.rgba.size());
+    }
+    for (std::size_t t = 0; t < mesh.textureSources.size() && t < mesh.textures.size(); ++t) {
+        const EncodedImage& source = mesh.textureSources[t];
+        if (source.empty() || source.mimeType.size() > kMaxMimeType)
+            continue;
+        const TextureSourceHeader sh{static_cast<std::uint32_t>(t),
+                                     static_cast<std::uint32_t>(source.mimeType.size())};
+        std::vector<std::uint8_t> head(sizeof sh + source.mimeType.size());
+        std::memcpy(head.data(), &sh, sizeof sh);
+        std::memcpy(head.data() + sizeof sh, source.mimeType.data(), source.mimeType.size());
+        frame(Tag::TextureSource, head.data(), head.size(), source.bytes.data(),
+              source.bytes.size());
     }
     return frame(Tag::MeshEnd, nullptr, 0);
 }
@@ -286,6 +329,8 @@ private:
             return materialFrame(length);
         case Tag::Texture:
             return textureFrame(length);
+        case Tag::TextureSource:
+            return textureSourceFrame(length);
         case Tag::MeshEnd:
             return meshEnd(length);
         }
@@ -370,17 +415,70 @@ private:
         if (h.nameLength != length - sizeof h)
             return fail("it sent a malformed material");
         Material m;
+        if (!readMaterial(h, m))
+            return false;
+        m.name.resize(h.nameLength);
+        if (h.nameLength > 0 && !m_source.read(m.name.data(), m.name.size()))
+            return false;
+        m_mesh->materials.push_back(std::move(m));
+        return true;
+    }
+
+    /** The fields of h; texture indices below 0 are none (Mesh::validate() checks the rest). */
+    bool readMaterial(const MaterialHeader& h, Material& m) {
         m.baseColorFactor = glm::vec4(h.baseColorFactor[0], h.baseColorFactor[1],
                                       h.baseColorFactor[2], h.baseColorFactor[3]);
         for (int k = 0; k < 4; ++k)
             if (!std::isfinite(m.baseColorFactor[k]))
                 return fail("it sent a material colour that is not a number");
         m.baseColorTexture = h.baseColorTexture < 0 ? -1 : h.baseColorTexture;
-        m.name.resize(h.nameLength);
-        if (h.nameLength > 0 && !m_source.read(m.name.data(), m.name.size()))
-            return false;
-        m_mesh->materials.push_back(std::move(m));
+        m.metallicFactor = h.metallicFactor;
+        m.roughnessFactor = h.roughnessFactor;
+        m.normalScale = h.normalScale;
+        m.occlusionStrength = h.occlusionStrength;
+        m.emissiveFactor = glm::vec3(h.emissiveFactor[0], h.emissiveFactor[1], h.emissiveFactor[2]);
+        m.emissiveStrength = h.emissiveStrength;
+        m.alphaCutoff = h.alphaCutoff;
+        bool finite = std::isfinite(m.metallicFactor) && std::isfinite(m.roughnessFactor) &&
+                      std::isfinite(m.normalScale) && std::isfinite(m.occlusionStrength) &&
+                      std::isfinite(m.emissiveStrength) && std::isfinite(m.alphaCutoff);
+        for (int k = 0; k < 3; ++k)
+            finite = finite && std::isfinite(m.emissiveFactor[k]);
+        for (std::size_t k = 0; k < 4; ++k) {
+            MaterialMap& map = *mapsOf(m, k);
+            map.texture = h.maps[k].texture < 0 ? -1 : h.maps[k].texture;
+            for (int c = 0; c < 3; ++c)
+                for (int r = 0; r < 3; ++r) {
+                    map.uvTransform[c][r] = h.maps[k].uvTransform[c * 3 + r];
+                    finite = finite && std::isfinite(map.uvTransform[c][r]);
+                }
+        }
+        if (!finite)
+            return fail("it sent a material factor that is not a number");
+        if (h.alphaMode > static_cast<std::uint8_t>(AlphaMode::Blend) || h.doubleSided > 1)
+            return fail("it sent a malformed material");
+        m.alphaMode = static_cast<AlphaMode>(h.alphaMode);
+        m.doubleSided = h.doubleSided != 0;
         return true;
+    }
+
+    bool textureSourceFrame(std::uint64_t length) {
+        TextureSourceHeader h{};
+        if (!m_mesh || length < sizeof h)
+            return fail("it sent a malformed texture file");
+        if (!m_source.read(&h, sizeof h))
+            return false;
+        if (h.texture >= m_mesh->textures.size() || h.mimeTypeLength > kMaxMimeType ||
+            length - sizeof h <= h.mimeTypeLength)
+            return fail("it sent a malformed texture file");
+        m_mesh->textureSources.resize(m_mesh->textures.size());
+        EncodedImage& out = m_mesh->textureSources[h.texture];
+        if (!out.empty())
+            return fail("it sent a texture's file twice");
+        out.mimeType.resize(h.mimeTypeLength);
+        out.bytes.resize(static_cast<std::size_t>(length - sizeof h - h.mimeTypeLength));
+        return (h.mimeTypeLength == 0 || m_source.read(out.mimeType.data(), out.mimeType.size())) &&
+               m_source.read(out.bytes.data(), out.bytes.size());
     }
 
     bool textureFrame(std::uint64_t length) {
@@ -405,6 +503,8 @@ private:
                               m_mesh->textures.size() == m_header.textures;
         if (!complete)
             return fail("it ended a mesh before sending all of it");
+        if (!m_mesh->textureSources.empty())
+            m_mesh->textureSources.resize(m_mesh->textures.size());
         m_mesh->warnings = m_received.warnings;
         m_received.mesh = std::move(m_mesh);
         m_done = true;

@@ -36,6 +36,7 @@ enum class Tag : std::uint32_t {
     Texture = 12,           // ImageHeader, then RGBA8 rows
     MeshEnd = 13,           // empty: the mesh is complete
     Image = 14,             // ImageHeader, then RGBA8 rows (an image file's pixels)
+    TextureSource = 15,     // TextureSourceHeader, the MIME type, then the file's bytes
 };
 
 struct FrameHeader {
@@ -56,10 +57,33 @@ struct MeshHeader {
     std::uint64_t textures;
 };
 
+/** A MaterialMap: its texture (-1: none) and uvTransform, column-major. */
+struct MapHeader {
+    std::int32_t texture;
+    float uvTransform[9];
+};
+
 struct MaterialHeader {
     float baseColorFactor[4];
     std::int32_t baseColorTexture;
+    float metallicFactor;
+    float roughnessFactor;
+    float normalScale;
+    float occlusionStrength;
+    float emissiveFactor[3];
+    float emissiveStrength;
+    float alphaCutoff;
+    MapHeader maps[4]; // metallicRoughness, normal, occlusion, emissive
+    std::uint8_t alphaMode;
+    std::uint8_t doubleSided;
+    std::uint8_t reserved[2];
     std::uint32_t nameLength;
+};
+
+/** The kept file of a texture sent before (Mesh::textureSources); at most one per texture. */
+struct TextureSourceHeader {
+    std::uint32_t texture;
+    std::uint32_t mimeTypeLength;
 };
 
 struct ImageHeader {

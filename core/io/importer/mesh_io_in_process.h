@@ -125,6 +125,11 @@ protected:
      * from the triangles.
      */
     void finish(Mesh& out);
+    /**
+     * Appends a decoded texture and, when file (its encoded bytes, or null) is PNG or JPEG, keeps
+     * those bytes beside it (Mesh::textureSources); returns the texture's index.
+     */
+    int addTexture(Image image, const std::uint8_t* file = nullptr, std::size_t fileSize = 0);
 
     Mesh m_mesh;
     Error m_error;

@@ -3,6 +3,7 @@
 // is read and written by core/document/project_state.h).
 #include "core/io/project/project_file.h"
 
+#include <algorithm>
 #include <exception>
 #include <filesystem>
 #include <new>
@@ -114,19 +115,19 @@ Status saveProject(const std::string& path, const Mesh& paintedMesh, const Proje
     try {
         additions.extras = {{kProjectExtrasKey, projectStateToJson(state)}};
         if (const SavedPaintLayers* layers = state.paintLayers.get()) {
+            // The pages are the painted mesh's base colour textures, its first ones.
+            std::size_t pageCount = 0;
+            for (const Material& m : paintedMesh.materials)
+                pageCount = std::max(pageCount, std::size_t(m.baseColorTexture + 1));
             std::vector<PageSize> pages;
-            for (const Image& texture : paintedMesh.textures)
-                pages.push_back({texture.width, texture.height});
+            for (std::size_t p = 0; p < pageCount && p < paintedMesh.textures.size(); ++p)
+                pages.push_back({paintedMesh.textures[p].width, paintedMesh.textures[p].height});
             Json& json = additions.extras[kProjectExtrasKey]["paint_layers"];
             if (Status images = addPaintLayerImages(*layers, pages, json, additions.attachments);
                 !images)
                 return Error{path + ": " + images.error(), images.errorKind()};
             additions.attachmentsAt =
                 Json::json_pointer("/" + std::string(kProjectExtrasKey) + "/paint_layers/images");
-            // The painted mesh's texture p is page p: its metallic-roughness goes beside it.
-            additions.metallicRoughness = layers->metallicRoughness;
-            for (const Material& m : paintedMesh.materials)
-                additions.materialMetallicRoughness.push_back(m.baseColorTexture);
         }
         if (Status tip =
                 addBrushTipImage(state.brush, additions.extras[kProjectExtrasKey], additions);

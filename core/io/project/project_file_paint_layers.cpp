@@ -178,6 +178,42 @@ private:
     const std::vector<Image>& m_images;
 };
 
+/**
+ * The roughness and metallic base of saved's pages where it differs from the composite. A
+ * project written before they were kept has none: its base was flat (rough, not metallic).
+ */
+Status readBaseMetallicRoughness(const Json& paintLayers, const std::vector<PageSize>& pages,
+                                 const std::vector<Image>& images, SavedPaintLayers& saved) {
+    saved.baseMetallicRoughness.assign(pages.size(), Image{});
+    const auto entries = paintLayers.find("base_metallic_roughness");
+    if (entries == paintLayers.end()) {
+        for (std::size_t p = 0; p < pages.size(); ++p) {
+            Image& flat = saved.baseMetallicRoughness[p];
+            flat = Image{pages[p].width, pages[p].height, {}};
+            flat.rgba.resize(std::size_t(flat.width) * std::size_t(flat.height) * 4);
+            for (std::size_t i = 0; i < flat.rgba.size(); i += 4) {
+                flat.rgba[i] = flat.rgba[i + 2] = 0;
+                flat.rgba[i + 1] = flat.rgba[i + 3] = 255;
+            }
+        }
+        return {};
+    }
+    if (!entries->is_array())
+        return Error{"extras.layerpaint.paint_layers.base_metallic_roughness is not an array"};
+    for (const Json& entry : *entries) {
+        const auto p =
+            entry.is_object() ? whole(entry, "page", 0, (long long)pages.size() - 1) : std::nullopt;
+        const auto img = entry.is_object() ? whole(entry, "image", 0, (long long)images.size() - 1)
+                                           : std::nullopt;
+        if (!p || !img || images[std::size_t(*img)].width != pages[std::size_t(*p)].width ||
+            images[std::size_t(*img)].height != pages[std::size_t(*p)].height)
+            return Error{"the roughness and metallic under the paint layers do not fit the "
+                         "model's textures"};
+        saved.baseMetallicRoughness[std::size_t(*p)] = images[std::size_t(*img)];
+    }
+    return {};
+}
+
 } // namespace
 
 Status addPaintLayerImages(const SavedPaintLayers& saved, const std::vector<PageSize>& pages,
@@ -219,16 +255,30 @@ Status addPaintLayerImages(const SavedPaintLayers& saved, const std::vector<Page
         base.push_back({{"page", p}, {"image", attachments.size() - 1}});
     }
     paintLayers["base"] = std::move(base);
+    Json baseMr = Json::array();
+    for (std::size_t p = 0; p < saved.baseMetallicRoughness.size(); ++p) {
+        if (saved.baseMetallicRoughness[p].empty())
+            continue;
+        Result<Bytes> png = encodeImage(saved.baseMetallicRoughness[p], ExportFormat::Png8);
+        if (!png)
+            return Error{"the roughness and metallic base of texture " + std::to_string(p) +
+                             " cannot be encoded as PNG (" + png.error() + ")",
+                         png.errorKind()};
+        attachments.push_back(std::move(png).value());
+        baseMr.push_back({{"page", p}, {"image", attachments.size() - 1}});
+    }
+    paintLayers["base_metallic_roughness"] = std::move(baseMr);
     return {};
 }
 
 Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
                             const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved,
                             GlbImageLoader loadImages) {
-    // The page sizes the planes were saved with are the model's textures, in order.
+    // The page sizes the planes were saved with are the model's first textures (its base colour
+    // textures), in order; its other maps' textures follow them.
     std::vector<PageSize> pages;
     const auto sizes = paintLayers.find("pages");
-    if (sizes == paintLayers.end() || !sizes->is_array() || sizes->size() != mesh.textures.size())
+    if (sizes == paintLayers.end() || !sizes->is_array() || sizes->size() > mesh.textures.size())
         return Error{"the paint layers' textures do not match the model's (" +
                      std::to_string(mesh.textures.size()) + " textures)"};
     for (std::size_t p = 0; p < sizes->size(); ++p) {
@@ -294,9 +344,11 @@ Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
                 images[std::size_t(*img)].height != pages[std::size_t(*p)].height)
                 return Error{"the base under the paint layers does not fit the model's textures"};
             mesh.textures[std::size_t(*p)] = images[std::size_t(*img)];
+            if (std::size_t(*p) < mesh.textureSources.size())
+                mesh.textureSources[std::size_t(*p)] = {}; // no longer the file's image
         }
     }
-    return {};
+    return readBaseMetallicRoughness(paintLayers, pages, images, saved);
 }
 
 } // namespace core

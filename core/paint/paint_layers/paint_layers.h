@@ -192,6 +192,10 @@ public:
     }
     /** The base's metallic-roughness texels of page (empty without material channels). */
     const std::vector<std::uint8_t>& baseMetallicRoughness(std::uint32_t page) const;
+    /** Writable, as baseColor(); only with material channels. */
+    std::vector<std::uint8_t>& baseMetallicRoughness(std::uint32_t page) {
+        return m_baseMetallicRoughness.at(page);
+    }
     /**
      * The tiles (TiledPlane tiling, plane 0) where layer can change the composite: every tile
      * for a fill layer, else the tiles its channel planes hold.

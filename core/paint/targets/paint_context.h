@@ -447,4 +447,14 @@ inline bool normalizedWeights(const Mesh& mesh, std::uint32_t triangle, glm::vec
     return true;
 }
 
+/**
+ * The roughness and metallic page `page` (width × height) of a texture target starts with
+ * (texture_target_material.cpp): per texel, its material's metallic-roughness map (under the
+ * map's placement, G roughness, B metallic, linear) times the material's factors, or the factors
+ * alone; texels outside every chart take the page's first material's. materialPage: each
+ * material's page.
+ */
+Image startingMetallicRoughness(const Mesh& mesh, const std::vector<std::uint32_t>& materialPage,
+                                std::uint32_t page, int width, int height);
+
 } // namespace core

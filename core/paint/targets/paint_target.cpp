@@ -5,6 +5,7 @@
 // paint_context.cpp.
 #include "core/paint/targets/paint_target.h"
 
+#include <map>
 #include <utility>
 
 #include "core/paint/targets/paint_context.h"
@@ -39,6 +40,38 @@ const Image& PaintTarget::metallicRoughnessPage(std::size_t i) const {
     return PaintTarget::page(i);
 }
 
+namespace {
+
+/** Appends the textures of painted's maps other than the base colour (indices of source's). */
+class MapKeeper {
+public:
+    MapKeeper(const Mesh& source, Mesh& painted) : m_source(source), m_painted(painted) {
+        m_painted.textureSources.assign(m_painted.textures.size(), EncodedImage{});
+    }
+    /** Appends image (no kept file); returns its index. */
+    int add(const Image& image, const EncodedImage* file = nullptr) {
+        m_painted.textures.push_back(image);
+        m_painted.textureSources.push_back(file ? *file : EncodedImage{});
+        return int(m_painted.textures.size() - 1);
+    }
+    void keep(MaterialMap& map) {
+        if (map.texture < 0)
+            return;
+        const auto [it, added] = m_kept.emplace(map.texture, -1);
+        if (added)
+            it->second = add(m_source.textures[std::size_t(map.texture)],
+                             m_source.textureSource(map.texture));
+        map.texture = it->second;
+    }
+
+private:
+    const Mesh& m_source;
+    Mesh& m_painted;
+    std::map<int, int> m_kept; // source texture -> painted texture
+};
+
+} // namespace
+
 Mesh PaintTarget::paintedMesh() const {
     Mesh painted = mesh();
     painted.materials = drawMaterials();
@@ -47,6 +80,23 @@ Mesh PaintTarget::paintedMesh() const {
         for (std::size_t i = 0; i < pageCount(); ++i)
             painted.textures.push_back(page(i));
         painted.colors.clear(); // baked into the pages
+        MapKeeper keeper(mesh(), painted);
+        std::map<std::size_t, int> painting; // page -> its painted metallic-roughness
+        for (Material& m : painted.materials) {
+            keeper.keep(m.normal);
+            keeper.keep(m.occlusion);
+            keeper.keep(m.emissive);
+            const auto p = std::size_t(m.baseColorTexture);
+            if (m.baseColorTexture < 0 || p >= pageCount() || !metallicRoughnessPainted(p)) {
+                keeper.keep(m.metallicRoughness);
+                continue;
+            }
+            const auto [it, added] = painting.emplace(p, -1);
+            if (added)
+                it->second = keeper.add(metallicRoughnessPage(p));
+            m.metallicRoughness = MaterialMap{it->second, glm::mat3(1.0f)};
+            m.metallicFactor = m.roughnessFactor = 1.0f;
+        }
     }
     if (const std::span<const glm::vec4> colors = vertexColors(); !colors.empty())
         painted.colors.assign(colors.begin(), colors.end());

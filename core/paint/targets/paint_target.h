@@ -203,7 +203,16 @@ public:
     virtual const Image& metallicRoughnessPage(std::size_t i) const;
     /** The painted vertex colours (linear RGBA, one per vertex); empty for a texture target. */
     virtual std::span<const glm::vec4> vertexColors() const { return {}; }
-    /** The mesh as painted: drawMaterials() with the pages as its textures, or its colours. */
+    /**
+     * Whether page i's roughness or metallic differ from the base's, which the materials'
+     * metallic-roughness maps and factors give (or a reopened project's saved base).
+     */
+    virtual bool metallicRoughnessPainted(std::size_t) const { return false; }
+    /**
+     * The mesh as painted: drawMaterials() with the pages as its first textures (and its other
+     * maps' textures after them, kept files and all; a page's roughness and metallic, where
+     * painted, as its materials' metallic-roughness map with factors 1), or its colours.
+     */
     Mesh paintedMesh() const;
 
 protected:
@@ -278,6 +287,7 @@ public:
     std::size_t pageCount() const override { return m_pages.size(); }
     const Image& page(std::size_t i) const override;
     const Image& metallicRoughnessPage(std::size_t i) const override;
+    bool metallicRoughnessPainted(std::size_t i) const override;
     /** The base's texels of page i (RGBA8): painting with no paint layer selected goes here. */
     const std::vector<std::uint8_t>& basePixels(std::size_t i) const;
     /** Page i as created (what the eraser restores on the base). */

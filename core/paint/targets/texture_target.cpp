@@ -254,23 +254,20 @@ void padPages(int padding, bool bakeColors, std::vector<TextureTarget::Page>& pa
 }
 
 /**
- * The paint layer stack whose base is the pages' texels (which move there): no roughness or
- * metal painted yet (rough, not metallic, as a surface without a metallic-roughness texture
- * usually is meant).
+ * The paint layer stack whose base is the pages' texels (which move there), with roughness and
+ * metallic starting from the materials' metallic-roughness maps and factors.
  */
-std::unique_ptr<PaintLayerStack> baseOfPages(std::vector<TextureTarget::Page>& pages) {
+std::unique_ptr<PaintLayerStack> baseOfPages(const Mesh& mesh,
+                                             const std::vector<std::uint32_t>& materialPage,
+                                             std::vector<TextureTarget::Page>& pages) {
     std::vector<PageSize> sizes;
     std::vector<std::vector<std::uint8_t>> baseColor, baseMr;
-    for (TextureTarget::Page& page : pages) {
+    for (std::size_t p = 0; p < pages.size(); ++p) {
+        TextureTarget::Page& page = pages[p];
         sizes.push_back({page.image.width, page.image.height});
-        baseMr.emplace_back(page.image.rgba.size());
-        for (std::size_t i = 0; i < baseMr.back().size(); i += 4) {
-            std::uint8_t* mr = &baseMr.back()[i];
-            mr[0] = 0;
-            mr[1] = 255;
-            mr[2] = 0;
-            mr[3] = 255;
-        }
+        baseMr.push_back(startingMetallicRoughness(mesh, materialPage, std::uint32_t(p),
+                                                   page.image.width, page.image.height)
+                             .rgba);
         baseColor.push_back(std::move(page.image.rgba));
         page.image.rgba.clear();
     }
@@ -319,7 +316,7 @@ TextureTarget::create(std::shared_ptr<const Mesh> mesh,
     makePages(*mesh, options, pages, target->m_materialPage, target->m_drawMaterials);
     coverPages(*mesh, target->m_materialPage, bakeColors, pages);
     padPages(target->m_padding, bakeColors, pages);
-    target->m_stack = baseOfPages(pages);
+    target->m_stack = baseOfPages(*mesh, target->m_materialPage, pages);
 
     std::vector<std::uint32_t> tilesPerPage;
     for (const Page& page : pages)
@@ -397,6 +394,13 @@ std::optional<glm::vec4> TextureTarget::layerColorAt(std::uint32_t triangle,
 
 const Image& TextureTarget::page(std::size_t i) const {
     return m_stack->compositeImage(std::uint32_t(i));
+}
+
+bool TextureTarget::metallicRoughnessPainted(std::size_t i) const {
+    // The base's roughness and metallic are never painted (paint layers hold them), so the
+    // composite differs from the base exactly where a paint layer changes them.
+    const Image& composite = metallicRoughnessPage(i);
+    return !composite.empty() && composite.rgba != m_stack->baseMetallicRoughness(std::uint32_t(i));
 }
 
 const Image& TextureTarget::metallicRoughnessPage(std::size_t i) const {

@@ -3,6 +3,7 @@
 // and the texture formats with roughness and metallic images beside the base colour.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -109,8 +110,12 @@ TEST(ChannelExport, ObjNamesRoughnessAndMetallicInTheMtl) {
     ASSERT_TRUE(core::exportMesh(plainPath, core::ExportFormat::Obj, p.mesh).ok());
     core::Result<core::Mesh> plain = core::loadMesh(plainPath);
     ASSERT_TRUE(plain.ok()) << plain.error();
-    ASSERT_EQ(back->textures.size(), 1u);
+    // The base colour first, then the roughness and metallic read back as one texture.
+    ASSERT_EQ(back->textures.size(), 2u);
     ASSERT_EQ(plain->textures.size(), 1u);
+    EXPECT_TRUE(
+        std::any_of(back->materials.begin(), back->materials.end(),
+                    [](const core::Material& m) { return m.metallicRoughness.texture == 1; }));
     EXPECT_TRUE(back->textures[0].rgba == plain->textures[0].rgba);
 }
 

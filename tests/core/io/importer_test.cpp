@@ -470,6 +470,29 @@ void expectSameMesh(const core::Mesh& a, const core::Mesh& b) {
         EXPECT_EQ(a.materials[i].name, b.materials[i].name);
         EXPECT_EQ(a.materials[i].baseColorFactor, b.materials[i].baseColorFactor);
         EXPECT_EQ(a.materials[i].baseColorTexture, b.materials[i].baseColorTexture);
+        const core::Material &ma = a.materials[i], &mb = b.materials[i];
+        EXPECT_EQ(ma.metallicFactor, mb.metallicFactor);
+        EXPECT_EQ(ma.roughnessFactor, mb.roughnessFactor);
+        EXPECT_EQ(ma.normalScale, mb.normalScale);
+        EXPECT_EQ(ma.occlusionStrength, mb.occlusionStrength);
+        EXPECT_EQ(ma.emissiveFactor, mb.emissiveFactor);
+        EXPECT_EQ(ma.emissiveStrength, mb.emissiveStrength);
+        EXPECT_EQ(ma.alphaMode, mb.alphaMode);
+        EXPECT_EQ(ma.alphaCutoff, mb.alphaCutoff);
+        EXPECT_EQ(ma.doubleSided, mb.doubleSided);
+        const core::MaterialMap* mapsA[] = {&ma.metallicRoughness, &ma.normal, &ma.occlusion,
+                                            &ma.emissive};
+        const core::MaterialMap* mapsB[] = {&mb.metallicRoughness, &mb.normal, &mb.occlusion,
+                                            &mb.emissive};
+        for (std::size_t k = 0; k < 4; ++k) {
+            EXPECT_EQ(mapsA[k]->texture, mapsB[k]->texture) << "map " << k;
+            EXPECT_EQ(mapsA[k]->uvTransform, mapsB[k]->uvTransform) << "map " << k;
+        }
+    }
+    ASSERT_EQ(a.textureSources.size(), b.textureSources.size());
+    for (std::size_t i = 0; i < a.textureSources.size(); ++i) {
+        EXPECT_EQ(a.textureSources[i].mimeType, b.textureSources[i].mimeType);
+        EXPECT_TRUE(a.textureSources[i].bytes == b.textureSources[i].bytes);
     }
     ASSERT_EQ(a.textures.size(), b.textures.size());
     for (std::size_t i = 0; i < a.textures.size(); ++i) {
@@ -502,6 +525,24 @@ TEST(Importer, FilesLoadAsInProcess) {
         EXPECT_EQ(reports.back(), 1.0);
         for (double f : reports)
             EXPECT_TRUE(f >= 0.0 && f <= 1.0) << f;
+    }
+}
+
+TEST(Importer, TheWholeMaterialCrossesThePipe) {
+    // Every factor, map, placement and kept file (tests/data/material, made by
+    // scripts/make-material-test-data.py), and a real file with a JPEG normal map.
+    for (const std::string& path :
+         {std::string(LAYERPAINT_TEST_DATA) + "/material/materials.glb",
+          (kModels / "glTF2/ClearCoat-glTF/ClearCoatTest.gltf").string()}) {
+        if (!fs::exists(path))
+            continue;
+        SCOPED_TRACE(path);
+        const core::Result<core::Mesh> outside = core::loadMesh(path);
+        const core::Result<core::Mesh> inside = core::loadMeshInProcess(path);
+        ASSERT_TRUE(outside.ok()) << outside.error();
+        ASSERT_TRUE(inside.ok()) << inside.error();
+        EXPECT_FALSE(outside->textureSources.empty());
+        expectSameMesh(*outside, *inside);
     }
 }
 
