@@ -29,7 +29,9 @@ install_validator() {
     [[ "${1:-}" == "--test" ]] || return 0
     if ! NODE_PATH="$(npm root -g)" node -e "require('gltf-validator')" 2>/dev/null; then
         echo "Installing: gltf-validator (npm)"
-        npm install -g --no-fund --no-audit gltf-validator
+        # Without the registry the validator checks are skipped (they say so); nothing else needs it.
+        npm install -g --no-fund --no-audit gltf-validator ||
+            echo "gltf-validator could not be installed: the tests that run it will be skipped" >&2
     fi
 }
 
