@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // measureUvCoverage(): the UV triangles' area, and their overlap counted on a grid of cell
-// centres (each triangle moved to the unit square its lowest corner is in, the grid repeating as
-// a texture does), a shared edge's centres counted for one of its two triangles only.
+// centres per texture page (each triangle moved to the unit square its lowest corner is in, the
+// grid repeating as a texture does), a shared edge's centres counted for one of its two
+// triangles only. Materials painting different textures do not overlap.
 #include "core/model/uv_coverage.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -53,15 +55,32 @@ std::uint64_t countCells(const UvTriangle& tri, std::vector<std::uint8_t>& count
     return visits;
 }
 
+/**
+ * The grid a triangle's material paints into: one per base colour texture (materials sharing a
+ * texture share a page), one for the materials without; past kMaxGrids textures the last one.
+ */
+std::vector<std::uint8_t>& gridOf(const Mesh& mesh, std::size_t triangle,
+                                  std::map<int, std::vector<std::uint8_t>>& grids) {
+    constexpr std::size_t kMaxGrids = 64;
+    const std::size_t m =
+        triangle < mesh.triangleMaterial.size() ? mesh.triangleMaterial[triangle] : SIZE_MAX;
+    int texture = m < mesh.materials.size() ? mesh.materials[m].baseColorTexture : -1;
+    if (!grids.contains(texture) && grids.size() >= kMaxGrids)
+        texture = grids.rbegin()->first;
+    std::vector<std::uint8_t>& counts = grids[texture];
+    counts.resize(std::size_t(kGrid) * kGrid, 0);
+    return counts;
+}
+
 } // namespace
 
 UvCoverage measureUvCoverage(const Mesh& mesh) {
     UvCoverage coverage;
     if (!mesh.hasUvs())
         return coverage;
-    std::vector<std::uint8_t> counts(std::size_t(kGrid) * kGrid, 0);
+    std::map<int, std::vector<std::uint8_t>> grids;
     std::uint64_t visits = 0;
-    const std::uint64_t maxVisits = kMaxVisitsPerCell * counts.size();
+    const std::uint64_t maxVisits = kMaxVisitsPerCell * std::uint64_t(kGrid) * kGrid;
     coverage.triangles = mesh.triangleCount();
     for (std::size_t t = 0; t < coverage.triangles; ++t) {
         glm::dvec2 uv[3];
@@ -83,10 +102,14 @@ UvCoverage measureUvCoverage(const Mesh& mesh) {
         UvTriangle tri;
         for (int k = 0; k < 3; ++k)
             tri.p[k] = (uv[k] - shift) * double(kGrid);
-        visits += countCells(tri, counts);
+        visits += countCells(tri, gridOf(mesh, t, grids));
     }
-    const auto covered = std::count_if(counts.begin(), counts.end(), [](auto c) { return c > 0; });
-    const auto twice = std::count(counts.begin(), counts.end(), std::uint8_t(2));
+    std::size_t covered = 0, twice = 0;
+    for (const auto& [texture, counts] : grids) {
+        covered +=
+            std::size_t(std::count_if(counts.begin(), counts.end(), [](auto c) { return c > 0; }));
+        twice += std::size_t(std::count(counts.begin(), counts.end(), std::uint8_t(2)));
+    }
     coverage.overlap = covered > 0 ? double(twice) / double(covered) : 0.0;
     return coverage;
 }

@@ -18,7 +18,9 @@ struct UvCoverage {
     std::size_t triangles = 0;
     /**
      * Of the cells of a kUvCoverageGrid² grid over the (repeating) unit square whose centre a
-     * triangle covers, the fraction covered by two triangles or more; 0 without such cells.
+     * triangle covers, the fraction covered by two triangles or more; 0 without such cells. One
+     * grid per base colour texture (and one for materials without): triangles of materials that
+     * paint different textures never overlap.
      */
     double overlap = 0.0;
 };
