@@ -46,7 +46,6 @@ constexpr int kUnsignedInt = 5125;
 constexpr int kFloat = 5126;
 constexpr int kArrayBuffer = 34962;
 constexpr int kElementArrayBuffer = 34963;
-constexpr std::uint64_t kMaxJsonBytes = 256ull << 20;
 
 std::size_t padded4(std::size_t n) {
     return (n + 3) & ~std::size_t{3};
@@ -545,92 +544,6 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
     return parts;
 }
 
-// ---------------------------------------------------------------------------------------------
-// Reading extras
-
-/** The glTF JSON of path and, for a binary file, where its BIN chunk's data is. */
-struct GltfRoot {
-    Json root;
-    std::uint64_t binOffset = 0, binLength = 0; // 0, 0: no BIN chunk
-};
-
-Result<GltfRoot> readRoot(const std::string& path) {
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec))
-        return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
-                     ErrorKind::Io};
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (ec)
-        return Error{"cannot be read (" + ec.message() + ")", ErrorKind::Io};
-    if (size == 0)
-        return Error{"is empty"};
-    std::ifstream in(path, std::ios::binary);
-    if (!in)
-        return Error{"cannot be read", ErrorKind::Io};
-    std::uint8_t header[glb::kHeadBytes] = {};
-    const auto headSize = std::min<std::uint64_t>(glb::kHeadBytes, size);
-    in.read(reinterpret_cast<char*>(header), static_cast<std::streamsize>(headSize));
-    const std::span<const std::uint8_t> head(header, static_cast<std::size_t>(headSize));
-    std::uint64_t jsonOffset = 0, jsonLength = size;
-    if (glb::hasMagic(head)) {
-        Result<glb::Layout> layout = glb::readHead(head, size);
-        if (!layout)
-            return layout.takeError();
-        jsonOffset = layout->jsonOffset;
-        jsonLength = layout->jsonLength;
-    }
-    if (jsonLength > kMaxJsonBytes)
-        return Error{"the glTF JSON is too large (" + std::to_string(jsonLength) + " bytes)"};
-    std::string text(static_cast<std::size_t>(jsonLength), '\0');
-    in.clear();
-    in.seekg(static_cast<std::streamoff>(jsonOffset));
-    if (!in.read(text.data(), static_cast<std::streamsize>(jsonLength)))
-        return Error{"cannot be read", ErrorKind::Io};
-    if (jsonNestingTooDeep(text))
-        return Error{"the JSON is nested too deeply"};
-    Json root;
-    try {
-        root = Json::parse(text);
-    } catch (const Json::exception& e) {
-        std::string what = e.what();
-        if (const std::size_t p = what.find("] "); p != std::string::npos)
-            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
-        return Error{"is not valid glTF JSON (" + what + ")"};
-    }
-    if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
-        return Error{"is not a glTF file (no asset)"};
-    GltfRoot out;
-    const std::uint64_t binHead = jsonOffset + jsonLength;
-    if (glb::hasMagic(head) && binHead + 8 <= size) {
-        std::uint8_t chunk[8] = {};
-        in.seekg(static_cast<std::streamoff>(binHead));
-        if (in.read(reinterpret_cast<char*>(chunk), 8)) {
-            std::uint32_t length = 0, type = 0;
-            std::memcpy(&length, chunk, 4);
-            std::memcpy(&type, chunk + 4, 4);
-            if (type == glb::kChunkBin && binHead + 8 + length <= size) {
-                out.binOffset = binHead + 8;
-                out.binLength = length;
-            }
-        }
-    }
-    out.root = std::move(root);
-    return out;
-}
-
-Result<Json> readExtras(const std::string& path) {
-    Result<GltfRoot> gltf = readRoot(path);
-    if (!gltf)
-        return gltf.takeError();
-    const Json& asset = gltf->root["asset"];
-    const auto it = asset.find("extras");
-    if (it == asset.end())
-        return Json::object();
-    if (!it->is_object())
-        return Error{"asset.extras is not a JSON object"};
-    return *it;
-}
-
 } // namespace
 
 Result<std::vector<std::uint8_t>> encodeGlb(const Mesh& mesh, const nlohmann::json& extras,
@@ -678,79 +591,6 @@ Status saveGlbWith(const std::string& path, const Mesh& mesh, const GlbAdditions
         return Status(Error{path + ": not enough memory to save the file"});
     } catch (const std::exception& e) {
         return Status(Error{path + ": cannot be saved (" + std::string(e.what()) + ")"});
-    }
-}
-
-Result<nlohmann::json> readGlbExtras(const std::string& path) {
-    try {
-        Result<Json> extras = readExtras(path);
-        if (!extras)
-            return Error{path + ": " + extras.error(), extras.errorKind()};
-        return extras;
-    } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to read the file"};
-    } catch (const std::exception& e) {
-        return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
-    }
-}
-
-namespace {
-
-Result<std::vector<Bytes>> readViews(const std::string& path, const std::vector<int>& wanted,
-                                     std::uint64_t maxBytes) {
-    Result<GltfRoot> gltf = readRoot(path);
-    if (!gltf)
-        return gltf.takeError();
-    const Json& root = gltf->root;
-    const auto views = root.find("bufferViews");
-    std::vector<Bytes> out;
-    std::uint64_t total = 0;
-    std::ifstream in(path, std::ios::binary);
-    for (const int v : wanted) {
-        const std::string name = "buffer view " + std::to_string(v);
-        if (views == root.end() || !views->is_array() || v < 0 || std::size_t(v) >= views->size() ||
-            !(*views)[std::size_t(v)].is_object())
-            return Error{name + " is missing"};
-        const Json& view = (*views)[std::size_t(v)];
-        const auto number = [&](const char* key) -> std::optional<std::uint64_t> {
-            const auto it = view.find(key);
-            if (it == view.end())
-                return std::uint64_t{0};
-            if (!it->is_number_unsigned())
-                return std::nullopt;
-            return it->get<std::uint64_t>();
-        };
-        const std::optional<std::uint64_t> offset = number("byteOffset"),
-                                           length = number("byteLength");
-        if (!offset || !length || view.value("buffer", Json(-1)) != Json(0) ||
-            *offset > gltf->binLength || *length > gltf->binLength - *offset)
-            return Error{name + " lies outside the binary chunk"};
-        total += *length;
-        if (total > maxBytes)
-            return Error{"the paint layer images are too large (over " + std::to_string(maxBytes) +
-                         " bytes)"};
-        Bytes bytes(static_cast<std::size_t>(*length));
-        in.seekg(static_cast<std::streamoff>(gltf->binOffset + *offset));
-        if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(*length)))
-            return Error{"cannot be read", ErrorKind::Io};
-        out.push_back(std::move(bytes));
-    }
-    return out;
-}
-
-} // namespace
-
-Result<std::vector<std::vector<std::uint8_t>>>
-readGlbViews(const std::string& path, const std::vector<int>& views, std::uint64_t maxBytes) {
-    try {
-        Result<std::vector<Bytes>> out = readViews(path, views, maxBytes);
-        if (!out)
-            return Error{path + ": " + out.error(), out.errorKind()};
-        return out;
-    } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to read the file"};
-    } catch (const std::exception& e) {
-        return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
     }
 }
 
