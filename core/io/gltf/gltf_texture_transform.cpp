@@ -13,9 +13,9 @@
 
 namespace core::detail::gltf {
 
-namespace {
-
 using Json = nlohmann::json;
+
+namespace {
 
 bool finiteNumber(const Json& v, double& out) {
     if (!v.is_number())
