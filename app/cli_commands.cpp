@@ -75,6 +75,11 @@ int fail(const std::string& message) {
     return 1;
 }
 
+void warn(const std::vector<std::string>& warnings) {
+    for (const std::string& w : warnings)
+        std::cerr << "layerpaint-cli: warning: " << w << '\n';
+}
+
 core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh,
                                   const core::Camera* fallback) {
     const auto size = core::parseViewSize(args.size);

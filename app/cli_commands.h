@@ -82,6 +82,8 @@ makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 
 /** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
 int fail(const std::string& message);
+/** Prints "layerpaint-cli: warning: W" on stderr for each of warnings. */
+void warn(const std::vector<std::string>& warnings);
 
 /**
  * value as the CLI prints it; bytes that are not UTF-8 (a file's material or texture names can

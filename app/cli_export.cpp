@@ -66,6 +66,7 @@ int runExport(const ExportArgs& args) {
 
     const auto exportStart = std::chrono::steady_clock::now();
     core::Result<std::vector<std::string>> files = std::vector<std::string>{};
+    std::vector<std::string> warnings; // what the written file cannot keep
     if (core::isTextureFormat(*format)) {
         const core::Result<core::PaintTarget*> target = doc.ensurePaintTarget();
         if (!target)
@@ -82,7 +83,7 @@ int runExport(const ExportArgs& args) {
         files = core::exportChannelTextures(args.out, *format, pages, metallicRoughness);
     } else {
         // The painted mesh carries its materials' maps, painted roughness and metallic included.
-        files = core::exportMesh(args.out, *format, doc.paintedMesh());
+        files = core::exportMesh(args.out, *format, doc.paintedMesh(), {}, &warnings);
     }
     if (!files)
         return fail(files.error());
@@ -97,8 +98,10 @@ int runExport(const ExportArgs& args) {
             return fail(layers.error());
         files->insert(files->end(), layers->begin(), layers->end());
     }
+    warn(warnings);
     const nlohmann::json out = {{"format", core::exportFormatName(*format)},
                                 {"files", *files},
+                                {"warnings", warnings},
                                 {"load_ms", loadMs},
                                 {"export_ms", msSince(exportStart)}};
     std::cout << jsonText(out, 2) << '\n';

@@ -96,8 +96,10 @@ int runPaint(const PaintArgs& args) {
         return fail(s.error());
     // The same save as the GUI's: a project with the script's end state.
     const core::ProjectState state = core::captureProjectState(doc, base);
-    if (const core::Status s = core::saveProject(args.out, doc, state); !s)
+    std::vector<std::string> warnings;
+    if (const core::Status s = core::saveProject(args.out, doc, state, {}, &warnings); !s)
         return fail(s.error());
+    warn(warnings);
     return 0;
 }
 

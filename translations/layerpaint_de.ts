@@ -584,6 +584,52 @@
     </message>
 </context>
 <context>
+    <name>ui::DepthLayersBuilder</name>
+    <message>
+        <source>not enough memory for the depth layers of this view</source>
+        <translation>nicht genug Speicher für die Tiefenebenen dieser Ansicht</translation>
+    </message>
+    <message>
+        <source>not enough memory for the symmetric views</source>
+        <translation>nicht genug Speicher für die symmetrischen Ansichten</translation>
+    </message>
+</context>
+<context>
+    <name>ui::DepthLayersPanel</name>
+    <message>
+        <source>The whole view, front to back</source>
+        <translation>Die ganze Ansicht, von vorn nach hinten</translation>
+    </message>
+    <message>
+        <source>Depth layer %1
+Fragments: %2
+Regions: %3</source>
+        <translation>Tiefenebene %1
+Fragmente: %2
+Regionen: %3</translation>
+    </message>
+    <message>
+        <source>Show depth layer %1 alone</source>
+        <translation>Tiefenebene %1 allein zeigen</translation>
+    </message>
+    <message>
+        <source>Depth layers appear when the view stays still.</source>
+        <translation>Die Tiefenebenen erscheinen, sobald die Ansicht stillsteht.</translation>
+    </message>
+    <message>
+        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
+        <translation>Klicken Sie auf eine Tiefenebene, um sie allein zu sehen; „Alle Tiefenebenen“ zeigt die ganze Ansicht.</translation>
+    </message>
+    <message>
+        <source>All depth layers
+Depth layers: %1
+Regions: %2</source>
+        <translation>Alle Tiefenebenen
+Tiefenebenen: %1
+Regionen: %2</translation>
+    </message>
+</context>
+<context>
     <name>ui::FillPanel</name>
     <message>
         <source>Region under the cursor</source>
@@ -704,52 +750,6 @@
     <message>
         <source>Saturation and value (square) and hue (bar)</source>
         <translation>Sättigung und Helligkeit (Quadrat) und Farbton (Leiste)</translation>
-    </message>
-</context>
-<context>
-    <name>ui::DepthLayersBuilder</name>
-    <message>
-        <source>not enough memory for the depth layers of this view</source>
-        <translation>nicht genug Speicher für die Tiefenebenen dieser Ansicht</translation>
-    </message>
-    <message>
-        <source>not enough memory for the symmetric views</source>
-        <translation>nicht genug Speicher für die symmetrischen Ansichten</translation>
-    </message>
-</context>
-<context>
-    <name>ui::DepthLayersPanel</name>
-    <message>
-        <source>The whole view, front to back</source>
-        <translation>Die ganze Ansicht, von vorn nach hinten</translation>
-    </message>
-    <message>
-        <source>Depth layer %1
-Fragments: %2
-Regions: %3</source>
-        <translation>Tiefenebene %1
-Fragmente: %2
-Regionen: %3</translation>
-    </message>
-    <message>
-        <source>Show depth layer %1 alone</source>
-        <translation>Tiefenebene %1 allein zeigen</translation>
-    </message>
-    <message>
-        <source>Depth layers appear when the view stays still.</source>
-        <translation>Die Tiefenebenen erscheinen, sobald die Ansicht stillsteht.</translation>
-    </message>
-    <message>
-        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
-        <translation>Klicken Sie auf eine Tiefenebene, um sie allein zu sehen; „Alle Tiefenebenen“ zeigt die ganze Ansicht.</translation>
-    </message>
-    <message>
-        <source>All depth layers
-Depth layers: %1
-Regions: %2</source>
-        <translation>Alle Tiefenebenen
-Tiefenebenen: %1
-Regionen: %2</translation>
     </message>
 </context>
 <context>
@@ -2107,6 +2107,14 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>Could not export the paint layers.</source>
         <translation>Die Malschichten konnten nicht exportiert werden.</translation>
+    </message>
+    <message>
+        <source>Not Everything Was Kept</source>
+        <translation>Nicht alles wurde behalten</translation>
+    </message>
+    <message>
+        <source>“%1” was written, but not all of the model could be kept:</source>
+        <translation>„%1“ wurde geschrieben, aber nicht alles am Modell konnte behalten werden:</translation>
     </message>
 </context>
 <context>

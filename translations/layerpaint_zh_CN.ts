@@ -583,6 +583,52 @@
     </message>
 </context>
 <context>
+    <name>ui::DepthLayersBuilder</name>
+    <message>
+        <source>not enough memory for the depth layers of this view</source>
+        <translation>内存不足，无法构建此视图的深度层</translation>
+    </message>
+    <message>
+        <source>not enough memory for the symmetric views</source>
+        <translation>内存不足，无法构建对称视图</translation>
+    </message>
+</context>
+<context>
+    <name>ui::DepthLayersPanel</name>
+    <message>
+        <source>The whole view, front to back</source>
+        <translation>整个视图，由前到后</translation>
+    </message>
+    <message>
+        <source>Depth layer %1
+Fragments: %2
+Regions: %3</source>
+        <translation>深度层 %1
+片元：%2
+区域：%3</translation>
+    </message>
+    <message>
+        <source>Show depth layer %1 alone</source>
+        <translation>单独显示深度层 %1</translation>
+    </message>
+    <message>
+        <source>Depth layers appear when the view stays still.</source>
+        <translation>视图静止后将显示深度层。</translation>
+    </message>
+    <message>
+        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
+        <translation>单击一个深度层可单独查看；“所有深度层”显示整个视图。</translation>
+    </message>
+    <message>
+        <source>All depth layers
+Depth layers: %1
+Regions: %2</source>
+        <translation>所有深度层
+深度层：%1
+区域：%2</translation>
+    </message>
+</context>
+<context>
     <name>ui::FillPanel</name>
     <message>
         <source>Region under the cursor</source>
@@ -702,52 +748,6 @@
     <message>
         <source>Saturation and value (square) and hue (bar)</source>
         <translation>饱和度和明度（方块）以及色相（色条）</translation>
-    </message>
-</context>
-<context>
-    <name>ui::DepthLayersBuilder</name>
-    <message>
-        <source>not enough memory for the depth layers of this view</source>
-        <translation>内存不足，无法构建此视图的深度层</translation>
-    </message>
-    <message>
-        <source>not enough memory for the symmetric views</source>
-        <translation>内存不足，无法构建对称视图</translation>
-    </message>
-</context>
-<context>
-    <name>ui::DepthLayersPanel</name>
-    <message>
-        <source>The whole view, front to back</source>
-        <translation>整个视图，由前到后</translation>
-    </message>
-    <message>
-        <source>Depth layer %1
-Fragments: %2
-Regions: %3</source>
-        <translation>深度层 %1
-片元：%2
-区域：%3</translation>
-    </message>
-    <message>
-        <source>Show depth layer %1 alone</source>
-        <translation>单独显示深度层 %1</translation>
-    </message>
-    <message>
-        <source>Depth layers appear when the view stays still.</source>
-        <translation>视图静止后将显示深度层。</translation>
-    </message>
-    <message>
-        <source>Click a depth layer to see it alone; “All depth layers” shows the whole view.</source>
-        <translation>单击一个深度层可单独查看；“所有深度层”显示整个视图。</translation>
-    </message>
-    <message>
-        <source>All depth layers
-Depth layers: %1
-Regions: %2</source>
-        <translation>所有深度层
-深度层：%1
-区域：%2</translation>
     </message>
 </context>
 <context>
@@ -2103,6 +2103,14 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>Could not export the paint layers.</source>
         <translation>无法导出绘画层。</translation>
+    </message>
+    <message>
+        <source>Not Everything Was Kept</source>
+        <translation>未能保留全部内容</translation>
+    </message>
+    <message>
+        <source>“%1” was written, but not all of the model could be kept:</source>
+        <translation>已写入“%1”，但模型的部分内容未能保留：</translation>
     </message>
 </context>
 <context>

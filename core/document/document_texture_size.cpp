@@ -75,6 +75,10 @@ Status Document::raiseTextureSize(std::uint32_t material, int width) {
     // is its texture byte for byte); only the raised one is new.
     Mesh painted = target->paintedMesh();
     painted.textures[page] = resampled(painted.textures[page], width, height);
+    if (page < painted.textureOrigins.size())
+        painted.textureOrigins[page].unchanged = false;
+    if (page < painted.textureSources.size())
+        painted.textureSources[page] = {};
     PaintTargetOptions options = m_paintOptions;
     options.kind = PaintTargetKind::Texture;
     options.reuseTextures = true;

@@ -452,7 +452,8 @@ Result<std::vector<std::string>> writePly(const fs::path& path, const Mesh& mesh
 
 Result<std::vector<std::string>> exportModel(const std::string& path, ExportFormat format,
                                              const Mesh& mesh, const MaterialChannels& channels,
-                                             const ProgressFn& progress) {
+                                             const ProgressFn& progress,
+                                             std::vector<std::string>* warnings) {
     if (isTextureFormat(format))
         return Error{path + ": " + exportFormatName(format) + " holds a texture, not a model"};
     if (const Status valid = mesh.validate(); !valid)
@@ -464,6 +465,7 @@ Result<std::vector<std::string>> exportModel(const std::string& path, ExportForm
     switch (format) {
     case ExportFormat::Glb: {
         GlbAdditions additions;
+        additions.warnings = warnings;
         additions.metallicRoughness = channels.metallicRoughness;
         for (const Material& m : mesh.materials)
             additions.materialMetallicRoughness.push_back(m.baseColorTexture);
@@ -572,15 +574,17 @@ glm::vec4 sampleTexture(const Image& image, glm::vec2 uv) {
 }
 
 Result<std::vector<std::string>> exportMesh(const std::string& path, ExportFormat format,
-                                            const Mesh& mesh, const ProgressFn& progress) {
-    return exportMaterial(path, format, mesh, {}, progress);
+                                            const Mesh& mesh, const ProgressFn& progress,
+                                            std::vector<std::string>* warnings) {
+    return exportMaterial(path, format, mesh, {}, progress, warnings);
 }
 
 Result<std::vector<std::string>> exportMaterial(const std::string& path, ExportFormat format,
                                                 const Mesh& mesh, const MaterialChannels& channels,
-                                                const ProgressFn& progress) {
+                                                const ProgressFn& progress,
+                                                std::vector<std::string>* warnings) {
     try {
-        return exportModel(path, format, mesh, channels, progress);
+        return exportModel(path, format, mesh, channels, progress, warnings);
     } catch (const Cancelled&) {
         return cancelledError(path + ": cancelled");
     } catch (const std::bad_alloc&) {

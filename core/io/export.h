@@ -32,7 +32,8 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
 
 /**
  * Writes mesh (e.g. Document::paintedMesh()) as a model file (Glb, Obj or Ply):
- * - Glb: encodeGlb() without extras;
+ * - Glb: encodeGlb() without extras (what the file cannot keep of the model's scene is named in
+ *   warnings, if given);
  * - Obj: path, the materials in STEM.mtl beside it and each texture a material uses as
  *   STEM_N.png (N from 1; a base colour factor other than white is baked into its copy, since
  *   OBJ viewers show map_Kd untinted); the other maps as the MTL's PBR entries, each texture
@@ -52,7 +53,8 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
  * progress goes from 0 to 1; cancelling returns an Error "…: cancelled".
  */
 Result<std::vector<std::string>> exportMesh(const std::string& path, ExportFormat format,
-                                            const Mesh& mesh, const ProgressFn& progress = {});
+                                            const Mesh& mesh, const ProgressFn& progress = {},
+                                            std::vector<std::string>* warnings = nullptr);
 
 /** A painted material's channels beside a mesh's base colour textures. */
 struct MaterialChannels {
@@ -72,7 +74,8 @@ struct MaterialChannels {
  */
 Result<std::vector<std::string>> exportMaterial(const std::string& path, ExportFormat format,
                                                 const Mesh& mesh, const MaterialChannels& channels,
-                                                const ProgressFn& progress = {});
+                                                const ProgressFn& progress = {},
+                                                std::vector<std::string>* warnings = nullptr);
 
 /** The roughness (G) or metallic (B) of a metallic-roughness image as a grey opaque image. */
 Image channelImage(const Image& metallicRoughness, int component);

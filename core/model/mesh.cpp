@@ -77,6 +77,9 @@ Status Mesh::validate() const {
     if (!textureSources.empty() && textureSources.size() != textures.size())
         return Error{"the kept texture files differ in count from the textures",
                      ErrorKind::BadInput};
+    if (!textureOrigins.empty() && textureOrigins.size() != textures.size())
+        return Error{"the textures' origins differ in count from the textures",
+                     ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
             return Error{"a vertex position is not a finite number", ErrorKind::BadInput};

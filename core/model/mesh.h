@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,14 @@ struct EncodedImage {
     std::vector<std::uint8_t> bytes;
 
     bool empty() const { return bytes.empty(); }
+};
+
+struct SourceScene; // core/model/source_scene.h
+
+/** What a texture is in the scene a mesh was loaded from (Mesh::source). */
+struct TextureOrigin {
+    int image = -1;         // the glTF image it was made from, -1 for none
+    bool unchanged = false; // it shows what the scene's material shows (nothing was painted)
 };
 
 /** How a material's alpha is used, as glTF's alphaMode. */
@@ -104,6 +113,10 @@ struct Mesh {
     /** Empty, or one per texture: its file's bytes where they are kept (else empty). */
     std::vector<EncodedImage> textureSources;
     std::vector<std::string> warnings; // non-fatal problems met while loading
+    /** The glTF scene the mesh was flattened from, to write it back (nullptr: none). */
+    std::shared_ptr<const SourceScene> source;
+    /** Empty, or one per texture: where it came from in source. */
+    std::vector<TextureOrigin> textureOrigins;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

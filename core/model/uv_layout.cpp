@@ -259,6 +259,9 @@ void buildLayoutMesh(const Mesh& mesh, const std::vector<Chart>& charts,
     Mesh& out = layout.mesh;
     out.materials = mesh.materials;
     out.textures = mesh.textures;
+    out.textureSources = mesh.textureSources;
+    out.textureOrigins = mesh.textureOrigins;
+    out.source = mesh.source; // its uvs differ now: saving says the scene cannot be kept
     out.warnings = mesh.warnings;
     out.triangleMaterial = mesh.triangleMaterial;
     out.indices.resize(mesh.indices.size());

@@ -225,17 +225,33 @@ bool ProjectController::saveTo(const QString& given) {
     }
     const std::string file = encodePath(path);
     startProgress(tr("Saving %1…").arg(QFileInfo(path).fileName()));
+    auto warnings = std::make_shared<std::vector<std::string>>();
     connect(
         m_task, &BackgroundTask::finished, this,
-        [this, snap, path](const QString& error, bool cancelled) {
+        [this, snap, path, warnings](const QString& error, bool cancelled) {
             onSaveFinished(snap, path, error, cancelled);
+            if (error.isEmpty())
+                showUnkept(path, *warnings);
         },
         Qt::SingleShotConnection);
-    m_task->start([snap, file](const core::ProgressFn& progress) {
-        const core::Status s = core::saveProject(file, snap->mesh, snap->state, progress);
+    m_task->start([snap, file, warnings](const core::ProgressFn& progress) {
+        const core::Status s =
+            core::saveProject(file, snap->mesh, snap->state, progress, true, warnings.get());
         return s ? QString() : fromCore(s.error());
     });
     return true;
+}
+
+void ProjectController::showUnkept(const QString& path, const std::vector<std::string>& warnings) {
+    if (warnings.empty())
+        return;
+    QStringList lines;
+    for (const std::string& w : warnings)
+        lines.append(QString::fromStdString(w));
+    m_notifier.showError(tr("Not Everything Was Kept"),
+                         tr("“%1” was written, but not all of the model could be kept:")
+                             .arg(QFileInfo(path).fileName()),
+                         lines.join(QLatin1Char('\n')));
 }
 
 void ProjectController::onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,

@@ -180,6 +180,8 @@ private:
     /** Writes snap's export to path on the worker; exported() or exportFailed() follow. */
     void startExport(core::ExportFormat format, const QString& path,
                      const std::shared_ptr<Snapshot>& snap);
+    /** A warning box naming what a written file could not keep (nothing if warnings is empty). */
+    void showUnkept(const QString& path, const std::vector<std::string>& warnings);
     void onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,
                         const QString& error, bool cancelled);
     void updateModified();

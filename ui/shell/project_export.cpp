@@ -204,9 +204,10 @@ bool ProjectController::snapshotPaintLayers(Snapshot& snap) {
 void ProjectController::startExport(core::ExportFormat format, const QString& path,
                                     const std::shared_ptr<Snapshot>& snap) {
     auto files = std::make_shared<QStringList>();
+    auto warnings = std::make_shared<std::vector<std::string>>();
     connect(
         m_task, &BackgroundTask::finished, this,
-        [this, files, path](const QString& error, bool cancelled) {
+        [this, files, warnings, path](const QString& error, bool cancelled) {
             stopProgress();
             if (!error.isEmpty()) {
                 if (cancelled) {
@@ -223,11 +224,12 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
                 tr("Exported %n file(s) to %1", nullptr, int(files->size()))
                     .arg(QDir::toNativeSeparators(QFileInfo(path).absolutePath())),
                 kStatusMs);
+            showUnkept(path, *warnings);
             emit exported(*files);
         },
         Qt::SingleShotConnection);
     const std::string file = encodePath(path);
-    m_task->start([snap, files, file, format](const core::ProgressFn& progress) {
+    m_task->start([snap, files, warnings, file, format](const core::ProgressFn& progress) {
         // With the paint layers, the export is the first half of the progress, they the second.
         const double share = snap->paintLayers ? 0.5 : 1.0;
         const core::ProgressFn first = [&](double f) {
@@ -238,7 +240,8 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
                 ? core::exportChannelTextures(file, format, snap->pages, snap->metallicRoughness,
                                               first)
                 : core::exportMaterial(file, format, snap->mesh,
-                                       core::MaterialChannels{snap->metallicRoughness}, first);
+                                       core::MaterialChannels{snap->metallicRoughness}, first,
+                                       warnings.get());
         if (!written)
             return fromCore(written.error());
         if (snap->paintLayers) {

@@ -27,6 +27,7 @@
 
 #include "core/io/atomic_write.h"
 #include "core/io/gltf/glb_container.h"
+#include "core/io/gltf/gltf_write_back.h"
 #include "core/io/image/image_encode.h"
 #include "core/io/json_nesting.h"
 
@@ -519,6 +520,33 @@ Result<GlbParts> packGlb(const Json& root, Bytes&& bin) {
     return parts;
 }
 
+/**
+ * mesh written back into its scene; nullopt (after a warning saying why) when the scene cannot
+ * be kept and the mesh is to be written flattened.
+ */
+std::optional<Result<GlbParts>> encodeWrittenBack(const Mesh& mesh, const GlbAdditions& additions,
+                                                  const ProgressFn& progress) {
+    std::vector<std::string> warnings;
+    std::string blocker = detail::gltf::writeBackBlocker(mesh);
+    if (blocker.empty()) {
+        Result<detail::gltf::GlbContent> content =
+            detail::gltf::writeBack(mesh, additions, progress, warnings);
+        if (content) {
+            if (additions.warnings)
+                additions.warnings->insert(additions.warnings->end(), warnings.begin(),
+                                           warnings.end());
+            return packGlb(content->root, std::move(content->bin));
+        }
+        if (content.cancelled())
+            return Result<GlbParts>(content.takeError());
+        blocker = content.error();
+    }
+    if (additions.warnings)
+        additions.warnings->push_back("the file's scene is not kept (" + blocker +
+                                      "): the model is written as one mesh");
+    return std::nullopt;
+}
+
 Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
                              const ProgressFn& progress) {
     GlbDraft d{.mesh = mesh, .additions = additions, .progress = progress};
@@ -529,6 +557,9 @@ Result<GlbParts> encodeParts(const Mesh& mesh, const GlbAdditions& additions,
         return Error{"the extras to save are not a JSON object"};
     if (!reportProgress(progress, 0.0))
         return cancelledError();
+    if (mesh.source)
+        if (std::optional<Result<GlbParts>> parts = encodeWrittenBack(mesh, additions, progress))
+            return std::move(*parts);
 
     if (Status s = writeGeometry(d); !s)
         return s.takeError();

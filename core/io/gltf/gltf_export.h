@@ -16,7 +16,10 @@
 namespace core {
 
 /**
- * Encodes mesh as a binary glTF 2.0 file (docs/architecture.md §3 step 7): one scene, one node, one
+ * Encodes mesh as a binary glTF 2.0 file. A mesh flattened from a glTF scene (Mesh::source) is
+ * written back into that scene (gltf_write_back.h): only what was painted changes. Otherwise, or
+ * when the scene cannot be kept (a warning says why), the mesh is written flattened
+ * (docs/architecture.md §3 step 7): one scene, one node, one
  * mesh with one primitive per run of consecutive triangles sharing a material, in triangle order,
  * so loadMesh() gives the triangles back in the same order. Each primitive holds the vertices its
  * triangles use, in their original order: a mesh whose material runs use disjoint, ascending
@@ -54,6 +57,8 @@ struct GlbAdditions {
      */
     std::vector<std::vector<std::uint8_t>> attachments;
     nlohmann::json::json_pointer attachmentsAt;
+    /** Where what the file cannot keep is named (nullptr: nowhere). */
+    std::vector<std::string>* warnings = nullptr;
 };
 
 /** encodeGlb() with additions. */

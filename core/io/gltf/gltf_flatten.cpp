@@ -383,16 +383,25 @@ bool GltfFlattener::run(Mesh& out) {
             m_mesh.triangleMaterial.end())
         m_mesh.materials.pop_back();
 
+    m_mesh.textureOrigins.assign(m_mesh.textures.size(), TextureOrigin{});
+    for (const auto& [image, texture] : m_imageToTexture)
+        if (texture >= 0)
+            m_mesh.textureOrigins[std::size_t(texture)] = TextureOrigin{image, true};
     finish(out);
     return true;
 }
 
 Result<Mesh> flattenGltf(const tinygltf::Model& model, const Json& json, const FileAccess& access,
-                         bool quantized, const ProgressFn& progress, const LoadLimits& limits) {
+                         bool quantized, const ProgressFn& progress, const LoadLimits& limits,
+                         SourceScene* runs) {
     Mesh mesh;
     GltfFlattener flattener(model, json, access, quantized, progress, limits);
     if (!flattener.run(mesh))
         return flattener.error();
+    if (runs) {
+        runs->primitives = std::move(flattener.sourcePrimitives());
+        runs->usedVertices = std::move(flattener.usedVertices());
+    }
     return mesh;
 }
 

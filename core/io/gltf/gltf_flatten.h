@@ -17,16 +17,18 @@
 #include "core/io/gltf/gltf_file_access.h"
 #include "core/io/mesh_io.h"
 #include "core/model/mesh.h"
+#include "core/model/source_scene.h"
 
 namespace core::detail::gltf {
 
 /**
  * model (as tinygltf parsed it from json) as a Mesh without normals repaired (finishMesh() does
  * that); quantized allows KHR_mesh_quantization's attribute types. Progress goes from 0.5 to 0.9.
- * The Error names no file.
+ * The Error names no file. Where each run of triangles and vertices came from goes to runs'
+ * primitives and usedVertices, if given; Mesh::textureOrigins names each texture's image.
  */
 Result<Mesh> flattenGltf(const tinygltf::Model& model, const nlohmann::json& json,
                          const FileAccess& access, bool quantized, const ProgressFn& progress,
-                         const LoadLimits& limits);
+                         const LoadLimits& limits, SourceScene* runs = nullptr);
 
 } // namespace core::detail::gltf

@@ -137,7 +137,8 @@ bool GltfFlattener::addPrimitive(const GltfInstance& inst, std::size_t primIndex
     case Screening::Read:
         break;
     }
-    if (const Json* draco = dracoExtension(inst.mesh, primIndex)) {
+    const Json* draco = dracoExtension(inst.mesh, primIndex);
+    if (draco) {
         if (!readDracoPrimitive(p, *draco))
             return false;
     } else if (!readAccessorPrimitive(p)) {
@@ -153,7 +154,33 @@ bool GltfFlattener::addPrimitive(const GltfInstance& inst, std::size_t primIndex
     if (!usedVertices)
         return fail(usedVertices.error());
     const auto base = static_cast<std::uint32_t>(m_mesh.positions.size());
-    return appendVertices(p, usedVertices->remap) && appendTriangles(p, usedVertices->remap, base);
+    const auto firstTriangle = static_cast<std::uint32_t>(m_mesh.indices.size() / 3);
+    if (!appendVertices(p, usedVertices->remap) || !appendTriangles(p, usedVertices->remap, base))
+        return false;
+    recordSource(p, *usedVertices, draco != nullptr, firstTriangle, base);
+    return true;
+}
+
+void GltfFlattener::recordSource(const PrimitiveRead& p, const UsedVertices& used, bool draco,
+                                 std::uint32_t firstTriangle, std::uint32_t firstVertex) {
+    const auto end = static_cast<std::uint32_t>(m_mesh.indices.size() / 3);
+    if (end == firstTriangle)
+        return;
+    SourcePrimitive source{static_cast<std::uint32_t>(p.inst.mesh),
+                           static_cast<std::uint32_t>(p.primIndex),
+                           firstTriangle,
+                           end - firstTriangle,
+                           firstVertex,
+                           static_cast<std::uint32_t>(used.count),
+                           static_cast<std::uint32_t>(p.vertexCount),
+                           draco ? SourcePrimitive::kDraco : 0u};
+    if (used.count != p.vertexCount) {
+        source.flags |= SourcePrimitive::kPartial;
+        for (std::size_t v = 0; v < used.remap.size(); ++v)
+            if (used.remap[v] != std::numeric_limits<std::uint32_t>::max())
+                m_usedVertices.push_back(static_cast<std::uint32_t>(v));
+    }
+    m_sourcePrimitives.push_back(source);
 }
 
 GltfFlattener::Screening GltfFlattener::screenPrimitive(PrimitiveRead& p) {

@@ -21,6 +21,7 @@
 #include "core/io/gltf/gltf_texture_transform.h"
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/mesh_io.h"
+#include "core/model/source_scene.h"
 
 namespace core::detail::gltf {
 
@@ -65,6 +66,9 @@ public:
 
     /** Flattens into out; false with error() on failure. */
     bool run(Mesh& out);
+    /** Where each run of the flattened triangles came from (see SourceScene). */
+    std::vector<SourcePrimitive>& sourcePrimitives() { return m_sourcePrimitives; }
+    std::vector<std::uint32_t>& usedVertices() { return m_usedVertices; }
 
 private:
     const tinygltf::Model& m_model;
@@ -75,6 +79,8 @@ private:
     bool m_quantized;
     std::size_t m_skippedPrimitives = 0;
     std::map<int, int> m_imageToTexture; // glTF image -> Mesh::textures index (-1: failed)
+    std::vector<SourcePrimitive> m_sourcePrimitives;
+    std::vector<std::uint32_t> m_usedVertices;
     // Per glTF material: the placement of the mesh's UVs (its base colour texture's
     // KHR_texture_transform and coordinate set), applied to the UVs of the primitives using it,
     // and its other maps' placements relative to them.
@@ -119,6 +125,9 @@ private:
     bool appendVertices(PrimitiveRead& p, const std::vector<std::uint32_t>& remap);
     bool appendTriangles(const PrimitiveRead& p, const std::vector<std::uint32_t>& remap,
                          std::uint32_t base);
+    /** Records where the run just appended came from. */
+    void recordSource(const PrimitiveRead& p, const UsedVertices& used, bool draco,
+                      std::uint32_t firstTriangle, std::uint32_t firstVertex);
 };
 
 } // namespace core::detail::gltf

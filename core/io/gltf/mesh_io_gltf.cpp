@@ -38,6 +38,7 @@
 #include "core/io/gltf/gltf_flatten.h"
 #include "core/io/gltf/gltf_meshopt.h"
 #include "core/io/gltf/gltf_schema.h"
+#include "core/io/gltf/gltf_source_scene.h"
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/json_nesting.h"
 #include "core/io/mesh_io.h"
@@ -311,11 +312,14 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     if (!reportProgress(progress, 0.5))
         return cancelledError();
 
-    Result<Mesh> flattened =
-        gltf::flattenGltf(model, src.json, access, extensions->quantized, progress, limits);
+    auto scene = std::make_shared<SourceScene>();
+    Result<Mesh> flattened = gltf::flattenGltf(model, src.json, access, extensions->quantized,
+                                               progress, limits, scene.get());
     if (!flattened)
         return flattened.takeError();
     Mesh mesh = std::move(flattened).value();
+    gltf::keepScene(src.json, src.parts.jsonLength, model, access, mesh, *scene);
+    mesh.source = std::move(scene);
     // Then tinygltf's own warnings (missing images, ...), then the flattener's.
     for (const std::string& w : lines(warn))
         warnings.push_back(w);

@@ -6,18 +6,24 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <new>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
+#include "core/io/json_nesting.h"
+
 namespace core::importer {
 
 static_assert(sizeof(FrameHeader) == 16 && sizeof(MeshHeader) == 64 &&
               sizeof(MaterialHeader) == 224 && sizeof(ImageHeader) == 8 &&
-              sizeof(TextureSourceHeader) == 8);
+              sizeof(TextureSourceHeader) == 8 && sizeof(SourceSceneHeader) == 56 &&
+              sizeof(SourcePrimitive) == 32);
 static_assert(sizeof(glm::vec2) == 8 && sizeof(glm::vec3) == 12 && sizeof(glm::vec4) == 16,
               "the arrays travel as their bytes");
 
@@ -105,6 +111,10 @@ std::uint64_t maxOutputBytes(const LoadLimits& limits) {
     std::uint64_t bytes = mul(limits.maxVertices, 12 + 12 + 16 + 8);
     bytes = add(bytes, mul(limits.maxTriangles, 12 + 4));
     bytes = add(bytes, mul(limits.maxImagePixels, 4 * 8 + 4 * 2));
+    // The scene kept to write back: the file's buffers and images, its JSON, the runs.
+    bytes = add(bytes, mul(limits.maxFileBytes, 2));
+    bytes = add(bytes, mul(limits.maxTriangles, sizeof(SourcePrimitive)));
+    bytes = add(bytes, mul(limits.maxVertices, sizeof(std::uint32_t)));
     return add(bytes, 64u << 20);
 }
 
@@ -203,7 +213,38 @@ bool FrameWriter::mesh(const Mesh& mesh) {
         frame(Tag::TextureSource, head.data(), head.size(), source.bytes.data(),
               source.bytes.size());
     }
+    if (!mesh.textureOrigins.empty()) {
+        std::vector<std::int32_t> images;
+        for (const TextureOrigin& o : mesh.textureOrigins)
+            images.push_back(o.image);
+        frame(Tag::TextureOrigins, images.data(), images.size() * sizeof(std::int32_t));
+    }
+    if (mesh.source)
+        sourceScene(*mesh.source);
     return frame(Tag::MeshEnd, nullptr, 0);
+}
+
+bool FrameWriter::sourceScene(const SourceScene& scene) {
+    const std::string json = scene.json.is_null() ? std::string() : scene.json.dump();
+    const SourceSceneHeader h{json.size(),
+                              scene.bin.size(),
+                              scene.primitives.size(),
+                              scene.usedVertices.size(),
+                              scene.uvHash,
+                              scene.colorHash,
+                              static_cast<std::uint32_t>(scene.notKept.size()),
+                              0};
+    std::vector<std::uint8_t> head(sizeof h);
+    std::memcpy(head.data(), &h, sizeof h);
+    const auto put = [&head](const void* data, std::size_t size) {
+        const auto* bytes = static_cast<const std::uint8_t*>(data);
+        head.insert(head.end(), bytes, bytes + size);
+    };
+    put(json.data(), json.size());
+    put(scene.notKept.data(), scene.notKept.size());
+    put(scene.primitives.data(), scene.primitives.size() * sizeof(SourcePrimitive));
+    put(scene.usedVertices.data(), scene.usedVertices.size() * sizeof(std::uint32_t));
+    return frame(Tag::SourceScene, head.data(), head.size(), scene.bin.data(), scene.bin.size());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -331,6 +372,10 @@ private:
             return textureFrame(length);
         case Tag::TextureSource:
             return textureSourceFrame(length);
+        case Tag::TextureOrigins:
+            return textureOriginsFrame(length);
+        case Tag::SourceScene:
+            return sourceSceneFrame(length);
         case Tag::MeshEnd:
             return meshEnd(length);
         }
@@ -479,6 +524,64 @@ private:
         out.bytes.resize(static_cast<std::size_t>(length - sizeof h - h.mimeTypeLength));
         return (h.mimeTypeLength == 0 || m_source.read(out.mimeType.data(), out.mimeType.size())) &&
                m_source.read(out.bytes.data(), out.bytes.size());
+    }
+
+    bool textureOriginsFrame(std::uint64_t length) {
+        if (!m_mesh || !m_mesh->textureOrigins.empty() ||
+            length != mul(m_header.textures, sizeof(std::int32_t)))
+            return fail("it sent malformed texture origins");
+        std::vector<std::int32_t> images(static_cast<std::size_t>(m_header.textures));
+        if (!images.empty() && !m_source.read(images.data(), static_cast<std::size_t>(length)))
+            return false;
+        for (std::int32_t image : images)
+            m_mesh->textureOrigins.push_back(TextureOrigin{image < 0 ? -1 : image, true});
+        return true;
+    }
+
+    /** The scene to write back; its JSON is parsed here (the write-back checks its indices). */
+    bool sourceSceneFrame(std::uint64_t length) {
+        SourceSceneHeader h{};
+        if (!m_mesh || m_mesh->source || length < sizeof h)
+            return fail("it sent a malformed scene");
+        if (!m_source.read(&h, sizeof h))
+            return false;
+        const std::uint64_t primitiveBytes = mul(h.primitives, sizeof(SourcePrimitive));
+        const std::uint64_t usedBytes = mul(h.usedVertices, sizeof(std::uint32_t));
+        if (h.primitives > m_limits.maxTriangles || h.usedVertices > m_limits.maxVertices ||
+            add(add(add(add(h.jsonLength, h.binLength), primitiveBytes), usedBytes),
+                h.notKeptLength) != length - sizeof h ||
+            h.notKeptLength > kMaxTextBytes)
+            return fail("it sent a malformed scene");
+        auto scene = std::make_shared<SourceScene>();
+        std::string json(static_cast<std::size_t>(h.jsonLength), '\0');
+        std::string notKept(h.notKeptLength, '\0');
+        scene->primitives.resize(static_cast<std::size_t>(h.primitives));
+        scene->usedVertices.resize(static_cast<std::size_t>(h.usedVertices));
+        scene->bin.resize(static_cast<std::size_t>(h.binLength));
+        if ((!json.empty() && !m_source.read(json.data(), json.size())) ||
+            (!notKept.empty() && !m_source.read(notKept.data(), notKept.size())) ||
+            (primitiveBytes > 0 &&
+             !m_source.read(scene->primitives.data(), static_cast<std::size_t>(primitiveBytes))) ||
+            (usedBytes > 0 &&
+             !m_source.read(scene->usedVertices.data(), static_cast<std::size_t>(usedBytes))) ||
+            (!scene->bin.empty() && !m_source.read(scene->bin.data(), scene->bin.size())))
+            return false;
+        scene->notKept = cleanText(std::move(notKept));
+        scene->uvHash = h.uvHash;
+        scene->colorHash = h.colorHash;
+        if (!json.empty()) {
+            if (jsonNestingTooDeep(json))
+                return fail("it sent a scene nested too deeply");
+            try {
+                scene->json = nlohmann::json::parse(json);
+            } catch (const nlohmann::json::exception&) {
+                return fail("it sent a scene that is not JSON");
+            }
+            if (!scene->json.is_object())
+                return fail("it sent a scene that is not a JSON object");
+        }
+        m_mesh->source = std::move(scene);
+        return true;
     }
 
     bool textureFrame(std::uint64_t length) {

@@ -16,6 +16,7 @@
 #include "core/base/progress.h"
 #include "core/io/mesh_io.h"
 #include "core/model/mesh.h"
+#include "core/model/source_scene.h"
 
 namespace core::importer {
 
@@ -37,6 +38,9 @@ enum class Tag : std::uint32_t {
     MeshEnd = 13,           // empty: the mesh is complete
     Image = 14,             // ImageHeader, then RGBA8 rows (an image file's pixels)
     TextureSource = 15,     // TextureSourceHeader, the MIME type, then the file's bytes
+    SourceScene = 16,       // SourceSceneHeader, the JSON text, notKept, primitives, used
+                            // vertices (uint32), the bin
+    TextureOrigins = 17,    // int32[textures]: each texture's glTF image (-1: none)
 };
 
 struct FrameHeader {
@@ -86,6 +90,18 @@ struct TextureSourceHeader {
     std::uint32_t mimeTypeLength;
 };
 
+/** Mesh::source (SourceScene): the lengths of what follows the header. */
+struct SourceSceneHeader {
+    std::uint64_t jsonLength;
+    std::uint64_t binLength;
+    std::uint64_t primitives;   // SourcePrimitive records
+    std::uint64_t usedVertices; // uint32 indices
+    std::uint64_t uvHash;
+    std::uint64_t colorHash;
+    std::uint32_t notKeptLength;
+    std::uint32_t reserved;
+};
+
 struct ImageHeader {
     std::uint32_t width;
     std::uint32_t height;
@@ -112,6 +128,7 @@ public:
     bool image(const Image& image);
 
 private:
+    bool sourceScene(const SourceScene& scene);
     bool frame(Tag tag, const void* a, std::size_t aSize, const void* b = nullptr,
                std::size_t bSize = 0);
     bool writeAll(const void* data, std::size_t size);

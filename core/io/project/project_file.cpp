@@ -110,8 +110,10 @@ Result<Project> loadProjectInProcess(const std::string& path, const ProgressFn& 
 }
 
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
-                   const ProgressFn& progress, bool keepBackup) {
+                   const ProgressFn& progress, bool keepBackup,
+                   std::vector<std::string>* warnings) {
     GlbAdditions additions;
+    additions.warnings = warnings;
     try {
         additions.extras = {{kProjectExtrasKey, projectStateToJson(state)}};
         if (const SavedPaintLayers* layers = state.paintLayers.get()) {
@@ -142,14 +144,14 @@ Status saveProject(const std::string& path, const Mesh& paintedMesh, const Proje
 }
 
 Status saveProject(const std::string& path, const Document& doc, const ProjectState& state,
-                   const ProgressFn& progress) {
+                   const ProgressFn& progress, std::vector<std::string>* warnings) {
     Mesh mesh;
     try {
         mesh = doc.paintedMesh();
     } catch (const std::bad_alloc&) {
         return Error{path + ": not enough memory to save the file"};
     }
-    return saveProject(path, mesh, state, progress);
+    return saveProject(path, mesh, state, progress, true, warnings);
 }
 
 } // namespace core

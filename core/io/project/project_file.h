@@ -40,13 +40,15 @@ Result<Project> loadProject(const std::string& path, const ProgressFn& progress 
 /**
  * Saves paintedMesh (Document::paintedMesh()) and state as a project: a binary glTF with the
  * state in asset.extras.layerpaint, written atomically with the previous file kept as
- * path + ".bak" unless keepBackup is false (saveGlb). On failure the old file is intact and the
- * Error names path and why.
+ * path + ".bak" unless keepBackup is false (saveGlb). A model read from a glTF file is saved
+ * as that file's scene with what was painted changed (encodeGlb()); what cannot be kept is named
+ * in warnings, if given. On failure the old file is intact and the Error names path and why.
  */
 Status saveProject(const std::string& path, const Mesh& paintedMesh, const ProjectState& state,
-                   const ProgressFn& progress = {}, bool keepBackup = true);
+                   const ProgressFn& progress = {}, bool keepBackup = true,
+                   std::vector<std::string>* warnings = nullptr);
 /** saveProject() of doc's painted mesh. */
 Status saveProject(const std::string& path, const Document& doc, const ProjectState& state,
-                   const ProgressFn& progress = {});
+                   const ProgressFn& progress = {}, std::vector<std::string>* warnings = nullptr);
 
 } // namespace core

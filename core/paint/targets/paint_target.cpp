@@ -42,16 +42,21 @@ const Image& PaintTarget::metallicRoughnessPage(std::size_t i) const {
 
 namespace {
 
-/** Appends the textures of painted's maps other than the base colour (indices of source's). */
+/**
+ * Appends the textures of painted's maps other than the base colour (indices of source's), with
+ * their kept files and origins.
+ */
 class MapKeeper {
 public:
     MapKeeper(const Mesh& source, Mesh& painted) : m_source(source), m_painted(painted) {
         m_painted.textureSources.assign(m_painted.textures.size(), EncodedImage{});
+        m_painted.textureOrigins.assign(m_painted.textures.size(), TextureOrigin{});
     }
-    /** Appends image (no kept file); returns its index. */
-    int add(const Image& image, const EncodedImage* file = nullptr) {
+    /** Appends image (no kept file, origin); returns its index. */
+    int add(const Image& image, const EncodedImage* file = nullptr, TextureOrigin origin = {}) {
         m_painted.textures.push_back(image);
         m_painted.textureSources.push_back(file ? *file : EncodedImage{});
+        m_painted.textureOrigins.push_back(origin);
         return int(m_painted.textures.size() - 1);
     }
     void keep(MaterialMap& map) {
@@ -60,11 +65,29 @@ public:
         const auto [it, added] = m_kept.emplace(map.texture, -1);
         if (added)
             it->second = add(m_source.textures[std::size_t(map.texture)],
-                             m_source.textureSource(map.texture));
+                             m_source.textureSource(map.texture), origin(map.texture, true));
         map.texture = it->second;
+    }
+    /**
+     * Page p, made from the source's texture (-1: none): its origin, and the texture's file
+     * where the page is that texture byte for byte.
+     */
+    void page(std::size_t p, int texture, bool unchanged) {
+        m_painted.textureOrigins[p] = origin(texture, unchanged);
+        const EncodedImage* file = m_source.textureSource(texture);
+        if (file && m_painted.textures[p].width == m_source.textures[std::size_t(texture)].width &&
+            m_painted.textures[p].rgba == m_source.textures[std::size_t(texture)].rgba)
+            m_painted.textureSources[p] = *file;
     }
 
 private:
+    TextureOrigin origin(int texture, bool unchanged) const {
+        if (texture < 0 || std::size_t(texture) >= m_source.textureOrigins.size())
+            return {-1, unchanged && texture < 0};
+        const TextureOrigin& o = m_source.textureOrigins[std::size_t(texture)];
+        return {o.image, o.unchanged && unchanged};
+    }
+
     const Mesh& m_source;
     Mesh& m_painted;
     std::map<int, int> m_kept; // source texture -> painted texture
@@ -81,6 +104,8 @@ Mesh PaintTarget::paintedMesh() const {
             painted.textures.push_back(page(i));
         painted.colors.clear(); // baked into the pages
         MapKeeper keeper(mesh(), painted);
+        for (std::size_t i = 0; i < pageCount(); ++i)
+            keeper.page(i, pageTexture(i), pageUnchanged(i));
         std::map<std::size_t, int> painting; // page -> its painted metallic-roughness
         for (Material& m : painted.materials) {
             keeper.keep(m.normal);

@@ -209,6 +209,12 @@ public:
      */
     virtual bool metallicRoughnessPainted(std::size_t) const { return false; }
     /**
+     * Page i's texture in mesh() (-1 for a page made anew) and whether the page shows still what
+     * it showed when the target was made.
+     */
+    virtual int pageTexture(std::size_t) const { return -1; }
+    virtual bool pageUnchanged(std::size_t) const { return false; }
+    /**
      * The mesh as painted: drawMaterials() with the pages as its first textures (and its other
      * maps' textures after them, kept files and all; a page's roughness and metallic, where
      * painted, as its materials' metallic-roughness map with factors 1), or its colours.
@@ -288,6 +294,8 @@ public:
     const Image& page(std::size_t i) const override;
     const Image& metallicRoughnessPage(std::size_t i) const override;
     bool metallicRoughnessPainted(std::size_t i) const override;
+    int pageTexture(std::size_t i) const override { return m_pages[i].source; }
+    bool pageUnchanged(std::size_t i) const override;
     /** The base's texels of page i (RGBA8): painting with no paint layer selected goes here. */
     const std::vector<std::uint8_t>& basePixels(std::size_t i) const;
     /** Page i as created (what the eraser restores on the base). */

@@ -396,6 +396,10 @@ const Image& TextureTarget::page(std::size_t i) const {
     return m_stack->compositeImage(std::uint32_t(i));
 }
 
+bool TextureTarget::pageUnchanged(std::size_t i) const {
+    return page(i).rgba == m_pages[i].original.rgba;
+}
+
 bool TextureTarget::metallicRoughnessPainted(std::size_t i) const {
     // The base's roughness and metallic are never painted (paint layers hold them), so the
     // composite differs from the base exactly where a paint layer changes them.

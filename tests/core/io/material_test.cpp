@@ -399,6 +399,7 @@ TEST(Material, EmissionBeyondGltfsFactorGoesIntoTheStrength) {
     core::Result<core::Mesh> loaded = core::loadMesh(kMaterials);
     ASSERT_TRUE(loaded.ok()) << loaded.error();
     core::Mesh mesh = std::move(loaded).value();
+    mesh.source.reset(); // as a model Assimp read: no glTF scene to write back into
     mesh.materials[1].emissiveFactor = glm::vec3(2.0f, 1.0f, 0.0f);
     TempDir dir;
     const std::string path = dir.file("bright.glb");
