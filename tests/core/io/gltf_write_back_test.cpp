@@ -128,6 +128,48 @@ TEST(WriteBack, UnpaintedEngineComesOutAsItWentIn) {
     EXPECT_EQ(again.indices, mesh.indices);
 }
 
+/**
+ * Sample files of Debian's assimp-testmodels with cameras, animations, skins, morph targets,
+ * texture transforms, specular-glossiness and every primitive mode: written back unpainted, each
+ * keeps its scene and reopens as the same triangles.
+ */
+TEST(WriteBack, SampleFilesKeepTheirScenes) {
+    const std::string root = std::string(LAYERPAINT_ASSIMP_MODELS) + "/glTF2/";
+    const std::vector<std::string> files = {
+        "cameras/Cameras.gltf",
+        "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf",
+        "simple_skin/simple_skin.gltf",
+        "textureTransform/TextureTransformTest.gltf",
+        "BoxTextured-glTF-pbrSpecularGlossiness/BoxTextured.gltf",
+        "BoxTextured-glTF-Embedded/BoxTextured.gltf",
+        "glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_04.gltf",
+        "glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_05.gltf",
+        "glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_06.gltf",
+        "glTF-Asset-Generator/Mesh_PrimitiveMode/Mesh_PrimitiveMode_13.gltf",
+    };
+    TempDir dir;
+    for (const std::string& name : files) {
+        SCOPED_TRACE(name);
+        const std::string path = root + name;
+        if (!std::filesystem::exists(path))
+            GTEST_SKIP() << path << " is missing (apt-get install assimp-testmodels)";
+        const core::Mesh mesh = load(path);
+        const std::string out = dir.file("out.glb");
+        std::vector<std::string> warnings;
+        ASSERT_TRUE(core::exportMesh(out, core::ExportFormat::Glb, mesh, {}, &warnings).ok());
+        EXPECT_TRUE(warnings.empty()) << warnings.front();
+        const Json source = Json::parse(readFile(path));
+        const Glb written = readGlb(out);
+        expectSameScene(written.json, source);
+        EXPECT_EQ(written.json.value("images", Json::array()).size(),
+                  source.value("images", Json::array()).size());
+        const core::Mesh again = load(out);
+        EXPECT_EQ(again.indices, mesh.indices);
+        EXPECT_EQ(again.positions, mesh.positions);
+        EXPECT_EQ(again.uvs, mesh.uvs);
+    }
+}
+
 TEST(WriteBack, PaintedVertexColoursBecomeEachPrimitivesColour) {
     if (!std::filesystem::exists(kEngine))
         GTEST_SKIP() << kEngine << " is missing (apt-get install assimp-testmodels)";
