@@ -15,6 +15,7 @@
 #include "core/io/gltf/gltf_export.h"
 #include "core/io/image/image_write.h"
 #include "core/io/mesh_io.h"
+#include "core/model/source_scene.h"
 #include "core/io/ply_write.h"
 #include "core/model/camera.h"
 #include "core/paint/targets/layout_target.h"
@@ -256,6 +257,18 @@ json materialJson(const core::Mesh& mesh, const core::Material& m) {
         entry["alpha_cutoff"] = m.alphaCutoff;
     return entry;
 }
+/** Whether saving writes the file's own scene back, and its size; or why not. */
+json sceneJson(const core::Mesh& mesh) {
+    if (!mesh.source)
+        return {{"kept", false}, {"why", "the model was not read from a glTF file"}};
+    const core::SourceScene& scene = *mesh.source;
+    if (!scene.notKept.empty())
+        return {{"kept", false}, {"why", scene.notKept}};
+    return {{"kept", true},
+            {"nodes", scene.json.value("nodes", json::array()).size()},
+            {"meshes", scene.json.value("meshes", json::array()).size()},
+            {"images", scene.json.value("images", json::array()).size()}};
+}
 } // namespace
 
 int runInfo(const std::string& model) {
@@ -280,6 +293,7 @@ int runInfo(const std::string& model) {
         {"has_uvs", mesh->hasUvs()},
         {"has_vertex_colors", mesh->hasColors()},
         {"materials", materials},
+        {"scene", sceneJson(*mesh)},
         {"warnings", mesh->warnings},
     };
     std::cout << jsonText(out, 2) << '\n';
