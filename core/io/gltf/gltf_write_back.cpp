@@ -566,7 +566,8 @@ std::string writeBackBlocker(const Mesh& mesh) {
     if (next != mesh.triangleCount())
         return "the model's triangles changed";
     if (hashValues(mesh.uvs) != scene.uvHash)
-        return "its texture coordinates were laid out anew";
+        return "its texture coordinates were laid out anew; painting with vertex colours keeps "
+               "it";
     std::uint64_t used = 0;
     const bool painted = mesh.hasColors() && hashValues(mesh.colors) != scene.colorHash;
     for (const SourcePrimitive& run : scene.primitives) {
