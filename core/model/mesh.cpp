@@ -80,6 +80,9 @@ Status Mesh::validate() const {
     if (!textureOrigins.empty() && textureOrigins.size() != textures.size())
         return Error{"the textures' origins differ in count from the textures",
                      ErrorKind::BadInput};
+    if (!sourceVertices.empty() && sourceVertices.size() != vertexCount())
+        return Error{"the vertices' origins differ in count from the vertices",
+                     ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
             return Error{"a vertex position is not a finite number", ErrorKind::BadInput};

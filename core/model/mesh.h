@@ -117,6 +117,11 @@ struct Mesh {
     std::shared_ptr<const SourceScene> source;
     /** Empty, or one per texture: where it came from in source. */
     std::vector<TextureOrigin> textureOrigins;
+    /**
+     * Empty, or per vertex: the vertex of the mesh as flattened from source that it copies (an
+     * automatic UV layout copies vertices along its seams).
+     */
+    std::vector<std::uint32_t> sourceVertices;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

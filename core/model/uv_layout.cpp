@@ -261,7 +261,7 @@ void buildLayoutMesh(const Mesh& mesh, const std::vector<Chart>& charts,
     out.textures = mesh.textures;
     out.textureSources = mesh.textureSources;
     out.textureOrigins = mesh.textureOrigins;
-    out.source = mesh.source; // its uvs differ now: saving says the scene cannot be kept
+    out.source = mesh.source; // written back with these uvs through sourceVertices
     out.warnings = mesh.warnings;
     out.triangleMaterial = mesh.triangleMaterial;
     out.indices.resize(mesh.indices.size());
@@ -286,6 +286,11 @@ void buildLayoutMesh(const Mesh& mesh, const std::vector<Chart>& charts,
     }
     out.positions.reserve(layout.sourceVertex.size());
     out.normals.reserve(layout.sourceVertex.size());
+    if (mesh.source) {
+        out.sourceVertices.reserve(layout.sourceVertex.size());
+        for (std::uint32_t v : layout.sourceVertex)
+            out.sourceVertices.push_back(mesh.sourceVertices.empty() ? v : mesh.sourceVertices[v]);
+    }
     for (std::uint32_t v : layout.sourceVertex) {
         out.positions.push_back(mesh.positions[v]);
         out.normals.push_back(mesh.normals[v]);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/document/project_state.h"
+#include "core/io/gltf/gltf_write_back_geometry.h"
 #include "core/io/image/image_encode.h"
 #include "core/model/source_scene.h"
 
@@ -84,6 +85,14 @@ bool showsImage(const Json& texture, int image) {
     return false;
 }
 
+constexpr int kVertexData = 34962, kIndexData = 34963;
+
+/** A buffer view to add: its bytes and its fields besides buffer, offset and length. */
+struct AddedView {
+    Bytes bytes;
+    Json fields;
+};
+
 class SceneWriter {
 public:
     SceneWriter(const Mesh& mesh, const GlbAdditions& additions, const ProgressFn& progress,
@@ -96,6 +105,9 @@ public:
             return s.takeError();
         if (Status s = collectMaterialPrimitives(); !s)
             return s.takeError();
+        if (hashValues(m_mesh.uvs) != m_scene.uvHash)
+            if (Status s = relayPrimitives(); !s)
+                return s.takeError();
         if (Status s = writePages(Slot::BaseColor); !s)
             return s.takeError();
         if (Status s = writePages(Slot::MetallicRoughness); !s)
@@ -118,8 +130,11 @@ private:
     Json m_json;
     std::vector<std::size_t> m_keptViews;    // the scene's view per written view, in order
     std::map<std::size_t, Bytes> m_replaced; // written view -> its new bytes
-    std::vector<Bytes> m_added;              // views after the kept ones
-    std::size_t m_fileMaterials = 0;         // the scene's materials (the mesh may add a default)
+    std::vector<AddedView> m_added;          // views after the kept ones
+    bool m_relaid = false; // the primitives take the automatic UV layout's vertices
+    static constexpr std::uint32_t kUnnumbered = 0xFFFFFFFFu;
+    std::vector<std::uint32_t> m_number; // per mesh vertex: its number in the primitive
+    std::size_t m_fileMaterials = 0;     // the scene's materials (the mesh may add a default)
     std::vector<std::set<std::pair<std::size_t, std::size_t>>> m_primitivesOf; // per material
 
     Json& materials() { return m_json["materials"]; }
@@ -244,8 +259,13 @@ private:
         return {};
     }
 
-    /** Where material m's textures lie on the mesh's UVs: its first textureInfo's placement. */
+    /**
+     * Where material m's textures lie on the mesh's UVs: its first textureInfo's placement, or
+     * the automatic layout's TEXCOORD_0.
+     */
     Json uvPlacement(std::size_t m) {
+        if (m_relaid)
+            return Json::object();
         const Json& mat = material(m);
         for (const char* at : {"/pbrMetallicRoughness/baseColorTexture",
                                "/pbrMetallicRoughness/metallicRoughnessTexture", "/normalTexture",
@@ -358,7 +378,7 @@ private:
             images() = Json::array();
         if (!m_json.contains("textures"))
             textures() = Json::array();
-        m_added.push_back(std::move(png));
+        m_added.push_back({std::move(png), Json::object()});
         images().push_back(
             {{"bufferView", m_keptViews.size() + m_added.size() - 1}, {"mimeType", "image/png"}});
         Json texture = {{"source", images().size() - 1}};
@@ -400,6 +420,110 @@ private:
         pbr.erase("roughnessFactor");
     }
 
+    // ---- an automatic UV layout's vertices
+
+    /**
+     * Each primitive (at its first placement) gets the layout's vertices: its attributes and
+     * morph targets gathered at the vertices they copy, the layout's UVs as TEXCOORD_0 and its
+     * triangles as uint32 indices. Only primitives without texture coordinates of their own.
+     */
+    Status relayPrimitives() {
+        if (m_mesh.sourceVertices.size() != m_mesh.vertexCount() || m_mesh.hasColors())
+            return Error{"its texture coordinates were laid out anew"};
+        m_relaid = true;
+        std::set<std::pair<std::uint32_t, std::uint32_t>> done;
+        std::size_t used = 0;
+        bool instanced = false;
+        for (const SourcePrimitive& run : m_scene.primitives) {
+            const std::size_t usedAt = used;
+            used += run.flags & SourcePrimitive::kPartial ? run.vertexCount : 0;
+            if (!done.insert({run.mesh, run.primitive}).second) {
+                instanced = true;
+                continue;
+            }
+            if (Status s = relayPrimitive(run, usedAt); !s)
+                return s;
+        }
+        if (instanced)
+            m_warnings.push_back("meshes placed more than once show the painting of their first "
+                                 "placement");
+        return {};
+    }
+
+    Status relayPrimitive(const SourcePrimitive& run, std::size_t usedAt) {
+        Json& prim = primitive({run.mesh, run.primitive});
+        for (auto it = prim["attributes"].begin(); it != prim["attributes"].end(); ++it)
+            if (it.key().rfind("TEXCOORD_", 0) == 0)
+                return Error{"the automatic UV layout would replace the file's texture "
+                             "coordinates"};
+        // The layout's vertices of the run, in order of first use, and what each copies.
+        std::vector<std::uint32_t> vertices, local, indices;
+        m_number.resize(m_mesh.vertexCount(), kUnnumbered);
+        for (std::size_t i = 3 * std::size_t(run.firstTriangle);
+             i < 3 * (std::size_t(run.firstTriangle) + run.triangleCount); ++i) {
+            const std::uint32_t v = m_mesh.indices[i];
+            const bool added = m_number[v] == kUnnumbered;
+            if (added)
+                m_number[v] = std::uint32_t(vertices.size());
+            indices.push_back(m_number[v]);
+            if (!added)
+                continue;
+            const std::uint32_t original = m_mesh.sourceVertices[v];
+            if (original < run.firstVertex || original - run.firstVertex >= run.vertexCount)
+                return Error{"the model's vertices changed"};
+            const std::uint32_t k = original - run.firstVertex;
+            vertices.push_back(v);
+            local.push_back(
+                run.flags & SourcePrimitive::kPartial ? m_scene.usedVertices.at(usedAt + k) : k);
+        }
+        for (std::uint32_t v : vertices)
+            m_number[v] = kUnnumbered;
+        if (Status s = gatherAttributes(prim["attributes"], local); !s)
+            return s;
+        if (prim.contains("targets"))
+            for (Json& target : prim["targets"])
+                if (Status s = gatherAttributes(target, local); !s)
+                    return s;
+        std::vector<float> uvs;
+        for (std::uint32_t v : vertices)
+            uvs.insert(uvs.end(), {m_mesh.uvs[v].x, m_mesh.uvs[v].y});
+        prim["attributes"]["TEXCOORD_0"] =
+            addAccessor(asBytes(uvs), {{"byteStride", 8}, {"target", kVertexData}},
+                        {{"componentType", 5126}, {"count", vertices.size()}, {"type", "VEC2"}});
+        prim["indices"] =
+            addAccessor(asBytes(indices), {{"target", kIndexData}},
+                        {{"componentType", 5125}, {"count", indices.size()}, {"type", "SCALAR"}});
+        prim.erase("mode"); // triangles, as flattened
+        return {};
+    }
+
+    /** Every accessor of attributes gathered at the primitive's vertices local. */
+    Status gatherAttributes(Json& attributes, const std::vector<std::uint32_t>& local) {
+        for (auto it = attributes.begin(); it != attributes.end(); ++it) {
+            Result<GatheredAccessor> g =
+                gatherAccessor(m_scene.json, m_scene.bin, it->get<std::size_t>(), local);
+            if (!g)
+                return g.takeError();
+            *it = addAccessor(std::move(g->bytes),
+                              {{"byteStride", g->stride}, {"target", kVertexData}},
+                              std::move(g->accessor));
+        }
+        return {};
+    }
+
+    template <typename T> static Bytes asBytes(const std::vector<T>& values) {
+        const auto* p = reinterpret_cast<const std::uint8_t*>(values.data());
+        return Bytes(p, p + values.size() * sizeof(T));
+    }
+
+    /** bytes as a new view with fields, and accessor into it; the accessor's index. */
+    std::size_t addAccessor(Bytes bytes, Json fields, Json accessor) {
+        m_added.push_back({std::move(bytes), std::move(fields)});
+        accessor["bufferView"] = m_keptViews.size() + m_added.size() - 1;
+        m_json["accessors"].push_back(std::move(accessor));
+        return m_json["accessors"].size() - 1;
+    }
+
     // ---- painted vertex colours
 
     /**
@@ -407,7 +531,7 @@ private:
      * primitive has vertices no triangle uses); its materials' factors are in them.
      */
     Status writeVertexColours() {
-        if (!m_mesh.hasColors() || hashValues(m_mesh.colors) == m_scene.colorHash)
+        if (m_relaid || !m_mesh.hasColors() || hashValues(m_mesh.colors) == m_scene.colorHash)
             return {};
         std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<float>> written;
         bool differ = false;
@@ -428,14 +552,9 @@ private:
                 differ = differ || it->second != colours;
                 continue;
             }
-            const auto* bytes = reinterpret_cast<const std::uint8_t*>(colours.data());
-            m_added.emplace_back(bytes, bytes + colours.size() * sizeof(float));
-            m_json["accessors"].push_back({{"bufferView", m_keptViews.size() + m_added.size() - 1},
-                                           {"componentType", 5126},
-                                           {"count", run.sourceVertices},
-                                           {"type", "VEC4"}});
-            primitive({run.mesh, run.primitive})["attributes"]["COLOR_0"] =
-                m_json["accessors"].size() - 1;
+            primitive({run.mesh, run.primitive})["attributes"]["COLOR_0"] = addAccessor(
+                asBytes(colours), {{"target", kVertexData}},
+                {{"componentType", 5126}, {"count", run.sourceVertices}, {"type", "VEC4"}});
         }
         if (differ)
             m_warnings.push_back("meshes placed more than once keep the colours painted on their "
@@ -500,7 +619,7 @@ private:
         if (!m_additions.attachments.empty()) {
             Json views = Json::array();
             for (const Bytes& bytes : m_additions.attachments) {
-                m_added.push_back(bytes);
+                m_added.push_back({bytes, Json::object()});
                 views.push_back(m_keptViews.size() + m_added.size() - 1);
             }
             out[m_additions.attachmentsAt] = std::move(views);
@@ -533,8 +652,8 @@ private:
                 return Error{"a buffer view of the scene lies outside its buffer"};
             place(m_scene.bin.data() + offset, std::size_t(length), std::move(view));
         }
-        for (const Bytes& bytes : m_added)
-            place(bytes.data(), bytes.size(), Json::object());
+        for (const AddedView& added : m_added)
+            place(added.bytes.data(), added.bytes.size(), added.fields);
         out.bin.resize((out.bin.size() + 3) & ~std::size_t{3}, 0);
         if (views.empty())
             m_json.erase("bufferViews");
@@ -565,17 +684,20 @@ std::string writeBackBlocker(const Mesh& mesh) {
     }
     if (next != mesh.triangleCount())
         return "the model's triangles changed";
-    if (hashValues(mesh.uvs) != scene.uvHash)
+    const bool relaid = hashValues(mesh.uvs) != scene.uvHash;
+    if (relaid && mesh.sourceVertices.empty())
         return "its texture coordinates were laid out anew; painting with vertex colours keeps "
                "it";
     std::uint64_t used = 0;
     const bool painted = mesh.hasColors() && hashValues(mesh.colors) != scene.colorHash;
     for (const SourcePrimitive& run : scene.primitives) {
-        if (std::uint64_t(run.firstVertex) + run.vertexCount > mesh.vertexCount())
+        if (!relaid && std::uint64_t(run.firstVertex) + run.vertexCount > mesh.vertexCount())
             return "the model's vertices changed";
         used += run.flags & SourcePrimitive::kPartial ? run.vertexCount : 0;
         if (painted && (run.flags & SourcePrimitive::kDraco))
             return "vertex colours were painted on Draco-compressed primitives";
+        if (relaid && (run.flags & SourcePrimitive::kDraco))
+            return "the automatic UV layout is on Draco-compressed primitives";
     }
     if (used != scene.usedVertices.size())
         return "the model's vertices changed";

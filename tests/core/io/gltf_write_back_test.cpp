@@ -210,6 +210,55 @@ TEST(WriteBack, PaintedVertexColoursBecomeEachPrimitivesColour) {
     EXPECT_GT(same, stroke / 2) << "the painted colours did not come back";
 }
 
+TEST(WriteBack, AnAutomaticUvLayoutGivesEachPrimitiveItsTexture) {
+    if (!std::filesystem::exists(kEngine))
+        GTEST_SKIP() << kEngine << " is missing (apt-get install assimp-testmodels)";
+    core::Document doc;
+    doc.setMesh(load(kEngine), kEngine);
+    core::PaintTargetOptions options;
+    options.kind = core::PaintTargetKind::Texture; // the engine has no UVs: a layout
+    options.resolution = 512;
+    ASSERT_TRUE(doc.setPaintTarget(options).ok());
+    material_test::paintStroke(doc);
+    const core::Mesh painted = doc.paintedMesh();
+    ASSERT_TRUE(painted.hasUvs());
+
+    TempDir dir;
+    const std::string out = dir.file("engine.glb");
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(core::exportMesh(out, core::ExportFormat::Glb, painted, {}, &warnings).ok());
+    for (const std::string& w : warnings)
+        EXPECT_EQ(w.find("not kept"), std::string::npos) << w;
+    const Glb source = readGlb(kEngine), written = readGlb(out);
+    for (const char* key : {"scene", "scenes", "nodes"})
+        EXPECT_EQ(written.json[key], source.json[key]) << key;
+    for (const Json& mesh : written.json["meshes"])
+        for (const Json& primitive : mesh["primitives"])
+            EXPECT_TRUE(primitive["attributes"].contains("TEXCOORD_0"));
+    std::size_t textured = 0;
+    for (const Json& material : written.json["materials"])
+        textured += material["pbrMetallicRoughness"].contains("baseColorTexture") ? 1 : 0;
+    EXPECT_EQ(textured, written.json["materials"].size()) << "the painted page is not shown";
+    material_test::expectValidGltf(out);
+
+    // Reopened: the same triangles, with UVs (no second layout).
+    const core::Mesh again = load(out);
+    EXPECT_EQ(again.indices.size(), painted.indices.size());
+    EXPECT_EQ(again.triangleMaterial, painted.triangleMaterial);
+    EXPECT_TRUE(again.hasUvs());
+
+    // As a project: it reopens with the page as painted.
+    const std::string project = dir.file("engine-project.glb");
+    ASSERT_TRUE(core::saveProject(project, doc, core::captureProjectState(doc)).ok());
+    core::Result<core::Project> reopened = core::loadProject(project);
+    ASSERT_TRUE(reopened.ok()) << reopened.error();
+    core::Document second;
+    second.setMesh(std::move(reopened->mesh), project);
+    ASSERT_TRUE(core::applyProjectState(second, *reopened->state).ok());
+    ASSERT_EQ(second.paintTarget()->pageCount(), doc.paintTarget()->pageCount());
+    EXPECT_TRUE(second.paintTarget()->page(0).rgba == doc.paintTarget()->page(0).rgba);
+}
+
 TEST(WriteBack, DracoEngineKeepsItsCompressionAndTakesItsBufferIn) {
     if (!std::filesystem::exists(kDracoEngine))
         GTEST_SKIP() << kDracoEngine << " is missing (apt-get install assimp-testmodels)";
