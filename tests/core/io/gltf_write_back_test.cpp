@@ -170,6 +170,26 @@ TEST(WriteBack, SampleFilesKeepTheirScenes) {
     }
 }
 
+/**
+ * The painted engine exported to out: its scene kept (no warning says otherwise, the node tree
+ * as it was), every primitive with attribute, and valid.
+ */
+void exportEngineWithAttribute(const core::Mesh& painted, const std::string& out,
+                               const char* attribute) {
+    std::vector<std::string> warnings;
+    ASSERT_TRUE(core::exportMesh(out, core::ExportFormat::Glb, painted, {}, &warnings).ok());
+    for (const std::string& w : warnings)
+        EXPECT_EQ(w.find("not kept"), std::string::npos) << w;
+    const Glb source = readGlb(kEngine), written = readGlb(out);
+    for (const char* key : {"scene", "scenes", "nodes"})
+        EXPECT_EQ(written.json[key], source.json[key]) << key;
+    ASSERT_EQ(written.json["meshes"].size(), source.json["meshes"].size());
+    for (const Json& mesh : written.json["meshes"])
+        for (const Json& primitive : mesh["primitives"])
+            EXPECT_TRUE(primitive["attributes"].contains(attribute));
+    material_test::expectValidGltf(out);
+}
+
 TEST(WriteBack, PaintedVertexColoursBecomeEachPrimitivesColour) {
     if (!std::filesystem::exists(kEngine))
         GTEST_SKIP() << kEngine << " is missing (apt-get install assimp-testmodels)";
@@ -183,18 +203,7 @@ TEST(WriteBack, PaintedVertexColoursBecomeEachPrimitivesColour) {
 
     TempDir dir;
     const std::string out = dir.file("engine.glb");
-    std::vector<std::string> warnings;
-    ASSERT_TRUE(core::exportMesh(out, core::ExportFormat::Glb, painted, {}, &warnings).ok());
-    for (const std::string& w : warnings)
-        EXPECT_EQ(w.find("not kept"), std::string::npos) << w;
-    const Glb source = readGlb(kEngine), written = readGlb(out);
-    for (const char* key : {"scene", "scenes", "nodes"})
-        EXPECT_EQ(written.json[key], source.json[key]) << key;
-    ASSERT_EQ(written.json["meshes"].size(), source.json["meshes"].size());
-    for (const Json& mesh : written.json["meshes"])
-        for (const Json& primitive : mesh["primitives"])
-            EXPECT_TRUE(primitive["attributes"].contains("COLOR_0"));
-    material_test::expectValidGltf(out);
+    exportEngineWithAttribute(painted, out, "COLOR_0");
 
     // Reopened: the same triangles, and the stroke's colours where it painted.
     const core::Mesh again = load(out);
@@ -225,21 +234,12 @@ TEST(WriteBack, AnAutomaticUvLayoutGivesEachPrimitiveItsTexture) {
 
     TempDir dir;
     const std::string out = dir.file("engine.glb");
-    std::vector<std::string> warnings;
-    ASSERT_TRUE(core::exportMesh(out, core::ExportFormat::Glb, painted, {}, &warnings).ok());
-    for (const std::string& w : warnings)
-        EXPECT_EQ(w.find("not kept"), std::string::npos) << w;
-    const Glb source = readGlb(kEngine), written = readGlb(out);
-    for (const char* key : {"scene", "scenes", "nodes"})
-        EXPECT_EQ(written.json[key], source.json[key]) << key;
-    for (const Json& mesh : written.json["meshes"])
-        for (const Json& primitive : mesh["primitives"])
-            EXPECT_TRUE(primitive["attributes"].contains("TEXCOORD_0"));
+    exportEngineWithAttribute(painted, out, "TEXCOORD_0");
+    const Glb written = readGlb(out);
     std::size_t textured = 0;
     for (const Json& material : written.json["materials"])
         textured += material["pbrMetallicRoughness"].contains("baseColorTexture") ? 1 : 0;
     EXPECT_EQ(textured, written.json["materials"].size()) << "the painted page is not shown";
-    material_test::expectValidGltf(out);
 
     // Reopened: the same triangles, with UVs (no second layout).
     const core::Mesh again = load(out);
