@@ -50,6 +50,9 @@ int runExport(const ExportArgs& args) {
     auto project = core::loadProject(args.input);
     if (!project)
         return fail(project.error());
+    // What loading corrected or left out, then what the written file cannot keep.
+    std::vector<std::string> warnings = project->mesh.warnings;
+    warn(warnings);
     core::Document doc;
     doc.setMesh(std::move(project->mesh), args.input);
     if (project->state) {
@@ -66,7 +69,7 @@ int runExport(const ExportArgs& args) {
 
     const auto exportStart = std::chrono::steady_clock::now();
     core::Result<std::vector<std::string>> files = std::vector<std::string>{};
-    std::vector<std::string> warnings; // what the written file cannot keep
+    const std::size_t loadWarnings = warnings.size();
     if (core::isTextureFormat(*format)) {
         const core::Result<core::PaintTarget*> target = doc.ensurePaintTarget();
         if (!target)
@@ -98,7 +101,7 @@ int runExport(const ExportArgs& args) {
             return fail(layers.error());
         files->insert(files->end(), layers->begin(), layers->end());
     }
-    warn(warnings);
+    warn({warnings.begin() + std::ptrdiff_t(loadWarnings), warnings.end()});
     const nlohmann::json out = {{"format", core::exportFormatName(*format)},
                                 {"files", *files},
                                 {"warnings", warnings},

@@ -51,6 +51,7 @@ int runPaint(const PaintArgs& args) {
     auto project = core::loadProject(args.model);
     if (!project)
         return fail(project.error());
+    warn(project->mesh.warnings); // what loading corrected or left out
     core::Document doc;
     doc.setMesh(std::move(project->mesh), args.model);
     core::ProjectState base;

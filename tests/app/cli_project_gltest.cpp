@@ -174,6 +174,26 @@ TEST_F(CliProject, ExportWritesEveryFormat) {
     EXPECT_NE(unknown.err.find("unknown export format"), std::string::npos) << unknown.err;
 }
 
+TEST_F(CliProject, PaintAndExportSayWhatLoadingCorrected) {
+    json state = core::projectStateToJson({});
+    state["brush"]["opacity"] = 7; // out of range: the default is used, with a warning
+    ASSERT_TRUE(core::saveGlb(file("odd.glb"), core::loadMesh("builtin:row").value(),
+                              {{"layerpaint", state}})
+                    .ok());
+    writeScript("a.json", kFirstScript);
+    const CliRun exported = run({"export", file("odd.glb"), "--out", file("x.obj")});
+    ASSERT_EQ(exported.exitCode, 0) << exported.err;
+    EXPECT_NE(exported.err.find("layerpaint-cli: warning: "), std::string::npos) << exported.err;
+    EXPECT_NE(exported.err.find("opacity"), std::string::npos) << exported.err;
+    const json out = json::parse(exported.out);
+    ASSERT_EQ(out["warnings"].size(), 1u) << out.dump();
+    EXPECT_NE(out["warnings"][0].get<std::string>().find("opacity"), std::string::npos);
+    const CliRun painted = run(
+        {"paint", file("odd.glb"), "--script", file("a.json"), "--out", file("y.glb"), "--cpu"});
+    ASSERT_EQ(painted.exitCode, 0) << painted.err;
+    EXPECT_NE(painted.err.find("layerpaint-cli: warning: "), std::string::npos) << painted.err;
+}
+
 TEST_F(CliProject, NewerProjectIsRefusedByPaintAndExport) {
     json state = core::projectStateToJson({});
     state["version"] = core::kProjectFormatVersion + 5;
