@@ -10,6 +10,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/base/text.h"
 #include "core/depth/depth_layers.h"
 #include "core/document/document.h"
 #include "core/io/gltf/gltf_export.h"
@@ -71,14 +72,17 @@ void applyTargetArgs(const std::string& target, int resolution, core::PaintTarge
         options.resolution = resolution;
 }
 
+// Messages carry text from files: each is one line, escaped and cut, whatever it quotes.
+constexpr std::size_t kMaxMessageChars = 2000;
+
 int fail(const std::string& message) {
-    std::cerr << "layerpaint-cli: " << message << '\n';
+    std::cerr << "layerpaint-cli: " << core::printable(message, kMaxMessageChars) << '\n';
     return 1;
 }
 
 void warn(const std::vector<std::string>& warnings) {
     for (const std::string& w : warnings)
-        std::cerr << "layerpaint-cli: warning: " << w << '\n';
+        std::cerr << "layerpaint-cli: warning: " << core::printable(w, kMaxMessageChars) << '\n';
 }
 
 core::Result<core::View> makeView(const CameraArgs& args, const core::Mesh& mesh,

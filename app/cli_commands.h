@@ -80,9 +80,12 @@ struct BenchArgs {
 core::Result<std::unique_ptr<core::DepthCapturer>>
 makeCapturer(bool cpu, std::unique_ptr<render::HeadlessContext>& context);
 
-/** Prints "layerpaint-cli: message" on stderr and returns the failure exit code. */
+/**
+ * Prints "layerpaint-cli: message" on stderr (one line: control characters escaped, cut after
+ * 2000 characters) and returns the failure exit code.
+ */
 int fail(const std::string& message);
-/** Prints "layerpaint-cli: warning: W" on stderr for each of warnings. */
+/** Prints "layerpaint-cli: warning: W" on stderr for each of warnings, as fail() does. */
 void warn(const std::vector<std::string>& warnings);
 
 /**

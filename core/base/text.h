@@ -23,4 +23,33 @@ inline std::string lowerExtension(const std::filesystem::path& path) {
     return asciiLower(path.extension().string());
 }
 
+/**
+ * text from a file, safe to put into a message: control characters escaped (\n, \r, \t, \xNN)
+ * and cut after maxChars characters (UTF-8 sequences kept whole) with "…".
+ */
+inline std::string printable(std::string_view text, std::size_t maxChars = 80) {
+    static const char* const kHex = "0123456789abcdef";
+    std::string out;
+    std::size_t chars = 0;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const auto c = static_cast<unsigned char>(text[i]);
+        const bool starts = (c & 0xC0) != 0x80; // not a UTF-8 continuation byte
+        if (starts && chars++ == maxChars) {
+            out += "…";
+            break;
+        }
+        if (c == '\n')
+            out += "\\n";
+        else if (c == '\r')
+            out += "\\r";
+        else if (c == '\t')
+            out += "\\t";
+        else if (c < 0x20 || c == 0x7F)
+            out += std::string("\\x") + kHex[c >> 4] + kHex[c & 15];
+        else
+            out += char(c);
+    }
+    return out;
+}
+
 } // namespace core

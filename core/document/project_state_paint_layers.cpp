@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/document/project_state.h"
 
@@ -205,11 +206,11 @@ Status restorePaintLayers(Document& doc, const SavedPaintLayers& saved) {
             const bool material = c != std::size_t(PaintChannel::BaseColor);
             if (!fits(layer.channels[c], channelTexelBytes(PaintChannel(c))) ||
                 (layer.channels[c] && material && !stack.hasMaterialChannels()))
-                return Error{"paint layer \"" + layer.settings.name +
+                return Error{"paint layer \"" + printable(layer.settings.name) +
                              "\" does not fit the model's textures"};
         }
         if (!fits(layer.mask, 1))
-            return Error{"the mask of paint layer \"" + layer.settings.name +
+            return Error{"the mask of paint layer \"" + printable(layer.settings.name) +
                          "\" does not fit the model's textures"};
     }
     for (std::size_t p = 0; p < saved.base.size() && p < stack.pages().size(); ++p) {

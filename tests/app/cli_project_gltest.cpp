@@ -194,6 +194,15 @@ TEST_F(CliProject, PaintAndExportSayWhatLoadingCorrected) {
     EXPECT_NE(painted.err.find("layerpaint-cli: warning: "), std::string::npos) << painted.err;
 }
 
+TEST_F(CliProject, MessagesQuotingAFileAreOneEscapedLine) {
+    const std::string name = file("a\nlayerpaint-cli: forged\x1b[2J.glb");
+    const CliRun r = run({"export", name, "--out", file("x.obj")});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("a\\nlayerpaint-cli: forged\\x1b[2J.glb"), std::string::npos) << r.err;
+}
+
 TEST_F(CliProject, NewerProjectIsRefusedByPaintAndExport) {
     json state = core::projectStateToJson({});
     state["version"] = core::kProjectFormatVersion + 5;

@@ -5,6 +5,8 @@
 // and metallic (value, coverage) as grey with alpha; a mask as grey.
 #include "core/io/project/project_file_paint_layers.h"
 
+#include "core/base/text.h"
+
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -311,7 +313,7 @@ Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
         layersIt != paintLayers.end() && layersIt->is_array() ? *layersIt : Json::array();
     for (std::size_t i = 0; i < saved.layers.size() && i < layers.size(); ++i) {
         SavedPaintLayer& layer = saved.layers[i];
-        const std::string name = "paint layer \"" + layer.settings.name + "\"";
+        const std::string name = "paint layer \"" + printable(layer.settings.name) + "\"";
         if (const auto channels = layers[i].find("channels"); channels != layers[i].end()) {
             if (!channels->is_object())
                 return Error{name + ": its channels are not a JSON object"};

@@ -20,3 +20,17 @@ TEST(Text, LowerExtensionKeepsTheDot) {
     EXPECT_EQ(core::lowerExtension("README"), "");
     EXPECT_EQ(core::lowerExtension("archive.tar.GZ"), ".gz");
 }
+
+TEST(Text, PrintableEscapesControlCharactersAndCuts) {
+    EXPECT_EQ(core::printable("Layer 1"), "Layer 1");
+    // A newline cannot forge a second message line; a terminal escape cannot act.
+    EXPECT_EQ(core::printable("a\nlayerpaint-cli: b"), "a\\nlayerpaint-cli: b");
+    EXPECT_EQ(core::printable("\x1b[31mred\t\r"), "\\x1b[31mred\\t\\r");
+    EXPECT_EQ(core::printable(std::string(1 << 20, 'x')), std::string(80, 'x') + "…");
+    // Cut after whole characters: 80 "Ä" (2 bytes each) stay, the 81st goes.
+    std::string umlauts;
+    for (int i = 0; i < 81; ++i)
+        umlauts += "\xC3\x84";
+    EXPECT_EQ(core::printable(umlauts), umlauts.substr(0, 160) + "…");
+    EXPECT_EQ(core::printable("abcdef", 3), "abc…");
+}
