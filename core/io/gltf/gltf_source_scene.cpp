@@ -9,9 +9,9 @@
 
 namespace core::detail::gltf {
 
-namespace {
-
 using Json = nlohmann::json;
+
+namespace {
 using Bytes = std::vector<std::uint8_t>;
 
 constexpr std::uint64_t kMaxBin = 0xFFFFFFFFu - (64u << 20); // a GLB's length is 32 bits

@@ -16,9 +16,9 @@
 
 namespace core::detail::gltf {
 
-namespace {
-
 using Json = nlohmann::json;
+
+namespace {
 using Bytes = std::vector<std::uint8_t>;
 
 constexpr const char* kSpecularGlossiness = "KHR_materials_pbrSpecularGlossiness";

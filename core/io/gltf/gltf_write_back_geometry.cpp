@@ -8,9 +8,9 @@
 
 namespace core::detail::gltf {
 
-namespace {
-
 using Json = nlohmann::json;
+
+namespace {
 
 constexpr int kFloat = 5126;
 
