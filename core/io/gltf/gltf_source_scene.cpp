@@ -46,11 +46,19 @@ std::string sniffMimeType(const Bytes& bytes) {
     return {};
 }
 
-/** The buffers' data, one after the other, and the views moved into it. */
-void mergeBuffers(const tinygltf::Model& model, Json& json, Bytes& bin) {
+/**
+ * The buffers' data, one after the other (taken from model: a single buffer, a binary glTF's
+ * usual one, moves without a copy), and the views moved into it.
+ */
+void mergeBuffers(tinygltf::Model& model, Json& json, Bytes& bin) {
     std::vector<std::uint64_t> base;
-    for (const tinygltf::Buffer& buffer : model.buffers)
-        base.push_back(append(bin, buffer.data.data(), buffer.data.size()));
+    if (model.buffers.size() == 1) {
+        bin = std::move(model.buffers[0].data);
+        base.push_back(0);
+    } else {
+        for (const tinygltf::Buffer& buffer : model.buffers)
+            base.push_back(append(bin, buffer.data.data(), buffer.data.size()));
+    }
     Json& views = json["bufferViews"];
     if (views.is_null())
         views = Json::array();
@@ -86,7 +94,7 @@ void embedImages(const FileAccess& access, Json& json, Bytes& bin) {
 }
 
 /** The scene's JSON and one buffer of its data; "" or why it cannot be. */
-std::string copyScene(const Json& json, const tinygltf::Model& model, const FileAccess& access,
+std::string copyScene(const Json& json, tinygltf::Model& model, const FileAccess& access,
                       SourceScene& scene) {
     try {
         scene.json = json;
@@ -108,7 +116,7 @@ std::string copyScene(const Json& json, const tinygltf::Model& model, const File
 
 } // namespace
 
-void keepScene(const Json& json, std::uint64_t jsonBytes, const tinygltf::Model& model,
+void keepScene(const Json& json, std::uint64_t jsonBytes, tinygltf::Model& model,
                const FileAccess& access, const Mesh& mesh, SourceScene& scene) {
     scene.uvHash = hashValues(mesh.uvs);
     scene.colorHash = hashValues(mesh.colors);
