@@ -404,9 +404,12 @@ Result<Extensions> checkExtensions(const Json& root) {
         "KHR_draco_mesh_compression", "EXT_meshopt_compression", "KHR_meshopt_compression",
         "KHR_texture_transform"};
     quantized = false;
-    for (const Json& e : root.value("extensionsUsed", Json::array()))
+    for (const Json& e : root.value("extensionsUsed", Json::array())) {
         if (e.get<std::string>() == "KHR_mesh_quantization")
             quantized = true;
+        if (e == "EXT_meshopt_compression" || e == "KHR_meshopt_compression")
+            found.meshopt = true;
+    }
     for (const Json& e : root.value("extensionsRequired", Json::array())) {
         const std::string ext = e.get<std::string>();
         if (ext == "KHR_mesh_quantization") {

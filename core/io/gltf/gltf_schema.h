@@ -27,6 +27,7 @@ Status checkImageViews(const nlohmann::json& root);
 /** What the extensions a file uses mean for loading it. */
 struct Extensions {
     bool quantized = false;            // KHR_mesh_quantization: integer attributes allowed
+    bool meshopt = false;              // EXT_ or KHR_meshopt_compression is used
     std::vector<std::string> warnings; // required extensions that are ignored
 };
 

@@ -18,16 +18,6 @@ constexpr std::uint64_t kMaxBin = 0xFFFFFFFFu - (64u << 20); // a GLB's length i
 // Parsed JSON takes tens of times its text in memory; real scenes' JSON stays far below this.
 constexpr std::uint64_t kMaxJson = 16u << 20;
 
-bool usesExtension(const Json& json, const char* name) {
-    const auto used = json.find("extensionsUsed");
-    if (used == json.end() || !used->is_array())
-        return false;
-    for (const Json& e : *used)
-        if (e.is_string() && e.get<std::string>() == name)
-            return true;
-    return false;
-}
-
 /** Appends bytes to bin at a 4-byte boundary; returns where they start. */
 std::uint64_t append(Bytes& bin, const std::uint8_t* bytes, std::size_t size) {
     bin.resize((bin.size() + 3) & ~std::size_t{3}, 0);
@@ -116,12 +106,11 @@ std::string copyScene(const Json& json, tinygltf::Model& model, const FileAccess
 
 } // namespace
 
-void keepScene(const Json& json, std::uint64_t jsonBytes, tinygltf::Model& model,
+void keepScene(const Json& json, std::uint64_t jsonBytes, bool meshopt, tinygltf::Model& model,
                const FileAccess& access, const Mesh& mesh, SourceScene& scene) {
     scene.uvHash = hashValues(mesh.uvs);
     scene.colorHash = hashValues(mesh.colors);
-    if (usesExtension(json, "EXT_meshopt_compression") ||
-        usesExtension(json, "KHR_meshopt_compression"))
+    if (meshopt)
         scene.notKept = "its buffers are compressed with EXT_meshopt_compression";
     else if (jsonBytes > kMaxJson)
         scene.notKept = "its JSON is larger than 16 MiB";

@@ -318,7 +318,8 @@ Result<Mesh> load(const fs::path& file, const ProgressFn& progress, const LoadLi
     if (!flattened)
         return flattened.takeError();
     Mesh mesh = std::move(flattened).value();
-    gltf::keepScene(src.json, src.parts.jsonLength, model, access, mesh, *scene);
+    gltf::keepScene(src.json, src.parts.jsonLength, extensions->meshopt, model, access, mesh,
+                    *scene);
     mesh.source = std::move(scene);
     // Then tinygltf's own warnings (missing images, ...), then the flattener's.
     for (const std::string& w : lines(warn))

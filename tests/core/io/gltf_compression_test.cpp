@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/io/mesh_io.h"
+#include "core/model/source_scene.h"
 #include "tests/core/io/gltf_files.h"
 #include "tests/core/test_files.h"
 
@@ -114,6 +115,9 @@ TEST(GltfCompression, MeshoptQuantizedMatchesTheUncompressedMesh) {
     EXPECT_TRUE(mesh->warnings.empty()) << mesh->warnings.front();
     // 16-bit positions through the node transform, 16-bit normalized UVs.
     expectSameMesh(*mesh, g, 2.0f / 65535.0f, 1.0f / 65535.0f);
+    // Its fallback buffers hold no data: saving cannot write the scene back, and says why.
+    ASSERT_TRUE(mesh->source);
+    EXPECT_NE(mesh->source->notKept.find("EXT_meshopt_compression"), std::string::npos);
 }
 
 TEST(GltfCompression, TextureTransformMovesTheUvs) {
