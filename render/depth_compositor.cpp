@@ -38,6 +38,11 @@ constexpr std::pair<Variant, const char*> kDefines[] = {
     {kChannelBase, "CHANNEL_BASE"},
     {kChannelRough, "CHANNEL_ROUGHNESS"},
     {kChannelMetal, "CHANNEL_METALLIC"},
+    {kWithTangents, "TANGENTS"},
+    {kNormalMap, "NORMAL_MAP"},
+    {kOcclusionMap, "OCCLUSION_MAP"},
+    {kEmissive, "EMISSIVE"},
+    {kEmissiveMap, "EMISSIVE_MAP"},
 };
 
 /** composite.vert + composite.frag, or composite_shade.comp, with the variant's defines. */
@@ -199,7 +204,8 @@ struct DepthCompositor::Impl::DrawPass {
         const bool segmentation = options.display == DepthLayerDisplay::Segmentation;
         const bool textured = d.hasMesh && !d.passTexture.empty();
         if (textured)
-            shadeVariant |= kTextured | (d.hasUvs ? kWithUvs : 0u);
+            shadeVariant |= kTextured | (d.hasUvs ? kWithUvs : 0u) |
+                            (d.hasUvs && d.hasTangents ? kWithTangents : 0u);
         if (d.hasMesh && d.hasColors)
             shadeVariant |= kWithColors;
         if (options.display == DepthLayerDisplay::SingleLayer)
@@ -228,10 +234,23 @@ struct DepthCompositor::Impl::DrawPass {
                   d.resolvedLayer != layer;
     }
 
-    /** A pass with a metallic-roughness texture samples it (only then: llvmpipe pays for code). */
+    /**
+     * A pass with a metallic-roughness texture samples it, one with maps samples them in the
+     * Material channel (only then: llvmpipe pays for code).
+     */
     unsigned passVariant(unsigned variant, std::size_t pass) const {
-        return (variant & kTextured) && d.passMetallicRoughness(pass) ? variant | kMaterial
-                                                                      : variant;
+        if (!(variant & kTextured))
+            return variant;
+        if (d.passMetallicRoughness(pass))
+            variant |= kMaterial;
+        if (!(variant & (kChannelBase | kChannelRough | kChannelMetal)) &&
+            pass < d.passMaps.size()) {
+            unsigned surface = d.passMaps[pass].features();
+            if (!(shadeVariant & kWithTangents))
+                surface &= ~unsigned(kSurfaceNormalMap);
+            variant |= surface << kSurfaceShift;
+        }
+        return variant;
     }
 
     /**
@@ -284,22 +303,32 @@ struct DepthCompositor::Impl::DrawPass {
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(kTriangles + i),
                              part.buffers[i].id ? part.buffers[i].id
                                                 : d.buffers[kTriangles + i].id);
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTangents,
+                         part.tangents.id ? part.tangents.id : d.buffers[kTangents].id);
+    }
+
+    /** Room for the fragments' tangents, made when a shading first keeps them. */
+    bool makeShadingTangents() {
+        Buffer& buffer = d.buffers[kShadingTangent];
+        if (buffer.id && buffer.bytes >= d.fragments * 4)
+            return true;
+        if (!buffer.upload(nullptr, d.fragments * 4, d.maxBlockBytes, true))
+            return false;
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadingTangent, buffer.id);
+        return true;
     }
 
     /** Once per capture or mesh: every fragment's shading, 64 fragments a group. */
     void shadeFragments() {
+        if ((shadeVariant & kWithTangents) && !makeShadingTangents())
+            return; // out of GL memory: left unshaded, as a failed upload leaves it
         const Program& p = *shadeProgram;
         p.shader.use();
         glUniform1ui(p.fragmentCount, std::uint32_t(d.fragments));
         glUniform1ui(p.width, std::uint32_t(d.width));
         glUniform1ui(p.meshTriangles, d.hasMesh ? d.triangleCount : 0u);
         glUniformMatrix4fv(p.view, 1, GL_FALSE, glm::value_ptr(d.view));
-        glUniform3fv(p.rayOrigin0, 1, glm::value_ptr(d.rays.origin0));
-        glUniform3fv(p.rayOriginDx, 1, glm::value_ptr(d.rays.originDx));
-        glUniform3fv(p.rayOriginDy, 1, glm::value_ptr(d.rays.originDy));
-        glUniform3fv(p.rayDirection0, 1, glm::value_ptr(d.rays.direction0));
-        glUniform3fv(p.rayDirectionDx, 1, glm::value_ptr(d.rays.directionDx));
-        glUniform3fv(p.rayDirectionDy, 1, glm::value_ptr(d.rays.directionDy));
+        setRays(p);
         const std::size_t groups = (d.fragments + kShadeGroupSize - 1) / kShadeGroupSize;
         const GLuint groupsX = GLuint(std::min<std::size_t>(groups, 65535));
         // One pass per mesh part; each shades the fragments of its triangles (the first also
@@ -329,13 +358,33 @@ struct DepthCompositor::Impl::DrawPass {
         glBindVertexArray(d.vao);
     }
 
-    /** The textures a step samples: its pass's base colour and metallic-roughness. */
-    void bindMaterialTextures(const Step& step) {
+    /** The textures a step samples: its pass's base colour, metallic-roughness and maps. */
+    void bindMaterialTextures(const Step& step, const Program& p) {
         const auto id = [](const PaintTexture* texture) { return texture ? texture->id() : 0u; };
+        const PaintTexture* baseColor = d.passBaseColor(step.pass);
         if (composeVariant & kTextured)
-            glBindTextureUnit(0, id(d.passBaseColor(step.pass)));
+            glBindTextureUnit(0, id(baseColor));
         if (step.variant & kMaterial)
             glBindTextureUnit(1, id(d.passMetallicRoughness(step.pass)));
+        const unsigned surface = (step.variant >> kSurfaceShift) & 0xfu;
+        if (!surface || !baseColor)
+            return;
+        SurfaceMaps shown = d.passMaps[step.pass];
+        if (!(surface & kSurfaceNormalMap))
+            shown.normal = {};
+        bindSurfaceMaps(p.shader, shown, *d.textures, baseColor->width(), baseColor->height());
+        if (surface & kSurfaceNormalMap)
+            setRays(p); // the view direction of the headlight on the turned normals
+    }
+
+    /** The view's pixel rays, as the shading pass reads them. */
+    void setRays(const Program& p) const {
+        glUniform3fv(p.rayOrigin0, 1, glm::value_ptr(d.rays.origin0));
+        glUniform3fv(p.rayOriginDx, 1, glm::value_ptr(d.rays.originDx));
+        glUniform3fv(p.rayOriginDy, 1, glm::value_ptr(d.rays.originDy));
+        glUniform3fv(p.rayDirection0, 1, glm::value_ptr(d.rays.direction0));
+        glUniform3fv(p.rayDirectionDx, 1, glm::value_ptr(d.rays.directionDx));
+        glUniform3fv(p.rayDirectionDy, 1, glm::value_ptr(d.rays.directionDy));
     }
 
     /** Composing pass i over the tiles; the first marks what Visible now holds. */
@@ -361,7 +410,7 @@ struct DepthCompositor::Impl::DrawPass {
         glUniform1i(p.metallicRoughness, 1);
         glUniform1i(p.pass, int(step.pass));
         glUniform1f(p.opacity, std::clamp(options.popUpOpacity, 0.0f, 1.0f));
-        bindMaterialTextures(step);
+        bindMaterialTextures(step, p);
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(d.tiles.size()));
         if (i == 0 && resolve) {
             d.resolvedVersion = d.version;
@@ -376,6 +425,7 @@ struct DepthCompositor::Impl::DrawPass {
     static void unbindAll() {
         glDisable(GL_BLEND);
         glBindTextureUnit(1, 0);
+        unbindSurfaceMaps();
         glBindVertexArray(0);
         for (GLuint binding = 0; binding < kStorageBindings; ++binding)
             glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);

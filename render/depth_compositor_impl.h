@@ -22,6 +22,7 @@
 #include "render/gl_buffer.h"
 #include "render/paint_texture.h"
 #include "render/shader_library.h"
+#include "render/surface_maps.h"
 
 namespace render::compositor {
 
@@ -51,7 +52,9 @@ enum Binding : GLuint {
     kShadingUv,
     kShadingLight,
     kShadingNormal,
-    kTiles, // a vertex buffer, not shader storage
+    kTangents,       // a mesh array of MeshPart::tangents (normal maps only)
+    kShadingTangent, // a fragment's view-space tangent (normal maps only)
+    kTiles,          // a vertex buffer, not shader storage
     kBufferCount
 };
 constexpr GLuint kStorageBindings = kTiles;
@@ -76,6 +79,13 @@ enum Variant : unsigned {
     kChannelBase = 1u << 13,  // MaterialChannel::BaseColor
     kChannelRough = 1u << 14, // MaterialChannel::Roughness
     kChannelMetal = 1u << 15, // MaterialChannel::Metallic
+    kWithTangents = 1u << 16, // the shading keeps tangents (a pass has a normal map)
+    // A pass's maps in the Material channel (render::SurfaceFeature bits, shifted).
+    kSurfaceShift = 17,
+    kNormalMap = kSurfaceNormalMap << kSurfaceShift,
+    kOcclusionMap = kSurfaceOcclusionMap << kSurfaceShift,
+    kEmissive = kSurfaceEmissive << kSurfaceShift,
+    kEmissiveMap = kSurfaceEmissiveMap << kSurfaceShift,
 };
 
 /** composite.frag's Material (std430). */
@@ -122,6 +132,7 @@ struct MeshPart {
     bool renumbered = false;             // false: the mesh's own numbering (a mesh in one part)
     std::vector<std::uint32_t> vertices; // renumbered: the mesh vertex of each local one, ascending
     std::array<Buffer, kMeshArrays> buffers; // binding kTriangles + i
+    Buffer tangents;                         // binding kTangents, with normal maps only
 };
 
 /** A linked program variant and the locations of its uniforms (-1 where it has none). */
@@ -160,8 +171,10 @@ struct DepthCompositor::Impl {
     std::size_t vertexCount = 0;
     std::vector<compositor::MeshPart> meshParts; // empty without a mesh
     std::shared_ptr<MaterialTextures> textures = std::make_shared<MaterialTextures>();
-    bool ownTextures = true;      // made from the mesh here, not shared
-    std::vector<int> passTexture; // per pass, the mesh texture it samples
+    bool ownTextures = true;           // made from the mesh here, not shared
+    std::vector<int> passTexture;      // per pass, the mesh texture it samples
+    std::vector<SurfaceMaps> passMaps; // per pass, its maps
+    bool hasTangents = false;          // the parts hold tangents
 
     // Depth layers
     bool hasDepthLayers = false;
@@ -186,6 +199,7 @@ struct DepthCompositor::Impl {
 
     void releaseTextures() {
         passTexture.clear();
+        passMaps.clear();
         if (ownTextures)
             textures->release();
     }

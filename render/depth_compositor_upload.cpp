@@ -14,6 +14,7 @@
 #include <epoxy/gl.h>
 #include <glm/vec4.hpp>
 
+#include "core/model/mesh_tangents.h"
 #include "render/depth_compositor_impl.h"
 
 namespace render {
@@ -210,16 +211,19 @@ std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh) {
     return packed;
 }
 
-/** The materials as the shader reads them, and the texture each draw pass samples. */
+/** The materials as the shader reads them, and the texture and maps each draw pass samples. */
 struct TexturePasses {
     std::vector<GpuMaterial> materials;
-    std::vector<int> images; // per pass, its mesh texture
+    std::vector<int> images;       // per pass, its mesh texture
+    std::vector<SurfaceMaps> maps; // per pass, its maps
 };
 
-/** One pass per distinct texture; textures beyond the resolved byte's range stay unsampled. */
+/**
+ * One pass per distinct texture and maps; textures beyond the resolved byte's range stay
+ * unsampled.
+ */
 TexturePasses planTexturePasses(const core::Mesh& mesh) {
     TexturePasses passes;
-    std::vector<int> passOf(mesh.textures.size(), -1);
     passes.materials.resize(mesh.materials.size());
     for (std::size_t m = 0; m < passes.materials.size(); ++m) {
         const core::Material& material = mesh.materials[m];
@@ -228,15 +232,27 @@ TexturePasses planTexturePasses(const core::Mesh& mesh) {
         if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
             mesh.textures[std::size_t(texture)].empty())
             continue;
-        int& pass = passOf[std::size_t(texture)];
+        const SurfaceMaps maps = SurfaceMaps::of(mesh, material);
+        int pass = -1;
+        for (std::size_t i = 0; i < passes.images.size() && pass < 0; ++i)
+            if (passes.images[i] == texture && passes.maps[i] == maps)
+                pass = int(i);
         if (pass < 0 && passes.images.size() < kMaxTexturePasses) {
             pass = int(passes.images.size());
             passes.images.push_back(texture);
+            passes.maps.push_back(maps);
         }
         const core::Image& image = mesh.textures[std::size_t(texture)];
         passes.materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
     }
     return passes;
+}
+
+/** Whether a pass has a normal map (the parts then hold tangents). */
+bool needsTangents(const TexturePasses& passes) {
+    return std::any_of(passes.maps.begin(), passes.maps.end(), [](const SurfaceMaps& maps) {
+        return (maps.features() & kSurfaceNormalMap) != 0;
+    });
 }
 
 std::vector<std::uint32_t> octNormals(const core::Mesh& mesh) {
@@ -246,11 +262,24 @@ std::vector<std::uint32_t> octNormals(const core::Mesh& mesh) {
     return normals;
 }
 
-/** What every part's upload reads: the mesh and its packed triangles and normals. */
+/**
+ * core::computeTangents() as composite_shade.comp reads them: the direction octahedral-encoded
+ * as octNormal() does, with the bitangent's sign in bit 0 (set: negative).
+ */
+std::vector<std::uint32_t> octTangents(const core::Mesh& mesh) {
+    const std::vector<glm::vec4> tangents = core::computeTangents(mesh);
+    std::vector<std::uint32_t> packed(tangents.size());
+    for (std::size_t i = 0; i < tangents.size(); ++i)
+        packed[i] = (octNormal(glm::vec3(tangents[i])) & ~1u) | (tangents[i].w < 0.0f ? 1u : 0u);
+    return packed;
+}
+
+/** What every part's upload reads: the mesh and its packed triangles, normals and tangents. */
 struct MeshUpload {
     const core::Mesh& mesh;
     const std::vector<glm::uvec4>& packed;
     const std::vector<std::uint32_t>& normals;
+    const std::vector<std::uint32_t>& tangents; // empty without normal maps
     bool hasUvs = false;
     bool hasColors = false;
     std::size_t limit = 0; // bytes of one storage block
@@ -262,9 +291,16 @@ bool uploadTo(MeshPart& part, std::size_t binding, const auto& values, bool pres
     return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
 }
 
+/** The part's tangents, or a little storage without normal maps. */
+bool uploadTangents(MeshPart& part, const std::vector<std::uint32_t>& tangents, std::size_t limit) {
+    return tangents.empty() ? part.tangents.upload(nullptr, 0, limit)
+                            : part.tangents.upload(tangents, limit);
+}
+
 /** The whole mesh as one part, its arrays as they are. */
 bool uploadWhole(const MeshUpload& u, MeshPart& part) {
-    return uploadTo(part, kTriangles, u.packed, true, u.limit) &&
+    return uploadTangents(part, u.tangents, u.limit) &&
+           uploadTo(part, kTriangles, u.packed, true, u.limit) &&
            uploadTo(part, kPositions, u.mesh.positions, true, u.limit) &&
            uploadTo(part, kNormals, u.normals, true, u.limit) &&
            uploadTo(part, kUvs, u.mesh.uvs, u.hasUvs, u.limit) &&
@@ -296,7 +332,13 @@ bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
     const std::vector<glm::uvec4> local = renumberPart(u.packed, part);
     const std::vector<std::uint32_t>& v = part.vertices;
     const core::Mesh& mesh = u.mesh;
-    return uploadTo(part, kTriangles, local, true, u.limit) &&
+    return uploadTangents(
+               part,
+               u.tangents.empty()
+                   ? std::vector<std::uint32_t>()
+                   : gather<std::uint32_t>(v, [&](std::uint32_t g) { return u.tangents[g]; }),
+               u.limit) &&
+           uploadTo(part, kTriangles, local, true, u.limit) &&
            uploadTo(part, kPositions,
                     gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }), true,
                     u.limit) &&
@@ -332,9 +374,11 @@ MeshPlan planMeshParts(const std::vector<glm::uvec4>& packed, std::size_t vertic
 /** Uploads every part of plan (parts beyond it are freed; the others keep their buffers). */
 bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<MeshPart>& parts) {
     const std::vector<PartPlan>& plan = meshPlan.parts;
-    for (std::size_t i = plan.size(); i < parts.size(); ++i)
+    for (std::size_t i = plan.size(); i < parts.size(); ++i) {
         for (Buffer& buffer : parts[i].buffers)
             buffer.free();
+        parts[i].tangents.free();
+    }
     parts.resize(plan.size());
     for (std::size_t i = 0; i < plan.size(); ++i) {
         MeshPart& part = parts[i];
@@ -370,10 +414,14 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
     const std::vector<std::uint32_t> normals = octNormals(mesh);
     d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
     d.hasColors = mesh.colors.size() == vertices && vertices > 0;
+    const std::vector<std::uint32_t> tangents =
+        d.hasUvs && needsTangents(passes) ? octTangents(mesh) : std::vector<std::uint32_t>();
+    d.hasTangents = !tangents.empty();
     const MeshPlan plan = planMeshParts(packed, vertices, d.hasColors, d.planBytes());
     if (plan.parts.empty())
         return tooLarge("one triangle's vertices");
-    const MeshUpload upload{mesh, packed, normals, d.hasUvs, d.hasColors, d.maxBlockBytes};
+    const MeshUpload upload{mesh,     packed,      normals,        tangents,
+                            d.hasUvs, d.hasColors, d.maxBlockBytes};
     if (!d.buffers[kMaterials].upload(passes.materials, d.maxBlockBytes) ||
         !uploadMeshParts(upload, plan, d.meshParts)) {
         d.meshParts.clear();
@@ -382,6 +430,7 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
     if (d.ownTextures)
         d.textures->create(mesh.textures);
     d.passTexture = std::move(passes.images);
+    d.passMaps = std::move(passes.maps);
     d.vertexCount = vertices;
     d.triangleCount = std::uint32_t(triangles);
     d.hasMesh = true;

@@ -18,6 +18,11 @@ namespace render {
  */
 class MaterialTextures {
 public:
+    MaterialTextures() = default;
+    ~MaterialTextures() { release(); }
+    MaterialTextures(const MaterialTextures&) = delete;
+    MaterialTextures& operator=(const MaterialTextures&) = delete;
+
     /**
      * Uploads every texture of a mesh (replacing all, metallic-roughness ones dropped); an empty
      * image gets none.
@@ -44,12 +49,21 @@ public:
     const PaintTexture* baseColor(std::size_t texture) const;
     /** Its metallic-roughness texture, nullptr when it has none. */
     const PaintTexture* metallicRoughness(std::size_t texture) const;
+    /**
+     * Mesh texture `texture` read as plain values (a view of the base colour texture's storage
+     * without sRGB decoding: normal and occlusion maps), 0 when unknown or empty. It shows
+     * painting's updates too.
+     */
+    unsigned linearView(std::size_t texture) const;
     /** Frees every texture; the context must be current. */
     void release();
 
 private:
+    static unsigned makeLinearView(unsigned texture);
+
     std::vector<PaintTexture> m_baseColor;
     std::vector<PaintTexture> m_metallicRoughness; // id 0: none
+    std::vector<unsigned> m_linearViews;           // 0: none
 };
 
 } // namespace render

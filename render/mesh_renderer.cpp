@@ -2,16 +2,19 @@
 #include "render/mesh_renderer.h"
 
 #include <algorithm>
-#include <array>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/model/mesh_tangents.h"
 #include "render/paint_texture.h"
 #include "render/shader_library.h"
 #include "render/software_gl.h"
+#include "render/surface_maps.h"
 
 namespace render {
 
@@ -29,17 +32,20 @@ struct MaterialRun {
     std::uint32_t material;
 };
 
-/** A program variant: the channel shown, and whether the material has metallic-roughness. */
-std::size_t variantIndex(MaterialChannel channel, bool material) {
-    return std::size_t(channel) * 2 + (material ? 1 : 0);
+/**
+ * A program variant: the channel shown, whether the material has metallic-roughness, and the
+ * SurfaceFeature bits of its maps (only in the lit Material channel).
+ */
+unsigned variantKey(MaterialChannel channel, bool material, unsigned surface) {
+    return unsigned(channel) | (material ? 4u : 0u) | surface << 3;
 }
 
 /** mesh.frag with the defines of a variant. */
-core::Result<ShaderProgram> buildVariant(MaterialChannel channel, bool material) {
-    std::vector<std::string> defines;
-    if (material)
+core::Result<ShaderProgram> buildVariant(unsigned key) {
+    std::vector<std::string> defines = surfaceDefines(key >> 3);
+    if (key & 4u)
         defines.emplace_back("MATERIAL");
-    switch (channel) {
+    switch (MaterialChannel(key & 3u)) {
     case MaterialChannel::Material:
         break;
     case MaterialChannel::BaseColor:
@@ -58,11 +64,13 @@ core::Result<ShaderProgram> buildVariant(MaterialChannel channel, bool material)
 
 struct MeshRenderer::Impl {
     // Built when first drawn (llvmpipe pays for every instruction, so features are compiled in
-    // only where a run needs them); [0], the plain one, by initialize().
-    std::array<ShaderProgram, 8> programs;
-    std::array<bool, 8> failed{};
+    // only where a run needs them); key 0, the plain one, by initialize().
+    std::map<unsigned, ShaderProgram> programs;
+    std::set<unsigned> failed;
     GLuint vao = 0, vbo = 0, ibo = 0;
-    GLuint colorBuffer = 0; // its own buffer, so painting updates it in place
+    GLuint colorBuffer = 0;            // its own buffer, so painting updates it in place
+    GLuint tangentBuffer = 0;          // only for a mesh with normal maps
+    std::vector<SurfaceMaps> surfaces; // per material
     std::size_t vertexCount = 0;
     std::shared_ptr<MaterialTextures> textures = std::make_shared<MaterialTextures>();
     bool ownTextures = true; // made from the mesh here, not shared
@@ -80,6 +88,8 @@ struct MeshRenderer::Impl {
         glCreateVertexArrays(1, &array);
         glVertexArrayVertexBuffer(array, 0, vbo, 0, sizeof(Vertex));
         glVertexArrayVertexBuffer(array, 1, colorBuffer, 0, sizeof(glm::vec4));
+        if (tangentBuffer)
+            glVertexArrayVertexBuffer(array, 2, tangentBuffer, 0, sizeof(glm::vec4));
         glVertexArrayElementBuffer(array, indexBuffer);
         const auto attribute = [&](GLuint location, GLint size, GLuint offset, GLuint binding) {
             glEnableVertexArrayAttrib(array, location);
@@ -90,6 +100,8 @@ struct MeshRenderer::Impl {
         attribute(1, 3, offsetof(Vertex, normal), 0);
         attribute(2, 2, offsetof(Vertex, uv), 0);
         attribute(3, 4, 0, 1);
+        if (tangentBuffer)
+            attribute(4, 4, 0, 2);
         return array;
     }
 
@@ -108,16 +120,16 @@ struct MeshRenderer::Impl {
      * The program for channel and material, built on first use; the plain one where a variant
      * fails to build (the picture falls back to headlight shading instead of nothing).
      */
-    const ShaderProgram* program(MaterialChannel channel, bool material) {
-        const std::size_t i = variantIndex(channel, material);
-        if (!programs[i].valid() && !failed[i]) {
-            auto built = buildVariant(channel, material);
+    const ShaderProgram* program(unsigned key) {
+        auto found = programs.find(key);
+        if (found == programs.end() && !failed.contains(key)) {
+            auto built = buildVariant(key);
             if (built)
-                programs[i] = std::move(built).value();
+                found = programs.emplace(key, std::move(built).value()).first;
             else
-                failed[i] = true;
+                failed.insert(key);
         }
-        return programs[i].valid() ? &programs[i] : &programs[0];
+        return found != programs.end() ? &found->second : &programs[0];
     }
 
     void releaseStandIn() {
@@ -139,11 +151,14 @@ struct MeshRenderer::Impl {
             glDeleteBuffers(1, &ibo);
         if (colorBuffer)
             glDeleteBuffers(1, &colorBuffer);
-        vao = vbo = ibo = colorBuffer = 0;
+        if (tangentBuffer)
+            glDeleteBuffers(1, &tangentBuffer);
+        vao = vbo = ibo = colorBuffer = tangentBuffer = 0;
         vertexCount = 0;
         if (ownTextures)
             textures->release();
         runs.clear();
+        surfaces.clear();
         hasMesh = false;
     }
 };
@@ -155,7 +170,7 @@ MeshRenderer::~MeshRenderer() {
 }
 
 core::Status MeshRenderer::initialize() {
-    auto program = buildVariant(MaterialChannel::Material, false);
+    auto program = buildVariant(0);
     if (!program)
         return core::Error{program.error()};
     m_impl->programs[0] = std::move(program).value();
@@ -183,6 +198,19 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     glCreateBuffers(1, &d.ibo);
     glNamedBufferStorage(d.ibo, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                          mesh.indices.data(), 0);
+    d.surfaces.clear();
+    bool normalMaps = false;
+    for (const core::Material& material : mesh.materials) {
+        d.surfaces.push_back(SurfaceMaps::of(mesh, material));
+        normalMaps = normalMaps || (d.surfaces.back().features() & kSurfaceNormalMap);
+    }
+    if (const std::vector<glm::vec4> tangents =
+            normalMaps ? core::computeTangents(mesh) : std::vector<glm::vec4>();
+        !tangents.empty()) {
+        glCreateBuffers(1, &d.tangentBuffer);
+        glNamedBufferStorage(d.tangentBuffer, GLsizeiptr(tangents.size() * sizeof(glm::vec4)),
+                             tangents.data(), 0);
+    }
 
     d.vao = d.makeVao(d.ibo);
 
@@ -277,7 +305,12 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         const PaintTexture* metallicRoughness =
             textured ? d.textures->metallicRoughness(texture) : nullptr;
         const bool lit = metallicRoughness != nullptr;
-        const ShaderProgram* program = d.program(options.channel, lit);
+        const SurfaceMaps& surface = d.surfaces[run.material];
+        unsigned features =
+            options.channel == MaterialChannel::Material && baseColor ? surface.features() : 0u;
+        if (!d.tangentBuffer)
+            features &= ~unsigned(kSurfaceNormalMap);
+        const ShaderProgram* program = d.program(variantKey(options.channel, lit, features));
         if (program != current) {
             current = program;
             program->use();
@@ -293,6 +326,12 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
         if (lit && program != &d.programs[0])
             glBindTextureUnit(1, metallicRoughness->id());
+        if (features && program != &d.programs[0]) {
+            SurfaceMaps shown = surface;
+            if (!(features & kSurfaceNormalMap))
+                shown.normal = {};
+            bindSurfaceMaps(*program, shown, *d.textures, baseColor->width(), baseColor->height());
+        }
         drawInPieces(run.firstTriangle, run.triangleCount, pieces,
                      [](std::size_t first, std::size_t count) {
                          glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
@@ -302,6 +341,7 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     }
     glBindVertexArray(0);
     glBindTextureUnit(1, 0);
+    unbindSurfaceMaps();
     glUseProgram(0);
 }
 
@@ -309,8 +349,8 @@ void MeshRenderer::release() {
     if (!m_impl)
         return;
     m_impl->releaseMesh();
-    m_impl->programs = {};
-    m_impl->failed = {};
+    m_impl->programs.clear();
+    m_impl->failed.clear();
 }
 
 } // namespace render

@@ -9,8 +9,9 @@
 //   keeps, where the visible fragment is not on layer 1, the next one in the order ("under") in
 //   the second half of Visible. UNDER passes draw those opaque; the normal passes then blend
 //   the visible fragment over them with uOpacity.
-// - the picture: shaded colour, texture (TEXTURED, one pass per texture; MATERIAL: the pass has
-//   a metallic-roughness texture and lights the surface with it), one channel alone
+// - the picture: shaded colour, texture (TEXTURED, one pass per texture and maps; MATERIAL: the
+//   pass has a metallic-roughness texture and lights the surface with it; NORMAL_MAP,
+//   OCCLUSION_MAP, EMISSIVE, EMISSIVE_MAP: its maps, as mesh.frag draws them), one channel alone
 //   (CHANNEL_BASE, CHANNEL_ROUGHNESS, CHANNEL_METALLIC), SEGMENTATION colours
 //   (SHADE_SEGMENTATION: lit lightly), BOUNDARIES and HIGHLIGHT overlays, so repainting the
 //   texture or the overlays costs no picking.
@@ -168,6 +169,41 @@ uvec2 resolvePixel(uint pixel, ivec2 pix) {
 
 #endif
 
+#ifdef NORMAL_MAP
+layout(std430, binding = 2) readonly buffer FragmentDepths {
+    float fragmentDepth[];
+};
+layout(std430, binding = 19) readonly buffer ShadingTangent {
+    uint shadingTangent[];
+};
+uniform sampler2D uNormalMap; // linear
+uniform mat3 uNormalTransform;
+uniform mat2 uNormalAxes;
+uniform float uNormalScale;
+uniform float uNormalLodBias;
+// View-space pixel rays, as composite_shade.comp has them: the direction to the viewer.
+uniform vec3 uRayOrigin0;
+uniform vec3 uRayOriginDx;
+uniform vec3 uRayOriginDy;
+uniform vec3 uRayDirection0;
+uniform vec3 uRayDirectionDx;
+uniform vec3 uRayDirectionDy;
+#endif
+#ifdef OCCLUSION_MAP
+uniform sampler2D uOcclusionMap; // linear, red
+uniform mat3 uOcclusionTransform;
+uniform float uOcclusionStrength;
+uniform float uOcclusionLodBias;
+#endif
+#ifdef EMISSIVE
+uniform vec3 uEmission; // linear
+#endif
+#ifdef EMISSIVE_MAP
+uniform sampler2D uEmissiveMap; // GL_SRGB8_ALPHA8: sampled as linear
+uniform mat3 uEmissiveTransform;
+uniform float uEmissiveLodBias;
+#endif
+
 layout(location = 0) out vec4 fragColor;
 
 uniform vec4 uBackground; // sRGB
@@ -199,7 +235,6 @@ vec3 regionColor(uint region) {
     return value * mix(vec3(1.0), k, saturation);
 }
 
-#ifdef MATERIAL
 vec3 decodeNormal(uint word) {
     vec2 e = unpackSnorm2x16(word);
     vec3 v = vec3(e, 1.0 - abs(e.x) - abs(e.y));
@@ -209,7 +244,33 @@ vec3 decodeNormal(uint word) {
 }
 
 // material_shading.frag, linked in beside this file (the mesh renderer shades with it too).
-vec3 shadeMaterial(vec3 lit, float headlight, float roughness, float metallic, vec3 n);
+vec3 shadeMaterial(vec3 lit, float ambient, float headlight, float roughness, float metallic,
+                   vec3 n);
+vec3 mappedNormal(vec3 n, vec4 tangent, vec3 texel, float scale, mat2 axes);
+float occludedAmbient(float occlusion, float strength);
+
+vec2 mapUv(mat3 transform, vec2 uv) {
+    return (transform * vec3(uv, 1.0)).xy;
+}
+
+#if defined(NORMAL_MAP) || defined(OCCLUSION_MAP) || defined(EMISSIVE)
+#define SURFACE_MAPS
+#endif
+
+#ifdef NORMAL_MAP
+// The fragment's normal turned by the normal map, and the headlight on it (as mesh.frag: the
+// direction to the viewer from the point the pixel's ray meets).
+vec3 mappedFragmentNormal(uint f, vec3 n, vec2 uv, float lod, out float headlight) {
+    uint word = shadingTangent[f];
+    vec4 tangent = vec4(decodeNormal(word), (word & 1u) != 0u ? -1.0 : 1.0);
+    vec3 texel = textureLod(uNormalMap, mapUv(uNormalTransform, uv), lod + uNormalLodBias).rgb;
+    vec3 mapped = mappedNormal(n, tangent, texel, uNormalScale, uNormalAxes);
+    vec2 px = pixelCentre();
+    vec3 o = uRayOrigin0 + px.x * uRayOriginDx + px.y * uRayOriginDy;
+    vec3 d = uRayDirection0 + px.x * uRayDirectionDx + px.y * uRayDirectionDy;
+    headlight = max(dot(mapped, normalize(-(o + fragmentDepth[f] * d))), 0.0);
+    return mapped;
+}
 #endif
 
 void main() {
@@ -262,6 +323,13 @@ void main() {
         float metallic = 0.0;
         bool textured = false;
         vec3 lit = srgbToLinear(color.rgb); // the base colour lit by the headlight
+        float headlight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
+        float ambient = 0.25;
+        vec3 normal = vec3(0.0, 0.0, 1.0);
+#if defined(MATERIAL) || defined(NORMAL_MAP)
+        normal = decodeNormal(shadingNormal[chosen]);
+#endif
+        vec3 emission = vec3(0.0);
 #ifdef TEXTURED
         // The first pass takes the untextured pixels too, later passes only their texture's.
         uint slot = shade >> 24;
@@ -277,6 +345,31 @@ void main() {
             roughness = mr.x;
             metallic = mr.y;
 #endif
+#ifdef SURFACE_MAPS
+            // The maps as mesh.frag applies them: the albedo lit again with the turned normal
+            // and the occluded ambient, the emission added after lighting.
+            float shadedLight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
+            headlight = shadedLight;
+#ifdef NORMAL_MAP
+            normal = mappedFragmentNormal(chosen, normal, uv, lod, headlight);
+#endif
+#ifdef OCCLUSION_MAP
+            ambient = occludedAmbient(
+                textureLod(uOcclusionMap, mapUv(uOcclusionTransform, uv), lod + uOcclusionLodBias)
+                    .r,
+                uOcclusionStrength);
+#endif
+            lit = clamp(lit / (0.25 + 0.75 * shadedLight) * (ambient + 0.75 * headlight), 0.0,
+                        1.0);
+#ifdef EMISSIVE
+            emission = uEmission;
+#ifdef EMISSIVE_MAP
+            emission *= textureLod(uEmissiveMap, mapUv(uEmissiveTransform, uv),
+                                   lod + uEmissiveLodBias)
+                            .rgb;
+#endif
+#endif
+#endif
         }
 #endif
 #if defined(CHANNEL_ROUGHNESS)
@@ -284,16 +377,13 @@ void main() {
 #elif defined(CHANNEL_METALLIC)
         color.rgb = vec3(metallic);
 #elif defined(CHANNEL_BASE)
-        float headlight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
         color.rgb = linearToSrgb(clamp(lit / (0.25 + 0.75 * headlight), 0.0, 1.0));
 #else
         if (textured) {
 #ifdef MATERIAL
-            float headlight = float((shadingLight[chosen] >> 16) & 0xffu) / 255.0;
-            lit = shadeMaterial(lit, headlight, roughness, metallic,
-                                decodeNormal(shadingNormal[chosen]));
+            lit = shadeMaterial(lit, ambient, headlight, roughness, metallic, normal);
 #endif
-            color.rgb = linearToSrgb(clamp(lit, 0.0, 1.0));
+            color.rgb = linearToSrgb(clamp(lit + emission, 0.0, 1.0));
         }
 #endif
 #endif

@@ -2,7 +2,8 @@
 // draw_layers, once per capture or mesh: shades every captured fragment where its pixel's ray
 // meets its triangle, as mesh.frag shades that surface, into the Shading buffer. The shading
 // does not depend on the region order, so a pop-up only picks again (composite.frag). The
-// compositor inserts the defines: TEXTURED (uv and texture LOD), UVS, COLORS (vertex colours).
+// compositor inserts the defines: TEXTURED (uv and texture LOD), UVS, COLORS (vertex colours),
+// TANGENTS (the view-space tangent, for normal maps).
 layout(local_size_x = 64) in;
 
 const uint kNone = 0xffffffffu;
@@ -81,6 +82,17 @@ layout(std430, binding = 16) writeonly buffer ShadingLight {
 layout(std430, binding = 17) writeonly buffer ShadingNormal {
     uint shadingNormal[];
 };
+#ifdef TANGENTS
+// Per vertex (a mesh array like 6-10): the tangent octahedral as the normals, bit 0 the sign of
+// its bitangent (set: negative). Per fragment: the view-space tangent turned as the normal is
+// (facing the viewer), the same encoding.
+layout(std430, binding = 18) readonly buffer Tangents {
+    uint tangents[];
+};
+layout(std430, binding = 19) writeonly buffer ShadingTangent {
+    uint shadingTangent[];
+};
+#endif
 
 vec3 linearToSrgb(vec3 c) {
     return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
@@ -96,12 +108,15 @@ uint octEncode(vec3 n) {
 vec3 position(uint i) {
     return vec3(positions[3u * i], positions[3u * i + 1u], positions[3u * i + 2u]);
 }
-vec3 normalAt(uint i) {
-    vec2 e = unpackSnorm2x16(normals[i]);
+vec3 octDecode(uint word) {
+    vec2 e = unpackSnorm2x16(word);
     vec3 v = vec3(e, 1.0 - abs(e.x) - abs(e.y));
     if (v.z < 0.0)
         v.xy = (1.0 - abs(v.yx)) * vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0);
     return normalize(v);
+}
+vec3 normalAt(uint i) {
+    return octDecode(normals[i]);
 }
 
 // Barycentrics (of a, a + e1, a + e2) where the ray o + s d meets the triangle's plane; false
@@ -153,6 +168,7 @@ void main() {
     uint uvWord = 0u;
     uint lodWord = 32768u;
     vec3 facing = vec3(0.0, 0.0, 1.0);
+    uint tangentWord = 0u;
     if (triangle.w != kNone) {
         // Member by member: each field read is a load per fragment on llvmpipe.
         base = materials[triangle.w].baseColorFactor;
@@ -178,6 +194,19 @@ void main() {
         float nv = dot(normalize(n), normalize(-viewPosition));
         diffuse = abs(nv);
         facing = nv < 0.0 ? -normalize(n) : normalize(n);
+#ifdef TANGENTS
+        // As mesh.vert passes it on and mesh.frag turns it for a back face.
+        vec3 tangent = mat3(uView) * (bary.x * octDecode(tangents[triangle.x]) +
+                                      bary.y * octDecode(tangents[triangle.y]) +
+                                      bary.z * octDecode(tangents[triangle.z]));
+        uint negative = tangents[triangle.x] & 1u;
+        if (nv < 0.0) {
+            tangent = -tangent;
+            negative ^= 1u;
+        }
+        if (dot(tangent, tangent) > 1e-24)
+            tangentWord = (octEncode(tangent) & ~1u) | negative;
+#endif
 #ifdef COLORS
         base *= bary.x * colors[triangle.x] + bary.y * colors[triangle.y] +
                 bary.z * colors[triangle.z];
@@ -215,4 +244,7 @@ void main() {
     shadingUv[f] = uvWord;
     shadingLight[f] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
     shadingNormal[f] = octEncode(facing);
+#ifdef TANGENTS
+    shadingTangent[f] = tangentWord;
+#endif
 }

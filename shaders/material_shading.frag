@@ -4,11 +4,16 @@
 // linked with this file and declare shadeMaterial().
 const float kPi = 3.14159265;
 
+// Both files also use mappedNormal() and occludedAmbient() for a material's maps.
+
 // Metallic-roughness in view space with the viewer along +z: Lambert as the headlight shading
-// already gives it (lit, with its ambient), GGX specular from a key, a fill and a rim light, and
-// a sky-over-ground environment blurred by roughness that metal reflects tinted by its colour.
-vec3 shadeMaterial(vec3 lit, float headlight, float roughness, float metallic, vec3 n) {
-    vec3 albedo = lit / (0.25 + 0.75 * headlight);
+// already gives it (lit = albedo × (ambient + 0.75 headlight); ambient is 0.25, less where an
+// occlusion map darkens it), GGX specular from a key, a fill and a rim light, and a
+// sky-over-ground environment blurred by roughness that metal reflects tinted by its colour,
+// occluded as the ambient is.
+vec3 shadeMaterial(vec3 lit, float ambient, float headlight, float roughness, float metallic,
+                   vec3 n) {
+    vec3 albedo = lit / (ambient + 0.75 * headlight);
     vec3 f0 = mix(vec3(0.04), albedo, metallic);
     float r = clamp(roughness, 0.05, 1.0);
     float a2 = r * r * r * r;
@@ -43,5 +48,29 @@ vec3 shadeMaterial(vec3 lit, float headlight, float roughness, float metallic, v
     vec3 fresnelEnv = f0 + (max(vec3(1.0 - r), f0) - f0) * pow(1.0 - nv, 5.0);
     // A rough dielectric's environment is the headlight shading's ambient already.
     float environmentWeight = mix(1.0 - r, 1.0, metallic);
-    return lit * (1.0 - metallic) + specular + environment * fresnelEnv * environmentWeight;
+    return lit * (1.0 - metallic) + specular +
+           environment * fresnelEnv * environmentWeight * (ambient / 0.25);
+}
+
+// glTF's normal map: the facing normal n turned by a tangent-space texel (x right, y up the
+// image, z out). tangent.xyz follows increasing u (any length, not yet perpendicular to n) and
+// tangent.w is the sign of the bitangent cross(n, t); axes turns the mesh uvs' tangent frame into
+// the map's (its placement, render::SurfaceMaps).
+vec3 mappedNormal(vec3 n, vec4 tangent, vec3 texel, float scale, mat2 axes) {
+    vec3 t = tangent.xyz - n * dot(n, tangent.xyz);
+    if (!(dot(t, t) > 1e-12))
+        return n;
+    t = normalize(t);
+    vec3 b = tangent.w * cross(n, t);
+    vec3 tm = normalize(t * axes[0][0] + b * axes[0][1]);
+    vec3 bm = normalize(t * axes[1][0] + b * axes[1][1]);
+    vec3 m = texel * 2.0 - 1.0;
+    m.xy *= scale;
+    vec3 mapped = tm * m.x + bm * m.y + n * m.z;
+    return dot(mapped, mapped) > 1e-12 ? normalize(mapped) : n;
+}
+
+// The ambient light's share where an occlusion map (its red texel) darkens it by strength.
+float occludedAmbient(float occlusion, float strength) {
+    return 0.25 * (1.0 + strength * (occlusion - 1.0));
 }
