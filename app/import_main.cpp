@@ -7,7 +7,7 @@
 //
 //   layerpaint-import [--max-file-bytes N] [--max-vertices N] [--max-triangles N]
 //                     [--max-image-pixels N] [--max-seconds S] [--require-textures]
-//                     [--image | --glb-images V,V,...] -- FILE
+//                     [--image | --glb-images V[:WxH],V,...] -- FILE
 //   layerpaint-import --stdin    (the same arguments from standard input, each ended by a NUL,
 //                                 then an empty one: a process started before it is needed)
 //   layerpaint-import --probe OTHER_FILE -- FILE   (tests: what the sandbox allows, as text)
@@ -42,7 +42,7 @@ namespace fs = std::filesystem;
 struct Options {
     core::LoadLimits limits;
     bool image = false;
-    std::optional<std::vector<int>> glbImages; // buffer views of a binary glTF holding images
+    std::optional<std::vector<core::GlbImageRequest>> glbImages; // images in a binary glTF
     std::optional<std::string> probe;
     std::string file;
 };
@@ -51,7 +51,7 @@ int usage(const char* problem) {
     std::fprintf(stderr,
                  "layerpaint-import: %s\nusage: layerpaint-import [--max-file-bytes N] "
                  "[--max-vertices N] [--max-triangles N] [--max-image-pixels N] [--max-seconds S] "
-                 "[--require-textures] [--image | --glb-images V,V,...] -- FILE\n(run by "
+                 "[--require-textures] [--image | --glb-images V[:WxH],V,...] -- FILE\n(run by "
                  "LayerPaint to read files; it writes binary frames to its standard output)\n",
                  problem);
     return 2;
@@ -134,20 +134,45 @@ std::vector<std::string> readRequest() {
     }
 }
 
-/** "3,7,12": buffer view indices; nothing when malformed. */
-std::optional<std::vector<int>> viewList(const char* text) {
-    std::vector<int> views;
+/** A whole number of at most 0x7FFFFFFF, or nothing. */
+std::optional<int> count(const std::string& text) {
+    std::uint64_t n = 0;
+    if (!number(text.c_str(), n) || n > 0x7FFFFFFF)
+        return std::nullopt;
+    return static_cast<int>(n);
+}
+
+/**
+ * "3,7:256x128,12": buffer view indices, each with the size its image must have or not;
+ * nothing when malformed.
+ */
+std::optional<std::vector<core::GlbImageRequest>> viewList(const char* text) {
+    std::vector<core::GlbImageRequest> requests;
     const std::string list(text);
     std::size_t start = 0;
     while (start <= list.size()) {
         const std::size_t end = std::min(list.find(',', start), list.size());
-        std::uint64_t n = 0;
-        if (!number(list.substr(start, end - start).c_str(), n) || n > 0x7FFFFFFF)
+        const std::string item = list.substr(start, end - start);
+        const std::size_t colon = std::min(item.find(':'), item.size());
+        const std::size_t x = item.find('x', colon);
+        const auto view = count(item.substr(0, colon));
+        if (!view)
             return std::nullopt;
-        views.push_back(static_cast<int>(n));
+        core::GlbImageRequest request{*view, 0, 0};
+        if (colon < item.size()) {
+            const auto width = x == std::string::npos
+                                   ? std::nullopt
+                                   : count(item.substr(colon + 1, x - colon - 1));
+            const auto height = x == std::string::npos ? std::nullopt : count(item.substr(x + 1));
+            if (!width || !height)
+                return std::nullopt;
+            request.width = *width;
+            request.height = *height;
+        }
+        requests.push_back(request);
         start = end + 1;
     }
-    return views;
+    return requests;
 }
 
 std::optional<Options> parse(const std::vector<std::string>& argv) {

@@ -24,6 +24,17 @@ inline std::string lowerExtension(const std::filesystem::path& path) {
 }
 
 /**
+ * message without a leading "path: ": for a message that is about to be named after the same
+ * file again (one file name per message).
+ */
+inline std::string withoutFileName(std::string_view path, std::string_view message) {
+    if (!path.empty() && message.size() > path.size() + 1 &&
+        message.substr(0, path.size()) == path && message.substr(path.size(), 2) == ": ")
+        message.remove_prefix(path.size() + 2);
+    return std::string(message);
+}
+
+/**
  * text from a file, safe to put into a message: control characters escaped (\n, \r, \t, \xNN)
  * and cut after maxChars characters (UTF-8 sequences kept whole) with "…".
  */

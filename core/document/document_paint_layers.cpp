@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/document/document.h"
+#include "core/document/project_state.h"
 #include "core/paint/paint_layers/blend_modes.h"
 
 namespace core {
@@ -157,6 +158,17 @@ void Document::pushPaintLayerChange(PaintLayerChange change, nlohmann::json op,
     m_history.push(std::move(step));
 }
 
+namespace {
+/** Whether a stack of `layers` paint layers may get one more (a project holds kMaxPaintLayers). */
+Status roomForPaintLayer(std::size_t layers) {
+    if (layers < kMaxPaintLayers)
+        return {};
+    return Error{"there are " + std::to_string(layers) + " paint layers already, the most a " +
+                     "project can hold; merge or delete some first",
+                 ErrorKind::BadInput};
+}
+} // namespace
+
 Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, PaintChanges& changes) {
     changes.clear();
     Result<PaintLayerTarget*> ready = paintLayerTarget();
@@ -164,6 +176,8 @@ Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, Paint
         return ready.takeError();
     PaintLayerTarget& target = **ready;
     PaintLayerStack& stack = target.paintLayerStack();
+    if (Status room = roomForPaintLayer(stack.size()); !room)
+        return room.takeError();
     std::size_t index = stack.size();
     if (target.selection().layer == 0)
         index = 0;
@@ -192,6 +206,8 @@ Result<std::uint64_t> Document::duplicatePaintLayer(std::uint64_t id, PaintChang
     if (!index)
         return index.takeError();
     PaintLayerStack& stack = (*paintLayerTarget())->paintLayerStack();
+    if (Status room = roomForPaintLayer(stack.size()); !room)
+        return room.takeError();
     const std::size_t at = stack.duplicate(*index);
     PaintLayerChange change;
     change.kind = PaintLayerChange::Kind::Swap;

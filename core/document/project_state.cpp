@@ -495,7 +495,13 @@ Status applyProjectState(Document& doc, const ProjectState& state) {
     if (target) {
         if (!state.paintLayers)
             return {};
-        if (const Status restored = restorePaintLayers(doc, *state.paintLayers); !restored)
+        Status restored;
+        try {
+            restored = restorePaintLayers(doc, *state.paintLayers);
+        } catch (const std::bad_alloc&) {
+            restored = Error{"they are too large for this machine's memory"};
+        }
+        if (!restored)
             return Error{"the paint layers cannot be restored (" + restored.error() + ")"};
         return {};
     }

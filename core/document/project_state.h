@@ -43,6 +43,13 @@ struct SavedPaintLayer {
 };
 
 /**
+ * The most paint layers a document makes and a project may hold: opening composites every layer
+ * over every page, so the time grows with layers × texels (1000 fill layers over a 2048² page
+ * take seconds).
+ */
+inline constexpr std::size_t kMaxPaintLayers = 1000;
+
+/**
  * The paint-layer stack of a texture target as a project keeps it. The structure (ids, settings,
  * order, selection) is JSON under extras.layerpaint.paint_layers; the planes and the base are
  * images in the file (core/io/project_file), so projectStateFromJson() gives the layers without

@@ -68,6 +68,10 @@ Result<SavedPaintLayers> paintLayersFromJson(const Json& j, std::vector<std::str
     const auto layers = j.find("layers");
     if (layers != j.end() && !layers->is_array())
         return Error{"extras.layerpaint.paint_layers.layers is not an array"};
+    if (layers != j.end() && layers->size() > kMaxPaintLayers)
+        return Error{"the project has " + std::to_string(layers->size()) +
+                         " paint layers; at most " + std::to_string(kMaxPaintLayers) + " are read",
+                     ErrorKind::BadInput};
     std::set<std::uint64_t> ids;
     if (layers != j.end()) {
         for (std::size_t i = 0; i < layers->size(); ++i) {

@@ -298,7 +298,9 @@ Result<Mesh> loadMeshInProcess(const std::string& path, const ProgressFn& progre
     try {
         return load(path, progress, limits, checks == MeshChecks::Finish);
     } catch (const std::bad_alloc&) {
-        return fileError(path, "not enough memory to load the file", ErrorKind::Failed);
+        return fileError(
+            path, "too large for this machine's memory (an allocation failed while loading it)",
+            ErrorKind::Failed);
     } catch (const std::exception& e) {
         return fileError(path, e.what(), ErrorKind::Failed);
     } catch (...) {

@@ -33,6 +33,12 @@ struct LoadLimits {
      * is capped from the sizes above.
      */
     double maxSeconds = 0.0;
+    /**
+     * Bytes a project's paint layers may take once read (their planes' tiles, twice: as read and
+     * as restored, plus their decoded images); more is refused before anything is decoded. 0:
+     * half the machine's memory.
+     */
+    std::uint64_t maxPaintLayerBytes = 0;
 };
 
 /**
@@ -66,12 +72,21 @@ void keepImporterReady(bool keep = true);
  */
 Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits = {});
 
+/** An image in a buffer view of a binary glTF, and the size it must have (0 × 0: any). */
+struct GlbImageRequest {
+    int view = 0;
+    int width = 0;
+    int height = 0;
+};
+
 /**
- * Decodes the images stored in the buffer views views of the binary glTF file path (a project's
- * paint-layer images), in the importer process like loadImageFile(): the images in views' order,
- * or an Error "FILE: problem". Never throws.
+ * Decodes the images stored in the buffer views of the binary glTF file path that requests name
+ * (a project's paint-layer images), in the importer process like loadImageFile(): the images in
+ * the requests' order, or an Error "FILE: problem". An image whose header gives another size
+ * than its request's is refused before it is decoded. Never throws.
  */
-Result<std::vector<Image>> loadGlbImages(const std::string& path, const std::vector<int>& views,
+Result<std::vector<Image>> loadGlbImages(const std::string& path,
+                                         const std::vector<GlbImageRequest>& requests,
                                          const LoadLimits& limits = {});
 
 /**

@@ -162,7 +162,7 @@ TEST_F(MaterialUiTest, GlbExportFromTheGuiHasTheMetallicRoughnessComposite) {
     const int source = json.at("textures").at(texture).at("source").get<int>();
     const int view = json.at("images").at(source).at("bufferView").get<int>();
     const core::Result<std::vector<core::Image>> images =
-        core::loadGlbImages(QFile::encodeName(file).toStdString(), {view});
+        core::loadGlbImages(QFile::encodeName(file).toStdString(), {{view}});
     ASSERT_TRUE(images) << images.error();
     ASSERT_EQ(images->size(), 1u);
     EXPECT_EQ((*images)[0].width, composite.width);

@@ -173,14 +173,18 @@ Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& 
             return Error{path + ": cannot be read"};
         return decodeImage(bytes.data(), bytes.size(), path, limits);
     } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to load the file"};
+        return Error{
+            path + ": too large for this machine's memory (an allocation failed while loading it)"};
     }
 }
 
 Result<std::vector<Image>> loadGlbImagesInProcess(const std::string& path,
-                                                  const std::vector<int>& views,
+                                                  const std::vector<GlbImageRequest>& requests,
                                                   const LoadLimits& limits) {
     try {
+        std::vector<int> views;
+        for (const GlbImageRequest& request : requests)
+            views.push_back(request.view);
         Result<std::vector<std::vector<std::uint8_t>>> files =
             readGlbViews(path, views, limits.maxFileBytes);
         if (!files)
@@ -188,16 +192,31 @@ Result<std::vector<Image>> loadGlbImagesInProcess(const std::string& path,
         std::vector<Image> images;
         images.reserve(files->size());
         for (std::size_t k = 0; k < files->size(); ++k) {
-            Result<Image> image = decodeImage((*files)[k].data(), (*files)[k].size(),
-                                              "paint layer image " + std::to_string(k), limits);
+            const GlbImageRequest& request = requests[k];
+            const std::string label = "paint layer image " + std::to_string(k);
+            // A header claiming more pixels than the request's is refused before decoding.
+            LoadLimits within = limits;
+            if (request.width > 0 && request.height > 0)
+                within.maxImagePixels = std::min<std::uint64_t>(
+                    limits.maxImagePixels, std::uint64_t(request.width) * request.height);
+            Result<Image> image =
+                decodeImage((*files)[k].data(), (*files)[k].size(), label, within);
             if (!image)
                 return Error{path + ": " + image.error(), image.errorKind()};
+            if (request.width > 0 && request.height > 0 &&
+                (image->width != request.width || image->height != request.height))
+                return Error{path + ": " + label + " is " + std::to_string(image->width) + " × " +
+                                 std::to_string(image->height) + " pixels where " +
+                                 std::to_string(request.width) + " × " +
+                                 std::to_string(request.height) + " are expected",
+                             ErrorKind::BadInput};
             images.push_back(std::move(image).value());
             (*files)[k] = {};
         }
         return images;
     } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to load the file"};
+        return Error{
+            path + ": too large for this machine's memory (an allocation failed while loading it)"};
     }
 }
 

@@ -125,6 +125,10 @@ std::string describeExit(int status, double maxSeconds) {
             return "it was ended by " + signalName(sig);
         }
     }
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 1)
+        return "it could not send its answer";
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 2)
+        return "it did not understand the request (a bug: please report it)";
     if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
         return "it exited with status " + std::to_string(WEXITSTATUS(status));
     return "its output ended before the answer was complete";
@@ -536,7 +540,9 @@ Result<Mesh> loadMesh(const std::string& path, const ProgressFn& progress,
             return detail::fileError(path, "cancelled", ErrorKind::Cancelled);
         return mesh;
     } catch (const std::bad_alloc&) {
-        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
+        return detail::fileError(
+            path, "too large for this machine's memory (an allocation failed while loading it)",
+            ErrorKind::Failed);
     } catch (const std::exception& e) {
         return detail::fileError(path, e.what(), ErrorKind::Failed);
     }
@@ -566,32 +572,41 @@ Result<Image> loadImageFile(const std::string& path, const LoadLimits& limits) {
             return detail::fileError(path, "the importer stopped: it sent no image");
         return std::move(*received->image);
     } catch (const std::bad_alloc&) {
-        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
+        return detail::fileError(
+            path, "too large for this machine's memory (an allocation failed while loading it)",
+            ErrorKind::Failed);
     } catch (const std::exception& e) {
         return detail::fileError(path, e.what(), ErrorKind::Failed);
     }
 }
 
-Result<std::vector<Image>> loadGlbImages(const std::string& path, const std::vector<int>& views,
+Result<std::vector<Image>> loadGlbImages(const std::string& path,
+                                         const std::vector<GlbImageRequest>& requests,
                                          const LoadLimits& limits) {
-    if (views.empty())
+    if (requests.empty())
         return std::vector<Image>{};
     try {
+        // "VIEW" or "VIEW:WIDTHxHEIGHT", comma-separated.
         std::string list;
-        for (int view : views)
-            list += (list.empty() ? "" : ",") + std::to_string(view);
+        for (const GlbImageRequest& request : requests) {
+            list += (list.empty() ? "" : ",") + std::to_string(request.view);
+            if (request.width > 0 && request.height > 0)
+                list += ":" + std::to_string(request.width) + "x" + std::to_string(request.height);
+        }
         Result<importer::Received> received = runImporter(path, {"--glb-images", list}, {}, limits);
         if (!received)
             return received.takeError();
         if (received->error)
             return fromImporter(path, *received->error);
         // The images come as the textures of a mesh without triangles.
-        if (!received->mesh || received->mesh->textures.size() != views.size() ||
+        if (!received->mesh || received->mesh->textures.size() != requests.size() ||
             !received->mesh->positions.empty() || !received->mesh->indices.empty())
             return detail::fileError(path, "the importer stopped: it sent no images");
         return std::move(received->mesh->textures);
     } catch (const std::bad_alloc&) {
-        return detail::fileError(path, "not enough memory to load the file", ErrorKind::Failed);
+        return detail::fileError(
+            path, "too large for this machine's memory (an allocation failed while loading it)",
+            ErrorKind::Failed);
     } catch (const std::exception& e) {
         return detail::fileError(path, e.what(), ErrorKind::Failed);
     }

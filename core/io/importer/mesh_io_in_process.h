@@ -41,7 +41,7 @@ Result<Image> loadImageFileInProcess(const std::string& path, const LoadLimits& 
 
 /** loadGlbImages() in this process. */
 Result<std::vector<Image>> loadGlbImagesInProcess(const std::string& path,
-                                                  const std::vector<int>& views,
+                                                  const std::vector<GlbImageRequest>& requests,
                                                   const LoadLimits& limits = {});
 
 /** loadProject() with the mesh read by loadMeshInProcess(). */
@@ -76,7 +76,7 @@ template <typename Load> Result<Mesh> catchLoadErrors(Load&& load) {
     try {
         return load();
     } catch (const std::bad_alloc&) {
-        return Error{"not enough memory to load the file"};
+        return Error{"too large for this machine's memory (an allocation failed while loading it)"};
     } catch (const std::exception& e) {
         return Error{std::string("cannot be loaded (") + e.what() + ")"};
     } catch (...) {

@@ -65,7 +65,7 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
         if (Status read =
                 readPaintLayerImages(path, json, limits, project.mesh, *layers, loadImagesWith);
             !read)
-            return Error{path + ": " + read.error(), read.errorKind()};
+            return Error{path + ": " + withoutFileName(path, read.error()), read.errorKind()};
         project.state->paintLayers = std::move(layers);
     }
     if (project.state && project.state->brush.tip == kUserTip) {
@@ -73,7 +73,8 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
         if (Status tip = readBrushTipImage(path, (*extras)[kProjectExtrasKey], limits,
                                            loadImagesWith, project.state->brush);
             !tip) {
-            warnings.push_back(path + ": " + tip.error() + "; the brush uses the round tip");
+            warnings.push_back(path + ": " + withoutFileName(path, tip.error()) +
+                               "; the brush uses the round tip");
             project.state->brush.tip = std::string(kRoundTip);
         }
     }
@@ -87,7 +88,8 @@ Result<Project> loadProjectWith(const std::string& path, const ProgressFn& progr
     try {
         return load(path, progress, limits, loadMeshWith, loadImagesWith);
     } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to load the file"};
+        return Error{path + ": too large for this machine's memory (an allocation failed while "
+                            "loading it)"};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be loaded (" + std::string(e.what()) + ")"};
     }

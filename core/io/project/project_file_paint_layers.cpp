@@ -11,6 +11,8 @@
 #include <array>
 #include <cstring>
 
+#include <unistd.h>
+
 #include "core/io/gltf/gltf_export.h"
 #include "core/io/image/image_encode.h"
 
@@ -116,9 +118,9 @@ public:
         if (f == j.end() || !f->is_array() || f->size() != fill.size())
             return Error{"has no fill value of 4 bytes"};
         for (std::size_t k = 0; k < f->size(); ++k) {
-            if (!(*f)[k].is_number_unsigned() || (*f)[k].get<unsigned>() > 255)
+            if (!(*f)[k].is_number_unsigned() || (*f)[k].get<std::uint64_t>() > 255)
                 return Error{"has a fill value that is not bytes"};
-            fill[k] = static_cast<std::uint8_t>((*f)[k].get<unsigned>());
+            fill[k] = static_cast<std::uint8_t>((*f)[k].get<std::uint64_t>());
         }
         auto plane = std::make_shared<TiledPlane>(m_pages, int(*tb), fill);
         const auto pages = j.find("pages");
@@ -273,6 +275,158 @@ Status addPaintLayerImages(const SavedPaintLayers& saved, const std::vector<Page
     return {};
 }
 
+namespace {
+
+/** The machine's physical memory in bytes (0 if unknown). */
+std::uint64_t physicalMemory() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), size = ::sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && size > 0 ? std::uint64_t(pages) * std::uint64_t(size) : 0;
+}
+
+std::string mebibytes(std::uint64_t bytes) {
+    return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MiB";
+}
+
+/**
+ * What the paint layers ask of their images and memory, read from the JSON before any image is
+ * decoded: per image the size its uses give it (none: unused), and the bytes of the tiles the
+ * planes list. Entries the plane reader would refuse are left to it.
+ */
+class ImagePlan {
+public:
+    ImagePlan(const std::vector<PageSize>& pages, std::size_t images)
+        : m_pages(pages), m_sizes(images) {}
+
+    /** A plane's pages: each region's image is asked for at the region's size. */
+    Status addPlane(const Json& plane) {
+        if (!plane.is_object())
+            return {};
+        const auto texelBytes = whole(plane, "texel_bytes", 1, 4);
+        const auto pages = plane.find("pages");
+        if (!texelBytes || pages == plane.end() || !pages->is_array())
+            return {};
+        for (const Json& page : *pages) {
+            if (!page.is_object())
+                continue;
+            const auto p = whole(page, "page", 0, (long long)m_pages.size() - 1);
+            if (!p)
+                continue;
+            const PageSize size = m_pages[std::size_t(*p)];
+            const auto w = whole(page, "width", 1, size.width);
+            const auto h = whole(page, "height", 1, size.height);
+            if (Status used = use(page, w.value_or(0), h.value_or(0)); !used)
+                return used;
+            if (const auto tiles = page.find("tiles"); tiles != page.end() && tiles->is_array())
+                m_tileBytes += std::uint64_t(tiles->size()) * TiledPlane::kPlaneTile *
+                               TiledPlane::kPlaneTile * std::uint64_t(*texelBytes);
+        }
+        return {};
+    }
+
+    /** A base entry: its image is asked for at its page's size. */
+    Status addPage(const Json& entry) {
+        if (!entry.is_object())
+            return {};
+        const auto p = whole(entry, "page", 0, (long long)m_pages.size() - 1);
+        if (!p)
+            return {};
+        return use(entry, m_pages[std::size_t(*p)].width, m_pages[std::size_t(*p)].height);
+    }
+
+    /** The bytes the paint layers take: their tiles as read and as restored, and the images. */
+    std::uint64_t bytes() const {
+        std::uint64_t images = 0;
+        for (const PageSize& size : m_sizes)
+            images += std::uint64_t(size.width) * std::uint64_t(size.height) * 4;
+        return 2 * m_tileBytes + images;
+    }
+
+    /** The images to decode: every used one, with its size. */
+    std::vector<GlbImageRequest> requests(const std::vector<int>& views) const {
+        std::vector<GlbImageRequest> out;
+        for (std::size_t i = 0; i < m_sizes.size(); ++i)
+            if (m_sizes[i].width > 0)
+                out.push_back({views[i], m_sizes[i].width, m_sizes[i].height});
+        return out;
+    }
+
+    /** Images in the order of the project's list, the unused ones empty. */
+    std::vector<Image> place(std::vector<Image> decoded) const {
+        std::vector<Image> images(m_sizes.size());
+        std::size_t next = 0;
+        for (std::size_t i = 0; i < m_sizes.size(); ++i)
+            if (m_sizes[i].width > 0 && next < decoded.size())
+                images[i] = std::move(decoded[next++]);
+        return images;
+    }
+
+private:
+    Status use(const Json& entry, int width, int height) {
+        const auto image = whole(entry, "image", 0, (long long)m_sizes.size() - 1);
+        if (!image || width < 1 || height < 1)
+            return {};
+        PageSize& size = m_sizes[std::size_t(*image)];
+        if (size.width == 0)
+            size = {width, height};
+        else if (size != PageSize{width, height})
+            return Error{"image " + std::to_string(*image) + " is used at two sizes (" +
+                         std::to_string(size.width) + " × " + std::to_string(size.height) +
+                         " and " + std::to_string(width) + " × " + std::to_string(height) + ")"};
+        return {};
+    }
+
+    const std::vector<PageSize>& m_pages;
+    std::vector<PageSize> m_sizes; // per image, {0, 0}: unused
+    std::uint64_t m_tileBytes = 0;
+};
+
+/** The project's image list: buffer view numbers, each a whole number the GL's int can hold. */
+Result<std::vector<int>> imageViews(const Json& paintLayers) {
+    std::vector<int> views;
+    const auto it = paintLayers.find("images");
+    if (it == paintLayers.end())
+        return views;
+    if (!it->is_array())
+        return Error{"extras.layerpaint.paint_layers.images is not an array"};
+    for (const Json& v : *it) {
+        if (!v.is_number_unsigned() || v.get<std::uint64_t>() > 0x7FFFFFFF)
+            return Error{"extras.layerpaint.paint_layers.images holds something other than a "
+                         "buffer view number"};
+        views.push_back(int(v.get<std::uint64_t>()));
+    }
+    return views;
+}
+
+/** Plans every image use of the paint layers (their planes, base and roughness-metallic base). */
+Result<ImagePlan> planImages(const Json& paintLayers, const std::vector<PageSize>& pages,
+                             std::size_t images, std::size_t layerCount) {
+    ImagePlan plan(pages, images);
+    const auto layers = paintLayers.find("layers");
+    if (layers != paintLayers.end() && layers->is_array())
+        for (std::size_t i = 0; i < layers->size() && i < layerCount; ++i) {
+            const Json& layer = (*layers)[i];
+            if (!layer.is_object())
+                continue;
+            if (const auto channels = layer.find("channels");
+                channels != layer.end() && channels->is_object())
+                for (const auto& [name, plane] : channels->items())
+                    if (Status added = plan.addPlane(plane); !added)
+                        return added.takeError();
+            if (const auto mask = layer.find("mask"); mask != layer.end())
+                if (Status added = plan.addPlane(*mask); !added)
+                    return added.takeError();
+        }
+    for (const char* key : {"base", "base_metallic_roughness"})
+        if (const auto entries = paintLayers.find(key);
+            entries != paintLayers.end() && entries->is_array())
+            for (const Json& entry : *entries)
+                if (Status added = plan.addPage(entry); !added)
+                    return added.takeError();
+    return plan;
+}
+
+} // namespace
+
 Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
                             const LoadLimits& limits, Mesh& mesh, SavedPaintLayers& saved,
                             GlbImageLoader loadImages) {
@@ -292,20 +446,23 @@ Status readPaintLayerImages(const std::string& path, const Json& paintLayers,
         pages.push_back({mesh.textures[p].width, mesh.textures[p].height});
     }
 
-    std::vector<int> views;
-    if (const auto it = paintLayers.find("images"); it != paintLayers.end()) {
-        if (!it->is_array())
-            return Error{"extras.layerpaint.paint_layers.images is not an array"};
-        for (const Json& v : *it) {
-            if (!v.is_number_integer())
-                return Error{"extras.layerpaint.paint_layers.images holds a non-number"};
-            views.push_back(v.get<int>());
-        }
-    }
-    Result<std::vector<Image>> decoded = loadImages(path, views, limits);
+    Result<std::vector<int>> views = imageViews(paintLayers);
+    if (!views)
+        return views.takeError();
+    Result<ImagePlan> plan = planImages(paintLayers, pages, views->size(), saved.layers.size());
+    if (!plan)
+        return Error{"the paint layers' " + plan.error(), ErrorKind::BadInput};
+    const std::uint64_t budget =
+        limits.maxPaintLayerBytes ? limits.maxPaintLayerBytes : physicalMemory() / 2;
+    if (budget > 0 && plan->bytes() > budget)
+        return Error{"too large for this machine's memory (its paint layers need " +
+                         mebibytes(plan->bytes()) + ", at most " + mebibytes(budget) +
+                         " may be used)",
+                     ErrorKind::BadInput};
+    Result<std::vector<Image>> decoded = loadImages(path, plan->requests(*views), limits);
     if (!decoded)
-        return decoded.takeError();
-    const std::vector<Image> images = std::move(decoded).value();
+        return Error{withoutFileName(path, decoded.error()), decoded.errorKind()};
+    const std::vector<Image> images = plan->place(std::move(decoded).value());
 
     const PlaneReader reader(pages, images);
     const auto layersIt = paintLayers.find("layers");

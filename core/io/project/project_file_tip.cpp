@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "core/base/text.h"
 #include "core/io/export.h"
 #include "core/io/image/image_encode.h"
 
@@ -55,12 +56,14 @@ Status readBrushTipImage(const std::string& path, const Json& layerpaint, const 
         if (const auto t = b->find("tip_image"); t != b->end())
             index = &*t;
     if (!views || !views->is_array() || !index || !index->is_number_unsigned() ||
-        index->get<std::uint64_t>() >= views->size() ||
-        !(*views)[index->get<std::size_t>()].is_number_integer())
+        index->get<std::uint64_t>() >= views->size())
         return Error{"the brush tip image is missing"};
-    auto images = loadImages(path, {(*views)[index->get<std::size_t>()].get<int>()}, limits);
+    const Json& view = (*views)[index->get<std::size_t>()];
+    if (!view.is_number_unsigned() || view.get<std::uint64_t>() > 0x7FFFFFFF)
+        return Error{"the brush tip image is missing"};
+    auto images = loadImages(path, {{int(view.get<std::uint64_t>())}}, limits);
     if (!images)
-        return images.takeError();
+        return Error{withoutFileName(path, images.error()), images.errorKind()};
     if (images->size() != 1)
         return Error{"the brush tip image is missing"};
     const Image& image = (*images)[0];

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 
 #include "core/depth/cpu_capture.h"
 #include "core/document/document.h"
+#include "core/io/gltf/glb_container.h"
 #include "core/io/gltf/gltf_export.h"
 #include "core/io/importer/mesh_io_in_process.h"
 #include "core/io/project/project_file.h"
@@ -268,8 +270,9 @@ TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
     ASSERT_TRUE(core::saveProject(path, m_doc, core::captureProjectState(m_doc)).ok());
     core::Result<Json> extras = core::readGlbExtras(path);
     ASSERT_TRUE(extras.ok()) << extras.error();
-    const std::vector<int> views =
-        (*extras)["layerpaint"]["paint_layers"]["images"].get<std::vector<int>>();
+    std::vector<core::GlbImageRequest> views;
+    for (int view : (*extras)["layerpaint"]["paint_layers"]["images"].get<std::vector<int>>())
+        views.push_back({view});
     ASSERT_FALSE(views.empty());
 
     const core::Result<std::vector<core::Image>> outside = core::loadGlbImages(path, views);
@@ -285,13 +288,155 @@ TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
 
     // A view that is not an image.
     const core::Result<std::vector<core::Image>> notImage =
-        core::loadGlbImages(path, {views.front(), 0});
+        core::loadGlbImages(path, {views.front(), {0}});
     ASSERT_FALSE(notImage.ok());
     EXPECT_EQ(notImage.error().rfind(path + ": ", 0), 0u) << notImage.error();
     // A view that does not exist.
-    const core::Result<std::vector<core::Image>> missing = core::loadGlbImages(path, {100000});
+    const core::Result<std::vector<core::Image>> missing = core::loadGlbImages(path, {{100000}});
     ASSERT_FALSE(missing.ok());
     EXPECT_EQ(missing.error().rfind(path + ": ", 0), 0u) << missing.error();
+}
+
+} // namespace paint_layers_project_test
+
+namespace paint_layers_project_test {
+
+/** The project at path with its layerpaint extras changed by edit (its BIN chunk kept). */
+void editProject(const std::string& path, const std::function<void(Json&)>& edit) {
+    const std::string bytes = core_test::readFile(path);
+    const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
+    const core::Result<core::glb::Layout> layout = core::glb::readContainer({data, bytes.size()});
+    ASSERT_TRUE(layout) << layout.error();
+    Json json = Json::parse(bytes.substr(layout->jsonOffset, layout->jsonLength));
+    edit(json["asset"]["extras"]["layerpaint"]);
+    std::string text = json.dump();
+    text.append((4 - text.size() % 4) % 4, ' ');
+    const std::string rest = bytes.substr(layout->jsonOffset + layout->jsonLength);
+    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<char*>(&v), 4); };
+    const std::string out =
+        u32(core::glb::kMagic) + u32(2) + u32(std::uint32_t(12 + 8 + text.size() + rest.size())) +
+        u32(std::uint32_t(text.size())) + u32(core::glb::kChunkJson) + text + rest;
+    core_test::writeFile(path, out);
+}
+
+/** How often text occurs in message. */
+std::size_t occurrences(const std::string& message, const std::string& text) {
+    std::size_t count = 0;
+    for (std::size_t at = message.find(text); at != std::string::npos;
+         at = message.find(text, at + 1))
+        ++count;
+    return count;
+}
+
+class HostileProjectTest : public PaintLayersProjectTest {
+protected:
+    /** A saved project of buildStack(), edited; the error loading it gives (none: ""). */
+    std::string loadEdited(const std::function<void(Json&)>& edit,
+                           const core::LoadLimits& limits = {}) {
+        const std::string path = m_dir.file("hostile.glb");
+        EXPECT_TRUE(core::saveProject(path, m_doc, core::captureProjectState(m_doc)).ok());
+        editProject(path, edit);
+        const core::Result<core::Project> project = core::loadProject(path, {}, limits);
+        if (project)
+            return "";
+        // One file name per message, at its start.
+        EXPECT_EQ(project.error().rfind(path + ": ", 0), 0u) << project.error();
+        EXPECT_EQ(occurrences(project.error(), path), 1u) << project.error();
+        return project.error();
+    }
+
+    void SetUp() override {
+        ASSERT_NO_FATAL_FAILURE(PaintLayersProjectTest::SetUp());
+        ASSERT_NO_FATAL_FAILURE(buildStack());
+    }
+
+    TempDir m_dir;
+};
+
+/** The first plane page entry of the paint layers (a layer's base colour region). */
+Json& firstRegion(Json& layerpaint) {
+    for (Json& layer : layerpaint["paint_layers"]["layers"])
+        if (layer.contains("channels") && layer["channels"].contains("base_color") &&
+            !layer["channels"]["base_color"]["pages"].empty())
+            return layer["channels"]["base_color"]["pages"][0];
+    ADD_FAILURE() << "no region";
+    static Json none;
+    return none;
+}
+
+TEST_F(HostileProjectTest, TooManyPaintLayersAreRefusedBeforeAnyIsRead) {
+    const std::string error = loadEdited([](Json& layerpaint) {
+        Json& layers = layerpaint["paint_layers"]["layers"];
+        const Json copy = layers[0];
+        for (std::uint64_t id = 1000; layers.size() <= core::kMaxPaintLayers; ++id) {
+            layers.push_back(copy);
+            layers.back()["id"] = id;
+        }
+    });
+    EXPECT_NE(error.find("1001 paint layers; at most 1000"), std::string::npos) << error;
+}
+
+TEST_F(HostileProjectTest, PaintLayersBeyondTheMemoryBudgetAreRefusedBeforeDecoding) {
+    core::LoadLimits limits;
+    limits.maxPaintLayerBytes = 64 * 1024; // less than the five layers' tiles
+    const std::string error = loadEdited([](Json&) {}, limits);
+    EXPECT_NE(error.find("too large for this machine's memory"), std::string::npos) << error;
+    // The same project within the default budget opens.
+    EXPECT_EQ(loadEdited([](Json&) {}), "");
+}
+
+TEST_F(HostileProjectTest, AnImageLargerThanItsRegionIsRefusedBeforeDecoding) {
+    const std::string error = loadEdited([](Json& layerpaint) {
+        Json& region = firstRegion(layerpaint);
+        region["width"] = 1;
+        region["height"] = 1;
+    });
+    // The decoder's check of the header against the size asked for: nothing was decoded.
+    EXPECT_NE(error.find("paint layer image"), std::string::npos) << error;
+    EXPECT_NE(error.find("too large"), std::string::npos) << error;
+}
+
+TEST_F(HostileProjectTest, AnImageUsedAtTwoSizesIsRefused) {
+    const std::string error = loadEdited([](Json& layerpaint) {
+        Json& base = layerpaint["paint_layers"]["base"];
+        ASSERT_FALSE(base.empty());
+        firstRegion(layerpaint)["image"] = base[0]["image"]; // a page-sized image
+    });
+    EXPECT_NE(error.find("used at two sizes"), std::string::npos) << error;
+}
+
+TEST_F(HostileProjectTest, NumbersBeyondTheirTypeAreRefusedNotWrapped) {
+    // 2^32 + an index: read as 32 bits it would name a real image.
+    std::string error = loadEdited([](Json& layerpaint) {
+        Json& images = layerpaint["paint_layers"]["images"];
+        images[0] = (std::uint64_t(1) << 32) + images[0].get<std::uint64_t>();
+    });
+    EXPECT_NE(error.find("buffer view number"), std::string::npos) << error;
+    // A fill byte of 2^32 + 7.
+    error = loadEdited([](Json& layerpaint) {
+        for (Json& layer : layerpaint["paint_layers"]["layers"])
+            if (layer.contains("channels") && layer["channels"].contains("base_color"))
+                layer["channels"]["base_color"]["fill"][0] = (std::uint64_t(1) << 32) + 7;
+    });
+    EXPECT_NE(error.find("fill value that is not bytes"), std::string::npos) << error;
+}
+
+TEST_F(HostileProjectTest, ImagesNothingUsesAreNotDecoded) {
+    // An extra image entry pointing at a buffer view that holds no image: never decoded, so the
+    // project opens as before.
+    EXPECT_EQ(
+        loadEdited([](Json& layerpaint) { layerpaint["paint_layers"]["images"].push_back(0); }),
+        "");
+}
+
+TEST_F(PaintLayersProjectTest, ADocumentMakesNoMorePaintLayersThanAProjectHolds) {
+    // Empty paint layers: adding one composites nothing (a fill layer would cover every texel).
+    core::PaintChanges changes;
+    for (std::size_t i = 0; i < core::kMaxPaintLayers; ++i)
+        ASSERT_TRUE(m_doc.addPaintLayer({}, changes).ok()) << i;
+    const core::Result<std::uint64_t> more = m_doc.addPaintLayer({}, changes);
+    ASSERT_FALSE(more.ok());
+    EXPECT_NE(more.error().find("the most a project can hold"), std::string::npos) << more.error();
 }
 
 } // namespace paint_layers_project_test
