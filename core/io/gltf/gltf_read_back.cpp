@@ -10,6 +10,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -26,6 +27,51 @@ using Json = nlohmann::json;
 using Bytes = std::vector<std::uint8_t>;
 
 constexpr std::uint64_t kMaxJsonBytes = 256ull << 20;
+/**
+ * The most JSON values kept from the parts read (each costs tens of bytes in memory, whatever its
+ * text): a project's largest legitimate state lists a few hundred thousand tiles, while 64 MiB of
+ * small values would otherwise take gigabytes.
+ */
+constexpr std::uint64_t kMaxKeptJsonValues = 4u << 20;
+
+/**
+ * Parses text keeping only the root object's members named in keep (the rest is skipped as it
+ * is read, so it costs no memory), and at most kMaxKeptJsonValues values of them.
+ */
+Result<Json> parseKeeping(const std::string& text, std::initializer_list<std::string_view> keep) {
+    std::uint64_t kept = 0;
+    bool tooMany = false;
+    bool skipping = false; // inside a root member that is not kept
+    const Json::parser_callback_t filter = [&](int depth, Json::parse_event_t event, Json& parsed) {
+        if (event == Json::parse_event_t::key && depth == 1) {
+            const std::string& key = parsed.get_ref<const std::string&>();
+            skipping = std::find(keep.begin(), keep.end(), key) == keep.end();
+            return !skipping;
+        }
+        if (skipping && depth >= 1)
+            return false;
+        if (event == Json::parse_event_t::value || event == Json::parse_event_t::object_start ||
+            event == Json::parse_event_t::array_start) {
+            tooMany = tooMany || ++kept > kMaxKeptJsonValues;
+            return !tooMany;
+        }
+        return true;
+    };
+    Json root;
+    try {
+        root = Json::parse(text, filter);
+    } catch (const Json::exception& e) {
+        std::string what = e.what();
+        if (const std::size_t p = what.find("] "); p != std::string::npos)
+            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
+        return Error{"is not valid glTF JSON (" + what + ")"};
+    }
+    if (tooMany)
+        return Error{"holds more than " + std::to_string(kMaxKeptJsonValues) +
+                         " JSON values where LayerPaint reads its own",
+                     ErrorKind::BadInput};
+    return root;
+}
 
 /** The glTF JSON of path and, for a binary file, where its BIN chunk's data is. */
 struct GltfRoot {
@@ -33,7 +79,8 @@ struct GltfRoot {
     std::uint64_t binOffset = 0, binLength = 0; // 0, 0: no BIN chunk
 };
 
-Result<GltfRoot> readRoot(const std::string& path) {
+/** keep: the members of the root object that are read (the others are skipped unread). */
+Result<GltfRoot> readRoot(const std::string& path, std::initializer_list<std::string_view> keep) {
     std::error_code ec;
     if (!fs::is_regular_file(path, ec))
         return Error{fs::exists(path, ec) ? "is not a regular file" : "does not exist",
@@ -67,15 +114,10 @@ Result<GltfRoot> readRoot(const std::string& path) {
         return Error{"cannot be read", ErrorKind::Io};
     if (jsonNestingTooDeep(text))
         return Error{"the JSON is nested too deeply"};
-    Json root;
-    try {
-        root = Json::parse(text);
-    } catch (const Json::exception& e) {
-        std::string what = e.what();
-        if (const std::size_t p = what.find("] "); p != std::string::npos)
-            what = what.substr(p + 2); // drop "[json.exception.parse_error.101] "
-        return Error{"is not valid glTF JSON (" + what + ")"};
-    }
+    Result<Json> parsed = parseKeeping(text, keep);
+    if (!parsed)
+        return parsed.takeError();
+    Json root = std::move(parsed).value();
     if (!root.is_object() || !root.contains("asset") || !root["asset"].is_object())
         return Error{"is not a glTF file (no asset)"};
     GltfRoot out;
@@ -98,7 +140,7 @@ Result<GltfRoot> readRoot(const std::string& path) {
 }
 
 Result<Json> readExtras(const std::string& path) {
-    Result<GltfRoot> gltf = readRoot(path);
+    Result<GltfRoot> gltf = readRoot(path, {"asset"});
     if (!gltf)
         return gltf.takeError();
     const Json& asset = gltf->root["asset"];
@@ -119,7 +161,8 @@ Result<nlohmann::json> readGlbExtras(const std::string& path) {
             return Error{path + ": " + extras.error(), extras.errorKind()};
         return extras;
     } catch (const std::bad_alloc&) {
-        return Error{path + ": not enough memory to read the file"};
+        return Error{path + ": too large for this machine's memory (an allocation failed while "
+                            "reading it)"};
     } catch (const std::exception& e) {
         return Error{path + ": cannot be read (" + std::string(e.what()) + ")"};
     }
@@ -129,7 +172,7 @@ namespace {
 
 Result<std::vector<Bytes>> readViews(const std::string& path, const std::vector<int>& wanted,
                                      std::uint64_t maxBytes) {
-    Result<GltfRoot> gltf = readRoot(path);
+    Result<GltfRoot> gltf = readRoot(path, {"asset", "bufferViews"});
     if (!gltf)
         return gltf.takeError();
     const Json& root = gltf->root;

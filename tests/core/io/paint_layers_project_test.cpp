@@ -301,14 +301,14 @@ TEST_F(PaintLayersProjectTest, LayerImagesAreDecodedByTheImporter) {
 
 namespace paint_layers_project_test {
 
-/** The project at path with its layerpaint extras changed by edit (its BIN chunk kept). */
+/** The project at path with its glTF JSON changed by edit (its BIN chunk kept). */
 void editProject(const std::string& path, const std::function<void(Json&)>& edit) {
     const std::string bytes = core_test::readFile(path);
     const auto* data = reinterpret_cast<const std::uint8_t*>(bytes.data());
     const core::Result<core::glb::Layout> layout = core::glb::readContainer({data, bytes.size()});
     ASSERT_TRUE(layout) << layout.error();
     Json json = Json::parse(bytes.substr(layout->jsonOffset, layout->jsonLength));
-    edit(json["asset"]["extras"]["layerpaint"]);
+    edit(json);
     std::string text = json.dump();
     text.append((4 - text.size() % 4) % 4, ' ');
     const std::string rest = bytes.substr(layout->jsonOffset + layout->jsonLength);
@@ -330,9 +330,19 @@ std::size_t occurrences(const std::string& message, const std::string& text) {
 
 class HostileProjectTest : public PaintLayersProjectTest {
 protected:
-    /** A saved project of buildStack(), edited; the error loading it gives (none: ""). */
+    /**
+     * A saved project of buildStack() with its layerpaint extras edited; the error loading it
+     * gives (none: "").
+     */
     std::string loadEdited(const std::function<void(Json&)>& edit,
                            const core::LoadLimits& limits = {}) {
+        return loadEditedRoot([&](Json& root) { edit(root["asset"]["extras"]["layerpaint"]); },
+                              limits);
+    }
+
+    /** As loadEdited(), editing the whole glTF JSON. */
+    std::string loadEditedRoot(const std::function<void(Json&)>& edit,
+                               const core::LoadLimits& limits = {}) {
         const std::string path = m_dir.file("hostile.glb");
         EXPECT_TRUE(core::saveProject(path, m_doc, core::captureProjectState(m_doc)).ok());
         editProject(path, edit);
@@ -427,6 +437,17 @@ TEST_F(HostileProjectTest, ImagesNothingUsesAreNotDecoded) {
     EXPECT_EQ(
         loadEdited([](Json& layerpaint) { layerpaint["paint_layers"]["images"].push_back(0); }),
         "");
+}
+
+TEST_F(HostileProjectTest, JsonLayerPaintDoesNotReadIsSkippedAndItsOwnIsBounded) {
+    // A member LayerPaint's state reading has no use for is skipped as it is parsed (the model
+    // loader reads the whole file, in the sandboxed importer).
+    const Json some = Json(std::vector<int>(200'000, 0));
+    EXPECT_EQ(loadEditedRoot([&](Json& root) { root["extras"] = {{"junk", some}}; }), "");
+    // More values under the state than it ever needs: refused instead of held.
+    const Json many = Json(std::vector<int>(4'300'000, 0));
+    const std::string error = loadEdited([&](Json& layerpaint) { layerpaint["junk"] = many; });
+    EXPECT_NE(error.find("JSON values"), std::string::npos) << error;
 }
 
 TEST_F(PaintLayersProjectTest, ADocumentMakesNoMorePaintLayersThanAProjectHolds) {
