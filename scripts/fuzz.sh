@@ -92,8 +92,22 @@ if [[ -x "$cli" ]]; then
         --out "$work/seeds-project/row-texture.glb" >/dev/null
     "$cli" paint builtin:hexring --cpu --script "$work/colors.json" \
         --out "$work/seeds-project/ring-colors.glb" >/dev/null
+    # A project under the inputs' 64 KiB with what restorePaintLayers reads: a paint layer with a
+    # mask, a fill layer with a blend mode, and a brush tip loaded from an image.
+    "$cli" export "$work/seeds-project/row-texture.glb" --format png --out "$work/tip.png" \
+        >/dev/null
+    printf '%s' '{"size":"96x72","target":{"kind":"texture","resolution":512},"operations":[
+        {"op":"set-brush","color":"#2060ff","radius":6,"tip":"'"$PWD/$work/tip.png"'"},
+        {"op":"stroke","points":[[30,30],[60,40]]},{"op":"layer-add","name":"paint"},
+        {"op":"stroke","points":[[20,30],[70,35]]},{"op":"mask-add"},
+        {"op":"set-brush","color":"#000000"},{"op":"stroke","points":[[40,20],[45,50]]},
+        {"op":"layer-add","name":"fill","kind":"fill","values":{"base_color":"#ff8000"}},
+        {"op":"layer-set","blend":"multiply","opacity":0.5}]}' >"$work/layers.json"
+    "$cli" paint 'builtin:knot?triangles=1000' --cpu --script "$work/layers.json" \
+        --out "$work/seeds-project/knot-layers.glb" >/dev/null
     rm -f "$work"/seeds-project/*.bak
-    for project in "$work/seeds-project/row-texture.glb" "$work/seeds-project/ring-colors.glb"; do
+    for project in "$work/seeds-project/row-texture.glb" "$work/seeds-project/ring-colors.glb" \
+        "$work/seeds-project/knot-layers.glb"; do
         length=$(od -An -t u4 -j 12 -N 4 "$project" | tr -d ' ')
         dd if="$project" of="${project%.glb}.json" bs=1 skip=20 count="$length" status=none
     done
@@ -156,7 +170,9 @@ user_file() {
 # $work/NAME.runs and $work/NAME.end (why it stopped: "budget", "segments" or "error").
 fuzz_target() {
     local name=$1 target=${1#fuzz_} segment=0 executed=0 started=$SECONDS code ran log artifact
-    local known=$work/known-$target budget
+    local known=$work/known-$target budget dict=()
+    # The project state's keys, for the byte mutations (the target's own mutator edits the JSON).
+    [[ $target == project ]] && dict=(-dict=tests/fuzz/fuzz_project.dict)
     mkdir -p "$known"
     cp tests/data/crashers/* "$known/"
     : >"$work/$name.findings"
@@ -177,7 +193,7 @@ fuzz_target() {
             "${norandom[@]}" "build/fuzz/tests/fuzz/$name" -seed=$((seed + segment - 1)) \
             -timeout=20 -rss_limit_mb=3072 -max_len=65536 -close_fd_mask=1 -print_final_stats=1 \
             -reload=0 -purge_allocator_interval=-1 \
-            -artifact_prefix="$work/artifacts/$name-" "${budget[@]}" \
+            -artifact_prefix="$work/artifacts/$name-" "${budget[@]}" "${dict[@]}" \
             -seed_inputs=@"$work/inputs-$target-$segment.txt" "$work/corpus-$target/$segment" \
             >"$log" 2>&1 && code=0 || code=$?
         ran=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
