@@ -17,9 +17,9 @@
 namespace core {
 
 /** Decodes images stored in buffer views of a binary glTF (loadGlbImages() or in process). */
-using GlbImageLoader = Result<std::vector<Image>> (*)(
-    const std::string& path, const std::vector<GlbImageRequest>& requests,
-    const LoadLimits& limits);
+using GlbImageLoader = Result<std::vector<Image>> (*)(const std::string& path,
+                                                      const std::vector<GlbImageRequest>& requests,
+                                                      const LoadLimits& limits);
 
 /**
  * Adds the planes and the base of saved to paintLayers (extras.layerpaint.paint_layers as
