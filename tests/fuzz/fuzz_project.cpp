@@ -177,10 +177,11 @@ std::optional<std::string> mutateProject(const std::uint8_t* data, std::size_t s
     if (root.is_discarded() || !root.is_object() || !root.contains("asset") ||
         !root["asset"].is_object() || !root["asset"].contains("extras"))
         return std::nullopt;
-    std::vector<Json*> nodes;
-    collect(root["asset"]["extras"], nodes);
-    for (unsigned edits = 1 + random() % 3; edits > 0; --edits)
+    for (unsigned edits = 1 + random() % 3; edits > 0; --edits) {
+        std::vector<Json*> nodes; // again after each edit, which may free some
+        collect(root["asset"]["extras"], nodes);
         edit(*nodes[random() % nodes.size()], random);
+    }
     std::string json = root.dump();
     json.append((4 - json.size() % 4) % 4, ' ');
     const std::string rest(reinterpret_cast<const char*>(data) + layout->jsonOffset +
