@@ -7,25 +7,12 @@ first, and a KHR_texture_transform on the first material's normal map.
 io_tests (tests/core/io/material_test.cpp) checks what the loader makes of it.
 
 Usage: scripts/make-material-test-data.py [OUT.glb]"""
-import json
 import struct
 import sys
-import zlib
 from pathlib import Path
 
-
-def png(width, height, pixel):
-    """An RGBA8 PNG of width x height whose texel (x, y) is pixel(x, y)."""
-    rows = b"".join(
-        b"\0" + bytes(c for x in range(width) for c in pixel(x, y)) for y in range(height))
-
-    def chunk(kind, data):
-        body = kind + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
-
-    header = struct.pack(">IIBBBBB", width, height, 8, 6, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) +
-            chunk(b"IDAT", zlib.compress(rows, 9)) + chunk(b"IEND", b""))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from glb_writer import Glb, png  # noqa: E402
 
 
 def images(seed):
@@ -43,18 +30,8 @@ def images(seed):
 def main():
     out = Path(sys.argv[1]) if len(sys.argv) > 1 else (
         Path(__file__).resolve().parent.parent / "tests/data/material/materials.glb")
-    bin_ = bytearray()
-    views = []
-
-    def add_view(data, target=None):
-        while len(bin_) % 4:
-            bin_.append(0)
-        view = {"buffer": 0, "byteOffset": len(bin_), "byteLength": len(data)}
-        if target:
-            view["target"] = target
-        bin_.extend(data)
-        views.append(view)
-        return len(views) - 1
+    glb = Glb()
+    add_view = glb.add_view
 
     accessors, primitives = [], []
     for q in range(2):  # two quads side by side, one per material
@@ -115,19 +92,9 @@ def main():
         "meshes": [{"primitives": primitives}],
         "materials": materials, "textures": textures, "images": gltf_images,
         "samplers": [{"magFilter": 9728, "minFilter": 9728}],
-        "accessors": accessors, "bufferViews": views,
-        "buffers": [{"byteLength": len(bin_)}],
+        "accessors": accessors,
     }
-    text = json.dumps(root, separators=(",", ":")).encode()
-    text += b" " * (-len(text) % 4)
-    while len(bin_) % 4:
-        bin_.append(0)
-    glb = (struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(text) + 8 + len(bin_)) +
-           struct.pack("<II", len(text), 0x4E4F534A) + text +
-           struct.pack("<II", len(bin_), 0x004E4942) + bytes(bin_))
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_bytes(glb)
-    print(f"{out}: {len(glb)} bytes")
+    glb.write(out, root)
 
 
 if __name__ == "__main__":

@@ -6,28 +6,21 @@ metallic-roughness (brass and painted panels), normal (grooves between panels, r
 Material view (docs/user-guide.md, "Material channels").
 
 Usage: scripts/make-showcase-asset.py OUT.glb"""
-import json
 import math
 import struct
 import sys
-import zlib
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from glb_writer import Glb, png  # noqa: E402
 
 SIZE = 256
 PANELS_U, PANELS_V = 16, 6
 
 
-def png(pixels):
+def png_of(pixels):
     """An RGBA8 PNG of SIZE² from a list of rows of (r, g, b, a)."""
-    raw = b"".join(b"\0" + bytes(c for px in row for c in px) for row in pixels)
-
-    def chunk(kind, data):
-        body = kind + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body))
-
-    header = struct.pack(">IIBBBBB", SIZE, SIZE, 8, 6, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) +
-            chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+    return png(SIZE, SIZE, lambda x, y: pixels[y][x])
 
 
 def panel_at(u, v):
@@ -86,7 +79,7 @@ def maps():
         normal.append(n_row)
         occlusion.append(o_row)
         emissive.append(e_row)
-    return [png(m) for m in (base, mr, normal, occlusion, emissive)]
+    return [png_of(m) for m in (base, mr, normal, occlusion, emissive)]
 
 
 def torus(segments_u=96, segments_v=48, major=1.0, minor=0.38):
@@ -112,18 +105,8 @@ def torus(segments_u=96, segments_v=48, major=1.0, minor=0.38):
 def main():
     out = Path(sys.argv[1])
     pos, nrm, uv, idx = torus()
-    bin_ = bytearray()
-    views = []
-
-    def add_view(data, target=None):
-        while len(bin_) % 4:
-            bin_.append(0)
-        view = {"buffer": 0, "byteOffset": len(bin_), "byteLength": len(data)}
-        if target:
-            view["target"] = target
-        bin_.extend(data)
-        views.append(view)
-        return len(views) - 1
+    glb = Glb()
+    add_view = glb.add_view
 
     count = len(pos) // 3
     accessors = [
@@ -158,18 +141,9 @@ def main():
             "indices": 3, "material": 0}]}],
         "materials": [material],
         "textures": [{"source": i} for i in range(5)],
-        "images": images, "accessors": accessors, "bufferViews": views,
-        "buffers": [{"byteLength": len(bin_)}],
+        "images": images, "accessors": accessors,
     }
-    text = json.dumps(root, separators=(",", ":")).encode()
-    text += b" " * (-len(text) % 4)
-    while len(bin_) % 4:
-        bin_.append(0)
-    glb = (struct.pack("<III", 0x46546C67, 2, 12 + 8 + len(text) + 8 + len(bin_)) +
-           struct.pack("<II", len(text), 0x4E4F534A) + text +
-           struct.pack("<II", len(bin_), 0x004E4942) + bytes(bin_))
-    out.write_bytes(glb)
-    print(f"{out}: {len(glb)} bytes")
+    glb.write(out, root)
 
 
 if __name__ == "__main__":
