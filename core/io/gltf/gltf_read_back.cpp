@@ -69,7 +69,7 @@ Result<Json> parseKeeping(const std::string& text, std::initializer_list<std::st
     if (tooMany)
         return Error{"holds more than " + std::to_string(kMaxKeptJsonValues) +
                          " JSON values where LayerPaint reads its own",
-                     ErrorKind::BadInput};
+                     ErrorKind::Unsupported};
     return root;
 }
 

@@ -234,7 +234,7 @@ bool FrameWriter::sourceScene(const SourceScene& scene) {
                               scene.colorHash,
                               static_cast<std::uint32_t>(scene.notKept.size()),
                               0};
-    std::vector<std::uint8_t> head(sizeof h);
+    std::vector<std::uint8_t>& head = m_held.emplace_back(sizeof h);
     std::memcpy(head.data(), &h, sizeof h);
     const auto put = [&head](const void* data, std::size_t size) {
         const auto* bytes = static_cast<const std::uint8_t*>(data);

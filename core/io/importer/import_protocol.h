@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/base/progress.h"
 #include "core/io/mesh_io.h"
@@ -136,6 +137,12 @@ private:
     int m_fd;
     bool m_ok = true;
     bool m_lend = false;
+    /**
+     * Payloads made for a frame rather than pointing into the mesh: kept as long as the writer,
+     * since a lent payload's pages must not change (freeing writes into them) before the reader
+     * has read them.
+     */
+    std::vector<std::vector<std::uint8_t>> m_held;
 };
 
 /** Where frames come from: fills exactly size bytes, or returns false (ended or stopped). */

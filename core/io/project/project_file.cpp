@@ -37,7 +37,10 @@ Result<Project> load(const std::string& path, const ProgressFn& progress, const 
         // The JSON alone first: a newer project is refused before its textures are decoded.
         extras = readGlbExtras(path);
         if (!extras) {
-            // Not a glTF file at all: the model loader says what is wrong in plainer words.
+            // Not a glTF file at all: the model loader says what is wrong in plainer words. A
+            // glTF whose JSON is more than can be read is refused without loading its model.
+            if (extras.errorKind() == ErrorKind::Unsupported)
+                return extras.takeError();
             if (Result<Mesh> mesh = loadMeshWith(path, progress, limits); !mesh)
                 return mesh.takeError();
             return extras.takeError();
