@@ -55,6 +55,15 @@ PaintLayerChange swapBack(PaintLayerStack& stack, std::size_t index,
     return change;
 }
 
+/** Whether a stack of `layers` paint layers may get one more (a project holds kMaxPaintLayers). */
+Status roomForPaintLayer(std::size_t layers) {
+    if (layers < kMaxPaintLayers)
+        return {};
+    return Error{"there are " + std::to_string(layers) + " paint layers already, the most a " +
+                     "project can hold; merge or delete some first",
+                 ErrorKind::BadInput};
+}
+
 } // namespace
 
 Result<PaintLayerTarget*> Document::paintLayerTarget() {
@@ -157,17 +166,6 @@ void Document::pushPaintLayerChange(PaintLayerChange change, nlohmann::json op,
     step.parts.emplace_back(std::move(change));
     m_history.push(std::move(step));
 }
-
-namespace {
-/** Whether a stack of `layers` paint layers may get one more (a project holds kMaxPaintLayers). */
-Status roomForPaintLayer(std::size_t layers) {
-    if (layers < kMaxPaintLayers)
-        return {};
-    return Error{"there are " + std::to_string(layers) + " paint layers already, the most a " +
-                     "project can hold; merge or delete some first",
-                 ErrorKind::BadInput};
-}
-} // namespace
 
 Result<std::uint64_t> Document::addPaintLayer(PaintLayerSettings settings, PaintChanges& changes) {
     changes.clear();
