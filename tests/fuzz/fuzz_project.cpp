@@ -164,8 +164,8 @@ void edit(Json& node, Random& random) {
 }
 
 /** The glb of data with its state edited, or nothing when data is no project. */
-std::optional<std::string> mutateProject(const std::uint8_t* data, std::size_t size,
-                                         Random& random) {
+std::optional<std::vector<std::uint8_t>> mutateProject(const std::uint8_t* data, std::size_t size,
+                                                       Random& random) {
     const core::Result<core::glb::Layout> layout = core::glb::readContainer({data, size});
     if (!layout)
         return std::nullopt;
@@ -182,17 +182,7 @@ std::optional<std::string> mutateProject(const std::uint8_t* data, std::size_t s
         collect(root["asset"]["extras"], nodes);
         edit(*nodes[random() % nodes.size()], random);
     }
-    std::string json = root.dump();
-    json.append((4 - json.size() % 4) % 4, ' ');
-    const std::string rest(reinterpret_cast<const char*>(data) + layout->jsonOffset +
-                               layout->jsonLength,
-                           size - std::size_t(layout->jsonOffset + layout->jsonLength));
-    const auto u32 = [](std::uint32_t v) {
-        return std::string(reinterpret_cast<const char*>(&v), 4);
-    };
-    return u32(core::glb::kMagic) + u32(2) +
-           u32(std::uint32_t(12 + 8 + json.size() + rest.size())) +
-           u32(std::uint32_t(json.size())) + u32(core::glb::kChunkJson) + json + rest;
+    return core::glb::replaceJson({data, size}, *layout, root.dump());
 }
 
 /** Opens the project in a document as the window does: mesh, then the saved state. */
@@ -245,7 +235,8 @@ extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t s
                                                std::size_t maxSize, unsigned int seed) {
     Random random(seed);
     if (size >= 4 && std::memcmp(data, "glTF", 4) == 0 && random() % 2 == 0)
-        if (const std::optional<std::string> edited = mutateProject(data, size, random);
+        if (const std::optional<std::vector<std::uint8_t>> edited =
+                mutateProject(data, size, random);
             edited && edited->size() <= maxSize) {
             std::memcpy(data, edited->data(), edited->size());
             return edited->size();

@@ -2,6 +2,7 @@
 // Reading the binary glTF container's header and chunk headers (see glb_container.h).
 #include "core/io/gltf/glb_container.h"
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -60,6 +61,30 @@ Result<Layout> readContainer(std::span<const std::uint8_t> bytes) {
             return badInput("the binary glTF file is truncated (the BIN chunk runs past the end)");
     }
     return layout;
+}
+
+std::vector<std::uint8_t> replaceJson(std::span<const std::uint8_t> bytes, const Layout& layout,
+                                      std::string_view json) {
+    std::string text(json);
+    while (text.size() % 4 != 0)
+        text.push_back(' ');
+    const std::uint64_t restStart = layout.jsonOffset + layout.jsonLength;
+    const std::uint64_t restEnd = std::max(restStart, layout.length);
+    std::vector<std::uint8_t> out(12);
+    auto put32 = [&out](std::size_t at, std::uint64_t v) {
+        const auto u = static_cast<std::uint32_t>(v);
+        std::memcpy(out.data() + at, &u, 4);
+    };
+    put32(0, kMagic);
+    put32(4, 2);
+    out.resize(20);
+    put32(12, text.size());
+    put32(16, kChunkJson);
+    out.insert(out.end(), text.begin(), text.end());
+    out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(restStart),
+               bytes.begin() + static_cast<std::ptrdiff_t>(restEnd));
+    put32(8, out.size());
+    return out;
 }
 
 } // namespace core::glb

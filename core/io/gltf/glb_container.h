@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <span>
+#include <string_view>
+#include <vector>
 
 #include "core/base/result.h"
 
@@ -36,5 +38,12 @@ Result<Layout> readHead(std::span<const std::uint8_t> head, std::uint64_t fileSi
  * a length that ends within the declared length (tinygltf 2.7 lets it run 8 bytes further).
  */
 Result<Layout> readContainer(std::span<const std::uint8_t> bytes);
+
+/**
+ * A GLB like bytes (laid out as layout) with json in place of its JSON chunk (padded with
+ * spaces) and the rest (the BIN chunk) as it was.
+ */
+std::vector<std::uint8_t> replaceJson(std::span<const std::uint8_t> bytes, const Layout& layout,
+                                      std::string_view json);
 
 } // namespace core::glb

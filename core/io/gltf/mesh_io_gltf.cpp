@@ -139,31 +139,6 @@ bool isGltf1(const Json& json) {
     return meshes != json.end() && meshes->is_object();
 }
 
-/** A GLB like bytes (laid out as parts) with json in place of its JSON chunk. */
-std::vector<std::uint8_t> replaceGlbJson(const std::vector<std::uint8_t>& bytes,
-                                         const glb::Layout& parts, const std::string& json) {
-    std::string text = json;
-    while (text.size() % 4 != 0)
-        text.push_back(' ');
-    const std::uint64_t restStart = parts.jsonOffset + parts.jsonLength;
-    const std::uint64_t restEnd = std::max(restStart, parts.length);
-    std::vector<std::uint8_t> out(12);
-    auto put32 = [&out](std::size_t at, std::uint64_t v) {
-        const auto u = static_cast<std::uint32_t>(v);
-        std::memcpy(out.data() + at, &u, 4);
-    };
-    put32(0, glb::kMagic);
-    put32(4, 2);
-    out.resize(20);
-    put32(12, text.size());
-    put32(16, glb::kChunkJson);
-    out.insert(out.end(), text.begin(), text.end());
-    out.insert(out.end(), bytes.begin() + static_cast<std::ptrdiff_t>(restStart),
-               bytes.begin() + static_cast<std::ptrdiff_t>(restEnd));
-    put32(8, out.size());
-    return out;
-}
-
 /** A glTF file as it is read: its bytes, where its chunks are, and its JSON parsed. */
 struct GltfSource {
     std::vector<std::uint8_t> bytes;
@@ -251,7 +226,7 @@ void patchCompressedJson(GltfSource& src) {
     if (!replaced && !dropped)
         return;
     if (src.binary) {
-        src.bytes = replaceGlbJson(src.bytes, src.parts, patched.dump());
+        src.bytes = glb::replaceJson(src.bytes, src.parts, patched.dump());
         src.parts.length = src.bytes.size();
     } else {
         const std::string text = patched.dump();

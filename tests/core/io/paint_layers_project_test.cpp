@@ -309,14 +309,9 @@ void editProject(const std::string& path, const std::function<void(Json&)>& edit
     ASSERT_TRUE(layout) << layout.error();
     Json json = Json::parse(bytes.substr(layout->jsonOffset, layout->jsonLength));
     edit(json);
-    std::string text = json.dump();
-    text.append((4 - text.size() % 4) % 4, ' ');
-    const std::string rest = bytes.substr(layout->jsonOffset + layout->jsonLength);
-    const auto u32 = [](std::uint32_t v) { return std::string(reinterpret_cast<char*>(&v), 4); };
-    const std::string out =
-        u32(core::glb::kMagic) + u32(2) + u32(std::uint32_t(12 + 8 + text.size() + rest.size())) +
-        u32(std::uint32_t(text.size())) + u32(core::glb::kChunkJson) + text + rest;
-    core_test::writeFile(path, out);
+    const std::vector<std::uint8_t> out =
+        core::glb::replaceJson({data, bytes.size()}, *layout, json.dump());
+    core_test::writeFile(path, std::string(out.begin(), out.end()));
 }
 
 /** How often text occurs in message. */
