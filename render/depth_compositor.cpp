@@ -369,10 +369,8 @@ struct DepthCompositor::Impl::DrawPass {
         const unsigned surface = (step.variant >> kSurfaceShift) & 0xfu;
         if (!surface || !baseColor)
             return;
-        SurfaceMaps shown = d.passMaps[step.pass];
-        if (!(surface & kSurfaceNormalMap))
-            shown.normal = {};
-        bindSurfaceMaps(p.shader, shown, *d.textures, baseColor->width(), baseColor->height());
+        bindSurfaceMaps(p.shader, d.passMaps[step.pass], surface, *d.textures, baseColor->width(),
+                        baseColor->height());
         if (surface & kSurfaceNormalMap)
             setRays(p); // the view direction of the headlight on the turned normals
     }

@@ -326,12 +326,9 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
         if (lit && program != &d.programs[0])
             glBindTextureUnit(1, metallicRoughness->id());
-        if (features && program != &d.programs[0]) {
-            SurfaceMaps shown = surface;
-            if (!(features & kSurfaceNormalMap))
-                shown.normal = {};
-            bindSurfaceMaps(*program, shown, *d.textures, baseColor->width(), baseColor->height());
-        }
+        if (features && program != &d.programs[0])
+            bindSurfaceMaps(*program, surface, features, *d.textures, baseColor->width(),
+                            baseColor->height());
         drawInPieces(run.firstTriangle, run.triangleCount, pieces,
                      [](std::size_t first, std::size_t count) {
                          glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,

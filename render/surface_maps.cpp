@@ -111,9 +111,8 @@ std::vector<std::string> surfaceDefines(unsigned features) {
     return defines;
 }
 
-void bindSurfaceMaps(const ShaderProgram& program, const SurfaceMaps& maps,
+void bindSurfaceMaps(const ShaderProgram& program, const SurfaceMaps& maps, unsigned features,
                      const MaterialTextures& textures, int baseWidth, int baseHeight) {
-    const unsigned features = maps.features();
     if (features & kSurfaceNormalMap) {
         bindMap(program, maps.normal, kNormalUnit,
                 textures.linearView(std::size_t(maps.normal.texture)), "uNormalMap",

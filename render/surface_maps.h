@@ -51,11 +51,12 @@ struct SurfaceMaps {
 std::vector<std::string> surfaceDefines(unsigned features);
 
 /**
- * Sets the current program's map uniforms and binds the maps to texture units 2-4. baseWidth
- * and baseHeight, the base colour texture's size, give composite.frag the maps' LOD offsets
- * from the base colour's LOD (mesh.frag lets GL choose).
+ * Sets the current program's uniforms of the maps' features (SurfaceFeature bits, those its
+ * variant was built with) and binds those maps to texture units 2-4. baseWidth and baseHeight,
+ * the base colour texture's size, give composite.frag the maps' LOD offsets from the base
+ * colour's LOD (mesh.frag lets GL choose).
  */
-void bindSurfaceMaps(const ShaderProgram& program, const SurfaceMaps& maps,
+void bindSurfaceMaps(const ShaderProgram& program, const SurfaceMaps& maps, unsigned features,
                      const MaterialTextures& textures, int baseWidth, int baseHeight);
 
 /** Unbinds texture units 2-4. */
