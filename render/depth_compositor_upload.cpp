@@ -263,11 +263,11 @@ std::vector<std::uint32_t> octNormals(const core::Mesh& mesh) {
 }
 
 /**
- * core::computeTangents() as composite_shade.comp reads them: the direction octahedral-encoded
+ * core::vertexTangents() as composite_shade.comp reads them: the direction octahedral-encoded
  * as octNormal() does, with the bitangent's sign in bit 0 (set: negative).
  */
 std::vector<std::uint32_t> octTangents(const core::Mesh& mesh) {
-    const std::vector<glm::vec4> tangents = core::computeTangents(mesh);
+    const std::vector<glm::vec4> tangents = core::vertexTangents(mesh);
     std::vector<std::uint32_t> packed(tangents.size());
     for (std::size_t i = 0; i < tangents.size(); ++i)
         packed[i] = (octNormal(glm::vec3(tangents[i])) & ~1u) | (tangents[i].w < 0.0f ? 1u : 0u);

@@ -205,7 +205,7 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
         normalMaps = normalMaps || (d.surfaces.back().features() & kSurfaceNormalMap);
     }
     if (const std::vector<glm::vec4> tangents =
-            normalMaps ? core::computeTangents(mesh) : std::vector<glm::vec4>();
+            normalMaps ? core::vertexTangents(mesh) : std::vector<glm::vec4>();
         !tangents.empty()) {
         glCreateBuffers(1, &d.tangentBuffer);
         glNamedBufferStorage(d.tangentBuffer, GLsizeiptr(tangents.size() * sizeof(glm::vec4)),

@@ -49,6 +49,7 @@ void checkUvCoverage(Mesh& mesh, const std::string& path) {
     const std::string name = std::filesystem::path(path).filename().string();
     if (coversNoArea(coverage)) {
         mesh.uvs.clear();
+        mesh.tangents.clear();
         mesh.warnings.push_back("the texture coordinates (UVs) of " + name +
                                 " cover no area (every triangle is a point or a line in UV "
                                 "space), so they were dropped: a texture is painted over an "
@@ -103,6 +104,8 @@ void Flattener::finish(Mesh& out) {
     Mesh& mesh = m_mesh;
     if (!m_anyUv)
         mesh.uvs = {};
+    if (!m_anyTangent || !m_anyUv)
+        mesh.tangents = {};
     if (!m_anyColor)
         mesh.colors = {};
     const auto withNormal =

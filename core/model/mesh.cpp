@@ -58,6 +58,8 @@ Status Mesh::validate() const {
         return Error{"texture coordinate count differs from vertex count", ErrorKind::BadInput};
     if (!colors.empty() && colors.size() != n)
         return Error{"vertex color count differs from vertex count", ErrorKind::BadInput};
+    if (!tangents.empty() && tangents.size() != n)
+        return Error{"tangent count differs from vertex count", ErrorKind::BadInput};
     if (triangleMaterial.size() != triangleCount())
         return Error{"per-triangle material count differs from triangle count",
                      ErrorKind::BadInput};

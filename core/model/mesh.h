@@ -106,6 +106,11 @@ struct Mesh {
     std::vector<glm::vec3> normals; // same size as positions
     std::vector<glm::vec2> uvs;     // empty, or same size as positions
     std::vector<glm::vec4> colors;  // empty, or same size as positions (linear RGBA)
+    /**
+     * Empty, or same size as positions: the file's tangents as glTF's TANGENT (w = 0 for the
+     * vertices it gave none); vertexTangents() (mesh_tangents.h) fills the rest.
+     */
+    std::vector<glm::vec4> tangents;
     std::vector<std::uint32_t> indices;
     std::vector<std::uint32_t> triangleMaterial; // one per triangle, index into materials
     std::vector<Material> materials;             // at least one

@@ -91,4 +91,21 @@ std::vector<glm::vec4> computeTangents(const Mesh& mesh) {
     return tangents;
 }
 
+std::vector<glm::vec4> vertexTangents(const Mesh& mesh) {
+    const std::size_t vertices = mesh.vertexCount();
+    if (mesh.uvs.size() != vertices)
+        return {};
+    const bool allGiven = mesh.tangents.size() == vertices &&
+                          std::none_of(mesh.tangents.begin(), mesh.tangents.end(),
+                                       [](const glm::vec4& t) { return t.w == 0.0f; });
+    if (allGiven)
+        return mesh.tangents;
+    std::vector<glm::vec4> tangents = computeTangents(mesh);
+    if (mesh.tangents.size() == vertices)
+        for (std::size_t i = 0; i < vertices; ++i)
+            if (mesh.tangents[i].w != 0.0f)
+                tangents[i] = mesh.tangents[i];
+    return tangents;
+}
+
 } // namespace core

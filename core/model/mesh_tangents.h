@@ -21,4 +21,10 @@ namespace core {
  */
 std::vector<glm::vec4> computeTangents(const Mesh& mesh);
 
+/**
+ * The tangents a normal map is drawn with: the file's (Mesh::tangents) where it gave them,
+ * computeTangents() for the other vertices. Empty for a mesh without uvs.
+ */
+std::vector<glm::vec4> vertexTangents(const Mesh& mesh);
+
 } // namespace core

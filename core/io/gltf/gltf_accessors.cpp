@@ -127,6 +127,8 @@ const char* semanticName(Semantic s) {
         return "POSITION";
     case Semantic::Normal:
         return "NORMAL";
+    case Semantic::Tangent:
+        return "TANGENT";
     case Semantic::TexCoord:
         return "TEXCOORD_0";
     case Semantic::Color:
@@ -142,6 +144,8 @@ bool typeAllowed(Semantic s, int type) {
     case Semantic::Position:
     case Semantic::Normal:
         return type == TINYGLTF_TYPE_VEC3;
+    case Semantic::Tangent:
+        return type == TINYGLTF_TYPE_VEC4;
     case Semantic::TexCoord:
         return type == TINYGLTF_TYPE_VEC2;
     case Semantic::Color:
@@ -158,6 +162,7 @@ bool componentAllowed(Semantic s, int ct, bool normalized, bool quantized) {
         return ct == kFloat ||
                (quantized && (ct == kByte || ct == kUByte || ct == kShort || ct == kUShort));
     case Semantic::Normal:
+    case Semantic::Tangent:
         return ct == kFloat || (quantized && normalized && (ct == kByte || ct == kShort));
     case Semantic::TexCoord:
         if (ct == kFloat || (normalized && (ct == kUByte || ct == kUShort)))

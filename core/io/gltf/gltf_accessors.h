@@ -46,7 +46,7 @@ std::string componentName(int componentType, bool normalized);
 double readComponent(const std::uint8_t* p, int componentType, bool normalized);
 
 /** What an accessor is read for. */
-enum class Semantic { Position, Normal, TexCoord, Color, Indices };
+enum class Semantic { Position, Normal, Tangent, TexCoord, Color, Indices };
 
 const char* semanticName(Semantic s);
 /** The accessor types glTF 2.0 allows per semantic, widened by KHR_mesh_quantization. */

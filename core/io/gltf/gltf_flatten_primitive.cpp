@@ -297,11 +297,22 @@ bool GltfFlattener::readAccessorPrimitive(PrimitiveRead& p) {
         return false;
     p.vertexCount = p.pos.size() / 3;
     p.hasNormal = readMatchingAttribute(p, "NORMAL", Semantic::Normal, p.nrmComps, p.nrm);
+    // glTF 2.0 §3.7.2.1: without normals, the tangents are ignored.
+    if (p.hasNormal > 0 && wantsTangents(p))
+        p.hasTangent = readMatchingAttribute(p, "TANGENT", Semantic::Tangent, p.tanComps, p.tan);
     p.hasUv = readMatchingAttribute(p, p.uvName.c_str(), Semantic::TexCoord, p.uvComps, p.uv);
     p.hasColor = readMatchingAttribute(p, "COLOR_0", Semantic::Color, p.colComps, p.col);
-    if (p.hasNormal < 0 || p.hasUv < 0 || p.hasColor < 0)
+    if (p.hasNormal < 0 || p.hasTangent < 0 || p.hasUv < 0 || p.hasColor < 0)
         return false;
     return readPrimitiveOrder(p);
+}
+
+bool GltfFlattener::wantsTangents(const PrimitiveRead& p) const {
+    if (p.material < 0 || static_cast<std::size_t>(p.material) >= m_model.materials.size())
+        return false;
+    const tinygltf::NormalTextureInfo& normal =
+        m_model.materials[static_cast<std::size_t>(p.material)].normalTexture;
+    return normal.index >= 0 && "TEXCOORD_" + str(normal.texCoord) == p.uvName;
 }
 
 int GltfFlattener::readMatchingAttribute(PrimitiveRead& p, const char* attr, Semantic sem,
@@ -358,19 +369,40 @@ void GltfFlattener::triangulate(PrimitiveRead& p) {
     }
 }
 
+namespace {
+
+/**
+ * A TANGENT (x, y, z, w) under the node's transform: the direction as positions move, w times
+ * handedness; w = 0 (tangent not given) where it is not a usable direction.
+ */
+glm::vec4 placedTangent(const glm::dmat4& transform, const float* tangent, float handedness) {
+    const glm::dvec3 t = glm::dmat3(transform) * glm::dvec3(tangent[0], tangent[1], tangent[2]);
+    const double length = glm::length(t);
+    if (!(length > 1e-12) || !std::isfinite(length) || tangent[3] == 0.0f)
+        return glm::vec4(0.0f);
+    return glm::vec4(glm::vec3(t / length), tangent[3] < 0.0f ? -handedness : handedness);
+}
+
+} // namespace
+
 /** The used vertices (remap) under the node's transform; the read attributes are freed. */
 bool GltfFlattener::appendVertices(PrimitiveRead& p, const std::vector<std::uint32_t>& remap) {
     const glm::dmat4& transform = p.inst.transform;
     const glm::dmat3 normalMatrix = glm::inverseTranspose(glm::dmat3(transform));
     const auto base = static_cast<std::uint32_t>(m_mesh.positions.size());
-    const std::vector<float>&pos = p.pos, &nrm = p.nrm, &uv = p.uv, &col = p.col;
-    // UVs and colours only from the first primitive that has them on (earlier vertices get the
-    // defaults then): a file without colours holds no white per vertex while it loads.
+    const std::vector<float>&pos = p.pos, &nrm = p.nrm, &tan = p.tan, &uv = p.uv, &col = p.col;
+    // UVs, tangents and colours only from the first primitive that has them on (earlier vertices
+    // get the defaults then): a file without colours holds no white per vertex while it loads.
     const bool keepUvs = m_anyUv || p.hasUv, keepColors = m_anyColor || p.hasColor;
+    const bool keepTangents = m_anyTangent || p.hasTangent;
     if (keepUvs)
         m_mesh.uvs.resize(base, glm::vec2(0.0f));
+    if (keepTangents)
+        m_mesh.tangents.resize(base, glm::vec4(0.0f));
     if (keepColors)
         m_mesh.colors.resize(base, glm::vec4(1.0f));
+    // A mirroring transform turns the bitangent the other way (glTF's TANGENT.w).
+    const float handedness = glm::determinant(glm::dmat3(transform)) < 0.0 ? -1.0f : 1.0f;
     for (std::size_t v = 0; v < p.vertexCount; ++v) {
         if (remap[v] == std::numeric_limits<std::uint32_t>::max())
             continue;
@@ -385,6 +417,9 @@ bool GltfFlattener::appendVertices(PrimitiveRead& p, const std::vector<std::uint
                 ? unitNormal(normalMatrix * glm::dvec3(nrm[v * 3], nrm[v * 3 + 1], nrm[v * 3 + 2]))
                 : glm::vec3(0.0f));
         m_hasNormal.push_back(p.hasNormal ? 1 : 0);
+        if (keepTangents)
+            m_mesh.tangents.push_back(
+                p.hasTangent ? placedTangent(transform, &tan[v * 4], handedness) : glm::vec4(0.0f));
         glm::vec2 t(0.0f);
         if (p.hasUv) {
             t = glm::vec2(uv[v * 2], uv[v * 2 + 1]);
@@ -401,9 +436,10 @@ bool GltfFlattener::appendVertices(PrimitiveRead& p, const std::vector<std::uint
             m_mesh.colors.push_back(c);
     }
     m_anyUv = keepUvs;
+    m_anyTangent = keepTangents;
     m_anyColor = keepColors;
     // The attributes are in the mesh now; the triangles follow.
-    for (std::vector<float>* read : {&p.pos, &p.nrm, &p.uv, &p.col})
+    for (std::vector<float>* read : {&p.pos, &p.nrm, &p.tan, &p.uv, &p.col})
         std::vector<float>().swap(*read);
     return true;
 }

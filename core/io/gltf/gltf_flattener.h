@@ -48,11 +48,11 @@ struct PrimitiveRead {
     const TextureTransform* uvTransform = nullptr; // the material's, if it has one
     std::string uvName;                            // the TEXCOORD_n the material's texture uses
 
-    std::vector<float> pos, nrm, uv, col;
-    int nrmComps = 3, uvComps = 2, colComps = 0;
+    std::vector<float> pos, nrm, tan, uv, col;
+    int nrmComps = 3, tanComps = 4, uvComps = 2, colComps = 0;
     std::vector<std::uint32_t> order; // the triangles' vertex order before strips and fans
     std::size_t vertexCount = 0;
-    int hasNormal = 0, hasUv = 0, hasColor = 0;
+    int hasNormal = 0, hasTangent = 0, hasUv = 0, hasColor = 0;
     std::vector<std::uint32_t> tris; // local vertex indices, 3 per triangle
 };
 
@@ -117,6 +117,8 @@ private:
     bool readDracoPrimitive(PrimitiveRead& p, const nlohmann::json& ext);
     bool decodeDracoPrimitive(PrimitiveRead& p, const nlohmann::json& ext);
     bool readAccessorPrimitive(PrimitiveRead& p);
+    /** Whether p's TANGENT is read: its material draws a normal map over p's uvs. */
+    bool wantsTangents(const PrimitiveRead& p) const;
     /** 1 if the attribute is there and matches POSITION, 0 if absent, -1 on failure. */
     int readMatchingAttribute(PrimitiveRead& p, const char* attr, Semantic sem, int& comps,
                               std::vector<float>& values);

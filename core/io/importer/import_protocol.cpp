@@ -20,7 +20,7 @@
 
 namespace core::importer {
 
-static_assert(sizeof(FrameHeader) == 16 && sizeof(MeshHeader) == 64 &&
+static_assert(sizeof(FrameHeader) == 16 && sizeof(MeshHeader) == 72 &&
               sizeof(MaterialHeader) == 224 && sizeof(ImageHeader) == 8 &&
               sizeof(TextureSourceHeader) == 8 && sizeof(SourceSceneHeader) == 56 &&
               sizeof(SourcePrimitive) == 32);
@@ -177,10 +177,11 @@ bool FrameWriter::image(const Image& image) {
 bool FrameWriter::mesh(const Mesh& mesh) {
     for (const std::string& warning : mesh.warnings)
         text(Tag::Warning, warning);
-    const MeshHeader header{mesh.positions.size(), mesh.indices.size(),
-                            mesh.normals.size(),   mesh.uvs.size(),
-                            mesh.colors.size(),    mesh.triangleMaterial.size(),
-                            mesh.materials.size(), mesh.textures.size()};
+    const MeshHeader header{mesh.positions.size(),        mesh.indices.size(),
+                            mesh.normals.size(),          mesh.uvs.size(),
+                            mesh.colors.size(),           mesh.tangents.size(),
+                            mesh.triangleMaterial.size(), mesh.materials.size(),
+                            mesh.textures.size()};
     frame(Tag::MeshBegin, &header, sizeof header);
     frame(Tag::Positions, mesh.positions.data(), bytesOf(mesh.positions));
     if (!mesh.normals.empty())
@@ -189,6 +190,8 @@ bool FrameWriter::mesh(const Mesh& mesh) {
         frame(Tag::Uvs, mesh.uvs.data(), bytesOf(mesh.uvs));
     if (!mesh.colors.empty())
         frame(Tag::Colors, mesh.colors.data(), bytesOf(mesh.colors));
+    if (!mesh.tangents.empty())
+        frame(Tag::Tangents, mesh.tangents.data(), bytesOf(mesh.tangents));
     frame(Tag::Indices, mesh.indices.data(), bytesOf(mesh.indices));
     if (!mesh.triangleMaterial.empty())
         frame(Tag::TriangleMaterials, mesh.triangleMaterial.data(), bytesOf(mesh.triangleMaterial));
@@ -318,6 +321,8 @@ private:
             return readArray(m.colors, m_header.colors, length, m_seen[3]);
         case Tag::Indices:
             return readArray(m.indices, m_header.indices, length, m_seen[4]);
+        case Tag::Tangents:
+            return readArray(m.tangents, m_header.tangents, length, m_seen[6]);
         default:
             return readArray(m.triangleMaterial, m_header.triangleMaterials, length, m_seen[5]);
         }
@@ -363,6 +368,7 @@ private:
         case Tag::Normals:
         case Tag::Uvs:
         case Tag::Colors:
+        case Tag::Tangents:
         case Tag::Indices:
         case Tag::TriangleMaterials:
             return array(tag, length);
@@ -437,7 +443,8 @@ private:
             return false;
         const bool perVertex = (h.normals == 0 || h.normals == h.vertices) &&
                                (h.uvs == 0 || h.uvs == h.vertices) &&
-                               (h.colors == 0 || h.colors == h.vertices);
+                               (h.colors == 0 || h.colors == h.vertices) &&
+                               (h.tangents == 0 || h.tangents == h.vertices);
         if (h.vertices > m_limits.maxVertices || h.indices % 3 != 0 ||
             h.indices / 3 > m_limits.maxTriangles || !perVertex ||
             (h.triangleMaterials != 0 && h.triangleMaterials != h.indices / 3) ||
@@ -601,6 +608,7 @@ private:
         const bool complete = m_seen[0] && (m_header.normals == 0 || m_seen[1]) &&
                               (m_header.uvs == 0 || m_seen[2]) &&
                               (m_header.colors == 0 || m_seen[3]) && m_seen[4] &&
+                              (m_header.tangents == 0 || m_seen[6]) &&
                               (m_header.triangleMaterials == 0 || m_seen[5]) &&
                               m_mesh->materials.size() == m_header.materials &&
                               m_mesh->textures.size() == m_header.textures;
@@ -622,7 +630,8 @@ private:
     bool m_done = false;
     std::optional<Mesh> m_mesh;
     MeshHeader m_header{};
-    bool m_seen[6] = {}; // positions, normals, uvs, colors, indices, triangle materials
+    // positions, normals, uvs, colors, indices, triangle materials, tangents
+    bool m_seen[7] = {};
 };
 
 } // namespace

@@ -42,6 +42,7 @@ enum class Tag : std::uint32_t {
     SourceScene = 16,       // SourceSceneHeader, the JSON text, notKept, primitives, used
                             // vertices (uint32), the bin
     TextureOrigins = 17,    // int32[textures]: each texture's glTF image (-1: none)
+    Tangents = 18,          // float[4 * vertices]
 };
 
 struct FrameHeader {
@@ -50,13 +51,14 @@ struct FrameHeader {
     std::uint64_t length;
 };
 
-/** Element counts; normals, uvs and colors are 0 or the vertex count. */
+/** Element counts; normals, uvs, colors and tangents are 0 or the vertex count. */
 struct MeshHeader {
     std::uint64_t vertices;
     std::uint64_t indices;
     std::uint64_t normals;
     std::uint64_t uvs;
     std::uint64_t colors;
+    std::uint64_t tangents;
     std::uint64_t triangleMaterials;
     std::uint64_t materials;
     std::uint64_t textures;

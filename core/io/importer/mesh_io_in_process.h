@@ -119,10 +119,10 @@ protected:
             m_mesh.warnings.push_back(msg);
     }
     /**
-     * The last step, the mesh moved into out: UVs and colours are dropped where no primitive had
-     * them; for normals, m_hasNormal[v] says whether vertex v came with one: none did, so all are
-     * left for loadMesh to compute (normals cleared); some did, so the others get normals computed
-     * from the triangles.
+     * The last step, the mesh moved into out: UVs, tangents and colours are dropped where no
+     * primitive had them; for normals, m_hasNormal[v] says whether vertex v came with one: none
+     * did, so all are left for loadMesh to compute (normals cleared); some did, so the others get
+     * normals computed from the triangles.
      */
     void finish(Mesh& out);
     /**
@@ -135,7 +135,7 @@ protected:
     Error m_error;
     std::set<std::string> m_warned;
     std::vector<char> m_hasNormal;
-    bool m_anyUv = false, m_anyColor = false;
+    bool m_anyUv = false, m_anyTangent = false, m_anyColor = false;
 };
 
 /** p as floats, or false if it does not fit (a double beyond float range is not castable). */

@@ -246,7 +246,10 @@ std::vector<Misbehaviour> misbehaviours() {
          "the importer stopped: it wrote something that is not a frame"},
         {"huge", "printf '" + octal(header(Tag::Positions, 1ull << 62)) + "'\n",
          "the importer stopped: it sent more data than the limits allow"},
-        {"truncated", "printf '" + octal(header(Tag::MeshBegin, 64) + "0123456789") + "'\n",
+        {"truncated",
+         "printf '" +
+             octal(header(Tag::MeshBegin, sizeof(core::importer::MeshHeader)) + "0123456789") +
+             "'\n",
          "the importer stopped: its output ended before the answer was complete"},
         {"unknown-frame", "printf '" + octal(header(static_cast<Tag>(99), 0)) + "'\n",
          "the importer stopped: it sent a frame of an unknown kind"},
