@@ -84,13 +84,13 @@ void GlCapture(benchmark::State& state) {
     if (!readyCapturer(state, capturer, s))
         return;
     core::CaptureStats stats;
-    if (auto warm = capturer.capture(s.view, true, &stats); !warm) { // buffer sizes, shaders
+    if (auto warm = capturer.capture(s.view, {}, &stats); !warm) { // buffer sizes, shaders
         state.SkipWithError(warm.error().c_str());
         return;
     }
     double gpuMs = 0.0, resolveMs = 0.0;
     for (auto _ : state) {
-        auto stack = capturer.capture(s.view, true, &stats);
+        auto stack = capturer.capture(s.view, {}, &stats);
         benchmark::DoNotOptimize(stack->depth.data());
         gpuMs += stats.gpuMs;
         resolveMs += stats.resolveMs;

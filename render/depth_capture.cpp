@@ -150,6 +150,11 @@ void DepthCapture::Impl::draw(const core::View& view, const Options& options) {
     drawInPieces(0, triangles, pieces, [](std::size_t first, std::size_t count) {
         glDrawArrays(GL_TRIANGLES, GLint(3 * first), GLsizei(3 * count));
     });
+    if (options.cullBackFaces && !backFaces.empty())
+        drawInPieces(0, backFaces.size(), pieces, [](std::size_t first, std::size_t count) {
+            glDrawElements(GL_TRIANGLES, GLsizei(3 * count), GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(3 * first * sizeof(std::uint32_t)));
+        });
     for (GLuint binding = 0; binding < GLuint(1 + nodes.size()); ++binding)
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
 
@@ -283,6 +288,28 @@ void DepthCapture::setMesh(const core::Mesh& mesh) {
     d.soupVertices = soup.size();
 }
 
+void DepthCapture::Impl::useBackFaces(std::span<const std::uint32_t> triangles) {
+    if (std::equal(triangles.begin(), triangles.end(), backFaces.begin(), backFaces.end()))
+        return;
+    if (backFaceElements)
+        glDeleteBuffers(1, &backFaceElements);
+    backFaceElements = 0;
+    backFaces.clear();
+    std::vector<std::uint32_t> elements;
+    elements.reserve(triangles.size() * 3);
+    for (const std::uint32_t t : triangles)
+        if (t < soupVertices / 3) {
+            backFaces.push_back(t);
+            elements.insert(elements.end(), {3 * t, 3 * t + 2, 3 * t + 1});
+        }
+    if (elements.empty())
+        return;
+    glCreateBuffers(1, &backFaceElements);
+    glNamedBufferStorage(backFaceElements, GLsizeiptr(elements.size() * sizeof(std::uint32_t)),
+                         elements.data(), 0);
+    glVertexArrayElementBuffer(vertexArray, backFaceElements);
+}
+
 bool DepthCapture::hasMesh() const {
     return m_impl->soupVertices > 0;
 }
@@ -312,6 +339,7 @@ core::Result<core::DepthStack> DepthCapture::capture(const core::View& view, con
     const Clock::time_point start = Clock::now();
     if (const core::Status status = d.prepareDraw(view); !status)
         return core::Error{status.error()};
+    d.useBackFaces(options.shownBackFaces);
     const core::Result<int> recaptures = d.drawUntilFits(view, options);
     if (!recaptures)
         return core::Error{recaptures.error()};

@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "core/base/result.h"
@@ -20,6 +21,8 @@ struct DrawOptions;
 /** Options of DepthCapture::capture(). */
 struct DepthCaptureOptions {
     bool cullBackFaces = true; // false: two-sided, back faces are captured too
+    /** Ascending triangles whose back faces are captured anyway (MeshTopology::shownBackFaces). */
+    std::span<const std::uint32_t> shownBackFaces = {};
 };
 
 /** What one capture cost and found. */

@@ -59,6 +59,11 @@ struct DepthCapture::Impl {
     // The mesh as a triangle soup: 3 positions a triangle, in triangle order.
     GLuint vertexArray = 0, positions = 0;
     std::size_t soupVertices = 0;
+    // The shown back faces (DepthCaptureOptions::shownBackFaces) as the vertex array's element
+    // buffer: triangle t as soup vertices 3t, 3t + 2, 3t + 1, so its back faces the viewer and
+    // the culling that drops the other back faces keeps it; its id is still gl_VertexID / 3.
+    GLuint backFaceElements = 0;
+    std::vector<std::uint32_t> backFaces;
     GLuint framebuffer = 0; // no attachments, only a default size
     int framebufferWidth = 0, framebufferHeight = 0;
     GLint maxFramebufferWidth = 0, maxFramebufferHeight = 0;
@@ -106,9 +111,14 @@ struct DepthCapture::Impl {
             glDeleteVertexArrays(1, &vertexArray);
         if (positions)
             glDeleteBuffers(1, &positions);
-        vertexArray = positions = 0;
+        if (backFaceElements)
+            glDeleteBuffers(1, &backFaceElements);
+        vertexArray = positions = backFaceElements = 0;
         soupVertices = 0;
+        backFaces.clear();
     }
+    /** The element buffer of the shown back faces made for triangles, if it is not already. */
+    void useBackFaces(std::span<const std::uint32_t> triangles);
     core::Status ensureNodes(std::size_t wanted);
     void setRanges(std::size_t count) {
         ranges.assign(count, {});

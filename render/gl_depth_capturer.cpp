@@ -3,10 +3,12 @@
 
 namespace render {
 
-core::Result<core::DepthStack> GlDepthCapturer::capture(const core::View& view, bool cullBackFaces,
+core::Result<core::DepthStack> GlDepthCapturer::capture(const core::View& view,
+                                                        const core::CaptureFaces& faces,
                                                         core::CaptureStats* stats) {
     DepthCapture::Options options;
-    options.cullBackFaces = cullBackFaces;
+    options.cullBackFaces = faces.cullBackFaces;
+    options.shownBackFaces = faces.shownBackFaces;
     DepthCapture::Timings timings;
     auto stack = m_capture.capture(view, options, &timings);
     if (stats)

@@ -12,7 +12,7 @@ public:
     /** Compiles the capture shaders; needs the current context, used for every later call. */
     core::Status initialize() { return m_capture.initialize(); }
     void setMesh(const core::Mesh& mesh) override { m_capture.setMesh(mesh); }
-    core::Result<core::DepthStack> capture(const core::View& view, bool cullBackFaces,
+    core::Result<core::DepthStack> capture(const core::View& view, const core::CaptureFaces& faces,
                                            core::CaptureStats* stats) override;
     DepthCapture& depthCapture() { return m_capture; }
 

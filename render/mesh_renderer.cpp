@@ -30,6 +30,7 @@ struct MaterialRun {
     std::uint32_t firstTriangle;
     std::uint32_t triangleCount;
     std::uint32_t material;
+    bool backFaces = false; // its back faces are shown when back faces are culled
 };
 
 /**
@@ -76,6 +77,7 @@ struct MeshRenderer::Impl {
     bool ownTextures = true; // made from the mesh here, not shared
     std::vector<core::Material> materials;
     std::vector<MaterialRun> runs;
+    std::vector<char> backFaceMaterials; // per material: some of its back faces are shown
     bool hasMesh = false;
     // The stand-in: its own index buffer over the same vertex buffers.
     GLuint standInVao = 0, standInIbo = 0;
@@ -105,12 +107,16 @@ struct MeshRenderer::Impl {
         return array;
     }
 
-    static std::vector<MaterialRun> makeRuns(std::span<const std::uint32_t> triangleMaterial) {
+    /** Runs of one material and one way of showing back faces (shows(t)). */
+    template <typename Shows>
+    static std::vector<MaterialRun> makeRuns(std::span<const std::uint32_t> triangleMaterial,
+                                             Shows shows) {
         std::vector<MaterialRun> made;
         for (std::uint32_t t = 0; t < triangleMaterial.size(); ++t) {
             const std::uint32_t m = triangleMaterial[t];
-            if (made.empty() || made.back().material != m)
-                made.push_back({t, 0, m});
+            const bool backFaces = shows(t, m);
+            if (made.empty() || made.back().material != m || made.back().backFaces != backFaces)
+                made.push_back({t, 0, m, backFaces});
             ++made.back().triangleCount;
         }
         return made;
@@ -178,7 +184,8 @@ core::Status MeshRenderer::initialize() {
     return {};
 }
 
-void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures) {
+void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures,
+                           std::span<const std::uint32_t> shownBackFaces) {
     Impl& d = *m_impl;
     d.releaseMesh();
 
@@ -219,7 +226,16 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     if (d.ownTextures)
         d.textures->create(mesh.textures);
     d.materials = mesh.materials;
-    d.runs = Impl::makeRuns(mesh.triangleMaterial);
+    d.backFaceMaterials.assign(mesh.materials.size(), 0);
+    for (const std::uint32_t t : shownBackFaces)
+        if (t < mesh.triangleMaterial.size() && mesh.triangleMaterial[t] < mesh.materials.size())
+            d.backFaceMaterials[mesh.triangleMaterial[t]] = 1;
+    auto shown = shownBackFaces.begin();
+    d.runs = Impl::makeRuns(mesh.triangleMaterial, [&](std::uint32_t t, std::uint32_t) {
+        while (shown != shownBackFaces.end() && *shown < t)
+            ++shown;
+        return shown != shownBackFaces.end() && *shown == t;
+    });
     d.hasMesh = true;
 }
 
@@ -243,7 +259,9 @@ void MeshRenderer::setStandIn(std::span<const std::uint32_t> indices,
     glNamedBufferStorage(d.standInIbo, GLsizeiptr(indices.size() * sizeof(std::uint32_t)),
                          indices.data(), 0);
     d.standInVao = d.makeVao(d.standInIbo);
-    d.standInRuns = Impl::makeRuns(triangleMaterial);
+    d.standInRuns = Impl::makeRuns(triangleMaterial, [&d](std::uint32_t, std::uint32_t m) {
+        return d.backFaceMaterials[m] != 0;
+    });
 }
 
 void MeshRenderer::clearStandIn() {
@@ -286,10 +304,6 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     const bool standIn = options.standIn && d.standInVao;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    if (options.cullBackFaces)
-        glEnable(GL_CULL_FACE);
-    else
-        glDisable(GL_CULL_FACE);
     glBindVertexArray(standIn ? d.standInVao : d.vao);
     const ShaderProgram* current = nullptr;
     const std::vector<MaterialRun>& runs = standIn ? d.standInRuns : d.runs;
@@ -329,6 +343,10 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         if (features && program != &d.programs[0])
             bindSurfaceMaps(*program, surface, features, *d.textures, baseColor->width(),
                             baseColor->height());
+        if (options.cullBackFaces && !run.backFaces)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
         drawInPieces(run.firstTriangle, run.triangleCount, pieces,
                      [](std::size_t first, std::size_t count) {
                          glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,

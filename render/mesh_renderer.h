@@ -18,7 +18,7 @@ namespace render {
 struct DrawOptions {
     glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded RGBA, as written
     bool clear = true;
-    bool cullBackFaces = false; // shading shows both sides; capture culls (docs/architecture.md §3)
+    bool cullBackFaces = false; // true: back faces are culled but for setMesh's shownBackFaces
     bool standIn = false;       // draw the stand-in (setStandIn) instead of the mesh, if set
     /** What is shown, as the compositor shows it (render/material_channel.h). */
     MaterialChannel channel = MaterialChannel::Material;
@@ -43,9 +43,13 @@ public:
     /**
      * Uploads the mesh (replacing any previous one). With textures, the materials sample that
      * store, which whoever shares it has filled from the mesh's textures (a DepthCompositor of
-     * the same context may read it too); without, the renderer makes its own.
+     * the same context may read it too); without, the renderer makes its own. The triangles of
+     * shownBackFaces (ascending; core::MeshTopology::shownBackFaces) show their back faces when
+     * back faces are culled, as the depth-layer capture does; so does the stand-in where those
+     * triangles' materials lie.
      */
-    void setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures = nullptr);
+    void setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures = nullptr,
+                 std::span<const std::uint32_t> shownBackFaces = {});
     bool hasMesh() const;
     /**
      * Sets the simplified triangles drawn with DrawOptions::standIn: indices into the mesh's

@@ -2436,8 +2436,8 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <translation>Rückseiten erfassen (zweiseitig)</translation>
     </message>
     <message>
-        <source>Also split the inside of open or single-sided surfaces into depth layers. Changing it captures the view again.</source>
-        <translation>Auch die Innenseite offener oder einseitiger Flächen in Tiefenebenen zerlegen. Eine Änderung erfasst die Ansicht neu.</translation>
+        <source>Show, paint and split into depth layers the back faces of every surface. Without it, back faces are hidden but for the open surfaces of double-sided materials (a leaf, a cloth). Changing it captures the view again.</source>
+        <translation>Die Rückseiten aller Flächen zeigen, bemalen und in Tiefenebenen zerlegen. Ohne diese Option bleiben Rückseiten verborgen, außer bei offenen Flächen doppelseitiger Materialien (ein Blatt, ein Tuch). Eine Änderung erfasst die Ansicht neu.</translation>
     </message>
     <message>
         <source>Threshold:</source>

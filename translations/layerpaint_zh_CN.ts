@@ -2428,8 +2428,8 @@ Smaller splits the view into more regions.</source>
         <translation>捕获背面（双面）</translation>
     </message>
     <message>
-        <source>Also split the inside of open or single-sided surfaces into depth layers. Changing it captures the view again.</source>
-        <translation>也将开放或单面表面的内侧分成深度层。更改后会重新捕获视图。</translation>
+        <source>Show, paint and split into depth layers the back faces of every surface. Without it, back faces are hidden but for the open surfaces of double-sided materials (a leaf, a cloth). Changing it captures the view again.</source>
+        <translation>显示、绘制所有表面的背面并将其分成深度层。关闭时背面隐藏，双面材质的开放表面（如树叶、布料）除外。更改后会重新捕获视图。</translation>
     </message>
     <message>
         <source>Threshold:</source>

@@ -41,6 +41,13 @@ inline bool ownsEdge(std::int64_t ax, std::int64_t ay, std::int64_t bx, std::int
     return by < ay || (by == ay && bx > ax);
 }
 
+/** Whether triangle t's back face is captured although back faces are culled. */
+bool shown(const CpuCaptureOptions& options, int t) {
+    return !options.shownBackFaces.empty() &&
+           std::binary_search(options.shownBackFaces.begin(), options.shownBackFaces.end(),
+                              std::uint32_t(t));
+}
+
 Setup setUp(const Mesh& mesh, std::size_t t, const View& view, const glm::mat4& viewProj,
             const glm::mat4& viewMatrix, bool cullBackFaces) {
     Setup s{};
@@ -131,8 +138,8 @@ DepthStack captureDepthLayersCpu(const Mesh& mesh, const View& view,
     const glm::mat4 viewProj = view.proj * view.view;
     parallelRanges(int(triangles), options.threads, [&](int, int t0, int t1) {
         for (int t = t0; t < t1; ++t)
-            setups[std::size_t(t)] =
-                setUp(mesh, std::size_t(t), view, viewProj, view.view, options.cullBackFaces);
+            setups[std::size_t(t)] = setUp(mesh, std::size_t(t), view, viewProj, view.view,
+                                           options.cullBackFaces && !shown(options, t));
     });
 
     // The view depth of one covered pixel; false when outside the near/far planes.

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "core/depth/depth_stack.h"
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
@@ -10,6 +13,8 @@ namespace core {
 struct CpuCaptureOptions {
     bool cullBackFaces = true; // false: two-sided, back faces are captured too
     unsigned threads = 0;      // 0 = std::thread::hardware_concurrency()
+    /** Ascending triangles whose back faces are captured anyway (MeshTopology::shownBackFaces). */
+    std::span<const std::uint32_t> shownBackFaces = {};
 };
 
 /**

@@ -14,11 +14,12 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 }
 } // namespace
 
-Result<DepthStack> CpuDepthCapturer::capture(const View& view, bool cullBackFaces,
+Result<DepthStack> CpuDepthCapturer::capture(const View& view, const CaptureFaces& faces,
                                              CaptureStats* stats) {
     const auto start = std::chrono::steady_clock::now();
     CpuCaptureOptions options;
-    options.cullBackFaces = cullBackFaces;
+    options.cullBackFaces = faces.cullBackFaces;
+    options.shownBackFaces = faces.shownBackFaces;
     DepthStack stack = captureDepthLayersCpu(m_mesh, view, options);
     if (stats)
         *stats = {0.0, millisecondsSince(start), 0};
@@ -29,7 +30,7 @@ Result<DepthLayers> buildDepthLayers(DepthCapturer& capturer, const Mesh& mesh,
                                      const MeshTopology& topology, const View& view,
                                      const DepthLayerOptions& options, ConnectivityEngine* engine) {
     CaptureStats stats;
-    auto stack = capturer.capture(view, options.cullBackFaces, &stats);
+    auto stack = capturer.capture(view, {options.cullBackFaces, topology.shownBackFaces}, &stats);
     if (!stack)
         return stack.takeError();
     return finishDepthLayers(std::move(stack).value(), stats, mesh, topology, view, options,

@@ -3,7 +3,9 @@
 // into a DepthStack, pixel connectivity, and this header, which runs them and the segmentation.
 #pragma once
 
+#include <cstdint>
 #include <memory>
+#include <span>
 
 #include "core/base/result.h"
 #include "core/depth/connectivity.h"
@@ -23,6 +25,15 @@ struct CaptureStats {
 };
 
 /**
+ * Which faces a capture keeps: the front faces, and the back faces where cullBackFaces is off
+ * (two-sided) or the triangle is one of shownBackFaces (ascending; MeshTopology::shownBackFaces).
+ */
+struct CaptureFaces {
+    bool cullBackFaces = true;
+    std::span<const std::uint32_t> shownBackFaces = {};
+};
+
+/**
  * The GPU part of build_layers (docs/architecture.md §2): render implements it on OpenGL; tests and
  * headless use without GL can use CpuDepthCapturer.
  */
@@ -31,8 +42,8 @@ public:
     virtual ~DepthCapturer() = default;
     /** Makes mesh the one captured from now on. */
     virtual void setMesh(const Mesh& mesh) = 0;
-    /** Every front-facing fragment of view (both sides when !cullBackFaces), or an Error. */
-    virtual Result<DepthStack> capture(const View& view, bool cullBackFaces,
+    /** Every fragment of view of the faces kept, or an Error. */
+    virtual Result<DepthStack> capture(const View& view, const CaptureFaces& faces,
                                        CaptureStats* stats) = 0;
 };
 
@@ -40,7 +51,8 @@ public:
 class CpuDepthCapturer : public DepthCapturer {
 public:
     void setMesh(const Mesh& mesh) override { m_mesh = mesh; }
-    Result<DepthStack> capture(const View& view, bool cullBackFaces, CaptureStats* stats) override;
+    Result<DepthStack> capture(const View& view, const CaptureFaces& faces,
+                               CaptureStats* stats) override;
 
 private:
     Mesh m_mesh;

@@ -52,7 +52,8 @@ bool Document::SymmetryBuild::build(const ProgressFn& progress, ConnectivityEngi
             return false;
         }
         CaptureStats stats;
-        Result<DepthStack> stack = capturer.capture(views[i], options.cullBackFaces, &stats);
+        Result<DepthStack> stack =
+            capturer.capture(views[i], {options.cullBackFaces, topology->shownBackFaces}, &stats);
         if (!stack) {
             layers.emplace_back(); // that copy paints nothing, the others still do
             continue;

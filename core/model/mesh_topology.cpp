@@ -253,6 +253,37 @@ glm::vec4 trianglePlane(const Mesh& mesh, std::size_t t) {
     return glm::vec4(glm::vec3(unit), float(-glm::dot(unit, (v[0] + v[1] + v[2]) / 3.0)));
 }
 
+namespace {
+
+/** The triangles of double-sided materials in open components, ascending. */
+std::vector<std::uint32_t> listShownBackFaces(const Mesh& mesh, const MeshTopology& topo) {
+    const auto doubleSided = [&mesh](std::uint32_t t) {
+        const std::uint32_t m = mesh.triangleMaterial[t];
+        return m < mesh.materials.size() && mesh.materials[m].doubleSided;
+    };
+    const std::size_t triangles = topo.triangleCount();
+    if (mesh.triangleMaterial.size() != triangles ||
+        std::none_of(mesh.materials.begin(), mesh.materials.end(),
+                     [](const Material& m) { return m.doubleSided; }))
+        return {};
+    std::vector<char> open(topo.componentCount, 0);
+    for (std::uint32_t t = 0; t < triangles; ++t)
+        for (std::uint32_t across : topo.edgeNeighbors[t])
+            open[topo.component[t]] |= across == kNone ? 1 : 0;
+    std::vector<std::uint32_t> shown;
+    for (std::uint32_t t = 0; t < triangles; ++t)
+        if (doubleSided(t) && open[topo.component[t]])
+            shown.push_back(t);
+    return shown;
+}
+
+} // namespace
+
+bool MeshTopology::showsBackFace(std::uint32_t t) const {
+    return !shownBackFaces.empty() &&
+           std::binary_search(shownBackFaces.begin(), shownBackFaces.end(), t);
+}
+
 MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
     MeshTopology topo;
     weldVertices(mesh, weldTolerance, topo);
@@ -265,6 +296,7 @@ MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
         for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
             topo.planes[t] = trianglePlane(mesh, t);
     });
+    topo.shownBackFaces = listShownBackFaces(mesh, topo);
     return topo;
 }
 

@@ -34,8 +34,17 @@ struct MeshTopology {
     std::uint32_t componentCount = 0;
     /** Per triangle: its plane in the mesh's own space (trianglePlane()). */
     std::vector<glm::vec4> planes;
+    /**
+     * Ascending: the triangles whose back faces are shown and captured although back faces are
+     * culled, as glTF's doubleSided asks: those of double-sided materials in components that are
+     * open (an edge without a triangle across). A closed component's back faces face its inside,
+     * hidden from any view outside it, so capturing them would only add depth layers.
+     */
+    std::vector<std::uint32_t> shownBackFaces;
 
     std::size_t triangleCount() const { return corners.size(); }
+    /** Whether triangle t is one of shownBackFaces. */
+    bool showsBackFace(std::uint32_t t) const;
     /** How many welded corners triangles a and b have in common (0 to 3). */
     int sharedCorners(std::uint32_t a, std::uint32_t b) const;
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <span>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -34,9 +35,11 @@ protected:
     void TearDown() override { m_capture.release(); }
 
     core::DepthStack capture(const core::View& view, bool cullBackFaces = true,
-                             render::DepthCapture::Timings* timings = nullptr) {
+                             render::DepthCapture::Timings* timings = nullptr,
+                             std::span<const std::uint32_t> shownBackFaces = {}) {
         render::DepthCapture::Options options;
         options.cullBackFaces = cullBackFaces;
+        options.shownBackFaces = shownBackFaces;
         auto result = m_capture.capture(view, options, timings);
         EXPECT_TRUE(result) << result.error();
         return result ? std::move(result).value() : core::DepthStack{};
@@ -210,6 +213,20 @@ TEST_F(DepthCaptureGlTest, TwoSidedCapturesBackFaces) {
     for (bool orthographic : {false, true}) {
         const core::View view = quadView(orthographic);
         expectStackedQuads(capture(view, false), view, false);
+    }
+}
+
+TEST_F(DepthCaptureGlTest, ShownBackFacesAreCapturedWhileTheOthersAreCulled) {
+    m_capture.setMesh(quadMesh(stackedQuads()));
+    const std::vector<std::uint32_t> backQuad = {6, 7}; // quad 3, the back-facing one
+    for (bool orthographic : {false, true}) {
+        const core::View view = quadView(orthographic);
+        expectAnalytic(capture(view, true, nullptr, backQuad), view, stackedQuads(),
+                       {true, true, true, true, true}, true);
+        // The element buffer of shown faces is dropped when the list empties.
+        expectStackedQuads(capture(view), view, true);
+        // Shown back faces change nothing two-sided.
+        expectStackedQuads(capture(view, false, nullptr, backQuad), view, false);
     }
 }
 

@@ -218,4 +218,64 @@ TEST_F(GlTest, VertexColourUpdatesLookLikeAFreshUpload) {
     EXPECT_EQ(largeDifferences(updated, fresh, 1), 0);
 }
 
+/** Two quads facing away from a camera on +Z: quad 0 (triangles 0, 1) of a double-sided
+ * material, quad 1 (triangles 2, 3) of a single-sided one. */
+core::Mesh backFacingQuads() {
+    core::Mesh mesh;
+    for (const float x : {-0.6f, 0.1f}) {
+        const auto base = std::uint32_t(mesh.positions.size());
+        mesh.positions.insert(
+            mesh.positions.end(),
+            {{x, -0.3f, 0.0f}, {x + 0.5f, -0.3f, 0.0f}, {x + 0.5f, 0.3f, 0.0f}, {x, 0.3f, 0.0f}});
+        // Clockwise seen from +Z.
+        mesh.indices.insert(mesh.indices.end(),
+                            {base, base + 2, base + 1, base, base + 3, base + 2});
+    }
+    mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, -1.0f));
+    mesh.materials.resize(2);
+    mesh.materials[0].doubleSided = true;
+    mesh.triangleMaterial = {0, 0, 1, 1};
+    return mesh;
+}
+
+TEST_F(GlTest, ShownBackFacesAreDrawnWhileTheOthersAreCulled) {
+    const core::Mesh mesh = backFacingQuads();
+    core::Camera camera;
+    camera.sceneRadius = 1.0f;
+    camera.distance = 2.0f;
+    const core::View view = camera.view(64, 48);
+    const std::vector<std::uint32_t> shown = {0, 1};
+    const auto drawn = [&view](const core::Image& image, float worldX) {
+        const glm::vec3 p = view.project(glm::vec3(worldX, 0.0f, 0.0f));
+        const std::uint8_t* px =
+            &image.rgba[(std::size_t(p.y) * std::size_t(view.width) + std::size_t(p.x)) * 4];
+        return px[0] + px[1] + px[2] > 0;
+    };
+    const auto draw = [&](std::span<const std::uint32_t> list, bool standIn) {
+        render::OffscreenTarget target;
+        EXPECT_TRUE(target.create(view.width, view.height));
+        render::MeshRenderer renderer;
+        EXPECT_TRUE(renderer.initialize());
+        renderer.setMesh(mesh, nullptr, list);
+        if (standIn)
+            renderer.setStandIn(mesh.indices, mesh.triangleMaterial);
+        target.bind();
+        render::DrawOptions options;
+        options.background = {0.0f, 0.0f, 0.0f, 1.0f};
+        options.standIn = standIn;
+        options.cullBackFaces = true;
+        renderer.draw(view, options);
+        core::Image image = target.readColor();
+        renderer.release();
+        return image;
+    };
+    for (const bool standIn : {false, true}) {
+        const core::Image withList = draw(shown, standIn);
+        EXPECT_TRUE(drawn(withList, -0.35f)) << "stand-in " << standIn;
+        EXPECT_FALSE(drawn(withList, 0.35f)) << "stand-in " << standIn;
+        const core::Image without = draw({}, standIn);
+        EXPECT_FALSE(drawn(without, -0.35f)) << "stand-in " << standIn;
+    }
+}
+
 } // namespace mesh_renderer_gltest

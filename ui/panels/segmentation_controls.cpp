@@ -75,8 +75,10 @@ SegmentationControls::SegmentationControls(QWidget* parent) : QWidget(parent) {
 
     m_twoSided = new QCheckBox(tr("Capture back faces (two-sided)"), this);
     m_twoSided->setObjectName(QStringLiteral("twoSidedCapture"));
-    m_twoSided->setToolTip(tr("Also split the inside of open or single-sided surfaces into "
-                              "depth layers. Changing it captures the view again."));
+    m_twoSided->setToolTip(tr("Show, paint and split into depth layers the back faces of every "
+                              "surface. Without it, back faces are hidden but for the open "
+                              "surfaces of double-sided materials (a leaf, a cloth). Changing it "
+                              "captures the view again."));
 
     auto* form = new QFormLayout(this);
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);

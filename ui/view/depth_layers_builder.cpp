@@ -115,8 +115,8 @@ DepthLayersBuilder::Captured DepthLayersBuilder::captureView() {
     job->view = m_viewport.view();
     job->options = m_document.depthLayerOptions();
     // The GPU part, on this thread: the viewport's context is only current here.
-    core::Result<core::DepthStack> stack =
-        m_viewport.captureLayers(job->view, job->options.cullBackFaces, &job->stats);
+    core::Result<core::DepthStack> stack = m_viewport.captureLayers(
+        job->view, {job->options.cullBackFaces, m_document.topology().shownBackFaces}, &job->stats);
     ++m_captures;
     return {std::move(job), std::move(stack)};
 }

@@ -311,13 +311,14 @@ bool Viewport::canCapture() const {
     return m_capturer && mesh() && m_document.mesh().triangleCount() > 0;
 }
 
-core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view, bool cullBackFaces,
+core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view,
+                                                       const core::CaptureFaces& faces,
                                                        core::CaptureStats* stats) {
     if (!canCapture())
         return core::Error{tr("The depth-layer capture is not available.").toStdString()};
     makeCurrent();
     uploadMeshIfDirty();
-    auto stack = m_capturer->capture(view, cullBackFaces, stats);
+    auto stack = m_capturer->capture(view, faces, stats);
     doneCurrent();
     return stack;
 }
@@ -508,7 +509,7 @@ void Viewport::uploadMeshIfDirty() {
     m_textures->create(mesh.textures);
     for (std::size_t page = 0; target && page < target->pageCount(); ++page)
         m_textures->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
-    m_renderer->setMesh(mesh, m_textures);
+    m_renderer->setMesh(mesh, m_textures, m_document.topology().shownBackFaces);
     m_pendingPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor) {
@@ -551,6 +552,8 @@ void Viewport::paintGL() {
         flushPaint(false);
         options.standIn = isCameraMoving();
         options.channel = m_composite.channel;
+        // The faces the capture keeps, so what shows is what a stroke can reach.
+        options.cullBackFaces = m_document.depthLayerOptions().cullBackFaces;
         m_renderer->draw(current, options);
         m_lastFrameTriangles = m_renderer->lastDrawnTriangles();
     }

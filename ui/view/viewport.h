@@ -136,7 +136,8 @@ public:
     /** The backend in use once resolved for this renderer (Cpu before the first use). */
     render::ConnectivityBackend connectivityBackend() const;
     /** The GPU part of build_layers for view, with this widget's context current. */
-    core::Result<core::DepthStack> captureLayers(const core::View& view, bool cullBackFaces,
+    core::Result<core::DepthStack> captureLayers(const core::View& view,
+                                                 const core::CaptureFaces& faces,
                                                  core::CaptureStats* stats);
     /** Shows the document's layers with the compositor (they must be of the current view). */
     void showLayers();

@@ -257,7 +257,8 @@ void PaintTarget::Context::addNeighbourTriangles() {
             marks[n].dab = dab;
             marks[n].local = kNone;
             const ViewTriangle& v = viewTriangle(n);
-            if (!v.usable || (cullBackFaces && !v.front) || !overlapsMap(v))
+            if (!v.usable || (cullBackFaces && !v.front && !topology->showsBackFace(n)) ||
+                !overlapsMap(v))
                 continue;
             marks[n].local = std::uint32_t(setups.size());
             setups.push_back(v.setup);
