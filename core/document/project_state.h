@@ -137,12 +137,16 @@ Result<SavedPaintLayers> paintLayersFromJson(const nlohmann::json& paintLayers,
                                              std::vector<std::string>* warnings = nullptr);
 /** The paint layers of doc's texture target (copies of the planes), or null for none. */
 std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc);
+/** The paint layers of target (copies of the planes), or null for none. */
+std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const PaintLayerTarget& target);
 /**
  * Replaces the paint layers of doc's texture target with layers (not an undo step: a project
  * being opened). An Error, and nothing changed, when there is no texture target or a plane does
  * not fit its pages.
  */
 Status restorePaintLayers(Document& doc, const SavedPaintLayers& layers);
+/** restorePaintLayers() into target, which may be one no document holds yet. */
+Status restorePaintLayers(PaintLayerTarget& target, const SavedPaintLayers& layers);
 
 /**
  * base with the document's share of a project's state filled in: camera, brush, layer options,

@@ -159,9 +159,13 @@ Result<SavedPaintLayers> paintLayersFromJson(const Json& j, std::vector<std::str
 std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) {
     const PaintTarget* current = doc.currentPaintTarget();
     const PaintLayerTarget* target = current ? current->paintLayers() : nullptr;
-    if (!target || target->paintLayerStack().size() == 0)
+    return target ? capturePaintLayers(*target) : nullptr;
+}
+
+std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const PaintLayerTarget& target) {
+    if (target.paintLayerStack().size() == 0)
         return nullptr;
-    const PaintLayerStack& stack = target->paintLayerStack();
+    const PaintLayerStack& stack = target.paintLayerStack();
     auto saved = std::make_shared<SavedPaintLayers>();
     for (std::size_t i = 0; i < stack.size(); ++i) {
         const PaintLayer& layer = stack.layer(i);
@@ -175,7 +179,7 @@ std::shared_ptr<const SavedPaintLayers> capturePaintLayers(const Document& doc) 
             out.mask = std::make_shared<const TiledPlane>(*layer.mask);
         saved->layers.push_back(std::move(out));
     }
-    saved->selection = target->selection();
+    saved->selection = target.selection();
     for (std::uint32_t p = 0; p < stack.pages().size(); ++p) {
         const Image& composite = stack.compositeImage(p);
         Image base;
@@ -200,7 +204,10 @@ Status restorePaintLayers(Document& doc, const SavedPaintLayers& saved) {
     Result<PaintLayerTarget*> ready = doc.paintLayerTarget();
     if (!ready)
         return ready.takeError();
-    PaintLayerTarget& target = **ready;
+    return restorePaintLayers(**ready, saved);
+}
+
+Status restorePaintLayers(PaintLayerTarget& target, const SavedPaintLayers& saved) {
     PaintLayerStack& stack = target.paintLayerStack();
     const auto fits = [&](const std::shared_ptr<const TiledPlane>& plane, int texelBytes) {
         return !plane || (plane->pages() == stack.pages() && plane->texelBytes() == texelBytes);

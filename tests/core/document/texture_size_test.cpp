@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Document::raiseTextureSize(): a material's texture page made larger with what it holds, as one
 // undoable step and as the script operation raise-texture-size; refused with a clear message
-// where it cannot be done (paint layers, no texture, not larger).
+// where it cannot be done (no texture, not larger); paint layers go along, resampled.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -87,13 +87,55 @@ TEST(TextureSize, RefusedWithAReason) {
               "the texture is 64 × 32 already: give a larger width");
     EXPECT_EQ(doc.raiseTextureSize(0, 16384).error(),
               "a texture can be at most 8192 texels on a side");
+}
 
+TEST(TextureSize, PaintLayersAreResampledWithThePage) {
+    core::Document doc;
+    doc.setMesh(texturedQuad(), "quad");
+    ASSERT_TRUE(doc.setPaintTarget(texture()).ok());
     core::PaintChanges changes;
-    ASSERT_TRUE(doc.addPaintLayer(core::PaintLayerSettings{}, changes).ok());
-    const core::Status refused = doc.raiseTextureSize(0, 128);
-    ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.error().find("paint layers"), std::string::npos) << refused.error();
-    EXPECT_EQ(doc.paintTarget()->page(0).width, 64) << "nothing changed";
+    ASSERT_TRUE(doc.addPaintLayer(core::PaintLayerSettings{"green"}, changes).ok());
+    {
+        // Texels x 8..23, y 8..23 of the layer painted green, fully covered.
+        core::PaintLayerStack& stack = (*doc.paintLayerTarget())->paintLayerStack();
+        core::TiledPlane& plane = *stack.channelPlane(0, core::PaintChannel::BaseColor);
+        for (int y = 8; y < 24; ++y)
+            for (int x = 8; x < 24; ++x) {
+                std::uint8_t* t = plane.writableTexel(0, x, y);
+                t[0] = 0, t[1] = 200, t[2] = 0, t[3] = 255;
+            }
+        stack.updateAll();
+    }
+    const core::Status raised = doc.raiseTextureSize(0, 256);
+    ASSERT_TRUE(raised.ok()) << raised.error();
+    const core::PaintLayerStack& stack = (*doc.paintLayerTarget())->paintLayerStack();
+    ASSERT_EQ(stack.size(), 1u);
+    EXPECT_EQ(stack.layer(0).settings.name, "green");
+    const core::TiledPlane& plane = *stack.layer(0).channels[0];
+    ASSERT_EQ(plane.pages()[0], (core::PageSize{256, 128}));
+    // Inside: the paint; outside: unpainted; at the edge the coverage falls off but the colour
+    // stays the paint's (not darkened towards the unpainted texels' zeros).
+    EXPECT_EQ(plane.texel(0, 64, 64)[1], 200);
+    EXPECT_EQ(plane.texel(0, 64, 64)[3], 255);
+    EXPECT_EQ(plane.texel(0, 10, 10)[3], 0);
+    const std::uint8_t* edge = plane.texel(0, 32, 64);
+    EXPECT_GT(edge[3], 0);
+    EXPECT_LT(edge[3], 255);
+    EXPECT_EQ(edge[1], 200);
+    // The composite: the paint over the base, the base (red) elsewhere; the base is the
+    // resampled base, not the old composite.
+    const core::Image& page = doc.paintTarget()->page(0);
+    EXPECT_EQ(texel(page, 64, 64), (std::array<std::uint8_t, 4>{0, 200, 0, 255}));
+    EXPECT_EQ(texel(page, 10, 10), (std::array<std::uint8_t, 4>{255, 0, 0, 255}));
+    const std::vector<std::uint8_t>& base = stack.baseColor(0);
+    const std::size_t at = (64 * 256 + 64) * 4;
+    EXPECT_EQ(base[at], 255);
+    EXPECT_EQ(base[at + 1], 0);
+
+    ASSERT_TRUE(doc.undo(changes));
+    const core::PaintLayerStack& before = (*doc.paintLayerTarget())->paintLayerStack();
+    EXPECT_EQ(before.layer(0).channels[0]->pages()[0], (core::PageSize{64, 32}));
+    EXPECT_EQ(doc.paintTarget()->page(0).width, 64);
 }
 
 TEST(TextureSize, TheScriptOperationRaisesAndIsLogged) {
