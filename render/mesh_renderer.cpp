@@ -37,15 +37,17 @@ struct MaterialRun {
  * A program variant: the channel shown, whether the material has metallic-roughness, and the
  * SurfaceFeature bits of its maps (only in the lit Material channel).
  */
-unsigned variantKey(MaterialChannel channel, bool material, unsigned surface) {
-    return unsigned(channel) | (material ? 4u : 0u) | surface << 3;
+unsigned variantKey(MaterialChannel channel, bool material, bool alphaMask, unsigned surface) {
+    return unsigned(channel) | (material ? 4u : 0u) | (alphaMask ? 8u : 0u) | surface << 4;
 }
 
 /** mesh.frag with the defines of a variant. */
 core::Result<ShaderProgram> buildVariant(unsigned key) {
-    std::vector<std::string> defines = surfaceDefines(key >> 3);
+    std::vector<std::string> defines = surfaceDefines(key >> 4);
     if (key & 4u)
         defines.emplace_back("MATERIAL");
+    if (key & 8u)
+        defines.emplace_back("ALPHA_MASK");
     switch (MaterialChannel(key & 3u)) {
     case MaterialChannel::Material:
         break;
@@ -324,7 +326,9 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
             options.channel == MaterialChannel::Material && baseColor ? surface.features() : 0u;
         if (!d.tangentBuffer)
             features &= ~unsigned(kSurfaceNormalMap);
-        const ShaderProgram* program = d.program(variantKey(options.channel, lit, features));
+        const bool alphaMask = material.alphaMode == core::AlphaMode::Mask;
+        const ShaderProgram* program =
+            d.program(variantKey(options.channel, lit, alphaMask, features));
         if (program != current) {
             current = program;
             program->use();
@@ -336,6 +340,8 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
         glUniform4fv(program->uniform("uBaseColorFactor"), 1,
                      glm::value_ptr(material.baseColorFactor));
         glUniform1i(program->uniform("uHasTexture"), textured);
+        if (alphaMask)
+            glUniform1f(program->uniform("uAlphaCutoff"), material.alphaCutoff);
         if (textured)
             glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
         if (lit && program != &d.programs[0])

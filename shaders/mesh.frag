@@ -5,7 +5,8 @@
 // textured material with a metallic-roughness texture) lit as that material; CHANNEL_BASE,
 // CHANNEL_ROUGHNESS and CHANNEL_METALLIC show one channel alone (untextured: roughness 1, metal 0).
 // A textured material's maps (render::SurfaceMaps) in the lit view: NORMAL_MAP, OCCLUSION_MAP,
-// EMISSIVE (EMISSIVE_MAP).
+// EMISSIVE (EMISSIVE_MAP). ALPHA_MASK: glTF's alphaMode MASK, no surface where the base colour's
+// alpha is below uAlphaCutoff (the depth-layer capture drops those fragments alike).
 in vec3 vViewNormal;
 in vec3 vViewPosition;
 in vec2 vUv;
@@ -30,6 +31,9 @@ uniform sampler2D uEmissiveMap; // GL_SRGB8_ALPHA8: sampled as linear
 uniform mat3 uEmissiveTransform;
 #endif
 
+#ifdef ALPHA_MASK
+uniform float uAlphaCutoff;
+#endif
 uniform vec4 uBaseColorFactor;
 uniform bool uHasTexture;
 uniform sampler2D uBaseColorTexture;  // GL_SRGB8_ALPHA8: sampled as linear
@@ -55,6 +59,10 @@ void main() {
     vec4 base = uBaseColorFactor * vColor;
     if (uHasTexture)
         base *= texture(uBaseColorTexture, vUv);
+#ifdef ALPHA_MASK
+    if (base.a < uAlphaCutoff)
+        discard;
+#endif
     vec3 n = normalize(vViewNormal);
     vec3 toEye = normalize(-vViewPosition);
     // Two-sided: a back face seen through a hole is lit like its front.

@@ -3,6 +3,7 @@
 
 #include <chrono>
 
+#include "core/depth/alpha_mask.h"
 #include "core/depth/cpu_capture.h"
 
 namespace core {
@@ -44,6 +45,7 @@ DepthLayers finishDepthLayers(DepthStack stack, const CaptureStats& captureStats
     layers.view = view;
     layers.options = options;
     layers.stack = std::move(stack);
+    dropMaskedFragments(layers.stack, mesh, view);
     layers.timings.capture = captureStats;
     const auto start = std::chrono::steady_clock::now();
     layers.geometry = makeSurfaceGeometry(mesh, topology, view, &layers.stack);

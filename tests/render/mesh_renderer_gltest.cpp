@@ -278,4 +278,43 @@ TEST_F(GlTest, ShownBackFacesAreDrawnWhileTheOthersAreCulled) {
     }
 }
 
+TEST_F(GlTest, AnAlphaMaskedMaterialShowsWhatIsBehindWhereItsAlphaIsLow) {
+    // A grey quad in front (texture transparent on its left half) over a red quad behind.
+    core::Mesh mesh;
+    for (const float z : {0.2f, -0.2f}) {
+        const auto base = std::uint32_t(mesh.positions.size());
+        mesh.positions.insert(
+            mesh.positions.end(),
+            {{-0.5f, -0.4f, z}, {0.5f, -0.4f, z}, {0.5f, 0.4f, z}, {-0.5f, 0.4f, z}});
+        mesh.uvs.insert(mesh.uvs.end(), {{0.0f, 1.0f}, {1.0f, 1.0f}, {1.0f, 0.0f}, {0.0f, 0.0f}});
+        mesh.indices.insert(mesh.indices.end(),
+                            {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0f, 0.0f, 1.0f));
+    mesh.triangleMaterial = {0, 0, 1, 1};
+    core::Image texture{8, 8, {}};
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            texture.rgba.insert(texture.rgba.end(), {200, 200, 200, std::uint8_t(x < 4 ? 0 : 255)});
+    mesh.textures = {texture};
+    mesh.materials.resize(2);
+    mesh.materials[0].baseColorTexture = 0;
+    mesh.materials[1].baseColorFactor = glm::vec4(1.0f, 0.0f, 0.0f, 1.0f);
+    core::Camera camera;
+    camera.sceneRadius = 1.0f;
+    camera.distance = 2.0f;
+    const core::View view = camera.view(64, 48);
+    const auto redAt = [&](float worldX) {
+        const core::Image image = drawMesh(mesh, view, [](render::MeshRenderer&) {});
+        const glm::vec3 p = view.project(glm::vec3(worldX, 0.0f, 0.2f));
+        const std::uint8_t* px =
+            &image.rgba[(std::size_t(p.y) * std::size_t(view.width) + std::size_t(p.x)) * 4];
+        return px[0] > 2 * px[1] + 20;
+    };
+    EXPECT_FALSE(redAt(-0.3f)) << "opaque: the grey quad hides the red one";
+    mesh.materials[0].alphaMode = core::AlphaMode::Mask;
+    EXPECT_TRUE(redAt(-0.3f)) << "masked: the red quad shows through the transparent half";
+    EXPECT_FALSE(redAt(0.3f)) << "masked: the opaque half still hides it";
+}
+
 } // namespace mesh_renderer_gltest

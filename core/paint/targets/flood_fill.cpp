@@ -402,49 +402,6 @@ std::vector<PaintElement> vertexColorFill(const VertexColorTarget& target,
 
 } // namespace
 
-std::optional<glm::vec3> surfacePointAt(const Mesh& mesh, const View& view, std::uint32_t triangle,
-                                        glm::vec2 position) {
-    if (triangle >= mesh.triangleCount())
-        return std::nullopt;
-    // The ray through position in view space, and the triangle there (in double: a far or
-    // grazing triangle would lose its barycentrics in float).
-    const glm::dmat4 invProj = glm::inverse(glm::dmat4(view.proj));
-    const glm::dvec2 ndc(double(position.x) / view.width * 2.0 - 1.0,
-                         1.0 - double(position.y) / view.height * 2.0);
-    const glm::dvec4 a4 = invProj * glm::dvec4(ndc, -1.0, 1.0);
-    const glm::dvec4 b4 = invProj * glm::dvec4(ndc, 1.0, 1.0);
-    const glm::dvec3 origin = glm::dvec3(a4) / a4.w;
-    const glm::dvec3 direction = glm::dvec3(b4) / b4.w - origin;
-    const glm::dmat4 toView(view.view);
-    glm::dvec3 p[3];
-    for (int c = 0; c < 3; ++c)
-        p[c] = glm::dvec3(toView *
-                          glm::dvec4(glm::dvec3(mesh.positions[vertexOf(mesh, triangle, c)]), 1.0));
-    const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0];
-    const glm::dvec3 normal = glm::cross(e1, e2);
-    const double along = glm::dot(normal, direction);
-    if (!(std::fabs(along) > 0.0) || !std::isfinite(along))
-        return std::nullopt;
-    const glm::dvec3 q = origin + direction * (glm::dot(normal, p[0] - origin) / along) - p[0];
-    const double d00 = glm::dot(e1, e1), d01 = glm::dot(e1, e2), d11 = glm::dot(e2, e2);
-    const double denom = d00 * d11 - d01 * d01;
-    if (!(denom > 0.0))
-        return std::nullopt;
-    const double d20 = glm::dot(q, e1), d21 = glm::dot(q, e2);
-    double b1 = (d11 * d20 - d01 * d21) / denom;
-    double b2 = (d00 * d21 - d01 * d20) / denom;
-    double b0 = 1.0 - b1 - b2;
-    if (!std::isfinite(b0) || !std::isfinite(b1) || !std::isfinite(b2))
-        return std::nullopt;
-    // A pixel centre just outside the triangle (its fragment covers the centre, the position
-    // may not): the nearest point inside, near enough.
-    b0 = std::max(b0, 0.0);
-    b1 = std::max(b1, 0.0);
-    b2 = std::max(b2, 0.0);
-    const double sum = b0 + b1 + b2;
-    return glm::vec3(float(b0 / sum), float(b1 / sum), float(b2 / sum));
-}
-
 Dab regionFillDab(const DepthLayers& layers, std::uint32_t region, float opacity) {
     Dab dab;
     dab.opacity = opacity;

@@ -13,6 +13,7 @@
 #include "core/model/camera.h"
 #include "core/model/mesh.h"
 #include "core/model/mesh_topology.h"
+#include "core/model/surface_point.h"
 #include "core/paint/brush/dab.h"
 #include "core/paint/targets/paint_target.h"
 
@@ -34,14 +35,6 @@ enum class FillMode : std::uint8_t {
 std::optional<FillMode> parseFillMode(std::string_view name);
 /** The mode's name as parseFillMode() reads it. */
 const char* fillModeName(FillMode mode);
-
-/**
- * The barycentric coordinates (clamped into the triangle) of the point of triangle seen at
- * window position (pixels, y down) in view; nullopt for a degenerate triangle, an index out of
- * range, or a ray parallel to it.
- */
-std::optional<glm::vec3> surfacePointAt(const Mesh& mesh, const View& view, std::uint32_t triangle,
-                                        glm::vec2 position);
 
 /**
  * Region fill: a dab whose paintable map is every fragment of region (all of it, hidden part
