@@ -1797,6 +1797,22 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>How metallic the fill layer makes the surface; Off leaves metallic alone</source>
         <translation>Wie metallisch die Füllschicht die Oberfläche macht; Aus lässt Metallisch unverändert</translation>
     </message>
+    <message>
+        <source>Texture set:</source>
+        <translation>Texturset:</translation>
+    </message>
+    <message>
+        <source>Each texture the model paints into, with the materials on it, is a texture set. The thumbnails show the chosen one&apos;s paint; strokes paint every texture set they cross.</source>
+        <translation>Jede Textur, in die das Modell malt, bildet mit ihren Materialien ein Texturset. Die Vorschaubilder zeigen die Farbe des gewählten; Striche bemalen jedes Texturset, das sie kreuzen.</translation>
+    </message>
+    <message>
+        <source>Texture set %1</source>
+        <translation>Texturset %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3)</source>
+        <translation>%1 (%2 × %3)</translation>
+    </message>
 </context>
 <context>
     <name>ui::PaintTargetJob</name>

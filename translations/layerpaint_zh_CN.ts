@@ -1794,6 +1794,22 @@ connectivity %3 ms, regions %4 ms
         <source>How metallic the fill layer makes the surface; Off leaves metallic alone</source>
         <translation>填充层使表面有多金属；关闭则不改变金属度</translation>
     </message>
+    <message>
+        <source>Texture set:</source>
+        <translation>纹理集：</translation>
+    </message>
+    <message>
+        <source>Each texture the model paints into, with the materials on it, is a texture set. The thumbnails show the chosen one&apos;s paint; strokes paint every texture set they cross.</source>
+        <translation>模型绘制的每张纹理及其上的材质构成一个纹理集。缩略图显示所选纹理集的绘制内容；笔画会绘制它经过的每个纹理集。</translation>
+    </message>
+    <message>
+        <source>Texture set %1</source>
+        <translation>纹理集 %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2 × %3)</source>
+        <translation>%1（%2 × %3）</translation>
+    </message>
 </context>
 <context>
     <name>ui::PaintTargetJob</name>

@@ -257,6 +257,49 @@ TEST_F(PaintLayersUiTest, AddPaintMultiplyHideAndUndoEachStep) {
     EXPECT_EQ(undoStack->index(), steps);
 }
 
+TEST_F(PaintLayersUiTest, TheTextureSetBoxChoosesWhichSetsPaintTheThumbnailsShow) {
+    auto* box = panel().findChild<QComboBox*>(QStringLiteral("textureSetBox"));
+    ASSERT_NE(box, nullptr);
+    EXPECT_FALSE(box->isVisibleTo(&panel())) << "one texture set: no box";
+
+    // Two materials with textures of their own: two texture sets, named by their materials.
+    QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+    QSignalSpy built(m_window->depthLayersBuilder(), &ui::DepthLayersBuilder::depthLayersBuilt);
+    m_window->openFile(QStringLiteral(LAYERPAINT_TEST_DATA) +
+                       QStringLiteral("/material/materials.glb"));
+    ASSERT_TRUE(loaded.wait(kLoadTimeoutMs));
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs));
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_NE(texture(), nullptr);
+    ASSERT_EQ(texture()->pageCount(), 2u);
+    EXPECT_TRUE(box->isVisibleTo(&panel()));
+    ASSERT_EQ(box->count(), 2);
+    const core::Mesh& mesh = doc().mesh();
+    for (std::size_t m = 0; m < mesh.materials.size(); ++m)
+        EXPECT_TRUE(box->itemText(int(texture()->materialPage(m)))
+                        .contains(QString::fromStdString(mesh.materials[m].name)))
+            << box->itemText(int(texture()->materialPage(m))).toStdString();
+
+    // A stroke on one quad paints one set; the thumbnail shows it for that set only.
+    const std::optional<QPoint> start = solidPixel();
+    ASSERT_TRUE(start.has_value());
+    const QImage before = thumbnailOf(panel().rowOf(stack().layer(0).id));
+    stroke(*start, {0.1f, 0.9f, 0.2f, 1.0f});
+    const core::TiledPlane* plane = stack().layer(0).channels[0].get();
+    ASSERT_NE(plane, nullptr);
+    const std::uint32_t painted = plane->anyTile(0) ? 0 : 1;
+    ASSERT_TRUE(plane->anyTile(painted));
+    ASSERT_FALSE(plane->anyTile(1 - painted));
+    const auto shown = [&] { return thumbnailOf(panel().rowOf(stack().layer(0).id)); };
+    box->setFocus();
+    while (box->currentIndex() != int(painted))
+        QTest::keyClick(box, box->currentIndex() < int(painted) ? Qt::Key_Down : Qt::Key_Up);
+    EXPECT_NE(shown(), before) << "the painted set's thumbnail shows no paint";
+    QTest::keyClick(box, painted == 0 ? Qt::Key_Down : Qt::Key_Up);
+    EXPECT_EQ(box->currentIndex(), int(1 - painted));
+    EXPECT_EQ(shown(), before) << "the other set's thumbnail shows paint it does not have";
+}
+
 TEST_F(PaintLayersUiTest, AFillLayersValuesAreSetInThePanelOneUndoStepEach) {
     QUndoStack* undoStack = m_window->undoStack();
     auto* roughness = panel().findChild<QSpinBox*>(QStringLiteral("paintLayerFillRoughness"));

@@ -22,7 +22,7 @@ QImage checkerboard(int size) {
     return image;
 }
 
-/** The texel of page 0 under thumbnail pixel (i, j). */
+/** The texel of a page under thumbnail pixel (i, j). */
 QPoint texelOf(const core::PageSize& page, int i, int j, int size) {
     return {std::min(page.width - 1, int((i + 0.5) * page.width / size)),
             std::min(page.height - 1, int((j + 0.5) * page.height / size))};
@@ -38,20 +38,22 @@ void over(QImage& image, int i, int j, QColor color, int alpha) {
                  mix(qBlue(pixel), color.blue()));
 }
 
-/** A plane's written texels over the image: colour from the value bytes, alpha the coverage. */
-void drawPlane(QImage& image, const core::TiledPlane& plane, int size, bool coverage) {
-    if (plane.pages().empty() || !plane.anyTile(0))
+/** A plane's written texels of page p over the image: colour from the value bytes, alpha the
+ * coverage. */
+void drawPlane(QImage& image, const core::TiledPlane& plane, int size, bool coverage,
+               std::uint32_t p) {
+    if (p >= plane.pages().size() || !plane.anyTile(p))
         return;
-    const core::PageSize page = plane.pages()[0];
+    const core::PageSize page = plane.pages()[p];
     const int bytes = plane.texelBytes();
     for (int j = 0; j < size; ++j) {
         for (int i = 0; i < size; ++i) {
             const QPoint t = texelOf(page, i, j, size);
-            const std::uint32_t tile = plane.tileAt(0, t.x(), t.y());
-            const std::uint8_t* texels = plane.tile(0, tile);
+            const std::uint32_t tile = plane.tileAt(p, t.x(), t.y());
+            const std::uint8_t* texels = plane.tile(p, tile);
             if (!texels)
                 continue; // never painted: the fill value
-            const core::TileRect rect = plane.tileRect(0, tile);
+            const core::TileRect rect = plane.tileRect(p, tile);
             const std::uint8_t* texel =
                 texels + (std::size_t(t.y() - rect.y) * std::size_t(rect.width) +
                           std::size_t(t.x() - rect.x)) *
@@ -78,7 +80,7 @@ QColor grey(float value) {
 
 } // namespace
 
-QImage layerThumbnail(const core::PaintLayer& layer, int size) {
+QImage layerThumbnail(const core::PaintLayer& layer, int size, std::uint32_t page) {
     QImage image = checkerboard(size);
     const core::PaintLayerSettings& settings = layer.settings;
     if (settings.kind == core::PaintLayerKind::Fill) {
@@ -94,8 +96,8 @@ QImage layerThumbnail(const core::PaintLayer& layer, int size) {
     }
     // The base colour where it was painted, else the first material channel that was.
     for (const auto& plane : layer.channels) {
-        if (plane && !plane->pages().empty() && plane->anyTile(0)) {
-            drawPlane(image, *plane, size, true);
+        if (plane && page < plane->pages().size() && plane->anyTile(page)) {
+            drawPlane(image, *plane, size, true, page);
             break;
         }
     }
@@ -103,11 +105,11 @@ QImage layerThumbnail(const core::PaintLayer& layer, int size) {
     return image;
 }
 
-QImage baseThumbnail(const core::PaintLayerStack& stack, int size) {
+QImage baseThumbnail(const core::PaintLayerStack& stack, int size, std::uint32_t p) {
     QImage image = checkerboard(size);
-    if (!stack.pages().empty()) {
-        const core::PageSize page = stack.pages()[0];
-        const std::vector<std::uint8_t>& texels = stack.baseColor(0);
+    if (p < stack.pages().size()) {
+        const core::PageSize page = stack.pages()[p];
+        const std::vector<std::uint8_t>& texels = stack.baseColor(p);
         if (page.width > 0 && page.height > 0 &&
             texels.size() >= std::size_t(page.width) * std::size_t(page.height) * 4) {
             for (int j = 0; j < size; ++j) {
@@ -125,10 +127,10 @@ QImage baseThumbnail(const core::PaintLayerStack& stack, int size) {
     return image;
 }
 
-QImage maskThumbnail(const core::TiledPlane& mask, int size, bool selected) {
+QImage maskThumbnail(const core::TiledPlane& mask, int size, bool selected, std::uint32_t page) {
     QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
     image.fill(QColor(mask.fill()[0], mask.fill()[0], mask.fill()[0]));
-    drawPlane(image, mask, size, false);
+    drawPlane(image, mask, size, false, page);
     frame(image, selected ? QPalette().color(QPalette::Highlight) : QColor(128, 128, 128),
           selected ? 3 : 1);
     return image;

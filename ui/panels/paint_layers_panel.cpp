@@ -115,6 +115,7 @@ PaintLayersPanel::PaintLayersPanel(core::Document& document, QWidget* parent)
     m_reason->hide();
     layout->addWidget(m_reason);
 
+    createTextureSetRow(layout);
     createList();
     layout->addWidget(m_list, 1);
     createSettingsControls();
@@ -154,6 +155,60 @@ void PaintLayersPanel::createList() {
                     m_list->editItem(item, NameColumn);
             });
     connect(m_list, &QWidget::customContextMenuRequested, this, &PaintLayersPanel::showContextMenu);
+}
+
+void PaintLayersPanel::createTextureSetRow(QBoxLayout* layout) {
+    m_textureSetRow = new QWidget(this);
+    auto* row = new QHBoxLayout(m_textureSetRow);
+    row->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(tr("Texture set:"), m_textureSetRow);
+    m_textureSet = new QComboBox(m_textureSetRow);
+    m_textureSet->setObjectName(QStringLiteral("textureSetBox"));
+    m_textureSet->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_textureSet->setMinimumContentsLength(12);
+    m_textureSet->setToolTip(tr("Each texture the model paints into, with the materials on it, is "
+                                "a texture set. The thumbnails show the chosen one's paint; "
+                                "strokes paint every texture set they cross."));
+    label->setBuddy(m_textureSet);
+    row->addWidget(label);
+    row->addWidget(m_textureSet, 1);
+    connect(m_textureSet, &QComboBox::currentIndexChanged, this, [this] {
+        if (!m_updating)
+            refresh();
+    });
+    m_textureSetRow->hide();
+    layout->addWidget(m_textureSetRow);
+}
+
+void PaintLayersPanel::updateTextureSets() {
+    const core::PaintLayerTarget* painted = target();
+    const std::size_t pages = painted ? painted->paintLayerStack().pages().size() : 0;
+    QStringList names;
+    for (std::uint32_t p = 0; p < pages; ++p) {
+        QStringList materials;
+        const std::vector<core::Material>& all = m_document.mesh().materials;
+        for (std::size_t m = 0; m < all.size(); ++m)
+            if (painted->materialPage(m) == p && !all[m].name.empty())
+                materials << QString::fromStdString(all[m].name);
+        const core::PageSize size = painted->paintLayerStack().pages()[p];
+        const QString name =
+            materials.isEmpty() ? tr("Texture set %1").arg(p + 1) : materials.join(tr(", "));
+        names << tr("%1 (%2 × %3)").arg(name).arg(size.width).arg(size.height);
+    }
+    QStringList shown;
+    for (int i = 0; i < m_textureSet->count(); ++i)
+        shown << m_textureSet->itemText(i);
+    if (shown != names) {
+        const int keep = m_textureSet->currentIndex();
+        m_textureSet->clear();
+        m_textureSet->addItems(names);
+        m_textureSet->setCurrentIndex(keep >= 0 && keep < names.size() ? keep : 0);
+    }
+    m_textureSetRow->setVisible(names.size() > 1);
+}
+
+std::uint32_t PaintLayersPanel::shownPage() const {
+    return std::uint32_t(std::max(0, m_textureSet->currentIndex()));
 }
 
 void PaintLayersPanel::createSettingsControls() {
@@ -426,6 +481,8 @@ void PaintLayersPanel::refresh() {
     m_reason->setVisible(!reason.isEmpty());
     m_list->setEnabled(reason.isEmpty());
     m_list->clear();
+    updateTextureSets();
+    const std::uint32_t page = shownPage();
 
     const core::PaintLayerTarget* painted = target();
     const core::PaintSelection selection = painted ? painted->selection() : core::PaintSelection{};
@@ -443,7 +500,7 @@ void PaintLayersPanel::refresh() {
                 item->setToolTip(EyeColumn, layer.settings.visible ? tr("Shown: click to hide")
                                                                    : tr("Hidden: click to show"));
                 item->setIcon(ThumbnailColumn,
-                              QIcon(QPixmap::fromImage(layerThumbnail(layer, kThumbnail))));
+                              QIcon(QPixmap::fromImage(layerThumbnail(layer, kThumbnail, page))));
                 QString name = QString::fromStdString(layer.settings.name);
                 item->setText(NameColumn, name);
                 QStringList notes;
@@ -459,7 +516,7 @@ void PaintLayersPanel::refresh() {
                 if (layer.mask) {
                     const bool maskSelected = selection == core::PaintSelection{layer.id, true};
                     item->setIcon(MaskColumn, QIcon(QPixmap::fromImage(maskThumbnail(
-                                                  *layer.mask, kThumbnail, maskSelected))));
+                                                  *layer.mask, kThumbnail, maskSelected, page))));
                     item->setToolTip(MaskColumn, maskSelected
                                                      ? tr("Painting the mask (black hides, white "
                                                           "shows)")
@@ -474,9 +531,8 @@ void PaintLayersPanel::refresh() {
         base->setToolTip(NameColumn, tr("The model's own surface (painting here changes it "
                                         "directly)"));
         if (painted)
-            base->setIcon(
-                ThumbnailColumn,
-                QIcon(QPixmap::fromImage(baseThumbnail(painted->paintLayerStack(), kThumbnail))));
+            base->setIcon(ThumbnailColumn, QIcon(QPixmap::fromImage(baseThumbnail(
+                                               painted->paintLayerStack(), kThumbnail, page))));
         if (QTreeWidgetItem* current = rowOf(selection.layer))
             m_list->setCurrentItem(current);
     }

@@ -10,6 +10,7 @@
 
 class QAction;
 class QCheckBox;
+class QBoxLayout;
 class QComboBox;
 class QFormLayout;
 class QGridLayout;
@@ -80,6 +81,12 @@ private:
     void createActions();
     /** The rows: eye, thumbnail, name and mask of every paint layer, Base last. */
     void createList();
+    /** The texture set box above the list (shown for more than one texture set). */
+    void createTextureSetRow(QBoxLayout* layout);
+    /** Fills the texture set box from the target's pages, keeping the one shown. */
+    void updateTextureSets();
+    /** The page (texture set) whose paint the thumbnails show. */
+    std::uint32_t shownPage() const;
     /** The current layer's settings below the list (m_controls, laid out by m_form). */
     void createSettingsControls();
     void addOpacityRow();
@@ -111,6 +118,8 @@ private:
     core::Document& m_document;
     QLabel* m_reason = nullptr;
     QTreeWidget* m_list = nullptr;
+    QWidget* m_textureSetRow = nullptr;
+    QComboBox* m_textureSet = nullptr;
     QWidget* m_controls = nullptr;
     QSlider* m_opacity = nullptr;
     QLabel* m_opacityText = nullptr;

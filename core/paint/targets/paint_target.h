@@ -120,6 +120,8 @@ public:
      * texel rectangles that changed, for the GPU copy.
      */
     virtual PaintChanges refresh(std::vector<TileKey> tiles) = 0;
+    /** The page (texture set) material m is painted into. */
+    virtual std::uint32_t materialPage(std::size_t m) const = 0;
 
 protected:
     ~PaintLayerTarget() = default;
@@ -322,7 +324,7 @@ public:
     /** The page triangle t is painted on. */
     std::uint32_t trianglePage(std::size_t t) const;
     /** The page material m is painted on (m below the mesh's material count). */
-    std::uint32_t materialPage(std::size_t m) const { return m_materialPage[m]; }
+    std::uint32_t materialPage(std::size_t m) const override { return m_materialPage[m]; }
     int padding() const { return m_padding; }
 
     std::size_t tileBytes(TileKey key) const override;
