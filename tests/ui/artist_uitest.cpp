@@ -44,6 +44,7 @@
 #include "ui/panels/color_panel.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/preferences.h"
+#include "ui/shell/project_controller.h"
 #include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
@@ -590,6 +591,28 @@ TEST_F(ArtistTest, PreferencesRoundTrip) {
     EXPECT_FLOAT_EQ(m_window->pressureCurve().gamma, 2.0f);
     ui::PreferencesDialog again(m_window->preferences());
     EXPECT_EQ(again.preferences(), m_window->preferences());
+}
+
+TEST_F(ArtistTest, AChangedAutosaveIntervalAppliesAtOnce) {
+    ui::ProjectController& project = *m_window->projectController();
+    EXPECT_GT(project.autosaveDueInMs(), 4 * 60'000) << "the default interval is 5 minutes";
+    action("actionPreferences")->trigger();
+    QPointer<ui::PreferencesDialog> dialog = m_window->findChild<ui::PreferencesDialog*>();
+    ASSERT_NE(dialog, nullptr);
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(dialog));
+    auto* minutes = dialog->findChild<QSpinBox*>(QStringLiteral("autosaveMinutes"));
+    ASSERT_NE(minutes, nullptr);
+    minutes->setFocus();
+    minutes->selectAll();
+    QTest::keyClicks(minutes, QStringLiteral("1"));
+    QTest::mouseClick(dialog->findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok),
+                      Qt::LeftButton);
+    EXPECT_TRUE(QTest::qWaitFor([&] { return dialog.isNull(); }, 5000)) << "dialog not closed";
+    EXPECT_EQ(QSettings().value(QStringLiteral("autosave/intervalMinutes")).toInt(), 1);
+    // A coarse timer may wake up to 5 % late.
+    EXPECT_LE(project.autosaveDueInMs(), 63'000)
+        << "the next autosave still waits the old interval";
+    EXPECT_GT(project.autosaveDueInMs(), 50'000);
 }
 
 TEST_F(ArtistTest, AltBasedMappingLeavesTheMiddleButtonAlone) {

@@ -514,8 +514,9 @@ void MainWindow::setPreferences(const Preferences& preferences) {
     m_document->history().setBudget(std::size_t(preferences.undoBudgetMiB) << 20);
     setPressureCurve(core::PressureCurve{preferences.pressureGamma});
     m_viewport->setCameraMapping(preferences.cameraMapping);
+    m_project->reloadAutosaveInterval();
     // The texture size is the default for the next model; the open one keeps its painting.
-    // Language and autosave are read from the settings where they are used.
+    // The language is read from the settings at the next start.
 }
 
 void MainWindow::showPreferences() {

@@ -124,8 +124,13 @@ public:
     QString autosavePath() const;
     /** Writes an autosave now if the document changed since the last one; false if not started. */
     bool autosaveNow();
-    /** Reads "autosave/intervalMinutes" again (the Preferences dialog changed it). */
+    /**
+     * Reads "autosave/intervalMinutes" again (the Preferences dialog changed it); a changed
+     * interval applies at once, counted from now.
+     */
     void reloadAutosaveInterval();
+    /** Milliseconds until the autosave timer next fires. */
+    int autosaveDueInMs() const { return m_autosaveTimer.remainingTime(); }
     /**
      * At startup: offers the newest autosave a crashed session left (Recover / Discard / Not
      * Now). Recover opens it as the (modified) document. True if a recovery is loading.
