@@ -1774,14 +1774,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>Farbe der Füllschicht</translation>
     </message>
     <message>
-        <source> %</source>
-        <translation> %</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>Aus</translation>
-    </message>
-    <message>
         <source>&amp;Roughness</source>
         <translation>&amp;Rauheit</translation>
     </message>
@@ -2596,6 +2588,13 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     <message>
         <source>Radial</source>
         <translation>Radial</translation>
+    </message>
+</context>
+<context>
+    <name>ui::UnitSpinBox</name>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
     </message>
 </context>
 <context>

@@ -1771,14 +1771,6 @@ connectivity %3 ms, regions %4 ms
         <translation>填充层颜色</translation>
     </message>
     <message>
-        <source> %</source>
-        <translation> %</translation>
-    </message>
-    <message>
-        <source>Off</source>
-        <translation>关闭</translation>
-    </message>
-    <message>
         <source>&amp;Roughness</source>
         <translation>粗糙度(&amp;R)</translation>
     </message>
@@ -2588,6 +2580,13 @@ Smaller splits the view into more regions.</source>
     <message>
         <source>Radial</source>
         <translation>径向</translation>
+    </message>
+</context>
+<context>
+    <name>ui::UnitSpinBox</name>
+    <message>
+        <source>Off</source>
+        <translation>关闭</translation>
     </message>
 </context>
 <context>

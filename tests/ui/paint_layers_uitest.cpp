@@ -13,6 +13,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QDrag>
 #include <QFileDialog>
 #include <QImage>
@@ -302,8 +303,8 @@ TEST_F(PaintLayersUiTest, TheTextureSetBoxChoosesWhichSetsPaintTheThumbnailsShow
 
 TEST_F(PaintLayersUiTest, AFillLayersValuesAreSetInThePanelOneUndoStepEach) {
     QUndoStack* undoStack = m_window->undoStack();
-    auto* roughness = panel().findChild<QSpinBox*>(QStringLiteral("paintLayerFillRoughness"));
-    auto* metallic = panel().findChild<QSpinBox*>(QStringLiteral("paintLayerFillMetallic"));
+    auto* roughness = panel().findChild<QDoubleSpinBox*>(QStringLiteral("paintLayerFillRoughness"));
+    auto* metallic = panel().findChild<QDoubleSpinBox*>(QStringLiteral("paintLayerFillMetallic"));
     auto* colorButton = panel().findChild<QToolButton*>(QStringLiteral("paintLayerFillColor"));
     ASSERT_TRUE(roughness && metallic && colorButton);
     // A paint layer has no fill values: the rows are hidden.
@@ -334,14 +335,22 @@ TEST_F(PaintLayersUiTest, AFillLayersValuesAreSetInThePanelOneUndoStepEach) {
     const std::vector<std::uint8_t> mrBefore = texture()->metallicRoughnessPage(0).rgba;
     const std::vector<std::uint8_t> colorBefore = composite();
 
-    // Roughness 40 %, typed: one undo step, the composite's roughness changes.
+    // Roughness 0.4 (0..1, as the Brush panel and glTF give it), typed: one undo step, the
+    // composite's roughness changes.
     QTest::mouseDClick(roughness, Qt::LeftButton);
     QTest::keyClick(roughness, Qt::Key_A, Qt::ControlModifier);
-    QTest::keyClicks(roughness, QStringLiteral("40"));
+    QTest::keyClicks(roughness, QStringLiteral("0.4"));
     QTest::keyClick(roughness, Qt::Key_Return);
     ASSERT_TRUE(stack().layer(1).settings.fill.roughness.has_value());
     EXPECT_FLOAT_EQ(*stack().layer(1).settings.fill.roughness, 0.4f);
     EXPECT_FALSE(stack().layer(1).settings.fill.metallic.has_value());
+    EXPECT_EQ(undoStack->count(), steps + 1);
+    // A value typed as a percentage is read as one: 40 is 0.40 (no change, no step).
+    QTest::keyClick(roughness, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(roughness, QStringLiteral("40"));
+    QTest::keyClick(roughness, Qt::Key_Return);
+    EXPECT_FLOAT_EQ(*stack().layer(1).settings.fill.roughness, 0.4f);
+    EXPECT_EQ(roughness->text(), roughness->textFromValue(0.4));
     EXPECT_EQ(undoStack->count(), steps + 1);
     const std::vector<std::uint8_t> mrRough = texture()->metallicRoughnessPage(0).rgba;
     EXPECT_NE(mrRough, mrBefore);

@@ -139,12 +139,7 @@ void BrushPanel::addChannelRows() {
         box = new QCheckBox(text, this);
         box->setObjectName(name);
         box->setToolTip(tip);
-        value = new QDoubleSpinBox(this);
-        value->setObjectName(name + QStringLiteral("Value"));
-        value->setRange(0.0, 1.0);
-        value->setSingleStep(0.05);
-        value->setDecimals(2);
-        value->setToolTip(tip);
+        value = new UnitSpinBox(this, name + QStringLiteral("Value"), tip, false);
         m_form->addRow(box, value);
         connect(box, &QCheckBox::toggled, this, &BrushPanel::readBrush);
         connect(value, &QDoubleSpinBox::valueChanged, this, &BrushPanel::readBrush);

@@ -326,16 +326,14 @@ void PaintLayersPanel::addFillColorRow() {
 void PaintLayersPanel::addFillChannelRows() {
     const auto channelSpin = [this](const char* name, const QString& label, const QString& tip,
                                     auto set) {
-        QSpinBox* spin =
-            makeValueSpinBox(m_controls, QString::fromLatin1(name), -1, 100, tr(" %"), tip);
-        spin->setSpecialValueText(tr("Off"));
+        auto* spin = new UnitSpinBox(m_controls, QString::fromLatin1(name), tip, true);
         m_form->addRow(label, spin);
-        connect(spin, &QSpinBox::valueChanged, this, [this, set](int value) {
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, set](double value) {
             if (m_updating)
                 return;
             editSettings(selectedPaintLayer(), [value, set](core::PaintLayerSettings& settings) {
-                set(settings.fill, value < 0 ? std::optional<float>()
-                                             : std::optional<float>(float(value) / 100.0f));
+                set(settings.fill,
+                    value < 0.0 ? std::optional<float>() : std::optional<float>(float(value)));
             });
         });
         return spin;
@@ -574,11 +572,11 @@ void PaintLayersPanel::updateControls() {
     QPixmap swatch(m_fillColor->iconSize());
     swatch.fill(m_fillColorValue);
     m_fillColor->setIcon(QIcon(swatch));
-    const auto percent = [](const std::optional<float>& v) {
-        return v ? int(std::lround(std::clamp(*v, 0.0f, 1.0f) * 100.0f)) : -1;
+    const auto unit = [](const std::optional<float>& v) {
+        return v ? double(std::clamp(*v, 0.0f, 1.0f)) : -1.0;
     };
-    m_fillRoughness->setValue(percent(settings.fill.roughness));
-    m_fillMetallic->setValue(percent(settings.fill.metallic));
+    m_fillRoughness->setValue(unit(settings.fill.roughness));
+    m_fillMetallic->setValue(unit(settings.fill.metallic));
 
     m_newLayer->setEnabled(enabled);
     m_newFill->setEnabled(enabled);

@@ -17,6 +17,7 @@ class QGridLayout;
 class QHBoxLayout;
 class QLabel;
 class QSlider;
+class QDoubleSpinBox;
 class QSpinBox;
 class QToolButton;
 class QTreeWidget;
@@ -131,8 +132,8 @@ private:
     QCheckBox* m_fillColorOn = nullptr;
     QToolButton* m_fillColor = nullptr;
     QColor m_fillColorValue{Qt::white};
-    QSpinBox* m_fillRoughness = nullptr;
-    QSpinBox* m_fillMetallic = nullptr;
+    QDoubleSpinBox* m_fillRoughness = nullptr;
+    QDoubleSpinBox* m_fillMetallic = nullptr;
     QAction* m_newLayer = nullptr;
     QAction* m_newFill = nullptr;
     QAction* m_duplicate = nullptr;
