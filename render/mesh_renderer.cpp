@@ -34,8 +34,9 @@ struct MaterialRun {
 };
 
 /**
- * A program variant: the channel shown, whether the material has metallic-roughness, and the
- * SurfaceFeature bits of its maps (only in the lit Material channel).
+ * A program variant: the channel shown, whether the material has metallic-roughness, whether it
+ * is alpha-masked (every channel), and the SurfaceFeature bits of its maps (only in the lit
+ * Material channel).
  */
 unsigned variantKey(MaterialChannel channel, bool material, bool alphaMask, unsigned surface) {
     return unsigned(channel) | (material ? 4u : 0u) | (alphaMask ? 8u : 0u) | surface << 4;

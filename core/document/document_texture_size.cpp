@@ -25,7 +25,7 @@ struct Taps {
     double weight[4];
 };
 
-/** The taps of texel (x, y) of a to × ... image sampled from a from-sized one. */
+/** The taps of texel (x, y) of an image of size to, sampled from one of size from. */
 Taps tapsFor(int x, int y, PageSize from, PageSize to) {
     const double fx = (x + 0.5) * double(from.width) / to.width - 0.5;
     const double fy = (y + 0.5) * double(from.height) / to.height - 0.5;
