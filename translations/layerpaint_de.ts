@@ -1508,6 +1508,26 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>The texture is %1 now (Undo brings the previous size back)</source>
         <translation>Die Textur ist jetzt %1 (Rückgängig stellt die vorige Größe wieder her)</translation>
     </message>
+    <message>
+        <source>A Fill Layer Takes No Strokes</source>
+        <translation>Eine Füllschicht nimmt keine Striche an</translation>
+    </message>
+    <message>
+        <source>“%1” is a fill layer: its values are the same everywhere. Paint its mask to shape where it shows, or paint on a paint layer above it.</source>
+        <translation>„%1“ ist eine Füllschicht: Ihre Werte sind überall gleich. Malen Sie ihre Maske, um zu formen, wo sie sichtbar ist, oder malen Sie auf einer Malschicht darüber.</translation>
+    </message>
+    <message>
+        <source>Paint Its Mask</source>
+        <translation>Ihre Maske malen</translation>
+    </message>
+    <message>
+        <source>Add a Mask and Paint It</source>
+        <translation>Maske hinzufügen und malen</translation>
+    </message>
+    <message>
+        <source>Add a Paint Layer Above</source>
+        <translation>Malschicht darüber hinzufügen</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

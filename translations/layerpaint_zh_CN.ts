@@ -1506,6 +1506,26 @@ connectivity %3 ms, regions %4 ms
         <source>The texture is %1 now (Undo brings the previous size back)</source>
         <translation>纹理现在为 %1（撤销可恢复之前的尺寸）</translation>
     </message>
+    <message>
+        <source>A Fill Layer Takes No Strokes</source>
+        <translation>填充层不接受笔画</translation>
+    </message>
+    <message>
+        <source>“%1” is a fill layer: its values are the same everywhere. Paint its mask to shape where it shows, or paint on a paint layer above it.</source>
+        <translation>“%1”是填充层：其数值处处相同。绘制它的遮罩来决定它显示的位置，或在它上方的绘画层上绘制。</translation>
+    </message>
+    <message>
+        <source>Paint Its Mask</source>
+        <translation>绘制其遮罩</translation>
+    </message>
+    <message>
+        <source>Add a Mask and Paint It</source>
+        <translation>添加遮罩并绘制</translation>
+    </message>
+    <message>
+        <source>Add a Paint Layer Above</source>
+        <translation>在上方添加绘画层</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/base/text.h"
 #include "core/depth/connectivity.h"
 
 namespace core {
@@ -417,6 +418,11 @@ void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
 Result<PaintTarget*> Document::readyToPaint() {
     if (!m_depthLayers)
         return Error{"the layers of this view are not built yet"};
+    if (const PaintLayer* fill = selectedFillLayer())
+        return Error{"\"" + printable(fill->settings.name) +
+                         "\" is a fill layer, the same everywhere: paint its mask to shape it, or "
+                         "a paint layer",
+                     ErrorKind::BadInput};
     Result<PaintTarget*> target = ensurePaintTarget();
     if (target && m_tracker.inStroke())
         endStroke();

@@ -363,6 +363,11 @@ public:
     Status flattenPaintLayers(std::string name, PaintChanges& changes);
     /** Gives layer id a mask (all showing) and selects the mask. */
     Status addPaintLayerMask(std::uint64_t id, PaintChanges& changes);
+    /**
+     * The fill layer painting would go into (selected, its mask not), or nullptr: its values are
+     * uniform, so strokes and fills refuse it with a reason (paint its mask, or a paint layer).
+     */
+    const PaintLayer* selectedFillLayer() const;
     /** Removes the mask of layer id. */
     Status deletePaintLayerMask(std::uint64_t id, PaintChanges& changes);
     /**
@@ -399,7 +404,7 @@ private:
     void applyStep(HistoryStep& step, bool undo, PaintChanges& changes);
     /**
      * What painting (a stroke, a fill) needs: built layers and the paint target (made on first
-     * use); a stroke in progress is ended.
+     * use), and somewhere paint can go (not a fill layer); a stroke in progress is ended.
      */
     Result<PaintTarget*> readyToPaint();
     /**

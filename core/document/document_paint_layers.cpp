@@ -66,6 +66,16 @@ Status roomForPaintLayer(std::size_t layers) {
 
 } // namespace
 
+const PaintLayer* Document::selectedFillLayer() const {
+    const PaintLayerTarget* target = m_paintTarget ? m_paintTarget->paintLayers() : nullptr;
+    if (!target || target->selection().mask)
+        return nullptr;
+    const PaintLayerStack& stack = target->paintLayerStack();
+    const std::optional<std::size_t> index = stack.indexOf(target->selection().layer);
+    return index && stack.layer(*index).settings.kind == PaintLayerKind::Fill ? &stack.layer(*index)
+                                                                              : nullptr;
+}
+
 Result<PaintLayerTarget*> Document::paintLayerTarget() {
     Result<PaintTarget*> target = ensurePaintTarget();
     if (!target)

@@ -18,10 +18,13 @@
 #include <QFileDialog>
 #include <QImage>
 #include <QLineEdit>
+#include <QMessageBox>
 #include <QProcess>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -126,6 +129,13 @@ protected:
                                     std::size_t(plane->texelBytes()));
         }
         return out;
+    }
+    /** The panel's New Fill Layer button. */
+    QToolButton* fillButton() {
+        for (QToolButton* button : panel().findChildren<QToolButton*>())
+            if (button->defaultAction() == panel().newFillLayerAction())
+                return button;
+        return nullptr;
     }
     QImage thumbnailOf(QTreeWidgetItem* item) {
         return item->icon(Panel::ThumbnailColumn).pixmap(32, 32).toImage();
@@ -299,6 +309,48 @@ TEST_F(PaintLayersUiTest, TheTextureSetBoxChoosesWhichSetsPaintTheThumbnailsShow
     QTest::keyClick(box, painted == 0 ? Qt::Key_Down : Qt::Key_Up);
     EXPECT_EQ(box->currentIndex(), int(1 - painted));
     EXPECT_EQ(shown(), before) << "the other set's thumbnail shows paint it does not have";
+}
+
+TEST_F(PaintLayersUiTest, AStrokeOnAFillLayerSaysWhyAndOffersItsMaskOrAPaintLayer) {
+    QTest::mouseClick(fillButton(), Qt::LeftButton);
+    ASSERT_EQ(stack().size(), 1u);
+    const std::uint64_t fill = stack().layer(0).id;
+    ASSERT_EQ(stack().layer(0).settings.kind, core::PaintLayerKind::Fill);
+    QUndoStack* undoStack = m_window->undoStack();
+    const int steps = undoStack->count();
+    const std::optional<QPoint> start = solidPixel();
+    ASSERT_TRUE(start.has_value());
+
+    // The stroke paints nothing and makes no step, but says why and offers a way on.
+    stroke(*start, {0.9f, 0.1f, 0.1f, 1.0f});
+    EXPECT_EQ(undoStack->count(), steps);
+    EXPECT_TRUE(m_window->statusBar()->currentMessage().contains(QStringLiteral("fill layer")))
+        << m_window->statusBar()->currentMessage().toStdString();
+    QMessageBox* offer = nullptr;
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        offer = m_window->findChild<QMessageBox*>(QStringLiteral("fillLayerOffer"));
+        return offer != nullptr && offer->isVisible();
+    }));
+    auto* above = offer->findChild<QPushButton*>(QStringLiteral("fillLayerOfferPaintLayer"));
+    ASSERT_NE(above, nullptr);
+    QTest::mouseClick(above, Qt::LeftButton);
+    ASSERT_EQ(stack().size(), 2u);
+    EXPECT_EQ(stack().layer(0).id, fill);
+    EXPECT_EQ(texture()->selection(), (core::PaintSelection{stack().layer(1).id, false}));
+    stroke(*start, {0.9f, 0.1f, 0.1f, 1.0f});
+    EXPECT_FALSE(layerColorBytes(1).empty()) << "the paint layer above was not painted";
+
+    // Back on the fill layer, the other choice: a mask, made and selected.
+    ASSERT_TRUE(doc().selectPaint({fill, false}).ok());
+    stroke(*start, {0.9f, 0.1f, 0.1f, 1.0f});
+    ASSERT_TRUE(QTest::qWaitFor([&] {
+        offer = m_window->findChild<QMessageBox*>(QStringLiteral("fillLayerOffer"));
+        return offer != nullptr && offer->isVisible();
+    }));
+    QTest::mouseClick(offer->findChild<QPushButton*>(QStringLiteral("fillLayerOfferMask")),
+                      Qt::LeftButton);
+    ASSERT_NE(stack().layer(0).mask, nullptr);
+    EXPECT_EQ(texture()->selection(), (core::PaintSelection{fill, true}));
 }
 
 TEST_F(PaintLayersUiTest, AFillLayersValuesAreSetInThePanelOneUndoStepEach) {

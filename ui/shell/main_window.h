@@ -271,6 +271,11 @@ private:
     bool preparePainting();
     /** Brush and eraser: starts a stroke (builds the layers first if they are missing). */
     void beginPaintStroke(QPointF pixel, qreal pressure, bool eraser);
+    /**
+     * A stroke went to a fill layer, which takes none: offers what was likely meant, painting its
+     * mask or a paint layer above it.
+     */
+    void offerPaintableTarget();
     /** Shift+click with the brush or eraser: a straight line on from the last stroke. */
     void paintLine(QPointF pixel, qreal pressure, bool eraser);
     /** Paint ▸ Stroke Stabilizer: the brush's stabilizer on or off. */

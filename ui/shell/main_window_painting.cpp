@@ -11,6 +11,8 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
@@ -173,6 +175,8 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
         m_regionTools->endStroke();
         statusBar()->showMessage(tr("Cannot paint: %1").arg(QString::fromStdString(status.error())),
                                  kStatusMessageMs);
+        if (m_document->selectedFillLayer())
+            offerPaintableTarget();
         return;
     }
     m_painting = true;
@@ -182,6 +186,41 @@ void MainWindow::beginPaintStroke(QPointF pixel, qreal pressure, bool eraser) {
     m_viewport->applyPaintChanges(changes);
     m_viewport->brushMapsChanged();
     m_strokeStats.pressMs = elapsedMs(clock);
+}
+
+void MainWindow::offerPaintableTarget() {
+    const core::PaintLayer* fill = m_document->selectedFillLayer();
+    const auto* shown = findChild<QMessageBox*>(QStringLiteral("fillLayerOffer"));
+    if (!fill || (shown && shown->isVisible()))
+        return;
+    const std::uint64_t id = fill->id;
+    const bool hasMask = fill->mask != nullptr;
+    auto* box = new QMessageBox(QMessageBox::Information, tr("A Fill Layer Takes No Strokes"),
+                                tr("“%1” is a fill layer: its values are the same everywhere. "
+                                   "Paint its mask to shape where it shows, or paint on a paint "
+                                   "layer above it.")
+                                    .arg(QString::fromStdString(fill->settings.name)),
+                                QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("fillLayerOffer"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton* mask = box->addButton(
+        hasMask ? tr("Paint Its Mask") : tr("Add a Mask and Paint It"), QMessageBox::AcceptRole);
+    mask->setObjectName(QStringLiteral("fillLayerOfferMask"));
+    QPushButton* above = box->addButton(tr("Add a Paint Layer Above"), QMessageBox::AcceptRole);
+    above->setObjectName(QStringLiteral("fillLayerOfferPaintLayer"));
+    box->setDefaultButton(mask);
+    connect(box, &QMessageBox::buttonClicked, this,
+            [this, mask, above, id, hasMask](QAbstractButton* clicked) {
+                if (clicked == mask && hasMask) {
+                    m_document->selectPaint({id, true});
+                    m_paintLayersPanel->refresh();
+                } else if (clicked == mask) {
+                    m_paintLayersPanel->addMaskAction()->trigger();
+                } else if (clicked == above) {
+                    m_paintLayersPanel->newLayerAction()->trigger();
+                }
+            });
+    box->open();
 }
 
 void MainWindow::paintLine(QPointF pixel, qreal pressure, bool eraser) {
