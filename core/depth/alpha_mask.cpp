@@ -2,39 +2,13 @@
 #include "core/depth/alpha_mask.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include <glm/vec2.hpp>
 
+#include "core/model/image_sample.h"
 #include "core/model/surface_point.h"
 
 namespace core {
-
-namespace {
-
-/** Texel (x, y) of image, repeating, as alpha in 0..1. */
-float alphaAt(const Image& image, int x, int y) {
-    x = ((x % image.width) + image.width) % image.width;
-    y = ((y % image.height) + image.height) % image.height;
-    return float(image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4 + 3]) /
-           255.0f;
-}
-
-/** The texture's alpha at uv, bilinear between texel centres, repeating. */
-float sampleAlpha(const Image& image, glm::vec2 uv) {
-    const float fx = uv.x * float(image.width) - 0.5f, fy = uv.y * float(image.height) - 0.5f;
-    if (!std::isfinite(fx) || !std::isfinite(fy))
-        return 1.0f;
-    const float x0 = std::floor(fx), y0 = std::floor(fy);
-    const float tx = fx - x0, ty = fy - y0;
-    const auto x = int(std::fmod(x0, float(image.width))),
-               y = int(std::fmod(y0, float(image.height)));
-    const float top = alphaAt(image, x, y) * (1 - tx) + alphaAt(image, x + 1, y) * tx;
-    const float bottom = alphaAt(image, x, y + 1) * (1 - tx) + alphaAt(image, x + 1, y + 1) * tx;
-    return top * (1 - ty) + bottom * ty;
-}
-
-} // namespace
 
 bool hasAlphaMask(const Mesh& mesh) {
     return std::any_of(mesh.materials.begin(), mesh.materials.end(),
@@ -51,7 +25,7 @@ float surfaceAlpha(const Mesh& mesh, std::uint32_t t, const glm::vec3& b) {
     if (texture >= 0 && std::size_t(texture) < mesh.textures.size() && mesh.hasUvs() &&
         !mesh.textures[std::size_t(texture)].empty()) {
         const glm::vec2 uv = b.x * mesh.uvs[v[0]] + b.y * mesh.uvs[v[1]] + b.z * mesh.uvs[v[2]];
-        alpha *= sampleAlpha(mesh.textures[std::size_t(texture)], uv);
+        alpha *= sampleChannel(mesh.textures[std::size_t(texture)], uv, 3);
     }
     return alpha;
 }

@@ -7,6 +7,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/model/image_sample.h"
 #include "core/paint/targets/paint_context.h"
 #include "core/paint/targets/uv_raster.h"
 
@@ -14,27 +15,6 @@ namespace core {
 
 // A namespace of its own: the unity build compiles this file with others.
 namespace starting_mr {
-
-/** A channel of image at uv (bilinear, repeating), 0..1; the values are linear. */
-float sampleChannel(const Image& image, glm::vec2 uv, int channel) {
-    const double x = double(uv.x) * image.width - 0.5, y = double(uv.y) * image.height - 0.5;
-    if (!std::isfinite(x) || !std::isfinite(y))
-        return 0.0f;
-    const double fx = std::floor(x), fy = std::floor(y);
-    const float ax = float(x - fx), ay = float(y - fy);
-    const auto wrap = [](double i, int size) {
-        const double m = std::fmod(i, double(size));
-        return std::size_t(m < 0 ? m + size : m);
-    };
-    const std::size_t x0 = wrap(fx, image.width), x1 = wrap(fx + 1, image.width);
-    const std::size_t y0 = wrap(fy, image.height), y1 = wrap(fy + 1, image.height);
-    const auto at = [&](std::size_t tx, std::size_t ty) {
-        return float(image.rgba[(ty * std::size_t(image.width) + tx) * 4 + std::size_t(channel)]);
-    };
-    const float top = at(x0, y0) * (1.0f - ax) + at(x1, y0) * ax;
-    const float bottom = at(x0, y1) * (1.0f - ax) + at(x1, y1) * ax;
-    return (top * (1.0f - ay) + bottom * ay) / 255.0f;
-}
 
 std::uint8_t unitByte(float v) {
     return std::uint8_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
