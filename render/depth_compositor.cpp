@@ -43,6 +43,7 @@ constexpr std::pair<Variant, const char*> kDefines[] = {
     {kOcclusionMap, "OCCLUSION_MAP"},
     {kEmissive, "EMISSIVE"},
     {kEmissiveMap, "EMISSIVE_MAP"},
+    {kBlend, "BLEND"},
 };
 
 /** composite.vert + composite.frag, or composite_shade.comp, with the variant's defines. */
@@ -208,6 +209,8 @@ struct DepthCompositor::Impl::DrawPass {
                             (d.hasUvs && d.hasTangents ? kWithTangents : 0u);
         if (d.hasMesh && d.hasColors)
             shadeVariant |= kWithColors;
+        if (d.hasMesh && d.hasBlend)
+            shadeVariant |= kBlend;
         if (options.display == DepthLayerDisplay::SingleLayer)
             resolveVariant |= kSingleLayer;
         if (options.boundaries)
@@ -223,11 +226,14 @@ struct DepthCompositor::Impl::DrawPass {
         if (options.highlightRegion != core::kNone)
             composeVariant |= kHighlight;
         layer = options.display == DepthLayerDisplay::SingleLayer ? options.layer : 0;
-        transparent =
-            options.popUpOpacity < 1.0f && options.display != DepthLayerDisplay::SingleLayer;
+        const bool singleLayer = options.display == DepthLayerDisplay::SingleLayer;
+        // Blending materials show what lies behind in the lit view, as glTF viewers draw them.
+        const bool blend = (shadeVariant & kBlend) && !segmentation && !singleLayer &&
+                           options.channel == MaterialChannel::Material;
+        transparent = (options.popUpOpacity < 1.0f && !singleLayer) || blend;
         if (transparent) {
-            resolveVariant |= kTransparency;
-            composeVariant |= kTransparency;
+            resolveVariant |= kTransparency | (blend ? kBlend : 0u);
+            composeVariant |= kTransparency | (blend ? kBlend : 0u);
         }
         shade = d.shadedVersion != d.geometryVersion;
         resolve = d.resolvedVersion != d.version || d.resolvedVariant != resolveVariant ||
@@ -353,7 +359,8 @@ struct DepthCompositor::Impl::DrawPass {
         glDisable(GL_BLEND);
         glDisable(GL_CULL_FACE);
         glDisable(GL_STENCIL_TEST);
-        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        // The target's alpha stays as the background and the fragments under left it.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
         glVertexArrayVertexBuffer(d.vao, 0, d.buffers[kTiles].id, 0, sizeof(std::uint32_t));
         glBindVertexArray(d.vao);
     }

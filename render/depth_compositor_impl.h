@@ -86,6 +86,7 @@ enum Variant : unsigned {
     kOcclusionMap = kSurfaceOcclusionMap << kSurfaceShift,
     kEmissive = kSurfaceEmissive << kSurfaceShift,
     kEmissiveMap = kSurfaceEmissiveMap << kSurfaceShift,
+    kBlend = 1u << 21, // a material blends (alphaMode BLEND) and the lit view shows it
 };
 
 /** composite.frag's Material (std430). */
@@ -94,7 +95,7 @@ struct GpuMaterial {
     std::int32_t texturePass; // -1 for none
     std::int32_t textureWidth;
     std::int32_t textureHeight;
-    std::int32_t pad;
+    std::int32_t blend; // 1: alphaMode BLEND
 };
 
 /** A shader storage buffer of the compositor: 16-byte elements, room to grow on request. */
@@ -175,6 +176,7 @@ struct DepthCompositor::Impl {
     std::vector<int> passTexture;      // per pass, the mesh texture it samples
     std::vector<SurfaceMaps> passMaps; // per pass, its maps
     bool hasTangents = false;          // the parts hold tangents
+    bool hasBlend = false;             // a material's alphaMode is BLEND
 
     // Depth layers
     bool hasDepthLayers = false;

@@ -228,7 +228,8 @@ TexturePasses planTexturePasses(const core::Mesh& mesh) {
     for (std::size_t m = 0; m < passes.materials.size(); ++m) {
         const core::Material& material = mesh.materials[m];
         const int texture = material.baseColorTexture;
-        passes.materials[m] = {material.baseColorFactor, -1, 0, 0, 0};
+        const std::int32_t blend = material.alphaMode == core::AlphaMode::Blend ? 1 : 0;
+        passes.materials[m] = {material.baseColorFactor, -1, 0, 0, blend};
         if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
             mesh.textures[std::size_t(texture)].empty())
             continue;
@@ -243,7 +244,7 @@ TexturePasses planTexturePasses(const core::Mesh& mesh) {
             passes.maps.push_back(maps);
         }
         const core::Image& image = mesh.textures[std::size_t(texture)];
-        passes.materials[m] = {material.baseColorFactor, pass, image.width, image.height, 0};
+        passes.materials[m] = {material.baseColorFactor, pass, image.width, image.height, blend};
     }
     return passes;
 }
@@ -417,6 +418,9 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
     const std::vector<std::uint32_t> tangents =
         d.hasUvs && needsTangents(passes) ? octTangents(mesh) : std::vector<std::uint32_t>();
     d.hasTangents = !tangents.empty();
+    d.hasBlend =
+        std::any_of(mesh.materials.begin(), mesh.materials.end(),
+                    [](const core::Material& m) { return m.alphaMode == core::AlphaMode::Blend; });
     const MeshPlan plan = planMeshParts(packed, vertices, d.hasColors, d.planBytes());
     if (plan.parts.empty())
         return tooLarge("one triangle's vertices");

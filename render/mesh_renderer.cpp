@@ -141,6 +141,72 @@ struct MeshRenderer::Impl {
         return found != programs.end() ? &found->second : &programs[0];
     }
 
+    /** What draw() keeps across runs: its view and options, the program in use, the pieces. */
+    struct RunDraw {
+        const core::View& view;
+        const DrawOptions& options;
+        const ShaderProgram* current;
+        int pieces;
+    };
+
+    /** Whether run is drawn blended by its alpha (glTF's BLEND, in the lit view only). */
+    bool blends(const MaterialRun& run, MaterialChannel channel) const {
+        return channel == MaterialChannel::Material &&
+               materials[run.material].alphaMode == core::AlphaMode::Blend;
+    }
+
+    /** One run with its material's program, textures and culling. */
+    void drawRun(const MaterialRun& run, RunDraw& state) {
+        const core::Material& material = materials[run.material];
+        const MaterialChannel channel = state.options.channel;
+        const bool textured = material.baseColorTexture >= 0;
+        const std::size_t texture = textured ? std::size_t(material.baseColorTexture) : 0;
+        const PaintTexture* baseColor = textured ? textures->baseColor(texture) : nullptr;
+        const PaintTexture* metallicRoughness =
+            textured ? textures->metallicRoughness(texture) : nullptr;
+        const bool lit = metallicRoughness != nullptr;
+        const SurfaceMaps& surface = surfaces[run.material];
+        unsigned features =
+            channel == MaterialChannel::Material && baseColor ? surface.features() : 0u;
+        if (!tangentBuffer)
+            features &= ~unsigned(kSurfaceNormalMap);
+        const bool alphaMask = material.alphaMode == core::AlphaMode::Mask;
+        const ShaderProgram* shader = program(variantKey(channel, lit, alphaMask, features));
+        if (shader != state.current) {
+            state.current = shader;
+            shader->use();
+            glUniformMatrix4fv(shader->uniform("uView"), 1, GL_FALSE,
+                               glm::value_ptr(state.view.view));
+            glUniformMatrix4fv(shader->uniform("uProj"), 1, GL_FALSE,
+                               glm::value_ptr(state.view.proj));
+            glUniform1i(shader->uniform("uBaseColorTexture"), 0);
+            glUniform1i(shader->uniform("uMetallicRoughness"), 1);
+        }
+        glUniform4fv(shader->uniform("uBaseColorFactor"), 1,
+                     glm::value_ptr(material.baseColorFactor));
+        glUniform1i(shader->uniform("uHasTexture"), textured);
+        glUniform1i(shader->uniform("uBlend"), blends(run, channel));
+        if (alphaMask)
+            glUniform1f(shader->uniform("uAlphaCutoff"), material.alphaCutoff);
+        if (textured)
+            glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
+        if (lit && shader != &programs[0])
+            glBindTextureUnit(1, metallicRoughness->id());
+        if (features && shader != &programs[0])
+            bindSurfaceMaps(*shader, surface, features, *textures, baseColor->width(),
+                            baseColor->height());
+        if (state.options.cullBackFaces && !run.backFaces)
+            glEnable(GL_CULL_FACE);
+        else
+            glDisable(GL_CULL_FACE);
+        drawInPieces(run.firstTriangle, run.triangleCount, state.pieces,
+                     [](std::size_t first, std::size_t count) {
+                         glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(std::uintptr_t(first) * 12));
+                     });
+        lastTriangles += run.triangleCount;
+    }
+
     void releaseStandIn() {
         if (standInVao)
             glDeleteVertexArrays(1, &standInVao);
@@ -308,59 +374,25 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glBindVertexArray(standIn ? d.standInVao : d.vao);
-    const ShaderProgram* current = nullptr;
     const std::vector<MaterialRun>& runs = standIn ? d.standInRuns : d.runs;
     std::size_t triangles = 0;
     for (const MaterialRun& run : runs)
         triangles += run.triangleCount;
-    const int pieces = drawPieces(d.software, triangles, std::size_t(view.width) * view.height);
-    for (const MaterialRun& run : runs) {
-        const core::Material& material = d.materials[run.material];
-        const bool textured = material.baseColorTexture >= 0;
-        const std::size_t texture = textured ? std::size_t(material.baseColorTexture) : 0;
-        const PaintTexture* baseColor = textured ? d.textures->baseColor(texture) : nullptr;
-        const PaintTexture* metallicRoughness =
-            textured ? d.textures->metallicRoughness(texture) : nullptr;
-        const bool lit = metallicRoughness != nullptr;
-        const SurfaceMaps& surface = d.surfaces[run.material];
-        unsigned features =
-            options.channel == MaterialChannel::Material && baseColor ? surface.features() : 0u;
-        if (!d.tangentBuffer)
-            features &= ~unsigned(kSurfaceNormalMap);
-        const bool alphaMask = material.alphaMode == core::AlphaMode::Mask;
-        const ShaderProgram* program =
-            d.program(variantKey(options.channel, lit, alphaMask, features));
-        if (program != current) {
-            current = program;
-            program->use();
-            glUniformMatrix4fv(program->uniform("uView"), 1, GL_FALSE, glm::value_ptr(view.view));
-            glUniformMatrix4fv(program->uniform("uProj"), 1, GL_FALSE, glm::value_ptr(view.proj));
-            glUniform1i(program->uniform("uBaseColorTexture"), 0);
-            glUniform1i(program->uniform("uMetallicRoughness"), 1);
+    Impl::RunDraw state{view, options, nullptr,
+                        drawPieces(d.software, triangles, std::size_t(view.width) * view.height)};
+    // Blending materials last, over what is behind them, without hiding each other.
+    for (const bool blended : {false, true}) {
+        if (blended) {
+            glEnable(GL_BLEND);
+            glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+            glDepthMask(GL_FALSE);
         }
-        glUniform4fv(program->uniform("uBaseColorFactor"), 1,
-                     glm::value_ptr(material.baseColorFactor));
-        glUniform1i(program->uniform("uHasTexture"), textured);
-        if (alphaMask)
-            glUniform1f(program->uniform("uAlphaCutoff"), material.alphaCutoff);
-        if (textured)
-            glBindTextureUnit(0, baseColor ? baseColor->id() : 0);
-        if (lit && program != &d.programs[0])
-            glBindTextureUnit(1, metallicRoughness->id());
-        if (features && program != &d.programs[0])
-            bindSurfaceMaps(*program, surface, features, *d.textures, baseColor->width(),
-                            baseColor->height());
-        if (options.cullBackFaces && !run.backFaces)
-            glEnable(GL_CULL_FACE);
-        else
-            glDisable(GL_CULL_FACE);
-        drawInPieces(run.firstTriangle, run.triangleCount, pieces,
-                     [](std::size_t first, std::size_t count) {
-                         glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(std::uintptr_t(first) * 12));
-                     });
-        d.lastTriangles += run.triangleCount;
+        for (const MaterialRun& run : runs)
+            if (d.blends(run, options.channel) == blended)
+                d.drawRun(run, state);
     }
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
     glBindVertexArray(0);
     glBindTextureUnit(1, 0);
     unbindSurfaceMaps();

@@ -9,6 +9,10 @@
 //   keeps, where the visible fragment is not on layer 1, the next one in the order ("under") in
 //   the second half of Visible. UNDER passes draw those opaque; the normal passes then blend
 //   the visible fragment over them with uOpacity.
+// - BLEND (with TRANSPARENCY; only in the lit Material view): a fragment of a material whose
+//   alphaMode is BLEND keeps the next one in the order under it too, on any layer, and is drawn
+//   over it with its alpha (factor × vertex colour × texture), as glTF viewers draw it over
+//   what lies behind; the fragment under is drawn opaque.
 // - the picture: shaded colour, texture (TEXTURED, one pass per texture and maps; MATERIAL: the
 //   pass has a metallic-roughness texture and lights the surface with it; NORMAL_MAP,
 //   OCCLUSION_MAP, EMISSIVE, EMISSIVE_MAP: its maps, as mesh.frag draws them), one channel alone
@@ -63,6 +67,19 @@ layout(std430, binding = 17) readonly buffer ShadingNormal {
     uint shadingNormal[];
 };
 
+uniform float uOpacity; // TRANSPARENCY: of popped-up fragments drawn over an under one
+
+#ifdef BLEND
+// Whether fragment f's material blends (composite_shade.comp: Light's byte 3 below 255), and its
+// alpha before the texture's.
+bool blends(uint f) {
+    return (shadingLight[f] >> 24) != 0xffu;
+}
+float blendAlpha(uint f) {
+    return float(shadingLight[f] >> 24) / 254.0;
+}
+#endif
+
 // Pixel centres in DepthStack coordinates (y down).
 vec2 pixelCentre() {
     return vec2(gl_FragCoord.x, float(uHeight) - gl_FragCoord.y);
@@ -81,7 +98,8 @@ uniform uint uMaxLayers;
 /**
  * The visible fragment of a pixel, kNone for none: the one of lowest region rank (front-most
  * on ties), skipping hidden regions; with SINGLE_LAYER the layer-uLayer one. With TRANSPARENCY
- * under gets the next one in rank where the visible one is not on layer 1 (layer 1 is opaque).
+ * under gets the next one in rank where the visible one is popped up (not on layer 1, which is
+ * opaque) or, with BLEND, where its material blends.
  */
 uint pickFragment(uint first, uint end, out uint under) {
     under = kNone;
@@ -107,7 +125,10 @@ uint pickFragment(uint first, uint end, out uint under) {
         if (layer <= uMaxLayers) {
             // Nothing deeper can beat what is kept: stop.
             uint cutoff = ranks[uRegionCount + layer - 1u];
-#ifdef TRANSPARENCY
+#if defined(BLEND)
+            if (second < cutoff)
+                break;
+#elif defined(TRANSPARENCY)
             if ((chosen == first ? best : second) < cutoff)
                 break;
 #else
@@ -116,7 +137,11 @@ uint pickFragment(uint first, uint end, out uint under) {
 #endif
         }
     }
-    if (chosen == first)
+    bool seeThrough = chosen != first && uOpacity < 1.0;
+#ifdef BLEND
+    seeThrough = seeThrough || (chosen != kNone && blends(chosen));
+#endif
+    if (!seeThrough)
         under = kNone;
     return chosen;
 #endif
@@ -210,7 +235,6 @@ uniform vec4 uBackground; // sRGB
 uniform uint uHighlight;  // HIGHLIGHT: region id
 uniform ivec4 uHighlightBox; // HIGHLIGHT: its pixels' bounding box, min x, min y, max x, max y
 uniform int uPass;        // TEXTURED: the pass; its texture is uTexture
-uniform float uOpacity;   // TRANSPARENCY: of visible fragments drawn over an under one
 uniform sampler2D uTexture; // GL_SRGB8_ALPHA8: sampled as linear
 uniform sampler2D uMetallicRoughness; // MATERIAL: GL_RGBA8, G roughness, B metallic (glTF)
 
@@ -298,8 +322,14 @@ void main() {
     uint chosen = word & kNoFragment;
     float alpha = 1.0;
 #if defined(TRANSPARENCY) && !defined(UNDER)
-    if (words.y != kNoFragment)
-        alpha = uOpacity;
+    bool poppedUp = words.y != kNoFragment;
+#ifdef BLEND
+    poppedUp = poppedUp && chosen != offsets[pixel];
+    if (chosen != kNoFragment && blends(chosen))
+        alpha = blendAlpha(chosen);
+#endif
+    if (poppedUp)
+        alpha *= uOpacity;
 #endif
 
     vec4 color = uBackground;
@@ -339,7 +369,12 @@ void main() {
             textured = true;
             vec2 uv = unpackUnorm2x16(shadingUv[chosen]);
             float lod = (float(shadingLight[chosen] & 0xffffu) - 32768.0) / 1024.0;
-            lit *= textureLod(uTexture, uv, lod).rgb;
+            vec4 texel = textureLod(uTexture, uv, lod);
+            lit *= texel.rgb;
+#if defined(BLEND) && !defined(UNDER)
+            if (blends(chosen))
+                alpha *= texel.a;
+#endif
 #ifdef MATERIAL
             vec2 mr = textureLod(uMetallicRoughness, uv, lod).gb;
             roughness = mr.x;

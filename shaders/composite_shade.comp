@@ -3,7 +3,7 @@
 // meets its triangle, as mesh.frag shades that surface, into the Shading buffer. The shading
 // does not depend on the region order, so a pop-up only picks again (composite.frag). The
 // compositor inserts the defines: TEXTURED (uv and texture LOD), UVS, COLORS (vertex colours),
-// TANGENTS (the view-space tangent, for normal maps).
+// TANGENTS (the view-space tangent, for normal maps), BLEND (some material blends by its alpha).
 layout(local_size_x = 64) in;
 
 const uint kNone = 0xffffffffu;
@@ -56,7 +56,7 @@ struct Material {
     int texturePass;      // the pass sampling its base color texture, -1 for none
     int textureWidth;
     int textureHeight;
-    int pad;
+    int blend; // glTF's alphaMode BLEND
 };
 layout(std430, binding = 11) readonly buffer Materials {
     Material materials[];
@@ -68,7 +68,9 @@ layout(std430, binding = 13) readonly buffer FragmentPixels {
 // A fragment's shading in four buffers of one word a fragment (a storage block holds as many
 // fragments as the fragment arrays then): Color: lit base colour, sRGB rgb in bytes 0-2 and in
 // byte 3 the texture pass + 1 (0: untextured); Uv: fract(uv) as 2 × unorm16; Light: bits 0-15
-// the texture LOD × 1024 + 32768, bits 16-23 the headlight term |n · v|; Normal: the view-space
+// the texture LOD × 1024 + 32768, bits 16-23 the headlight term |n · v|, bits 24-31 255 or, for
+// a blending material, factor × vertex colour alpha × 254 (the texture's alpha is the composing
+// pass's); Normal: the view-space
 // unit normal turned towards the viewer, octahedral as 2 × snorm16 (the material's lights).
 layout(std430, binding = 14) writeonly buffer ShadingColor {
     uint shadingColor[];
@@ -169,6 +171,7 @@ void main() {
     uint lodWord = 32768u;
     vec3 facing = vec3(0.0, 0.0, 1.0);
     uint tangentWord = 0u;
+    uint alphaByte = 255u;
     if (triangle.w != kNone) {
         // Member by member: each field read is a load per fragment on llvmpipe.
         base = materials[triangle.w].baseColorFactor;
@@ -211,6 +214,10 @@ void main() {
         base *= bary.x * colors[triangle.x] + bary.y * colors[triangle.y] +
                 bary.z * colors[triangle.z];
 #endif
+#ifdef BLEND
+        if (materials[triangle.w].blend != 0)
+            alphaByte = uint(clamp(base.a, 0.0, 1.0) * 254.0 + 0.5);
+#endif
 #ifdef TEXTURED
         int texturePass = materials[triangle.w].texturePass;
         if (texturePass >= 0) {
@@ -242,7 +249,7 @@ void main() {
     vec3 lit = clamp(base.rgb * (0.25 + 0.75 * diffuse), 0.0, 1.0);
     shadingColor[f] = (packUnorm4x8(vec4(linearToSrgb(lit), 0.0)) & 0xffffffu) | (slot << 24);
     shadingUv[f] = uvWord;
-    shadingLight[f] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16);
+    shadingLight[f] = lodWord | (uint(diffuse * 255.0 + 0.5) << 16) | (alphaByte << 24);
     shadingNormal[f] = octEncode(facing);
 #ifdef TANGENTS
     shadingTangent[f] = tangentWord;

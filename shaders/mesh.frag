@@ -6,7 +6,8 @@
 // CHANNEL_ROUGHNESS and CHANNEL_METALLIC show one channel alone (untextured: roughness 1, metal 0).
 // A textured material's maps (render::SurfaceMaps) in the lit view: NORMAL_MAP, OCCLUSION_MAP,
 // EMISSIVE (EMISSIVE_MAP). ALPHA_MASK: glTF's alphaMode MASK, no surface where the base colour's
-// alpha is below uAlphaCutoff (the depth-layer capture drops those fragments alike).
+// alpha is below uAlphaCutoff (the depth-layer capture drops those fragments alike). uBlend
+// (glTF's BLEND, in the lit view): the base colour's alpha is written for blending.
 in vec3 vViewNormal;
 in vec3 vViewPosition;
 in vec2 vUv;
@@ -36,6 +37,7 @@ uniform float uAlphaCutoff;
 #endif
 uniform vec4 uBaseColorFactor;
 uniform bool uHasTexture;
+uniform bool uBlend;
 uniform sampler2D uBaseColorTexture;  // GL_SRGB8_ALPHA8: sampled as linear
 uniform sampler2D uMetallicRoughness; // MATERIAL: GL_RGBA8, G roughness, B metallic (glTF)
 
@@ -110,5 +112,5 @@ void main() {
 #endif
     vec3 color = linearToSrgb(clamp(shaded, 0.0, 1.0));
 #endif
-    fragColor = vec4(color, 1.0);
+    fragColor = vec4(color, uBlend ? clamp(base.a, 0.0, 1.0) : 1.0);
 }
