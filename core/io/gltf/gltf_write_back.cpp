@@ -392,7 +392,7 @@ private:
     void bakedBaseColor(std::size_t m) {
         Json& mat = material(m);
         Json& pbr = mat["pbrMetallicRoughness"];
-        whiteBaseColorFactor(m);
+        whiteBaseColorFactor(m, "the painted base colour texture");
         if (mat.contains("extensions") && mat["extensions"].contains(kSpecularGlossiness)) {
             mat["extensions"].erase(kSpecularGlossiness);
             if (mat["extensions"].empty())
@@ -561,14 +561,23 @@ private:
                                  "first placement");
         for (std::size_t m = 0; m < m_mesh.materials.size(); ++m)
             if (!m_primitivesOf[m].empty())
-                whiteBaseColorFactor(m);
+                whiteBaseColorFactor(m, "the painted vertex colours");
         return {};
     }
 
-    void whiteBaseColorFactor(std::size_t m) {
+    /**
+     * Drops material m's base colour factor, which painting multiplied into where (the view
+     * shows the painted colour, which a factor kept apart could not tint back for every colour);
+     * a warning says so where it was other than white.
+     */
+    void whiteBaseColorFactor(std::size_t m, const char* where) {
         Json& pbr = material(m)["pbrMetallicRoughness"];
-        if (pbr.contains("baseColorFactor") && pbr["baseColorFactor"] != Json::array({1, 1, 1, 1}))
-            pbr.erase("baseColorFactor");
+        if (!pbr.contains("baseColorFactor") || pbr["baseColorFactor"] == Json::array({1, 1, 1, 1}))
+            return;
+        pbr.erase("baseColorFactor");
+        m_warnings.push_back("material \"" + m_mesh.materials[m].name +
+                             "\": its base colour factor is multiplied into " + where +
+                             " and written as white");
     }
 
     /** An extension nothing uses any longer leaves extensionsUsed and extensionsRequired. */
