@@ -262,6 +262,18 @@ json materialJson(const core::Mesh& mesh, const core::Material& m) {
     return entry;
 }
 /** Whether saving writes the file's own scene back, and its size; or why not. */
+/** The model's named objects: name and triangle count each. */
+json objectsJson(const core::Mesh& mesh) {
+    json objects = json::array();
+    for (std::size_t o = 0; o < mesh.objects.size(); ++o) {
+        const std::size_t end =
+            o + 1 < mesh.objects.size() ? mesh.objects[o + 1].firstTriangle : mesh.triangleCount();
+        objects.push_back(
+            {{"name", mesh.objects[o].name}, {"triangles", end - mesh.objects[o].firstTriangle}});
+    }
+    return objects;
+}
+
 json sceneJson(const core::Mesh& mesh) {
     if (!mesh.source)
         return {{"kept", false}, {"why", "the model was not read from a glTF file"}};
@@ -297,6 +309,7 @@ int runInfo(const std::string& model) {
         {"has_uvs", mesh->hasUvs()},
         {"has_vertex_colors", mesh->hasColors()},
         {"materials", materials},
+        {"objects", objectsJson(*mesh)},
         {"scene", sceneJson(*mesh)},
         {"warnings", mesh->warnings},
     };

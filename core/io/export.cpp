@@ -280,12 +280,22 @@ void appendObjVertices(std::string& obj, const Mesh& mesh, double geometryShare,
     }
 }
 
-/** The f lines, a usemtl line where the material changes; progress to geometryShare. */
+/**
+ * The f lines, an o line where a named object (Mesh::objects) begins, a usemtl line where the
+ * material changes or an object begins; progress to geometryShare.
+ */
 void appendObjFaces(std::string& obj, const Mesh& mesh, const std::vector<std::string>& names,
                     double geometryShare, const ProgressFn& progress) {
     const std::size_t triangles = mesh.triangleCount();
     std::uint32_t current = ~0u;
+    std::size_t object = 0;
     for (std::size_t t = 0; t < triangles; ++t) {
+        if (object < mesh.objects.size() && mesh.objects[object].firstTriangle == t) {
+            const std::string& name = mesh.objects[object].name;
+            obj += "o " + (name.empty() ? "object " + std::to_string(object + 1) : name) + "\n";
+            current = ~0u;
+            ++object;
+        }
         if (mesh.triangleMaterial[t] != current) {
             current = mesh.triangleMaterial[t];
             obj += "usemtl " + names[current] + "\n";

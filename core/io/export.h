@@ -42,8 +42,8 @@ std::optional<ExportFormat> parseExportFormat(const std::string& name);
  *   STEM_mapT_metallic.png, grey, from the metallic-roughness map), norm (normal map), map_Ka
  *   (occlusion, read back by Assimp as the ambient map), Ke (emissive factor × strength) and
  *   map_Ke; a map's placement other than the UVs is not kept. UVs are flipped to OBJ's
- *   convention (v up); vertex colours,
- *   if any, follow the positions as sRGB ("v x y z r g b"). Faces keep the triangle order;
+ *   convention (v up); vertex colours, if any, follow the positions as sRGB ("v x y z r g b").
+ *   Faces keep the triangle order, each named object (Mesh::objects) an "o" line;
  * - Ply: binary little-endian; positions, normals, UVs (s, t; t up) if any and RGBA8 sRGB vertex
  *   colours: base colour
  *   factor × vertex colour × the texture at the vertex's UV (bilinear), of the first triangle

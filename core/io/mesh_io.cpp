@@ -10,6 +10,7 @@
 #include <exception>
 #include <filesystem>
 #include <limits>
+#include <string_view>
 #include <system_error>
 
 #include <glm/geometric.hpp>
@@ -61,6 +62,44 @@ void checkUvCoverage(Mesh& mesh, const std::string& path) {
                                 "overlapping place at once (a texture with automatic UVs "
                                 "paints them apart)");
     }
+}
+
+/**
+ * A file's object name as kept: control characters as spaces, cut after 256 bytes (a UTF-8
+ * sequence begun before kept whole).
+ */
+std::string objectName(std::string_view name) {
+    constexpr std::size_t kMaxBytes = 256;
+    std::string out;
+    for (std::size_t i = 0; i < name.size(); ++i) {
+        const auto c = static_cast<unsigned char>(name[i]);
+        if (i >= kMaxBytes && (c & 0xC0) != 0x80)
+            break;
+        out += c < 0x20 || c == 0x7F ? ' ' : char(c);
+    }
+    return out;
+}
+
+/**
+ * Mesh::objects as kept: objects without triangles dropped, neighbours of one name joined, none
+ * at all where none is named.
+ */
+void tidyObjects(Mesh& mesh) {
+    std::vector<MeshObject> kept;
+    const auto triangles = std::uint32_t(mesh.triangleCount());
+    for (std::size_t o = 0; o < mesh.objects.size(); ++o) {
+        MeshObject& object = mesh.objects[o];
+        const std::uint32_t end =
+            o + 1 < mesh.objects.size() ? mesh.objects[o + 1].firstTriangle : triangles;
+        if (end <= object.firstTriangle || (!kept.empty() && kept.back().name == object.name))
+            continue;
+        kept.push_back(std::move(object));
+    }
+    if (!kept.empty() && kept.front().firstTriangle != 0) // triangles before the first object
+        kept.insert(kept.begin(), MeshObject{"", 0});
+    const bool named = std::any_of(kept.begin(), kept.end(),
+                                   [](const MeshObject& object) { return !object.name.empty(); });
+    mesh.objects = named ? std::move(kept) : std::vector<MeshObject>{};
 }
 
 } // namespace
@@ -121,7 +160,12 @@ void Flattener::finish(Mesh& out) {
             if (!m_hasNormal[i])
                 mesh.normals[i] = computed.normals[i];
     }
+    tidyObjects(mesh);
     out = std::move(mesh);
+}
+
+void Flattener::beginObject(const std::string& name) {
+    m_mesh.objects.push_back({objectName(name), std::uint32_t(m_mesh.triangleCount())});
 }
 
 int Flattener::addTexture(Image image, const std::uint8_t* file, std::size_t fileSize) {

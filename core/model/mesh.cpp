@@ -85,6 +85,12 @@ Status Mesh::validate() const {
     if (!sourceVertices.empty() && sourceVertices.size() != vertexCount())
         return Error{"the vertices' origins differ in count from the vertices",
                      ErrorKind::BadInput};
+    for (std::size_t o = 0; o < objects.size(); ++o)
+        if (objects[o].firstTriangle >= triangleCount() ||
+            (o == 0 ? objects[o].firstTriangle != 0
+                    : objects[o].firstTriangle <= objects[o - 1].firstTriangle))
+            return Error{"the named objects do not divide the triangles in order",
+                         ErrorKind::BadInput};
     for (const glm::vec3& p : positions)
         if (!finite(p))
             return Error{"a vertex position is not a finite number", ErrorKind::BadInput};

@@ -45,6 +45,15 @@ struct TextureOrigin {
     bool unchanged = false; // it shows what the scene's material shows (nothing was painted)
 };
 
+/**
+ * A named object of the model's file (a glTF node, an OBJ object or group): the triangles from
+ * firstTriangle to the next object's first one, or to the end.
+ */
+struct MeshObject {
+    std::string name;
+    std::uint32_t firstTriangle = 0;
+};
+
 /** How a material's alpha is used, as glTF's alphaMode. */
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
@@ -127,6 +136,8 @@ struct Mesh {
      * automatic UV layout copies vertices along its seams).
      */
     std::vector<std::uint32_t> sourceVertices;
+    /** Empty, or the file's named objects in triangle order (the first from triangle 0). */
+    std::vector<MeshObject> objects;
 
     std::size_t vertexCount() const { return positions.size(); }
     std::size_t triangleCount() const { return indices.size() / 3; }

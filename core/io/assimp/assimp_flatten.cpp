@@ -10,6 +10,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <string_view>
 #include <unordered_set>
 #include <vector>
 
@@ -115,6 +116,8 @@ private:
     std::map<std::string, int> m_textureCache;
 
     bool addMesh(unsigned meshIndex, const glm::dmat4& transform);
+    /** What the file calls node's mesh meshIndex: the node's name, else the mesh's, else "". */
+    std::string objectName(const aiNode& node, unsigned meshIndex) const;
     void addMaterials();
     /** The factors, alpha and base colour of am. */
     Material readMaterial(const aiMaterial& am, unsigned index);
@@ -500,6 +503,20 @@ void AssimpFlattener::dropUnusedTextures() {
     mesh.textureSources = std::move(sources);
 }
 
+std::string AssimpFlattener::objectName(const aiNode& node, unsigned meshIndex) const {
+    // Assimp names what a file leaves unnamed "<...>", "$..." or (OBJ) "defaultobject".
+    const auto named = [](const aiString& name) {
+        return name.length > 0 && name.data[0] != '<' && name.data[0] != '$' &&
+               std::string_view(name.C_Str()) != "defaultobject";
+    };
+    if (named(node.mName))
+        return node.mName.C_Str();
+    if (meshIndex < m_scene.mNumMeshes && m_scene.mMeshes && m_scene.mMeshes[meshIndex] &&
+        named(m_scene.mMeshes[meshIndex]->mName))
+        return m_scene.mMeshes[meshIndex]->mName.C_Str();
+    return {};
+}
+
 bool AssimpFlattener::run(Mesh& out) {
     if (m_scene.mRootNode == nullptr)
         return fail("the file has no scene");
@@ -518,9 +535,13 @@ bool AssimpFlattener::run(Mesh& out) {
         if (!seen.insert(item.node).second)
             return fail("the node hierarchy has a cycle");
         const glm::dmat4 global = item.parent * toGlm(item.node->mTransformation);
-        for (unsigned m = 0; m < item.node->mNumMeshes; ++m)
-            if (item.node->mMeshes == nullptr || !addMesh(item.node->mMeshes[m], global))
+        for (unsigned m = 0; m < item.node->mNumMeshes; ++m) {
+            if (item.node->mMeshes == nullptr)
                 return fail("a node has an invalid mesh list");
+            beginObject(objectName(*item.node, item.node->mMeshes[m]));
+            if (!addMesh(item.node->mMeshes[m], global))
+                return fail("a node has an invalid mesh list");
+        }
         for (unsigned c = item.node->mNumChildren; c-- > 0;)
             if (item.node->mChildren != nullptr)
                 stack.push_back(Item{item.node->mChildren[c], global});

@@ -61,18 +61,23 @@ void putU32(Bytes& out, std::uint32_t v) {
 // ---------------------------------------------------------------------------------------------
 // Geometry
 
-/** Consecutive triangles [first, first + count) with one material. */
+/** Consecutive triangles [first, first + count) with one material, of one named object. */
 struct Run {
     std::size_t firstTriangle = 0;
     std::size_t triangleCount = 0;
     std::uint32_t material = 0;
+    std::size_t object = 0; // index into Mesh::objects (0 without)
 };
 
 std::vector<Run> materialRuns(const Mesh& mesh) {
     std::vector<Run> runs;
+    std::size_t object = 0;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        if (runs.empty() || runs.back().material != mesh.triangleMaterial[t])
-            runs.push_back(Run{t, 0, mesh.triangleMaterial[t]});
+        const bool objectBegins =
+            object + 1 < mesh.objects.size() && mesh.objects[object + 1].firstTriangle == t;
+        object += objectBegins ? 1 : 0;
+        if (runs.empty() || runs.back().material != mesh.triangleMaterial[t] || objectBegins)
+            runs.push_back(Run{t, 0, mesh.triangleMaterial[t], object});
         ++runs.back().triangleCount;
     }
     return runs;
@@ -190,6 +195,7 @@ struct GlbDraft {
     Json extras;
     BinBuilder bin;
     Json accessors = Json::array(), primitives = Json::array();
+    std::vector<std::size_t> primitiveObject; // per primitive, its run's object
     Json images = Json::array(), textures = Json::array(), materials = Json::array();
     std::vector<int> textureIndex; // glTF texture per mesh texture (-1: not written)
     std::vector<int> mrTexture;    // glTF texture per metallic-roughness image (-1: not written)
@@ -236,6 +242,7 @@ void addPrimitives(GlbDraft& d, const std::vector<Run>& runs, const RunGeometry&
                                 {"indices", idx},
                                 {"material", runs[r].material},
                                 {"mode", 4}});
+        d.primitiveObject.push_back(runs[r].object);
     }
 }
 
@@ -469,21 +476,49 @@ void writeMaterials(GlbDraft& d) {
     }
 }
 
-/** The glTF JSON: one scene, one node, one mesh; the draft's arrays moved in. */
+/**
+ * The scene's nodes and meshes: one node and mesh (unnamed), or with named objects
+ * (Mesh::objects) a node and mesh of each object's name; the draft's primitives moved in.
+ */
+std::pair<Json, Json> nodesAndMeshes(GlbDraft& d) {
+    const std::vector<MeshObject>& objects = d.mesh.objects;
+    if (objects.empty())
+        return {Json::array({{{"mesh", 0}}}),
+                Json::array({{{"primitives", std::move(d.primitives)}}})};
+    Json nodes = Json::array(), meshes = Json::array();
+    for (std::size_t p = 0; p < d.primitives.size(); ++p) {
+        const std::size_t object = d.primitiveObject[p];
+        if (p == 0 || object != d.primitiveObject[p - 1]) {
+            Json mesh = {{"primitives", Json::array()}};
+            Json node = {{"mesh", meshes.size()}};
+            if (!objects[object].name.empty())
+                mesh["name"] = node["name"] = objects[object].name;
+            meshes.push_back(std::move(mesh));
+            nodes.push_back(std::move(node));
+        }
+        meshes.back()["primitives"].push_back(std::move(d.primitives[p]));
+    }
+    return {std::move(nodes), std::move(meshes)};
+}
+
+/** The glTF JSON: one scene of the nodes; the draft's arrays moved in. */
 Json assembleRoot(GlbDraft& d) {
     Json asset = {{"version", "2.0"}, {"generator", "LayerPaint"}};
     if (d.extras.is_object())
         asset["extras"] = d.extras;
-    Json root = {
-        {"asset", std::move(asset)},
-        {"scene", 0},
-        {"scenes", Json::array({{{"nodes", Json::array({0})}}})},
-        {"nodes", Json::array({{{"mesh", 0}, {"name", "mesh"}}})},
-        {"meshes", Json::array({{{"primitives", std::move(d.primitives)}, {"name", "mesh"}}})},
-        {"materials", std::move(d.materials)},
-        {"accessors", std::move(d.accessors)},
-        {"bufferViews", std::move(d.bin.views())},
-        {"buffers", Json::array({{{"byteLength", d.bin.bytes().size()}}})}};
+    auto [nodes, meshes] = nodesAndMeshes(d);
+    Json sceneNodes = Json::array();
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+        sceneNodes.push_back(n);
+    Json root = {{"asset", std::move(asset)},
+                 {"scene", 0},
+                 {"scenes", Json::array({{{"nodes", std::move(sceneNodes)}}})},
+                 {"nodes", std::move(nodes)},
+                 {"meshes", std::move(meshes)},
+                 {"materials", std::move(d.materials)},
+                 {"accessors", std::move(d.accessors)},
+                 {"bufferViews", std::move(d.bin.views())},
+                 {"buffers", Json::array({{{"byteLength", d.bin.bytes().size()}}})}};
     if (!d.extensionsUsed.empty())
         root["extensionsUsed"] = d.extensionsUsed;
     if (!d.textures.empty()) {

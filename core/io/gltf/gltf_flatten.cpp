@@ -358,7 +358,10 @@ bool GltfFlattener::run(Mesh& out) {
         primTotal += m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives.size();
     reserveForInstances(instances);
     for (const GltfInstance& inst : instances) {
-        const auto& prims = m_model.meshes[static_cast<std::size_t>(inst.mesh)].primitives;
+        const tinygltf::Mesh& mesh = m_model.meshes[static_cast<std::size_t>(inst.mesh)];
+        const std::string& nodeName = m_model.nodes[static_cast<std::size_t>(inst.node)].name;
+        beginObject(nodeName.empty() ? mesh.name : nodeName);
+        const auto& prims = mesh.primitives;
         for (std::size_t p = 0; p < prims.size(); ++p) {
             if (!addPrimitive(inst, p))
                 return false;

@@ -222,9 +222,23 @@ bool FrameWriter::mesh(const Mesh& mesh) {
             images.push_back(o.image);
         frame(Tag::TextureOrigins, images.data(), images.size() * sizeof(std::int32_t));
     }
+    if (!mesh.objects.empty())
+        objects(mesh.objects);
     if (mesh.source)
         sourceScene(*mesh.source);
     return frame(Tag::MeshEnd, nullptr, 0);
+}
+
+bool FrameWriter::objects(const std::vector<MeshObject>& objects) {
+    std::vector<std::uint8_t>& payload = m_held.emplace_back();
+    for (const MeshObject& object : objects) {
+        const std::uint32_t head[2] = {object.firstTriangle,
+                                       static_cast<std::uint32_t>(object.name.size())};
+        const auto* bytes = reinterpret_cast<const std::uint8_t*>(head);
+        payload.insert(payload.end(), bytes, bytes + sizeof head);
+        payload.insert(payload.end(), object.name.begin(), object.name.end());
+    }
+    return frame(Tag::Objects, payload.data(), payload.size());
 }
 
 bool FrameWriter::sourceScene(const SourceScene& scene) {
@@ -380,6 +394,8 @@ private:
             return textureSourceFrame(length);
         case Tag::TextureOrigins:
             return textureOriginsFrame(length);
+        case Tag::Objects:
+            return objectsFrame(length);
         case Tag::SourceScene:
             return sourceSceneFrame(length);
         case Tag::MeshEnd:
@@ -542,6 +558,37 @@ private:
             return false;
         for (std::int32_t image : images)
             m_mesh->textureOrigins.push_back(TextureOrigin{image < 0 ? -1 : image, true});
+        return true;
+    }
+
+    /** The named objects: in triangle order from triangle 0, names of at most kMaxNameBytes. */
+    bool objectsFrame(std::uint64_t length) {
+        constexpr std::uint64_t kMaxNameBytes = 1024;
+        const std::uint64_t triangles = m_header.indices / 3;
+        if (!m_mesh || !m_mesh->objects.empty() || length == 0 ||
+            length > mul(triangles, 8 + kMaxNameBytes))
+            return fail("it sent malformed objects");
+        std::vector<std::uint8_t> payload(static_cast<std::size_t>(length));
+        if (!m_source.read(payload.data(), payload.size()))
+            return false;
+        std::vector<MeshObject> objects;
+        for (std::size_t at = 0; at < payload.size();) {
+            std::uint32_t head[2];
+            if (payload.size() - at < sizeof head)
+                return fail("it sent malformed objects");
+            std::memcpy(head, payload.data() + at, sizeof head);
+            at += sizeof head;
+            const bool inOrder =
+                objects.empty() ? head[0] == 0 : head[0] > objects.back().firstTriangle;
+            if (!inOrder || head[0] >= triangles || head[1] > kMaxNameBytes ||
+                head[1] > payload.size() - at)
+                return fail("it sent malformed objects");
+            objects.push_back({std::string(payload.begin() + std::ptrdiff_t(at),
+                                           payload.begin() + std::ptrdiff_t(at + head[1])),
+                               head[0]});
+            at += head[1];
+        }
+        m_mesh->objects = std::move(objects);
         return true;
     }
 

@@ -43,6 +43,7 @@ enum class Tag : std::uint32_t {
                             // vertices (uint32), the bin
     TextureOrigins = 17,    // int32[textures]: each texture's glTF image (-1: none)
     Tangents = 18,          // float[4 * vertices]
+    Objects = 19,           // per named object: uint32 first triangle, uint32 name length, name
 };
 
 struct FrameHeader {
@@ -131,6 +132,7 @@ public:
     bool image(const Image& image);
 
 private:
+    bool objects(const std::vector<MeshObject>& objects);
     bool sourceScene(const SourceScene& scene);
     bool frame(Tag tag, const void* a, std::size_t aSize, const void* b = nullptr,
                std::size_t bSize = 0);

@@ -130,6 +130,11 @@ protected:
      * those bytes beside it (Mesh::textureSources); returns the texture's index.
      */
     int addTexture(Image image, const std::uint8_t* file = nullptr, std::size_t fileSize = 0);
+    /**
+     * The triangles added from now on are the object name's (Mesh::objects; finish() drops
+     * objects without triangles, joins neighbours of one name and keeps none if none is named).
+     */
+    void beginObject(const std::string& name);
 
     Mesh m_mesh;
     Error m_error;

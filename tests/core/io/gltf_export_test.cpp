@@ -101,6 +101,11 @@ void expectSameMesh(const core::Mesh& a, const core::Mesh& b) {
     ASSERT_EQ(a.triangleCount(), b.triangleCount());
     EXPECT_EQ(a.indices, b.indices);
     EXPECT_EQ(a.triangleMaterial, b.triangleMaterial);
+    ASSERT_EQ(a.objects.size(), b.objects.size());
+    for (std::size_t o = 0; o < a.objects.size(); ++o) {
+        EXPECT_EQ(a.objects[o].name, b.objects[o].name);
+        EXPECT_EQ(a.objects[o].firstTriangle, b.objects[o].firstTriangle);
+    }
     ASSERT_EQ(a.normals.size(), b.normals.size());
     ASSERT_EQ(a.uvs.size(), b.uvs.size());
     ASSERT_EQ(a.colors.size(), b.colors.size());
@@ -217,7 +222,10 @@ Json checkGlbLayout(const std::string& b) {
                 << "a vertex view shared by accessors needs a byteStride";
         }
     }
-    for (const Json& prim : json["meshes"][0]["primitives"]) {
+    std::vector<Json> primitives;
+    for (const Json& mesh : json["meshes"])
+        primitives.insert(primitives.end(), mesh["primitives"].begin(), mesh["primitives"].end());
+    for (const Json& prim : primitives) {
         const Json& pos = json["accessors"][prim["attributes"]["POSITION"].get<std::size_t>()];
         EXPECT_TRUE(pos.contains("min") && pos.contains("max")) << "POSITION needs min and max";
         // min and max are exactly the extremes of the data.
@@ -251,8 +259,12 @@ Json checkGlbLayout(const std::string& b) {
     }
     EXPECT_EQ(json["scene"], 0);
     EXPECT_EQ(json["scenes"].size(), 1u);
-    EXPECT_EQ(json["nodes"].size(), 1u);
-    EXPECT_EQ(json["meshes"].size(), 1u);
+    // A node and a mesh per named object (one without), each node in the scene.
+    EXPECT_GE(json["nodes"].size(), 1u);
+    EXPECT_EQ(json["meshes"].size(), json["nodes"].size());
+    EXPECT_EQ(json["scenes"][0]["nodes"].size(), json["nodes"].size());
+    for (std::size_t n = 0; n < json["nodes"].size(); ++n)
+        EXPECT_EQ(json["nodes"][n]["mesh"], n);
     return json;
 }
 
@@ -287,6 +299,7 @@ TEST(GltfExportTest, ManyNodesAndMaterialsRoundTrip) {
     core::Result<core::Mesh> original = core::loadMesh(model.string());
     ASSERT_TRUE(original.ok()) << original.error();
     original->source.reset(); // the flattened writer (gltf_write_back_test.cpp: the scene's)
+    EXPECT_GT(original->objects.size(), 10u) << "the engine's named nodes";
     TempDir dir;
     const core::Mesh back = roundTrip(*original, dir, "engine.glb");
     expectSameMesh(*original, back);

@@ -407,6 +407,30 @@ TEST(Importer, ItsOutputIsCheckedAsAFilesMeshIs) {
     EXPECT_EQ(mesh.error(), model + ": the importer stopped: it sent more after its answer");
 }
 
+TEST(Importer, NamedObjectsArriveAndObjectsOutOfOrderAreRefused) {
+    TempDir dir;
+    const std::string model = dir.file("model.obj");
+    writeFile(model, kTriangleObj);
+    core::Mesh named = triangle();
+    named.objects = {{"Körper", 0}};
+    writeFrames(dir.file("named"), named);
+    core::Mesh unordered = triangle();
+    unordered.objects = {{"a", 0}, {"b", 0}};
+    writeFrames(dir.file("unordered"), unordered);
+
+    ImporterOverride good(script(dir, "importer-named", "exec cat '" + dir.file("named") + "'\n"));
+    const core::Result<core::Mesh> mesh = core::loadMesh(model);
+    ASSERT_TRUE(mesh.ok()) << mesh.error();
+    ASSERT_EQ(mesh->objects.size(), 1u);
+    EXPECT_EQ(mesh->objects[0].name, "Körper");
+
+    ImporterOverride bad(
+        script(dir, "importer-unordered", "exec cat '" + dir.file("unordered") + "'\n"));
+    const core::Result<core::Mesh> refused = core::loadMesh(model);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error(), model + ": the importer stopped: it sent malformed objects");
+}
+
 TEST(Importer, AHangingImporterIsKilledAtTheDeadline) {
     TempDir dir;
     const std::string model = dir.file("model.obj");
