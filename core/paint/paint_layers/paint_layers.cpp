@@ -260,47 +260,6 @@ void PaintLayerStack::compositeTexel(std::uint32_t page, int x, int y, std::size
     }
 }
 
-void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
-    const PageSize size = m_pages.at(page);
-    const int across = (size.width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile;
-    if (across == 0)
-        return;
-    const int x0 = int(tile % std::uint32_t(across)) * TiledPlane::kPlaneTile;
-    const int y0 = int(tile / std::uint32_t(across)) * TiledPlane::kPlaneTile;
-    const int x1 = std::min(size.width, x0 + TiledPlane::kPlaneTile),
-              y1 = std::min(size.height, y0 + TiledPlane::kPlaneTile);
-    std::size_t end = 0; // layers above the last one touching this tile change nothing here
-    for (std::size_t l = 0; l < m_layers.size(); ++l)
-        if (m_layers[l]->touchesTile(page, tile))
-            end = l + 1;
-    std::array<float, 5> values{};
-    for (int y = y0; y < y1; ++y)
-        for (int x = x0; x < x1; ++x) {
-            const std::size_t i = (std::size_t(y) * std::size_t(size.width) + std::size_t(x)) * 4;
-            if (end == 0) {
-                std::copy_n(m_baseColor[page].data() + i, 4,
-                            m_compositeColor[page].rgba.data() + i);
-                if (hasMaterialChannels())
-                    std::copy_n(m_baseMetallicRoughness[page].data() + i, 4,
-                                m_compositeMr[page].rgba.data() + i);
-                continue;
-            }
-            compositeTexel(page, x, y, end, values);
-            std::uint8_t* color = m_compositeColor[page].rgba.data() + i;
-            color[0] = toByte(values[0]);
-            color[1] = toByte(values[1]);
-            color[2] = toByte(values[2]);
-            color[3] = m_baseColor[page][i + 3];
-            if (hasMaterialChannels()) {
-                std::uint8_t* mr = m_compositeMr[page].rgba.data() + i;
-                mr[0] = m_baseMetallicRoughness[page][i];
-                mr[1] = toByte(values[3]);
-                mr[2] = toByte(values[4]);
-                mr[3] = m_baseMetallicRoughness[page][i + 3];
-            }
-        }
-}
-
 std::vector<TileKey> PaintLayerStack::allTiles() const {
     std::vector<TileKey> tiles;
     for (std::uint32_t p = 0; p < m_pages.size(); ++p) {

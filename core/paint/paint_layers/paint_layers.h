@@ -147,7 +147,10 @@ public:
     /** Removes the mask of layer index; the layer shows everywhere again. */
     std::unique_ptr<TiledPlane> takeMask(std::size_t index);
 
-    /** Recomputes tile (TiledPlane tiling) of page in the composite. */
+    /**
+     * Recomputes tile (TiledPlane tiling) of page in the composite; may run on several threads
+     * for different tiles.
+     */
     void updateTile(std::uint32_t page, std::uint32_t tile);
 
     /**
@@ -163,7 +166,8 @@ public:
     void dropStrokeCache();
     /**
      * Recomputes the texels rect (page coordinates, inside tile of page) of the composite, with
-     * the same bytes as updateTile(); during a stroke only the stroke's channels, the others
+     * the same bytes as updateTile() and compositeTexel(); during a stroke only the stroke's
+     * channels, the others
      * being up to date already. With rows (one per row of rect), only the texels [x0, x1) of
      * each row (page coordinates; x0 >= x1 for none): what a dab wrote, not its bounding box.
      * Calls for different tiles may run on different threads at the same time.
@@ -207,20 +211,33 @@ public:
     /** Bytes held by the layers' planes (not the base or the composite). */
     std::size_t layerBytes() const;
 
-private:
-    std::unique_ptr<PaintLayer> makeLayer(PaintLayerSettings settings);
-    std::unique_ptr<TiledPlane> makePlane(int texelBytes, std::array<std::uint8_t, 4> fill) const;
-    /** The composite values of texel i of page over layers [0, end) (linear 0..1 each). */
+    /**
+     * The composite values of texel (x, y) of page over layers [0, end) (linear 0..1 each),
+     * worked out for that texel alone: the reference whose bytes (layer_bytes::toByte()) the
+     * tile updates give.
+     */
     void compositeTexel(std::uint32_t page, int x, int y, std::size_t end,
                         std::array<float, 5>& values) const;
 
+private:
+    std::unique_ptr<PaintLayer> makeLayer(PaintLayerSettings settings);
+    std::unique_ptr<TiledPlane> makePlane(int texelBytes, std::array<std::uint8_t, 4> fill) const;
+    /**
+     * Recomputes channels of the texels rect (or its rows) of tile of page, blending layers
+     * from `from` on over the values of those below (the base, or kept for the stroke).
+     */
+    void recompute(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                   std::span<const TexelSpan> rows, unsigned channels, std::size_t from);
+
     /**
      * Blends layers [from, to) over values (5 planes of rect.width·rect.height floats: base
-     * colour, roughness, metallic) in the texels rect of tile of page, channels only.
+     * colour, roughness, metallic) in the texels rect of tile of page, channels only. overBase:
+     * values are the base's (baseValues()), so the layers from `from` that are the same in every
+     * texel of the tile (fill layers) give each base byte one value, worked out once per byte.
      */
     void blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect, std::size_t from,
                      std::size_t to, unsigned channels, float* values,
-                     std::span<const TexelSpan> rows = {}) const;
+                     std::span<const TexelSpan> rows = {}, bool overBase = false) const;
     /** Sets values (as blendLayers()) to the base's texels in rect, channels only. */
     void baseValues(std::uint32_t page, const TileRect& rect, unsigned channels, float* values,
                     std::span<const TexelSpan> rows = {}) const;

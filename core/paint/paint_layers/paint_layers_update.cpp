@@ -403,6 +403,58 @@ void composeInLanes(const NormalSources& s, const CompositeTexels& t) {
 }
 #endif
 
+/**
+ * Blends channel c of the layers from `from` on that are the same in every texel of tile of
+ * page (fill layers without a mask or with an unwritten one; layers without channel c there
+ * are passed) over values (n texels a plane), which hold the base's bytes: each base byte's
+ * value is worked out once, with the operations blendLayers() makes per texel, in their order,
+ * so the bytes are the same; then looked up per texel. Returns the first layer not blended.
+ */
+std::size_t foldUniformLayers(std::span<const std::unique_ptr<PaintLayer>> layers,
+                              std::uint32_t page, std::uint32_t tile, std::size_t from,
+                              std::size_t to, std::size_t c, float* values, std::size_t n) {
+    if (!byteRoundTrips())
+        return from;
+    std::array<std::array<float, 256>, 3> table;
+    for (std::array<float, 256>& component : table)
+        for (int b = 0; b < 256; ++b)
+            component[std::size_t(b)] = fromByte(std::uint8_t(b));
+    std::size_t end = from, folded = 0;
+    int comps = 1;
+    std::size_t firstPlane = 0;
+    for (; end < to; ++end) {
+        const std::optional<ChannelSource> src = channelSource(*layers[end], c, page, tile);
+        if (!src)
+            continue;
+        if (src->texels != nullptr || (src->masked && src->mask != nullptr))
+            break; // differs from texel to texel
+        const ChannelSource& s = *src;
+        comps = s.comps;
+        firstPlane = s.first;
+        const std::uint8_t* none = nullptr;
+        const float a = coverageOf(s, 0, none);
+        if (!(a > 0.0f))
+            continue;
+        withMode(layers[end]->settings.blend, [&](auto mode) {
+            constexpr BlendMode kMode = decltype(mode)::value;
+            for (int k = 0; k < s.comps; ++k)
+                for (float& v : table[std::size_t(k)])
+                    v += a * (blendAs<kMode>(v, s.fill[std::size_t(k)]) - v);
+        });
+        ++folded;
+    }
+    // One layer costs a lookup as much as its blend: only runs of more are looked up.
+    if (folded < 2)
+        return from;
+    for (int k = 0; k < comps; ++k) {
+        float* plane = values + (firstPlane + std::size_t(k)) * n;
+        const std::array<float, 256>& component = table[std::size_t(k)];
+        for (std::size_t at = 0; at < n; ++at)
+            plane[at] = component[toByte(plane[at])];
+    }
+    return end;
+}
+
 /** The channels updateRect() recomputes and the first layer it blends over the values below. */
 struct UpdateScope {
     unsigned channels = 0;
@@ -628,20 +680,23 @@ void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsig
 
 void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
                                   std::size_t from, std::size_t to, unsigned channels,
-                                  float* values, std::span<const TexelSpan> rows) const {
+                                  float* values, std::span<const TexelSpan> rows,
+                                  bool overBase) const {
     const std::size_t n = texelsOf(rect, rows);
     const TileRect tr = tileRectOf(m_pages[page], tile);
     const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
-    for (std::size_t l = from; l < to; ++l) {
-        const PaintLayerSettings& st = m_layers[l]->settings;
-        for (std::size_t c = 0; c < channelCount; ++c) {
-            if ((channels & (1u << c)) == 0)
-                continue;
+    // Channel by channel: a channel's values take only its own layers' channel, in their order.
+    for (std::size_t c = 0; c < channelCount; ++c) {
+        if ((channels & (1u << c)) == 0)
+            continue;
+        const std::size_t first =
+            overBase ? foldUniformLayers(m_layers, page, tile, from, to, c, values, n) : from;
+        for (std::size_t l = first; l < to; ++l) {
             const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
             if (!src)
                 continue;
             const ChannelSource& s = *src;
-            withMode(st.blend, [&](auto mode) {
+            withMode(m_layers[l]->settings.blend, [&](auto mode) {
                 constexpr BlendMode kMode = decltype(mode)::value;
                 std::size_t at = 0;
                 for (int y = rect.y; y < rect.y + rect.height; ++y) {
@@ -666,18 +721,24 @@ void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const 
     }
 }
 
+void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
+    const UpdateScope all = updateScope(*this, false, 0, 0);
+    recompute(page, tile, tileRectOf(m_pages.at(page), tile), {}, all.channels, all.from);
+}
+
 void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
                                  std::span<const TexelSpan> rows) {
-    if (rect.width <= 0 || rect.height <= 0)
+    const UpdateScope scope = updateScope(*this, m_inStroke, m_strokeLayer, m_strokeChannels);
+    recompute(page, tile, rect, rows, scope.channels, scope.from);
+}
+
+void PaintLayerStack::recompute(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
+                                std::span<const TexelSpan> rows, unsigned channels,
+                                std::size_t from) {
+    if (rect.width <= 0 || rect.height <= 0 || channels == 0)
         return;
     const TileRect tr = tileRectOf(m_pages.at(page), tile);
     const std::size_t n = texelsOf(rect, rows);
-    // Named, not bound: the lambda below takes them (clang 14 cannot capture bindings).
-    const UpdateScope scope = updateScope(*this, m_inStroke, m_strokeLayer, m_strokeChannels);
-    const unsigned channels = scope.channels;
-    const std::size_t from = scope.from;
-    if (channels == 0)
-        return;
     const std::size_t end = touchingEnd(m_layers, page, tile);
     if (end == 0 && byteRoundTrips()) {
         copyBase(page, rect, channels, rows);
@@ -701,16 +762,16 @@ void PaintLayerStack::updateRect(std::uint32_t page, std::uint32_t tile, const T
             keptBelow(m_below, m_belowLock, (std::uint64_t(page) << 32) | tile,
                       5 * std::size_t(tr.width) * std::size_t(tr.height), [&](float* below) {
                           baseValues(page, tr, channels, below);
-                          blendLayers(page, tile, tr, 0, from, channels, below);
+                          blendLayers(page, tile, tr, 0, from, channels, below, {}, true);
                       });
         if (kept != nullptr) {
             copyKept(*kept, tr, rect, rows, channels, values, n);
         } else {
             baseValues(page, rect, channels, values, rows);
-            blendLayers(page, tile, rect, 0, from, channels, values, rows);
+            blendLayers(page, tile, rect, 0, from, channels, values, rows, true);
         }
     }
-    blendLayers(page, tile, rect, from, std::max(from, end), channels, values, rows);
+    blendLayers(page, tile, rect, from, std::max(from, end), channels, values, rows, !belowTouches);
     const PageBytes pixels = pageBytes(page, channels);
     storeValues(values, n,
                 {rect, rows, tr, channels, pixels.width, pixels.baseColor, pixels.color,

@@ -3,6 +3,7 @@
 // stroke's kept per tile, only the dab's rectangle and channels blended): after every dab of
 // strokes over a stack of several blend modes, opacities, masks, hidden and locked layers, with
 // layer changes, undo and redo in between, every byte of the composite equals a full recompute.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@ namespace composite_update_test {
 using core::BlendMode;
 using core::PaintLayerKind;
 using core::PaintLayerSettings;
+using core::layer_bytes::toByte;
 
 constexpr int kWidth = 64, kHeight = 64;
 
@@ -57,22 +59,35 @@ protected:
         return *dynamic_cast<core::TextureTarget*>(m_doc.paintTarget());
     }
 
-    /** The composite is what a full recompute of every tile gives, byte for byte. */
+    /**
+     * The composite is what every texel worked out alone gives (compositeTexel()), byte for
+     * byte, and so is a full recompute of every tile.
+     */
     void expectFullRecompute(const std::string& what) {
         core::PaintLayerStack& stack = target().paintLayerStack();
-        const std::vector<std::uint8_t> color = stack.compositeBaseColor(0);
-        const std::vector<std::uint8_t> mr = stack.compositeMetallicRoughness(0);
+        expectReferenceBytes(stack, what);
         stack.updateAll();
-        const std::vector<std::uint8_t>& fullColor = stack.compositeBaseColor(0);
-        const std::vector<std::uint8_t>& fullMr = stack.compositeMetallicRoughness(0);
+        expectReferenceBytes(stack, what + ", recomputed");
+        ++m_checks;
+    }
+
+    static void expectReferenceBytes(const core::PaintLayerStack& stack, const std::string& what) {
+        const std::vector<std::uint8_t>& color = stack.compositeBaseColor(0);
+        const std::vector<std::uint8_t>& mr = stack.compositeMetallicRoughness(0);
+        const int width = stack.pages()[0].width, height = stack.pages()[0].height;
         std::size_t colorDiffs = 0, mrDiffs = 0;
-        for (std::size_t i = 0; i < color.size(); ++i) {
-            colorDiffs += color[i] != fullColor[i] ? 1 : 0;
-            mrDiffs += mr[i] != fullMr[i] ? 1 : 0;
-        }
+        std::array<float, 5> values{};
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                stack.compositeTexel(0, x, y, stack.size(), values);
+                const std::size_t i = (std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4;
+                for (int k = 0; k < 3; ++k)
+                    colorDiffs += color[i + std::size_t(k)] != toByte(values[std::size_t(k)]);
+                if (!mr.empty())
+                    mrDiffs += (mr[i + 1] != toByte(values[3])) + (mr[i + 2] != toByte(values[4]));
+            }
         EXPECT_EQ(colorDiffs, 0u) << what << ": base colour bytes differ";
         EXPECT_EQ(mrDiffs, 0u) << what << ": metallic-roughness bytes differ";
-        ++m_checks;
     }
 
     /** A stroke through points, checked against a full recompute after every move. */
@@ -273,6 +288,34 @@ TEST_F(CompositeUpdateTest, NormalLayersOverTheBaseInOnePassGiveTheFullRecompute
     undo("B locked");
     redo("B locked");
     EXPECT_GE(m_changed, 6) << "the strokes changed the composite";
+}
+
+// More fill layers than one pass per texel takes, in every blend mode, are worked out once per
+// base byte and tile: the bytes are still those of every texel worked out alone, with a stroke
+// below them, between them and on a mask of one of them.
+TEST_F(CompositeUpdateTest, ManyFillLayersGiveTheBytesOfEveryTexelAlone) {
+    const BlendMode modes[] = {BlendMode::Normal,    BlendMode::Multiply,  BlendMode::Screen,
+                               BlendMode::Overlay,   BlendMode::SoftLight, BlendMode::Add,
+                               BlendMode::Subtract,  BlendMode::Darken,    BlendMode::Lighten,
+                               BlendMode::Difference};
+    const std::uint64_t below = add("below", BlendMode::Normal, 0.8f);
+    std::uint64_t masked = 0;
+    for (int i = 0; i < 30; ++i) {
+        const std::uint64_t id = add("fill " + std::to_string(i), modes[i % 10],
+                                     0.3f + 0.02f * float(i), PaintLayerKind::Fill);
+        masked = i == 12 ? id : masked;
+    }
+    expectFullRecompute("30 fill layers");
+    select(below);
+    stroke("under 30 fill layers", kAcross);
+    core::PaintChanges changes;
+    ASSERT_TRUE(m_doc.addPaintLayerMask(masked, changes).ok());
+    select(masked, true);
+    m_doc.brush().color = {0.2f, 0.2f, 0.2f, 1.0f};
+    stroke("the mask of a fill layer between the others", kDown);
+    select(add("top", BlendMode::Multiply, 0.7f));
+    stroke("over 30 fill layers", kDiagonal);
+    EXPECT_GE(m_changed, 2) << "the strokes changed the composite";
 }
 
 // One paint layer at full opacity over the base, the composite's case in lanes: texels the layer
