@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include "core/io/export.h"
+#include "core/io/gltf/glb_container.h"
 #include "core/io/image/image_encode.h"
 #include "core/io/project/project_file.h"
 #include "tests/app/cli_run.h"
@@ -126,6 +127,43 @@ TEST_F(CliTips, ALoadedTipIsKeptInTheProject) {
     ASSERT_TRUE(again.ok()) << again.error();
     ASSERT_TRUE(again->state && again->state->brush.userTip);
     EXPECT_EQ(*again->state->brush.userTip, expected);
+}
+
+TEST_F(CliTips, AProjectWhoseTipCannotBeReadOpensWithTheRoundTipAndSaysSo) {
+    core::Image dot{8, 8, {}};
+    for (int i = 0; i < 8 * 8; ++i)
+        dot.rgba.insert(dot.rgba.end(), {0, 0, 0, 255}); // black: paints everywhere
+    auto png = core::encodeImage(dot, core::ExportFormat::Png8);
+    ASSERT_TRUE(png.ok()) << png.error();
+    std::ofstream(file("dot.png"), std::ios::binary)
+        .write(reinterpret_cast<const char*>(png->data()), std::streamsize(png->size()));
+    CliRun r;
+    ASSERT_FALSE(paint({{"op", "set-brush"}, {"tip", file("dot.png")}}, "dot", &r).empty())
+        << r.err;
+
+    // The project's tip points at an image it does not have.
+    std::ifstream in(file("dot.glb"), std::ios::binary);
+    const std::vector<std::uint8_t> bytes{std::istreambuf_iterator<char>(in), {}};
+    const auto layout = core::glb::readContainer(bytes);
+    ASSERT_TRUE(layout.ok()) << layout.error();
+    json gltf =
+        json::parse(bytes.begin() + std::ptrdiff_t(layout->jsonOffset),
+                    bytes.begin() + std::ptrdiff_t(layout->jsonOffset + layout->jsonLength));
+    gltf["asset"]["extras"]["layerpaint"]["brush"]["tip_image"] = 9999;
+    const std::vector<std::uint8_t> edited = core::glb::replaceJson(bytes, *layout, gltf.dump());
+    std::ofstream(file("dot.glb"), std::ios::binary | std::ios::trunc)
+        .write(reinterpret_cast<const char*>(edited.data()), std::streamsize(edited.size()));
+
+    const CliRun exported =
+        cli_test::runCli({"export", file("dot.glb"), "--out", file("dot-out.png")}, m_dir);
+    EXPECT_EQ(exported.exitCode, 0) << exported.err;
+    EXPECT_NE(exported.err.find("layerpaint-cli: warning: " + file("dot.glb")), std::string::npos)
+        << exported.err;
+    EXPECT_NE(exported.err.find("the brush uses the round tip"), std::string::npos) << exported.err;
+    const auto project = core::loadProject(file("dot.glb"));
+    ASSERT_TRUE(project.ok()) << project.error();
+    ASSERT_TRUE(project->state.has_value());
+    EXPECT_EQ(project->state->brush.tip, "round");
 }
 
 TEST_F(CliTips, ABadTipFileIsOneErrorNamingIt) {
