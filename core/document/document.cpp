@@ -17,6 +17,10 @@ Document::Document()
 
 void Document::setMesh(Mesh mesh, std::string name) {
     auto topology = std::make_shared<const MeshTopology>(buildMeshTopology(mesh));
+    setMesh(std::move(mesh), std::move(name), std::move(topology));
+}
+
+void Document::setMesh(Mesh mesh, std::string name, std::shared_ptr<const MeshTopology> topology) {
     m_mesh = std::make_shared<const Mesh>(std::move(mesh));
     m_topology = std::move(topology);
     m_name = std::move(name);

@@ -44,6 +44,8 @@ public:
      * the model's default view (resetCamera()).
      */
     void setMesh(Mesh mesh, std::string name);
+    /** setMesh() with mesh's topology made already (buildMeshTopology() of this mesh). */
+    void setMesh(Mesh mesh, std::string name, std::shared_ptr<const MeshTopology> topology);
     /**
      * The default view of the model: perspective, looking along -Z with Y up, its bounding
      * sphere framed with kFrameMargin for the view aspect (setViewAspect()).

@@ -285,17 +285,32 @@ bool MeshTopology::showsBackFace(std::uint32_t t) const {
 }
 
 MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance) {
+    return *buildMeshTopology(mesh, ProgressFn{}, weldTolerance);
+}
+
+std::optional<MeshTopology> buildMeshTopology(const Mesh& mesh, const ProgressFn& progress,
+                                              float weldTolerance) {
     MeshTopology topo;
     weldVertices(mesh, weldTolerance, topo);
+    if (!reportProgress(progress, 0.35))
+        return std::nullopt;
     const std::uint32_t cornerVertexCount = assignCorners(mesh, topo);
+    if (!reportProgress(progress, 0.5))
+        return std::nullopt;
     linkEdgeNeighbors(topo);
+    if (!reportProgress(progress, 0.7))
+        return std::nullopt;
     numberComponents(cornerVertexCount, topo);
+    if (!reportProgress(progress, 0.8))
+        return std::nullopt;
     const std::size_t triangleCount = mesh.triangleCount();
     topo.planes.resize(triangleCount);
     parallelRanges(int(triangleCount), 0, [&](int, int begin, int end) {
         for (std::size_t t = std::size_t(begin); t < std::size_t(end); ++t)
             topo.planes[t] = trianglePlane(mesh, t);
     });
+    if (!reportProgress(progress, 0.9))
+        return std::nullopt;
     topo.shownBackFaces = listShownBackFaces(mesh, topo);
     return topo;
 }

@@ -3,9 +3,12 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/vec4.hpp>
+
+#include "core/base/progress.h"
 
 #include "core/model/mesh.h"
 
@@ -63,5 +66,11 @@ glm::vec4 trianglePlane(const Mesh& mesh, std::size_t t);
  * (run Mesh::validate() first); an empty mesh gives an empty topology.
  */
 MeshTopology buildMeshTopology(const Mesh& mesh, float weldTolerance = 1e-5f);
+/**
+ * buildMeshTopology() reporting its progress between its steps: nullopt as soon as progress
+ * returns false (cancelled).
+ */
+std::optional<MeshTopology> buildMeshTopology(const Mesh& mesh, const ProgressFn& progress,
+                                              float weldTolerance = 1e-5f);
 
 } // namespace core

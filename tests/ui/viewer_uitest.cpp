@@ -523,6 +523,11 @@ TEST(ModelLoaderTest, CancelAndSupersede) {
     QTest::qWait(50); // let a stray result of the first load show up if there were one
     ASSERT_EQ(loaded.size(), 1);
     EXPECT_EQ(loaded.first().first().toString(), QStringLiteral("builtin:hexring"));
+    // The topology was made in the background too, of the mesh delivered.
+    const auto mesh = loaded.first().at(1).value<std::shared_ptr<core::Mesh>>();
+    const auto topology = loaded.first().at(2).value<std::shared_ptr<const core::MeshTopology>>();
+    ASSERT_TRUE(mesh && topology);
+    EXPECT_EQ(topology->planes.size(), mesh->triangleCount());
     EXPECT_TRUE(failed.isEmpty());
     EXPECT_EQ(cancelled.size(), 1);
 

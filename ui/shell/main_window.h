@@ -331,6 +331,7 @@ private:
     void updateWindowTitle();
 
     void onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                  std::shared_ptr<const core::MeshTopology> topology,
                   std::shared_ptr<const core::ProjectState> state);
     void onLoadFailed(const QString& source, const QString& message);
     void onLoadCancelled(const QString& source);

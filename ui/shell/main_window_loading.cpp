@@ -33,6 +33,7 @@ constexpr int kProgressDelayMs = 400; // quick loads finish without a dialog fla
 } // namespace
 
 void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                          std::shared_ptr<const core::MeshTopology> topology,
                           std::shared_ptr<const core::ProjectState> state) {
     stopProgress();
     // Recovered work is shown under its own name: the project it belongs to, else the model it
@@ -62,7 +63,7 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     m_document->setPaintOptions(m_paintOptions);
     m_targetJob->cancel(); // a layout for the previous model
     // This window is the loader's only listener: the mesh moves into the document.
-    m_document->setMesh(std::move(*mesh), m_source.toStdString());
+    m_document->setMesh(std::move(*mesh), m_source.toStdString(), std::move(topology));
     if (state) {
         applyProjectState(*state);
     } else {

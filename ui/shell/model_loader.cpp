@@ -25,8 +25,12 @@ struct ModelLoader::Job {
     QFuture<void> future;
 };
 
+// What the file takes of a load's progress; the mesh's topology takes the rest.
+constexpr double kFileShare = 0.85;
+
 struct ModelLoader::Outcome {
     std::optional<core::Mesh> mesh;
+    std::shared_ptr<const core::MeshTopology> topology;
     std::shared_ptr<const core::ProjectState> state;
     std::string error;
 };
@@ -59,8 +63,18 @@ void ModelLoader::load(const QString& source) {
         m_pool, this,
         [outcome, path](const core::ProgressFn& progress) {
             try {
-                core::Result<core::Project> result = core::loadProject(path, progress);
+                core::Result<core::Project> result = core::loadProject(
+                    path, [&progress](double f) { return progress(kFileShare * f); });
+                std::optional<core::MeshTopology> topology;
+                if (result)
+                    topology = core::buildMeshTopology(result->mesh, [&progress](double f) {
+                        return progress(kFileShare + (1.0 - kFileShare) * f);
+                    });
+                if (result && !topology)
+                    return; // cancelled
                 if (result) {
+                    outcome->topology =
+                        std::make_shared<const core::MeshTopology>(std::move(*topology));
                     outcome->mesh.emplace(std::move(result->mesh));
                     if (result->state)
                         outcome->state =
@@ -114,7 +128,7 @@ void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
         emit cancelled(source);
     else if (outcome->mesh)
         emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)),
-                    outcome->state);
+                    outcome->topology, outcome->state);
     else
         emit failed(source, QString::fromStdString(outcome->error));
 }

@@ -12,12 +12,14 @@
 
 #include "core/io/project/project_file.h"
 #include "core/model/mesh.h"
+#include "core/model/mesh_topology.h"
 
 namespace ui {
 
 /**
- * Loads models and projects with core::loadProject in the background (runInBackground()) and
- * reports back on the GUI thread, so the event loop never waits for a file. One load is current at
+ * Loads models and projects with core::loadProject, and makes their topology, in the background
+ * (runInBackground()) and reports back on the GUI thread, so the event loop never waits for a
+ * file. One load is current at
  * a time: starting another cancels the previous one and drops its result.
  */
 class ModelLoader : public QObject {
@@ -40,8 +42,12 @@ public:
     double progress() const;
 
 signals:
-    /** state is the project's (a LayerPaint project), or null for a plain model. */
+    /**
+     * The mesh with its topology (made in the background too), and state the project's (a
+     * LayerPaint project) or null for a plain model.
+     */
     void loaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
+                std::shared_ptr<const core::MeshTopology> topology,
                 std::shared_ptr<const core::ProjectState> state);
     /** message comes from core and names the file. */
     void failed(const QString& source, const QString& message);
