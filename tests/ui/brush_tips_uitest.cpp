@@ -14,6 +14,7 @@
 #include <QSpinBox>
 #include <QTest>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <vector>
@@ -131,6 +132,39 @@ TEST_F(BrushTipsTest, AChosenTipPaintsTheStroke) {
     const QString shot = QDir::temp().filePath(QStringLiteral("layerpaint_brush_tips.png"));
     if (viewport()->grabFramebuffer().save(shot))
         std::printf("[ picture ] %s\n", qPrintable(shot));
+}
+
+TEST_F(BrushTipsTest, AChosenTipComesWithTheSpacingAndJitterThatMakeItLookLikeItself) {
+    openTrefoil();
+    auto* spacing = m_window->findChild<QSpinBox*>(QStringLiteral("brushPanelSpacing"));
+    auto* scatter = m_window->findChild<QSpinBox*>(QStringLiteral("brushTipJitterScatter"));
+    ASSERT_TRUE(spacing && scatter);
+    for (const QString& tip : {QStringLiteral("spatter"), QStringLiteral("chalk"),
+                               QStringLiteral("bristle"), QStringLiteral("round")}) {
+        chooseTip(tip);
+        const core::TipCharacter expected = core::tipCharacter(tip.toStdString());
+        const core::Brush& brush = document().brush();
+        EXPECT_FLOAT_EQ(brush.spacing, expected.spacing) << tip.toStdString();
+        EXPECT_EQ(brush.angleMode, expected.angleMode) << tip.toStdString();
+        EXPECT_EQ(brush.jitter, expected.jitter) << tip.toStdString();
+        // The panels show what the brush has.
+        EXPECT_EQ(spacing->value(), int(std::lround(expected.spacing * 100.0f)));
+        EXPECT_EQ(scatter->value(), int(std::lround(expected.jitter.scatter * 100.0f)));
+    }
+    EXPECT_FLOAT_EQ(core::tipCharacter("spatter").spacing, 0.5f); // apart, as spatter looks
+    EXPECT_GT(core::tipCharacter("spatter").jitter.scatter, 0.0f);
+
+    // The artist's own spacing then stays while other settings change.
+    QTest::mouseDClick(spacing, Qt::LeftButton);
+    QTest::keyClick(spacing, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(spacing, QStringLiteral("40"));
+    QTest::keyClick(spacing, Qt::Key_Return);
+    QTest::mouseDClick(scatter, Qt::LeftButton);
+    QTest::keyClick(scatter, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(scatter, QStringLiteral("20"));
+    QTest::keyClick(scatter, Qt::Key_Return);
+    EXPECT_FLOAT_EQ(document().brush().spacing, 0.4f);
+    EXPECT_FLOAT_EQ(document().brush().jitter.scatter, 0.2f);
 }
 
 } // namespace brush_tips_uitest

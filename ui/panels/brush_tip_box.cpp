@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <memory>
+#include <utility>
 
 #include "core/io/project/project_file_tip.h"
 #include "ui/panels/value_spin_box.h"
@@ -191,7 +192,9 @@ void BrushTipBox::addUserItem() {
     item->setToolTip(QString::fromStdString(m_tip.userTipName));
 }
 
-void BrushTipBox::apply(core::Brush& brush) const {
+void BrushTipBox::apply(core::Brush& brush) {
+    if (m_chosenSpacing)
+        brush.spacing = *std::exchange(m_chosenSpacing, std::nullopt);
     brush.tip = m_tip.tip;
     brush.angleMode = m_tip.angleMode;
     brush.angle = m_tip.angle;
@@ -204,8 +207,22 @@ void BrushTipBox::apply(core::Brush& brush) const {
 void BrushTipBox::readControls() {
     if (m_updating)
         return;
-    if (const QListWidgetItem* item = m_tips->currentItem())
-        m_tip.tip = item->data(Qt::UserRole).toString().toStdString();
+    if (const QListWidgetItem* item = m_tips->currentItem()) {
+        const std::string tip = item->data(Qt::UserRole).toString().toStdString();
+        if (tip != m_tip.tip && core::isBuiltinTip(tip)) {
+            // A tip chosen comes with the spacing, turn and jitter that make it look like itself.
+            const core::TipCharacter character = core::tipCharacter(tip);
+            m_tip.tip = tip;
+            m_tip.angleMode = character.angleMode;
+            m_tip.jitter = character.jitter;
+            m_chosenSpacing = character.spacing;
+            show(m_tip);
+            remember();
+            emit changed();
+            return;
+        }
+        m_tip.tip = tip;
+    }
     m_tip.angleMode = core::TipAngleMode(m_angleMode->currentData().toInt());
     m_tip.angle = float(m_angle->value());
     m_tip.jitter.size = float(m_jitterSize->value()) / 100.0f;

@@ -5,6 +5,8 @@
 #include <QGroupBox>
 #include <QThreadPool>
 
+#include <optional>
+
 #include "core/paint/brush/dab.h"
 
 class QComboBox;
@@ -28,8 +30,11 @@ public:
 
     /** Shows brush's tip settings (without emitting changed()). */
     void show(const core::Brush& brush);
-    /** Writes the box's tip settings into brush. */
-    void apply(core::Brush& brush) const;
+    /**
+     * Writes the box's tip settings into brush, and the spacing of a built-in tip just chosen
+     * (core::tipCharacter(): choosing a tip sets its spacing, turn and jitter).
+     */
+    void apply(core::Brush& brush);
     /** Settings remembered from the last session (the built-in tip, angle, jitter, seed). */
     void restore(core::Brush& brush) const;
 
@@ -58,7 +63,8 @@ private:
     QSpinBox* m_jitterAngle = nullptr;
     QSpinBox* m_jitterScatter = nullptr;
     QSpinBox* m_seed = nullptr;
-    core::Brush m_tip; // the tip fields shown (the rest unused)
+    core::Brush m_tip;                    // the tip fields shown (the rest unused)
+    std::optional<float> m_chosenSpacing; // a tip's, chosen since the last apply()
     bool m_updating = false;
     QThreadPool m_pool;
 };

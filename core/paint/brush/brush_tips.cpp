@@ -157,6 +157,22 @@ bool isBuiltinTip(std::string_view name) {
     return std::find(kNames.begin(), kNames.end(), name) != kNames.end();
 }
 
+TipCharacter tipCharacter(std::string_view name) {
+    TipCharacter c;
+    if (name == "spatter") {
+        c = {0.5f, TipAngleMode::Random, {0.5f, 0.0f, 0.0f, 1.0f}};
+    } else if (name == "chalk") {
+        c = {0.25f, TipAngleMode::Random, {0.1f, 0.4f, 0.0f, 0.0f}};
+    } else if (name == "bristle") {
+        c = {0.1f, TipAngleMode::Stroke, {}};
+    } else if (name == "star") {
+        c = {0.9f, TipAngleMode::Random, {0.3f, 0.0f, 0.0f, 0.5f}};
+    } else if (name == "noise") {
+        c = {0.3f, TipAngleMode::Random, {0.0f, 0.2f, 0.0f, 0.0f}};
+    }
+    return c;
+}
+
 const TipImage* builtinTipImage(std::string_view name) {
     // Made once, on first use; the round tips (the first three) have none.
     static const std::array<TipImage, kNames.size()> images = [] {

@@ -55,6 +55,19 @@ inline constexpr std::string_view kUserTip = "user";
 /** The built-in tips in display order: the round ones first, then the textured ones. */
 std::span<const std::string_view> builtinTipNames();
 bool isBuiltinTip(std::string_view name);
+/** How a built-in tip is laid along a stroke so that it looks like itself. */
+struct TipCharacter {
+    float spacing = 0.15f; // as Brush::spacing
+    TipAngleMode angleMode = TipAngleMode::Fixed;
+    BrushJitter jitter;
+};
+/**
+ * The spacing, turn and jitter of built-in tip name, which choosing it in the Brush panel sets:
+ * textured tips need their dabs apart and varied, or they paint a solid, streaky line. The
+ * round tips' (and an unknown name's) are the brush's defaults.
+ */
+TipCharacter tipCharacter(std::string_view name);
+
 /**
  * The procedurally made image of a built-in textured tip (deterministic, the same on every
  * machine); nullptr for the round tips and unknown names.
