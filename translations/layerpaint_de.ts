@@ -1528,6 +1528,22 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Add a Paint Layer Above</source>
         <translation>Malschicht darüber hinzufügen</translation>
     </message>
+    <message>
+        <source>Painting the mask of “%1”</source>
+        <translation>Male in die Maske von „%1“</translation>
+    </message>
+    <message>
+        <source>Painting “%1”</source>
+        <translation>Male in „%1“</translation>
+    </message>
+    <message>
+        <source>Strokes paint the mask: black hides the paint layer, white shows it</source>
+        <translation>Striche malen die Maske: Schwarz verbirgt die Malschicht, Weiß zeigt sie</translation>
+    </message>
+    <message>
+        <source>Strokes paint this paint layer</source>
+        <translation>Striche malen in diese Malschicht</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -1526,6 +1526,22 @@ connectivity %3 ms, regions %4 ms
         <source>Add a Paint Layer Above</source>
         <translation>在上方添加绘画层</translation>
     </message>
+    <message>
+        <source>Painting the mask of “%1”</source>
+        <translation>正在绘制“%1”的遮罩</translation>
+    </message>
+    <message>
+        <source>Painting “%1”</source>
+        <translation>正在绘制“%1”</translation>
+    </message>
+    <message>
+        <source>Strokes paint the mask: black hides the paint layer, white shows it</source>
+        <translation>笔画绘制遮罩：黑色隐藏绘画层，白色显示绘画层</translation>
+    </message>
+    <message>
+        <source>Strokes paint this paint layer</source>
+        <translation>笔画绘制此绘画层</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>

@@ -17,6 +17,7 @@
 #include <QDrag>
 #include <QFileDialog>
 #include <QImage>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QProcess>
@@ -266,6 +267,49 @@ TEST_F(PaintLayersUiTest, AddPaintMultiplyHideAndUndoEachStep) {
     EXPECT_EQ(stack().baseColor(0), base);
     EXPECT_EQ(list->topLevelItemCount(), 1);
     EXPECT_EQ(undoStack->index(), steps);
+}
+
+TEST_F(PaintLayersUiTest, WhatStrokesPaintIsFramedInAmberAndSaidInTheStatusBar) {
+    QTest::keyClick(m_window.get(), Qt::Key_N, Qt::ControlModifier | Qt::ShiftModifier);
+    ASSERT_NE(texture(), nullptr);
+    const std::uint64_t id = stack().layer(0).id;
+    const QString name = QString::fromStdString(stack().layer(0).settings.name);
+    panel().addMaskAction()->trigger();
+    ASSERT_TRUE(stack().layer(0).mask);
+    auto* info = m_window->findChild<QLabel*>(QStringLiteral("paintIntoInfo"));
+    ASSERT_NE(info, nullptr);
+    QTreeWidget* list = panel().list();
+    const auto columnPoint = [&](int column) {
+        const QRect row = list->visualItemRect(panel().rowOf(id));
+        return QPoint(list->columnViewportPosition(column) + list->columnWidth(column) / 2,
+                      row.center().y());
+    };
+    // The amber frame's corner, on the thumbnail painted and not on the other.
+    const auto amber = [&](int column) {
+        const QImage icon = panel().rowOf(id)->icon(column).pixmap(32, 32).toImage();
+        const QColor corner = icon.pixelColor(1, 1);
+        return corner.red() > 200 && corner.green() > 120 && corner.green() < 190 &&
+               corner.blue() < 60;
+    };
+
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      columnPoint(Panel::MaskColumn));
+    ASSERT_EQ(texture()->selection(), (core::PaintSelection{id, true}));
+    EXPECT_EQ(info->text(), QStringLiteral("Painting the mask of “%1”").arg(name));
+    EXPECT_TRUE(amber(Panel::MaskColumn));
+    EXPECT_FALSE(amber(Panel::ThumbnailColumn));
+
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      columnPoint(Panel::NameColumn));
+    ASSERT_EQ(texture()->selection(), (core::PaintSelection{id, false}));
+    EXPECT_EQ(info->text(), QStringLiteral("Painting “%1”").arg(name));
+    EXPECT_TRUE(amber(Panel::ThumbnailColumn));
+    EXPECT_FALSE(amber(Panel::MaskColumn));
+
+    // Base: nothing to say.
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
+                      list->visualItemRect(panel().rowOf(0)).center());
+    EXPECT_TRUE(info->text().isEmpty());
 }
 
 TEST_F(PaintLayersUiTest, TheTextureSetBoxChoosesWhichSetsPaintTheThumbnailsShow) {

@@ -6,6 +6,7 @@
 #include <QPalette>
 
 #include <algorithm>
+#include <utility>
 
 namespace ui {
 
@@ -73,6 +74,35 @@ void frame(QImage& image, const QColor& color, int width) {
     painter.drawRect(QRectF(half, half, image.width() - width, image.height() - width));
 }
 
+/** The width of the frame around the thumbnail strokes paint. */
+constexpr int kTargetFrame = 3;
+
+/** The side of a thumbnail's picture: inside the frame of the one strokes paint. */
+int pictureSide(int size, bool painted) {
+    return painted ? std::max(1, size - 2 * kTargetFrame) : size;
+}
+
+/**
+ * picture framed: for the thumbnail strokes paint (painted), a size² image with the picture
+ * inside an amber frame with a dark inner line, which stands out on any picture and on the
+ * selected row's highlight alike; else the picture with a thin grey frame.
+ */
+QImage framed(QImage picture, int size, bool painted) {
+    if (!painted) {
+        frame(picture, QColor(128, 128, 128), 1);
+        return picture;
+    }
+    QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(QColor(255, 153, 0));
+    QPainter painter(&image);
+    painter.drawImage(kTargetFrame, kTargetFrame, picture);
+    painter.setPen(QPen(QColor(40, 40, 40), 1));
+    painter.setBrush(Qt::NoBrush);
+    painter.drawRect(
+        QRectF(kTargetFrame - 0.5, kTargetFrame - 0.5, picture.width() + 1, picture.height() + 1));
+    return image;
+}
+
 QColor grey(float value) {
     const int v = std::clamp(int(value * 255.0f + 0.5f), 0, 255);
     return {v, v, v};
@@ -80,8 +110,9 @@ QColor grey(float value) {
 
 } // namespace
 
-QImage layerThumbnail(const core::PaintLayer& layer, int size, std::uint32_t page) {
-    QImage image = checkerboard(size);
+QImage layerThumbnail(const core::PaintLayer& layer, int size, bool painted, std::uint32_t page) {
+    const int side = pictureSide(size, painted);
+    QImage image = checkerboard(side);
     const core::PaintLayerSettings& settings = layer.settings;
     if (settings.kind == core::PaintLayerKind::Fill) {
         QColor color(128, 128, 128);
@@ -97,12 +128,11 @@ QImage layerThumbnail(const core::PaintLayer& layer, int size, std::uint32_t pag
     // The base colour where it was painted, else the first material channel that was.
     for (const auto& plane : layer.channels) {
         if (plane && page < plane->pages().size() && plane->anyTile(page)) {
-            drawPlane(image, *plane, size, true, page);
+            drawPlane(image, *plane, side, true, page);
             break;
         }
     }
-    frame(image, QColor(128, 128, 128), 1);
-    return image;
+    return framed(std::move(image), size, painted);
 }
 
 QImage baseThumbnail(const core::PaintLayerStack& stack, int size, std::uint32_t p) {
@@ -127,13 +157,12 @@ QImage baseThumbnail(const core::PaintLayerStack& stack, int size, std::uint32_t
     return image;
 }
 
-QImage maskThumbnail(const core::TiledPlane& mask, int size, bool selected, std::uint32_t page) {
-    QImage image(size, size, QImage::Format_ARGB32_Premultiplied);
+QImage maskThumbnail(const core::TiledPlane& mask, int size, bool painted, std::uint32_t page) {
+    const int side = pictureSide(size, painted);
+    QImage image(side, side, QImage::Format_ARGB32_Premultiplied);
     image.fill(QColor(mask.fill()[0], mask.fill()[0], mask.fill()[0]));
-    drawPlane(image, mask, size, false, page);
-    frame(image, selected ? QPalette().color(QPalette::Highlight) : QColor(128, 128, 128),
-          selected ? 3 : 1);
-    return image;
+    drawPlane(image, mask, side, false, page);
+    return framed(std::move(image), size, painted);
 }
 
 QImage eyeIcon(bool visible, int size) {

@@ -39,6 +39,14 @@ namespace ui {
 namespace {
 
 constexpr int kThumbnail = 32;
+
+/** image as an icon drawn as it is on a selected row too (the style would tint it). */
+QIcon thumbnailIcon(const QImage& image) {
+    const QPixmap pixmap = QPixmap::fromImage(image);
+    QIcon icon(pixmap);
+    icon.addPixmap(pixmap, QIcon::Selected);
+    return icon;
+}
 constexpr int kEye = 18;
 constexpr int kIdRole = Qt::UserRole;
 
@@ -498,7 +506,9 @@ void PaintLayersPanel::refresh() {
                 item->setToolTip(EyeColumn, layer.settings.visible ? tr("Shown: click to hide")
                                                                    : tr("Hidden: click to show"));
                 item->setIcon(ThumbnailColumn,
-                              QIcon(QPixmap::fromImage(layerThumbnail(layer, kThumbnail, page))));
+                              thumbnailIcon(layerThumbnail(
+                                  layer, kThumbnail,
+                                  selection == core::PaintSelection{layer.id, false}, page)));
                 QString name = QString::fromStdString(layer.settings.name);
                 item->setText(NameColumn, name);
                 QStringList notes;
@@ -513,8 +523,8 @@ void PaintLayersPanel::refresh() {
                                                  : tr("%1 (%2)").arg(name, notes.join(tr(", "))));
                 if (layer.mask) {
                     const bool maskSelected = selection == core::PaintSelection{layer.id, true};
-                    item->setIcon(MaskColumn, QIcon(QPixmap::fromImage(maskThumbnail(
-                                                  *layer.mask, kThumbnail, maskSelected, page))));
+                    item->setIcon(MaskColumn, thumbnailIcon(maskThumbnail(*layer.mask, kThumbnail,
+                                                                          maskSelected, page)));
                     item->setToolTip(MaskColumn, maskSelected
                                                      ? tr("Painting the mask (black hides, white "
                                                           "shows)")
@@ -529,12 +539,13 @@ void PaintLayersPanel::refresh() {
         base->setToolTip(NameColumn, tr("The model's own surface (painting here changes it "
                                         "directly)"));
         if (painted)
-            base->setIcon(ThumbnailColumn, QIcon(QPixmap::fromImage(baseThumbnail(
-                                               painted->paintLayerStack(), kThumbnail, page))));
+            base->setIcon(ThumbnailColumn, thumbnailIcon(baseThumbnail(painted->paintLayerStack(),
+                                                                       kThumbnail, page)));
         if (QTreeWidgetItem* current = rowOf(selection.layer))
             m_list->setCurrentItem(current);
     }
     updateControls();
+    emit refreshed();
 }
 
 void PaintLayersPanel::updateControls() {

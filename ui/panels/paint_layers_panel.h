@@ -77,6 +77,8 @@ signals:
     void selectionChanged();
     /** An operation could not be done: why, for the status bar. */
     void message(const QString& text);
+    /** The rows were made again from the document (after any change or selection). */
+    void refreshed();
 
 private:
     void createActions();

@@ -136,6 +136,9 @@ void MainWindow::createStatusBarLabels() {
     m_brushInfo->setObjectName(QStringLiteral("brushInfo"));
     m_brushInfo->setContentsMargins(12, 0, 12, 0); // apart from its neighbours
     statusBar()->insertPermanentWidget(1, m_brushInfo);
+    m_paintIntoInfo = new ElidedLabel(this);
+    m_paintIntoInfo->setObjectName(QStringLiteral("paintIntoInfo"));
+    statusBar()->insertPermanentWidget(2, m_paintIntoInfo);
 }
 
 void MainWindow::createProjectController() {

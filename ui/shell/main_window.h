@@ -314,6 +314,8 @@ private:
     /** The Paint Layers panel, its dock and what its operations change. */
     void createPaintLayersPanel();
     void updateBrushInfo();
+    /** The status bar's note of what strokes paint: a paint layer, or its mask. */
+    void updatePaintIntoInfo();
     /** [ and ]: the radius a step (about 15 %) smaller or larger. */
     void stepBrushRadius(int direction);
     /** Shift+[ and Shift+]: the hardness 10 % down or up. */
@@ -378,6 +380,7 @@ private:
     render::DepthLayerDisplay m_allLayersDisplay = render::DepthLayerDisplay::Composite;
     QLabel* m_depthLayerInfo = nullptr;
     QLabel* m_brushInfo = nullptr;
+    QLabel* m_paintIntoInfo = nullptr;
 
     BrushToolBar* m_brushBar = nullptr;
     QToolBar* m_toolBar = nullptr;

@@ -353,6 +353,8 @@ void MainWindow::createPaintLayersPanel() {
             [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
     // Strokes, fills, undo and redo change the stack and the thumbnails.
     connect(m_history, &HistoryBridge::changed, m_paintLayersPanel, &PaintLayersPanel::refresh);
+    connect(m_paintLayersPanel, &PaintLayersPanel::refreshed, this,
+            &MainWindow::updatePaintIntoInfo);
 }
 
 void MainWindow::createMenus() {

@@ -655,6 +655,32 @@ void MainWindow::updateBrushInfo() {
     m_brushInfo->setToolTip(tr("Brush radius and hardness ([ ] and Shift+[ ] change them)"));
 }
 
+void MainWindow::updatePaintIntoInfo() {
+    const core::PaintLayerTarget* layers =
+        m_document->meshSerial() != 0 && m_document->hasPaintTarget()
+            ? m_document->currentPaintTarget()->paintLayers()
+            : nullptr;
+    const core::PaintSelection selection = layers ? layers->selection() : core::PaintSelection{};
+    const auto index = layers && selection.layer != 0
+                           ? layers->paintLayerStack().indexOf(selection.layer)
+                           : std::nullopt;
+    if (!index) {
+        m_paintIntoInfo->clear();
+        m_paintIntoInfo->setToolTip(QString());
+        return;
+    }
+    const QString name =
+        QString::fromStdString(layers->paintLayerStack().layer(*index).settings.name);
+    // A mask is easily mistaken for the paint layer it belongs to: said in its own colour.
+    m_paintIntoInfo->setText(selection.mask ? tr("Painting the mask of “%1”").arg(name)
+                                            : tr("Painting “%1”").arg(name));
+    m_paintIntoInfo->setStyleSheet(selection.mask ? QStringLiteral("color: #b35900;") : QString());
+    m_paintIntoInfo->setToolTip(selection.mask
+                                    ? tr("Strokes paint the mask: black hides the paint layer, "
+                                         "white shows it")
+                                    : tr("Strokes paint this paint layer"));
+}
+
 void MainWindow::stepBrushRadius(int direction) {
     core::Brush brush = m_document->brush();
     // Steps of 15 %, at least a pixel, on whole pixels as the spin boxes show; a step up and
