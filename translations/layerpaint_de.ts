@@ -2655,5 +2655,13 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <source>The depth layers cannot be shown: %1</source>
         <translation>Die Tiefenebenen können nicht angezeigt werden: %1</translation>
     </message>
+    <message>
+        <source>Roughness</source>
+        <translation>Rauheit</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>Metallisch</translation>
+    </message>
 </context>
 </TS>

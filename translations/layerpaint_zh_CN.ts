@@ -2647,5 +2647,13 @@ Smaller splits the view into more regions.</source>
         <source>The depth layers cannot be shown: %1</source>
         <translation>无法显示深度层：%1</translation>
     </message>
+    <message>
+        <source>Roughness</source>
+        <translation>粗糙度</translation>
+    </message>
+    <message>
+        <source>Metallic</source>
+        <translation>金属度</translation>
+    </message>
 </context>
 </TS>

@@ -5,6 +5,8 @@
 // OpenGL 4.5 (run under xvfb-run; Mesa llvmpipe is enough).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <QApplication>
 #include <QDir>
 #include <QFile>
@@ -94,6 +96,28 @@ protected:
 
     QImage grabView() { return m_window->viewport()->grabFramebuffer(); }
 
+    /**
+     * Whether image's bottom-left corner has a legend: a row going from black to white (grey
+     * both) within the first 250 pixels.
+     */
+    static bool hasLegend(const QImage& image) {
+        for (int y = image.height() - 40; y < image.height(); ++y) {
+            int black = -1, white = -1;
+            for (int x = 0; x < std::min(250, image.width()); ++x) {
+                const QRgb p = image.pixel(x, y);
+                if (qRed(p) != qGreen(p) || qGreen(p) != qBlue(p))
+                    continue;
+                if (qRed(p) < 30 && black < 0)
+                    black = x;
+                if (qRed(p) > 225)
+                    white = x;
+            }
+            if (black >= 0 && white > black + 100)
+                return true;
+        }
+        return false;
+    }
+
     QPoint m_start;
 };
 
@@ -116,6 +140,14 @@ TEST_F(MaterialUiTest, ViewChannelMenuSwitchesWhatTheViewShows) {
     EXPECT_EQ(qGreen(pixel), qBlue(pixel));
     EXPECT_NEAR(qRed(pixel), 51, 3);
     EXPECT_GT(differingFraction(material, roughness), 0.05);
+    // Behind it a blue no grey matches, and a legend from 0 (black) to 1 (white).
+    const QRgb corner = roughness.pixel(roughness.width() - 3, 3);
+    EXPECT_GT(qBlue(corner) - qRed(corner), 40) << "the background is grey like low values";
+    EXPECT_LT(qBlue(material.pixel(material.width() - 3, 3)) -
+                  qRed(material.pixel(material.width() - 3, 3)),
+              20);
+    EXPECT_TRUE(hasLegend(roughness));
+    EXPECT_FALSE(hasLegend(material));
 
     chooseChannel(Qt::Key_E);
     EXPECT_EQ(viewport->channel(), render::MaterialChannel::Metallic);

@@ -4,6 +4,8 @@
 #include "ui/view/viewport.h"
 
 #include <QCoreApplication>
+#include <QLinearGradient>
+#include <QLocale>
 #include <QMetaObject>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -24,6 +26,14 @@ namespace ui {
 
 namespace {
 constexpr float kPopUpOpacity = 0.55f; // see-through pop-ups: the surroundings stay readable
+// Behind roughness or metallic shown as grey: a muted blue that no grey matches, so that low
+// values (a roughness of 0.2) stand apart from it. sRGB-encoded.
+constexpr glm::vec4 kGreyChannelBackground{0.13f, 0.2f, 0.34f, 1.0f};
+
+bool isGreyChannel(render::MaterialChannel channel) {
+    return channel == render::MaterialChannel::Roughness ||
+           channel == render::MaterialChannel::Metallic;
+}
 
 render::PixelRect unite(const render::PixelRect& a, const render::PixelRect& b) {
     if (a.empty())
@@ -533,8 +543,11 @@ void Viewport::reportDepthLayerError(const core::Status& status) {
 }
 
 void Viewport::paintGL() {
+    render::CompositeOptions composite = m_composite;
+    if (isGreyChannel(composite.channel))
+        composite.background = kGreyChannelBackground;
     render::DrawOptions options;
-    options.background = m_composite.background;
+    options.background = composite.background;
     QOpenGLFunctions* gl = context()->functions();
     gl->glClearColor(options.background.r, options.background.g, options.background.b, 1.0f);
     gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -547,7 +560,7 @@ void Viewport::paintGL() {
     m_lastFrameTriangles = 0;
     if (isShowingDepthLayers()) {
         flushPaint(true);
-        m_compositor->draw(m_composite);
+        m_compositor->draw(composite);
     } else {
         flushPaint(false);
         options.standIn = isCameraMoving();
@@ -558,7 +571,7 @@ void Viewport::paintGL() {
         m_lastFrameTriangles = m_renderer->lastDrawnTriangles();
     }
     if (!m_overlay) {
-        drawStabilizerString();
+        drawPainted();
         return;
     }
     render::BrushOverlayOptions overlay;
@@ -576,7 +589,37 @@ void Viewport::paintGL() {
         overlay.radius = m_brushRadius;
     }
     m_overlay->draw(overlay);
+    drawPainted();
+}
+
+void Viewport::drawPainted() {
     drawStabilizerString();
+    drawChannelLegend();
+}
+
+void Viewport::drawChannelLegend() {
+    if (!isGreyChannel(m_composite.channel) || !mesh())
+        return;
+    QPainter painter(this);
+    const QFontMetrics metrics = painter.fontMetrics();
+    const QLocale locale;
+    const QString low = locale.toString(0), high = locale.toString(1);
+    const QString name = m_composite.channel == render::MaterialChannel::Roughness ? tr("Roughness")
+                                                                                   : tr("Metallic");
+    constexpr int kMargin = 12, kBarWidth = 160, kBarHeight = 12;
+    const int barLeft = kMargin + metrics.horizontalAdvance(low) + 6;
+    const QRect bar(barLeft, height() - kMargin - kBarHeight, kBarWidth, kBarHeight);
+    // As the view shows a value: its byte as the grey level.
+    QLinearGradient ramp(bar.topLeft(), bar.topRight());
+    ramp.setColorAt(0.0, Qt::black);
+    ramp.setColorAt(1.0, Qt::white);
+    painter.fillRect(bar, ramp);
+    painter.setPen(QColor(255, 255, 255, 220));
+    painter.drawRect(bar.adjusted(0, 0, -1, -1));
+    const int baseline = bar.center().y() + metrics.ascent() / 2 - 1;
+    painter.drawText(kMargin, baseline, low);
+    painter.drawText(bar.right() + 6, baseline, high);
+    painter.drawText(bar.left(), bar.top() - 4, name);
 }
 
 void Viewport::drawStabilizerString() {

@@ -243,6 +243,10 @@ protected:
     void paintGL() override;
     /** The stroke stabilizer's string from the brush tip to the pointer, while it pulls. */
     void drawStabilizerString();
+    /** What QPainter draws over the GL picture: the stabilizer's string, a channel's legend. */
+    void drawPainted();
+    /** Roughness and metallic shown as grey: a legend from 0 to 1 in the bottom-left corner. */
+    void drawChannelLegend();
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
