@@ -134,6 +134,28 @@ TEST_F(PaintingTest, DragPaintsAndUndoRedoRestoreTheTextureExactly) {
     EXPECT_EQ(pageBytes(), painted);
 }
 
+TEST_F(PaintingTest, TheFirstStrokeAndItsUndoDoNotSendTheMeshAgain) {
+    openTrefoil();
+    const auto [a, b] = pathAcrossTheKnot();
+    ASSERT_GT(b.x() - a.x(), 60) << "no run across the knot";
+    grab(); // the first frame sends the mesh
+    ASSERT_GT(viewport()->meshUploads(), 0);
+    ASSERT_FALSE(document().hasPaintTarget());
+    // The first stroke makes the paint target: the view sends the mesh with its pages once.
+    drag(a, b);
+    grab();
+    ASSERT_TRUE(document().hasPaintTarget());
+    const int uploads = viewport()->meshUploads();
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    grab();
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    grab();
+    drag(a, b);
+    QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+    grab();
+    EXPECT_EQ(viewport()->meshUploads(), uploads) << "an undo or redo sent the mesh again";
+}
+
 TEST_F(PaintingTest, PaintsVertexColoursOnRequest) {
     openTrefoil();
     auto* combo = m_window->findChild<QComboBox*>(QStringLiteral("paintTarget"));

@@ -316,6 +316,11 @@ private:
     void updateBrushInfo();
     /** The status bar's note of what strokes paint: a paint layer, or its mask. */
     void updatePaintIntoInfo();
+    /**
+     * The view shows the document's paint target from now on (one made, replaced or restored);
+     * remembered, so that an undo afterwards does not show it (upload the mesh) again.
+     */
+    void showPaintTarget();
     /** [ and ]: the radius a step (about 15 %) smaller or larger. */
     void stepBrushRadius(int direction);
     /** Shift+[ and Shift+]: the hardness 10 % down or up. */

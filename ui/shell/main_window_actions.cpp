@@ -343,8 +343,7 @@ void MainWindow::createPaintLayersPanel() {
                 // As after a stroke: the composite's texels to the view (the undo stack follows
                 // the history by itself).
                 if (m_document->paintTargetSerial() != m_targetSerial) {
-                    m_targetSerial = m_document->paintTargetSerial();
-                    m_viewport->paintTargetChanged();
+                    showPaintTarget();
                 } else {
                     m_viewport->applyPaintChanges(changes);
                 }

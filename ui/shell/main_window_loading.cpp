@@ -77,7 +77,7 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
     }
     m_viewport->meshChanged();
     if (m_document->hasPaintTarget())
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
     updateBrushBar();
     if (!state && !m_document->mesh().hasUvs())
         offerUvLayout();

@@ -124,7 +124,7 @@ void MainWindow::pickColor(QPointF pixel) {
         color = m_document->pickColor(std::size_t(y) * std::size_t(layers->stack.width) +
                                       std::size_t(x));
         if (!hadTarget && m_document->hasPaintTarget())
-            m_viewport->paintTargetChanged();
+            showPaintTarget();
     }
     if (!color) {
         statusBar()->showMessage(tr("No surface here to pick a colour from"), kPaintMessageMs);
@@ -150,7 +150,7 @@ bool MainWindow::preparePainting() {
         return false;
     }
     if (!hadTarget)
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
     // A symmetric stroke paints its copies from the first dab: wait for them if still building.
     if (!m_builder->buildSymmetryNow())
         statusBar()->showMessage(tr("The symmetric views could not be built: this stroke paints "
@@ -428,7 +428,7 @@ void MainWindow::showDocumentState() {
     m_targetSerial = m_document->paintTargetSerial();
     m_paintOptions = m_document->paintTargetOptions();
     if (m_document->hasPaintTarget())
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
     updateBrushBar();
     m_viewport->cameraMoved();
     m_regionTools->orderApplied();
@@ -438,9 +438,8 @@ void MainWindow::showDocumentState() {
 void MainWindow::onHistoryApplied(const core::PaintChanges& changes) {
     m_viewport->applyPaintChanges(changes);
     if (m_document->paintTargetSerial() != m_targetSerial) {
-        m_targetSerial = m_document->paintTargetSerial();
         m_paintOptions = m_document->paintTargetOptions();
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
         updateBrushBar();
     }
     m_regionTools->orderApplied();
@@ -468,8 +467,7 @@ void MainWindow::setPaintTarget(const core::PaintTargetOptions& options) {
             kStatusMessageMs);
     } else {
         m_paintOptions = options;
-        m_targetSerial = m_document->paintTargetSerial();
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
         statusBar()->showMessage(tr("Painting into a new target (Undo brings the previous one "
                                     "back)"),
                                  kStatusMessageMs);
@@ -560,8 +558,7 @@ void MainWindow::raiseTextureSize() {
             tr("Cannot raise the texture size: %1").arg(QString::fromStdString(status.error())),
             kStatusMessageMs);
     } else {
-        m_targetSerial = m_document->paintTargetSerial();
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
         statusBar()->showMessage(
             tr("The texture is %1 now (Undo brings the previous size back)").arg(size),
             kStatusMessageMs);
@@ -589,8 +586,7 @@ void MainWindow::paintTargetMade(const std::shared_ptr<PaintTargetJob::Outcome>&
                                  kStatusMessageMs);
     } else {
         m_paintOptions = outcome->options;
-        m_targetSerial = m_document->paintTargetSerial();
-        m_viewport->paintTargetChanged();
+        showPaintTarget();
         statusBar()->showMessage(replaces ? tr("Painting into a texture with an automatic UV "
                                                "layout (Undo brings the previous target back)")
                                           : tr("Painting into a texture with an automatic UV "
@@ -653,6 +649,11 @@ void MainWindow::updateBrushInfo() {
                              .arg(locale.toString(std::lround(brush.radius)),
                                   locale.toString(std::lround(brush.hardness * 100.0f))));
     m_brushInfo->setToolTip(tr("Brush radius and hardness ([ ] and Shift+[ ] change them)"));
+}
+
+void MainWindow::showPaintTarget() {
+    m_targetSerial = m_document->paintTargetSerial();
+    m_viewport->paintTargetChanged();
 }
 
 void MainWindow::updatePaintIntoInfo() {

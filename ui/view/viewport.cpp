@@ -532,6 +532,7 @@ void Viewport::uploadMeshIfDirty() {
     m_meshDirty = false;
     m_paintedMeshDirty = false;
     m_standInDirty = true; // setMesh dropped it
+    ++m_meshUploads;
 }
 
 void Viewport::reportDepthLayerError(const core::Status& status) {

@@ -113,6 +113,8 @@ public:
     bool hasStandIn() const;
     /** Triangles the mesh renderer drew in the last frame; 0 when the depth layers showed. */
     std::size_t lastFrameTriangles() const { return m_lastFrameTriangles; }
+    /** How often the mesh went to the GPU (a new model or paint target); for tests. */
+    int meshUploads() const { return m_meshUploads; }
 
     bool isOrthographic() const;
 
@@ -313,6 +315,7 @@ private:
     std::unique_ptr<render::DepthCompositor> m_compositor;
     std::unique_ptr<render::BrushOverlay> m_overlay;
     bool m_meshDirty = false;
+    int m_meshUploads = 0;
     bool m_paintedMeshDirty = false; // only the paint target's textures or colours are new
     /** The paint target whose painted mesh the renderers hold (nullptr: the plain mesh). */
     const core::PaintTarget* m_shownTarget = nullptr;
