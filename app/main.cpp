@@ -14,6 +14,7 @@
 
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/stall_meter.h"
 #include "ui/view/viewport.h"
 
 namespace {
@@ -100,7 +101,10 @@ int main(int argc, char* argv[]) {
     // QOpenGLWidget, is created as OpenGL 4.5 core.
     QSurfaceFormat::setDefaultFormat(ui::Viewport::requiredFormat());
 
-    QApplication app(argc, argv);
+    ui::MeteredApplication app(argc, argv);
+    // LAYERPAINT_STALL_MS=N: every event the window takes N ms or more to handle, on stderr.
+    app.setStallThresholdMs(ui::MeteredApplication::thresholdFromEnvironment());
+    app.setLogStalls(true);
     setApplicationInfo();
     QApplication::setApplicationDisplayName(QStringLiteral("LayerPaint"));
     QGuiApplication::setDesktopFileName(kAppId);

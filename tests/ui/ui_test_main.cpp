@@ -8,6 +8,7 @@
 #include <QSurfaceFormat>
 #include <QTemporaryDir>
 
+#include "ui/shell/stall_meter.h"
 #include "ui/view/viewport.h"
 
 int main(int argc, char* argv[]) {
@@ -20,7 +21,7 @@ int main(int argc, char* argv[]) {
     // Settings go to a test location, never the user's real configuration; a folder per
     // process keeps tests that ctest runs in parallel from sharing one settings file.
     QStandardPaths::setTestModeEnabled(true);
-    QApplication app(argc, argv);
+    ui::MeteredApplication app(argc, argv); // measures stalls when a test asks it to
     const QTemporaryDir settingsDir;
     if (!settingsDir.isValid())
         return 1;

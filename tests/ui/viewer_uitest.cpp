@@ -7,6 +7,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QDropEvent>
+#include <QEventLoop>
 #include <QFile>
 #include <QFileInfo>
 #include <QLabel>
@@ -20,12 +21,15 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
+#include <QTimer>
 #include <QUrl>
 #include <QWheelEvent>
 
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -35,6 +39,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/shell/model_loader.h"
 #include "ui/shell/recent_files.h"
+#include "ui/shell/stall_meter.h"
 #include "ui/view/viewport.h"
 
 namespace viewer_uitest {
@@ -500,6 +505,52 @@ TEST_F(ViewerTest, WindowGeometryIsRemembered) {
 
     auto window = std::make_unique<ui::MainWindow>();
     EXPECT_EQ(window->size(), QSize(1100, 700));
+}
+
+/** An object whose handling of any event takes busyMs, running a loop that waits waitMs first. */
+class SlowReceiver : public QObject {
+public:
+    SlowReceiver(int busyMs, int waitMs) : m_busyMs(busyMs), m_waitMs(waitMs) {
+        setObjectName(QStringLiteral("slow"));
+    }
+    bool event(QEvent* event) override {
+        if (event->type() != QEvent::User)
+            return QObject::event(event);
+        if (m_waitMs > 0) {
+            // A nested loop (as a dialog runs) waiting: not this event's own time.
+            QEventLoop loop;
+            QTimer::singleShot(m_waitMs, &loop, &QEventLoop::quit);
+            loop.exec();
+        }
+        QThread::msleep(std::uint64_t(m_busyMs));
+        return true;
+    }
+
+private:
+    int m_busyMs, m_waitMs;
+};
+
+TEST(StallMeterTest, AnEventHandledSlowlyIsAStallNamingItsReceiverAndWaitingIsNot) {
+    auto* app = dynamic_cast<ui::MeteredApplication*>(QCoreApplication::instance());
+    ASSERT_NE(app, nullptr);
+    app->setStallThresholdMs(100.0);
+    app->clearStalls();
+    SlowReceiver slow(160, 0), waiting(10, 400);
+    QCoreApplication::postEvent(&slow, new QEvent(QEvent::User));
+    QCoreApplication::postEvent(&waiting, new QEvent(QEvent::User));
+    QTest::qWait(700);
+    app->setStallThresholdMs(-1.0);
+    std::vector<ui::Stall> stalls;
+    for (const ui::Stall& s : app->stalls())
+        if (s.event == QStringLiteral("User"))
+            stalls.push_back(s);
+    ASSERT_EQ(stalls.size(), 1u);
+    EXPECT_GE(stalls[0].ms, 150.0);
+    EXPECT_EQ(stalls[0].receiver, QStringLiteral("QObject (slow)"));
+    EXPECT_EQ(ui::MeteredApplication::thresholdFromEnvironment(), -1.0);
+    qputenv("LAYERPAINT_STALL_MS", "250");
+    EXPECT_EQ(ui::MeteredApplication::thresholdFromEnvironment(), 250.0);
+    qunsetenv("LAYERPAINT_STALL_MS");
 }
 
 TEST(ModelLoaderTest, CancelAndSupersede) {
