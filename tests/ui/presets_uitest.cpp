@@ -23,6 +23,7 @@
 #include "tests/ui/window_test.h"
 #include "ui/panels/brush_presets_panel.h"
 #include "ui/shell/quick_guide.h"
+#include "ui/shell/quick_guide_pictures.h"
 
 namespace presets_uitest {
 
@@ -208,6 +209,19 @@ TEST_F(PresetsTest, QuickGuideOpensFromTheHelpMenuWithPictures) {
             red += qRed(p) > qGreen(p) + 60 && qRed(p) > qBlue(p) + 60 ? 1 : 0;
         }
     EXPECT_GT(red, 50);
+    // The pop-up and paint-to-hide pictures show what came into view, tinted amber.
+    for (const ui::GuidePicture which : {ui::GuidePicture::PopUp, ui::GuidePicture::PaintToHide}) {
+        const QImage& picture = guide->pictures()[std::size_t(which)];
+        int amber = 0;
+        for (int y = 0; y < picture.height(); ++y)
+            for (int x = 0; x < picture.width(); ++x) {
+                const QRgb p = picture.pixel(x, y);
+                amber += qRed(p) > qGreen(p) + 40 && qGreen(p) > qBlue(p) + 40 ? 1 : 0;
+            }
+        EXPECT_GT(amber, 200) << "picture " << int(which) << " shows nothing brought into view";
+        picture.save(
+            QDir::temp().filePath(QStringLiteral("layerpaint_guide_%1.png").arg(int(which))));
+    }
     const QString shot = QDir::temp().filePath(QStringLiteral("layerpaint_quick_guide.png"));
     if (guide->grab().save(shot))
         std::printf("[ picture ] %s\n", qPrintable(shot));

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <QPainter>
 #include <QPainterPath>
@@ -23,8 +24,22 @@ namespace ui {
 
 namespace {
 
-/** The visible surface of doc's layers, lit from the camera, over a light background. */
-QImage shade(core::Document& doc, const core::View& view) {
+/** The visible fragment of every pixel of doc's layers (core::kNone: background). */
+std::vector<std::uint32_t> visibleFragments(const core::Document& doc) {
+    std::vector<std::uint32_t> visible;
+    if (const core::DepthLayers* layers = doc.depthLayers())
+        for (std::size_t p = 0; p < layers->stack.pixelCount(); ++p)
+            visible.push_back(doc.visibleFragment(p));
+    return visible;
+}
+
+/**
+ * The visible surface of doc's layers, lit from the camera, over a light background; with
+ * before (visibleFragments() earlier), the pixels that show another surface now are tinted
+ * amber: what a pop-up or a hide brought into view.
+ */
+QImage shade(core::Document& doc, const core::View& view,
+             const std::vector<std::uint32_t>* before = nullptr) {
     const core::DepthLayers* layers = doc.depthLayers();
     QImage image(view.width, view.height, QImage::Format_RGB32);
     image.fill(QColor(236, 238, 242));
@@ -46,7 +61,9 @@ QImage shade(core::Document& doc, const core::View& view) {
             const glm::vec3 n = toView * glm::cross(b - a, c - a);
             const float len = glm::length(n);
             const float light = 0.35f + 0.65f * (len > 0.0f ? std::abs(n.z) / len : 1.0f);
-            const glm::vec4 color = doc.pickColor(pixel).value_or(glm::vec4(0.7f));
+            glm::vec4 color = doc.pickColor(pixel).value_or(glm::vec4(0.7f));
+            if (before && pixel < before->size() && (*before)[pixel] != fragment)
+                color = glm::mix(color, glm::vec4(1.0f, 0.45f, 0.02f, 1.0f), 0.6f);
             image.setPixel(x, y,
                            qRgb(core::linearToSrgb(color.r * light),
                                 core::linearToSrgb(color.g * light),
@@ -164,30 +181,70 @@ QImage drawLayerAwareStroke(GuideScene& scene) {
     return image;
 }
 
-/** A click in the middle pops the region below the visible one up. */
+/** How many pixels show another surface than before. */
+std::size_t changedPixels(const std::vector<std::uint32_t>& before,
+                          const std::vector<std::uint32_t>& after) {
+    std::size_t changed = 0;
+    for (std::size_t p = 0; p < std::min(before.size(), after.size()); ++p)
+        changed += before[p] != after[p];
+    return changed;
+}
+
+/**
+ * Of points around the middle of the view, the one where a click pops up the most: where one
+ * body hides much of another, so the picture shows what a pop-up does.
+ */
+glm::vec2 bestPopUpPoint(GuideScene& scene) {
+    core::Document& doc = scene.doc;
+    const std::vector<std::uint32_t> before = visibleFragments(doc);
+    glm::vec2 best(0.5f * scene.w, 0.5f * scene.h);
+    std::size_t most = 0;
+    for (int j = 1; j <= 5; ++j)
+        for (int i = 1; i <= 9; ++i) {
+            const glm::vec2 at(scene.w * (0.2f + 0.06f * float(i)),
+                               scene.h * (0.25f + 0.1f * float(j)));
+            if (doc.popUpAt(at) == core::kNone)
+                continue;
+            const std::size_t changed = changedPixels(before, visibleFragments(doc));
+            doc.resetRegionOrder();
+            if (changed > most) {
+                most = changed;
+                best = at;
+            }
+        }
+    return best;
+}
+
+/** A click where one body hides another pops the region below the visible one up (tinted). */
 QImage drawPopUp(GuideScene& scene) {
-    const glm::vec2 at(0.5f * scene.w, 0.5f * scene.h);
+    const glm::vec2 at = bestPopUpPoint(scene);
+    const std::vector<std::uint32_t> before = visibleFragments(scene.doc);
     scene.doc.popUpAt(at);
-    QImage image = shade(scene.doc, scene.view);
+    QImage image = shade(scene.doc, scene.view, &before);
     drawClick(image, QPointF(at.x, at.y), scene.pointer);
     return image;
 }
 
-/** A short drag hides the regions it touches. */
+/**
+ * A short drag where one body hides another hides the regions it touches; what they hid shows
+ * (tinted).
+ */
 QImage drawPaintToHide(GuideScene& scene) {
     core::Document& doc = scene.doc;
     const float w = scene.w, h = scene.h;
+    const glm::vec2 at = bestPopUpPoint(scene);
     std::vector<QPointF> points;
+    const std::vector<std::uint32_t> before = visibleFragments(doc);
     doc.beginHide();
     for (int i = 0; i <= 10; ++i) {
         const float t = float(i) / 10.0f;
-        points.emplace_back(0.42f * w + 0.08f * w * t, 0.5f * h);
+        points.emplace_back(at.x - 0.04f * w + 0.08f * w * t, at.y);
         if (i > 0)
             doc.hideAlong({float(points[i - 1].x()), float(points[i - 1].y())},
                           {float(points[i].x()), float(points[i].y())}, 0.02f * h);
     }
     doc.endHide();
-    QImage image = shade(doc, scene.view);
+    QImage image = shade(doc, scene.view, &before);
     drawPath(image, points, scene.pointer);
     return image;
 }
