@@ -264,6 +264,7 @@ void buildLayoutMesh(const Mesh& mesh, const std::vector<Chart>& charts,
     out.source = mesh.source; // written back with these uvs through sourceVertices
     out.warnings = mesh.warnings;
     out.triangleMaterial = mesh.triangleMaterial;
+    out.objects = mesh.objects; // the triangles keep their order
     out.indices.resize(mesh.indices.size());
     std::unordered_map<std::uint64_t, std::uint32_t> copies;
     copies.reserve(mesh.vertexCount() * 5 / 4);

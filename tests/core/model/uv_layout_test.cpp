@@ -47,10 +47,16 @@ TEST(UvLayout, TrefoilWithoutUvsIsValidAndLowInStretch) {
 
 TEST(UvLayout, HexRingAndRowAreValid) {
     for (const Mesh& model : {core::makeHexRing(12), core::makeRow(12)}) {
-        const Mesh mesh = withoutUvs(model);
+        Mesh mesh = withoutUvs(model);
+        mesh.objects = {{"first", 0}, {"second", std::uint32_t(mesh.triangleCount() / 2)}};
         auto layout = core::makeUvLayout(mesh, smallPages());
         ASSERT_TRUE(layout.ok()) << layout.error();
         expectValidLayout(mesh, *layout);
+        // The triangles keep their order, so the named objects stay as they were.
+        ASSERT_EQ(layout->mesh.objects.size(), 2u);
+        EXPECT_EQ(layout->mesh.objects[1].name, "second");
+        EXPECT_EQ(layout->mesh.objects[1].firstTriangle, mesh.objects[1].firstTriangle);
+        EXPECT_TRUE(layout->mesh.validate().ok());
         const core::UvLayoutMetrics m = core::measureUvLayout(*layout);
         EXPECT_LE(m.stretchP95, 1.5);
         EXPECT_LT(m.texelDensitySpread, 2.0);
