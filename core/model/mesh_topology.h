@@ -9,7 +9,6 @@
 #include <glm/vec4.hpp>
 
 #include "core/base/progress.h"
-
 #include "core/model/mesh.h"
 
 namespace core {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// PaintLayerStack's composite updates during a stroke: the texels a dab touched, from the layers
-// below the stroke's layer kept per tile, layer by layer over a rectangle with the blend mode
-// chosen once per layer. Gives the bytes updateTile() gives (the same float operations in the
-// same order per texel).
+// PaintLayerStack's composite updates: a whole tile (updateTile()), or during a stroke the texels
+// a dab touched, from the layers below the stroke's layer kept per tile; in one pass per texel
+// where every layer blends in the Normal mode over the base, else layer by layer over a
+// rectangle (paint_layers_blend.cpp). Gives the bytes compositeTexel() gives (the same float
+// operations in the same order per texel).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -11,6 +12,7 @@
 #include <type_traits>
 #include <unordered_map>
 
+#include "core/paint/paint_layers/layer_sources.h"
 #include "core/paint/paint_layers/paint_layers.h"
 
 namespace core {
@@ -23,154 +25,19 @@ constexpr std::size_t kMaxKeptTiles = 512;
 
 using layer_bytes::fromByte;
 using layer_bytes::toByte;
+using layer_sources::byteRoundTrips;
+using layer_sources::channelSource;
+using layer_sources::ChannelSource;
+using layer_sources::coverageOf;
+using layer_sources::forEachTexel;
+using layer_sources::rowOf;
+using layer_sources::texelsOf;
+using layer_sources::tileRectOf;
+using layer_sources::withMode;
 #if defined(__SSE2__)
 using layer_bytes::fromBytes4;
 using layer_bytes::toBytes4;
 #endif
-
-template <typename Fn> void withMode(BlendMode mode, Fn&& fn) {
-    switch (mode) {
-    case BlendMode::Normal:
-        return fn(std::integral_constant<BlendMode, BlendMode::Normal>{});
-    case BlendMode::Multiply:
-        return fn(std::integral_constant<BlendMode, BlendMode::Multiply>{});
-    case BlendMode::Screen:
-        return fn(std::integral_constant<BlendMode, BlendMode::Screen>{});
-    case BlendMode::Overlay:
-        return fn(std::integral_constant<BlendMode, BlendMode::Overlay>{});
-    case BlendMode::SoftLight:
-        return fn(std::integral_constant<BlendMode, BlendMode::SoftLight>{});
-    case BlendMode::Add:
-        return fn(std::integral_constant<BlendMode, BlendMode::Add>{});
-    case BlendMode::Subtract:
-        return fn(std::integral_constant<BlendMode, BlendMode::Subtract>{});
-    case BlendMode::Darken:
-        return fn(std::integral_constant<BlendMode, BlendMode::Darken>{});
-    case BlendMode::Lighten:
-        return fn(std::integral_constant<BlendMode, BlendMode::Lighten>{});
-    case BlendMode::Difference:
-        return fn(std::integral_constant<BlendMode, BlendMode::Difference>{});
-    }
-}
-
-TileRect tileRectOf(const PageSize& size, std::uint32_t tile) {
-    const int across =
-        std::max(1, (size.width + TiledPlane::kPlaneTile - 1) / TiledPlane::kPlaneTile);
-    TileRect r;
-    r.x = int(tile % std::uint32_t(across)) * TiledPlane::kPlaneTile;
-    r.y = int(tile / std::uint32_t(across)) * TiledPlane::kPlaneTile;
-    r.width = std::min(size.width, r.x + TiledPlane::kPlaneTile) - r.x;
-    r.height = std::min(size.height, r.y + TiledPlane::kPlaneTile) - r.y;
-    return r;
-}
-
-/** The texels [x0, x1) of row y of rect to visit: rows[y - rect.y], or the whole row. */
-TexelSpan rowOf(const TileRect& rect, std::span<const TexelSpan> rows, int y) {
-    return rows.empty() ? TexelSpan{rect.x, rect.x + rect.width} : rows[std::size_t(y - rect.y)];
-}
-
-/**
- * Calls fn(i, local) for every texel of rect (or of its rows): i is its first byte in the
- * page's four-byte texels (width texels a row), local its index in its tile, whose rectangle is
- * tile.
- */
-template <typename Fn>
-void forEachTexel(const TileRect& rect, std::span<const TexelSpan> rows, const TileRect& tile,
-                  std::size_t width, Fn&& fn) {
-    for (int y = rect.y; y < rect.y + rect.height; ++y) {
-        const TexelSpan span = rowOf(rect, rows, y);
-        const std::size_t row = std::size_t(y - tile.y) * std::size_t(tile.width);
-        for (int x = span.x0; x < span.x1; ++x)
-            fn((std::size_t(y) * width + std::size_t(x)) * 4, row + std::size_t(x - tile.x));
-    }
-}
-
-/** How many texels rect (or its rows) holds. */
-std::size_t texelsOf(const TileRect& rect, std::span<const TexelSpan> rows) {
-    if (rows.empty())
-        return std::size_t(rect.width) * std::size_t(rect.height);
-    std::size_t n = 0;
-    for (const TexelSpan& r : rows)
-        n += r.x1 > r.x0 ? std::size_t(r.x1 - r.x0) : 0;
-    return n;
-}
-
-/** What blending one channel of a paint layer over a tile reads. */
-struct ChannelSource {
-    const std::uint8_t* texels = nullptr; // nullptr: a fill
-    std::array<float, 3> fill{};
-    const std::uint8_t* mask = nullptr;
-    std::uint8_t maskFill = 255;
-    bool masked = false;
-    float opacity = 1.0f;
-    int comps = 1;         // 3 for base colour, 1 for roughness and metallic
-    std::size_t first = 0; // its first of the 5 value planes
-};
-
-/**
- * How much of src texel local takes (its coverage times the layer's opacity and mask), with
- * texel set to its bytes (nullptr for a fill).
- */
-inline float coverageOf(const ChannelSource& src, std::size_t local, const std::uint8_t*& texel) {
-    float a = 1.0f;
-    texel = nullptr;
-    if (src.texels != nullptr) {
-        texel = src.texels + local * std::size_t(src.comps + 1);
-        a = fromByte(texel[src.comps]);
-    }
-    a *= src.opacity;
-    if (src.masked)
-        a *= fromByte(src.mask != nullptr ? src.mask[local] : src.maskFill);
-    return a;
-}
-
-/**
- * Channel c of layer in tile of page, or nothing when it changes no texel there: hidden, fully
- * transparent, a paint layer that never wrote the tile, or a fill without a value for c.
- */
-std::optional<ChannelSource> channelSource(const PaintLayer& layer, std::size_t c,
-                                           std::uint32_t page, std::uint32_t tile) {
-    const PaintLayerSettings& st = layer.settings;
-    ChannelSource src;
-    src.opacity = std::clamp(st.opacity, 0.0f, 1.0f);
-    if (!st.visible || !(src.opacity > 0.0f))
-        return std::nullopt; // every texel's coverage is 0 (or NaN): compositeTexel() skips them
-    src.comps = c == 0 ? 3 : 1;
-    src.first = c == 0 ? 0 : c + 2;
-    src.masked = layer.mask != nullptr;
-    src.mask = src.masked ? layer.mask->tile(page, tile) : nullptr;
-    src.maskFill = src.masked ? layer.mask->fill()[0] : 255;
-    if (st.kind == PaintLayerKind::Fill) {
-        if (c == 0 && st.fill.baseColor)
-            src.fill = {st.fill.baseColor->x, st.fill.baseColor->y, st.fill.baseColor->z};
-        else if (c == 1 && st.fill.roughness)
-            src.fill[0] = *st.fill.roughness;
-        else if (c == 2 && st.fill.metallic)
-            src.fill[0] = *st.fill.metallic;
-        else
-            return std::nullopt;
-    } else {
-        const TiledPlane* plane = layer.channels[c].get();
-        src.texels = plane != nullptr ? plane->tile(page, tile) : nullptr;
-        if (src.texels == nullptr)
-            return std::nullopt; // unwritten: coverage 0 everywhere
-    }
-    return src;
-}
-
-/**
- * Whether every byte b gives b again through fromByte() and toByte(): then a texel no layer
- * touches composites to its base bytes, which can be copied.
- */
-bool byteRoundTrips() {
-    static const bool roundTrips = [] {
-        for (int b = 0; b < 256; ++b)
-            if (toByte(fromByte(std::uint8_t(b))) != std::uint8_t(b))
-                return false;
-        return true;
-    }();
-    return roundTrips;
-}
 
 /**
  * What composeOverBase() blends over the base: per paint layer and channel that takes part its
@@ -403,58 +270,6 @@ void composeInLanes(const NormalSources& s, const CompositeTexels& t) {
 }
 #endif
 
-/**
- * Blends channel c of the layers from `from` on that are the same in every texel of tile of
- * page (fill layers without a mask or with an unwritten one; layers without channel c there
- * are passed) over values (n texels a plane), which hold the base's bytes: each base byte's
- * value is worked out once, with the operations blendLayers() makes per texel, in their order,
- * so the bytes are the same; then looked up per texel. Returns the first layer not blended.
- */
-std::size_t foldUniformLayers(std::span<const std::unique_ptr<PaintLayer>> layers,
-                              std::uint32_t page, std::uint32_t tile, std::size_t from,
-                              std::size_t to, std::size_t c, float* values, std::size_t n) {
-    if (!byteRoundTrips())
-        return from;
-    std::array<std::array<float, 256>, 3> table;
-    for (std::array<float, 256>& component : table)
-        for (int b = 0; b < 256; ++b)
-            component[std::size_t(b)] = fromByte(std::uint8_t(b));
-    std::size_t end = from, folded = 0;
-    int comps = 1;
-    std::size_t firstPlane = 0;
-    for (; end < to; ++end) {
-        const std::optional<ChannelSource> src = channelSource(*layers[end], c, page, tile);
-        if (!src)
-            continue;
-        if (src->texels != nullptr || (src->masked && src->mask != nullptr))
-            break; // differs from texel to texel
-        const ChannelSource& s = *src;
-        comps = s.comps;
-        firstPlane = s.first;
-        const std::uint8_t* none = nullptr;
-        const float a = coverageOf(s, 0, none);
-        if (!(a > 0.0f))
-            continue;
-        withMode(layers[end]->settings.blend, [&](auto mode) {
-            constexpr BlendMode kMode = decltype(mode)::value;
-            for (int k = 0; k < s.comps; ++k)
-                for (float& v : table[std::size_t(k)])
-                    v += a * (blendAs<kMode>(v, s.fill[std::size_t(k)]) - v);
-        });
-        ++folded;
-    }
-    // One layer costs a lookup as much as its blend: only runs of more are looked up.
-    if (folded < 2)
-        return from;
-    for (int k = 0; k < comps; ++k) {
-        float* plane = values + (firstPlane + std::size_t(k)) * n;
-        const std::array<float, 256>& component = table[std::size_t(k)];
-        for (std::size_t at = 0; at < n; ++at)
-            plane[at] = component[toByte(plane[at])];
-    }
-    return end;
-}
-
 /** The channels updateRect() recomputes and the first layer it blends over the values below. */
 struct UpdateScope {
     unsigned channels = 0;
@@ -653,72 +468,6 @@ void PaintLayerStack::endStroke() {
 
 void PaintLayerStack::dropStrokeCache() {
     m_below.clear();
-}
-
-void PaintLayerStack::baseValues(std::uint32_t page, const TileRect& rect, unsigned channels,
-                                 float* values, std::span<const TexelSpan> rows) const {
-    const std::size_t n = texelsOf(rect, rows);
-    const std::size_t width = std::size_t(m_pages[page].width);
-    const std::uint8_t* color = m_baseColor[page].data();
-    const std::uint8_t* mr = hasMaterialChannels() ? m_baseMetallicRoughness[page].data() : nullptr;
-    std::size_t at = 0;
-    for (int y = rect.y; y < rect.y + rect.height; ++y)
-        for (int x = rowOf(rect, rows, y).x0, x1 = rowOf(rect, rows, y).x1; x < x1; ++x, ++at) {
-            const std::size_t i = (std::size_t(y) * width + std::size_t(x)) * 4;
-            if ((channels & 1u) != 0)
-                for (std::size_t k = 0; k < 3; ++k)
-                    values[k * n + at] = fromByte(color[i + k]);
-            // Without material channels roughness and metallic are never read.
-            if (mr != nullptr) {
-                if ((channels & 2u) != 0)
-                    values[3 * n + at] = fromByte(mr[i + 1]);
-                if ((channels & 4u) != 0)
-                    values[4 * n + at] = fromByte(mr[i + 2]);
-            }
-        }
-}
-
-void PaintLayerStack::blendLayers(std::uint32_t page, std::uint32_t tile, const TileRect& rect,
-                                  std::size_t from, std::size_t to, unsigned channels,
-                                  float* values, std::span<const TexelSpan> rows,
-                                  bool overBase) const {
-    const std::size_t n = texelsOf(rect, rows);
-    const TileRect tr = tileRectOf(m_pages[page], tile);
-    const std::size_t channelCount = hasMaterialChannels() ? kPaintChannels : 1;
-    // Channel by channel: a channel's values take only its own layers' channel, in their order.
-    for (std::size_t c = 0; c < channelCount; ++c) {
-        if ((channels & (1u << c)) == 0)
-            continue;
-        const std::size_t first =
-            overBase ? foldUniformLayers(m_layers, page, tile, from, to, c, values, n) : from;
-        for (std::size_t l = first; l < to; ++l) {
-            const std::optional<ChannelSource> src = channelSource(*m_layers[l], c, page, tile);
-            if (!src)
-                continue;
-            const ChannelSource& s = *src;
-            withMode(m_layers[l]->settings.blend, [&](auto mode) {
-                constexpr BlendMode kMode = decltype(mode)::value;
-                std::size_t at = 0;
-                for (int y = rect.y; y < rect.y + rect.height; ++y) {
-                    const std::size_t row = std::size_t(y - tr.y) * std::size_t(tr.width);
-                    const TexelSpan span = rowOf(rect, rows, y);
-                    for (int x = span.x0; x < span.x1; ++x, ++at) {
-                        const std::size_t local = row + std::size_t(x - tr.x);
-                        const std::uint8_t* t = nullptr;
-                        const float a = coverageOf(s, local, t);
-                        if (!(a > 0.0f))
-                            continue;
-                        for (int k = 0; k < s.comps; ++k) {
-                            const float layer =
-                                t != nullptr ? fromByte(t[k]) : s.fill[std::size_t(k)];
-                            float& v = values[(s.first + std::size_t(k)) * n + at];
-                            v += a * (blendAs<kMode>(v, layer) - v);
-                        }
-                    }
-                }
-            });
-        }
-    }
 }
 
 void PaintLayerStack::updateTile(std::uint32_t page, std::uint32_t tile) {
