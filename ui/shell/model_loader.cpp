@@ -35,6 +35,26 @@ struct ModelLoader::Outcome {
     std::string error;
 };
 
+void ModelLoader::loadInto(Outcome& outcome, const std::string& path,
+                           const core::ProgressFn& progress) {
+    core::Result<core::Project> result =
+        core::loadProject(path, [&progress](double f) { return progress(kFileShare * f); });
+    if (!result) {
+        outcome.error = result.error();
+        return;
+    }
+    std::optional<core::MeshTopology> topology =
+        core::buildMeshTopology(result->mesh, [&progress](double f) {
+            return progress(kFileShare + (1.0 - kFileShare) * f);
+        });
+    if (!topology)
+        return; // cancelled
+    outcome.topology = std::make_shared<const core::MeshTopology>(std::move(*topology));
+    outcome.mesh.emplace(std::move(result->mesh));
+    if (result->state)
+        outcome.state = std::make_shared<const core::ProjectState>(std::move(*result->state));
+}
+
 ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {
     m_pool.setMaxThreadCount(kMaxLoadThreads);
     // Files are parsed in an importer process: one started ahead spares each open its start-up.
@@ -63,25 +83,7 @@ void ModelLoader::load(const QString& source) {
         m_pool, this,
         [outcome, path](const core::ProgressFn& progress) {
             try {
-                core::Result<core::Project> result = core::loadProject(
-                    path, [&progress](double f) { return progress(kFileShare * f); });
-                std::optional<core::MeshTopology> topology;
-                if (result)
-                    topology = core::buildMeshTopology(result->mesh, [&progress](double f) {
-                        return progress(kFileShare + (1.0 - kFileShare) * f);
-                    });
-                if (result && !topology)
-                    return; // cancelled
-                if (result) {
-                    outcome->topology =
-                        std::make_shared<const core::MeshTopology>(std::move(*topology));
-                    outcome->mesh.emplace(std::move(result->mesh));
-                    if (result->state)
-                        outcome->state =
-                            std::make_shared<const core::ProjectState>(std::move(*result->state));
-                } else {
-                    outcome->error = result.error();
-                }
+                loadInto(*outcome, path, progress);
             } catch (const std::bad_alloc&) {
                 // loadProject reports its own errors; only an allocation failure can still escape.
                 outcome->mesh.reset();

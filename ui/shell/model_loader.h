@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include <QFuture>
@@ -56,6 +57,12 @@ signals:
 private:
     struct Job;
     struct Outcome;
+    /**
+     * The project or model at path and its topology into outcome, or its error; nothing when
+     * progress says cancelled. On a worker thread.
+     */
+    static void loadInto(Outcome& outcome, const std::string& path,
+                         const core::ProgressFn& progress);
     void finish(Job* job, const std::shared_ptr<Outcome>& outcome);
 
     QThreadPool m_pool; // a cancelled load runs on until its next progress report
