@@ -4,6 +4,8 @@
 // (paint_layers_update.cpp). Runs of fill layers over the base are worked out once per byte.
 #include <array>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 #include "core/paint/paint_layers/layer_sources.h"
 #include "core/paint/paint_layers/paint_layers.h"
@@ -36,42 +38,42 @@ std::size_t foldUniformLayers(std::span<const std::unique_ptr<PaintLayer>> layer
                               std::size_t to, std::size_t c, float* values, std::size_t n) {
     if (!byteRoundTrips())
         return from;
-    std::array<std::array<float, 256>, 3> table;
-    for (std::array<float, 256>& component : table)
-        for (int b = 0; b < 256; ++b)
-            component[std::size_t(b)] = fromByte(std::uint8_t(b));
-    std::size_t end = from, folded = 0;
-    int comps = 1;
-    std::size_t firstPlane = 0;
+    // The run: the layers up to the first whose channel c differs from texel to texel.
+    std::vector<std::pair<ChannelSource, BlendMode>> run;
+    std::size_t end = from;
     for (; end < to; ++end) {
         const std::optional<ChannelSource> src = channelSource(*layers[end], c, page, tile);
         if (!src)
             continue;
         if (src->texels != nullptr || (src->masked && src->mask != nullptr))
-            break; // differs from texel to texel
-        const ChannelSource& s = *src;
-        comps = s.comps;
-        firstPlane = s.first;
+            break;
+        const std::uint8_t* none = nullptr;
+        if (coverageOf(*src, 0, none) > 0.0f)
+            run.emplace_back(*src, layers[end]->settings.blend);
+    }
+    // One layer costs a lookup as much as its blend: only runs of more are worked out per byte.
+    if (run.size() < 2)
+        return from;
+    const auto comps = std::size_t(run.front().first.comps);
+    const std::size_t firstPlane = run.front().first.first;
+    std::array<std::array<float, 256>, 3> table;
+    for (std::size_t k = 0; k < comps; ++k)
+        for (int b = 0; b < 256; ++b)
+            table[k][std::size_t(b)] = fromByte(std::uint8_t(b));
+    for (const auto& [s, blend] : run) {
         const std::uint8_t* none = nullptr;
         const float a = coverageOf(s, 0, none);
-        if (!(a > 0.0f))
-            continue;
-        withMode(layers[end]->settings.blend, [&](auto mode) {
+        withMode(blend, [&](auto mode) {
             constexpr BlendMode kMode = decltype(mode)::value;
-            for (int k = 0; k < s.comps; ++k)
-                for (float& v : table[std::size_t(k)])
-                    v += a * (blendAs<kMode>(v, s.fill[std::size_t(k)]) - v);
+            for (std::size_t k = 0; k < comps; ++k)
+                for (float& v : table[k])
+                    v += a * (blendAs<kMode>(v, s.fill[k]) - v);
         });
-        ++folded;
     }
-    // One layer costs a lookup as much as its blend: only runs of more are looked up.
-    if (folded < 2)
-        return from;
-    for (int k = 0; k < comps; ++k) {
-        float* plane = values + (firstPlane + std::size_t(k)) * n;
-        const std::array<float, 256>& component = table[std::size_t(k)];
+    for (std::size_t k = 0; k < comps; ++k) {
+        float* plane = values + (firstPlane + k) * n;
         for (std::size_t at = 0; at < n; ++at)
-            plane[at] = component[toByte(plane[at])];
+            plane[at] = table[k][toByte(plane[at])];
     }
     return end;
 }
