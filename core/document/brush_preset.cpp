@@ -115,12 +115,8 @@ std::vector<BrushPreset> starterBrushPresets() {
         b.seed = 7;
     });
     add("Spatter", [](Brush& b) {
-        b.tip = "spatter";
+        b.chooseTip("spatter"); // apart, scattered, turned at random
         b.radius = 24.0f;
-        b.spacing = 0.5f;
-        b.angleMode = TipAngleMode::Random;
-        b.jitter.size = 0.5f;
-        b.jitter.scatter = 1.0f;
         b.seed = 11;
     });
     add("Metal Paint", [](Brush& b) {

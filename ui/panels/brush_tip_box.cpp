@@ -211,11 +211,8 @@ void BrushTipBox::readControls() {
         const std::string tip = item->data(Qt::UserRole).toString().toStdString();
         if (tip != m_tip.tip && core::isBuiltinTip(tip)) {
             // A tip chosen comes with the spacing, turn and jitter that make it look like itself.
-            const core::TipCharacter character = core::tipCharacter(tip);
-            m_tip.tip = tip;
-            m_tip.angleMode = character.angleMode;
-            m_tip.jitter = character.jitter;
-            m_chosenSpacing = character.spacing;
+            m_tip.chooseTip(tip);
+            m_chosenSpacing = m_tip.spacing;
             show(m_tip);
             remember();
             emit changed();

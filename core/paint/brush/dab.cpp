@@ -10,6 +10,14 @@ float Brush::falloff(float d, float r) const {
     return roundFalloff(d, r, hardness);
 }
 
+void Brush::chooseTip(std::string_view name) {
+    const TipCharacter character = tipCharacter(name);
+    tip = std::string(name);
+    spacing = character.spacing;
+    angleMode = character.angleMode;
+    jitter = character.jitter;
+}
+
 float Brush::tipHardness() const {
     if (tip == "round-soft")
         return 0.0f;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -85,6 +86,8 @@ struct Brush {
     float tipHardness() const;
     /** The tip's image; nullptr for a round tip (or kUserTip with none loaded). */
     const TipImage* tipImage() const;
+    /** Takes built-in tip name with its spacing, turn and jitter (tipCharacter()). */
+    void chooseTip(std::string_view name);
 };
 
 /**
