@@ -60,10 +60,11 @@ std::size_t foldUniformLayers(std::span<const std::unique_ptr<PaintLayer>> layer
     for (std::size_t k = 0; k < comps; ++k)
         for (int b = 0; b < 256; ++b)
             table[k][std::size_t(b)] = fromByte(std::uint8_t(b));
-    for (const auto& [s, blend] : run) {
+    for (const auto& entry : run) {
+        const ChannelSource& s = entry.first;
         const std::uint8_t* none = nullptr;
         const float a = coverageOf(s, 0, none);
-        withMode(blend, [&](auto mode) {
+        withMode(entry.second, [&](auto mode) {
             constexpr BlendMode kMode = decltype(mode)::value;
             for (std::size_t k = 0; k < comps; ++k)
                 for (float& v : table[k])
