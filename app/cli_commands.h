@@ -60,6 +60,12 @@ struct ExportArgs {
     std::string target;    // "", "texture" or "vertex-colors": paint target of a plain model
     int resolution = 0;    // > 0: size of a new paint texture
     bool perLayer = false; // also every paint layer's channels and mask as images
+    // Texture sets through an export preset (out is then a folder):
+    std::string preset;    // a built-in preset's id or a preset file; empty: none
+    std::string mapFormat; // png, tiff, exr, tga; empty: the preset's
+    int bitDepth = 0;      // 0: the preset's
+    std::string padding;   // texels or "fill"; empty: the preset's
+    int size = 0;          // the maps' longer side; 0: each texture set's own
 };
 
 struct BenchArgs {

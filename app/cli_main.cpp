@@ -93,7 +93,9 @@ CLI::App* addExportCommand(CLI::App& app, cli::ExportArgs& exportArgs) {
                   "texture as png, png16, tiff, exr");
     exportCommand->add_option("INPUT", exportArgs.input, "Project, model file or builtin:NAME")
         ->required();
-    exportCommand->add_option("--out", exportArgs.out, "The file to write")->required();
+    exportCommand
+        ->add_option("--out", exportArgs.out, "The file to write (with --preset: the folder)")
+        ->required();
     exportCommand
         ->add_option("--format", exportArgs.format,
                      "glb, obj, ply, png, png16, tiff or exr (default: from the extension)")
@@ -110,6 +112,31 @@ CLI::App* addExportCommand(CLI::App& app, cli::ExportArgs& exportArgs) {
     exportCommand->add_flag("--per-layer", exportArgs.perLayer,
                             "Also write each paint layer's channels and mask as PNG images "
                             "beside the export");
+    CLI::Option* preset =
+        exportCommand->add_option("--preset", exportArgs.preset,
+                                  "Write each texture set's maps through an export preset: gltf, "
+                                  "unreal, unity, orm or a preset file (JSON)");
+    preset->excludes("--format");
+    exportCommand
+        ->add_option("--map-format", exportArgs.mapFormat,
+                     "With --preset: png, tiff, exr or tga (default: the preset's)")
+        ->check(CLI::IsMember({"png", "tiff", "exr", "tga"}))
+        ->needs(preset);
+    exportCommand
+        ->add_option("--bit-depth", exportArgs.bitDepth,
+                     "With --preset: 8 or 16 (PNG, TIFF), 16 or 32 (EXR)")
+        ->check(CLI::IsMember({8, 16, 32}))
+        ->needs(preset);
+    exportCommand
+        ->add_option("--padding", exportArgs.padding,
+                     "With --preset: texels of padding around the charts, or fill")
+        ->needs(preset);
+    exportCommand
+        ->add_option("--size", exportArgs.size,
+                     "With --preset: the maps' longer side in texels (default: each texture "
+                     "set's own)")
+        ->check(CLI::Range(1, 16384))
+        ->needs(preset);
     return exportCommand;
 }
 

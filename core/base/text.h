@@ -35,6 +35,29 @@ inline std::string withoutFileName(std::string_view path, std::string_view messa
 }
 
 /**
+ * name as a part of a file name: letters, digits, '-' and '_' kept, runs of anything else one
+ * '-', at most maxChars characters; fallback when nothing is left.
+ */
+inline std::string fileNamePart(std::string_view name, std::string_view fallback,
+                                std::size_t maxChars = 40) {
+    std::string out;
+    for (const char ch : name) {
+        const auto c = static_cast<unsigned char>(ch);
+        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '-' || c == '_';
+        if (keep)
+            out.push_back(ch);
+        else if (!out.empty() && out.back() != '-')
+            out.push_back('-');
+        if (out.size() >= maxChars)
+            break;
+    }
+    while (!out.empty() && out.back() == '-')
+        out.pop_back();
+    return out.empty() ? std::string(fallback) : out;
+}
+
+/**
  * text from a file, safe to put into a message: control characters escaped (\n, \r, \t, \xNN)
  * and cut after maxChars characters (UTF-8 sequences kept whole) with "…".
  */

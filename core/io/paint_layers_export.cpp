@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/base/text.h"
 #include "core/io/export.h"
 #include "core/paint/paint_layers/tiled_plane.h"
 
@@ -65,21 +66,7 @@ std::optional<std::array<std::uint8_t, 4>> fillTexel(const ChannelValues& fill, 
 } // namespace
 
 std::string sanitizeLayerName(const std::string& name) {
-    std::string out;
-    for (const char ch : name) {
-        const auto c = static_cast<unsigned char>(ch);
-        const bool keep = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                          (c >= '0' && c <= '9') || c == '-' || c == '_';
-        if (keep)
-            out.push_back(ch);
-        else if (!out.empty() && out.back() != '-')
-            out.push_back('-');
-        if (out.size() >= 40)
-            break;
-    }
-    while (!out.empty() && out.back() == '-')
-        out.pop_back();
-    return out.empty() ? "layer" : out;
+    return fileNamePart(name, "layer");
 }
 
 PaintLayerExport paintLayerExport(const PaintLayerStack& stack) {

@@ -204,15 +204,16 @@ Status readBaseMetallicRoughness(const Json& paintLayers, const std::vector<Page
     }
     if (!entries->is_array())
         return Error{"extras.layerpaint.paint_layers.base_metallic_roughness is not an array"};
+    const std::string misfit = "the roughness and metallic under the paint layers do not fit the "
+                               "model's textures";
     for (const Json& entry : *entries) {
-        const auto p =
-            entry.is_object() ? whole(entry, "page", 0, (long long)pages.size() - 1) : std::nullopt;
-        const auto img = entry.is_object() ? whole(entry, "image", 0, (long long)images.size() - 1)
-                                           : std::nullopt;
+        if (!entry.is_object())
+            return Error{misfit};
+        const auto p = whole(entry, "page", 0, (long long)pages.size() - 1);
+        const auto img = whole(entry, "image", 0, (long long)images.size() - 1);
         if (!p || !img || images[std::size_t(*img)].width != pages[std::size_t(*p)].width ||
             images[std::size_t(*img)].height != pages[std::size_t(*p)].height)
-            return Error{"the roughness and metallic under the paint layers do not fit the "
-                         "model's textures"};
+            return Error{misfit};
         saved.baseMetallicRoughness[std::size_t(*p)] = images[std::size_t(*img)];
     }
     return {};
