@@ -76,23 +76,6 @@ constexpr quint32 kShiftMask = 1;
     return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
 }
 
-/** Runs act on the next modal widget of type T as soon as it shows (it runs its own loop). */
-template <typename T>
-void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {}) {
-    auto* timer = new QTimer(qApp);
-    timer->setInterval(20);
-    QObject::connect(timer, &QTimer::timeout, timer, [timer, act, accept] {
-        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
-        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
-            !widget->windowHandle()->isExposed() || (accept && !accept(widget)))
-            return;
-        timer->stop();
-        timer->deleteLater();
-        act(widget);
-    });
-    timer->start();
-}
-
 [[maybe_unused]] void clickButton(QMessageBox* box, QMessageBox::StandardButton which) {
     QTest::mouseClick(box->button(which), Qt::LeftButton);
 }

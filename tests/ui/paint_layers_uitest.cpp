@@ -60,22 +60,6 @@ using Panel = ui::PaintLayersPanel;
 constexpr int kSaveTimeoutMs = 120000;
 constexpr int kCliTimeoutMs = 300000;
 
-/** Runs act on the next modal dialog of type T once it is shown (its exec() runs meanwhile). */
-template <typename T> void onNextModal(std::function<void(T*)> act) {
-    auto* timer = new QTimer(qApp);
-    timer->setInterval(20);
-    QObject::connect(timer, &QTimer::timeout, timer, [timer, act] {
-        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
-        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
-            !widget->windowHandle()->isExposed())
-            return;
-        timer->stop();
-        timer->deleteLater();
-        act(widget);
-    });
-    timer->start();
-}
-
 /** The pixels of an image file (RGBA8), empty if it cannot be read. */
 QImage pixelsOf(const QString& file) {
     return QImage(file).convertToFormat(QImage::Format_RGBA8888);

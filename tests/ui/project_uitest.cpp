@@ -12,6 +12,7 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMessageBox>
 #include <QProgressDialog>
@@ -40,6 +41,7 @@
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
+#include "ui/shell/texture_export_dialog.h"
 #include "ui/view/depth_layers_builder.h"
 #include "ui/view/viewport.h"
 
@@ -469,6 +471,76 @@ TEST_F(ProjectTest, ExportsRunOffTheGuiThreadWithProgress) {
     QSignalSpy refused(project, &ui::ProjectController::exportFailed);
     EXPECT_FALSE(project->exportTo(core::ExportFormat::Png8, path(QStringLiteral("none.png"))));
     EXPECT_EQ(refused.size(), 1);
+}
+
+TEST_F(ProjectTest, ExportTexturesWritesThePresetsMapsChosenInItsDialog) {
+    openAndBuild(*m_window, QStringLiteral("builtin:trefoil"));
+    const auto [a, b] = pathAcross(*m_window);
+    drag(*m_window, a, b);
+    const std::vector<std::vector<std::uint8_t>> painted = pagesOf(m_window->document());
+    ASSERT_EQ(painted.size(), 1u);
+    const int side = int(std::lround(std::sqrt(double(painted[0].size() / 4))));
+
+    // File ▸ Export Textures…: the Unreal Engine preset chosen with the keyboard, a folder typed.
+    const QString folder = path(QStringLiteral("unreal"));
+    QStringList listed;
+    onNextModal<ui::TextureExportDialog>([&](ui::TextureExportDialog* dialog) {
+        auto* preset = dialog->findChild<QComboBox*>(QStringLiteral("textureExportPreset"));
+        preset->setFocus();
+        while (preset->currentData().toString() != QStringLiteral("unreal") &&
+               preset->currentIndex() < preset->count() - 2)
+            QTest::keyClick(preset, Qt::Key_Down);
+        auto* edit = dialog->findChild<QLineEdit*>(QStringLiteral("textureExportFolder"));
+        edit->setFocus();
+        QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(edit, folder);
+        listed = dialog->fileNames();
+        QTest::mouseClick(dialog->findChild<QPushButton*>(QStringLiteral("textureExportButton")),
+                          Qt::LeftButton);
+    });
+    ui::ProjectController* project = m_window->projectController();
+    QSignalSpy exported(project, &ui::ProjectController::exported);
+    auto* action = m_window->findChild<QAction*>(QStringLiteral("actionExportTextures"));
+    ASSERT_NE(action, nullptr);
+    action->trigger();
+    ASSERT_TRUE(QTest::qWaitFor([&] { return !exported.isEmpty(); }, kSaveTimeoutMs));
+    const QStringList stems = {
+        QStringLiteral("BaseColor"), QStringLiteral("OcclusionRoughnessMetallic"),
+        QStringLiteral("Normal"), QStringLiteral("Emissive"), QStringLiteral("Opacity")};
+    ASSERT_EQ(listed.size(), stems.size());
+    const QStringList files = exported.first().first().toStringList();
+    ASSERT_EQ(files.size(), stems.size());
+    for (int i = 0; i < stems.size(); ++i) {
+        // $mesh the document's name, $textureSet its material's.
+        EXPECT_TRUE(listed[i].startsWith(QStringLiteral("Trefoil-knot_trefoil_")))
+            << listed[i].toStdString();
+        EXPECT_TRUE(listed[i].endsWith(QStringLiteral("_") + stems[i] + QStringLiteral(".png")))
+            << listed[i].toStdString();
+        EXPECT_EQ(QFileInfo(files[i]).fileName(), listed[i]);
+    }
+    // The base colour as painted under the charts (the padding fills only the texels outside).
+    const auto* target =
+        dynamic_cast<const core::TextureTarget*>(m_window->document().paintTarget());
+    ASSERT_NE(target, nullptr);
+    const std::vector<std::uint8_t>& coverage = target->coverage(0);
+    const QImage base = QImage(files[0]).convertToFormat(QImage::Format_RGBA8888);
+    ASSERT_EQ(base.width(), side);
+    const QImage normal = QImage(files[2]).convertToFormat(QImage::Format_RGBA8888);
+    std::size_t same = 0, flat = 0, covered = 0;
+    for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+            const std::uint8_t* p = &painted[0][(std::size_t(y) * std::size_t(side) + x) * 4];
+            const QRgb q = base.pixel(x, y);
+            if (coverage[std::size_t(y) * std::size_t(side) + std::size_t(x)] != 1)
+                continue;
+            ++covered;
+            same += qRed(q) == p[0] && qGreen(q) == p[1] && qBlue(q) == p[2];
+            flat += qGreen(normal.pixel(x, y)) == 128 && qBlue(normal.pixel(x, y)) == 255;
+        }
+    ASSERT_GT(covered, 0u);
+    EXPECT_GT(double(same) / double(covered), 0.99);
+    EXPECT_GT(double(flat) / double(covered), 0.99) << "the trefoil has no normal map: flat";
+    EXPECT_TRUE(m_window->isWindowModified()) << "an export is not a save";
 }
 
 } // namespace project_uitest

@@ -3,10 +3,13 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <functional>
 
+#include <QApplication>
 #include <QImage>
 #include <QRgb>
 #include <QString>
+#include <QTimer>
 #include <QWidget>
 #include <QWindow>
 
@@ -15,6 +18,26 @@ namespace ui_test {
 // Generous: llvmpipe under a loaded CI machine is slow, and a test waits only as long as needed.
 inline constexpr int kLoadTimeoutMs = 60000;
 inline constexpr int kBuildTimeoutMs = 30000;
+
+/**
+ * Runs act on the next modal widget of type T (that accept takes, if given) as soon as it shows:
+ * its exec() runs its own event loop meanwhile.
+ */
+template <typename T>
+void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {}) {
+    auto* timer = new QTimer(qApp);
+    timer->setInterval(20);
+    QObject::connect(timer, &QTimer::timeout, timer, [timer, act, accept] {
+        auto* widget = qobject_cast<T*>(QApplication::activeModalWidget());
+        if (!widget || !widget->isVisible() || !widget->windowHandle() ||
+            !widget->windowHandle()->isExposed() || (accept && !accept(widget)))
+            return;
+        timer->stop();
+        timer->deleteLater();
+        act(widget);
+    });
+    timer->start();
+}
 
 /** The title as shown (windowTitle() keeps the "[*]" unsaved-changes placeholder). */
 inline QString shownTitle(const QWidget& window) {

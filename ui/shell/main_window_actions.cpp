@@ -581,6 +581,14 @@ void MainWindow::createProjectActions(QMenu* fileMenu) {
         connect(action, &QAction::triggered, this,
                 [this, format = info.format] { m_project->showExportDialog(format); });
     }
+    QAction* exportTextures = fileMenu->addAction(tr("Export &Textures…"), m_project,
+                                                  &ProjectController::showTextureExportDialog);
+    exportTextures->setObjectName(QStringLiteral("actionExportTextures"));
+    exportTextures->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    exportTextures->setStatusTip(tr("Write each texture set's maps for a game engine or another "
+                                    "tool, through an export preset"));
+    connect(fileMenu, &QMenu::aboutToShow, this,
+            [this, exportTextures] { exportTextures->setEnabled(m_project->canExportTexture()); });
     // Texture formats need a paint texture (not vertex colours); nothing without a model.
     connect(m_exportMenu, &QMenu::aboutToShow, this, [this] {
         const bool hasModel = m_document->meshSerial() != 0;

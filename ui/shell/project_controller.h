@@ -14,6 +14,7 @@
 
 #include "core/document/project_state.h"
 #include "core/io/export.h"
+#include "core/io/texture_sets/texture_set_export.h"
 
 class QCheckBox;
 class QFileDialog;
@@ -113,6 +114,14 @@ public:
      * is the open project, which an export would replace without its state).
      */
     bool exportTo(core::ExportFormat format, const QString& path, bool perPaintLayer = false);
+    /**
+     * File ▸ Export Textures…: asks for a preset, folder and options (TextureExportDialog), then
+     * writes every texture set through the preset on the worker; exported() or exportFailed()
+     * follow.
+     */
+    void showTextureExportDialog();
+    /** Starts writing the texture sets through options into folder (made if missing). */
+    bool exportTextureSets(const QString& folder, const core::TextureExportOptions& options);
     /** Whether the document has paint layers (the export dialog offers an image per layer). */
     bool hasPaintLayers() const;
     /** Whether the document has a paint texture (texture formats can be exported). */
@@ -185,6 +194,10 @@ private:
     /** Writes snap's export to path on the worker; exported() or exportFailed() follow. */
     void startExport(core::ExportFormat format, const QString& path,
                      const std::shared_ptr<Snapshot>& snap);
+    /** Reports the end of an export (status bar, errors, what was not kept); the signals follow. */
+    void finishExport(const QString& path, const QStringList& files,
+                      const std::vector<std::string>& warnings, const QString& error,
+                      bool cancelled);
     /** A warning box naming what a written file could not keep (nothing if warnings is empty). */
     void showUnkept(const QString& path, const std::vector<std::string>& warnings);
     void onSaveFinished(const std::shared_ptr<Snapshot>& snap, const QString& path,

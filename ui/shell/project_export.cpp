@@ -11,6 +11,8 @@
 #include <QGridLayout>
 #include <QSettings>
 
+#include <filesystem>
+
 #include "core/document/document.h"
 #include "core/io/export.h"
 #include "core/io/paint_layers_export.h"
@@ -18,12 +20,14 @@
 #include "ui/shell/background_task.h"
 #include "ui/shell/notifier.h"
 #include "ui/shell/project_snapshot.h"
+#include "ui/shell/texture_export_dialog.h"
 
 namespace ui {
 
 namespace {
 const QString kExportDirectoryKey = QStringLiteral("export/directory");
 const QString kExportPerLayerKey = QStringLiteral("export/perPaintLayer");
+const QString kTextureExportFolderKey = QStringLiteral("textureExport/folder");
 } // namespace
 
 bool ProjectController::canExportTexture() const {
@@ -208,24 +212,7 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
     connect(
         m_task, &BackgroundTask::finished, this,
         [this, files, warnings, path](const QString& error, bool cancelled) {
-            stopProgress();
-            if (!error.isEmpty()) {
-                if (cancelled) {
-                    m_notifier.showStatus(tr("Export cancelled"), kStatusMs);
-                } else {
-                    m_notifier.showError(
-                        tr("Export Failed"),
-                        tr("Could not export “%1”.").arg(QFileInfo(path).fileName()), error);
-                }
-                emit exportFailed(error);
-                return;
-            }
-            m_notifier.showStatus(
-                tr("Exported %n file(s) to %1", nullptr, int(files->size()))
-                    .arg(QDir::toNativeSeparators(QFileInfo(path).absolutePath())),
-                kStatusMs);
-            showUnkept(path, *warnings);
-            emit exported(*files);
+            finishExport(path, *files, *warnings, error, cancelled);
         },
         Qt::SingleShotConnection);
     const std::string file = encodePath(path);
@@ -258,6 +245,89 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
             files->append(QFile::decodeName(QByteArray::fromStdString(f)));
         return QString();
     });
+}
+
+void ProjectController::finishExport(const QString& path, const QStringList& files,
+                                     const std::vector<std::string>& warnings, const QString& error,
+                                     bool cancelled) {
+    stopProgress();
+    if (!error.isEmpty()) {
+        if (cancelled) {
+            m_notifier.showStatus(tr("Export cancelled"), kStatusMs);
+        } else {
+            m_notifier.showError(tr("Export Failed"),
+                                 tr("Could not export “%1”.").arg(QFileInfo(path).fileName()),
+                                 error);
+        }
+        emit exportFailed(error);
+        return;
+    }
+    const QString folder = QFileInfo(path).isDir() ? path : QFileInfo(path).absolutePath();
+    m_notifier.showStatus(tr("Exported %n file(s) to %1", nullptr, int(files.size()))
+                              .arg(QDir::toNativeSeparators(QDir(folder).absolutePath())),
+                          kStatusMs);
+    showUnkept(path, warnings);
+    emit exported(files);
+}
+
+void ProjectController::showTextureExportDialog() {
+    auto snap = std::make_shared<Snapshot>();
+    if (!snapshotPaintTexture(*snap))
+        return;
+    QSettings settings;
+    const QString folder =
+        settings
+            .value(kTextureExportFolderKey,
+                   settings.value(kExportDirectoryKey, m_filePath.isEmpty()
+                                                           ? QDir::homePath()
+                                                           : QFileInfo(m_filePath).absolutePath()))
+            .toString();
+    QString stem = QFileInfo(documentName()).completeBaseName();
+    TextureExportDialog dialog(std::make_shared<const core::Mesh>(m_document.paintedMesh()), stem,
+                               folder, m_notifier.dialogParent());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    dialog.saveSettings();
+    settings.setValue(kTextureExportFolderKey, dialog.folder());
+    exportTextureSets(dialog.folder(), dialog.options());
+}
+
+bool ProjectController::exportTextureSets(const QString& folder,
+                                          const core::TextureExportOptions& options) {
+    if (m_task->isRunning()) {
+        m_notifier.showStatus(tr("Still busy with the last save or export"), kStatusMs);
+        return false;
+    }
+    auto snap = std::make_shared<Snapshot>();
+    if (!snapshotPaintTexture(*snap))
+        return false;
+    snap->mesh = m_document.paintedMesh();
+    const QString path = QFileInfo(folder).absoluteFilePath();
+    auto files = std::make_shared<QStringList>();
+    auto warnings = std::make_shared<std::vector<std::string>>();
+    connect(
+        m_task, &BackgroundTask::finished, this,
+        [this, files, warnings, path](const QString& error, bool cancelled) {
+            finishExport(path, *files, *warnings, error, cancelled);
+        },
+        Qt::SingleShotConnection);
+    startProgress(tr("Exporting textures to %1…").arg(QDir::toNativeSeparators(path)));
+    const std::string dir = encodePath(path);
+    m_task->start([snap, files, warnings, dir, options](const core::ProgressFn& progress) {
+        std::error_code ec;
+        std::filesystem::create_directories(dir, ec);
+        if (!std::filesystem::is_directory(dir))
+            return fromCore(dir + ": cannot make the folder" +
+                            (ec ? " (" + ec.message() + ")" : std::string()));
+        core::Result<std::vector<std::string>> written =
+            core::exportTextureSets(dir, snap->mesh, options, progress, warnings.get());
+        if (!written)
+            return written.cancelled() ? QStringLiteral("cancelled") : fromCore(written.error());
+        for (const std::string& f : *written)
+            files->append(QFile::decodeName(QByteArray::fromStdString(f)));
+        return QString();
+    });
+    return true;
 }
 
 } // namespace ui
