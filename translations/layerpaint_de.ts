@@ -1544,6 +1544,14 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Strokes paint this paint layer</source>
         <translation>Striche malen in diese Malschicht</translation>
     </message>
+    <message>
+        <source>Export &amp;Textures…</source>
+        <translation>&amp;Texturen exportieren…</translation>
+    </message>
+    <message>
+        <source>Write each texture set&apos;s maps for a game engine or another tool, through an export preset</source>
+        <translation>Die Maps jedes Texturensatzes für eine Spiel-Engine oder ein anderes Programm schreiben, über eine Exportvorgabe</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -2160,6 +2168,10 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>“%1” was written, but not all of the model could be kept:</source>
         <translation>„%1“ wurde geschrieben, aber nicht alles am Modell konnte behalten werden:</translation>
     </message>
+    <message>
+        <source>Exporting textures to %1…</source>
+        <translation>Texturen werden nach %1 exportiert…</translation>
+    </message>
 </context>
 <context>
     <name>ui::QuickGuideDialog</name>
@@ -2624,6 +2636,153 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     <message>
         <source>Radial</source>
         <translation>Radial</translation>
+    </message>
+</context>
+<context>
+    <name>ui::TextureExportDialog</name>
+    <message>
+        <source>Export Textures</source>
+        <translation>Texturen exportieren</translation>
+    </message>
+    <message>
+        <source>&amp;Preset:</source>
+        <translation>&amp;Vorgabe:</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>&amp;Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Ordner:</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>F&amp;ormat:</translation>
+    </message>
+    <message>
+        <source>&amp;Bit depth:</source>
+        <translation>&amp;Bittiefe:</translation>
+    </message>
+    <message>
+        <source>&amp;Normal map:</source>
+        <translation>&amp;Normal-Map:</translation>
+    </message>
+    <message>
+        <source>Pa&amp;dding:</source>
+        <translation>&amp;Randauffüllung:</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Größe:</translation>
+    </message>
+    <message>
+        <source>Files to write:</source>
+        <translation>Zu schreibende Dateien:</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>glTF metallic-roughness</source>
+        <translation>glTF Metallic-Roughness</translation>
+    </message>
+    <message>
+        <source>Unreal Engine</source>
+        <translation>Unreal Engine</translation>
+    </message>
+    <message>
+        <source>Unity (URP, HDRP)</source>
+        <translation>Unity (URP, HDRP)</translation>
+    </message>
+    <message>
+        <source>ORM (Godot, Blender)</source>
+        <translation>ORM (Godot, Blender)</translation>
+    </message>
+    <message>
+        <source>From a Preset File…</source>
+        <translation>Aus einer Vorgabedatei…</translation>
+    </message>
+    <message>
+        <source>PNG</source>
+        <translation>PNG</translation>
+    </message>
+    <message>
+        <source>TIFF</source>
+        <translation>TIFF</translation>
+    </message>
+    <message>
+        <source>OpenEXR</source>
+        <translation>OpenEXR</translation>
+    </message>
+    <message>
+        <source>TGA</source>
+        <translation>TGA</translation>
+    </message>
+    <message>
+        <source>OpenGL (Y up: glTF, Unity, Godot, Blender)</source>
+        <translation>OpenGL (Y nach oben: glTF, Unity, Godot, Blender)</translation>
+    </message>
+    <message>
+        <source>DirectX (Y down: Unreal Engine)</source>
+        <translation>DirectX (Y nach unten: Unreal Engine)</translation>
+    </message>
+    <message>
+        <source> texels</source>
+        <translation> Texel</translation>
+    </message>
+    <message>
+        <source>How far the colours at the edges of the UV charts are grown into the empty space, so that mipmaps show no seams</source>
+        <translation>Wie weit die Farben an den Rändern der UV-Inseln in den leeren Raum wachsen, damit Mipmaps keine Nähte zeigen</translation>
+    </message>
+    <message>
+        <source>Fill all empty space</source>
+        <translation>Den ganzen leeren Raum füllen</translation>
+    </message>
+    <message>
+        <source>Each texture set&apos;s own</source>
+        <translation>Die jedes Texturensatzes</translation>
+    </message>
+    <message>
+        <source>%1 × %1</source>
+        <translation>%1 × %1</translation>
+    </message>
+    <message>
+        <source>16-bit float (half)</source>
+        <translation>16-Bit-Gleitkomma (half)</translation>
+    </message>
+    <message>
+        <source>32-bit float</source>
+        <translation>32-Bit-Gleitkomma</translation>
+    </message>
+    <message>
+        <source>8-bit</source>
+        <translation>8 Bit</translation>
+    </message>
+    <message>
+        <source>16-bit</source>
+        <translation>16 Bit</translation>
+    </message>
+    <message>
+        <source>The model has no texture set to export: it is painted with vertex colours.</source>
+        <translation>Das Modell hat keinen Texturensatz zum Exportieren: es wird mit Vertexfarben bemalt.</translation>
+    </message>
+    <message>
+        <source>Choose the folder to write the files into.</source>
+        <translation>Wählen Sie den Ordner, in den die Dateien geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>Export Textures To</source>
+        <translation>Texturen exportieren nach</translation>
+    </message>
+    <message>
+        <source>Texture Export Preset</source>
+        <translation>Texturexport-Vorgabe</translation>
+    </message>
+    <message>
+        <source>Export presets (*.json)</source>
+        <translation>Exportvorgaben (*.json)</translation>
     </message>
 </context>
 <context>

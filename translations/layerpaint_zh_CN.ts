@@ -1542,6 +1542,14 @@ connectivity %3 ms, regions %4 ms
         <source>Strokes paint this paint layer</source>
         <translation>笔画绘制此绘画层</translation>
     </message>
+    <message>
+        <source>Export &amp;Textures…</source>
+        <translation>导出纹理(&amp;T)…</translation>
+    </message>
+    <message>
+        <source>Write each texture set&apos;s maps for a game engine or another tool, through an export preset</source>
+        <translation>通过导出预设，为游戏引擎或其他工具写出每个纹理集的贴图</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -2156,6 +2164,10 @@ connectivity %3 ms, regions %4 ms
         <source>“%1” was written, but not all of the model could be kept:</source>
         <translation>已写入“%1”，但模型的部分内容未能保留：</translation>
     </message>
+    <message>
+        <source>Exporting textures to %1…</source>
+        <translation>正在将纹理导出到 %1…</translation>
+    </message>
 </context>
 <context>
     <name>ui::QuickGuideDialog</name>
@@ -2616,6 +2628,153 @@ Smaller splits the view into more regions.</source>
     <message>
         <source>Radial</source>
         <translation>径向</translation>
+    </message>
+</context>
+<context>
+    <name>ui::TextureExportDialog</name>
+    <message>
+        <source>Export Textures</source>
+        <translation>导出纹理</translation>
+    </message>
+    <message>
+        <source>&amp;Preset:</source>
+        <translation>预设(&amp;P)：</translation>
+    </message>
+    <message>
+        <source>&amp;Browse…</source>
+        <translation>浏览(&amp;B)…</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>文件夹(&amp;F)：</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>格式(&amp;O)：</translation>
+    </message>
+    <message>
+        <source>&amp;Bit depth:</source>
+        <translation>位深(&amp;B)：</translation>
+    </message>
+    <message>
+        <source>&amp;Normal map:</source>
+        <translation>法线贴图(&amp;N)：</translation>
+    </message>
+    <message>
+        <source>Pa&amp;dding:</source>
+        <translation>边缘填充(&amp;D)：</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>尺寸(&amp;S)：</translation>
+    </message>
+    <message>
+        <source>Files to write:</source>
+        <translation>将写出的文件：</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>导出(&amp;E)</translation>
+    </message>
+    <message>
+        <source>glTF metallic-roughness</source>
+        <translation>glTF 金属度-粗糙度</translation>
+    </message>
+    <message>
+        <source>Unreal Engine</source>
+        <translation>Unreal Engine</translation>
+    </message>
+    <message>
+        <source>Unity (URP, HDRP)</source>
+        <translation>Unity（URP、HDRP）</translation>
+    </message>
+    <message>
+        <source>ORM (Godot, Blender)</source>
+        <translation>ORM（Godot、Blender）</translation>
+    </message>
+    <message>
+        <source>From a Preset File…</source>
+        <translation>从预设文件…</translation>
+    </message>
+    <message>
+        <source>PNG</source>
+        <translation>PNG</translation>
+    </message>
+    <message>
+        <source>TIFF</source>
+        <translation>TIFF</translation>
+    </message>
+    <message>
+        <source>OpenEXR</source>
+        <translation>OpenEXR</translation>
+    </message>
+    <message>
+        <source>TGA</source>
+        <translation>TGA</translation>
+    </message>
+    <message>
+        <source>OpenGL (Y up: glTF, Unity, Godot, Blender)</source>
+        <translation>OpenGL（Y 向上：glTF、Unity、Godot、Blender）</translation>
+    </message>
+    <message>
+        <source>DirectX (Y down: Unreal Engine)</source>
+        <translation>DirectX（Y 向下：Unreal Engine）</translation>
+    </message>
+    <message>
+        <source> texels</source>
+        <translation> 纹素</translation>
+    </message>
+    <message>
+        <source>How far the colours at the edges of the UV charts are grown into the empty space, so that mipmaps show no seams</source>
+        <translation>UV 块边缘的颜色向空白区域扩展多远，使 mipmap 不出现接缝</translation>
+    </message>
+    <message>
+        <source>Fill all empty space</source>
+        <translation>填满所有空白区域</translation>
+    </message>
+    <message>
+        <source>Each texture set&apos;s own</source>
+        <translation>各纹理集自身的尺寸</translation>
+    </message>
+    <message>
+        <source>%1 × %1</source>
+        <translation>%1 × %1</translation>
+    </message>
+    <message>
+        <source>16-bit float (half)</source>
+        <translation>16 位浮点（half）</translation>
+    </message>
+    <message>
+        <source>32-bit float</source>
+        <translation>32 位浮点</translation>
+    </message>
+    <message>
+        <source>8-bit</source>
+        <translation>8 位</translation>
+    </message>
+    <message>
+        <source>16-bit</source>
+        <translation>16 位</translation>
+    </message>
+    <message>
+        <source>The model has no texture set to export: it is painted with vertex colours.</source>
+        <translation>模型没有可导出的纹理集：它用顶点颜色绘制。</translation>
+    </message>
+    <message>
+        <source>Choose the folder to write the files into.</source>
+        <translation>请选择写入文件的文件夹。</translation>
+    </message>
+    <message>
+        <source>Export Textures To</source>
+        <translation>导出纹理到</translation>
+    </message>
+    <message>
+        <source>Texture Export Preset</source>
+        <translation>纹理导出预设</translation>
+    </message>
+    <message>
+        <source>Export presets (*.json)</source>
+        <translation>导出预设 (*.json)</translation>
     </message>
 </context>
 <context>

@@ -135,6 +135,7 @@ void TextureExportDialog::buildFormatRows() {
     m_padding = new QSpinBox(this);
     m_padding->setObjectName(QStringLiteral("textureExportPadding"));
     m_padding->setRange(0, core::kMaxPadding);
+    m_padding->setValue(16); // when Fill is turned off
     m_padding->setSuffix(tr(" texels"));
     m_padding->setToolTip(tr("How far the colours at the edges of the UV charts are grown into "
                              "the empty space, so that mipmaps show no seams"));

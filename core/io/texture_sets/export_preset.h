@@ -67,7 +67,7 @@ struct ExportPreset {
     NormalConvention normal = NormalConvention::OpenGl;
     MapFileFormat format = MapFileFormat::Png;
     int bitDepth = 8; // PNG and TIFF 8 or 16, TGA 8, EXR 16 (half) or 32 (float)
-    int padding = 16; // texels grown around the charts, or kPadToFill
+    int padding = kPadToFill; // texels grown around the charts, or every empty one
     std::vector<PresetMap> maps;
 
     bool operator==(const ExportPreset&) const = default;

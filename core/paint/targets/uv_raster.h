@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Internal to core: exact texel-space rasterization of UV triangles, shared by the paint targets
-// and the flood fill so both visit the same texels of a triangle.
+// Internal to core: exact texel-space rasterization of UV triangles, shared by the paint targets,
+// the flood fill and the texture-set export so all visit the same texels of a triangle.
 #pragma once
 
 #include <algorithm>

@@ -224,7 +224,7 @@ TEST(TextureSetExport, ResamplingToAChosenSizeAveragesTheTexels) {
 TEST(TextureSetExport, APresetFileMapsChannelsToComponents) {
     const std::string json = R"({
       "name": "Mine", "fileName": "$textureSet-$channel", "normal": "directx",
-      "format": "tga", "padding": "fill",
+      "format": "tga", "padding": 8,
       "maps": [
         {"name": "Color", "rgb": "baseColor", "a": "opacity"},
         {"name": "RMA", "r": "roughness", "g": "metallic", "b": "occlusion", "a": 0.5},
@@ -234,7 +234,7 @@ TEST(TextureSetExport, APresetFileMapsChannelsToComponents) {
     core::Result<core::ExportPreset> preset = core::parsePreset(json, "mine.json");
     ASSERT_TRUE(preset.ok()) << preset.error();
     EXPECT_EQ(preset->format, MapFileFormat::Tga);
-    EXPECT_EQ(preset->padding, core::kPadToFill);
+    EXPECT_EQ(preset->padding, 8);
     ASSERT_EQ(preset->maps.size(), 4u);
     EXPECT_EQ(preset->maps[1].components.size(), 4u);
     EXPECT_EQ(preset->maps[1].components[3].constant, 0.5f);
