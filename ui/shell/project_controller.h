@@ -23,7 +23,8 @@ class QProgressDialog;
 
 namespace core {
 class Document;
-}
+class PaintTarget;
+} // namespace core
 
 namespace ui {
 
@@ -187,6 +188,9 @@ private:
     QCheckBox* addPerPaintLayerBox(QFileDialog& dialog, bool hasLayers, bool checked);
     /** Says why an export to the open project's own file is refused; exportFailed() follows. */
     void refuseExportOverProject(const QString& path);
+    /** The paint target whose texture sets are exported, made if needed; null (reported) if none.
+     */
+    const core::PaintTarget* paintTextureToExport();
     /** Export steps: what is exported, copied on the GUI thread; false (reported) if missing. */
     bool snapshotPaintTexture(Snapshot& snap);
     bool snapshotPaintedModel(Snapshot& snap) const;

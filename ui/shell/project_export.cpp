@@ -159,7 +159,7 @@ void ProjectController::refuseExportOverProject(const QString& path) {
     emit exportFailed(why);
 }
 
-bool ProjectController::snapshotPaintTexture(Snapshot& snap) {
+const core::PaintTarget* ProjectController::paintTextureToExport() {
     std::string error;
     const core::PaintTarget* painted = nullptr;
     if (canExportTexture()) {
@@ -169,15 +169,21 @@ bool ProjectController::snapshotPaintTexture(Snapshot& snap) {
         else
             error = target.error();
     }
-    if (!painted || painted->pageCount() == 0) {
-        const QString why = error.empty()
-                                ? tr("The model is painted with vertex colours, so there is no "
-                                     "paint texture: export it as glTF or PLY.")
-                                : fromCore(error);
-        m_notifier.showError(tr("Export Failed"), tr("Could not export the paint texture."), why);
-        emit exportFailed(why);
+    if (painted && painted->pageCount() > 0)
+        return painted;
+    const QString why = error.empty()
+                            ? tr("The model is painted with vertex colours, so there is no "
+                                 "paint texture: export it as glTF or PLY.")
+                            : fromCore(error);
+    m_notifier.showError(tr("Export Failed"), tr("Could not export the paint texture."), why);
+    emit exportFailed(why);
+    return nullptr;
+}
+
+bool ProjectController::snapshotPaintTexture(Snapshot& snap) {
+    const core::PaintTarget* painted = paintTextureToExport();
+    if (!painted)
         return false;
-    }
     for (std::size_t i = 0; i < painted->pageCount(); ++i) {
         snap.pages.push_back(painted->page(i));
         snap.metallicRoughness.push_back(painted->metallicRoughnessPage(i));
@@ -271,8 +277,7 @@ void ProjectController::finishExport(const QString& path, const QStringList& fil
 }
 
 void ProjectController::showTextureExportDialog() {
-    auto snap = std::make_shared<Snapshot>();
-    if (!snapshotPaintTexture(*snap))
+    if (!paintTextureToExport())
         return;
     QSettings settings;
     const QString folder =
@@ -298,9 +303,9 @@ bool ProjectController::exportTextureSets(const QString& folder,
         m_notifier.showStatus(tr("Still busy with the last save or export"), kStatusMs);
         return false;
     }
-    auto snap = std::make_shared<Snapshot>();
-    if (!snapshotPaintTexture(*snap))
+    if (!paintTextureToExport())
         return false;
+    auto snap = std::make_shared<Snapshot>();
     snap->mesh = m_document.paintedMesh();
     const QString path = QFileInfo(folder).absoluteFilePath();
     auto files = std::make_shared<QStringList>();
