@@ -174,6 +174,49 @@ TEST_F(CliProject, ExportWritesEveryFormat) {
     EXPECT_NE(unknown.err.find("unknown export format"), std::string::npos) << unknown.err;
 }
 
+TEST_F(CliProject, ExportThroughAPresetWritesEachMapOfTheTextureSet) {
+    writeScript("a.json", kFirstScript);
+    ASSERT_EQ(run({"paint", "builtin:trefoil", "--script", file("a.json"), "--out",
+                   file("knot.glb"), "--cpu"})
+                  .exitCode,
+              0);
+    const CliRun r = run({"export", file("knot.glb"), "--preset", "unity", "--out", file("unity"),
+                          "--size", "256", "--map-format", "tga"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json report = json::parse(r.out);
+    EXPECT_EQ(report["format"], "tga");
+    const std::vector<std::string> expected = {
+        "knot_trefoil_BaseMap.tga", "knot_trefoil_MaskMap.tga", "knot_trefoil_Normal.tga",
+        "knot_trefoil_Emission.tga"};
+    ASSERT_EQ(report["files"].size(), expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const fs::path written = report["files"][i].get<std::string>();
+        EXPECT_EQ(written.filename().string(), expected[i]);
+        core::Result<core::Image> image = core::loadImageFile(written.string());
+        ASSERT_TRUE(image.ok()) << image.error();
+        EXPECT_EQ(image->width, 256);
+    }
+    // The painted red reaches the base map (a 1024² stroke seen at 256²).
+    core::Result<core::Image> base = core::loadImageFile(file("unity/knot_trefoil_BaseMap.tga"));
+    ASSERT_TRUE(base.ok());
+    bool red = false;
+    for (std::size_t i = 0; i < base->rgba.size(); i += 4)
+        red = red || (base->rgba[i] > 200 && base->rgba[i + 1] < 60 && base->rgba[i + 2] < 60);
+    EXPECT_TRUE(red);
+
+    const CliRun unknown =
+        run({"export", file("knot.glb"), "--preset", "frostbite", "--out", file("x")});
+    EXPECT_NE(unknown.exitCode, 0);
+    EXPECT_NE(unknown.err.find("gltf, unreal, unity, orm"), std::string::npos) << unknown.err;
+    const CliRun both = run(
+        {"export", file("knot.glb"), "--preset", "unity", "--format", "png", "--out", file("x")});
+    EXPECT_NE(both.exitCode, 0);
+    const CliRun depth = run({"export", file("knot.glb"), "--preset", "unity", "--map-format",
+                              "tga", "--bit-depth", "16", "--out", file("x")});
+    EXPECT_NE(depth.exitCode, 0);
+    EXPECT_NE(depth.err.find("cannot hold 16-bit"), std::string::npos) << depth.err;
+}
+
 TEST_F(CliProject, PaintAndExportSayWhatLoadingCorrected) {
     json state = core::projectStateToJson({});
     state["brush"]["opacity"] = 7; // out of range: the default is used, with a warning
