@@ -40,6 +40,7 @@
 #include "tests/ui/ui_test_util.h"
 #include "tests/ui/window_test.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/model_loader.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/texture_export_dialog.h"
 #include "ui/view/depth_layers_builder.h"
@@ -541,6 +542,42 @@ TEST_F(ProjectTest, ExportTexturesWritesThePresetsMapsChosenInItsDialog) {
     EXPECT_GT(double(same) / double(covered), 0.99);
     EXPECT_GT(double(flat) / double(covered), 0.99) << "the trefoil has no normal map: flat";
     EXPECT_TRUE(m_window->isWindowModified()) << "an export is not a save";
+}
+
+TEST_F(ProjectTest, CancelWhileOpeningKeepsTheOpenModelAndDropsTheLoad) {
+    openAndBuild(*m_window, QStringLiteral("builtin:trefoil"));
+    const std::uint64_t serial = m_window->document().meshSerial();
+    const QString title = m_window->windowTitle();
+    auto* loader = m_window->findChild<ui::ModelLoader*>();
+    ASSERT_NE(loader, nullptr);
+    QSignalSpy loaded(m_window.get(), &ui::MainWindow::modelLoaded);
+    // Cancel while the file is read, then while its topology is made (the last 15 %).
+    for (const double stage : {0.0, 0.86}) {
+        SCOPED_TRACE(stage);
+        m_window->openFile(QStringLiteral("builtin:knot?triangles=3000000"));
+        QProgressDialog* dialog = nullptr;
+        ASSERT_TRUE(QTest::qWaitFor(
+            [&] {
+                dialog = m_window->findChild<QProgressDialog*>(QStringLiteral("loadProgress"));
+                return dialog && dialog->isVisible() && loader->progress() >= stage;
+            },
+            kLoadTimeoutMs))
+            << "the load ended before its progress dialog showed";
+        auto* cancel = dialog->findChild<QPushButton*>();
+        ASSERT_NE(cancel, nullptr);
+        QTest::mouseClick(cancel, Qt::LeftButton);
+        // At once, not when the worker notices: the dialog is gone, the old model stays.
+        EXPECT_FALSE(loader->isLoading());
+        const auto* left = m_window->findChild<QProgressDialog*>(QStringLiteral("loadProgress"));
+        EXPECT_TRUE(left == nullptr || !left->isVisible());
+        EXPECT_EQ(m_window->document().meshSerial(), serial);
+        // The worker stops in the background and nothing of it arrives.
+        ASSERT_TRUE(QTest::qWaitFor([&] { return loader->runningJobs() == 0; }, kLoadTimeoutMs));
+        QTest::qWait(50);
+        EXPECT_TRUE(loaded.isEmpty());
+        EXPECT_EQ(m_window->document().meshSerial(), serial);
+        EXPECT_EQ(m_window->windowTitle(), title);
+    }
 }
 
 } // namespace project_uitest

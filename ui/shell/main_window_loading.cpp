@@ -162,6 +162,7 @@ void MainWindow::startProgress(const QString& source) {
     auto* dialog = new QProgressDialog(tr("Opening %1…").arg(sourceDisplayName(source)),
                                        tr("Cancel"), 0, kProgressSteps, this);
     dialog->setWindowTitle(tr("Opening Model"));
+    dialog->setObjectName(QStringLiteral("loadProgress"));
     dialog->setAutoClose(false);
     dialog->setAutoReset(false);
     dialog->setMinimumDuration(kProgressDelayMs);
@@ -174,10 +175,15 @@ void MainWindow::startProgress(const QString& source) {
 
 void MainWindow::stopProgress() {
     m_progressTimer.stop();
-    // Deleted at once: a hidden dialog left for deleteLater could still be shown by its own
-    // minimum-duration timer. Never called from inside the dialog's methods.
-    delete m_progress.data();
+    QProgressDialog* dialog = m_progress.data();
     m_progress = nullptr;
+    // A cancelled dialog is hidden with its timer stopped, and this may run inside its canceled
+    // signal: it goes once its click is handled. Any other is deleted at once: hidden and left for
+    // deleteLater, its own minimum-duration timer could still show it.
+    if (dialog && dialog->wasCanceled())
+        dialog->deleteLater();
+    else
+        delete dialog;
 }
 
 void MainWindow::updateModelInfo(const core::Mesh& mesh, const QString& note, bool plainModel) {

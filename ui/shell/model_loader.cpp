@@ -69,7 +69,7 @@ ModelLoader::~ModelLoader() {
 }
 
 void ModelLoader::load(const QString& source) {
-    cancel();
+    dropCurrent(); // superseded: no cancelled()
     auto job = std::make_unique<Job>();
     job->source = source;
     Job* raw = job.get();
@@ -97,8 +97,19 @@ void ModelLoader::load(const QString& source) {
 }
 
 void ModelLoader::cancel() {
-    if (m_current)
-        m_current->future.cancel();
+    if (!m_current)
+        return;
+    // Said at once: the worker stops at its next progress report, and its result is dropped.
+    const QString source = m_current->source;
+    dropCurrent();
+    emit cancelled(source);
+}
+
+void ModelLoader::dropCurrent() {
+    if (!m_current)
+        return;
+    m_current->future.cancel();
+    m_current = nullptr;
 }
 
 bool ModelLoader::isLoading() const {
@@ -126,9 +137,7 @@ void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
         return; // superseded by a newer load
     m_current = nullptr;
     const QString source = owned->source;
-    if (owned->future.isCanceled())
-        emit cancelled(source);
-    else if (outcome->mesh)
+    if (outcome->mesh)
         emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)),
                     outcome->topology, outcome->state);
     else

@@ -33,12 +33,17 @@ public:
 
     /** Starts loading source: a file path or "builtin:NAME". */
     void load(const QString& source);
-    /** Asks the current load to stop; cancelled() follows instead of loaded() or failed(). */
+    /**
+     * Stops the current load: cancelled() is emitted before this returns and nothing of the load
+     * arrives later (its worker stops at its next progress report).
+     */
     void cancel();
 
     bool isLoading() const;
     /** The current load's source, or empty. */
     QString currentSource() const;
+    /** Loads whose workers have not ended yet (cancelled and superseded ones included). */
+    int runningJobs() const { return int(m_jobs.size()); }
     /** Progress of the current load in [0, 1]; safe to poll from the GUI thread. */
     double progress() const;
 
@@ -64,8 +69,10 @@ private:
     static void loadInto(Outcome& outcome, const std::string& path,
                          const core::ProgressFn& progress);
     void finish(Job* job, const std::shared_ptr<Outcome>& outcome);
+    /** Stops the current load without a word (its worker ends on its own, its result dropped). */
+    void dropCurrent();
 
-    QThreadPool m_pool; // a cancelled load runs on until its next progress report
+    QThreadPool m_pool; // a cancelled or superseded load runs on until its next progress report
     std::vector<std::unique_ptr<Job>> m_jobs; // current one last; touched on the GUI thread only
     Job* m_current = nullptr;
 };
