@@ -21,12 +21,18 @@ void Document::setMesh(Mesh mesh, std::string name) {
 }
 
 void Document::setMesh(Mesh mesh, std::string name, std::shared_ptr<const MeshTopology> topology) {
-    m_mesh = std::make_shared<const Mesh>(std::move(mesh));
+    setMesh(std::make_shared<const Mesh>(std::move(mesh)), std::move(name), std::move(topology));
+}
+
+void Document::setMesh(std::shared_ptr<const Mesh> mesh, std::string name,
+                       std::shared_ptr<const MeshTopology> topology) {
+    m_mesh = std::move(mesh);
     m_topology = std::move(topology);
     m_name = std::move(name);
     ++m_meshSerial;
     clearDepthLayers();
     m_paintTarget.reset();
+    m_modelTargetRevision.reset();
     ++m_targetSerial;
     m_history.clear();
     m_session.clear();
@@ -385,7 +391,8 @@ Status Document::setPaintTarget(const PaintTargetOptions& options, const Progres
 Status Document::adoptPaintTarget(std::unique_ptr<PaintTarget> target,
                                   const PaintTargetOptions& options, std::uint64_t meshSerial) {
     if (!target || meshSerial != m_meshSerial ||
-        target->mesh().triangleCount() != m_mesh->triangleCount())
+        target->mesh().triangleCount() != m_mesh->triangleCount() ||
+        (!needsUvLayout(*m_mesh, options) && &target->mesh() != m_mesh.get()))
         return Error{"the paint target was made for another model"};
     installPaintTarget(std::move(target), options);
     return {};
@@ -395,11 +402,24 @@ PaintTargetKind Document::suggestedPaintTargetKind() const {
     return defaultTargetKind(*m_mesh, Brush{}.radius);
 }
 
+Status Document::adoptModelPaintTarget(std::unique_ptr<PaintTarget> target,
+                                       const PaintTargetOptions& options) {
+    if (m_paintTarget)
+        return Error{"the model has a paint target already"};
+    if (Status s = adoptPaintTarget(std::move(target), options, m_meshSerial); !s)
+        return s;
+    m_modelTargetRevision = m_history.revision();
+    return {};
+}
+
 void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
                                   const PaintTargetOptions& options, nlohmann::json operation) {
     if (m_tracker.inStroke())
         endStroke();
-    if (m_paintTarget) {
+    // The target made with the model, untouched: replaced as if it had not been made yet.
+    const bool untouched = m_modelTargetRevision && *m_modelTargetRevision == m_history.revision();
+    m_modelTargetRevision.reset();
+    if (m_paintTarget && !untouched) {
         m_session.noteState(*this);
         if (operation.is_null()) {
             const bool colours = target->kind() == PaintTargetKind::VertexColors;

@@ -46,6 +46,9 @@ public:
     void setMesh(Mesh mesh, std::string name);
     /** setMesh() with mesh's topology made already (buildMeshTopology() of this mesh). */
     void setMesh(Mesh mesh, std::string name, std::shared_ptr<const MeshTopology> topology);
+    /** The same with the mesh shared already (a paint target made for it can be adopted). */
+    void setMesh(std::shared_ptr<const Mesh> mesh, std::string name,
+                 std::shared_ptr<const MeshTopology> topology);
     /**
      * The default view of the model: perspective, looking along -Z with Y up, its bounding
      * sphere framed with kFrameMargin for the view aspect (setViewAspect()).
@@ -195,8 +198,16 @@ public:
      * setPaintTarget() with a target made elsewhere (e.g. off the GUI thread by
      * makePaintTargetWithLayout()) from this document's mesh at meshSerial with options. An
      * Error, and nothing changes, when the mesh has been replaced since or the target is not one
-     * of its triangles.
+     * of its triangles. A target made before the document had a mesh to paint (as a model loads)
+     * is not an undo step.
      */
+    /**
+     * adoptPaintTarget() of the target made with the model as it loaded (off the GUI thread),
+     * right after setMesh(): it stands for the one ensurePaintTarget() would make on first use, so
+     * replacing it before anything was done (no history change since) is no undo step either.
+     */
+    Status adoptModelPaintTarget(std::unique_ptr<PaintTarget> target,
+                                 const PaintTargetOptions& options);
     Status adoptPaintTarget(std::unique_ptr<PaintTarget> target, const PaintTargetOptions& options,
                             std::uint64_t meshSerial);
     /**
@@ -485,6 +496,8 @@ private:
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;
+    /** The history's revision when the target made with the model was adopted, if it is that. */
+    std::optional<std::uint64_t> m_modelTargetRevision;
     std::uint64_t m_targetSerial = 0;
     History m_history;
     SessionLog m_session;

@@ -574,11 +574,13 @@ TEST(ModelLoaderTest, CancelAndSupersede) {
     QTest::qWait(50); // let a stray result of the first load show up if there were one
     ASSERT_EQ(loaded.size(), 1);
     EXPECT_EQ(loaded.first().first().toString(), QStringLiteral("builtin:hexring"));
-    // The topology was made in the background too, of the mesh delivered.
-    const auto mesh = loaded.first().at(1).value<std::shared_ptr<core::Mesh>>();
-    const auto topology = loaded.first().at(2).value<std::shared_ptr<const core::MeshTopology>>();
-    ASSERT_TRUE(mesh && topology);
-    EXPECT_EQ(topology->planes.size(), mesh->triangleCount());
+    // The topology and the paint target were made in the background too, of the mesh delivered.
+    const auto model = loaded.first().at(1).value<std::shared_ptr<ui::LoadedModel>>();
+    ASSERT_TRUE(model && model->mesh && model->topology);
+    EXPECT_EQ(model->topology->planes.size(), model->mesh->triangleCount());
+    ASSERT_NE(model->paintTarget, nullptr) << "the hex ring has UVs: a texture target";
+    EXPECT_EQ(&model->paintTarget->mesh(), model->mesh.get());
+    EXPECT_EQ(model->paintTarget->kind(), core::PaintTargetKind::Texture);
     EXPECT_TRUE(failed.isEmpty());
     EXPECT_EQ(cancelled.size(), 1);
     ASSERT_TRUE(QTest::qWaitFor([&] { return loader.runningJobs() == 0; }, kLoadTimeoutMs));

@@ -252,7 +252,7 @@ void MainWindow::openFile(const QString& source) {
     const QString resolved =
         isBuiltinSource(source) ? source : QFileInfo(source).absoluteFilePath();
     startProgress(resolved);
-    m_loader->load(resolved);
+    m_loader->load(resolved, newModelPaintOptions());
 }
 
 void MainWindow::openFromCommandLine(const QStringList& files) {

@@ -46,6 +46,7 @@ class DepthLayersBuilder;
 class DepthLayersPanel;
 class MessageBar;
 class ModelLoader;
+struct LoadedModel;
 class Notifier;
 class PaintLayersPanel;
 class PaintTargetJob;
@@ -337,9 +338,9 @@ private:
     void createProjectActions(QMenu* fileMenu);
     void updateWindowTitle();
 
-    void onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
-                  std::shared_ptr<const core::MeshTopology> topology,
-                  std::shared_ptr<const core::ProjectState> state);
+    void onLoaded(const QString& source, std::shared_ptr<LoadedModel> model);
+    /** The paint options a newly opened model starts with (the preferred texture size). */
+    core::PaintTargetOptions newModelPaintOptions() const;
     void onLoadFailed(const QString& source, const QString& message);
     void onLoadCancelled(const QString& source);
     void startProgress(const QString& source);

@@ -32,10 +32,17 @@ namespace {
 constexpr int kProgressDelayMs = 400; // quick loads finish without a dialog flashing up
 } // namespace
 
-void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
-                          std::shared_ptr<const core::MeshTopology> topology,
-                          std::shared_ptr<const core::ProjectState> state) {
+core::PaintTargetOptions MainWindow::newModelPaintOptions() const {
+    // A new model starts with the preferred size for a new texture, on its own UVs.
+    core::PaintTargetOptions options = m_paintOptions;
+    options.resolution = m_preferences.textureSize;
+    options.automaticUvs = false;
+    return options;
+}
+
+void MainWindow::onLoaded(const QString& source, std::shared_ptr<LoadedModel> model) {
     stopProgress();
+    const std::shared_ptr<const core::ProjectState>& state = model->state;
     // Recovered work is shown under its own name: the project it belongs to, else the model it
     // was painted from; the autosave's name is an internal one.
     const bool recovered = state && m_project->isRecoveryFile(source);
@@ -55,15 +62,16 @@ void MainWindow::onLoaded(const QString& source, std::shared_ptr<core::Mesh> mes
                 .arg(sourceDisplayName(m_source),
                      QLocale().toString(QFileInfo(source).lastModified(), QLocale::ShortFormat));
     }
-    updateModelInfo(*mesh, recoveredNote, !state);
+    updateModelInfo(*model->mesh, recoveredNote, !state);
     finishStroke();
-    // A new model starts with the preferred size for a new texture, on its own UVs.
-    m_paintOptions.resolution = m_preferences.textureSize;
-    m_paintOptions.automaticUvs = false;
+    m_paintOptions = newModelPaintOptions();
     m_document->setPaintOptions(m_paintOptions);
     m_targetJob->cancel(); // a layout for the previous model
-    // This window is the loader's only listener: the mesh moves into the document.
-    m_document->setMesh(std::move(*mesh), m_source.toStdString(), std::move(topology));
+    m_document->setMesh(model->mesh, m_source.toStdString(), model->topology);
+    // The paint target made with the model: the first frame shows it, the first stroke paints.
+    if (model->paintTarget &&
+        m_document->adoptModelPaintTarget(std::move(model->paintTarget), model->paintOptions))
+        m_paintOptions = model->paintOptions;
     if (state) {
         applyProjectState(*state);
     } else {

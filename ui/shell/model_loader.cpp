@@ -11,6 +11,7 @@
 
 #include "core/io/mesh_io.h"
 #include "core/io/project/project_file.h"
+#include "core/paint/targets/layout_target.h"
 #include "ui/shell/background_task.h"
 
 namespace ui {
@@ -25,17 +26,19 @@ struct ModelLoader::Job {
     QFuture<void> future;
 };
 
-// What the file takes of a load's progress; the mesh's topology takes the rest.
-constexpr double kFileShare = 0.85;
+// What the file takes of a load's progress; the mesh's topology and paint target the rest.
+constexpr double kFileShare = 0.8;
+constexpr double kTopologyShare = 0.15;
+
+LoadedModel::~LoadedModel() = default;
 
 struct ModelLoader::Outcome {
-    std::optional<core::Mesh> mesh;
-    std::shared_ptr<const core::MeshTopology> topology;
-    std::shared_ptr<const core::ProjectState> state;
+    std::shared_ptr<LoadedModel> model;
     std::string error;
 };
 
 void ModelLoader::loadInto(Outcome& outcome, const std::string& path,
+                           const core::PaintTargetOptions& paintOptions,
                            const core::ProgressFn& progress) {
     core::Result<core::Project> result =
         core::loadProject(path, [&progress](double f) { return progress(kFileShare * f); });
@@ -43,16 +46,34 @@ void ModelLoader::loadInto(Outcome& outcome, const std::string& path,
         outcome.error = result.error();
         return;
     }
-    std::optional<core::MeshTopology> topology =
-        core::buildMeshTopology(result->mesh, [&progress](double f) {
-            return progress(kFileShare + (1.0 - kFileShare) * f);
-        });
+    std::optional<core::MeshTopology> topology = core::buildMeshTopology(
+        result->mesh, [&progress](double f) { return progress(kFileShare + kTopologyShare * f); });
     if (!topology)
         return; // cancelled
-    outcome.topology = std::make_shared<const core::MeshTopology>(std::move(*topology));
-    outcome.mesh.emplace(std::move(result->mesh));
+    auto model = std::make_shared<LoadedModel>();
+    model->topology = std::make_shared<const core::MeshTopology>(std::move(*topology));
+    model->mesh = std::make_shared<const core::Mesh>(std::move(result->mesh));
     if (result->state)
-        outcome.state = std::make_shared<const core::ProjectState>(std::move(*result->state));
+        model->state = std::make_shared<const core::ProjectState>(std::move(*result->state));
+    else if (model->mesh->hasUvs() && !core::needsUvLayout(*model->mesh, paintOptions))
+        makePaintTarget(*model, paintOptions, progress);
+    if (!progress(1.0))
+        return; // cancelled
+    outcome.model = std::move(model);
+}
+
+void ModelLoader::makePaintTarget(LoadedModel& model, const core::PaintTargetOptions& options,
+                                  const core::ProgressFn& progress) {
+    if (!progress(kFileShare + kTopologyShare))
+        return;
+    // Made as the document would on the first stroke; without one it still does (an error
+    // is said then).
+    core::Result<std::unique_ptr<core::PaintTarget>> target =
+        core::makePaintTargetWithLayout(model.mesh, model.topology, options);
+    if (!target)
+        return;
+    model.paintTarget = std::move(target).value();
+    model.paintOptions = options;
 }
 
 ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {
@@ -68,7 +89,7 @@ ModelLoader::~ModelLoader() {
     m_pool.waitForDone();
 }
 
-void ModelLoader::load(const QString& source) {
+void ModelLoader::load(const QString& source, const core::PaintTargetOptions& paintOptions) {
     dropCurrent(); // superseded: no cancelled()
     auto job = std::make_unique<Job>();
     job->source = source;
@@ -81,15 +102,15 @@ void ModelLoader::load(const QString& source) {
     auto outcome = std::make_shared<Outcome>();
     raw->future = runInBackground(
         m_pool, this,
-        [outcome, path](const core::ProgressFn& progress) {
+        [outcome, path, paintOptions](const core::ProgressFn& progress) {
             try {
-                loadInto(*outcome, path, progress);
+                loadInto(*outcome, path, paintOptions, progress);
             } catch (const std::bad_alloc&) {
                 // loadProject reports its own errors; only an allocation failure can still escape.
-                outcome->mesh.reset();
+                outcome->model.reset();
                 outcome->error = path + ": not enough memory";
             } catch (const std::exception& e) {
-                outcome->mesh.reset();
+                outcome->model.reset();
                 outcome->error = path + ": " + e.what();
             }
         },
@@ -137,9 +158,8 @@ void ModelLoader::finish(Job* job, const std::shared_ptr<Outcome>& outcome) {
         return; // superseded by a newer load
     m_current = nullptr;
     const QString source = owned->source;
-    if (outcome->mesh)
-        emit loaded(source, std::make_shared<core::Mesh>(std::move(*outcome->mesh)),
-                    outcome->topology, outcome->state);
+    if (outcome->model)
+        emit loaded(source, std::move(outcome->model));
     else
         emit failed(source, QString::fromStdString(outcome->error));
 }

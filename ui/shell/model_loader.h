@@ -14,8 +14,29 @@
 #include "core/io/project/project_file.h"
 #include "core/model/mesh.h"
 #include "core/model/mesh_topology.h"
+#include "core/paint/targets/paint_target.h"
+
+namespace core {
+class PaintTarget;
+}
 
 namespace ui {
+
+/** What a load delivers (ModelLoader::loaded()), made in the background. */
+struct LoadedModel {
+    std::shared_ptr<const core::Mesh> mesh;
+    std::shared_ptr<const core::MeshTopology> topology;
+    /** The project's state (a LayerPaint project), or null for a plain model. */
+    std::shared_ptr<const core::ProjectState> state;
+    /**
+     * A plain model's paint target on its own UVs, made with the options load() was given (so
+     * the first stroke does not wait for it, and the first frame shows it); null if none.
+     */
+    std::unique_ptr<core::PaintTarget> paintTarget;
+    core::PaintTargetOptions paintOptions;
+
+    ~LoadedModel();
+};
 
 /**
  * Loads models and projects with core::loadProject, and makes their topology, in the background
@@ -31,8 +52,12 @@ public:
     /** Cancels every running load and waits for the workers to stop. */
     ~ModelLoader() override;
 
-    /** Starts loading source: a file path or "builtin:NAME". */
-    void load(const QString& source);
+    /**
+     * Starts loading source: a file path or "builtin:NAME". A plain model with UVs gets its paint
+     * target made with paintOptions too (none made when paintOptions asks for an automatic UV
+     * layout).
+     */
+    void load(const QString& source, const core::PaintTargetOptions& paintOptions = {});
     /**
      * Stops the current load: cancelled() is emitted before this returns and nothing of the load
      * arrives later (its worker stops at its next progress report).
@@ -48,13 +73,8 @@ public:
     double progress() const;
 
 signals:
-    /**
-     * The mesh with its topology (made in the background too), and state the project's (a
-     * LayerPaint project) or null for a plain model.
-     */
-    void loaded(const QString& source, std::shared_ptr<core::Mesh> mesh,
-                std::shared_ptr<const core::MeshTopology> topology,
-                std::shared_ptr<const core::ProjectState> state);
+    /** The model, its topology and paint target or project state (see LoadedModel). */
+    void loaded(const QString& source, std::shared_ptr<ui::LoadedModel> model);
     /** message comes from core and names the file. */
     void failed(const QString& source, const QString& message);
     void cancelled(const QString& source);
@@ -67,7 +87,11 @@ private:
      * progress says cancelled. On a worker thread.
      */
     static void loadInto(Outcome& outcome, const std::string& path,
+                         const core::PaintTargetOptions& paintOptions,
                          const core::ProgressFn& progress);
+    /** model's paint target made with options (on the worker; none if it cannot be made). */
+    static void makePaintTarget(LoadedModel& model, const core::PaintTargetOptions& options,
+                                const core::ProgressFn& progress);
     void finish(Job* job, const std::shared_ptr<Outcome>& outcome);
     /** Stops the current load without a word (its worker ends on its own, its result dropped). */
     void dropCurrent();

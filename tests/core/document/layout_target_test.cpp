@@ -146,6 +146,31 @@ TEST(LayoutTarget, SameLayoutEveryTimeAndAdoptedOnlyForItsMesh) {
     EXPECT_TRUE(doc.paintedMesh().hasUvs());
 }
 
+TEST(LayoutTarget, TheTargetMadeWithTheModelIsReplacedWithoutAnUndoStepUntilUsed) {
+    const auto mesh = std::make_shared<const core::Mesh>(core::makeHexRing());
+    ASSERT_TRUE(mesh->hasUvs());
+    auto made = core::makePaintTargetWithLayout(mesh, nullptr, textureOptions());
+    ASSERT_TRUE(made.ok()) << made.error();
+    core::Document doc;
+    // Only for the document's own mesh, the very object.
+    doc.setMesh(core::makeHexRing(), "copy");
+    EXPECT_FALSE(doc.adoptModelPaintTarget(std::move(made).value(), textureOptions()).ok());
+    EXPECT_FALSE(doc.hasPaintTarget());
+    doc.setMesh(mesh, "ring", nullptr);
+    made = core::makePaintTargetWithLayout(mesh, nullptr, textureOptions());
+    ASSERT_TRUE(doc.adoptModelPaintTarget(std::move(made).value(), textureOptions()).ok());
+    ASSERT_TRUE(doc.hasPaintTarget());
+    EXPECT_EQ(&doc.paintTarget()->mesh(), mesh.get());
+    // Chosen away before anything was done: as if no target had been made.
+    core::PaintTargetOptions colours;
+    colours.kind = core::PaintTargetKind::VertexColors;
+    ASSERT_TRUE(doc.setPaintTarget(colours).ok());
+    EXPECT_FALSE(doc.history().canUndo());
+    // Any other target is a step when replaced.
+    ASSERT_TRUE(doc.setPaintTarget(textureOptions()).ok());
+    EXPECT_TRUE(doc.history().canUndo());
+}
+
 TEST(LayoutTarget, ScriptOperationSetTargetTextureMakesTheLayout) {
     core::Document doc;
     doc.setMesh(coarseBox(), "box");
