@@ -280,6 +280,9 @@ void MainWindow::createUndoActions() {
 }
 
 void MainWindow::createToolActions() {
+    // A row of its own: beside the brush bar, longer names (German) pushed tools into the
+    // overflow menu at the window's minimum size.
+    addToolBarBreak(Qt::TopToolBarArea);
     m_toolBar = addToolBar(tr("Tools"));
     m_toolBar->setObjectName(QStringLiteral("toolsToolBar"));
     m_toolGroup = new QActionGroup(this);

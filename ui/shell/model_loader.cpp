@@ -73,6 +73,7 @@ void ModelLoader::makePaintTarget(LoadedModel& model, const core::PaintTargetOpt
     if (!target)
         return;
     model.paintTarget = std::move(target).value();
+    model.paintTarget->prepareForStrokes();
     model.paintOptions = options;
 }
 

@@ -41,9 +41,7 @@ void PaintTarget::Context::updateView(const View& v) {
     }
     c.have = true;
     c.view = v;
-    c.vertices.resize(mesh->vertexCount());
-    c.vertexView.resize(mesh->vertexCount(), 0u);
-    c.triangleView.resize(mesh->triangleCount());
+    prepareView();
     if (++c.serial == 0) {
         std::fill(c.vertexView.begin(), c.vertexView.end(), 0u);
         std::fill(c.triangleView.begin(), c.triangleView.end(), TriangleView{});
@@ -55,6 +53,13 @@ void PaintTarget::Context::updateView(const View& v) {
     c.rays = PixelRays::fromView(v);
     c.footprintScale = std::max(glm::length(c.rays.directionDx), glm::length(c.rays.directionDy));
     c.footprintOffset = std::max(glm::length(c.rays.originDx), glm::length(c.rays.originDy));
+}
+
+void PaintTarget::Context::prepareView() {
+    ViewState& c = current;
+    c.vertices.resize(mesh->vertexCount());
+    c.vertexView.resize(mesh->vertexCount(), 0u);
+    c.triangleView.resize(mesh->triangleCount());
 }
 
 const ProjectedVertex& PaintTarget::Context::vertex(std::uint32_t v) {

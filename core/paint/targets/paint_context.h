@@ -260,6 +260,8 @@ struct PaintTarget::Context {
     struct TextureDab;
 
     void updateView(const View& v);
+    /** Sizes the current view's per-vertex and per-triangle arrays (kept when they fit). */
+    void prepareView();
     const ProjectedVertex& vertex(std::uint32_t v);
     bool setUpTriangle(std::uint32_t t, TriangleSetup& s);
     /** Triangle t in the current view, set up on first use in the view. */

@@ -187,6 +187,10 @@ void PaintTarget::setUpStrokeTiles(const std::vector<std::uint32_t>& tilesPerPag
     c.scratch.resize(bytesPerTile);
 }
 
+void PaintTarget::prepareForStrokes() {
+    m_context->prepareView();
+}
+
 void PaintTarget::beginStroke(const Brush& brush) {
     Context& c = *m_context;
     if (c.inStroke)

@@ -148,6 +148,12 @@ public:
     const Mesh& mesh() const;
 
     /**
+     * Makes now what the first stroke would make of the projection context (per vertex and per
+     * triangle of the mesh: hundreds of megabytes on a 10M-triangle mesh), e.g. on the thread
+     * that made the target, so that the first stroke is as quick as the next.
+     */
+    void prepareForStrokes();
+    /**
      * Starts a stroke with brush (colour, hardness, flow, eraser; radius and opacity come with
      * each dab). A stroke in progress is ended first and its record discarded.
      */
