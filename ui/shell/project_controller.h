@@ -198,6 +198,9 @@ private:
     /** Writes snap's export to path on the worker; exported() or exportFailed() follow. */
     void startExport(core::ExportFormat format, const QString& path,
                      const std::shared_ptr<Snapshot>& snap);
+    /** finishExport() once the task's job (which fills files and warnings) has finished. */
+    void finishExportWhenDone(const QString& path, const std::shared_ptr<QStringList>& files,
+                              const std::shared_ptr<std::vector<std::string>>& warnings);
     /** Reports the end of an export (status bar, errors, what was not kept); the signals follow. */
     void finishExport(const QString& path, const QStringList& files,
                       const std::vector<std::string>& warnings, const QString& error,

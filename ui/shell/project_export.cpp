@@ -215,12 +215,7 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
                                     const std::shared_ptr<Snapshot>& snap) {
     auto files = std::make_shared<QStringList>();
     auto warnings = std::make_shared<std::vector<std::string>>();
-    connect(
-        m_task, &BackgroundTask::finished, this,
-        [this, files, warnings, path](const QString& error, bool cancelled) {
-            finishExport(path, *files, *warnings, error, cancelled);
-        },
-        Qt::SingleShotConnection);
+    finishExportWhenDone(path, files, warnings);
     const std::string file = encodePath(path);
     m_task->start([snap, files, warnings, file, format](const core::ProgressFn& progress) {
         // With the paint layers, the export is the first half of the progress, they the second.
@@ -251,6 +246,17 @@ void ProjectController::startExport(core::ExportFormat format, const QString& pa
             files->append(QFile::decodeName(QByteArray::fromStdString(f)));
         return QString();
     });
+}
+
+void ProjectController::finishExportWhenDone(
+    const QString& path, const std::shared_ptr<QStringList>& files,
+    const std::shared_ptr<std::vector<std::string>>& warnings) {
+    connect(
+        m_task, &BackgroundTask::finished, this,
+        [this, files, warnings, path](const QString& error, bool cancelled) {
+            finishExport(path, *files, *warnings, error, cancelled);
+        },
+        Qt::SingleShotConnection);
 }
 
 void ProjectController::finishExport(const QString& path, const QStringList& files,
@@ -310,12 +316,7 @@ bool ProjectController::exportTextureSets(const QString& folder,
     const QString path = QFileInfo(folder).absoluteFilePath();
     auto files = std::make_shared<QStringList>();
     auto warnings = std::make_shared<std::vector<std::string>>();
-    connect(
-        m_task, &BackgroundTask::finished, this,
-        [this, files, warnings, path](const QString& error, bool cancelled) {
-            finishExport(path, *files, *warnings, error, cancelled);
-        },
-        Qt::SingleShotConnection);
+    finishExportWhenDone(path, files, warnings);
     startProgress(tr("Exporting textures to %1…").arg(QDir::toNativeSeparators(path)));
     const std::string dir = encodePath(path);
     m_task->start([snap, files, warnings, dir, options](const core::ProgressFn& progress) {
