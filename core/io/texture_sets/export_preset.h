@@ -66,7 +66,7 @@ struct ExportPreset {
     std::string fileName = "$mesh_$textureSet_$channel";
     NormalConvention normal = NormalConvention::OpenGl;
     MapFileFormat format = MapFileFormat::Png;
-    int bitDepth = 8; // PNG and TIFF 8 or 16, TGA 8, EXR 16 (half) or 32 (float)
+    int bitDepth = 8;         // PNG and TIFF 8 or 16, TGA 8, EXR 16 (half) or 32 (float)
     int padding = kPadToFill; // texels grown around the charts, or every empty one
     std::vector<PresetMap> maps;
 
