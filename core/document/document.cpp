@@ -384,6 +384,7 @@ Status Document::setPaintTarget(const PaintTargetOptions& options, const Progres
     auto target = makePaintTargetWithLayout(m_mesh, m_topology, options, progress);
     if (!target)
         return target.takeError();
+    forgetUntouchedModelTarget();
     installPaintTarget(std::move(target).value(), options);
     return {};
 }
@@ -394,8 +395,16 @@ Status Document::adoptPaintTarget(std::unique_ptr<PaintTarget> target,
         target->mesh().triangleCount() != m_mesh->triangleCount() ||
         (!needsUvLayout(*m_mesh, options) && &target->mesh() != m_mesh.get()))
         return Error{"the paint target was made for another model"};
+    forgetUntouchedModelTarget();
     installPaintTarget(std::move(target), options);
     return {};
+}
+
+void Document::forgetUntouchedModelTarget() {
+    // Chosen away before anything was done with it: as if it had not been made yet (it stood for
+    // the one the first stroke would have made), so the choice is no undo step either.
+    if (m_modelTargetRevision && *m_modelTargetRevision == m_history.revision())
+        m_paintTarget.reset();
 }
 
 PaintTargetKind Document::suggestedPaintTargetKind() const {
@@ -416,10 +425,8 @@ void Document::installPaintTarget(std::unique_ptr<PaintTarget> target,
                                   const PaintTargetOptions& options, nlohmann::json operation) {
     if (m_tracker.inStroke())
         endStroke();
-    // The target made with the model, untouched: replaced as if it had not been made yet.
-    const bool untouched = m_modelTargetRevision && *m_modelTargetRevision == m_history.revision();
     m_modelTargetRevision.reset();
-    if (m_paintTarget && !untouched) {
+    if (m_paintTarget) {
         m_session.noteState(*this);
         if (operation.is_null()) {
             const bool colours = target->kind() == PaintTargetKind::VertexColors;

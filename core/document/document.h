@@ -204,7 +204,8 @@ public:
     /**
      * adoptPaintTarget() of the target made with the model as it loaded (off the GUI thread),
      * right after setMesh(): it stands for the one ensurePaintTarget() would make on first use, so
-     * replacing it before anything was done (no history change since) is no undo step either.
+     * choosing another target (setPaintTarget(), adoptPaintTarget()) before anything was done (no
+     * history change since) is no undo step either; raising its texture size is one.
      */
     Status adoptModelPaintTarget(std::unique_ptr<PaintTarget> target,
                                  const PaintTargetOptions& options);
@@ -496,6 +497,8 @@ private:
     DabStats m_dabStats;
     PaintTargetOptions m_paintOptions;
     std::unique_ptr<PaintTarget> m_paintTarget;
+    /** Before another target is chosen: drops the model's target if it is still untouched. */
+    void forgetUntouchedModelTarget();
     /** The history's revision when the target made with the model was adopted, if it is that. */
     std::optional<std::uint64_t> m_modelTargetRevision;
     std::uint64_t m_targetSerial = 0;

@@ -71,7 +71,8 @@ int hueOf(std::uint32_t region) {
 
 class SegmentationTest : public WindowTest {
 protected:
-    SegmentationTest() : WindowTest({1100, 720}) {}
+    // The size gives the view of the trefoil whose region counts the tests below rely on.
+    SegmentationTest() : WindowTest({1100, 754}) {}
 
     void SetUp() override {
         WindowTest::SetUp();

@@ -66,15 +66,19 @@ void ModelLoader::makePaintTarget(LoadedModel& model, const core::PaintTargetOpt
                                   const core::ProgressFn& progress) {
     if (!progress(kFileShare + kTopologyShare))
         return;
-    // Made as the document would on the first stroke; without one it still does (an error
-    // is said then).
-    core::Result<std::unique_ptr<core::PaintTarget>> target =
-        core::makePaintTargetWithLayout(model.mesh, model.topology, options);
-    if (!target)
-        return;
-    model.paintTarget = std::move(target).value();
-    model.paintTarget->prepareForStrokes();
-    model.paintOptions = options;
+    // Made as the document would on the first stroke; without one (an error, or too little
+    // memory for it now) the first stroke still tries, and says why it cannot.
+    try {
+        core::Result<std::unique_ptr<core::PaintTarget>> target =
+            core::makePaintTargetWithLayout(model.mesh, model.topology, options);
+        if (!target)
+            return;
+        target.value()->prepareForStrokes();
+        model.paintTarget = std::move(target).value();
+        model.paintOptions = options;
+    } catch (const std::bad_alloc&) {
+        model.paintTarget.reset();
+    }
 }
 
 ModelLoader::ModelLoader(QObject* parent) : QObject(parent) {
