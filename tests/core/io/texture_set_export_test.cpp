@@ -156,7 +156,7 @@ TEST(TextureSetExport, UnityMaskMapHoldsSmoothnessAndUnrealNormalsAreDirectX) {
     const core::Image orm = read(gltf.file("model_Metal_OcclusionRoughnessMetallic.png"));
     const core::Image directX = read(unreal.file("model_Metal_Normal.png"));
     const core::Image openGl = read(gltf.file("model_Metal_Normal.png"));
-    const core::Image& normal = twoSets().textures[2];
+    const core::Image& normal = mesh.textures[2];
     for (int y = 0; y < kSize; ++y)
         for (int x = 0; x < kCoveredColumns; ++x) {
             const std::uint8_t* m = texel(mask, x, y);
@@ -256,7 +256,8 @@ TEST(TextureSetExport, APresetFileMapsChannelsToComponents) {
         core::exportTextureSets(dir.path().string(), twoSets(), options);
     ASSERT_TRUE(files.ok()) << files.error();
     const core::Image y = read(dir.file("Metal-NormalY.tga"));
-    EXPECT_EQ(texel(y, 3, 4)[0], 255 - texel(twoSets().textures[2], 3, 4)[1]);
+    const core::Mesh mesh = twoSets();
+    EXPECT_EQ(texel(y, 3, 4)[0], 255 - texel(mesh.textures[2], 3, 4)[1]);
 }
 
 TEST(TextureSetExport, BadPresetsAreRefusedWithTheReason) {
