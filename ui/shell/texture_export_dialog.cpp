@@ -243,19 +243,24 @@ void TextureExportDialog::browseFolder() {
 void TextureExportDialog::loadPresetFile() {
     const QString path = QFileDialog::getOpenFileName(this, tr("Texture Export Preset"), folder(),
                                                       tr("Export presets (*.json)"));
-    if (path.isEmpty() || !addPresetFile(path)) {
-        // Back to the preset chosen before.
+    QString error;
+    if (path.isEmpty() || !addPresetFile(path, &error)) {
+        // Back to the first preset, saying why the file was refused.
         const QSignalBlocker blocker(m_preset);
         m_preset->setCurrentIndex(0);
         choosePreset(0);
+        if (!error.isEmpty()) {
+            m_problem->setText(error);
+            m_problem->show();
+        }
     }
 }
 
-bool TextureExportDialog::addPresetFile(const QString& path) {
+bool TextureExportDialog::addPresetFile(const QString& path, QString* error) {
     core::Result<core::ExportPreset> preset = core::findPreset(encodePath(path));
     if (!preset) {
-        m_problem->setText(QString::fromStdString(preset.error()));
-        m_problem->show();
+        if (error)
+            *error = QString::fromStdString(preset.error());
         return false;
     }
     const int existing = int(m_presetFiles.indexOf(path));

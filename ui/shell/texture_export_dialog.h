@@ -37,9 +37,8 @@ public:
     QString folder() const;
     /** The file names the export writes, as listed. */
     QStringList fileNames() const;
-    /** Adds a preset file's preset to the list and chooses it; false (said in the dialog) if bad.
-     */
-    bool addPresetFile(const QString& path);
+    /** Adds a preset file's preset to the list and chooses it; false (and why) if it is bad. */
+    bool addPresetFile(const QString& path, QString* error = nullptr);
     /** Remembers the choices for the next time (called when the export starts). */
     void saveSettings() const;
 
