@@ -14,7 +14,8 @@
 #include "core/base/parallel.h"
 #include "core/base/text.h"
 #include "core/io/atomic_write.h"
-#include "core/io/image/image_codecs.h"
+#include "core/io/image/image_encode.h"
+#include "core/model/image_sample.h"
 #include "core/paint/targets/uv_raster.h"
 
 namespace core {
@@ -68,22 +69,6 @@ SetRaster rasterize(const Mesh& mesh, const TextureSet& set) {
     return r;
 }
 
-/** The bytes of image at uv (repeating), bilinear, as 0..1 values (no colour decoding). */
-glm::dvec4 sampleRaw(const Image& image, double u, double v) {
-    const double fx = u * image.width - 0.5, fy = v * image.height - 0.5;
-    const double x0 = std::floor(fx), y0 = std::floor(fy);
-    const double tx = fx - x0, ty = fy - y0;
-    const auto at = [&](double x, double y) {
-        const int xi = uv::wrapIndex(int(std::fmod(x, double(image.width))), image.width);
-        const int yi = uv::wrapIndex(int(std::fmod(y, double(image.height))), image.height);
-        const std::uint8_t* p =
-            &image.rgba[(std::size_t(yi) * std::size_t(image.width) + std::size_t(xi)) * 4];
-        return glm::dvec4(p[0], p[1], p[2], p[3]) / 255.0;
-    };
-    return (at(x0, y0) * (1.0 - tx) + at(x0 + 1, y0) * tx) * (1.0 - ty) +
-           (at(x0, y0 + 1) * (1.0 - tx) + at(x0 + 1, y0 + 1) * tx) * ty;
-}
-
 using ChannelValues = std::array<std::array<double, 3>, kChannelCount>;
 
 /** Evaluates a set's channels at its texels. */
@@ -135,12 +120,11 @@ private:
         if (map.texture < 0 || std::size_t(map.texture) >= m_mesh.textures.size() ||
             m_mesh.textures[std::size_t(map.texture)].empty())
             return std::nullopt;
-        if (map.uvTransform != glm::mat3(1.0f)) {
-            const glm::dvec3 t = glm::dmat3(map.uvTransform) * glm::dvec3(u, v, 1.0);
-            u = t.x;
-            v = t.y;
-        }
-        return sampleRaw(m_mesh.textures[std::size_t(map.texture)], u, v);
+        // As the texture target reads a material's maps (its starting roughness and metallic).
+        const Image& image = m_mesh.textures[std::size_t(map.texture)];
+        const glm::vec2 uv(map.uvTransform * glm::vec3(float(u), float(v), 1.0f));
+        return glm::dvec4(sampleChannel(image, uv, 0), sampleChannel(image, uv, 1),
+                          sampleChannel(image, uv, 2), sampleChannel(image, uv, 3));
     }
 
     std::array<double, 3> normal(const Material& m, double u, double v) const {
@@ -234,58 +218,11 @@ AxisWeights axisWeights(int in, int out) {
 Result<std::vector<std::uint8_t>> encodeMap(const PackedMap& map, const PresetMap& source,
                                             const ExportPreset& preset,
                                             const ProgressFn& progress) {
-    Result<const ImageCodecs*> codecs = imageCodecs();
-    if (!codecs)
-        return codecs.takeError();
-    const std::size_t pixels = std::size_t(map.width) * std::size_t(map.height);
-    const std::size_t n = std::size_t(map.components);
-    EncodeRequest request;
-    request.width = map.width;
-    request.height = map.height;
-    request.channels = map.components;
-    request.extension = mapFileExtension(preset.format);
-    request.format = preset.format == MapFileFormat::Tiff  ? "tiff"
-                     : preset.format == MapFileFormat::Exr ? "openexr"
-                     : preset.format == MapFileFormat::Tga ? "targa"
-                                                           : "png";
-    request.zip = preset.format == MapFileFormat::Tiff || preset.format == MapFileFormat::Exr;
-    const bool colour =
-        source.components[0].channel && isColorChannel(*source.components[0].channel);
-    // Values go in 4 to a pixel, as the encoder takes them; the first `components` are written.
-    std::vector<std::uint8_t> bytes;
-    std::vector<std::uint16_t> wide;
-    std::vector<float> floats;
-    if (preset.format == MapFileFormat::Exr) {
-        request.type = PixelType::Float32;
-        request.halfFloat = preset.bitDepth == 16;
-        request.colorSpace = "Linear";
-        floats.assign(pixels * 4, 0.0f);
-        for (std::size_t i = 0; i < pixels; ++i)
-            for (std::size_t k = 0; k < n; ++k) {
-                const float v = float(map.values[i * n + k]) / 65535.0f;
-                const auto& c = source.components[k];
-                floats[i * 4 + k] = c.channel && isColorChannel(*c.channel) ? srgbToLinear(v) : v;
-            }
-        request.pixels = floats.data();
-    } else if (preset.bitDepth == 16) {
-        request.type = PixelType::UInt16;
-        wide.assign(pixels * 4, 0);
-        for (std::size_t i = 0; i < pixels; ++i)
-            for (std::size_t k = 0; k < n; ++k)
-                wide[i * 4 + k] = map.values[i * n + k];
-        request.pixels = wide.data();
-    } else {
-        bytes.assign(pixels * 4, 0);
-        for (std::size_t i = 0; i < pixels; ++i)
-            for (std::size_t k = 0; k < n; ++k)
-                bytes[i * 4 + k] =
-                    std::uint8_t((std::uint32_t(map.values[i * n + k]) * 255u + 32767u) / 65535u);
-        request.pixels = bytes.data();
-    }
-    // OIIO's TIFF writer cannot take a colour space through a proxy (see image_encode.cpp).
-    if (preset.format == MapFileFormat::Png && colour)
-        request.colorSpace = "sRGB";
-    return (*codecs)->encode(request, progress);
+    std::array<bool, 4> colour{};
+    for (std::size_t k = 0; k < source.components.size(); ++k)
+        colour[k] = source.components[k].channel && isColorChannel(*source.components[k].channel);
+    return encodeValues(map.values.data(), map.width, map.height, map.components, colour,
+                        preset.format, preset.bitDepth, progress);
 }
 
 /** value as its shortest text ("2.5"). */
