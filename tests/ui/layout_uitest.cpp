@@ -65,7 +65,7 @@ bool shown(const QWidget* w) {
 /** Why label is cut off at its size, or empty. */
 std::string clipped(const QLabel& label) {
     if (label.text().isEmpty() || qobject_cast<const ui::ElidedLabel*>(&label) ||
-        label.pixmap().isNull() == false)
+        !label.pixmap().isNull())
         return {};
     const QSize hint = label.sizeHint();
     if (label.wordWrap()) {
