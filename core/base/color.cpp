@@ -7,13 +7,15 @@
 
 namespace core {
 
-namespace {
-
-double decodeSrgb(double c) {
+double decodeSrgb(double encoded) {
+    const double c = std::clamp(std::isfinite(encoded) ? encoded : 0.0, 0.0, 1.0);
     return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
-} // namespace
+double encodeSrgb(double linear) {
+    const double c = std::clamp(std::isfinite(linear) ? linear : 0.0, 0.0, 1.0);
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
 
 SrgbTables::SrgbTables() {
     for (int k = 0; k < 256; ++k) {

@@ -50,5 +50,11 @@ inline std::uint8_t linearToSrgb(float value) {
 float srgbToLinear(float encoded);
 /** Linear value (clamped to 0..1; NaN as 0) to sRGB-encoded, without rounding to bytes. */
 float encodeSrgb(float linear);
+/**
+ * srgbToLinear() and encodeSrgb() in double: a float taken through both comes back as the same
+ * float (what a file that stores linear colours needs to give back sRGB values exactly).
+ */
+double decodeSrgb(double encoded);
+double encodeSrgb(double linear);
 
 } // namespace core

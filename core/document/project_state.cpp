@@ -15,6 +15,7 @@
 #include <limits>
 #include <new>
 
+#include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/document/script_symmetry.h"
 
@@ -390,6 +391,31 @@ Json projectStateToJson(const ProjectState& s) {
     return j;
 }
 
+namespace {
+
+/** paint_layers.layers[i].fill.base_color from sRGB-encoded to linear, where it is 3 numbers. */
+void upgradeFillColorsToLinear(Json& layerpaint) {
+    const auto stack = layerpaint.find("paint_layers");
+    if (stack == layerpaint.end() || !stack->is_object())
+        return;
+    const auto layers = stack->find("layers");
+    if (layers == stack->end() || !layers->is_array())
+        return;
+    for (Json& layer : *layers) {
+        if (!layer.is_object() || !layer.contains("fill") || !layer["fill"].is_object())
+            continue;
+        Json& fill = layer["fill"];
+        const auto color = fill.find("base_color");
+        if (color == fill.end() || !color->is_array() || color->size() != 3 ||
+            !std::all_of(color->begin(), color->end(), [](const Json& c) { return c.is_number(); }))
+            continue; // the reader names what is wrong with it
+        for (Json& c : *color)
+            c = decodeSrgb(c.get<double>());
+    }
+}
+
+} // namespace
+
 Json upgradeProjectJson(Json j, int from) {
     if (from <= 1) {
         // Version 1 (the CLI's paint results): {"script": ..., "model": ...}. The model is the
@@ -404,7 +430,12 @@ Json upgradeProjectJson(Json j, int from) {
         j.erase("paint_layers");
         from = 3;
     }
-    // Later upgrades go here: if (from == 3) { ...; from = 4; }
+    if (from == 3) {
+        // Version 3 kept a fill layer's colour sRGB-encoded; every colour of the file is linear.
+        upgradeFillColorsToLinear(j);
+        from = 4;
+    }
+    // Later upgrades go here: if (from == 4) { ...; from = 5; }
     j["version"] = from;
     return j;
 }

@@ -27,9 +27,11 @@ class Document;
  * The project format version this build writes and the newest it reads. Version 1 is what
  * `layerpaint-cli paint` wrote before projects existed (extras.layerpaint with "script" and
  * "model" only); version 2 holds the whole ProjectState; version 3 adds the paint layers
- * (extras.layerpaint.paint_layers). Older versions open with no paint layers.
+ * (extras.layerpaint.paint_layers); version 4 stores a fill layer's colour linear, as every
+ * other colour of the file (version 3 kept it sRGB-encoded). Versions before 3 open with no paint
+ * layers.
  */
-inline constexpr int kProjectFormatVersion = 3;
+inline constexpr int kProjectFormatVersion = 4;
 
 /** The key of the project state in the glTF asset's extras. */
 inline constexpr const char* kProjectExtrasKey = "layerpaint";

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/base/color.h"
 #include "core/base/text.h"
 #include "core/document/document.h"
 #include "core/document/project_state.h"
@@ -42,8 +43,10 @@ Json paintLayersToJson(const SavedPaintLayers& saved) {
     for (const SavedPaintLayer& layer : saved.layers) {
         const PaintLayerSettings& s = layer.settings;
         Json fill = Json::object();
-        if (s.fill.baseColor)
-            fill["base_color"] = {s.fill.baseColor->x, s.fill.baseColor->y, s.fill.baseColor->z};
+        if (s.fill.baseColor) // linear, as every colour of the file
+            fill["base_color"] = {decodeSrgb(double(s.fill.baseColor->x)),
+                                  decodeSrgb(double(s.fill.baseColor->y)),
+                                  decodeSrgb(double(s.fill.baseColor->z))};
         if (s.fill.roughness)
             fill["roughness"] = *s.fill.roughness;
         if (s.fill.metallic)
@@ -123,7 +126,9 @@ Result<SavedPaintLayers> paintLayersFromJson(const Json& j, std::vector<std::str
                     for (int k = 0; ok && k < 3; ++k)
                         ok = unitNumber((*c)[std::size_t(k)], color[k]);
                     if (ok)
-                        s.fill.baseColor = color;
+                        s.fill.baseColor = glm::vec3(float(encodeSrgb(double(color.x))),
+                                                     float(encodeSrgb(double(color.y))),
+                                                     float(encodeSrgb(double(color.z))));
                     else
                         warn(warnings, where + ".fill.base_color", "is not three numbers 0..1");
                 }

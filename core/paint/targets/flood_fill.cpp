@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "core/paint/targets/flood_fill.h"
+#include "core/base/color.h"
 
 #include <algorithm>
 #include <array>
@@ -66,11 +67,6 @@ template <typename Fn> void forEachTexel(const uv::UvTriangle& r, int width, int
                    fn(std::uint32_t(uv::wrapIndex(y, height)) * std::uint32_t(width) +
                       std::uint32_t(uv::wrapIndex(x, width)));
                });
-}
-
-float encodeSrgb(float linear) {
-    const float c = std::isfinite(linear) ? std::clamp(linear, 0.0f, 1.0f) : 0.0f;
-    return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 
 /** A colour as compared: sRGB-encoded red, green, blue and alpha, 0..1. */

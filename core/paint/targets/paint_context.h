@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The projection context both paint targets share (used inside core/paint only): the sRGB texel
+// The projection context both paint targets share (used inside core/paint only): the texel
 // blend, the current view's projected vertices and triangle setups, the dab's window onto the
 // paintable map, and the tiles a stroke touched with their coverage and stroke-start bytes.
 // PaintTarget::Context is defined here; its methods are in paint_context.cpp.
@@ -38,24 +38,21 @@ inline std::uint8_t encodeUnorm(float x) {
 }
 
 /**
- * Sets the texel at dst to lerp(before, target, cover) in linear colour (alpha linear as
- * stored). The target is given as bytes (sRGB colour, unorm alpha) and, when targetLinear is not
- * nullptr, as the exact linear values the bytes round; coverage 1 gives the target bytes exactly.
+ * Sets the texel at dst to lerp(before, target, cover) on the stored values (sRGB-encoded colour,
+ * alpha linear), the arithmetic a Normal paint layer's composite makes (PaintLayerStack): colour
+ * mixes in one space whether painted on the base or on a paint layer. Coverage 1 gives the
+ * target bytes exactly.
  */
-inline void blendTexel(const SrgbTables& srgb, std::uint8_t* dst, const std::uint8_t* before,
-                       const std::uint8_t* targetBytes, const float* targetLinear, float cover) {
+inline void blendTexel(std::uint8_t* dst, const std::uint8_t* before,
+                       const std::uint8_t* targetBytes, float cover) {
     if (cover >= 1.0f) {
         std::memcpy(dst, targetBytes, 4);
         return;
     }
-    for (int k = 0; k < 3; ++k) {
-        const float from = srgb.decode[before[k]];
-        const float to = targetLinear ? targetLinear[k] : srgb.decode[targetBytes[k]];
-        dst[k] = srgb.encode(from + (to - from) * cover);
+    for (int k = 0; k < 4; ++k) {
+        const float from = layer_bytes::fromByte(before[k]);
+        dst[k] = layer_bytes::toByte(from + cover * (layer_bytes::fromByte(targetBytes[k]) - from));
     }
-    const float from = float(before[3]) / 255.0f;
-    const float to = targetLinear ? targetLinear[3] : float(targetBytes[3]) / 255.0f;
-    dst[3] = encodeUnorm(from + (to - from) * cover);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -487,9 +487,8 @@ void TextureTarget::writeTexel(std::uint32_t pageIndex, int x, int y, const std:
     case StrokeMode::Base: {
         const std::size_t at =
             (std::size_t(y) * std::size_t(m_pages[pageIndex].image.width) + std::size_t(x)) * 4;
-        blendTexel(SrgbTables::get(), &m_stack->baseColor(pageIndex)[at], before + local * 4,
-                   eraser ? &m_pages[pageIndex].original.rgba[at] : c.colorBytes.data(),
-                   eraser ? nullptr : &c.colorLinear[0], cover);
+        blendTexel(&m_stack->baseColor(pageIndex)[at], before + local * 4,
+                   eraser ? &m_pages[pageIndex].original.rgba[at] : c.colorBytes.data(), cover);
         return;
     }
     case StrokeMode::Channels:

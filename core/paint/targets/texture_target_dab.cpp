@@ -60,10 +60,8 @@ struct DabTarget {
 
 /** What the second pass writes texels with, as locals of its loop. */
 struct TexelWrites {
-    const SrgbTables* srgb = nullptr;
     bool eraser = false, onBase = false, onChannels = false;
     const std::uint8_t* colorBytes = nullptr;
-    const float* colorLinear = nullptr;
     const float* values = nullptr;
     const std::int16_t* emptyBytes = nullptr;
     bool lock = false;
@@ -102,9 +100,8 @@ writeTexelAt(const TexelWrites& w, const TileAtHand& tile, const PageAtHand& pag
         // lerp(stroke start, target, coverage): the brush colour, or the original for the
         // eraser.
         const std::size_t at = std::size_t(ty) * std::size_t(page.width) + std::size_t(tx);
-        blendTexel(*w.srgb, page.pixels + at * 4, before + local * 4,
-                   w.eraser ? &page.page->original.rgba[at * 4] : w.colorBytes,
-                   w.eraser ? nullptr : w.colorLinear, cover);
+        blendTexel(page.pixels + at * 4, before + local * 4,
+                   w.eraser ? &page.page->original.rgba[at * 4] : w.colorBytes, cover);
     } else if (w.onChannels) {
         // As writeTexel(), with the tiles at hand: colour, then the channels of one component.
         if (std::uint8_t* colour = tile.channelTiles[0]; colour != nullptr) {
@@ -533,12 +530,10 @@ void PaintTarget::Context::TextureDab::writePart(int part, std::mutex& allocatin
     Firsts& firsts = c.partTouched[std::size_t(part)];
     firsts.clear();
     const float dabOpacity = c.dabOpacity, flowOpacity = c.flowOpacity;
-    const TexelWrites writes{.srgb = &SrgbTables::get(),
-                             .eraser = c.brush.eraser,
+    const TexelWrites writes{.eraser = c.brush.eraser,
                              .onBase = target.onBase,
                              .onChannels = target.onChannels,
                              .colorBytes = c.colorBytes.data(),
-                             .colorLinear = &c.colorLinear[0],
                              .values = target.values,
                              .emptyBytes = target.emptyBytes,
                              .lock = target.lock};

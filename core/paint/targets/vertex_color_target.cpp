@@ -117,7 +117,16 @@ void VertexColorTarget::blendVertex(std::uint32_t v, const std::uint8_t* before,
     glm::vec4 from;
     std::memcpy(&from, before, sizeof(glm::vec4));
     const glm::vec4 target = m_context->brush.eraser ? m_original[v] : m_context->colorLinear;
-    m_colors[v] = cover >= 1.0f ? target : from + (target - from) * cover;
+    if (cover >= 1.0f) {
+        m_colors[v] = target;
+        return;
+    }
+    // Colour mixes on sRGB-encoded values, as on texture targets (blendTexel()); alpha linear.
+    for (int k = 0; k < 3; ++k) {
+        const float a = encodeSrgb(from[k]);
+        m_colors[v][k] = srgbToLinear(a + (encodeSrgb(target[k]) - a) * cover);
+    }
+    m_colors[v].a = from.a + (target.a - from.a) * cover;
 }
 
 const PaintChanges& VertexColorTarget::paintElements(std::span<const PaintElement> elements) {

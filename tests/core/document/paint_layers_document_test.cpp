@@ -2,6 +2,7 @@
 // Paint layers wired into the controller: strokes and fills go into the selected paint layer (or
 // its mask, or the base), the shown texture is the composite, every layer operation is one undo
 // step undone and redone to the byte, and memory grows with what is painted.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/base/color.h"
 #include "core/depth/depth_layers.h"
 #include "core/document/document.h"
 #include "core/paint/paint_layers/paint_layers.h"
@@ -145,6 +147,36 @@ TEST_F(PaintLayersDocumentTest, AStrokeOnALayerLeavesTheBaseAndShowsInTheComposi
     m_doc.brush().radius = 30.0f;
     stroke({20, 30}, {44, 30});
     EXPECT_EQ(target().page(0).rgba, base);
+}
+
+TEST_F(PaintLayersDocumentTest, ASoftStrokeGivesTheSameColourOnTheBaseAsThroughANormalLayer) {
+    // #3399e6 at half opacity with a soft edge: every coverage from 0 to 0.5. Moved from the
+    // base onto a Normal paint layer, the stroke keeps its colour (one mixing arithmetic; the
+    // layer keeps its coverage in a byte, hence one unit).
+    core::Brush& brush = m_doc.brush();
+    brush.color = {core::srgbToLinear(std::uint8_t(0x33)), core::srgbToLinear(std::uint8_t(0x99)),
+                   core::srgbToLinear(std::uint8_t(0xe6)), 1.0f};
+    brush.opacity = 0.5f;
+    brush.hardness = 0.2f;
+    brush.radius = 10.0f;
+    const std::vector<std::uint8_t> base = target().page(0).rgba;
+    stroke({20, 30}, {44, 30});
+    const std::vector<std::uint8_t> onBase = target().page(0).rgba;
+    core::PaintChanges changes;
+    ASSERT_TRUE(m_doc.undo(changes));
+    addLayer("Paint 1");
+    stroke({20, 30}, {44, 30});
+    const std::vector<std::uint8_t>& throughLayer = target().page(0).rgba;
+    std::size_t painted = 0, worst = 0;
+    for (std::size_t i = 0; i < base.size(); ++i) {
+        if (i % 4 == 3)
+            continue;
+        painted += onBase[i] != base[i];
+        worst = std::max<std::size_t>(worst,
+                                      std::size_t(std::abs(int(onBase[i]) - int(throughLayer[i]))));
+    }
+    EXPECT_GT(painted, 1000u);
+    EXPECT_LE(worst, 1u);
 }
 
 TEST_F(PaintLayersDocumentTest, TheBrushPaintsTheChannelsItHasOn) {

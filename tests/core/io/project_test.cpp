@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
+#include "core/base/color.h"
 #include "core/document/document.h"
 #include "core/io/gltf/gltf_export.h"
 #include "core/io/mesh_io.h"
@@ -269,6 +270,41 @@ TEST(ProjectState, NewerVersionsAndBadVersionsAreRefused) {
         EXPECT_NE(s.error().find("version"), std::string::npos) << s.error();
     }
     EXPECT_FALSE(core::projectStateFromJson(Json::array()).ok());
+}
+
+TEST(ProjectState, AFillLayersColourIsStoredLinearAndComesBackExactly) {
+    // #3399e6 as the panel sets it (sRGB-encoded): the file holds it linear, as every colour.
+    core::SavedPaintLayers saved;
+    core::SavedPaintLayer fill;
+    fill.id = 1;
+    fill.settings.kind = core::PaintLayerKind::Fill;
+    fill.settings.fill.baseColor = glm::vec3(0x33, 0x99, 0xe6) / 255.0f;
+    saved.layers.push_back(fill);
+    const Json j = core::paintLayersToJson(saved);
+    const Json& color = j["layers"][0]["fill"]["base_color"];
+    EXPECT_NEAR(color[0].get<double>(), core::srgbToLinear(std::uint8_t(0x33)), 1e-6);
+    EXPECT_NEAR(color[1].get<double>(), core::srgbToLinear(std::uint8_t(0x99)), 1e-6);
+    EXPECT_NEAR(color[2].get<double>(), core::srgbToLinear(std::uint8_t(0xe6)), 1e-6);
+    core::Result<core::SavedPaintLayers> back = core::paintLayersFromJson(j, nullptr);
+    ASSERT_TRUE(back.ok()) << back.error();
+    EXPECT_EQ(back->layers[0].settings.fill.baseColor, fill.settings.fill.baseColor);
+    // Every byte a colour dialog gives comes back as the same float.
+    for (int b = 0; b < 256; ++b) {
+        const float v = float(b) / 255.0f;
+        EXPECT_EQ(float(core::encodeSrgb(core::decodeSrgb(double(v)))), v) << b;
+    }
+
+    // Version 3 kept it sRGB-encoded: opened, it is the same colour.
+    Json v3 = {{"version", 3}, {"paint_layers", j}};
+    v3["paint_layers"]["layers"][0]["fill"]["base_color"] = {0.2, 0.6, 230.0 / 255.0};
+    const Json upgraded = core::upgradeProjectJson(v3, 3);
+    core::Result<core::SavedPaintLayers> old =
+        core::paintLayersFromJson(upgraded["paint_layers"], nullptr);
+    ASSERT_TRUE(old.ok()) << old.error();
+    const glm::vec3 c = *old->layers[0].settings.fill.baseColor;
+    EXPECT_NEAR(c.x, 0.2f, 1e-6f);
+    EXPECT_NEAR(c.y, 0.6f, 1e-6f);
+    EXPECT_NEAR(c.z, 230.0f / 255.0f, 1e-6f);
 }
 
 TEST(ProjectState, Version1IsUpgraded) {

@@ -464,10 +464,14 @@ TEST(FloodFill, OpacityBlendsLikeAStrokeOfThatOpacity) {
     TwoQuads s(core::PaintTargetKind::VertexColors);
     s.doc.brush().opacity = 0.5f;
     ASSERT_TRUE(s.fill({30.5f, 30.5f}, FillMode::Surface).ok());
-    const glm::vec4 expected = glm::vec4(1.0f) + (s.doc.brush().color - glm::vec4(1.0f)) * 0.5f;
+    // Half way from white on the sRGB-encoded values (as texture targets and paint layers mix).
     const glm::vec4 got = s.vertexColors().colors().back();
-    for (int k = 0; k < 4; ++k)
-        EXPECT_NEAR(got[k], expected[k], 1e-6f);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(
+            got[k],
+            core::srgbToLinear(1.0f + (core::encodeSrgb(s.doc.brush().color[k]) - 1.0f) * 0.5f),
+            1e-5f);
+    EXPECT_NEAR(got[3], 1.0f, 1e-6f);
 }
 
 } // namespace flood_fill_test
