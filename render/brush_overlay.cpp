@@ -53,8 +53,7 @@ void BrushOverlay::setMaps(int width, int height, std::span<const std::uint8_t> 
     const int y1 = std::clamp(rect.y + rect.height, y0, height);
     if (x0 == x1 || y0 == y1)
         return;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glPixelStorei(GL_UNPACK_ROW_LENGTH, width);
+    glPixelStorei(GL_UNPACK_ROW_LENGTH, width); // alignment stays the default (RGBA8 rows)
     glTextureSubImage2D(d.maps, 0, x0, y0, x1 - x0, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
                         rgba.data() + (std::size_t(y0) * width + x0) * 4);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);

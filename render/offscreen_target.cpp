@@ -56,7 +56,6 @@ core::Image OffscreenTarget::readColor() const {
     image.height = m_height;
     image.rgba.resize(std::size_t(m_width) * m_height * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, m_fbo);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
     // GL's rows start at the bottom; images here are top row first.
     const std::size_t rowBytes = std::size_t(m_width) * 4;

@@ -51,7 +51,8 @@ void PaintTexture::create(const core::Image& image, bool linear) {
     glCreateTextures(GL_TEXTURE_2D, 1, &m_id);
     glTextureStorage2D(m_id, m_levels, linear ? GL_RGBA8 : GL_SRGB8_ALPHA8, image.width,
                        image.height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    // RGBA8 rows are whole words: the GL's default alignment (4) fits, and it stays the default
+    // for Qt's own uploads (its glyph cache garbles text under another alignment).
     glTextureSubImage2D(m_id, 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE,
                         image.rgba.data());
     glGenerateTextureMipmap(m_id);
@@ -69,7 +70,6 @@ void PaintTexture::update(const core::Image& image, int x, int y, int width, int
     int x1 = std::clamp(x + width, x0, m_width), y1 = std::clamp(y + height, y0, m_height);
     if (x0 == x1 || y0 == y1)
         return;
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     glPixelStorei(GL_UNPACK_ROW_LENGTH, m_width);
     glTextureSubImage2D(m_id, 0, x0, y0, x1 - x0, y1 - y0, GL_RGBA, GL_UNSIGNED_BYTE,
                         image.rgba.data() + (std::size_t(y0) * m_width + x0) * 4);
@@ -77,7 +77,6 @@ void PaintTexture::update(const core::Image& image, int x, int y, int width, int
     if (m_mips.empty() && m_levels > 1) {
         // Once: the levels the GL generated, so later updates filter from the same data.
         m_mips.resize(std::size_t(m_levels - 1));
-        glPixelStorei(GL_PACK_ALIGNMENT, 1);
         for (int level = 1; level < m_levels; ++level) {
             auto& mip = m_mips[std::size_t(level - 1)];
             mip.resize(std::size_t(levelSize(m_width, level)) * levelSize(m_height, level) * 4);

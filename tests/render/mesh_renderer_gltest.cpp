@@ -198,6 +198,26 @@ TEST_F(GlTest, TexelUpdatesLookLikeAFreshUpload) {
     EXPECT_LT(largeDifferences(updated, fresh, 6), int(fresh.rgba.size() / 200));
 }
 
+TEST_F(GlTest, TextureUploadsLeaveThePixelStoreAtTheDefaultsQtDrawsTextWith) {
+    // Qt's text over the view (the channel legend) uploads glyphs with the GL's default
+    // pixel-store state: an upload that left another alignment or row length garbled them.
+    core::Mesh mesh = core::makeTrefoil();
+    core::Image texture{30, 20, std::vector<std::uint8_t>(30 * 20 * 4, 200)};
+    mesh.textures = {texture};
+    for (core::Material& material : mesh.materials)
+        material.baseColorTexture = 0;
+    core::Camera camera;
+    camera.frame(mesh.bounds());
+    GLint alignment = 0, rowLength = -1;
+    drawMesh(mesh, camera.view(64, 48), [&](render::MeshRenderer& renderer) {
+        renderer.textures().updateTexels(0, 3, 4, 10, 5, texture);
+        glGetIntegerv(GL_UNPACK_ALIGNMENT, &alignment);
+        glGetIntegerv(GL_UNPACK_ROW_LENGTH, &rowLength);
+    });
+    EXPECT_EQ(alignment, 4);
+    EXPECT_EQ(rowLength, 0);
+}
+
 TEST_F(GlTest, VertexColourUpdatesLookLikeAFreshUpload) {
     core::Mesh mesh = core::makeTrefoil();
     mesh.colors.assign(mesh.vertexCount(), glm::vec4(1.0f));
