@@ -1552,6 +1552,14 @@ Konnektivität %3 ms, Regionen %4 ms
         <source>Write each texture set&apos;s maps for a game engine or another tool, through an export preset</source>
         <translation>Die Maps jedes Texturensatzes für eine Spiel-Engine oder ein anderes Programm schreiben, über eine Exportvorgabe</translation>
     </message>
+    <message>
+        <source>The mask alone: black hides, white shows. Alt+click it again to see the paint layers.</source>
+        <translation>Die Maske allein: Schwarz verbirgt, Weiß zeigt. Erneut Alt+Klick darauf, um die Malschichten wieder zu sehen.</translation>
+    </message>
+    <message>
+        <source>The paint layers again</source>
+        <translation>Wieder die Malschichten</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -1774,14 +1782,6 @@ Konnektivität %3 ms, Regionen %4 ms
         <translation>, </translation>
     </message>
     <message>
-        <source>Painting the mask (black hides, white shows)</source>
-        <translation>Die Maske wird bemalt (Schwarz verbirgt, Weiß zeigt)</translation>
-    </message>
-    <message>
-        <source>Mask: click to paint it</source>
-        <translation>Maske: Klicken, um sie zu bemalen</translation>
-    </message>
-    <message>
         <source>Base</source>
         <translation>Basis</translation>
     </message>
@@ -1848,6 +1848,18 @@ Konnektivität %3 ms, Regionen %4 ms
     <message>
         <source>%1 (%2 × %3)</source>
         <translation>%1 (%2 × %3)</translation>
+    </message>
+    <message>
+        <source>Shown alone in the view: Alt+click to see the paint layers again</source>
+        <translation>Allein in der Ansicht gezeigt: Alt+Klick, um die Malschichten wieder zu sehen</translation>
+    </message>
+    <message>
+        <source>Painting the mask (black hides, white shows); Alt+click shows it alone</source>
+        <translation>Die Maske wird bemalt (Schwarz verbirgt, Weiß zeigt); Alt+Klick zeigt sie allein</translation>
+    </message>
+    <message>
+        <source>Mask: click to paint it, Alt+click to see it alone</source>
+        <translation>Maske: Klick zum Bemalen, Alt+Klick, um sie allein zu sehen</translation>
     </message>
 </context>
 <context>
@@ -2821,6 +2833,10 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
     <message>
         <source>Metallic</source>
         <translation>Metallisch</translation>
+    </message>
+    <message>
+        <source>Mask (black hides, white shows)</source>
+        <translation>Maske (Schwarz verbirgt, Weiß zeigt)</translation>
     </message>
 </context>
 </TS>

@@ -1550,6 +1550,14 @@ connectivity %3 ms, regions %4 ms
         <source>Write each texture set&apos;s maps for a game engine or another tool, through an export preset</source>
         <translation>通过导出预设，为游戏引擎或其他工具写出每个纹理集的贴图</translation>
     </message>
+    <message>
+        <source>The mask alone: black hides, white shows. Alt+click it again to see the paint layers.</source>
+        <translation>仅显示蒙版：黑色隐藏，白色显示。再次 Alt+单击它可重新查看绘画层。</translation>
+    </message>
+    <message>
+        <source>The paint layers again</source>
+        <translation>重新显示绘画层</translation>
+    </message>
 </context>
 <context>
     <name>ui::MessageBar</name>
@@ -1771,14 +1779,6 @@ connectivity %3 ms, regions %4 ms
         <translation>，</translation>
     </message>
     <message>
-        <source>Painting the mask (black hides, white shows)</source>
-        <translation>正在绘制蒙版（黑色隐藏，白色显示）</translation>
-    </message>
-    <message>
-        <source>Mask: click to paint it</source>
-        <translation>蒙版：单击以绘制</translation>
-    </message>
-    <message>
         <source>Base</source>
         <translation>基础</translation>
     </message>
@@ -1845,6 +1845,18 @@ connectivity %3 ms, regions %4 ms
     <message>
         <source>%1 (%2 × %3)</source>
         <translation>%1（%2 × %3）</translation>
+    </message>
+    <message>
+        <source>Shown alone in the view: Alt+click to see the paint layers again</source>
+        <translation>在视图中单独显示：Alt+单击可重新查看绘画层</translation>
+    </message>
+    <message>
+        <source>Painting the mask (black hides, white shows); Alt+click shows it alone</source>
+        <translation>正在绘制蒙版（黑色隐藏，白色显示）；Alt+单击可单独显示它</translation>
+    </message>
+    <message>
+        <source>Mask: click to paint it, Alt+click to see it alone</source>
+        <translation>蒙版：单击以绘制，Alt+单击以单独查看</translation>
     </message>
 </context>
 <context>
@@ -2813,6 +2825,10 @@ Smaller splits the view into more regions.</source>
     <message>
         <source>Metallic</source>
         <translation>金属度</translation>
+    </message>
+    <message>
+        <source>Mask (black hides, white shows)</source>
+        <translation>蒙版（黑色隐藏，白色显示）</translation>
     </message>
 </context>
 </TS>

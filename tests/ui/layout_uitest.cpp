@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window at its minimum size, in English, German and Chinese: no label is cut off (each is at
 // least as large as its size hint asks, or as tall as its wrapped text needs), and the tool bar
-// shows every tool (none pushed into its » overflow menu). Real widgets under Xvfb.
+// shows every tool (none pushed into its » overflow menu). The first start's dock layout at
+// 1280 × 800 and 1920 × 1080 gives the paint layers room. Real widgets under Xvfb.
 #include <gtest/gtest.h>
 
 #include <QAbstractButton>
@@ -11,6 +12,9 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLocale>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QStyle>
 #include <QStyleOptionComboBox>
@@ -18,11 +22,16 @@
 #include <QToolBar>
 #include <QToolButton>
 #include <QTranslator>
+#include <QTreeWidget>
 
+#include <algorithm>
+#include <cstdio>
 #include <memory>
 #include <string>
 
 #include "tests/ui/ui_test_util.h"
+#include "ui/panels/color_panel.h"
+#include "ui/panels/paint_layers_panel.h"
 #include "ui/shell/elided_label.h"
 #include "ui/shell/main_window.h"
 #include "ui/view/depth_layers_builder.h"
@@ -164,6 +173,92 @@ TEST_P(LayoutTest, AtTheMinimumSizeNoLabelIsCutOffAndEveryToolIsShown) {
                 << bar->objectName().toStdString() << " is in its overflow menu";
         }
     }
+}
+
+/** The rows of list its viewport shows whole. */
+int rowsShown(const QTreeWidget& list) {
+    const int row = list.visualItemRect(list.topLevelItem(0)).height();
+    return row > 0 ? list.viewport()->height() / row : 0;
+}
+
+struct DefaultLayout {
+    int listRows = 0;
+    int pickerHeight = 0;
+};
+
+/**
+ * A first start at size with the trefoil, four paint layers and a fill layer added through the
+ * panel's own button: the Paint Layers panel in front with every control in sight (nothing to
+ * scroll to), the settings panels no higher than they need; what it measured.
+ */
+DefaultLayout checkDefaultLayout(QSize size) {
+    QSettings().clear(); // no layout of an earlier session
+    auto window = std::make_unique<ui::MainWindow>();
+    window->setErrorDialogsEnabled(false);
+    window->resize(size);
+    window->show();
+    EXPECT_TRUE(QTest::qWaitForWindowExposed(window.get()));
+    QSignalSpy loaded(window.get(), &ui::MainWindow::modelLoaded);
+    window->openFile(QStringLiteral("builtin:trefoil"));
+    EXPECT_TRUE(loaded.wait(kLoadTimeoutMs));
+    auto* panel = window->paintLayersPanel();
+    auto* newLayer = panel->findChild<QAction*>(QStringLiteral("actionNewPaintLayer"));
+    auto* newFill = panel->findChild<QAction*>(QStringLiteral("actionNewFillLayer"));
+    if (!newLayer || !newFill) {
+        ADD_FAILURE() << "no New Paint Layer or New Fill Layer action";
+        return {};
+    }
+    for (QAction* action : {newLayer, newLayer, newLayer, newLayer, newFill}) {
+        QToolButton* button = nullptr;
+        for (QToolButton* b : panel->findChildren<QToolButton*>())
+            if (b->defaultAction() == action)
+                button = b;
+        if (!button || !shown(button)) {
+            ADD_FAILURE() << "the button of “" << action->iconText().toStdString()
+                          << "” is not in sight";
+            return {};
+        }
+        QTest::mouseClick(button, Qt::LeftButton);
+    }
+    QTest::qWait(200); // the layouts settle
+    const std::string at = std::to_string(size.width()) + " x " + std::to_string(size.height());
+
+    EXPECT_TRUE(shown(panel)) << at << ": the Paint Layers panel is not in front";
+    const auto* scroll = qobject_cast<const QScrollArea*>(
+        window->findChild<QDockWidget*>(QStringLiteral("paintLayersDock"))->widget());
+    EXPECT_TRUE(scroll && scroll->verticalScrollBar()->maximum() == 0)
+        << at << ": the Paint Layers panel scrolls (its fill values or buttons are out of sight)";
+    for (const char* name : {"paintLayerOpacity", "paintLayerBlend", "paintLayerFillColor"}) {
+        const QWidget* w = panel->findChild<QWidget*>(QString::fromLatin1(name));
+        EXPECT_TRUE(w && shown(w)) << at << ": " << name << " is not in sight";
+    }
+    const auto* list = panel->findChild<QTreeWidget*>(QStringLiteral("paintLayersList"));
+    DefaultLayout measured;
+    if (list && list->topLevelItemCount() == 6)
+        measured.listRows = rowsShown(*list);
+    else
+        ADD_FAILURE() << at << ": the list does not hold the five paint layers and the base";
+    // Segmentation at the top is as high as its controls need, give or take.
+    const QDockWidget* segmentation =
+        window->findChild<QDockWidget*>(QStringLiteral("segmentationDock"));
+    EXPECT_TRUE(shown(segmentation)) << at;
+    EXPECT_LE(segmentation->height(), segmentation->sizeHint().height() + 24)
+        << at << ": Segmentation has empty room";
+    measured.pickerHeight = window->findChild<QWidget*>(QStringLiteral("hsvPicker"))->height();
+    std::printf("[ layout  ] %s: %d rows of paint layers shown, colour square %d px high\n",
+                at.c_str(), measured.listRows, measured.pickerHeight);
+    return measured;
+}
+
+TEST(DefaultDockLayout, GivesThePaintLayersRoomAt1280x800And1920x1080) {
+    const DefaultLayout small = checkDefaultLayout({1280, 800});
+    const DefaultLayout large = checkDefaultLayout({1920, 1080});
+    QSettings().clear();
+    // Every row in sight at 1280 × 800; a taller window's height goes to the list, not to the
+    // colour square.
+    EXPECT_GE(small.listRows, 6);
+    EXPECT_GT(large.listRows, small.listRows);
+    EXPECT_LE(large.pickerHeight, ui::HsvPicker::kMaximumHeight);
 }
 
 std::string languageName(const ::testing::TestParamInfo<std::string>& language) {

@@ -34,6 +34,7 @@
 #include <QUndoStack>
 #include <QWindow>
 
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -294,6 +295,88 @@ TEST_F(PaintLayersUiTest, WhatStrokesPaintIsFramedInAmberAndSaidInTheStatusBar) 
     QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier,
                       list->visualItemRect(panel().rowOf(0)).center());
     EXPECT_TRUE(info->text().isEmpty());
+}
+
+TEST_F(PaintLayersUiTest, AltClickOnAMaskShowsItAloneAndAStrokeOnItShowsAsItGoes) {
+    // A red fill layer with a mask, a black stroke on the mask hiding the red there.
+    core::Brush red = doc().brush();
+    red.color = {1.0f, 0.0f, 0.0f, 1.0f};
+    m_window->setBrush(red);
+    QTest::mouseClick(fillButton(), Qt::LeftButton);
+    ASSERT_EQ(stack().size(), 1u);
+    const std::uint64_t id = stack().layer(0).id;
+    panel().addMaskAction()->trigger();
+    ASSERT_TRUE(stack().layer(0).mask);
+    QTreeWidget* list = panel().list();
+    const auto maskPoint = [&] {
+        const QRect row = list->visualItemRect(panel().rowOf(id));
+        return QPoint(list->columnViewportPosition(Panel::MaskColumn) +
+                          list->columnWidth(Panel::MaskColumn) / 2,
+                      row.center().y());
+    };
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::NoModifier, maskPoint());
+    ASSERT_EQ(texture()->selection(), (core::PaintSelection{id, true}));
+    const std::optional<QPoint> start = solidPixel();
+    ASSERT_TRUE(start.has_value());
+    const QPoint middle = *start + QPoint(6, 0);
+    stroke(*start, {0.0f, 0.0f, 0.0f, 1.0f});
+    ui::Viewport* viewport = m_window->viewport();
+    const auto frame = [&] {
+        QApplication::processEvents();
+        return grab().convertToFormat(QImage::Format_RGB888);
+    };
+    const auto redPixels = [](const QImage& image) {
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y)
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor c = image.pixelColor(x, y);
+                n += c.red() > c.green() + 60;
+            }
+        return n;
+    };
+    const auto grey = [](QColor c) {
+        return std::abs(c.red() - c.green()) <= 2 && std::abs(c.green() - c.blue()) <= 2;
+    };
+    QImage shown = frame();
+    EXPECT_GT(redPixels(shown), 1000) << "the red fill layer does not show";
+
+    // Alt+click on the mask: the mask alone, unlit grey: black under the stroke, white elsewhere.
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::AltModifier, maskPoint());
+    EXPECT_EQ(viewport->maskView(), id);
+    EXPECT_EQ(texture()->selection(), (core::PaintSelection{id, true})) << "still painting it";
+    shown = frame();
+    EXPECT_EQ(redPixels(shown), 0) << "the mask view shows the paint layers' colour";
+    QColor c = shown.pixelColor(middle);
+    EXPECT_TRUE(grey(c) && c.red() < 40) << c.name().toStdString();
+    int white = 0;
+    for (int y = 0; y < shown.height(); ++y)
+        for (int x = 0; x < shown.width(); ++x)
+            white += grey(shown.pixelColor(x, y)) && shown.pixelColor(x, y).red() > 235;
+    EXPECT_GT(white, 1000) << "the unpainted mask does not show white";
+    EXPECT_TRUE(m_window->statusBar()->currentMessage().contains(QStringLiteral("Alt+click")));
+
+    // A white stroke on the mask shows in the mask view as it is painted.
+    stroke(*start, {1.0f, 1.0f, 1.0f, 1.0f});
+    c = frame().pixelColor(middle);
+    EXPECT_TRUE(grey(c) && c.red() > 235) << c.name().toStdString();
+
+    // Alt+click again: the paint layers, the red back where the mask is white again.
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::AltModifier, maskPoint());
+    EXPECT_EQ(viewport->maskView(), 0u);
+    shown = frame();
+    EXPECT_GT(redPixels(shown), 1000);
+    c = shown.pixelColor(middle);
+    EXPECT_GT(c.red(), c.green() + 60) << c.name().toStdString();
+
+    // The view ends by itself when the mask goes (here: deleted while shown).
+    QTest::mouseClick(list->viewport(), Qt::LeftButton, Qt::AltModifier, maskPoint());
+    ASSERT_EQ(viewport->maskView(), id);
+    panel().deleteMaskAction()->trigger();
+    EXPECT_TRUE(QTest::qWaitFor([&] {
+        frame();
+        return viewport->maskView() == 0;
+    }));
+    EXPECT_GT(redPixels(frame()), 1000);
 }
 
 TEST_F(PaintLayersUiTest, TheTextureSetBoxChoosesWhichSetsPaintTheThumbnailsShow) {

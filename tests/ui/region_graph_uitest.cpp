@@ -6,6 +6,7 @@
 
 #include <QApplication>
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QGraphicsItem>
 #include <QGraphicsScene>
@@ -42,6 +43,12 @@ QString enginePath() {
 class RegionGraphTest : public WindowTest {
 protected:
     RegionGraphTest() : WindowTest({1260, 900}) {}
+
+    void SetUp() override {
+        WindowTest::SetUp();
+        // Its tab to the front (behind Paint Layers at first), as an artist clicks it.
+        m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"))->raise();
+    }
 
     ui::RegionGraphPanel* panel() const { return m_window->regionGraphPanel(); }
     QGraphicsView* view() const { return panel()->graphicsView(); }

@@ -305,6 +305,9 @@ TEST_F(SegmentationTest, LayerRowShowsThatLayerAlone) {
 
 TEST_F(SegmentationTest, HoveringAGraphNodeHighlightsItsRegion) {
     openTrefoil();
+    // Its tab to the front (behind Paint Layers at first), as an artist clicks it.
+    m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"))->raise();
+    QApplication::processEvents();
     QGraphicsView* view = graph()->graphicsView();
     ASSERT_NE(view, nullptr);
     // The largest region's node.
@@ -431,17 +434,23 @@ TEST_F(SegmentationTest, ViewMenuListsModesAndPanels) {
         ASSERT_NE(dock, nullptr) << name;
         EXPECT_FALSE(dock->isHidden()) << name; // paint-to-hide and fill are tabs behind
     }
-    // The Fill tool's panel is a tab behind the region graph until the tool is chosen (a tab
-    // behind stays "visible", moved out of sight).
+    // The Fill and Paint to Hide tools' panels are tabs behind Segmentation until their tool is
+    // chosen (a tab behind stays "visible", moved out of sight).
     auto* fillDock = m_window->findChild<QDockWidget*>(QStringLiteral("fillDock"));
-    auto* graph = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));
-    EXPECT_TRUE(m_window->tabifiedDockWidgets(graph).contains(fillDock));
+    auto* hiddenDock = m_window->findChild<QDockWidget*>(QStringLiteral("hiddenRegionsDock"));
+    auto* segmentation = m_window->findChild<QDockWidget*>(QStringLiteral("segmentationDock"));
+    EXPECT_TRUE(m_window->tabifiedDockWidgets(segmentation).contains(fillDock));
+    EXPECT_TRUE(m_window->tabifiedDockWidgets(segmentation).contains(hiddenDock));
     QApplication::processEvents();
     EXPECT_TRUE(fillDock->visibleRegion().isEmpty());
-    EXPECT_FALSE(graph->visibleRegion().isEmpty());
+    EXPECT_FALSE(segmentation->visibleRegion().isEmpty());
     m_window->setTool(ui::Tool::Fill);
     QApplication::processEvents();
     EXPECT_FALSE(fillDock->visibleRegion().isEmpty());
+    m_window->setTool(ui::Tool::Hide);
+    QApplication::processEvents();
+    EXPECT_FALSE(hiddenDock->visibleRegion().isEmpty());
+    EXPECT_TRUE(fillDock->visibleRegion().isEmpty());
 
     // A closed panel stays closed in the next session.
     auto* graphDock = m_window->findChild<QDockWidget*>(QStringLiteral("regionGraphDock"));

@@ -41,7 +41,10 @@ QIcon swatchIcon(const QColor& color, int size, const QColor& frame) {
 
 HsvPicker::HsvPicker(QWidget* parent) : QWidget(parent) {
     setObjectName(QStringLiteral("hsvPicker"));
-    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+    // Wider with the panel, higher only up to a point: a taller Colour panel's room is left
+    // below (the window's extra height goes to the panels with lists).
+    setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Preferred);
+    setMaximumHeight(kMaximumHeight);
     setCursor(Qt::CrossCursor);
     setToolTip(tr("Saturation and value (square) and hue (bar)"));
 }
@@ -173,7 +176,7 @@ ColorPanel::ColorPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
 
     m_picker = new HsvPicker(this);
-    layout->addWidget(m_picker, 1);
+    layout->addWidget(m_picker);
     connect(m_picker, &HsvPicker::colorChanged, this, &ColorPanel::chooseForeground);
 
     auto* row = new QHBoxLayout;
@@ -230,6 +233,7 @@ ColorPanel::ColorPanel(QWidget* parent) : QWidget(parent) {
     m_recentGrid = new QGridLayout;
     m_recentGrid->setSpacing(2);
     layout->addLayout(m_recentGrid);
+    layout->addStretch(1);
     for (int i = 0; i < kMaxRecent; ++i) {
         auto* button = new QToolButton(this);
         button->setObjectName(QStringLiteral("recentColor%1").arg(i));

@@ -20,6 +20,9 @@ class HsvPicker : public QWidget {
     Q_OBJECT
 
 public:
+    /** The most height the picker takes however high its panel is. */
+    static constexpr int kMaximumHeight = 240;
+
     explicit HsvPicker(QWidget* parent = nullptr);
     void setColor(const QColor& color);
     QColor color() const;

@@ -15,6 +15,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMenu>
+#include <QMouseEvent>
 #include <QPixmap>
 #include <QScopedValueRollback>
 #include <QSlider>
@@ -58,8 +59,15 @@ class PaintLayerList : public QTreeWidget {
 public:
     explicit PaintLayerList(QWidget* parent) : QTreeWidget(parent) {}
     std::function<void(std::uint64_t id, int row)> onDrop;
+    /** The keys held at the last click (itemClicked() does not say). */
+    Qt::KeyboardModifiers clickModifiers;
 
 protected:
+    void mouseReleaseEvent(QMouseEvent* event) override {
+        clickModifiers = event->modifiers();
+        QTreeWidget::mouseReleaseEvent(event);
+    }
+
     void dropEvent(QDropEvent* event) override {
         QTreeWidgetItem* source = currentItem();
         const std::uint64_t id = source ? source->data(0, kIdRole).toULongLong() : 0;
@@ -525,10 +533,14 @@ void PaintLayersPanel::refresh() {
                     const bool maskSelected = selection == core::PaintSelection{layer.id, true};
                     item->setIcon(MaskColumn, thumbnailIcon(maskThumbnail(*layer.mask, kThumbnail,
                                                                           maskSelected, page)));
-                    item->setToolTip(MaskColumn, maskSelected
-                                                     ? tr("Painting the mask (black hides, white "
-                                                          "shows)")
-                                                     : tr("Mask: click to paint it"));
+                    item->setToolTip(MaskColumn,
+                                     layer.id == m_maskView
+                                         ? tr("Shown alone in the view: Alt+click to see the "
+                                              "paint layers again")
+                                     : maskSelected ? tr("Painting the mask (black hides, white "
+                                                         "shows); Alt+click shows it alone")
+                                                    : tr("Mask: click to paint it, Alt+click to "
+                                                         "see it alone"));
                 }
             }
         }
@@ -635,6 +647,8 @@ void PaintLayersPanel::addLayer(bool fill) {
 }
 
 void PaintLayersPanel::select(std::uint64_t id, bool mask) {
+    if (m_maskView != 0 && !(mask && id == m_maskView))
+        emit maskViewRequested(0); // the mask view follows the mask being painted
     const core::Status status = m_document.selectPaint({id, mask});
     if (!status)
         emit message(tr("Paint layers: %1").arg(QString::fromStdString(status.error())));
@@ -657,7 +671,18 @@ void PaintLayersPanel::onItemClicked(QTreeWidgetItem* item, int column) {
                      [visible](core::PaintLayerSettings& settings) { settings.visible = visible; });
         return;
     }
-    select(id, layer && layer->mask && column == MaskColumn);
+    const bool onMask = layer && layer->mask && column == MaskColumn;
+    const bool alt = (static_cast<PaintLayerList*>(m_list)->clickModifiers & Qt::AltModifier) != 0;
+    select(id, onMask);
+    if (onMask && alt) // Alt+click: the mask alone in the view, or back
+        emit maskViewRequested(m_maskView == id ? 0 : id);
+}
+
+void PaintLayersPanel::setMaskView(std::uint64_t id) {
+    if (m_maskView == id)
+        return;
+    m_maskView = id;
+    refresh();
 }
 
 void PaintLayersPanel::onItemChanged(QTreeWidgetItem* item, int column) {

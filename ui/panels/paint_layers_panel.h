@@ -33,12 +33,12 @@ namespace ui {
  * The Paint Layers panel (a dock): the document's paint-layer stack, the uppermost layer on top
  * and the read-only Base at the bottom. Per row an eye (click: show or hide), a thumbnail of the
  * layer's tiles, the name (double-click: rename) and, with a mask, the mask's thumbnail (click:
- * paint the mask). Below: opacity, blend mode and lock transparency of the current layer (of a
- * fill layer also its colour, roughness and metallic, each of which can be off), and
- * buttons for every operation (also in the context menu and, through actions(), a menu of the
- * window). Rows are dragged to reorder. Each operation is a call on the document (one undo step);
- * changed() then reports what the composite changed. Selecting a row is no undo step.
- * For a model painted in vertex colours the panel is disabled and says why.
+ * paint the mask; Alt+click: see it alone in the view). Below: opacity, blend mode and lock
+ * transparency of the current layer (of a fill layer also its colour, roughness and metallic, each
+ * of which can be off), and buttons for every operation (also in the context menu and, through
+ * actions(), a menu of the window). Rows are dragged to reorder. Each operation is a call on the
+ * document (one undo step); changed() then reports what the composite changed. Selecting a row is
+ * no undo step. For a model painted in vertex colours the panel is disabled and says why.
  */
 class PaintLayersPanel : public QWidget {
     Q_OBJECT
@@ -66,6 +66,8 @@ public:
     QTreeWidgetItem* rowOf(std::uint64_t id) const;
     /** Why the panel is disabled (empty while it is enabled). */
     QString disabledReason() const;
+    /** The view shows the mask of paint layer id alone (0: the composite), as its row says. */
+    void setMaskView(std::uint64_t id);
 
     /** The list's columns. */
     enum Column { EyeColumn, ThumbnailColumn, NameColumn, MaskColumn };
@@ -79,6 +81,8 @@ signals:
     void message(const QString& text);
     /** The rows were made again from the document (after any change or selection). */
     void refreshed();
+    /** Alt+click on a mask: show it alone (its paint layer's id) or the composite again (0). */
+    void maskViewRequested(std::uint64_t id);
 
 private:
     void createActions();
@@ -147,6 +151,7 @@ private:
     QAction* m_rename = nullptr;
     bool m_updating = false;
     int m_nextNumber = 1;
+    std::uint64_t m_maskView = 0;
 };
 
 } // namespace ui

@@ -26,6 +26,7 @@
 #include <QUrl>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/model/builtin_models.h"
@@ -231,6 +232,7 @@ void MainWindow::restoreWindowLayout() {
             size = size.boundedTo(shown->availableGeometry().size() * 9 / 10);
         resize(size);
     }
+    arrangeDefaultDocks(); // what restoreState() replaces when the last session left a layout
     restoreState(settings.value(kStateKey).toByteArray());
     new DockSizeKeeper(this); // panels get their width back when the window grows again
 }
@@ -319,12 +321,39 @@ void MainWindow::createPanels() {
         m_regionTools->popUpRegion(region);
         emit regionActivated(region);
     });
+}
 
-    // Default layout (restoreState() may replace it): a column on the right.
-    resizeDocks({m_segmentationDock, m_depthLayersDock, m_graphDock}, {300, 300, 300},
-                Qt::Horizontal);
-    resizeDocks({m_segmentationDock, m_depthLayersDock, m_graphDock},
-                {m_segmentationControls->sizeHint().height(), 280, 420}, Qt::Vertical);
+void MainWindow::arrangeDefaultDocks() {
+    // Right: the settings panels as tabs at the top, as high as they need (Fill and Paint to
+    // Hide come to the front with their tools); below them the stacks, Paint Layers in front of
+    // Depth Layers and the Region Graph, with all the rest of the height for the paint layers'
+    // list. Left: the Brush panel, and Colour with Brush Presets under it, the colour square
+    // no higher than it needs.
+    const std::array<QDockWidget*, 6> right = {m_segmentationDock, m_hiddenDock,      m_fillDock,
+                                               m_paintLayersDock,  m_depthLayersDock, m_graphDock};
+    for (QDockWidget* dock : right)
+        removeDockWidget(dock);
+    addDockWidget(Qt::RightDockWidgetArea, m_segmentationDock);
+    tabifyDockWidget(m_segmentationDock, m_hiddenDock);
+    tabifyDockWidget(m_segmentationDock, m_fillDock);
+    addDockWidget(Qt::RightDockWidgetArea, m_paintLayersDock);
+    tabifyDockWidget(m_paintLayersDock, m_depthLayersDock);
+    tabifyDockWidget(m_paintLayersDock, m_graphDock);
+    for (QDockWidget* dock : right)
+        dock->show();
+    m_segmentationDock->raise();
+    m_paintLayersDock->raise();
+
+    // As high as Segmentation's controls (the list of hidden regions gets shorter).
+    const int settingsHeight = m_segmentationDock->sizeHint().height();
+    const int rest = std::max(height() - settingsHeight, m_paintLayersDock->sizeHint().height());
+    resizeDocks({m_segmentationDock, m_paintLayersDock}, {300, 300}, Qt::Horizontal);
+    resizeDocks({m_segmentationDock, m_paintLayersDock}, {settingsHeight, rest}, Qt::Vertical);
+    resizeDocks(
+        {m_brushDock, m_colorDock},
+        {std::max(height() - m_colorDock->sizeHint().height(), m_brushDock->sizeHint().height()),
+         m_colorDock->sizeHint().height()},
+        Qt::Vertical);
 }
 
 void MainWindow::createDisplayActions(QMenu* viewMenu) {

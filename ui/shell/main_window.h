@@ -225,6 +225,11 @@ private:
     void restoreWindowLayout();
 
     void createPanels();
+    /**
+     * The first start's dock layout (for 1280 × 800 and larger): settings panels as tabs at the
+     * top right, the stacks (Paint Layers in front) below with the rest of the height.
+     */
+    void arrangeDefaultDocks();
     /** A dock (on the right by default) named for saveState(). */
     QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
                           Qt::DockWidgetArea area = Qt::RightDockWidgetArea);

@@ -90,17 +90,16 @@ void MainWindow::createRegionTools() {
             [this](const QString& text) { statusBar()->showMessage(text, kPaintMessageMs); });
     m_hiddenDock = makeDock(tr("Paint to Hide"), QStringLiteral("hiddenRegionsDock"),
                             m_regionTools->createPanel(this));
-    // A tab behind the region graph: the column keeps its height.
-    tabifyDockWidget(m_graphDock, m_hiddenDock);
     m_fillPanel = new FillPanel(this);
     m_fillDock = makeDock(tr("Fill"), QStringLiteral("fillDock"), m_fillPanel);
-    tabifyDockWidget(m_graphDock, m_fillDock);
-    m_graphDock->raise();
-    // Fill's options come to the front with the tool.
+    // Fill's options and the hidden regions come to the front with their tools.
     connect(this, &MainWindow::toolChanged, this, [this](Tool tool) {
-        if (tool == Tool::Fill) {
-            m_fillDock->show();
-            m_fillDock->raise();
+        QDockWidget* dock = tool == Tool::Fill   ? m_fillDock
+                            : tool == Tool::Hide ? m_hiddenDock
+                                                 : nullptr;
+        if (dock != nullptr) {
+            dock->show();
+            dock->raise();
         }
     });
 }
@@ -337,10 +336,6 @@ void MainWindow::createPaintLayersPanel() {
     scroll->setFrameShape(QFrame::NoFrame);
     fixScrollMinimum(*scroll);
     m_paintLayersDock = makeDock(tr("Paint Layers"), QStringLiteral("paintLayersDock"), scroll);
-    // A tab beside the Depth Layers: the columns keep their size, and the two stacks sit apart
-    // by name.
-    tabifyDockWidget(m_depthLayersDock, m_paintLayersDock);
-    m_depthLayersDock->raise();
     connect(m_paintLayersPanel, &PaintLayersPanel::changed, this,
             [this](const core::PaintChanges& changes) {
                 // As after a stroke: the composite's texels to the view (the undo stack follows
@@ -353,6 +348,16 @@ void MainWindow::createPaintLayersPanel() {
             });
     connect(m_paintLayersPanel, &PaintLayersPanel::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, kStatusMessageMs); });
+    // The mask view: Alt+click on a mask in the panel; it ends there, or when the mask goes.
+    connect(m_paintLayersPanel, &PaintLayersPanel::maskViewRequested, m_viewport,
+            &Viewport::setMaskView);
+    connect(m_viewport, &Viewport::maskViewChanged, this, [this](std::uint64_t id) {
+        m_paintLayersPanel->setMaskView(id);
+        statusBar()->showMessage(id != 0 ? tr("The mask alone: black hides, white shows. "
+                                              "Alt+click it again to see the paint layers.")
+                                         : tr("The paint layers again"),
+                                 kStatusMessageMs);
+    });
     // Strokes, fills, undo and redo change the stack and the thumbnails.
     connect(m_history, &HistoryBridge::changed, m_paintLayersPanel, &PaintLayersPanel::refresh);
     connect(m_paintLayersPanel, &PaintLayersPanel::refreshed, this,

@@ -170,6 +170,60 @@ void Viewport::setChannel(render::MaterialChannel channel) {
     update();
 }
 
+void Viewport::setMaskView(std::uint64_t id) {
+    if (m_maskView == id)
+        return;
+    m_maskView = id;
+    m_maskViewDirty = true;
+    update();
+    emit maskViewChanged(id);
+}
+
+const core::TiledPlane* Viewport::shownMask() const {
+    if (m_maskView == 0 || !m_document.hasPaintTarget())
+        return nullptr;
+    const core::PaintLayerTarget* layers = m_document.currentPaintTarget()->paintLayers();
+    if (!layers)
+        return nullptr;
+    const core::PaintLayerStack& stack = layers->paintLayerStack();
+    const std::optional<std::size_t> index = stack.indexOf(m_maskView);
+    return index ? stack.layer(*index).mask.get() : nullptr;
+}
+
+void Viewport::uploadMaskView() {
+    m_maskViewDirty = false;
+    const core::PaintTarget* target = m_shownTarget;
+    if (!target || !m_textures)
+        return;
+    const core::TiledPlane* mask = shownMask();
+    if (m_maskView != 0 && !mask) {
+        // The mask or its paint layer went (undo, delete): the composite again.
+        m_maskView = 0;
+        QMetaObject::invokeMethod(
+            this, [this] { emit maskViewChanged(0); }, Qt::QueuedConnection);
+    }
+    m_maskPages.clear();
+    for (std::uint32_t page = 0; page < target->pageCount(); ++page) {
+        const core::Image& composite = target->page(page);
+        const core::TexelRect all{page, 0, 0, composite.width, composite.height};
+        if (mask) {
+            m_maskPages.push_back(core::Image{composite.width, composite.height, {}});
+            m_maskPages.back().rgba.resize(composite.rgba.size());
+            uploadMaskRect(*mask, all);
+        } else {
+            m_textures->updateTexels(page, 0, 0, composite.width, composite.height, composite);
+        }
+    }
+}
+
+void Viewport::uploadMaskRect(const core::TiledPlane& mask, const core::TexelRect& rect) {
+    if (rect.page >= m_maskPages.size())
+        return;
+    core::Image& grey = m_maskPages[rect.page];
+    core::writeMaskAsGrey(mask, rect.page, {rect.x, rect.y, rect.width, rect.height}, grey);
+    m_textures->updateTexels(rect.page, rect.x, rect.y, rect.width, rect.height, grey);
+}
+
 void Viewport::setBrushMapsVisible(bool visible) {
     if (m_brushMapsVisible == visible)
         return;
@@ -200,6 +254,7 @@ void Viewport::setToolCursor(const QCursor& cursor, bool brushOutline) {
 void Viewport::paintTargetChanged() {
     m_paintedMeshDirty = true; // uploaded where the context is current
     m_pendingPaint.clear();
+    setMaskView(0); // another target's paint layers
     update();
 }
 
@@ -258,12 +313,18 @@ void Viewport::flushPaint(bool compositor) {
 }
 
 void Viewport::flushPages(const core::PaintTarget& target) {
+    const core::TiledPlane* mask = m_maskView != 0 ? shownMask() : nullptr;
+    if (m_maskView != 0 && !mask)
+        uploadMaskView(); // the mask went: the composite, whole
     for (std::size_t page = 0; page < m_pendingPaint.pages.size(); ++page) {
         const core::TexelRect& r = m_pendingPaint.pages[page];
         if (r.width <= 0 || page >= target.pageCount())
             continue;
-        m_textures->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
-                                 target.page(page));
+        if (mask)
+            uploadMaskRect(*mask, {std::uint32_t(page), r.x, r.y, r.width, r.height});
+        else
+            m_textures->updateTexels(std::uint32_t(page), r.x, r.y, r.width, r.height,
+                                     target.page(page));
         m_textures->updateMetallicRoughness(std::uint32_t(page), r.x, r.y, r.width, r.height,
                                             target.metallicRoughnessPage(page));
     }
@@ -531,7 +592,8 @@ void Viewport::uploadMeshIfDirty() {
     m_depthLayersShown = m_depthLayersShown && m_compositorHasMesh;
     m_meshDirty = false;
     m_paintedMeshDirty = false;
-    m_standInDirty = true; // setMesh dropped it
+    m_standInDirty = true;             // setMesh dropped it
+    m_maskViewDirty = m_maskView != 0; // the textures are the composite's again
     ++m_meshUploads;
 }
 
@@ -545,7 +607,9 @@ void Viewport::reportDepthLayerError(const core::Status& status) {
 
 void Viewport::paintGL() {
     render::CompositeOptions composite = m_composite;
-    if (isGreyChannel(composite.channel))
+    if (m_maskView != 0)
+        composite.channel = render::MaterialChannel::BaseColor; // the mask's grey, unlit
+    if (isGreyChannel(composite.channel) || m_maskView != 0)
         composite.background = kGreyChannelBackground;
     render::DrawOptions options;
     options.background = composite.background;
@@ -555,6 +619,8 @@ void Viewport::paintGL() {
     if (!m_renderer || !mesh())
         return;
     uploadMeshIfDirty();
+    if (m_maskViewDirty)
+        uploadMaskView();
     uploadStandInIfDirty();
     // QOpenGLWidget has bound its own framebuffer; both draw into whatever is bound.
     const core::View current = view();
@@ -565,7 +631,7 @@ void Viewport::paintGL() {
     } else {
         flushPaint(false);
         options.standIn = isCameraMoving();
-        options.channel = m_composite.channel;
+        options.channel = composite.channel;
         // The faces the capture keeps, so what shows is what a stroke can reach.
         options.cullBackFaces = m_document.depthLayerOptions().cullBackFaces;
         m_renderer->draw(current, options);
@@ -599,14 +665,16 @@ void Viewport::drawPainted() {
 }
 
 void Viewport::drawChannelLegend() {
-    if (!isGreyChannel(m_composite.channel) || !mesh())
+    if ((!isGreyChannel(m_composite.channel) && m_maskView == 0) || !mesh())
         return;
     QPainter painter(this);
     const QFontMetrics metrics = painter.fontMetrics();
     const QLocale locale;
     const QString low = locale.toString(0), high = locale.toString(1);
-    const QString name = m_composite.channel == render::MaterialChannel::Roughness ? tr("Roughness")
-                                                                                   : tr("Metallic");
+    const QString name = m_maskView != 0 ? tr("Mask (black hides, white shows)")
+                         : m_composite.channel == render::MaterialChannel::Roughness
+                             ? tr("Roughness")
+                             : tr("Metallic");
     constexpr int kMargin = 12, kBarWidth = 160, kBarHeight = 12;
     const int barLeft = kMargin + metrics.horizontalAdvance(low) + 6;
     const QRect bar(barLeft, height() - kMargin - kBarHeight, kBarWidth, kBarHeight);

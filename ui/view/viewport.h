@@ -159,6 +159,14 @@ public:
     void setChannel(render::MaterialChannel channel);
     render::MaterialChannel channel() const { return m_composite.channel; }
     /**
+     * The mask view: the mask of paint layer id shown alone, unlit grey (black hides, white
+     * shows) in place of the composite, strokes on it shown as they go; 0 goes back. It ends by
+     * itself when the mask is gone (maskViewChanged()).
+     */
+    void setMaskView(std::uint64_t id);
+    /** The paint layer whose mask is shown alone (0: none). */
+    std::uint64_t maskView() const { return m_maskView; }
+    /**
      * Layer-aware rotation (default on): an orbit that starts on a surface point of the shown
      * layers (any layer: what is visible there, popped-up or revealed) turns about that point.
      */
@@ -231,6 +239,8 @@ signals:
     void depthLayerRenderingFailed(const QString& message);
     /** The current model's stand-in was made (hasStandIn()). */
     void standInReady();
+    /** The mask view began (the paint layer's id) or ended (0). */
+    void maskViewChanged(std::uint64_t id);
 
     // The painting hook: positions in device pixels, origin top-left (docs/architecture.md §4).
     // modifiers are those held at the press (ui::toolForPress).
@@ -301,6 +311,12 @@ private:
     /** flushPaint()'s steps: the changed texels of the pages, the changed vertex colours. */
     void flushPages(const core::PaintTarget& target);
     void flushVertexColors(const core::PaintTarget& target, bool compositor);
+    /** The mask the mask view shows, or nullptr (none, or it is gone). */
+    const core::TiledPlane* shownMask() const;
+    /** Uploads the mask view's pages (or the composite's again when it ended). */
+    void uploadMaskView();
+    /** Writes rect of the mask view's page into its grey picture and uploads it. */
+    void uploadMaskRect(const core::TiledPlane& mask, const core::TexelRect& rect);
 
     core::Document& m_document;
     // These live only while the context does.
@@ -324,6 +340,9 @@ private:
     bool m_depthLayersShown = false;
     std::uint64_t m_viewSerial = 1;
     render::CompositeOptions m_composite;
+    std::uint64_t m_maskView = 0;
+    bool m_maskViewDirty = false;         // its pages (or the composite's) to upload
+    std::vector<core::Image> m_maskPages; // the mask as grey, page by page
     QString m_glError;
 
     // Painting: uploaded when a renderer draws next (the mesh renderer's vertex colours only

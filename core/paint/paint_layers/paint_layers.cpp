@@ -89,6 +89,21 @@ int channelTexelBytes(PaintChannel channel) {
     return components(channel) + 1;
 }
 
+void writeMaskAsGrey(const TiledPlane& mask, std::uint32_t page, const TileRect& rect,
+                     Image& image) {
+    const int x0 = std::max(rect.x, 0), y0 = std::max(rect.y, 0);
+    const int x1 = std::min(rect.x + rect.width, image.width);
+    const int y1 = std::min(rect.y + rect.height, image.height);
+    for (int y = y0; y < y1; ++y)
+        for (int x = x0; x < x1; ++x) {
+            const std::uint8_t v = mask.texel(page, x, y)[0];
+            std::uint8_t* out =
+                &image.rgba[(std::size_t(y) * std::size_t(image.width) + std::size_t(x)) * 4];
+            out[0] = out[1] = out[2] = v;
+            out[3] = 255;
+        }
+}
+
 std::int16_t emptyTexelByte(float value) {
     using layer_bytes::toByte;
     if (!(value >= 0.0f && value <= 1.0f))

@@ -82,6 +82,13 @@ struct PaintLayer {
 int channelTexelBytes(PaintChannel channel);
 
 /**
+ * Writes rect of page of a mask (a one-byte plane) into image (RGBA8 of the page's size) as grey:
+ * each texel's byte as red, green and blue, alpha 255. What a mask view shows.
+ */
+void writeMaskAsGrey(const TiledPlane& mask, std::uint32_t page, const TileRect& rect,
+                     Image& image);
+
+/**
  * The stack of paint layers of a paint target over its read-only base (the model's own textures
  * or vertex colours as loaded), and the flattened result. Index 0 is the layer right above the
  * base. The composite is kept per page as RGBA8 base colour (the base's alpha kept) and, with
