@@ -18,6 +18,7 @@
 
 #include "app/cli_commands.h"
 #include "app/cli_timing.h"
+#include "core/base/huge_pages.h"
 #include "core/depth/depth_layers.h"
 #include "core/document/document.h"
 #include "core/io/mesh_io.h"
@@ -532,6 +533,7 @@ int runBench(const BenchArgs& args) {
             return fail(s.error());
     const json out = {{"renderer", render::HeadlessContext::rendererName()},
                       {"threads", std::thread::hardware_concurrency()},
+                      {"huge_pages", core::usesHugePages()},
                       {"results", results}};
     if (!args.jsonOut.empty()) {
         std::ofstream file(args.jsonOut);

@@ -8,6 +8,7 @@
 
 #include "app/cli_commands.h"
 #include "app/cli_uv_layout.h"
+#include "core/base/huge_pages.h"
 
 namespace {
 void addCameraOptions(CLI::App* command, cli::CameraArgs& camera) {
@@ -240,6 +241,7 @@ std::vector<Command> addCommands(CLI::App& app, CommandLine& args) {
 } // namespace
 
 int main(int argc, char** argv) {
+    core::restartWithHugePages(argv); // a large model's arrays fill faster
     CLI::App app{"LayerPaint headless tool: inspect models, capture depth layers, replay painting "
                  "scripts and benchmark.\nMODEL is a file (.gltf .glb .obj .ply .stl .off ...) or "
                  "builtin:trefoil, builtin:hexring, builtin:row, builtin:knot?triangles=N (1000 to "

@@ -12,6 +12,7 @@
 #include <QSurfaceFormat>
 #include <QTranslator>
 
+#include "core/base/huge_pages.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/stall_meter.h"
@@ -73,6 +74,7 @@ void describeOptions(QCommandLineParser& parser) {
 } // namespace
 
 int main(int argc, char* argv[]) {
+    core::restartWithHugePages(argv); // a large model's arrays fill faster
     QStringList arguments;
     for (int i = 0; i < argc; ++i)
         arguments.append(QString::fromLocal8Bit(argv[i]));

@@ -5,7 +5,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <string>
 
 #include <OpenImageIO/imageio.h>
 #include <glm/vec2.hpp>
@@ -63,6 +65,24 @@ std::vector<std::uint32_t> readUInt32Image(const fs::path& path, int& width, int
 
 const std::string kBox =
     std::string(LAYERPAINT_ASSIMP_MODELS) + "/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+
+TEST(Cli, RunsWithHugePagesWhereTheKernelGivesThemOnRequest) {
+    // Started without glibc's setting, it starts again with it (bench says whether its malloc
+    // has it): a large model's arrays then fill without a page fault every 4 KiB.
+    std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
+    const std::string mode{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "layerpaint_cli";
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path file = dir / "huge_pages.json";
+    const std::string command = std::string("env -u GLIBC_TUNABLES -u LAYERPAINT_HUGE_PAGES '") +
+                                LAYERPAINT_CLI + "' bench builtin:hexring --runs 1 --size 64x48 " +
+                                "--json '" + file.string() + "' > /dev/null 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+    const nlohmann::json result = nlohmann::json::parse(cli_test::readFile(file), nullptr, false);
+    ASSERT_TRUE(result.is_object() && result.contains("huge_pages"));
+    EXPECT_EQ(result["huge_pages"].get<bool>(), mode.find("[madvise]") != std::string::npos)
+        << mode;
+}
 
 TEST(Cli, InfoPrintsTheModelSummary) {
     const CliRun run = runCli({"info", "builtin:trefoil"});
