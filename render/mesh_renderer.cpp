@@ -92,7 +92,8 @@ struct MeshRenderer::Impl {
         GLuint array = 0;
         glCreateVertexArrays(1, &array);
         glVertexArrayVertexBuffer(array, 0, vbo, 0, sizeof(Vertex));
-        glVertexArrayVertexBuffer(array, 1, colorBuffer, 0, sizeof(glm::vec4));
+        if (colorBuffer)
+            glVertexArrayVertexBuffer(array, 1, colorBuffer, 0, sizeof(glm::vec4));
         if (tangentBuffer)
             glVertexArrayVertexBuffer(array, 2, tangentBuffer, 0, sizeof(glm::vec4));
         glVertexArrayElementBuffer(array, indexBuffer);
@@ -104,7 +105,8 @@ struct MeshRenderer::Impl {
         attribute(0, 3, offsetof(Vertex, position), 0);
         attribute(1, 3, offsetof(Vertex, normal), 0);
         attribute(2, 2, offsetof(Vertex, uv), 0);
-        attribute(3, 4, 0, 1);
+        if (colorBuffer) // else white (draw() sets the attribute's value)
+            attribute(3, 4, 0, 1);
         if (tangentBuffer)
             attribute(4, 4, 0, 2);
         return array;
@@ -264,11 +266,13 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
                        mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
     }
     d.vertexCount = vertices.size();
-    const std::vector<glm::vec4> colors =
-        mesh.hasColors() ? mesh.colors : std::vector<glm::vec4>(vertices.size(), glm::vec4(1.0f));
-    glCreateBuffers(1, &d.colorBuffer);
-    glNamedBufferStorage(d.colorBuffer, GLsizeiptr(std::max<std::size_t>(colors.size(), 1) * 16),
-                         colors.empty() ? nullptr : colors.data(), GL_DYNAMIC_STORAGE_BIT);
+    // Vertex colours only where the mesh has them (painting vertex colours gives them): a
+    // buffer of white would cost 16 bytes a vertex for nothing.
+    if (mesh.hasColors()) {
+        glCreateBuffers(1, &d.colorBuffer);
+        glNamedBufferStorage(d.colorBuffer, GLsizeiptr(mesh.colors.size() * sizeof(glm::vec4)),
+                             mesh.colors.data(), GL_DYNAMIC_STORAGE_BIT);
+    }
     glCreateBuffers(1, &d.vbo);
     glNamedBufferStorage(d.vbo, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
     glCreateBuffers(1, &d.ibo);
@@ -374,6 +378,8 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glBindVertexArray(standIn ? d.standInVao : d.vao);
+    if (!d.colorBuffer)
+        glVertexAttrib4f(3, 1.0f, 1.0f, 1.0f, 1.0f); // no vertex colours: white
     const std::vector<MaterialRun>& runs = standIn ? d.standInRuns : d.runs;
     std::size_t triangles = 0;
     for (const MaterialRun& run : runs)
