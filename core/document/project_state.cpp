@@ -335,6 +335,27 @@ void readPopUpSection(Reader& root, ProjectState& s) {
     r.boolean("transparency", s.popUpTransparency);
 }
 
+/** paint_layers.layers[i].fill.base_color from sRGB-encoded to linear, where it is 3 numbers. */
+void upgradeFillColorsToLinear(Json& layerpaint) {
+    const auto stack = layerpaint.find("paint_layers");
+    if (stack == layerpaint.end() || !stack->is_object())
+        return;
+    const auto layers = stack->find("layers");
+    if (layers == stack->end() || !layers->is_array())
+        return;
+    for (Json& layer : *layers) {
+        if (!layer.is_object() || !layer.contains("fill") || !layer["fill"].is_object())
+            continue;
+        Json& fill = layer["fill"];
+        const auto color = fill.find("base_color");
+        if (color == fill.end() || !color->is_array() || color->size() != 3 ||
+            !std::all_of(color->begin(), color->end(), [](const Json& c) { return c.is_number(); }))
+            continue; // the reader names what is wrong with it
+        for (Json& c : *color)
+            c = decodeSrgb(c.get<double>());
+    }
+}
+
 } // namespace
 
 Json projectStateToJson(const ProjectState& s) {
@@ -390,31 +411,6 @@ Json projectStateToJson(const ProjectState& s) {
         j["paint_layers"] = paintLayersToJson(*s.paintLayers);
     return j;
 }
-
-namespace {
-
-/** paint_layers.layers[i].fill.base_color from sRGB-encoded to linear, where it is 3 numbers. */
-void upgradeFillColorsToLinear(Json& layerpaint) {
-    const auto stack = layerpaint.find("paint_layers");
-    if (stack == layerpaint.end() || !stack->is_object())
-        return;
-    const auto layers = stack->find("layers");
-    if (layers == stack->end() || !layers->is_array())
-        return;
-    for (Json& layer : *layers) {
-        if (!layer.is_object() || !layer.contains("fill") || !layer["fill"].is_object())
-            continue;
-        Json& fill = layer["fill"];
-        const auto color = fill.find("base_color");
-        if (color == fill.end() || !color->is_array() || color->size() != 3 ||
-            !std::all_of(color->begin(), color->end(), [](const Json& c) { return c.is_number(); }))
-            continue; // the reader names what is wrong with it
-        for (Json& c : *color)
-            c = decodeSrgb(c.get<double>());
-    }
-}
-
-} // namespace
 
 Json upgradeProjectJson(Json j, int from) {
     if (from <= 1) {

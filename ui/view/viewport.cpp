@@ -207,8 +207,8 @@ void Viewport::uploadMaskView() {
         const core::Image& composite = target->page(page);
         const core::TexelRect all{page, 0, 0, composite.width, composite.height};
         if (mask) {
-            m_maskPages.push_back(core::Image{composite.width, composite.height, {}});
-            m_maskPages.back().rgba.resize(composite.rgba.size());
+            m_maskPages.push_back({composite.width, composite.height,
+                                   std::vector<std::uint8_t>(composite.rgba.size())});
             uploadMaskRect(*mask, all);
         } else {
             m_textures->updateTexels(page, 0, 0, composite.width, composite.height, composite);
