@@ -13,10 +13,13 @@
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
+#include <QWindow>
+#include <qpa/qwindowsysteminterface.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include "core/document/document.h"
@@ -83,6 +86,8 @@ protected:
         QEvent leave(QEvent::Leave);
         QApplication::sendEvent(viewport(), &leave);
     }
+
+    bool clickGivenWhileALoadKeepsTheWindowBusyPaints(QPoint p, int busyMs);
 };
 
 TEST_F(PaintingTest, DragPaintsAndUndoRedoRestoreTheTextureExactly) {
@@ -275,6 +280,56 @@ TEST_F(PaintingTest, BrushMapsShowAroundTheStroke) {
         }
     QTest::mouseRelease(viewport(), Qt::LeftButton, Qt::NoModifier, a + QPoint(20, 0));
     EXPECT_GT(blue, 500);
+}
+
+/**
+ * Opens the trefoil again; when it arrives the GUI thread stays busy for busyMs, and meanwhile a
+ * click at p is given from another thread, as the window system's reader queues it. Whether
+ * that click painted.
+ */
+bool PaintingTest::clickGivenWhileALoadKeepsTheWindowBusyPaints(QPoint p, int busyMs) {
+    ui::MainWindow& window = *m_window;
+    QWindow* handle = window.windowHandle();
+    const QPointF local = viewport()->mapTo(&window, QPointF(p));
+    const QPointF global = viewport()->mapToGlobal(QPointF(p));
+    const QMetaObject::Connection busy =
+        QObject::connect(&window, &ui::MainWindow::modelLoaded, &window, [&] {
+            std::thread reader([&] {
+                using Input = QWindowSystemInterface;
+                Input::handleMouseEvent<Input::AsynchronousDelivery>(handle, local, global,
+                                                                     Qt::LeftButton, Qt::LeftButton,
+                                                                     QEvent::MouseButtonPress);
+                Input::handleMouseEvent<Input::AsynchronousDelivery>(handle, local, global,
+                                                                     Qt::NoButton, Qt::LeftButton,
+                                                                     QEvent::MouseButtonRelease);
+            });
+            reader.join();
+            QThread::msleep(std::uint64_t(busyMs));
+        });
+    QSignalSpy built(builder(), &ui::DepthLayersBuilder::depthLayersBuilt);
+    window.openFile(QStringLiteral("builtin:trefoil"));
+    const bool done = QTest::qWaitFor([&] { return !built.isEmpty(); }, kBuildTimeoutMs);
+    QObject::disconnect(busy);
+    QTest::qWait(100);
+    EXPECT_TRUE(done) << "the depth layers were not built";
+    return window.isWindowModified() || undoStack()->count() > 0;
+}
+
+TEST_F(PaintingTest, AClickGivenWhileALoadKeepsTheWindowBusyNeverPaints) {
+    openTrefoil();
+    const std::optional<QPoint> p = solidPixel();
+    ASSERT_TRUE(p.has_value());
+    {
+        const BusyInputMs fence(250.0);
+        ASSERT_NE(fence.app(), nullptr);
+        const std::size_t dropped = fence.app()->droppedInputEvents();
+        EXPECT_FALSE(clickGivenWhileALoadKeepsTheWindowBusyPaints(*p, 400));
+        EXPECT_GE(fence.app()->droppedInputEvents(), dropped + 2) << "the press and its release";
+    }
+    ASSERT_FALSE(HasFailure());
+    // The same click, with the window answering in time, is a stroke: the test can fail.
+    const BusyInputMs fence(1000.0);
+    EXPECT_TRUE(clickGivenWhileALoadKeepsTheWindowBusyPaints(*p, 400));
 }
 
 } // namespace painting_uitest

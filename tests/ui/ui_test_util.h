@@ -13,6 +13,8 @@
 #include <QWidget>
 #include <QWindow>
 
+#include "ui/shell/stall_meter.h"
+
 namespace ui_test {
 
 // Generous: llvmpipe under a loaded CI machine is slow, and a test waits only as long as needed.
@@ -40,6 +42,29 @@ void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {
 }
 
 /** The title as shown (windowTitle() keeps the "[*]" unsaved-changes placeholder). */
+/** The application's freeze after which queued presses are dropped, set for one scope. */
+class BusyInputMs {
+public:
+    explicit BusyInputMs(double ms)
+        : m_app(dynamic_cast<ui::MeteredApplication*>(QCoreApplication::instance())) {
+        if (m_app) {
+            m_before = m_app->busyInputMs();
+            m_app->setBusyInputMs(ms);
+        }
+    }
+    ~BusyInputMs() {
+        if (m_app)
+            m_app->setBusyInputMs(m_before);
+    }
+    BusyInputMs(const BusyInputMs&) = delete;
+    BusyInputMs& operator=(const BusyInputMs&) = delete;
+    ui::MeteredApplication* app() const { return m_app; }
+
+private:
+    ui::MeteredApplication* m_app;
+    double m_before = 0.0;
+};
+
 inline QString shownTitle(const QWidget& window) {
     return window.windowHandle() ? window.windowHandle()->title() : QString();
 }

@@ -25,10 +25,13 @@
 #include <QTimer>
 #include <QUrl>
 #include <QWheelEvent>
+#include <qpa/qwindowsysteminterface.h>
 
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -551,6 +554,90 @@ TEST(StallMeterTest, AnEventHandledSlowlyIsAStallNamingItsReceiverAndWaitingIsNo
     qputenv("LAYERPAINT_STALL_MS", "250");
     EXPECT_EQ(ui::MeteredApplication::thresholdFromEnvironment(), 250.0);
     qunsetenv("LAYERPAINT_STALL_MS");
+}
+
+/** A widget that keeps the mouse events it is given. */
+class InputRecorder : public QWidget {
+public:
+    std::vector<QEvent::Type> events;
+
+protected:
+    void mousePressEvent(QMouseEvent* e) override { events.push_back(e->type()); }
+    void mouseMoveEvent(QMouseEvent* e) override { events.push_back(e->type()); }
+    void mouseReleaseEvent(QMouseEvent* e) override { events.push_back(e->type()); }
+};
+
+/**
+ * Queues mouse events for widget from another thread, as the window system's reader does: a
+ * press at p, a move 10 px right (a move in place is no event), a release there.
+ */
+void queueMouseFromAnotherThread(QWidget& widget, const std::vector<QEvent::Type>& types,
+                                 QPoint p) {
+    QWindow* window = widget.window()->windowHandle();
+    std::thread reader([&] {
+        using Input = QWindowSystemInterface;
+        for (const QEvent::Type type : types) {
+            const QPointF at =
+                QPointF(p) + (type == QEvent::MouseButtonPress ? 0.0 : 10.0) * QPointF(1, 0);
+            const Qt::MouseButtons held =
+                type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
+            Input::handleMouseEvent<Input::AsynchronousDelivery>(
+                window, widget.mapTo(widget.window(), at), widget.mapToGlobal(at), held,
+                type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton, type);
+        }
+    });
+    reader.join();
+}
+
+/** An object that, given a User event, runs its work and then keeps the GUI thread busyMs. */
+class BusyReceiver : public QObject {
+public:
+    BusyReceiver(int busyMs, std::function<void()> work)
+        : m_busyMs(busyMs), m_work(std::move(work)) {}
+    bool event(QEvent* event) override {
+        if (event->type() != QEvent::User)
+            return QObject::event(event);
+        m_work();
+        QThread::msleep(std::uint64_t(m_busyMs));
+        return true;
+    }
+
+private:
+    int m_busyMs;
+    std::function<void()> m_work;
+};
+
+TEST(StallMeterTest, APressGivenWhileFrozenIsDroppedWithItsDragAndAStrokeBegunBeforeGoesOn) {
+    const BusyInputMs fence(200.0);
+    ASSERT_NE(fence.app(), nullptr);
+    InputRecorder widget;
+    widget.resize(200, 200);
+    widget.show();
+    ASSERT_TRUE(QTest::qWaitForWindowExposed(&widget));
+    fence.app()->guardFromQueuedInput(&widget);
+    using E = QEvent;
+    const auto freezeWhileGiving = [&](int busyMs, std::vector<E::Type> types, QPoint p) {
+        BusyReceiver busy(busyMs, [&] { queueMouseFromAnotherThread(widget, types, p); });
+        QCoreApplication::postEvent(&busy, new QEvent(QEvent::User));
+        QTest::qWait(busyMs + 100);
+    };
+
+    // A click and drag given during a freeze: dropped whole.
+    const std::size_t dropped = fence.app()->droppedInputEvents();
+    freezeWhileGiving(300, {E::MouseButtonPress, E::MouseMove, E::MouseButtonRelease}, {20, 20});
+    EXPECT_TRUE(widget.events.empty());
+    EXPECT_EQ(fence.app()->droppedInputEvents(), dropped + 3);
+    // The same given during a short wait arrives.
+    freezeWhileGiving(50, {E::MouseButtonPress, E::MouseMove, E::MouseButtonRelease}, {70, 70});
+    EXPECT_EQ(widget.events,
+              (std::vector<E::Type>{E::MouseButtonPress, E::MouseMove, E::MouseButtonRelease}));
+    // A drag begun before a freeze goes on with what was given meanwhile.
+    widget.events.clear();
+    queueMouseFromAnotherThread(widget, {E::MouseButtonPress}, {120, 120});
+    QTest::qWait(50);
+    freezeWhileGiving(300, {E::MouseMove, E::MouseButtonRelease}, {120, 120});
+    EXPECT_EQ(widget.events,
+              (std::vector<E::Type>{E::MouseButtonPress, E::MouseMove, E::MouseButtonRelease}));
 }
 
 TEST(ModelLoaderTest, CancelAndSupersede) {

@@ -41,6 +41,7 @@
 #include "ui/shell/notifier.h"
 #include "ui/shell/project_controller.h"
 #include "ui/shell/source_names.h"
+#include "ui/shell/stall_meter.h"
 #include "ui/tools/region_tools.h"
 #include "ui/view/depth_layers_builder.h"
 #include "ui/view/message_bar.h"
@@ -119,6 +120,9 @@ void MainWindow::createView() {
     m_viewport = new Viewport(*m_document, this);
     m_viewport->setCameraMapping(m_preferences.cameraMapping);
     setCentralWidget(m_viewport);
+    // A click given while the window was frozen must not paint on what it shows afterwards.
+    if (auto* app = dynamic_cast<MeteredApplication*>(QCoreApplication::instance()))
+        app->guardFromQueuedInput(m_viewport);
     m_messageBar = new MessageBar(*m_viewport);
     m_builder = new DepthLayersBuilder(*m_document, *m_viewport, this);
     m_loader = new ModelLoader(this);

@@ -5,14 +5,17 @@
 #include <QDateTime>
 #include <QEvent>
 #include <QMetaEnum>
+#include <QMouseEvent>
 #include <QThread>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace ui {
 
 namespace {
 constexpr std::size_t kMaxKept = 1000; // stalls() keeps the first ones; the log has them all
+constexpr int kMaxDrainRounds = 64;    // event-loop rounds handling what was queued, at most
 } // namespace
 
 MeteredApplication::MeteredApplication(int& argc, char** argv) : QApplication(argc, argv) {
@@ -42,8 +45,13 @@ void MeteredApplication::watchDispatcher() {
 }
 
 bool MeteredApplication::notify(QObject* receiver, QEvent* event) {
-    if (m_thresholdMs < 0.0 || QThread::currentThread() != thread())
+    if (QThread::currentThread() != thread())
         return QApplication::notify(receiver, event);
+    if (dropsInput(receiver, event)) {
+        event->accept(); // handled: no mouse event is made of a dropped pen event
+        ++m_droppedInput;
+        return true;
+    }
     watchDispatcher();
     m_frames.push_back({m_clock.nsecsElapsed(), 0});
     const bool handled = QApplication::notify(receiver, event);
@@ -53,9 +61,68 @@ bool MeteredApplication::notify(QObject* receiver, QEvent* event) {
     if (!m_frames.empty())
         m_frames.back().othersNs += elapsed;
     const double ms = double(elapsed - frame.othersNs) / 1e6;
-    if (ms >= m_thresholdMs)
+    if (m_thresholdMs >= 0.0 && ms >= m_thresholdMs)
         record(ms, receiver, event);
+    m_busy = m_busy || ms >= m_busyInputMs;
+    // Once the outermost event is done, so no widget is half-way through painting.
+    if (m_frames.empty() && m_busy && !m_dropping) {
+        m_busy = false;
+        dropQueuedInput();
+    }
     return handled;
+}
+
+void MeteredApplication::guardFromQueuedInput(QWidget* widget) {
+    std::erase_if(m_guarded, [](const QPointer<QWidget>& g) { return g.isNull(); });
+    m_guarded.emplace_back(widget);
+}
+
+bool MeteredApplication::isGuarded(const QObject* receiver) const {
+    if (!receiver || !receiver->isWidgetType())
+        return false;
+    const auto* widget = static_cast<const QWidget*>(receiver);
+    return std::any_of(m_guarded.begin(), m_guarded.end(), [widget](const QPointer<QWidget>& g) {
+        return g && (g == widget || g->isAncestorOf(widget));
+    });
+}
+
+bool MeteredApplication::dropsInput(const QObject* receiver, const QEvent* event) {
+    const QEvent::Type type = event->type();
+    const bool press = type == QEvent::MouseButtonPress || type == QEvent::MouseButtonDblClick ||
+                       type == QEvent::TabletPress;
+    const bool rest = type == QEvent::MouseMove || type == QEvent::MouseButtonRelease ||
+                      type == QEvent::TabletMove || type == QEvent::TabletRelease;
+    if ((!press && !rest) || !isGuarded(receiver))
+        return false;
+    if (press) {
+        // A press given while the window was frozen, and everything up to its release.
+        m_swallowing = m_dropping;
+        return m_dropping;
+    }
+    if (!m_swallowing)
+        return false; // a stroke begun before goes on with what was given meanwhile
+    const bool released = type == QEvent::MouseButtonRelease || type == QEvent::TabletRelease;
+    if (released && static_cast<const QSinglePointEvent*>(event)->buttons() == Qt::NoButton)
+        m_swallowing = false;
+    return true;
+}
+
+void MeteredApplication::dropQueuedInput() {
+    // The window system's queue is read on its own thread while this one is busy, so what was
+    // given meanwhile is waiting now: handled here until nothing is left, the presses for the
+    // guarded widgets dropped. Input given while this runs goes the same way.
+    m_dropping = true;
+    const std::size_t before = m_droppedInput;
+    QAbstractEventDispatcher* dispatcher = QAbstractEventDispatcher::instance(thread());
+    for (int round = 0;
+         dispatcher && round < kMaxDrainRounds && dispatcher->processEvents(QEventLoop::AllEvents);
+         ++round) {
+    }
+    m_dropping = false;
+    m_busy = false; // what kept it busy meanwhile has been drained too
+    if (m_log && m_thresholdMs >= 0.0 && m_droppedInput > before)
+        std::fprintf(stderr, "layerpaint: %zu mouse or pen events given while busy dropped\n",
+                     m_droppedInput - before);
 }
 
 void MeteredApplication::record(double ms, const QObject* receiver, const QEvent* event) {
