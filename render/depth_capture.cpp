@@ -273,19 +273,28 @@ void DepthCapture::setMesh(const core::Mesh& mesh) {
     const std::size_t triangles = mesh.triangleCount();
     if (triangles == 0 || triangles > std::size_t(std::numeric_limits<GLsizei>::max() / 3))
         return;
-    std::vector<glm::vec3> soup(triangles * 3);
-    for (std::size_t i = 0; i < soup.size(); ++i) {
+    // Written straight into the buffer: no copy of the soup is kept or made on the CPU.
+    const std::size_t corners = triangles * 3;
+    const auto bytes = GLsizeiptr(corners * sizeof(glm::vec3));
+    glCreateBuffers(1, &d.positions);
+    glNamedBufferStorage(d.positions, bytes, nullptr, GL_MAP_WRITE_BIT);
+    auto* soup = static_cast<glm::vec3*>(glMapNamedBufferRange(
+        d.positions, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
+    if (!soup) {
+        d.releaseMesh();
+        return;
+    }
+    for (std::size_t i = 0; i < corners; ++i) {
         const std::uint32_t v = mesh.indices[i];
         soup[i] = v < mesh.positions.size() ? mesh.positions[v] : glm::vec3(0.0f);
     }
-    glCreateBuffers(1, &d.positions);
-    glNamedBufferStorage(d.positions, GLsizeiptr(soup.size() * sizeof(glm::vec3)), soup.data(), 0);
+    glUnmapNamedBuffer(d.positions);
     glCreateVertexArrays(1, &d.vertexArray);
     glVertexArrayVertexBuffer(d.vertexArray, 0, d.positions, 0, sizeof(glm::vec3));
     glEnableVertexArrayAttrib(d.vertexArray, 0);
     glVertexArrayAttribFormat(d.vertexArray, 0, 3, GL_FLOAT, GL_FALSE, 0);
     glVertexArrayAttribBinding(d.vertexArray, 0, 0);
-    d.soupVertices = soup.size();
+    d.soupVertices = corners;
 }
 
 void DepthCapture::Impl::useBackFaces(std::span<const std::uint32_t> triangles) {

@@ -309,28 +309,30 @@ bool uploadWhole(const MeshUpload& u, MeshPart& part) {
 }
 
 /** The part's vertices in ascending order, and its triangles renumbered to them. */
-std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, MeshPart& part) {
+std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, std::size_t vertices,
+                                     MeshPart& part) {
     const auto begin = packed.begin() + part.firstTriangle;
     std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
+    // The used vertices marked, then numbered in ascending order: no sort of the corners.
+    constexpr std::uint32_t kUsed = core::kNone - 1;
+    std::vector<std::uint32_t> localOf(vertices, core::kNone);
     for (const glm::uvec4& triangle : local)
         if (triangle.w != core::kNone)
-            part.vertices.insert(part.vertices.end(), {triangle.x, triangle.y, triangle.z});
-    std::sort(part.vertices.begin(), part.vertices.end());
-    part.vertices.erase(std::unique(part.vertices.begin(), part.vertices.end()),
-                        part.vertices.end());
-    const auto localOf = [&](std::uint32_t v) {
-        return std::uint32_t(std::lower_bound(part.vertices.begin(), part.vertices.end(), v) -
-                             part.vertices.begin());
-    };
+            localOf[triangle.x] = localOf[triangle.y] = localOf[triangle.z] = kUsed;
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (localOf[v] == kUsed) {
+            localOf[v] = std::uint32_t(part.vertices.size());
+            part.vertices.push_back(std::uint32_t(v));
+        }
     for (glm::uvec4& triangle : local)
         if (triangle.w != core::kNone)
-            triangle = {localOf(triangle.x), localOf(triangle.y), localOf(triangle.z), triangle.w};
+            triangle = {localOf[triangle.x], localOf[triangle.y], localOf[triangle.z], triangle.w};
     return local;
 }
 
 /** A run of triangles with its own renumbered copy of the vertices it uses. */
 bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
-    const std::vector<glm::uvec4> local = renumberPart(u.packed, part);
+    const std::vector<glm::uvec4> local = renumberPart(u.packed, u.mesh.vertexCount(), part);
     const std::vector<std::uint32_t>& v = part.vertices;
     const core::Mesh& mesh = u.mesh;
     return uploadTangents(

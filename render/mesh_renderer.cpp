@@ -260,12 +260,18 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     Impl& d = *m_impl;
     d.releaseMesh();
 
-    std::vector<Vertex> vertices(mesh.vertexCount());
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-        vertices[i] = {mesh.positions[i], mesh.normals[i],
-                       mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
+    // Interleaved straight into the buffer: no copy is kept or made on the CPU.
+    d.vertexCount = mesh.vertexCount();
+    const auto vertexBytes = GLsizeiptr(d.vertexCount * sizeof(Vertex));
+    glCreateBuffers(1, &d.vbo);
+    glNamedBufferStorage(d.vbo, vertexBytes, nullptr, GL_MAP_WRITE_BIT);
+    if (auto* vertices = static_cast<Vertex*>(glMapNamedBufferRange(
+            d.vbo, 0, vertexBytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT))) {
+        for (std::size_t i = 0; i < d.vertexCount; ++i)
+            vertices[i] = {mesh.positions[i], mesh.normals[i],
+                           mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
+        glUnmapNamedBuffer(d.vbo);
     }
-    d.vertexCount = vertices.size();
     // Vertex colours only where the mesh has them (painting vertex colours gives them): a
     // buffer of white would cost 16 bytes a vertex for nothing.
     if (mesh.hasColors()) {
@@ -273,8 +279,6 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
         glNamedBufferStorage(d.colorBuffer, GLsizeiptr(mesh.colors.size() * sizeof(glm::vec4)),
                              mesh.colors.data(), GL_DYNAMIC_STORAGE_BIT);
     }
-    glCreateBuffers(1, &d.vbo);
-    glNamedBufferStorage(d.vbo, GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
     glCreateBuffers(1, &d.ibo);
     glNamedBufferStorage(d.ibo, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                          mesh.indices.data(), 0);
