@@ -88,6 +88,12 @@ public:
     core::Status setMesh(const core::Mesh& mesh,
                          std::shared_ptr<MaterialTextures> textures = nullptr);
     /**
+     * As setMesh() above, the geometry from geometry, the materials, textures and vertex
+     * colours from look (a PaintTarget::paintedLook(), which spares a copy of the geometry).
+     */
+    core::Status setMesh(const core::Mesh& geometry, const core::Mesh& look,
+                         std::shared_ptr<MaterialTextures> textures);
+    /**
      * The textures the materials sample (with a mesh renderer of the same context, the store
      * both read). Textures are sampled when composing, so painting them (MaterialTextures::
      * updateTexels()) runs nothing else again; a base colour texture with a metallic-roughness

@@ -196,7 +196,7 @@ std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
 namespace {
 
 /** Triangles as (a, b, c, material); one with a bad index or material is drawn grey. */
-std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh) {
+std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh, std::size_t materials) {
     const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
     std::vector<glm::uvec4> packed(triangles);
     for (std::size_t t = 0; t < triangles; ++t) {
@@ -204,8 +204,7 @@ std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh) {
                             c = mesh.indices[3 * t + 2];
         const std::uint32_t material =
             t < mesh.triangleMaterial.size() ? mesh.triangleMaterial[t] : core::kNone;
-        const bool valid =
-            a < vertices && b < vertices && c < vertices && material < mesh.materials.size();
+        const bool valid = a < vertices && b < vertices && c < vertices && material < materials;
         packed[t] = valid ? glm::uvec4(a, b, c, material) : glm::uvec4(0, 0, 0, core::kNone);
     }
     return packed;
@@ -222,18 +221,18 @@ struct TexturePasses {
  * One pass per distinct texture and maps; textures beyond the resolved byte's range stay
  * unsampled.
  */
-TexturePasses planTexturePasses(const core::Mesh& mesh) {
+TexturePasses planTexturePasses(const core::Mesh& look, bool hasUvs) {
     TexturePasses passes;
-    passes.materials.resize(mesh.materials.size());
+    passes.materials.resize(look.materials.size());
     for (std::size_t m = 0; m < passes.materials.size(); ++m) {
-        const core::Material& material = mesh.materials[m];
+        const core::Material& material = look.materials[m];
         const int texture = material.baseColorTexture;
         const std::int32_t blend = material.alphaMode == core::AlphaMode::Blend ? 1 : 0;
         passes.materials[m] = {material.baseColorFactor, -1, 0, 0, blend};
-        if (texture < 0 || std::size_t(texture) >= mesh.textures.size() ||
-            mesh.textures[std::size_t(texture)].empty())
+        if (texture < 0 || std::size_t(texture) >= look.textures.size() ||
+            look.textures[std::size_t(texture)].empty())
             continue;
-        const SurfaceMaps maps = SurfaceMaps::of(mesh, material);
+        const SurfaceMaps maps = SurfaceMaps::of(look.textures, hasUvs, material);
         int pass = -1;
         for (std::size_t i = 0; i < passes.images.size() && pass < 0; ++i)
             if (passes.images[i] == texture && passes.maps[i] == maps)
@@ -243,7 +242,7 @@ TexturePasses planTexturePasses(const core::Mesh& mesh) {
             passes.images.push_back(texture);
             passes.maps.push_back(maps);
         }
-        const core::Image& image = mesh.textures[std::size_t(texture)];
+        const core::Image& image = look.textures[std::size_t(texture)];
         passes.materials[m] = {material.baseColorFactor, pass, image.width, image.height, blend};
     }
     return passes;
@@ -275,9 +274,13 @@ std::vector<std::uint32_t> octTangents(const core::Mesh& mesh) {
     return packed;
 }
 
-/** What every part's upload reads: the mesh and its packed triangles, normals and tangents. */
+/**
+ * What every part's upload reads: the mesh and its packed triangles, normals and tangents, and
+ * the vertex colours.
+ */
 struct MeshUpload {
     const core::Mesh& mesh;
+    const std::vector<glm::vec4>& colors;
     const std::vector<glm::uvec4>& packed;
     const std::vector<std::uint32_t>& normals;
     const std::vector<std::uint32_t>& tangents; // empty without normal maps
@@ -305,7 +308,7 @@ bool uploadWhole(const MeshUpload& u, MeshPart& part) {
            uploadTo(part, kPositions, u.mesh.positions, true, u.limit) &&
            uploadTo(part, kNormals, u.normals, true, u.limit) &&
            uploadTo(part, kUvs, u.mesh.uvs, u.hasUvs, u.limit) &&
-           uploadTo(part, kColors, u.mesh.colors, u.hasColors, u.limit);
+           uploadTo(part, kColors, u.colors, u.hasColors, u.limit);
 }
 
 /** The part's vertices in ascending order, and its triangles renumbered to them. */
@@ -353,9 +356,8 @@ bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
                              : std::vector<glm::vec2>(),
                     u.hasUvs, u.limit) &&
            uploadTo(part, kColors,
-                    u.hasColors
-                        ? gather<glm::vec4>(v, [&](std::uint32_t g) { return mesh.colors[g]; })
-                        : std::vector<glm::vec4>(),
+                    u.hasColors ? gather<glm::vec4>(v, [&](std::uint32_t g) { return u.colors[g]; })
+                                : std::vector<glm::vec4>(),
                     u.hasColors, u.limit);
 }
 
@@ -399,6 +401,11 @@ bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<
 
 core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
                                       std::shared_ptr<MaterialTextures> textures) {
+    return setMesh(mesh, mesh, std::move(textures));
+}
+
+core::Status DepthCompositor::setMesh(const core::Mesh& mesh, const core::Mesh& look,
+                                      std::shared_ptr<MaterialTextures> textures) {
     Impl& d = *m_impl;
     d.hasMesh = false;
     ++d.version;
@@ -407,34 +414,34 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
     d.ownTextures = textures == nullptr;
     d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
     const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
-    if (!d.fits(mesh.materials.size(), sizeof(GpuMaterial)))
+    if (!d.fits(look.materials.size(), sizeof(GpuMaterial)))
         return tooLarge("the mesh's materials");
     if (triangles > core::kNone - 1)
         return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
 
-    const std::vector<glm::uvec4> packed = packTriangles(mesh);
-    TexturePasses passes = planTexturePasses(mesh);
-    const std::vector<std::uint32_t> normals = octNormals(mesh);
+    const std::vector<glm::uvec4> packed = packTriangles(mesh, look.materials.size());
     d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
-    d.hasColors = mesh.colors.size() == vertices && vertices > 0;
+    TexturePasses passes = planTexturePasses(look, d.hasUvs);
+    const std::vector<std::uint32_t> normals = octNormals(mesh);
+    d.hasColors = look.colors.size() == vertices && vertices > 0;
     const std::vector<std::uint32_t> tangents =
         d.hasUvs && needsTangents(passes) ? octTangents(mesh) : std::vector<std::uint32_t>();
     d.hasTangents = !tangents.empty();
     d.hasBlend =
-        std::any_of(mesh.materials.begin(), mesh.materials.end(),
+        std::any_of(look.materials.begin(), look.materials.end(),
                     [](const core::Material& m) { return m.alphaMode == core::AlphaMode::Blend; });
     const MeshPlan plan = planMeshParts(packed, vertices, d.hasColors, d.planBytes());
     if (plan.parts.empty())
         return tooLarge("one triangle's vertices");
-    const MeshUpload upload{mesh,     packed,      normals,        tangents,
-                            d.hasUvs, d.hasColors, d.maxBlockBytes};
+    const MeshUpload upload{mesh,     look.colors, packed,      normals,
+                            tangents, d.hasUvs,    d.hasColors, d.maxBlockBytes};
     if (!d.buffers[kMaterials].upload(passes.materials, d.maxBlockBytes) ||
         !uploadMeshParts(upload, plan, d.meshParts)) {
         d.meshParts.clear();
         return outOfMemory("the mesh (open a model with fewer triangles)");
     }
     if (d.ownTextures)
-        d.textures->create(mesh.textures);
+        d.textures->create(look.textures);
     d.passTexture = std::move(passes.images);
     d.passMaps = std::move(passes.maps);
     d.vertexCount = vertices;

@@ -257,6 +257,12 @@ core::Status MeshRenderer::initialize() {
 
 void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures,
                            std::span<const std::uint32_t> shownBackFaces) {
+    setMesh(mesh, mesh, std::move(textures), shownBackFaces);
+}
+
+void MeshRenderer::setMesh(const core::Mesh& mesh, const core::Mesh& look,
+                           std::shared_ptr<MaterialTextures> textures,
+                           std::span<const std::uint32_t> shownBackFaces) {
     Impl& d = *m_impl;
     d.releaseMesh();
 
@@ -274,18 +280,18 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     }
     // Vertex colours only where the mesh has them (painting vertex colours gives them): a
     // buffer of white would cost 16 bytes a vertex for nothing.
-    if (mesh.hasColors()) {
+    if (look.colors.size() == d.vertexCount && d.vertexCount > 0) {
         glCreateBuffers(1, &d.colorBuffer);
-        glNamedBufferStorage(d.colorBuffer, GLsizeiptr(mesh.colors.size() * sizeof(glm::vec4)),
-                             mesh.colors.data(), GL_DYNAMIC_STORAGE_BIT);
+        glNamedBufferStorage(d.colorBuffer, GLsizeiptr(look.colors.size() * sizeof(glm::vec4)),
+                             look.colors.data(), GL_DYNAMIC_STORAGE_BIT);
     }
     glCreateBuffers(1, &d.ibo);
     glNamedBufferStorage(d.ibo, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                          mesh.indices.data(), 0);
     d.surfaces.clear();
     bool normalMaps = false;
-    for (const core::Material& material : mesh.materials) {
-        d.surfaces.push_back(SurfaceMaps::of(mesh, material));
+    for (const core::Material& material : look.materials) {
+        d.surfaces.push_back(SurfaceMaps::of(look.textures, mesh.hasUvs(), material));
         normalMaps = normalMaps || (d.surfaces.back().features() & kSurfaceNormalMap);
     }
     if (const std::vector<glm::vec4> tangents =
@@ -301,11 +307,11 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     d.ownTextures = textures == nullptr;
     d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
     if (d.ownTextures)
-        d.textures->create(mesh.textures);
-    d.materials = mesh.materials;
-    d.backFaceMaterials.assign(mesh.materials.size(), 0);
+        d.textures->create(look.textures);
+    d.materials = look.materials;
+    d.backFaceMaterials.assign(look.materials.size(), 0);
     for (const std::uint32_t t : shownBackFaces)
-        if (t < mesh.triangleMaterial.size() && mesh.triangleMaterial[t] < mesh.materials.size())
+        if (t < mesh.triangleMaterial.size() && mesh.triangleMaterial[t] < look.materials.size())
             d.backFaceMaterials[mesh.triangleMaterial[t]] = 1;
     auto shown = shownBackFaces.begin();
     d.runs = Impl::makeRuns(mesh.triangleMaterial, [&](std::uint32_t t, std::uint32_t) {

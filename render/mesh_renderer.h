@@ -50,6 +50,14 @@ public:
      */
     void setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextures> textures = nullptr,
                  std::span<const std::uint32_t> shownBackFaces = {});
+    /**
+     * As setMesh() above, the geometry (positions, normals, uvs, triangles and their material
+     * numbers) from geometry, the materials, textures and vertex colours from look (a
+     * PaintTarget::paintedLook(), which spares a copy of the geometry).
+     */
+    void setMesh(const core::Mesh& geometry, const core::Mesh& look,
+                 std::shared_ptr<MaterialTextures> textures,
+                 std::span<const std::uint32_t> shownBackFaces);
     bool hasMesh() const;
     /**
      * Sets the simplified triangles drawn with DrawOptions::standIn: indices into the mesh's

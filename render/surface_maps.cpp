@@ -15,9 +15,9 @@ namespace {
 constexpr GLuint kNormalUnit = 2, kOcclusionUnit = 3, kEmissiveUnit = 4;
 
 /** The map of a mesh texture, or none where the mesh lacks it. */
-SurfaceMap mapOf(const core::Mesh& mesh, const core::MaterialMap& map) {
-    if (map.texture < 0 || std::size_t(map.texture) >= mesh.textures.size() ||
-        mesh.textures[std::size_t(map.texture)].empty())
+SurfaceMap mapOf(std::span<const core::Image> textures, const core::MaterialMap& map) {
+    if (map.texture < 0 || std::size_t(map.texture) >= textures.size() ||
+        textures[std::size_t(map.texture)].empty())
         return {};
     return {map.texture, map.uvTransform};
 }
@@ -65,14 +65,15 @@ void bindMap(const ShaderProgram& program, const SurfaceMap& map, GLuint unit, u
 
 } // namespace
 
-SurfaceMaps SurfaceMaps::of(const core::Mesh& mesh, const core::Material& material) {
+SurfaceMaps SurfaceMaps::of(std::span<const core::Image> textures, bool hasUvs,
+                            const core::Material& material) {
     SurfaceMaps maps;
     if (material.baseColorTexture < 0)
         return maps;
-    if (mesh.hasUvs())
-        maps.normal = mapOf(mesh, material.normal);
-    maps.occlusion = mapOf(mesh, material.occlusion);
-    maps.emissive = mapOf(mesh, material.emissive);
+    if (hasUvs)
+        maps.normal = mapOf(textures, material.normal);
+    maps.occlusion = mapOf(textures, material.occlusion);
+    maps.emissive = mapOf(textures, material.emissive);
     maps.normalScale = std::isfinite(material.normalScale) ? material.normalScale : 1.0f;
     maps.occlusionStrength = std::isfinite(material.occlusionStrength)
                                  ? std::clamp(material.occlusionStrength, 0.0f, 1.0f)

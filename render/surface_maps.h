@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,7 +42,9 @@ struct SurfaceMaps {
     float occlusionStrength = 1.0f;
     glm::vec3 emission{0.0f}; // emissiveFactor × emissiveStrength, linear
 
-    static SurfaceMaps of(const core::Mesh& mesh, const core::Material& material);
+    /** The maps of material among textures, on a mesh with or without uvs. */
+    static SurfaceMaps of(std::span<const core::Image> textures, bool hasUvs,
+                          const core::Material& material);
     /** SurfaceFeature bits. */
     unsigned features() const;
     bool operator==(const SurfaceMaps&) const = default;

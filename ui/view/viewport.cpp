@@ -570,21 +570,23 @@ void Viewport::uploadMeshIfDirty() {
     // only the geometry, which painting never changes.
     if (m_meshDirty && m_capturer)
         m_capturer->setMesh(m_document.mesh());
+    // The target's look over its mesh's geometry, which is not copied.
     core::Mesh painted;
     if (target)
-        painted = m_document.paintedMesh();
-    const core::Mesh& mesh = target ? painted : m_document.mesh();
+        painted = target->paintedLook();
+    const core::Mesh& mesh = target ? target->mesh() : m_document.mesh();
+    const core::Mesh& look = target ? painted : mesh;
     m_shownTarget = target;
     // Both renderers light with the metallic-roughness pages, so the view keeps its colours
     // while the camera moves.
-    m_textures->create(mesh.textures);
+    m_textures->create(look.textures);
     for (std::size_t page = 0; target && page < target->pageCount(); ++page)
         m_textures->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
-    m_renderer->setMesh(mesh, m_textures, m_document.topology().shownBackFaces);
+    m_renderer->setMesh(mesh, look, m_textures, m_document.topology().shownBackFaces);
     m_pendingPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor) {
-        const core::Status status = m_compositor->setMesh(mesh, m_textures);
+        const core::Status status = m_compositor->setMesh(mesh, look, m_textures);
         m_compositorHasMesh = status.ok();
         if (!status)
             reportDepthLayerError(status);

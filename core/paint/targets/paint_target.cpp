@@ -95,19 +95,23 @@ private:
 
 } // namespace
 
-Mesh PaintTarget::paintedMesh() const {
-    Mesh painted = mesh();
-    painted.materials = drawMaterials();
-    if (pageCount() > 0) {
-        painted.textures.clear();
+Mesh PaintTarget::paintedLook() const {
+    const Mesh& source = mesh();
+    Mesh look;
+    look.materials = drawMaterials();
+    if (pageCount() == 0) {
+        look.textures = source.textures;
+        look.textureSources = source.textureSources;
+        look.textureOrigins = source.textureOrigins;
+        look.colors = source.colors;
+    } else {
         for (std::size_t i = 0; i < pageCount(); ++i)
-            painted.textures.push_back(page(i));
-        painted.colors.clear(); // baked into the pages
-        MapKeeper keeper(mesh(), painted);
+            look.textures.push_back(page(i));
+        MapKeeper keeper(source, look); // the colours are baked into the pages
         for (std::size_t i = 0; i < pageCount(); ++i)
             keeper.page(i, pageTexture(i), pageUnchanged(i));
         std::map<std::size_t, int> painting; // page -> its painted metallic-roughness
-        for (Material& m : painted.materials) {
+        for (Material& m : look.materials) {
             keeper.keep(m.normal);
             keeper.keep(m.occlusion);
             keeper.keep(m.emissive);
@@ -124,7 +128,18 @@ Mesh PaintTarget::paintedMesh() const {
         }
     }
     if (const std::span<const glm::vec4> colors = vertexColors(); !colors.empty())
-        painted.colors.assign(colors.begin(), colors.end());
+        look.colors.assign(colors.begin(), colors.end());
+    return look;
+}
+
+Mesh PaintTarget::paintedMesh() const {
+    Mesh painted = mesh();
+    Mesh look = paintedLook();
+    painted.materials = std::move(look.materials);
+    painted.textures = std::move(look.textures);
+    painted.textureSources = std::move(look.textureSources);
+    painted.textureOrigins = std::move(look.textureOrigins);
+    painted.colors = std::move(look.colors);
     return painted;
 }
 

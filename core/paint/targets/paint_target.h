@@ -228,6 +228,11 @@ public:
      * painted, as its materials' metallic-roughness map with factors 1), or its colours.
      */
     Mesh paintedMesh() const;
+    /**
+     * What paintedMesh() changes of mesh(), without a copy of its geometry: the materials,
+     * textures (with their kept files and origins) and vertex colours; the rest left empty.
+     */
+    Mesh paintedLook() const;
 
 protected:
     struct Context; // the shared dab and stroke machinery, defined in paint_target.cpp
