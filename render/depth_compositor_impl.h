@@ -116,6 +116,21 @@ struct Buffer : GlBuffer {
     bool upload(const std::vector<T>& values, std::size_t limit, bool slack = false) {
         return upload(values.data(), values.size() * sizeof(T), limit, slack);
     }
+    /** As upload(), the count values that fill(T*) writes straight into the storage. */
+    template <typename T, typename Fill>
+    bool write(std::size_t count, std::size_t limit, Fill&& fill) {
+        const std::size_t size = count * sizeof(T);
+        if (!upload(nullptr, size, limit))
+            return false;
+        if (size == 0)
+            return true;
+        void* out = glMapNamedBufferRange(id, 0, GLsizeiptr(size),
+                                          GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT);
+        if (!out)
+            return false;
+        fill(static_cast<T*>(out));
+        return glUnmapNamedBuffer(id) == GL_TRUE;
+    }
 };
 
 /**

@@ -184,17 +184,6 @@ std::vector<PartPlan> planParts(const std::vector<glm::uvec4>& packed, std::size
     return parts;
 }
 
-template <typename T, typename F>
-std::vector<T> gather(const std::vector<std::uint32_t>& vertices, F&& value) {
-    std::vector<T> out(vertices.size());
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-        out[i] = value(vertices[i]);
-    return out;
-}
-} // namespace
-
-namespace {
-
 /** Triangles as (a, b, c, material); one with a bad index or material is drawn grey. */
 std::vector<glm::uvec4> packTriangles(const core::Mesh& mesh, std::size_t materials) {
     const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
@@ -333,32 +322,34 @@ std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, std:
     return local;
 }
 
+/**
+ * The values of source at a part's vertices, gathered straight into buffer; a little storage
+ * when the mesh has none.
+ */
+template <typename T>
+bool gatherTo(Buffer& buffer, const std::vector<std::uint32_t>& vertices,
+              const std::vector<T>& source, bool present, std::size_t limit) {
+    if (!present)
+        return buffer.upload(nullptr, 0, limit);
+    return buffer.write<T>(vertices.size(), limit, [&](T* out) {
+        for (std::size_t i = 0; i < vertices.size(); ++i)
+            out[i] = source[vertices[i]];
+    });
+}
+
 /** A run of triangles with its own renumbered copy of the vertices it uses. */
 bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
     const std::vector<glm::uvec4> local = renumberPart(u.packed, u.mesh.vertexCount(), part);
     const std::vector<std::uint32_t>& v = part.vertices;
-    const core::Mesh& mesh = u.mesh;
-    return uploadTangents(
-               part,
-               u.tangents.empty()
-                   ? std::vector<std::uint32_t>()
-                   : gather<std::uint32_t>(v, [&](std::uint32_t g) { return u.tangents[g]; }),
-               u.limit) &&
+    const auto buffer = [&](std::size_t binding) -> Buffer& {
+        return part.buffers[binding - kTriangles];
+    };
+    return gatherTo(part.tangents, v, u.tangents, !u.tangents.empty(), u.limit) &&
            uploadTo(part, kTriangles, local, true, u.limit) &&
-           uploadTo(part, kPositions,
-                    gather<glm::vec3>(v, [&](std::uint32_t g) { return mesh.positions[g]; }), true,
-                    u.limit) &&
-           uploadTo(part, kNormals,
-                    gather<std::uint32_t>(v, [&](std::uint32_t g) { return u.normals[g]; }), true,
-                    u.limit) &&
-           uploadTo(part, kUvs,
-                    u.hasUvs ? gather<glm::vec2>(v, [&](std::uint32_t g) { return mesh.uvs[g]; })
-                             : std::vector<glm::vec2>(),
-                    u.hasUvs, u.limit) &&
-           uploadTo(part, kColors,
-                    u.hasColors ? gather<glm::vec4>(v, [&](std::uint32_t g) { return u.colors[g]; })
-                                : std::vector<glm::vec4>(),
-                    u.hasColors, u.limit);
+           gatherTo(buffer(kPositions), v, u.mesh.positions, true, u.limit) &&
+           gatherTo(buffer(kNormals), v, u.normals, true, u.limit) &&
+           gatherTo(buffer(kUvs), v, u.mesh.uvs, u.hasUvs, u.limit) &&
+           gatherTo(buffer(kColors), v, u.colors, u.hasColors, u.limit);
 }
 
 /** The parts: the whole mesh as it is when it fits one storage block, else renumbered runs. */

@@ -14,7 +14,7 @@ namespace render {
  * A buffer with immutable storage, kept while new data fits so that a rebuild does not
  * reallocate. With mapping flags (GL_MAP_READ_BIT / GL_MAP_WRITE_BIT) it is mapped persistently
  * and coherently, so the CPU reads or writes it in place; without, it takes glNamedBufferSubData
- * uploads. Freed explicitly (the context must be current).
+ * uploads or a mapping for one write. Freed explicitly (the context must be current).
  */
 struct GlBuffer {
     GLuint id = 0;
@@ -25,7 +25,7 @@ struct GlBuffer {
     bool allocate(std::size_t size, GLbitfield mapping = 0) {
         free();
         const GLbitfield flags = mapping ? mapping | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT
-                                         : GL_DYNAMIC_STORAGE_BIT;
+                                         : GL_DYNAMIC_STORAGE_BIT | GL_MAP_WRITE_BIT;
         while (glGetError() != GL_NO_ERROR) {
         }
         glCreateBuffers(1, &id);
