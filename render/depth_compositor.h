@@ -53,6 +53,9 @@ struct CompositeOptions {
     glm::vec4 background{0.22f, 0.23f, 0.25f, 1.0f}; // sRGB-encoded, as MeshRenderer
 };
 
+/** A mesh as the compositor uploads it, made off the GL thread (DepthCompositor::prepareMesh). */
+struct CompositorMesh;
+
 /**
  * draw_layers (docs/architecture.md §3 step 4): draws the view from the captured per-pixel fragment
  * lists instead of the geometry, so the picture updates (paint, region order, display mode) without
@@ -93,6 +96,21 @@ public:
      */
     core::Status setMesh(const core::Mesh& geometry, const core::Mesh& look,
                          std::shared_ptr<MaterialTextures> textures);
+    /**
+     * The CPU's share of setMesh(): the triangles packed and split for storage blocks of
+     * blockBytes (storageBlockBytes()), the normals encoded. Needs no GL: any thread may run
+     * it while the compositor draws, so the upload that follows only copies.
+     */
+    static core::Result<std::shared_ptr<const CompositorMesh>>
+    prepareMesh(const core::Mesh& geometry, const core::Mesh& look, std::size_t blockBytes);
+    /** The storage block size prepareMesh() splits the mesh for. */
+    std::size_t storageBlockBytes() const;
+    /**
+     * setMesh() of a mesh prepareMesh() made from geometry and look (with the block size of
+     * storageBlockBytes(), else it is prepared again here): the GL share alone.
+     */
+    core::Status setMesh(const CompositorMesh& prepared, const core::Mesh& geometry,
+                         const core::Mesh& look, std::shared_ptr<MaterialTextures> textures);
     /**
      * The textures the materials sample (with a mesh renderer of the same context, the store
      * both read). Textures are sampled when composing, so painting them (MaterialTextures::

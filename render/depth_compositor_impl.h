@@ -220,6 +220,13 @@ struct DepthCompositor::Impl {
         if (ownTextures)
             textures->release();
     }
+    /** What a new mesh starts with: none drawn, everything made for the old one outdated. */
+    void dropMesh() {
+        hasMesh = false;
+        ++version;
+        ++geometryVersion;
+        releaseTextures();
+    }
 
     /** Pass `pass`'s base colour and metallic-roughness textures, nullptr for none. */
     const PaintTexture* passBaseColor(std::size_t pass) const {

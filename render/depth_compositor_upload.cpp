@@ -263,18 +263,77 @@ std::vector<std::uint32_t> octTangents(const core::Mesh& mesh) {
     return packed;
 }
 
+/** The part's vertices in ascending order, and its triangles renumbered to them. */
+std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, std::size_t vertices,
+                                     const PartPlan& plan, std::vector<std::uint32_t>& used) {
+    const auto begin = packed.begin() + plan.firstTriangle;
+    std::vector<glm::uvec4> local(begin, begin + plan.triangleCount);
+    // The used vertices marked, then numbered in ascending order: no sort of the corners.
+    constexpr std::uint32_t kUsed = core::kNone - 1;
+    std::vector<std::uint32_t> localOf(vertices, core::kNone);
+    for (const glm::uvec4& triangle : local)
+        if (triangle.w != core::kNone)
+            localOf[triangle.x] = localOf[triangle.y] = localOf[triangle.z] = kUsed;
+    for (std::size_t v = 0; v < vertices; ++v)
+        if (localOf[v] == kUsed) {
+            localOf[v] = std::uint32_t(used.size());
+            used.push_back(std::uint32_t(v));
+        }
+    for (glm::uvec4& triangle : local)
+        if (triangle.w != core::kNone)
+            triangle = {localOf[triangle.x], localOf[triangle.y], localOf[triangle.z], triangle.w};
+    return local;
+}
+
+/** The parts: the whole mesh as it is when it fits one storage block, else renumbered runs. */
+struct MeshPlan {
+    std::vector<PartPlan> parts; // empty if not even one triangle fits
+    bool whole = false;
+};
+
+MeshPlan planMeshParts(const std::vector<glm::uvec4>& packed, std::size_t vertices, bool colors,
+                       std::size_t blockBytes) {
+    // The largest vertex element: a colour (vec4) or a position (3 floats).
+    const std::size_t vertexBytes = colors ? sizeof(glm::vec4) : sizeof(glm::vec3);
+    if (packed.size() <= blockBytes / sizeof(glm::uvec4) && vertices <= blockBytes / vertexBytes)
+        return {{{0, std::uint32_t(packed.size())}}, true};
+    return {planParts(packed, vertices, blockBytes, vertexBytes), false};
+}
+
+} // namespace
+
 /**
- * What every part's upload reads: the mesh and its packed triangles, normals and tangents, and
- * the vertex colours.
+ * What DepthCompositor::setMesh() works out before it touches GL: the materials as the shader
+ * reads them, the draw passes, the normals (and tangents) encoded, and the triangles packed
+ * with their materials, whole or split into parts with their own vertices.
  */
+struct CompositorMesh {
+    /** A run of triangles: renumbered to its own vertices (the mesh's of each, ascending). */
+    struct Part {
+        std::uint32_t firstTriangle = 0, triangleCount = 0;
+        std::vector<std::uint32_t> vertices; // empty for the whole mesh
+        std::vector<glm::uvec4> triangles;   // empty for the whole mesh (packed holds them)
+    };
+    std::size_t blockBytes = 0; // the storage block it was split for
+    std::size_t vertices = 0;
+    std::uint32_t triangles = 0;
+    bool hasUvs = false, hasColors = false, hasBlend = false, whole = false;
+    std::vector<GpuMaterial> materials; // as the shader reads them
+    std::vector<int> passImages;        // per draw pass, its mesh texture
+    std::vector<SurfaceMaps> passMaps;  // per draw pass, its maps
+    std::vector<std::uint32_t> normals;
+    std::vector<std::uint32_t> tangents; // empty without normal maps
+    std::vector<glm::uvec4> packed;      // the whole mesh's triangles; empty when split
+    std::vector<Part> parts;
+};
+
+namespace {
+
+/** What every part's upload reads: the prepared mesh, its geometry and vertex colours. */
 struct MeshUpload {
+    const CompositorMesh& prepared;
     const core::Mesh& mesh;
     const std::vector<glm::vec4>& colors;
-    const std::vector<glm::uvec4>& packed;
-    const std::vector<std::uint32_t>& normals;
-    const std::vector<std::uint32_t>& tangents; // empty without normal maps
-    bool hasUvs = false;
-    bool hasColors = false;
     std::size_t limit = 0; // bytes of one storage block
 };
 
@@ -292,34 +351,13 @@ bool uploadTangents(MeshPart& part, const std::vector<std::uint32_t>& tangents, 
 
 /** The whole mesh as one part, its arrays as they are. */
 bool uploadWhole(const MeshUpload& u, MeshPart& part) {
-    return uploadTangents(part, u.tangents, u.limit) &&
-           uploadTo(part, kTriangles, u.packed, true, u.limit) &&
+    const CompositorMesh& p = u.prepared;
+    return uploadTangents(part, p.tangents, u.limit) &&
+           uploadTo(part, kTriangles, p.packed, true, u.limit) &&
            uploadTo(part, kPositions, u.mesh.positions, true, u.limit) &&
-           uploadTo(part, kNormals, u.normals, true, u.limit) &&
-           uploadTo(part, kUvs, u.mesh.uvs, u.hasUvs, u.limit) &&
-           uploadTo(part, kColors, u.colors, u.hasColors, u.limit);
-}
-
-/** The part's vertices in ascending order, and its triangles renumbered to them. */
-std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, std::size_t vertices,
-                                     MeshPart& part) {
-    const auto begin = packed.begin() + part.firstTriangle;
-    std::vector<glm::uvec4> local(begin, begin + part.triangleCount);
-    // The used vertices marked, then numbered in ascending order: no sort of the corners.
-    constexpr std::uint32_t kUsed = core::kNone - 1;
-    std::vector<std::uint32_t> localOf(vertices, core::kNone);
-    for (const glm::uvec4& triangle : local)
-        if (triangle.w != core::kNone)
-            localOf[triangle.x] = localOf[triangle.y] = localOf[triangle.z] = kUsed;
-    for (std::size_t v = 0; v < vertices; ++v)
-        if (localOf[v] == kUsed) {
-            localOf[v] = std::uint32_t(part.vertices.size());
-            part.vertices.push_back(std::uint32_t(v));
-        }
-    for (glm::uvec4& triangle : local)
-        if (triangle.w != core::kNone)
-            triangle = {localOf[triangle.x], localOf[triangle.y], localOf[triangle.z], triangle.w};
-    return local;
+           uploadTo(part, kNormals, p.normals, true, u.limit) &&
+           uploadTo(part, kUvs, u.mesh.uvs, p.hasUvs, u.limit) &&
+           uploadTo(part, kColors, u.colors, p.hasColors, u.limit);
 }
 
 /**
@@ -338,38 +376,24 @@ bool gatherTo(Buffer& buffer, const std::vector<std::uint32_t>& vertices,
 }
 
 /** A run of triangles with its own renumbered copy of the vertices it uses. */
-bool uploadRenumbered(const MeshUpload& u, MeshPart& part) {
-    const std::vector<glm::uvec4> local = renumberPart(u.packed, u.mesh.vertexCount(), part);
-    const std::vector<std::uint32_t>& v = part.vertices;
+bool uploadRenumbered(const MeshUpload& u, const CompositorMesh::Part& prepared, MeshPart& part) {
+    const CompositorMesh& p = u.prepared;
+    const std::vector<std::uint32_t>& v = prepared.vertices;
     const auto buffer = [&](std::size_t binding) -> Buffer& {
         return part.buffers[binding - kTriangles];
     };
-    return gatherTo(part.tangents, v, u.tangents, !u.tangents.empty(), u.limit) &&
-           uploadTo(part, kTriangles, local, true, u.limit) &&
+    part.vertices = v;
+    return gatherTo(part.tangents, v, p.tangents, !p.tangents.empty(), u.limit) &&
+           uploadTo(part, kTriangles, prepared.triangles, true, u.limit) &&
            gatherTo(buffer(kPositions), v, u.mesh.positions, true, u.limit) &&
-           gatherTo(buffer(kNormals), v, u.normals, true, u.limit) &&
-           gatherTo(buffer(kUvs), v, u.mesh.uvs, u.hasUvs, u.limit) &&
-           gatherTo(buffer(kColors), v, u.colors, u.hasColors, u.limit);
+           gatherTo(buffer(kNormals), v, p.normals, true, u.limit) &&
+           gatherTo(buffer(kUvs), v, u.mesh.uvs, p.hasUvs, u.limit) &&
+           gatherTo(buffer(kColors), v, u.colors, p.hasColors, u.limit);
 }
 
-/** The parts: the whole mesh as it is when it fits one storage block, else renumbered runs. */
-struct MeshPlan {
-    std::vector<PartPlan> parts; // empty if not even one triangle fits
-    bool whole = false;
-};
-
-MeshPlan planMeshParts(const std::vector<glm::uvec4>& packed, std::size_t vertices, bool colors,
-                       std::size_t blockBytes) {
-    // The largest vertex element: a colour (vec4) or a position (3 floats).
-    const std::size_t vertexBytes = colors ? sizeof(glm::vec4) : sizeof(glm::vec3);
-    if (packed.size() <= blockBytes / sizeof(glm::uvec4) && vertices <= blockBytes / vertexBytes)
-        return {{{0, std::uint32_t(packed.size())}}, true};
-    return {planParts(packed, vertices, blockBytes, vertexBytes), false};
-}
-
-/** Uploads every part of plan (parts beyond it are freed; the others keep their buffers). */
-bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<MeshPart>& parts) {
-    const std::vector<PartPlan>& plan = meshPlan.parts;
+/** Uploads every prepared part (parts beyond them are freed; the others keep their buffers). */
+bool uploadMeshParts(const MeshUpload& u, std::vector<MeshPart>& parts) {
+    const std::vector<CompositorMesh::Part>& plan = u.prepared.parts;
     for (std::size_t i = plan.size(); i < parts.size(); ++i) {
         for (Buffer& buffer : parts[i].buffers)
             buffer.free();
@@ -381,14 +405,58 @@ bool uploadMeshParts(const MeshUpload& u, const MeshPlan& meshPlan, std::vector<
         part.firstTriangle = plan[i].firstTriangle;
         part.triangleCount = plan[i].triangleCount;
         part.vertices.clear();
-        part.renumbered = !meshPlan.whole;
-        if (!(meshPlan.whole ? uploadWhole(u, part) : uploadRenumbered(u, part)))
+        part.renumbered = !u.prepared.whole;
+        if (!(u.prepared.whole ? uploadWhole(u, part) : uploadRenumbered(u, plan[i], part)))
             return false;
     }
     return true;
 }
 
 } // namespace
+
+std::size_t DepthCompositor::storageBlockBytes() const {
+    return m_impl->planBytes();
+}
+
+core::Result<std::shared_ptr<const CompositorMesh>>
+DepthCompositor::prepareMesh(const core::Mesh& mesh, const core::Mesh& look,
+                             std::size_t blockBytes) {
+    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
+    if (look.materials.size() > blockBytes / sizeof(GpuMaterial))
+        return tooLarge("the mesh's materials");
+    if (triangles > core::kNone - 1)
+        return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
+    auto out = std::make_shared<CompositorMesh>();
+    out->blockBytes = blockBytes;
+    out->vertices = vertices;
+    out->triangles = std::uint32_t(triangles);
+    std::vector<glm::uvec4> packed = packTriangles(mesh, look.materials.size());
+    out->hasUvs = mesh.uvs.size() == vertices && vertices > 0;
+    TexturePasses passes = planTexturePasses(look, out->hasUvs);
+    out->normals = octNormals(mesh);
+    out->hasColors = look.colors.size() == vertices && vertices > 0;
+    if (out->hasUvs && needsTangents(passes))
+        out->tangents = octTangents(mesh);
+    out->materials = std::move(passes.materials);
+    out->passImages = std::move(passes.images);
+    out->passMaps = std::move(passes.maps);
+    out->hasBlend =
+        std::any_of(look.materials.begin(), look.materials.end(),
+                    [](const core::Material& m) { return m.alphaMode == core::AlphaMode::Blend; });
+    const MeshPlan plan = planMeshParts(packed, vertices, out->hasColors, blockBytes);
+    if (plan.parts.empty())
+        return tooLarge("one triangle's vertices");
+    out->whole = plan.whole;
+    for (const PartPlan& run : plan.parts) {
+        CompositorMesh::Part part{run.firstTriangle, run.triangleCount, {}, {}};
+        if (!plan.whole)
+            part.triangles = renumberPart(packed, vertices, run, part.vertices);
+        out->parts.push_back(std::move(part));
+    }
+    if (plan.whole)
+        out->packed = std::move(packed);
+    return std::shared_ptr<const CompositorMesh>(std::move(out));
+}
 
 core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
                                       std::shared_ptr<MaterialTextures> textures) {
@@ -397,46 +465,42 @@ core::Status DepthCompositor::setMesh(const core::Mesh& mesh,
 
 core::Status DepthCompositor::setMesh(const core::Mesh& mesh, const core::Mesh& look,
                                       std::shared_ptr<MaterialTextures> textures) {
+    auto prepared = prepareMesh(mesh, look, storageBlockBytes());
+    if (!prepared) {
+        m_impl->dropMesh();
+        return prepared.takeError();
+    }
+    return setMesh(**prepared, mesh, look, std::move(textures));
+}
+
+core::Status DepthCompositor::setMesh(const CompositorMesh& prepared, const core::Mesh& mesh,
+                                      const core::Mesh& look,
+                                      std::shared_ptr<MaterialTextures> textures) {
     Impl& d = *m_impl;
-    d.hasMesh = false;
-    ++d.version;
-    ++d.geometryVersion;
-    d.releaseTextures();
+    if (prepared.blockBytes != d.planBytes())
+        return setMesh(mesh, look, std::move(textures)); // split for another block size
+    d.dropMesh();
     d.ownTextures = textures == nullptr;
     d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
-    const std::size_t vertices = mesh.vertexCount(), triangles = mesh.triangleCount();
-    if (!d.fits(look.materials.size(), sizeof(GpuMaterial)))
-        return tooLarge("the mesh's materials");
-    if (triangles > core::kNone - 1)
-        return core::Error{"layer compositor: the mesh has more than 2^32 - 2 triangles"};
-
-    const std::vector<glm::uvec4> packed = packTriangles(mesh, look.materials.size());
-    d.hasUvs = mesh.uvs.size() == vertices && vertices > 0;
-    TexturePasses passes = planTexturePasses(look, d.hasUvs);
-    const std::vector<std::uint32_t> normals = octNormals(mesh);
-    d.hasColors = look.colors.size() == vertices && vertices > 0;
-    const std::vector<std::uint32_t> tangents =
-        d.hasUvs && needsTangents(passes) ? octTangents(mesh) : std::vector<std::uint32_t>();
-    d.hasTangents = !tangents.empty();
-    d.hasBlend =
-        std::any_of(look.materials.begin(), look.materials.end(),
-                    [](const core::Material& m) { return m.alphaMode == core::AlphaMode::Blend; });
-    const MeshPlan plan = planMeshParts(packed, vertices, d.hasColors, d.planBytes());
-    if (plan.parts.empty())
-        return tooLarge("one triangle's vertices");
-    const MeshUpload upload{mesh,     look.colors, packed,      normals,
-                            tangents, d.hasUvs,    d.hasColors, d.maxBlockBytes};
-    if (!d.buffers[kMaterials].upload(passes.materials, d.maxBlockBytes) ||
-        !uploadMeshParts(upload, plan, d.meshParts)) {
+    if (prepared.vertices != mesh.vertexCount() || prepared.triangles != mesh.triangleCount() ||
+        prepared.materials.size() != look.materials.size())
+        return core::Error{"layer compositor: the prepared mesh is another mesh's"};
+    d.hasUvs = prepared.hasUvs;
+    d.hasColors = prepared.hasColors;
+    d.hasTangents = !prepared.tangents.empty();
+    d.hasBlend = prepared.hasBlend;
+    const MeshUpload upload{prepared, mesh, look.colors, d.maxBlockBytes};
+    if (!d.buffers[kMaterials].upload(prepared.materials, d.maxBlockBytes) ||
+        !uploadMeshParts(upload, d.meshParts)) {
         d.meshParts.clear();
         return outOfMemory("the mesh (open a model with fewer triangles)");
     }
     if (d.ownTextures)
         d.textures->create(look.textures);
-    d.passTexture = std::move(passes.images);
-    d.passMaps = std::move(passes.maps);
-    d.vertexCount = vertices;
-    d.triangleCount = std::uint32_t(triangles);
+    d.passTexture = prepared.passImages;
+    d.passMaps = prepared.passMaps;
+    d.vertexCount = prepared.vertices;
+    d.triangleCount = prepared.triangles;
     d.hasMesh = true;
     return {};
 }

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -141,6 +142,47 @@ TEST_F(StorageSplitGlTest, CompositorMeshPartsDrawTheSamePicture) {
             EXPECT_EQ(differingBytes(painted, draw(m_split, layers, options)), 0u);
         }
     }
+}
+
+TEST_F(StorageSplitGlTest, AMeshPreparedOnAnotherThreadDrawsTheSamePicture) {
+    for (const Scene& scene : scenes()) {
+        SCOPED_TRACE(scene.name);
+        const core::DepthLayers layers = captureDepthLayers(scene.mesh, scene.view);
+        m_split.setStorageBlockCap(scene.block);
+        // The CPU's share away from the GL thread, as the view does for a new model.
+        core::Result<std::shared_ptr<const render::CompositorMesh>> prepared =
+            core::Error{"not run"};
+        std::thread worker([&] {
+            prepared = render::DepthCompositor::prepareMesh(scene.mesh, scene.mesh,
+                                                            m_split.storageBlockBytes());
+        });
+        worker.join();
+        ASSERT_TRUE(prepared) << prepared.error();
+        core::Status status = m_split.setMesh(**prepared, scene.mesh, scene.mesh, nullptr);
+        ASSERT_TRUE(status) << status.error();
+        EXPECT_GE(m_split.meshPartCount(), 2u);
+        status = m_whole.setMesh(scene.mesh);
+        ASSERT_TRUE(status) << status.error();
+        for (render::DepthCompositor* compositor : {&m_whole, &m_split}) {
+            compositor->setStorageBlockCap(0);
+            status = compositor->setDepthLayers(layers);
+            ASSERT_TRUE(status) << status.error();
+        }
+        const render::CompositeOptions options;
+        EXPECT_EQ(differingBytes(draw(m_whole, layers, options), draw(m_split, layers, options)),
+                  0u);
+
+        // Prepared for another block size: prepared again for this one, whole here.
+        status = m_whole.setMesh(**prepared, scene.mesh, scene.mesh, nullptr);
+        ASSERT_TRUE(status) << status.error();
+        EXPECT_EQ(m_whole.meshPartCount(), 1u);
+    }
+    // Another mesh's preparation is refused.
+    const core::Mesh trefoil = core::makeTrefoil(), hexring = core::makeHexRing();
+    auto prepared =
+        render::DepthCompositor::prepareMesh(hexring, hexring, m_whole.storageBlockBytes());
+    ASSERT_TRUE(prepared) << prepared.error();
+    EXPECT_FALSE(m_whole.setMesh(**prepared, trefoil, trefoil, nullptr));
 }
 
 TEST_F(StorageSplitGlTest, CompositorShadesAsManyFragmentsAsItsFragmentArraysHold) {

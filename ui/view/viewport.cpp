@@ -20,6 +20,7 @@
 #include "render/brush_overlay.h"
 #include "render/gl_depth_capturer.h"
 #include "render/mesh_renderer.h"
+#include "ui/shell/compositor_mesh_job.h"
 #include "ui/shell/stand_in_job.h"
 
 namespace ui {
@@ -64,6 +65,8 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
         app->installEventFilter(this);
     m_standInJob = new StandInJob(this);
     connect(m_standInJob, &StandInJob::finished, this, &Viewport::standInMade);
+    m_compositorJob = new CompositorMeshJob(this);
+    connect(m_compositorJob, &CompositorMeshJob::finished, this, &Viewport::compositorMeshPrepared);
     m_wheelRest.setSingleShot(true);
     m_wheelRest.setInterval(300);
     connect(&m_wheelRest, &QTimer::timeout, this, qOverload<>(&Viewport::update));
@@ -400,6 +403,8 @@ void Viewport::showLayers() {
         return;
     makeCurrent();
     uploadMeshIfDirty();
+    if (m_compositorJob->isPending())
+        installCompositorMesh(); // not yet there: waits for it
     const core::Status status =
         m_compositorHasMesh ? m_compositor->setDepthLayers(*layers) : core::Status::success();
     doneCurrent();
@@ -571,11 +576,11 @@ void Viewport::uploadMeshIfDirty() {
     if (m_meshDirty && m_capturer)
         m_capturer->setMesh(m_document.mesh());
     // The target's look over its mesh's geometry, which is not copied.
-    core::Mesh painted;
-    if (target)
-        painted = target->paintedLook();
-    const core::Mesh& mesh = target ? target->mesh() : m_document.mesh();
-    const core::Mesh& look = target ? painted : mesh;
+    const std::shared_ptr<const core::Mesh> geometry =
+        target ? target->sharedMesh() : m_document.sharedMesh();
+    const std::shared_ptr<const core::Mesh> lookOf =
+        target ? std::make_shared<const core::Mesh>(target->paintedLook()) : geometry;
+    const core::Mesh &mesh = *geometry, &look = *lookOf;
     m_shownTarget = target;
     // Both renderers light with the metallic-roughness pages, so the view keeps its colours
     // while the camera moves.
@@ -585,18 +590,49 @@ void Viewport::uploadMeshIfDirty() {
     m_renderer->setMesh(mesh, look, m_textures, m_document.topology().shownBackFaces);
     m_pendingPaint.clear();
     m_compositorHasMesh = false;
-    if (m_compositor) {
-        const core::Status status = m_compositor->setMesh(mesh, look, m_textures);
-        m_compositorHasMesh = status.ok();
-        if (!status)
-            reportDepthLayerError(status);
-    }
+    if (m_compositor)
+        sendMeshToCompositor(geometry, lookOf, m_meshDirty);
     m_depthLayersShown = m_depthLayersShown && m_compositorHasMesh;
     m_meshDirty = false;
     m_paintedMeshDirty = false;
     m_standInDirty = true;             // setMesh dropped it
     m_maskViewDirty = m_maskView != 0; // the textures are the composite's again
     ++m_meshUploads;
+}
+
+void Viewport::sendMeshToCompositor(std::shared_ptr<const core::Mesh> geometry,
+                                    std::shared_ptr<const core::Mesh> look, bool newGeometry) {
+    // A new model's share is prepared in the background: the compositor draws only once the
+    // model's depth layers are built, and showLayers() waits for it should it not be there yet.
+    if (newGeometry) {
+        m_compositorJob->start(std::move(geometry), std::move(look),
+                               m_compositor->storageBlockBytes());
+        return;
+    }
+    m_compositorJob->cancel();
+    const core::Status status = m_compositor->setMesh(*geometry, *look, m_textures);
+    m_compositorHasMesh = status.ok();
+    if (!status)
+        reportDepthLayerError(status);
+}
+
+void Viewport::installCompositorMesh() {
+    const std::shared_ptr<const PreparedCompositorMesh> result = m_compositorJob->take();
+    if (!result || !m_compositor)
+        return;
+    const core::Status status =
+        result->prepared
+            ? m_compositor->setMesh(*result->prepared, *result->geometry, *result->look, m_textures)
+            : core::Status(core::Error{result->error});
+    m_compositorHasMesh = status.ok();
+    if (!status)
+        reportDepthLayerError(status);
+}
+
+void Viewport::compositorMeshPrepared() {
+    makeCurrent();
+    installCompositorMesh();
+    doneCurrent();
 }
 
 void Viewport::reportDepthLayerError(const core::Status& status) {

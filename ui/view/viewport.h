@@ -38,6 +38,7 @@ class MeshRenderer;
 namespace ui {
 
 class StandInJob;
+class CompositorMeshJob;
 
 /**
  * Which buttons move the camera (Preferences). Both, the default, offers the Blender-like and
@@ -284,6 +285,12 @@ private:
     void updateHoverHighlight();
     void invalidateView();
     void uploadMeshIfDirty();
+    /** The compositor's copy of the mesh: a new geometry's prepared in the background. */
+    void sendMeshToCompositor(std::shared_ptr<const core::Mesh> geometry,
+                              std::shared_ptr<const core::Mesh> look, bool newGeometry);
+    /** Uploads the prepared compositor mesh, waiting for it if need be (context current). */
+    void installCompositorMesh();
+    void compositorMeshPrepared();
     // The stand-in (viewport_stand_in.cpp).
     void startStandIn();
     void standInMade(std::shared_ptr<const core::StandIn> standIn, std::uint64_t meshSerial);
@@ -364,6 +371,7 @@ private:
     static constexpr std::size_t kStandInTriangles = 250'000;
     std::size_t m_standInTriangles = kStandInTriangles;
     StandInJob* m_standInJob = nullptr;
+    CompositorMeshJob* m_compositorJob = nullptr;
     std::shared_ptr<const core::StandIn> m_standIn;
     std::uint64_t m_standInSerial = 0;
     bool m_standInDirty = false;

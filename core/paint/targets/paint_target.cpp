@@ -147,6 +147,10 @@ const Mesh& PaintTarget::mesh() const {
     return *m_context->mesh;
 }
 
+std::shared_ptr<const Mesh> PaintTarget::sharedMesh() const {
+    return m_context->mesh;
+}
+
 Status PaintTarget::checkMesh(const std::shared_ptr<const Mesh>& mesh,
                               std::shared_ptr<const MeshTopology>& topology) {
     if (!mesh)

@@ -146,6 +146,7 @@ public:
 
     virtual PaintTargetKind kind() const = 0;
     const Mesh& mesh() const;
+    std::shared_ptr<const Mesh> sharedMesh() const;
 
     /**
      * Makes now what the first stroke would make of the projection context (per vertex and per

@@ -352,6 +352,22 @@ TEST(Material, PaintedRoughnessIsSavedAsTheMapWithFactorsOne) {
         EXPECT_EQ(painted.textureSource(mat.metallicRoughness.texture), nullptr);
     }
     EXPECT_TRUE(any) << "the stroke painted no roughness";
+
+    // The view draws the same look beside the target's geometry, which it does not copy.
+    const core::Mesh look = doc.paintTarget()->paintedLook();
+    EXPECT_TRUE(look.positions.empty() && look.normals.empty() && look.indices.empty());
+    ASSERT_EQ(look.materials.size(), painted.materials.size());
+    for (std::size_t m = 0; m < look.materials.size(); ++m) {
+        EXPECT_EQ(look.materials[m].baseColorTexture, painted.materials[m].baseColorTexture);
+        EXPECT_EQ(look.materials[m].metallicRoughness.texture,
+                  painted.materials[m].metallicRoughness.texture);
+        EXPECT_EQ(look.materials[m].roughnessFactor, painted.materials[m].roughnessFactor);
+    }
+    ASSERT_EQ(look.textures.size(), painted.textures.size());
+    for (std::size_t t = 0; t < look.textures.size(); ++t)
+        EXPECT_TRUE(look.textures[t].rgba == painted.textures[t].rgba) << t;
+    EXPECT_EQ(look.textureSources.size(), painted.textureSources.size());
+    EXPECT_EQ(look.colors, painted.colors);
 }
 
 TEST(Material, ObjExportKeepsTheMapsAssimpReadsBack) {
