@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The compositor's uploads: the mesh (vertices, triangles, materials, textures), one build's
-// fragments and segmentation, the region order, and painting's texel and vertex colour updates.
+// The compositor's uploads: the mesh (vertices, triangles, materials, textures; its CPU share,
+// prepareMesh(), on any thread), one build's fragments and segmentation, the region order, and
+// painting's texel and vertex colour updates.
 #include "render/depth_compositor.h"
 
 #include <algorithm>
