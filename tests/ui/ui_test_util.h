@@ -41,7 +41,6 @@ void onNextModal(std::function<void(T*)> act, std::function<bool(T*)> accept = {
     timer->start();
 }
 
-/** The title as shown (windowTitle() keeps the "[*]" unsaved-changes placeholder). */
 /** The application's freeze after which queued presses are dropped, set for one scope. */
 class BusyInputMs {
 public:
@@ -65,6 +64,7 @@ private:
     double m_before = 0.0;
 };
 
+/** The title as shown (windowTitle() keeps the "[*]" unsaved-changes placeholder). */
 inline QString shownTitle(const QWidget& window) {
     return window.windowHandle() ? window.windowHandle()->title() : QString();
 }

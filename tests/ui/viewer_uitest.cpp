@@ -567,26 +567,46 @@ protected:
     void mouseReleaseEvent(QMouseEvent* e) override { events.push_back(e->type()); }
 };
 
+/** A mouse event as the window system gives it: at p of the widget, with the buttons held after. */
+struct QueuedMouse {
+    QEvent::Type type;
+    QPoint p;
+    Qt::MouseButton button = Qt::LeftButton; // NoButton for a move
+    Qt::MouseButtons held = Qt::LeftButton;
+};
+
+/** Queues events for widget from another thread, as the window system's reader does. */
+void queueFromAnotherThread(QWidget& widget, const std::vector<QueuedMouse>& events) {
+    QWindow* window = widget.window()->windowHandle();
+    std::vector<std::pair<QPointF, QPointF>> points; // in the window, on the screen
+    for (const QueuedMouse& e : events)
+        points.emplace_back(widget.mapTo(widget.window(), QPointF(e.p)),
+                            widget.mapToGlobal(QPointF(e.p)));
+    std::thread reader([&] {
+        using Input = QWindowSystemInterface;
+        for (std::size_t i = 0; i < events.size(); ++i)
+            Input::handleMouseEvent<Input::AsynchronousDelivery>(window, points[i].first,
+                                                                 points[i].second, events[i].held,
+                                                                 events[i].button, events[i].type);
+    });
+    reader.join();
+}
+
 /**
- * Queues mouse events for widget from another thread, as the window system's reader does: a
- * press at p, a move 10 px right (a move in place is no event), a release there.
+ * Queues left-button events for widget from another thread: a press at p, a move 10 px right
+ * (a move in place is no event), a release there.
  */
 void queueMouseFromAnotherThread(QWidget& widget, const std::vector<QEvent::Type>& types,
                                  QPoint p) {
-    QWindow* window = widget.window()->windowHandle();
-    std::thread reader([&] {
-        using Input = QWindowSystemInterface;
-        for (const QEvent::Type type : types) {
-            const QPointF at =
-                QPointF(p) + (type == QEvent::MouseButtonPress ? 0.0 : 10.0) * QPointF(1, 0);
-            const Qt::MouseButtons held =
-                type == QEvent::MouseButtonRelease ? Qt::NoButton : Qt::LeftButton;
-            Input::handleMouseEvent<Input::AsynchronousDelivery>(
-                window, widget.mapTo(widget.window(), at), widget.mapToGlobal(at), held,
-                type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton, type);
-        }
-    });
-    reader.join();
+    std::vector<QueuedMouse> events;
+    for (const QEvent::Type type : types) {
+        const bool press = type == QEvent::MouseButtonPress;
+        const bool release = type == QEvent::MouseButtonRelease;
+        events.push_back({type, press ? p : p + QPoint(10, 0),
+                          type == QEvent::MouseMove ? Qt::NoButton : Qt::LeftButton,
+                          release ? Qt::NoButton : Qt::LeftButton});
+    }
+    queueFromAnotherThread(widget, events);
 }
 
 /** An object that, given a User event, runs its work and then keeps the GUI thread busyMs. */
@@ -638,6 +658,33 @@ TEST(StallMeterTest, APressGivenWhileFrozenIsDroppedWithItsDragAndAStrokeBegunBe
     freezeWhileGiving(300, {E::MouseMove, E::MouseButtonRelease}, {120, 120});
     EXPECT_EQ(widget.events,
               (std::vector<E::Type>{E::MouseButtonPress, E::MouseMove, E::MouseButtonRelease}));
+    // Another button pressed during a freeze while such a drag goes on belongs to the drag:
+    // its press, its release and the drag's release all arrive, nothing is left held.
+    widget.events.clear();
+    queueMouseFromAnotherThread(widget, {E::MouseButtonPress}, {150, 40});
+    QTest::qWait(50);
+    const Qt::MouseButtons both = Qt::LeftButton | Qt::RightButton;
+    BusyReceiver busy(300, [&] {
+        queueFromAnotherThread(widget,
+                               {{E::MouseButtonPress, {150, 40}, Qt::RightButton, both},
+                                {E::MouseButtonRelease, {150, 40}, Qt::RightButton, Qt::LeftButton},
+                                {E::MouseButtonRelease, {150, 40}, Qt::LeftButton, Qt::NoButton}});
+    });
+    QCoreApplication::postEvent(&busy, new QEvent(QEvent::User));
+    QTest::qWait(400);
+    EXPECT_EQ(widget.events, (std::vector<E::Type>{E::MouseButtonPress, E::MouseButtonPress,
+                                                   E::MouseButtonRelease, E::MouseButtonRelease}));
+    // A hover move after a dropped press whose release went elsewhere arrives again.
+    widget.setMouseTracking(true);
+    freezeWhileGiving(300, {E::MouseButtonPress}, {30, 150});
+    widget.events.clear();
+    queueFromAnotherThread(widget, {{E::MouseMove, {40, 160}, Qt::NoButton, Qt::NoButton}});
+    QTest::qWait(50);
+    EXPECT_EQ(widget.events, (std::vector<E::Type>{E::MouseMove}));
+    // The window system's button state back to none for the tests that follow.
+    queueFromAnotherThread(widget,
+                           {{E::MouseButtonRelease, {40, 160}, Qt::LeftButton, Qt::NoButton}});
+    QTest::qWait(50);
 }
 
 TEST(ModelLoaderTest, CancelAndSupersede) {

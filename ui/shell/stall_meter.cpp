@@ -15,7 +15,11 @@ namespace ui {
 
 namespace {
 constexpr std::size_t kMaxKept = 1000; // stalls() keeps the first ones; the log has them all
-constexpr int kMaxDrainRounds = 64;    // event-loop rounds handling what was queued, at most
+// What was queued during a freeze arrives within a few event-loop rounds (the window system's
+// queue is read, then its events sent); a batch of them is run again, up to a limit, while an
+// event in it froze the window again.
+constexpr int kDrainRounds = 4;
+constexpr int kMaxDrainBatches = 16;
 } // namespace
 
 MeteredApplication::MeteredApplication(int& argc, char** argv) : QApplication(argc, argv) {
@@ -65,10 +69,8 @@ bool MeteredApplication::notify(QObject* receiver, QEvent* event) {
         record(ms, receiver, event);
     m_busy = m_busy || ms >= m_busyInputMs;
     // Once the outermost event is done, so no widget is half-way through painting.
-    if (m_frames.empty() && m_busy && !m_dropping) {
-        m_busy = false;
+    if (m_frames.empty() && m_busy && !m_dropping)
         dropQueuedInput();
-    }
     return handled;
 }
 
@@ -94,32 +96,37 @@ bool MeteredApplication::dropsInput(const QObject* receiver, const QEvent* event
                       type == QEvent::TabletMove || type == QEvent::TabletRelease;
     if ((!press && !rest) || !isGuarded(receiver))
         return false;
+    const auto* pointer = static_cast<const QSinglePointEvent*>(event);
     if (press) {
-        // A press given while the window was frozen, and everything up to its release.
-        m_swallowing = m_dropping;
-        return m_dropping;
+        // A press given while the window was frozen, and everything up to its release; a
+        // press of another button during a stroke begun before goes to that stroke.
+        if (!m_swallowing)
+            m_swallowing = m_dropping && pointer->buttons() == pointer->button();
+        return m_swallowing;
     }
     if (!m_swallowing)
         return false; // a stroke begun before goes on with what was given meanwhile
-    const bool released = type == QEvent::MouseButtonRelease || type == QEvent::TabletRelease;
-    if (released && static_cast<const QSinglePointEvent*>(event)->buttons() == Qt::NoButton)
-        m_swallowing = false;
-    return true;
+    if (pointer->buttons() != Qt::NoButton)
+        return true;
+    // Its last release, dropped; or a move with no button held, its release having gone
+    // elsewhere: the swallowing ends either way.
+    m_swallowing = false;
+    return type == QEvent::MouseButtonRelease || type == QEvent::TabletRelease;
 }
 
 void MeteredApplication::dropQueuedInput() {
     // The window system's queue is read on its own thread while this one is busy, so what was
-    // given meanwhile is waiting now: handled here until nothing is left, the presses for the
-    // guarded widgets dropped. Input given while this runs goes the same way.
+    // given meanwhile is waiting now: handled here, the presses for the guarded widgets dropped.
     m_dropping = true;
     const std::size_t before = m_droppedInput;
     QAbstractEventDispatcher* dispatcher = QAbstractEventDispatcher::instance(thread());
-    for (int round = 0;
-         dispatcher && round < kMaxDrainRounds && dispatcher->processEvents(QEventLoop::AllEvents);
-         ++round) {
+    for (int batch = 0; dispatcher && m_busy && batch < kMaxDrainBatches; ++batch) {
+        m_busy = false;
+        for (int round = 0;
+             round < kDrainRounds && dispatcher->processEvents(QEventLoop::AllEvents); ++round) {
+        }
     }
     m_dropping = false;
-    m_busy = false; // what kept it busy meanwhile has been drained too
     if (m_log && m_thresholdMs >= 0.0 && m_droppedInput > before)
         std::fprintf(stderr, "layerpaint: %zu mouse or pen events given while busy dropped\n",
                      m_droppedInput - before);

@@ -30,7 +30,7 @@ struct Stall {
  * "layerpaint: stall 2412 ms at 1765111234.503: Paint to ui::Viewport" (when it began, as Unix
  * time in seconds). Time spent in events handled inside it
  * (a dialog's own loop, processEvents()) and waiting in such a nested loop is not its own. The
- * GUI reads the threshold from LAYERPAINT_STALL_MS; below 0 (the default) nothing is measured.
+ * GUI reads the threshold from LAYERPAINT_STALL_MS; below 0 (the default) no stall is recorded.
  *
  * Input given while the window did not answer is not trusted: after an event that kept the GUI
  * thread busyInputMs() or longer, the input already waiting is handled at once, and a mouse or
