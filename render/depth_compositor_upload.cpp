@@ -264,14 +264,18 @@ std::vector<std::uint32_t> octTangents(const core::Mesh& mesh) {
     return packed;
 }
 
-/** The part's vertices in ascending order, and its triangles renumbered to them. */
+/**
+ * The part's vertices in ascending order, and its triangles renumbered to them; localOf is
+ * scratch (a word a mesh vertex), kept by the caller from part to part.
+ */
 std::vector<glm::uvec4> renumberPart(const std::vector<glm::uvec4>& packed, std::size_t vertices,
-                                     const PartPlan& plan, std::vector<std::uint32_t>& used) {
+                                     const PartPlan& plan, std::vector<std::uint32_t>& used,
+                                     std::vector<std::uint32_t>& localOf) {
     const auto begin = packed.begin() + plan.firstTriangle;
     std::vector<glm::uvec4> local(begin, begin + plan.triangleCount);
     // The used vertices marked, then numbered in ascending order: no sort of the corners.
     constexpr std::uint32_t kUsed = core::kNone - 1;
-    std::vector<std::uint32_t> localOf(vertices, core::kNone);
+    localOf.assign(vertices, core::kNone);
     for (const glm::uvec4& triangle : local)
         if (triangle.w != core::kNone)
             localOf[triangle.x] = localOf[triangle.y] = localOf[triangle.z] = kUsed;
@@ -448,10 +452,11 @@ DepthCompositor::prepareMesh(const core::Mesh& mesh, const core::Mesh& look,
     if (plan.parts.empty())
         return tooLarge("one triangle's vertices");
     out->whole = plan.whole;
+    std::vector<std::uint32_t> localOf;
     for (const PartPlan& run : plan.parts) {
         CompositorMesh::Part part{run.firstTriangle, run.triangleCount, {}, {}};
         if (!plan.whole)
-            part.triangles = renumberPart(packed, vertices, run, part.vertices);
+            part.triangles = renumberPart(packed, vertices, run, part.vertices, localOf);
         out->parts.push_back(std::move(part));
     }
     if (plan.whole)

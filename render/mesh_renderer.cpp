@@ -260,9 +260,10 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
     setMesh(mesh, mesh, std::move(textures), shownBackFaces);
 }
 
-void MeshRenderer::setMesh(const core::Mesh& mesh, const core::Mesh& look,
+void MeshRenderer::setMesh(const core::Mesh& geometry, const core::Mesh& look,
                            std::shared_ptr<MaterialTextures> textures,
                            std::span<const std::uint32_t> shownBackFaces) {
+    const core::Mesh& mesh = geometry;
     Impl& d = *m_impl;
     d.releaseMesh();
 
@@ -271,13 +272,16 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, const core::Mesh& look,
     const auto vertexBytes = GLsizeiptr(d.vertexCount * sizeof(Vertex));
     glCreateBuffers(1, &d.vbo);
     glNamedBufferStorage(d.vbo, vertexBytes, nullptr, GL_MAP_WRITE_BIT);
-    if (auto* vertices = static_cast<Vertex*>(glMapNamedBufferRange(
-            d.vbo, 0, vertexBytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT))) {
-        for (std::size_t i = 0; i < d.vertexCount; ++i)
-            vertices[i] = {mesh.positions[i], mesh.normals[i],
-                           mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
-        glUnmapNamedBuffer(d.vbo);
+    auto* vertices = static_cast<Vertex*>(glMapNamedBufferRange(
+        d.vbo, 0, vertexBytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
+    if (!vertices) {
+        d.releaseMesh(); // no GL memory for it: nothing drawn
+        return;
     }
+    for (std::size_t i = 0; i < d.vertexCount; ++i)
+        vertices[i] = {mesh.positions[i], mesh.normals[i],
+                       mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
+    glUnmapNamedBuffer(d.vbo);
     // Vertex colours only where the mesh has them (painting vertex colours gives them): a
     // buffer of white would cost 16 bytes a vertex for nothing.
     if (look.colors.size() == d.vertexCount && d.vertexCount > 0) {

@@ -146,6 +146,7 @@ public:
 
     virtual PaintTargetKind kind() const = 0;
     const Mesh& mesh() const;
+    /** mesh(), shared: to keep it for work off the GUI thread. */
     std::shared_ptr<const Mesh> sharedMesh() const;
 
     /**
