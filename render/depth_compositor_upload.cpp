@@ -342,9 +342,14 @@ struct MeshUpload {
     std::size_t limit = 0; // bytes of one storage block
 };
 
+/** The part's buffer at binding (kTriangles and after). */
+Buffer& bufferAt(MeshPart& part, std::size_t binding) {
+    return part.buffers[binding - kTriangles];
+}
+
 bool uploadTo(MeshPart& part, std::size_t binding, const auto& values, bool present,
               std::size_t limit) {
-    Buffer& buffer = part.buffers[binding - kTriangles];
+    Buffer& buffer = bufferAt(part, binding);
     return present ? buffer.upload(values, limit) : buffer.upload(nullptr, 0, limit);
 }
 
@@ -384,16 +389,13 @@ bool gatherTo(Buffer& buffer, const std::vector<std::uint32_t>& vertices,
 bool uploadRenumbered(const MeshUpload& u, const CompositorMesh::Part& prepared, MeshPart& part) {
     const CompositorMesh& p = u.prepared;
     const std::vector<std::uint32_t>& v = prepared.vertices;
-    const auto buffer = [&](std::size_t binding) -> Buffer& {
-        return part.buffers[binding - kTriangles];
-    };
     part.vertices = v;
     return gatherTo(part.tangents, v, p.tangents, !p.tangents.empty(), u.limit) &&
            uploadTo(part, kTriangles, prepared.triangles, true, u.limit) &&
-           gatherTo(buffer(kPositions), v, u.mesh.positions, true, u.limit) &&
-           gatherTo(buffer(kNormals), v, p.normals, true, u.limit) &&
-           gatherTo(buffer(kUvs), v, u.mesh.uvs, p.hasUvs, u.limit) &&
-           gatherTo(buffer(kColors), v, u.colors, p.hasColors, u.limit);
+           gatherTo(bufferAt(part, kPositions), v, u.mesh.positions, true, u.limit) &&
+           gatherTo(bufferAt(part, kNormals), v, p.normals, true, u.limit) &&
+           gatherTo(bufferAt(part, kUvs), v, u.mesh.uvs, p.hasUvs, u.limit) &&
+           gatherTo(bufferAt(part, kColors), v, u.colors, p.hasColors, u.limit);
 }
 
 /** Uploads every prepared part (parts beyond them are freed; the others keep their buffers). */
