@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -268,11 +269,18 @@ core::Status DepthCapture::initialize() {
 }
 
 void DepthCapture::setMesh(const core::Mesh& mesh) {
+    if (const std::function<void()> fill = beginMesh(mesh)) {
+        fill();
+        finishMesh();
+    }
+}
+
+std::function<void()> DepthCapture::beginMesh(const core::Mesh& mesh) {
     Impl& d = *m_impl;
     d.releaseMesh();
     const std::size_t triangles = mesh.triangleCount();
     if (triangles == 0 || triangles > std::size_t(std::numeric_limits<GLsizei>::max() / 3))
-        return;
+        return {};
     // Written straight into the buffer: no copy of the soup is kept or made on the CPU.
     const std::size_t corners = triangles * 3;
     const auto bytes = GLsizeiptr(corners * sizeof(glm::vec3));
@@ -282,13 +290,26 @@ void DepthCapture::setMesh(const core::Mesh& mesh) {
         d.positions, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
     if (!soup) {
         d.releaseMesh();
+        return {};
+    }
+    d.pendingVertices = corners;
+    return [&mesh, soup, corners] {
+        for (std::size_t i = 0; i < corners; ++i) {
+            const std::uint32_t v = mesh.indices[i];
+            soup[i] = v < mesh.positions.size() ? mesh.positions[v] : glm::vec3(0.0f);
+        }
+    };
+}
+
+void DepthCapture::finishMesh() {
+    Impl& d = *m_impl;
+    if (!d.pendingVertices)
+        return;
+    const std::size_t corners = std::exchange(d.pendingVertices, 0);
+    if (glUnmapNamedBuffer(d.positions) != GL_TRUE) {
+        d.releaseMesh(); // the soup was lost
         return;
     }
-    for (std::size_t i = 0; i < corners; ++i) {
-        const std::uint32_t v = mesh.indices[i];
-        soup[i] = v < mesh.positions.size() ? mesh.positions[v] : glm::vec3(0.0f);
-    }
-    glUnmapNamedBuffer(d.positions);
     glCreateVertexArrays(1, &d.vertexArray);
     glVertexArrayVertexBuffer(d.vertexArray, 0, d.positions, 0, sizeof(glm::vec3));
     glEnableVertexArrayAttrib(d.vertexArray, 0);

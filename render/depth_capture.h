@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -62,6 +63,14 @@ public:
      * An empty mesh, or one of more than 715 million triangles, leaves the capture without one.
      */
     void setMesh(const core::Mesh& mesh);
+    /**
+     * setMesh() in three steps, as MeshRenderer::beginMesh(): beginMesh() replaces the mesh and
+     * maps a buffer for it; the fill it returns (empty: no mesh) writes the mesh's soup through
+     * the mapping on any thread, once, while mesh lives; finishMesh() unmaps it, and the mesh is
+     * captured from then on. Meanwhile hasMesh() is false.
+     */
+    std::function<void()> beginMesh(const core::Mesh& mesh);
+    void finishMesh();
     bool hasMesh() const;
 
     /**

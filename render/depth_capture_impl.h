@@ -59,6 +59,7 @@ struct DepthCapture::Impl {
     // The mesh as a triangle soup: 3 positions a triangle, in triangle order.
     GLuint vertexArray = 0, positions = 0;
     std::size_t soupVertices = 0;
+    std::size_t pendingVertices = 0; // the soup mapped between beginMesh() and finishMesh()
     // The shown back faces (DepthCaptureOptions::shownBackFaces) as the vertex array's element
     // buffer: triangle t as soup vertices 3t, 3t + 2, 3t + 1, so its back faces the viewer and
     // the culling that drops the other back faces keeps it; its id is still gl_VertexID / 3.
@@ -107,6 +108,9 @@ struct DepthCapture::Impl {
         capacity = 0;
     }
     void releaseMesh() {
+        if (pendingVertices)
+            glUnmapNamedBuffer(positions);
+        pendingVertices = 0;
         if (vertexArray)
             glDeleteVertexArrays(1, &vertexArray);
         if (positions)

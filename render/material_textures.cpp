@@ -9,6 +9,7 @@ namespace render {
 
 void MaterialTextures::create(const std::vector<core::Image>& textures) {
     release();
+    ++m_revision;
     m_baseColor.resize(textures.size());
     m_metallicRoughness.resize(textures.size());
     m_linearViews.assign(textures.size(), 0);
@@ -35,18 +36,21 @@ unsigned MaterialTextures::makeLinearView(unsigned texture) {
 void MaterialTextures::setMetallicRoughness(std::uint32_t texture, const core::Image& image) {
     if (texture >= m_baseColor.size() || m_baseColor[texture].id() == 0 || image.empty())
         return;
+    ++m_revision;
     m_metallicRoughness[texture] = PaintTexture();
     m_metallicRoughness[texture].create(image, true);
 }
 
 void MaterialTextures::updateTexels(std::uint32_t texture, int x, int y, int width, int height,
                                     const core::Image& image) {
+    ++m_revision;
     if (texture < m_baseColor.size())
         m_baseColor[texture].update(image, x, y, width, height);
 }
 
 void MaterialTextures::updateMetallicRoughness(std::uint32_t texture, int x, int y, int width,
                                                int height, const core::Image& image) {
+    ++m_revision;
     if (texture < m_metallicRoughness.size() && m_metallicRoughness[texture].id() != 0)
         m_metallicRoughness[texture].update(image, x, y, width, height);
 }
@@ -67,6 +71,7 @@ unsigned MaterialTextures::linearView(std::size_t texture) const {
 }
 
 void MaterialTextures::release() {
+    ++m_revision;
     for (unsigned view : m_linearViews)
         if (view)
             glDeleteTextures(1, &view);

@@ -57,6 +57,8 @@ public:
     unsigned linearView(std::size_t texture) const;
     /** Frees every texture; the context must be current. */
     void release();
+    /** Counts the calls that changed a texture (any of the above but the getters). */
+    std::uint64_t revision() const { return m_revision; }
 
 private:
     static unsigned makeLinearView(unsigned texture);
@@ -64,6 +66,7 @@ private:
     std::vector<PaintTexture> m_baseColor;
     std::vector<PaintTexture> m_metallicRoughness; // id 0: none
     std::vector<unsigned> m_linearViews;           // 0: none
+    std::uint64_t m_revision = 0;
 };
 
 } // namespace render

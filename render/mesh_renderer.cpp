@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -87,6 +88,56 @@ struct MeshRenderer::Impl {
     std::vector<MaterialRun> standInRuns;
     std::size_t lastTriangles = 0;
     bool software = false; // a software rasterizer (see drawPieces())
+    std::uint64_t revision = 0;
+
+    /** A mesh between beginMesh() and finishMesh(): its mapped buffers, and its runs. */
+    struct Pending {
+        Vertex* vertices = nullptr;
+        std::uint32_t* indices = nullptr;
+        glm::vec4* tangents = nullptr; // only for a mesh with normal maps
+        std::vector<MaterialRun> runs;
+
+        /** The fill beginMesh() returns: touches nothing but these. */
+        void fill(const core::Mesh& mesh, std::span<const std::uint32_t> shownBackFaces) {
+            for (std::size_t i = 0; vertices && i < mesh.vertexCount(); ++i)
+                vertices[i] = {mesh.positions[i], mesh.normals[i],
+                               mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
+            std::copy(mesh.indices.begin(), mesh.indices.end(), indices);
+            if (tangents) {
+                const std::vector<glm::vec4> made = core::vertexTangents(mesh);
+                std::copy(made.begin(), made.end(), tangents);
+            }
+            auto shown = shownBackFaces.begin();
+            runs = makeRuns(mesh.triangleMaterial, [&](std::uint32_t t, std::uint32_t) {
+                while (shown != shownBackFaces.end() && *shown < t)
+                    ++shown;
+                return shown != shownBackFaces.end() && *shown == t;
+            });
+        }
+    };
+    std::optional<Pending> pending;
+
+    /** Makes buffer (bytes) mapped for writing if wanted; nullptr if not, or not mappable. */
+    static void* mapNew(GLuint& buffer, std::size_t bytes, bool wanted) {
+        if (!wanted)
+            return nullptr;
+        glCreateBuffers(1, &buffer);
+        glNamedBufferStorage(buffer, GLsizeiptr(bytes), nullptr, GL_MAP_WRITE_BIT);
+        return glMapNamedBufferRange(buffer, 0, GLsizeiptr(bytes),
+                                     GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
+    }
+
+    /** Unmaps the pending mesh's buffers; false if a mapping's contents were lost. */
+    bool unmapPending() const {
+        bool kept = true;
+        for (const auto& [buffer, mapped] :
+             {std::pair{vbo, pending->vertices != nullptr},
+              std::pair{ibo, pending->indices != nullptr},
+              std::pair{tangentBuffer, pending->tangents != nullptr}})
+            if (mapped)
+                kept = glUnmapNamedBuffer(buffer) == GL_TRUE && kept;
+        return kept;
+    }
 
     GLuint makeVao(GLuint indexBuffer) const {
         GLuint array = 0;
@@ -157,8 +208,11 @@ struct MeshRenderer::Impl {
                materials[run.material].alphaMode == core::AlphaMode::Blend;
     }
 
-    /** One run with its material's program, textures and culling. */
-    void drawRun(const MaterialRun& run, RunDraw& state) {
+    /**
+     * Triangles [first, first + count) of run (first counted from the run's first) with its
+     * material's program, textures and culling.
+     */
+    void drawRun(const MaterialRun& run, std::size_t first, std::size_t count, RunDraw& state) {
         const core::Material& material = materials[run.material];
         const MaterialChannel channel = state.options.channel;
         const bool textured = material.baseColorTexture >= 0;
@@ -201,12 +255,32 @@ struct MeshRenderer::Impl {
             glEnable(GL_CULL_FACE);
         else
             glDisable(GL_CULL_FACE);
-        drawInPieces(run.firstTriangle, run.triangleCount, state.pieces,
-                     [](std::size_t first, std::size_t count) {
-                         glDrawElements(GL_TRIANGLES, GLsizei(count * 3), GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(std::uintptr_t(first) * 12));
+        drawInPieces(run.firstTriangle + first, count, state.pieces,
+                     [](std::size_t from, std::size_t triangles) {
+                         glDrawElements(GL_TRIANGLES, GLsizei(triangles * 3), GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(std::uintptr_t(from) * 12));
                      });
-        lastTriangles += run.triangleCount;
+        lastTriangles += count;
+    }
+
+    /** The runs draw() draws with options: the stand-in's where it has one and is asked for. */
+    const std::vector<MaterialRun>& drawnRuns(const DrawOptions& options) const {
+        return options.standIn && standInVao ? standInRuns : runs;
+    }
+
+    /** Draws the parts of the blended (or other) runs in [from, end); at: where they start. */
+    void drawRunsIn(const std::vector<MaterialRun>& drawn, bool blended, std::size_t from,
+                    std::size_t end, std::size_t& at, RunDraw& state) {
+        for (const MaterialRun& run : drawn) {
+            if (blends(run, state.options.channel) != blended)
+                continue;
+            const std::size_t begin = at;
+            at += run.triangleCount;
+            if (at <= from || begin >= end)
+                continue;
+            const std::size_t skip = from > begin ? from - begin : 0;
+            drawRun(run, skip, std::min(at, end) - begin - skip, state);
+        }
     }
 
     void releaseStandIn() {
@@ -219,6 +293,9 @@ struct MeshRenderer::Impl {
     }
 
     void releaseMesh() {
+        if (pending)
+            unmapPending();
+        pending.reset();
         releaseStandIn();
         if (vao)
             glDeleteVertexArrays(1, &vao);
@@ -232,6 +309,7 @@ struct MeshRenderer::Impl {
             glDeleteBuffers(1, &tangentBuffer);
         vao = vbo = ibo = colorBuffer = tangentBuffer = 0;
         vertexCount = 0;
+        ++revision;
         if (ownTextures)
             textures->release();
         runs.clear();
@@ -263,25 +341,20 @@ void MeshRenderer::setMesh(const core::Mesh& mesh, std::shared_ptr<MaterialTextu
 void MeshRenderer::setMesh(const core::Mesh& geometry, const core::Mesh& look,
                            std::shared_ptr<MaterialTextures> textures,
                            std::span<const std::uint32_t> shownBackFaces) {
+    if (const std::function<void()> fill =
+            beginMesh(geometry, look, std::move(textures), shownBackFaces)) {
+        fill();
+        finishMesh();
+    }
+}
+
+std::function<void()> MeshRenderer::beginMesh(const core::Mesh& geometry, const core::Mesh& look,
+                                              std::shared_ptr<MaterialTextures> textures,
+                                              std::span<const std::uint32_t> shownBackFaces) {
     const core::Mesh& mesh = geometry;
     Impl& d = *m_impl;
     d.releaseMesh();
-
-    // Interleaved straight into the buffer: no copy is kept or made on the CPU.
     d.vertexCount = mesh.vertexCount();
-    const auto vertexBytes = GLsizeiptr(d.vertexCount * sizeof(Vertex));
-    glCreateBuffers(1, &d.vbo);
-    glNamedBufferStorage(d.vbo, vertexBytes, nullptr, GL_MAP_WRITE_BIT);
-    auto* vertices = static_cast<Vertex*>(glMapNamedBufferRange(
-        d.vbo, 0, vertexBytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
-    if (!vertices) {
-        d.releaseMesh(); // no GL memory for it: nothing drawn
-        return;
-    }
-    for (std::size_t i = 0; i < d.vertexCount; ++i)
-        vertices[i] = {mesh.positions[i], mesh.normals[i],
-                       mesh.hasUvs() ? mesh.uvs[i] : glm::vec2(0.0f)};
-    glUnmapNamedBuffer(d.vbo);
     // Vertex colours only where the mesh has them (painting vertex colours gives them): a
     // buffer of white would cost 16 bytes a vertex for nothing.
     if (look.colors.size() == d.vertexCount && d.vertexCount > 0) {
@@ -289,25 +362,26 @@ void MeshRenderer::setMesh(const core::Mesh& geometry, const core::Mesh& look,
         glNamedBufferStorage(d.colorBuffer, GLsizeiptr(look.colors.size() * sizeof(glm::vec4)),
                              look.colors.data(), GL_DYNAMIC_STORAGE_BIT);
     }
-    glCreateBuffers(1, &d.ibo);
-    glNamedBufferStorage(d.ibo, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
-                         mesh.indices.data(), 0);
     d.surfaces.clear();
     bool normalMaps = false;
     for (const core::Material& material : look.materials) {
         d.surfaces.push_back(SurfaceMaps::of(look.textures, mesh.hasUvs(), material));
         normalMaps = normalMaps || (d.surfaces.back().features() & kSurfaceNormalMap);
     }
-    if (const std::vector<glm::vec4> tangents =
-            normalMaps ? core::vertexTangents(mesh) : std::vector<glm::vec4>();
-        !tangents.empty()) {
-        glCreateBuffers(1, &d.tangentBuffer);
-        glNamedBufferStorage(d.tangentBuffer, GLsizeiptr(tangents.size() * sizeof(glm::vec4)),
-                             tangents.data(), 0);
+    normalMaps = normalMaps && mesh.hasUvs(); // tangents need them
+    // Written straight into the buffers: no copy is kept or made on the CPU.
+    Impl::Pending& pending = d.pending.emplace();
+    pending.vertices =
+        static_cast<Vertex*>(d.mapNew(d.vbo, d.vertexCount * sizeof(Vertex), d.vertexCount > 0));
+    pending.indices = static_cast<std::uint32_t*>(
+        d.mapNew(d.ibo, mesh.indices.size() * sizeof(std::uint32_t), !mesh.indices.empty()));
+    pending.tangents = static_cast<glm::vec4*>(
+        d.mapNew(d.tangentBuffer, d.vertexCount * sizeof(glm::vec4), normalMaps));
+    if ((d.vertexCount > 0 && !pending.vertices) || (!mesh.indices.empty() && !pending.indices) ||
+        (normalMaps && !pending.tangents)) {
+        d.releaseMesh(); // no GL memory for it: nothing drawn
+        return {};
     }
-
-    d.vao = d.makeVao(d.ibo);
-
     d.ownTextures = textures == nullptr;
     d.textures = d.ownTextures ? std::make_shared<MaterialTextures>() : std::move(textures);
     if (d.ownTextures)
@@ -317,13 +391,27 @@ void MeshRenderer::setMesh(const core::Mesh& geometry, const core::Mesh& look,
     for (const std::uint32_t t : shownBackFaces)
         if (t < mesh.triangleMaterial.size() && mesh.triangleMaterial[t] < look.materials.size())
             d.backFaceMaterials[mesh.triangleMaterial[t]] = 1;
-    auto shown = shownBackFaces.begin();
-    d.runs = Impl::makeRuns(mesh.triangleMaterial, [&](std::uint32_t t, std::uint32_t) {
-        while (shown != shownBackFaces.end() && *shown < t)
-            ++shown;
-        return shown != shownBackFaces.end() && *shown == t;
-    });
+    return [&mesh, &pending,
+            backFaces = std::vector<std::uint32_t>(shownBackFaces.begin(), shownBackFaces.end())] {
+        pending.fill(mesh, backFaces);
+    };
+}
+
+void MeshRenderer::finishMesh() {
+    Impl& d = *m_impl;
+    if (!d.pending)
+        return;
+    const bool unmapped = d.unmapPending();
+    std::vector<MaterialRun> runs = std::move(d.pending->runs);
+    d.pending.reset();
+    if (!unmapped) {
+        d.releaseMesh(); // the buffers' contents were lost
+        return;
+    }
+    d.vao = d.makeVao(d.ibo);
+    d.runs = std::move(runs);
     d.hasMesh = true;
+    ++d.revision;
 }
 
 bool MeshRenderer::hasMesh() const {
@@ -372,44 +460,54 @@ void MeshRenderer::updateVertexColors(std::uint32_t first, std::span<const glm::
     if (!d.colorBuffer || first >= d.vertexCount)
         return;
     const std::size_t count = std::min(colors.size(), d.vertexCount - first);
+    ++d.revision;
     glNamedBufferSubData(d.colorBuffer, GLintptr(first) * GLintptr(sizeof(glm::vec4)),
                          GLsizeiptr(count * sizeof(glm::vec4)), colors.data());
 }
 
 void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
+    drawSlice(view, options, 0, frameTriangles(options));
+}
+
+std::size_t MeshRenderer::frameTriangles(const DrawOptions& options) const {
+    std::size_t triangles = 0;
+    for (const MaterialRun& run : m_impl->drawnRuns(options))
+        triangles += run.triangleCount;
+    return triangles;
+}
+
+std::size_t MeshRenderer::drawSlice(const core::View& view, const DrawOptions& options,
+                                    std::size_t from, std::size_t count) {
     Impl& d = *m_impl;
     glViewport(0, 0, view.width, view.height);
-    if (options.clear) {
+    if (options.clear && from == 0) {
         glClearColor(options.background.r, options.background.g, options.background.b,
                      options.background.a);
         glClearDepth(1.0);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     }
     d.lastTriangles = 0;
+    const std::size_t triangles = frameTriangles(options);
     if (!d.hasMesh || !d.programs[0].valid())
-        return;
-    const bool standIn = options.standIn && d.standInVao;
+        return triangles;
+    const std::size_t end = from + std::min(count, triangles - std::min(from, triangles));
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
-    glBindVertexArray(standIn ? d.standInVao : d.vao);
+    glBindVertexArray(options.standIn && d.standInVao ? d.standInVao : d.vao);
     if (!d.colorBuffer)
         glVertexAttrib4f(3, 1.0f, 1.0f, 1.0f, 1.0f); // no vertex colours: white
-    const std::vector<MaterialRun>& runs = standIn ? d.standInRuns : d.runs;
-    std::size_t triangles = 0;
-    for (const MaterialRun& run : runs)
-        triangles += run.triangleCount;
+    // Pieces as for the whole frame, so a slice is cut as its part of the frame would be.
     Impl::RunDraw state{view, options, nullptr,
                         drawPieces(d.software, triangles, std::size_t(view.width) * view.height)};
     // Blending materials last, over what is behind them, without hiding each other.
+    std::size_t at = 0;
     for (const bool blended : {false, true}) {
         if (blended) {
             glEnable(GL_BLEND);
             glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
             glDepthMask(GL_FALSE);
         }
-        for (const MaterialRun& run : runs)
-            if (d.blends(run, options.channel) == blended)
-                d.drawRun(run, state);
+        d.drawRunsIn(d.drawnRuns(options), blended, from, end, at, state);
     }
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
@@ -417,6 +515,11 @@ void MeshRenderer::draw(const core::View& view, const DrawOptions& options) {
     glBindTextureUnit(1, 0);
     unbindSurfaceMaps();
     glUseProgram(0);
+    return end;
+}
+
+std::uint64_t MeshRenderer::revision() const {
+    return m_impl->revision;
 }
 
 void MeshRenderer::release() {

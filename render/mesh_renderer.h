@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 
@@ -22,6 +23,8 @@ struct DrawOptions {
     bool standIn = false;       // draw the stand-in (setStandIn) instead of the mesh, if set
     /** What is shown, as the compositor shows it (render/material_channel.h). */
     MaterialChannel channel = MaterialChannel::Material;
+
+    bool operator==(const DrawOptions&) const = default;
 };
 
 /**
@@ -58,6 +61,18 @@ public:
     void setMesh(const core::Mesh& geometry, const core::Mesh& look,
                  std::shared_ptr<MaterialTextures> textures,
                  std::span<const std::uint32_t> shownBackFaces);
+    /**
+     * setMesh() above in three steps, so that its long part can run on another thread:
+     * beginMesh() replaces the mesh and makes its buffers, mapped; the fill it returns (empty
+     * when there is no GL memory for them: no mesh then) writes geometry's vertices and indices
+     * through the mappings, on any thread, once, while geometry lives; finishMesh() unmaps them
+     * and the mesh is drawn from then on. Meanwhile hasMesh() is false and draw() draws nothing;
+     * the fill must have returned before any other call that changes the mesh.
+     */
+    std::function<void()> beginMesh(const core::Mesh& geometry, const core::Mesh& look,
+                                    std::shared_ptr<MaterialTextures> textures,
+                                    std::span<const std::uint32_t> shownBackFaces);
+    void finishMesh();
     bool hasMesh() const;
     /**
      * Sets the simplified triangles drawn with DrawOptions::standIn: indices into the mesh's
@@ -81,6 +96,21 @@ public:
     void updateVertexColors(std::uint32_t first, std::span<const glm::vec4> colors);
     /** Draws into the currently bound framebuffer, with view.width × view.height as viewport. */
     void draw(const core::View& view, const DrawOptions& options = {});
+    /** Triangles draw() draws with options (the stand-in's or the mesh's). */
+    std::size_t frameTriangles(const DrawOptions& options) const;
+    /**
+     * Draws what draw() draws in slices: the triangles [from, from + count) of the frame's
+     * frameTriangles(options), in draw()'s order (the clear with the first slice), so the
+     * slices of a frame drawn one after the other give draw()'s pixels. Returns where the next
+     * slice starts (frameTriangles(options) once the frame is whole).
+     */
+    std::size_t drawSlice(const core::View& view, const DrawOptions& options, std::size_t from,
+                          std::size_t count);
+    /**
+     * Counts the changes to what draw() shows besides its arguments: a new mesh, vertex colours
+     * (textures count their own: MaterialTextures::revision()).
+     */
+    std::uint64_t revision() const;
     /** Frees every GL object; the context must be current. Called by the destructor too. */
     void release();
 

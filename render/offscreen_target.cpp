@@ -8,10 +8,10 @@
 namespace render {
 
 OffscreenTarget::~OffscreenTarget() {
-    destroy();
+    release();
 }
 
-void OffscreenTarget::destroy() {
+void OffscreenTarget::release() {
     if (m_fbo)
         glDeleteFramebuffers(1, &m_fbo);
     if (m_color)
@@ -21,8 +21,8 @@ void OffscreenTarget::destroy() {
     m_fbo = m_color = m_depth = 0;
 }
 
-core::Status OffscreenTarget::create(int width, int height) {
-    destroy();
+core::Status OffscreenTarget::create(int width, int height, bool windowDepth) {
+    release();
     GLint maxSize = 0;
     glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxSize);
     if (width <= 0 || height <= 0 || width > maxSize || height > maxSize)
@@ -34,12 +34,15 @@ core::Status OffscreenTarget::create(int width, int height) {
     glCreateRenderbuffers(1, &m_color);
     glNamedRenderbufferStorage(m_color, GL_RGBA8, width, height);
     glCreateRenderbuffers(1, &m_depth);
-    glNamedRenderbufferStorage(m_depth, GL_DEPTH_COMPONENT32F, width, height);
+    glNamedRenderbufferStorage(m_depth, windowDepth ? GL_DEPTH24_STENCIL8 : GL_DEPTH_COMPONENT32F,
+                               width, height);
     glCreateFramebuffers(1, &m_fbo);
     glNamedFramebufferRenderbuffer(m_fbo, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_color);
-    glNamedFramebufferRenderbuffer(m_fbo, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_depth);
+    glNamedFramebufferRenderbuffer(m_fbo,
+                                   windowDepth ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT,
+                                   GL_RENDERBUFFER, m_depth);
     if (glCheckNamedFramebufferStatus(m_fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        destroy();
+        release();
         return core::Error{"offscreen target: framebuffer incomplete"};
     }
     return {};

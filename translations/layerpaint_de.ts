@@ -2838,5 +2838,9 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <source>Mask (black hides, white shows)</source>
         <translation>Maske (Schwarz verbirgt, Weiß zeigt)</translation>
     </message>
+    <message>
+        <source>Preparing the model for display…</source>
+        <translation>Das Modell wird zur Anzeige vorbereitet…</translation>
+    </message>
 </context>
 </TS>

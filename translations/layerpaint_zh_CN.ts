@@ -2830,5 +2830,9 @@ Smaller splits the view into more regions.</source>
         <source>Mask (black hides, white shows)</source>
         <translation>蒙版（黑色隐藏，白色显示）</translation>
     </message>
+    <message>
+        <source>Preparing the model for display…</source>
+        <translation>正在准备显示模型…</translation>
+    </message>
 </context>
 </TS>

@@ -96,8 +96,9 @@ void DepthLayersBuilder::onSettled() {
         m_settle.start();
         return;
     }
-    if (!m_viewport.canCapture()) {
-        // No context or no model yet; the viewport reports a view change when either comes.
+    if (!m_viewport.canCapture() || m_viewport.isPreparingMesh()) {
+        // No context or no model yet, or its buffers are being filled; the viewport reports a
+        // view change when they are there.
         return;
     }
     if (m_workerBusy) {

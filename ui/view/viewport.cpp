@@ -20,7 +20,9 @@
 #include "render/brush_overlay.h"
 #include "render/gl_depth_capturer.h"
 #include "render/mesh_renderer.h"
+#include "render/software_gl.h"
 #include "ui/shell/compositor_mesh_job.h"
+#include "ui/shell/mesh_fill_job.h"
 #include "ui/shell/stand_in_job.h"
 
 namespace ui {
@@ -67,6 +69,8 @@ Viewport::Viewport(core::Document& document, QWidget* parent)
     connect(m_standInJob, &StandInJob::finished, this, &Viewport::standInMade);
     m_compositorJob = new CompositorMeshJob(this);
     connect(m_compositorJob, &CompositorMeshJob::finished, this, &Viewport::compositorMeshPrepared);
+    m_meshFill = new MeshFillJob(this);
+    connect(m_meshFill, &MeshFillJob::finished, this, &Viewport::meshFilled);
     m_wheelRest.setSingleShot(true);
     m_wheelRest.setInterval(300);
     connect(&m_wheelRest, &QTimer::timeout, this, qOverload<>(&Viewport::update));
@@ -348,6 +352,7 @@ core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view,
         return core::Error{tr("The depth-layer capture is not available.").toStdString()};
     makeCurrent();
     uploadMeshIfDirty();
+    finishMeshFill(); // the capture needs its buffers whole
     auto stack = m_capturer->capture(view, faces, stats);
     doneCurrent();
     return stack;
@@ -464,6 +469,8 @@ void Viewport::initializeGL() {
         if (status) {
             m_renderer = std::move(renderer);
             m_textures = std::make_shared<render::MaterialTextures>();
+            m_slicedFrame = std::make_unique<render::SlicedFrame>();
+            m_softwareGl = render::isSoftwareRenderer();
         } else {
             m_glError =
                 tr("The renderer could not start: %1").arg(QString::fromStdString(status.error()));
@@ -541,6 +548,8 @@ void Viewport::paintGL() {
     if (!m_renderer || !mesh())
         return;
     uploadMeshIfDirty();
+    if (m_meshFill->isPending())
+        return drawPreparingNotice();
     if (m_maskViewDirty)
         uploadMaskView();
     uploadStandInIfDirty();
@@ -556,8 +565,7 @@ void Viewport::paintGL() {
         options.channel = composite.channel;
         // The faces the capture keeps, so what shows is what a stroke can reach.
         options.cullBackFaces = m_document.depthLayerOptions().cullBackFaces;
-        m_renderer->draw(current, options);
-        m_lastFrameTriangles = m_renderer->lastDrawnTriangles();
+        drawMeshFrame(current, options);
     }
     if (!m_overlay) {
         drawPainted();
@@ -679,10 +687,14 @@ render::ConnectivityBackend Viewport::connectivityBackend() const {
 }
 
 void Viewport::releaseGl() {
-    if (!m_renderer && !m_capturer && !m_compositor && !m_overlay)
+    if (!m_renderer && !m_capturer && !m_compositor && !m_overlay && !m_slicedFrame)
         return;
     makeCurrent();
+    m_meshFill->wait(); // it writes into the buffers freed here
     m_overlay.reset();
+    if (m_slicedFrame)
+        m_slicedFrame->release();
+    m_slicedFrame.reset();
     m_shownTarget = nullptr;
     m_compositor.reset();
     m_capturer.reset();

@@ -24,6 +24,7 @@
 #include "render/brush_overlay.h"
 #include "render/depth_compositor.h"
 #include "render/gpu_connectivity.h"
+#include "render/sliced_frame.h"
 
 namespace core {
 class Document;
@@ -39,6 +40,7 @@ namespace ui {
 
 class StandInJob;
 class CompositorMeshJob;
+class MeshFillJob;
 
 /**
  * Which buttons move the camera (Preferences). Both, the default, offers the Blender-like and
@@ -112,10 +114,30 @@ public:
     std::size_t standInTriangles() const { return m_standInTriangles; }
     /** The current model's stand-in is made (it is drawn while the camera moves). */
     bool hasStandIn() const;
-    /** Triangles the mesh renderer drew in the last frame; 0 when the depth layers showed. */
+    /**
+     * Triangles of the mesh the last frame showed: the mesh renderer's, the stand-in's, or a
+     * sliced frame's drawn so far; 0 when the depth layers showed.
+     */
     std::size_t lastFrameTriangles() const { return m_lastFrameTriangles; }
+    /**
+     * On a software renderer, a frame of the mesh of more than 2 × triangles triangles is drawn
+     * triangles at a time, a slice per event, so the window answers meanwhile; the stand-in (or,
+     * without one, what is drawn so far) shows until it is whole. 0: always drawn at once.
+     */
+    void setFrameSliceTriangles(std::size_t triangles) { m_frameSliceTriangles = triangles; }
+    /** False while the mesh renderer's frame is being drawn in slices. */
+    bool isFrameWhole() const { return m_frameWhole; }
     /** How often the mesh went to the GPU (a new model or paint target); for tests. */
     int meshUploads() const { return m_meshUploads; }
+    /**
+     * A new model of triangles triangles or more has its GL buffers filled in the background
+     * (the view says so meanwhile, and a capture waits for them); 0: always at once.
+     */
+    void setBackgroundFillTriangles(std::size_t triangles) {
+        m_backgroundFillTriangles = triangles;
+    }
+    /** True while a new model's GL buffers are filled in the background. */
+    bool isPreparingMesh() const;
 
     bool isOrthographic() const;
 
@@ -291,12 +313,23 @@ private:
     /** Uploads the prepared compositor mesh, waiting for it if need be (context current). */
     void installCompositorMesh();
     void compositorMeshPrepared();
+    /** Finishes the renderer's and the capture's new buffers, waiting for their fill (context
+     * current). */
+    void finishMeshFill();
+    void meshFilled();
+    /** While the buffers are filled: the background, and a word why nothing shows yet. */
+    void drawPreparingNotice();
     // The stand-in (viewport_stand_in.cpp).
     void startStandIn();
     void standInMade(std::shared_ptr<const core::StandIn> standIn, std::uint64_t meshSerial);
     void uploadStandInIfDirty();
     /** The camera moved by the wheel: the stand-in shows until it rests. */
     void wheelMoved();
+    // The mesh renderer's frame (viewport_frame.cpp).
+    /** Draws the mesh renderer's frame, at once or its next slice (setFrameSliceTriangles()). */
+    void drawMeshFrame(const core::View& view, render::DrawOptions options);
+    /** Whether a frame of triangles is drawn in slices. */
+    bool slicesFrame(std::size_t triangles) const;
     void reportDepthLayerError(const core::Status& status);
     void releaseGl();
     /**
@@ -337,6 +370,8 @@ private:
     std::unique_ptr<ContextConnectivity> m_contextConnectivity;
     std::unique_ptr<render::DepthCompositor> m_compositor;
     std::unique_ptr<render::BrushOverlay> m_overlay;
+    std::unique_ptr<render::SlicedFrame> m_slicedFrame;
+    bool m_softwareGl = false;
     bool m_meshDirty = false;
     int m_meshUploads = 0;
     bool m_paintedMeshDirty = false; // only the paint target's textures or colours are new
@@ -372,11 +407,17 @@ private:
     std::size_t m_standInTriangles = kStandInTriangles;
     StandInJob* m_standInJob = nullptr;
     CompositorMeshJob* m_compositorJob = nullptr;
+    MeshFillJob* m_meshFill = nullptr;
+    static constexpr std::size_t kBackgroundFillTriangles = 1'000'000;
+    std::size_t m_backgroundFillTriangles = kBackgroundFillTriangles;
     std::shared_ptr<const core::StandIn> m_standIn;
     std::uint64_t m_standInSerial = 0;
     bool m_standInDirty = false;
     QTimer m_wheelRest; // runs from a wheel turn until the wheel rests
     std::size_t m_lastFrameTriangles = 0;
+    static constexpr std::size_t kFrameSliceTriangles = 1'000'000;
+    std::size_t m_frameSliceTriangles = kFrameSliceTriangles;
+    bool m_frameWhole = true;
 
     Drag m_drag = Drag::None;
     Qt::MouseButton m_dragButton = Qt::NoButton;

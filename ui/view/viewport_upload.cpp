@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The viewport's uploads: the mesh to the renderers and the capture when it changes (a new
-// model's share of the compositor prepared in the background), and what strokes changed, at
-// the next frame.
+// model's buffers filled and its share of the compositor prepared in the background), and what
+// strokes changed, at the next frame.
 #include "ui/view/viewport.h"
 
+#include <functional>
 #include <memory>
 #include <utility>
+#include <vector>
 
 #include "core/document/document.h"
 #include "render/gl_depth_capturer.h"
 #include "render/mesh_renderer.h"
 #include "ui/shell/compositor_mesh_job.h"
+#include "ui/shell/mesh_fill_job.h"
 
 namespace ui {
 
@@ -22,10 +25,12 @@ void Viewport::uploadMeshIfDirty() {
         m_paintedMeshDirty = true;
     if ((!m_meshDirty && !m_paintedMeshDirty) || !m_renderer)
         return;
+    finishMeshFill(); // an earlier model's, still filling buffers replaced now
     // Once painted, the renderers draw the paint target's pages or colours; the capture needs
     // only the geometry, which painting never changes.
+    std::vector<std::function<void()>> fills;
     if (m_meshDirty && m_capturer)
-        m_capturer->setMesh(m_document.mesh());
+        fills.push_back(m_capturer->depthCapture().beginMesh(m_document.mesh()));
     // The target's look over its mesh's geometry, which is not copied.
     const std::shared_ptr<const core::Mesh> geometry =
         target ? target->sharedMesh() : m_document.sharedMesh();
@@ -38,7 +43,15 @@ void Viewport::uploadMeshIfDirty() {
     m_textures->create(look.textures);
     for (std::size_t page = 0; target && page < target->pageCount(); ++page)
         m_textures->setMetallicRoughness(std::uint32_t(page), target->metallicRoughnessPage(page));
-    m_renderer->setMesh(mesh, look, m_textures, m_document.topology().shownBackFaces);
+    fills.push_back(
+        m_renderer->beginMesh(mesh, look, m_textures, m_document.topology().shownBackFaces));
+    // Filled by the job: a large new model's in the background (it takes seconds), the others'
+    // at once.
+    const bool inBackground = m_meshDirty && m_backgroundFillTriangles > 0 &&
+                              mesh.triangleCount() >= m_backgroundFillTriangles;
+    m_meshFill->start(std::move(fills), {geometry, m_document.sharedMesh()});
+    if (!inBackground)
+        finishMeshFill();
     m_pendingPaint.clear();
     m_compositorHasMesh = false;
     if (m_compositor)
@@ -49,6 +62,26 @@ void Viewport::uploadMeshIfDirty() {
     m_standInDirty = true;             // setMesh dropped it
     m_maskViewDirty = m_maskView != 0; // the textures are the composite's again
     ++m_meshUploads;
+}
+
+bool Viewport::isPreparingMesh() const {
+    return m_meshFill->isPending();
+}
+
+void Viewport::finishMeshFill() {
+    if (!m_meshFill->isPending())
+        return;
+    m_meshFill->wait();
+    if (m_capturer)
+        m_capturer->depthCapture().finishMesh();
+    m_renderer->finishMesh();
+}
+
+void Viewport::meshFilled() {
+    makeCurrent();
+    finishMeshFill();
+    doneCurrent();
+    invalidateView(); // drawn at last: the depth layers can be built
 }
 
 void Viewport::sendMeshToCompositor(std::shared_ptr<const core::Mesh> geometry,
