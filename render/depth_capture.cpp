@@ -293,11 +293,13 @@ std::function<void()> DepthCapture::beginMesh(const core::Mesh& mesh) {
         return {};
     }
     d.pendingVertices = corners;
-    return [&mesh, soup, corners] {
+    d.pendingFilled = false;
+    return [&mesh, soup, corners, filled = &d.pendingFilled] {
         for (std::size_t i = 0; i < corners; ++i) {
             const std::uint32_t v = mesh.indices[i];
             soup[i] = v < mesh.positions.size() ? mesh.positions[v] : glm::vec3(0.0f);
         }
+        *filled = true;
     };
 }
 
@@ -306,8 +308,8 @@ void DepthCapture::finishMesh() {
     if (!d.pendingVertices)
         return;
     const std::size_t corners = std::exchange(d.pendingVertices, 0);
-    if (glUnmapNamedBuffer(d.positions) != GL_TRUE) {
-        d.releaseMesh(); // the soup was lost
+    if (glUnmapNamedBuffer(d.positions) != GL_TRUE || !d.pendingFilled) {
+        d.releaseMesh(); // the soup was lost, or never written whole
         return;
     }
     glCreateVertexArrays(1, &d.vertexArray);

@@ -60,6 +60,7 @@ struct DepthCapture::Impl {
     GLuint vertexArray = 0, positions = 0;
     std::size_t soupVertices = 0;
     std::size_t pendingVertices = 0; // the soup mapped between beginMesh() and finishMesh()
+    bool pendingFilled = false;      // and written whole by the fill
     // The shown back faces (DepthCaptureOptions::shownBackFaces) as the vertex array's element
     // buffer: triangle t as soup vertices 3t, 3t + 2, 3t + 1, so its back faces the viewer and
     // the culling that drops the other back faces keeps it; its id is still gl_VertexID / 3.

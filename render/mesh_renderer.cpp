@@ -96,6 +96,7 @@ struct MeshRenderer::Impl {
         std::uint32_t* indices = nullptr;
         glm::vec4* tangents = nullptr; // only for a mesh with normal maps
         std::vector<MaterialRun> runs;
+        bool filled = false; // the fill returned (it may throw: out of memory)
 
         /** The fill beginMesh() returns: touches nothing but these. */
         void fill(const core::Mesh& mesh, std::span<const std::uint32_t> shownBackFaces) {
@@ -113,6 +114,7 @@ struct MeshRenderer::Impl {
                     ++shown;
                 return shown != shownBackFaces.end() && *shown == t;
             });
+            filled = true;
         }
     };
     std::optional<Pending> pending;
@@ -402,10 +404,11 @@ void MeshRenderer::finishMesh() {
     if (!d.pending)
         return;
     const bool unmapped = d.unmapPending();
+    const bool filled = d.pending->filled;
     std::vector<MaterialRun> runs = std::move(d.pending->runs);
     d.pending.reset();
-    if (!unmapped) {
-        d.releaseMesh(); // the buffers' contents were lost
+    if (!unmapped || !filled) {
+        d.releaseMesh(); // the buffers' contents were lost, or never written whole
         return;
     }
     d.vao = d.makeVao(d.ibo);
@@ -422,6 +425,7 @@ void MeshRenderer::setStandIn(std::span<const std::uint32_t> indices,
                               std::span<const std::uint32_t> triangleMaterial) {
     Impl& d = *m_impl;
     d.releaseStandIn();
+    ++d.revision;
     const bool valid = d.hasMesh && !indices.empty() &&
                        indices.size() == triangleMaterial.size() * 3 &&
                        std::all_of(indices.begin(), indices.end(),
@@ -441,6 +445,7 @@ void MeshRenderer::setStandIn(std::span<const std::uint32_t> indices,
 
 void MeshRenderer::clearStandIn() {
     m_impl->releaseStandIn();
+    ++m_impl->revision;
 }
 
 bool MeshRenderer::hasStandIn() const {

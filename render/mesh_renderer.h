@@ -66,8 +66,9 @@ public:
      * beginMesh() replaces the mesh and makes its buffers, mapped; the fill it returns (empty
      * when there is no GL memory for them: no mesh then) writes geometry's vertices and indices
      * through the mappings, on any thread, once, while geometry lives; finishMesh() unmaps them
-     * and the mesh is drawn from then on. Meanwhile hasMesh() is false and draw() draws nothing;
-     * the fill must have returned before any other call that changes the mesh.
+     * and the mesh is drawn from then on (none if the fill did not return: out of memory).
+     * Meanwhile hasMesh() is false and draw() draws nothing; the fill must have returned (or
+     * thrown) before any other call that changes the mesh.
      */
     std::function<void()> beginMesh(const core::Mesh& geometry, const core::Mesh& look,
                                     std::shared_ptr<MaterialTextures> textures,
@@ -107,8 +108,8 @@ public:
     std::size_t drawSlice(const core::View& view, const DrawOptions& options, std::size_t from,
                           std::size_t count);
     /**
-     * Counts the changes to what draw() shows besides its arguments: a new mesh, vertex colours
-     * (textures count their own: MaterialTextures::revision()).
+     * Counts the changes to what draw() shows besides its arguments: a new mesh or stand-in,
+     * vertex colours (textures count their own: MaterialTextures::revision()).
      */
     std::uint64_t revision() const;
     /** Frees every GL object; the context must be current. Called by the destructor too. */

@@ -20,8 +20,10 @@ core::Result<bool> SlicedFrame::advance(MeshRenderer& renderer, const core::View
     if (fresh) {
         if (!m_target.framebuffer() || m_target.width() != view.width ||
             m_target.height() != view.height)
-            if (const core::Status made = m_target.create(view.width, view.height, true); !made)
+            if (const core::Status made = m_target.create(view.width, view.height, true); !made) {
+                release(); // the next call starts again
                 return core::Error{made.error()};
+            }
         m_key = key;
         m_started = true;
         m_drawn = 0;

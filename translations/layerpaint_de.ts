@@ -2842,5 +2842,9 @@ Kleiner zerlegt die Ansicht in mehr Regionen.</translation>
         <source>Preparing the model for display…</source>
         <translation>Das Modell wird zur Anzeige vorbereitet…</translation>
     </message>
+    <message>
+        <source>The model cannot be drawn: there is not enough memory for its GL buffers.</source>
+        <translation>Das Modell kann nicht gezeichnet werden: Für seine GL-Puffer reicht der Speicher nicht.</translation>
+    </message>
 </context>
 </TS>

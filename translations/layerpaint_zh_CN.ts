@@ -2834,5 +2834,9 @@ Smaller splits the view into more regions.</source>
         <source>Preparing the model for display…</source>
         <translation>正在准备显示模型…</translation>
     </message>
+    <message>
+        <source>The model cannot be drawn: there is not enough memory for its GL buffers.</source>
+        <translation>无法绘制模型：内存不足，无法容纳其 GL 缓冲区。</translation>
+    </message>
 </context>
 </TS>

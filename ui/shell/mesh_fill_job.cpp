@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ui/shell/mesh_fill_job.h"
 
-#include <new>
 #include <utility>
 
 #include "ui/shell/background_task.h"
@@ -29,8 +28,9 @@ void MeshFillJob::start(std::vector<std::function<void()>> fills,
                 for (const std::function<void()>& fill : fills)
                     if (fill)
                         fill();
-            } catch (const std::bad_alloc&) {
-                // The buffers keep what was written: a mesh without its runs is not drawn.
+            } catch (...) {
+                // Out of memory (tangents, runs): finishing drops the buffers not written whole,
+                // and the viewport says the model cannot be drawn.
             }
         },
         [this, job] {

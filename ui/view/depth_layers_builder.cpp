@@ -96,9 +96,13 @@ void DepthLayersBuilder::onSettled() {
         m_settle.start();
         return;
     }
-    if (!m_viewport.canCapture() || m_viewport.isPreparingMesh()) {
-        // No context or no model yet, or its buffers are being filled; the viewport reports a
-        // view change when they are there.
+    if (m_viewport.isPreparingMesh()) {
+        // The model's buffers are being filled: a capture now would wait for them.
+        m_settle.start();
+        return;
+    }
+    if (!m_viewport.canCapture()) {
+        // No context or no model yet; the viewport reports a view change when either comes.
         return;
     }
     if (m_workerBusy) {

@@ -4,6 +4,8 @@
 // strokes changed, at the next frame.
 #include "ui/view/viewport.h"
 
+#include <QMetaObject>
+
 #include <functional>
 #include <memory>
 #include <utility>
@@ -75,6 +77,15 @@ void Viewport::finishMeshFill() {
     if (m_capturer)
         m_capturer->depthCapture().finishMesh();
     m_renderer->finishMesh();
+    update(); // the notice goes
+    if (!m_renderer->hasMesh()) {
+        // Queued: this may run inside paintGL or with the context current.
+        const QString message =
+            tr("The model cannot be drawn: there is not enough memory for its GL buffers.");
+        QMetaObject::invokeMethod(
+            this, [this, message] { emit depthLayerRenderingFailed(message); },
+            Qt::QueuedConnection);
+    }
 }
 
 void Viewport::meshFilled() {
