@@ -352,7 +352,8 @@ core::Result<core::DepthStack> Viewport::captureLayers(const core::View& view,
         return core::Error{tr("The depth-layer capture is not available.").toStdString()};
     makeCurrent();
     uploadMeshIfDirty();
-    finishMeshFill(); // the capture needs its buffers whole
+    if (finishMeshFill()) // the capture needs its buffers whole; the notice goes
+        update();
     auto stack = m_capturer->capture(view, faces, stats);
     doneCurrent();
     return stack;

@@ -313,9 +313,11 @@ private:
     /** Uploads the prepared compositor mesh, waiting for it if need be (context current). */
     void installCompositorMesh();
     void compositorMeshPrepared();
-    /** Finishes the renderer's and the capture's new buffers, waiting for their fill (context
-     * current). */
-    void finishMeshFill();
+    /**
+     * Finishes the renderer's and the capture's new buffers, waiting for their fill (context
+     * current); false when none were being filled.
+     */
+    bool finishMeshFill();
     void meshFilled();
     /** While the buffers are filled: the background, and a word why nothing shows yet. */
     void drawPreparingNotice();

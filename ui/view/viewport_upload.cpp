@@ -70,14 +70,13 @@ bool Viewport::isPreparingMesh() const {
     return m_meshFill->isPending();
 }
 
-void Viewport::finishMeshFill() {
+bool Viewport::finishMeshFill() {
     if (!m_meshFill->isPending())
-        return;
+        return false;
     m_meshFill->wait();
     if (m_capturer)
         m_capturer->depthCapture().finishMesh();
     m_renderer->finishMesh();
-    update(); // the notice goes
     if (!m_renderer->hasMesh()) {
         // Queued: this may run inside paintGL or with the context current.
         const QString message =
@@ -86,6 +85,7 @@ void Viewport::finishMeshFill() {
             this, [this, message] { emit depthLayerRenderingFailed(message); },
             Qt::QueuedConnection);
     }
+    return true;
 }
 
 void Viewport::meshFilled() {
